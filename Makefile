@@ -1,0 +1,73 @@
+# splinelab — build, serve and test. Every target installs what it lacks and is safe to re-run.
+#   make serve        build the wasm package and serve www/ on http://127.0.0.1:$(PORT)
+#   make test         native + doc tests, wasm-bindgen-test suites in Node, browser tests
+#   make test-native  the fast loop: core tests and doctests only
+#   make lint         rustfmt check and clippy with warnings denied
+#   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
+SHELL := /bin/bash
+PORT ?= 8000
+TOOLS := $(CURDIR)/.tools
+WASM_TARGET := wasm32-unknown-unknown
+# The wasm-bindgen CLI must match the library version locked in Cargo.lock exactly.
+WB_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/version = |"/, ""); print; exit}' Cargo.lock)
+WB_STAMP := $(TOOLS)/wasm-bindgen-$(WB_VERSION).stamp
+WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
+PKG := www/pkg
+
+.PHONY: all build serve test test-native test-wasm test-e2e lint screenshots clean tools rust-target npm-deps chromium
+
+all: build
+
+rust-target:
+	@rustup target list --installed | grep -q '^$(WASM_TARGET)$$' || rustup target add $(WASM_TARGET)
+
+$(WB_STAMP):
+	@echo "installing wasm-bindgen-cli $(WB_VERSION) into .tools (once)"
+	cargo install --root $(TOOLS) wasm-bindgen-cli --version $(WB_VERSION)
+	@rm -f $(TOOLS)/wasm-bindgen-*.stamp && touch $@
+
+node_modules/.stamp: package.json
+	npm install --no-audit --no-fund
+	@touch $@
+
+npm-deps: node_modules/.stamp
+
+chromium:
+	@test -x /usr/bin/chromium || { echo "installing Debian's chromium"; \
+	  (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium) >/dev/null; }
+
+tools: rust-target $(WB_STAMP) npm-deps
+
+build: tools
+	cargo build --release --lib --target $(WASM_TARGET)
+	$(TOOLS)/bin/wasm-bindgen --target web --out-dir $(PKG) --out-name splinelab $(WASM_OUT)
+	node_modules/.bin/wasm-opt -O $(PKG)/splinelab_bg.wasm -o $(PKG)/splinelab_bg.wasm
+	node scripts/vendor.mjs
+
+serve: build
+	node scripts/serve.mjs --port $(PORT)
+
+test: tools chromium
+	bash scripts/test-all.sh
+
+test-native:
+	cargo test --lib --tests
+	cargo test --doc
+
+test-wasm: tools
+	cargo test --target $(WASM_TARGET) --lib --tests
+
+test-e2e: build chromium
+	node tests/e2e/run.mjs
+
+lint:
+	cargo fmt --check
+	cargo clippy --all-targets -- -D warnings
+	cargo clippy --lib --target $(WASM_TARGET) -- -D warnings
+
+screenshots: build chromium
+	node scripts/screenshots.mjs
+
+clean:
+	cargo clean
+	rm -rf $(PKG) www/vendor screenshots
