@@ -1,0 +1,133 @@
+//! de Casteljau's algorithm on any point type (Cartesian or homogeneous), Bernstein
+//! polynomials, subdivision and degree elevation (syllabus §2).
+
+use crate::geom::{binomial, Point};
+
+/// The Bernstein polynomial `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`; 0 when `i > n`.
+///
+/// Partition of unity: `Σ_i B_i^n(t) = 1`; symmetry `B_i^n(t) = B_{n−i}^n(1 − t)`; on `[0, 1]`
+/// it has its single maximum at `t = i/n`.
+///
+/// ```
+/// assert_eq!(splinelab::bezier::bernstein(2, 1, 0.5), 0.5);
+/// ```
+pub fn bernstein(n: usize, i: usize, t: f64) -> f64 {
+    if i > n {
+        return 0.0;
+    }
+    binomial(n, i) * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
+}
+
+/// The point `p_0^n(s)` of de Casteljau's recurrence `p_i^r = (1 − s) p_i^{r−1} + s p_{i+1}^{r−1}`,
+/// computed in `scratch` (resized to the number of points, reused between calls so dense
+/// sampling allocates once). O(n²) per point. `points` must not be empty.
+#[inline]
+pub fn de_casteljau_point<P: Point>(points: &[P], s: f64, scratch: &mut Vec<P>) -> P {
+    scratch.clear();
+    scratch.extend_from_slice(points);
+    let n = points.len() - 1;
+    for r in 1..=n {
+        for i in 0..=n - r {
+            scratch[i] = scratch[i].lerp_to(scratch[i + 1], s);
+        }
+    }
+    scratch[0]
+}
+
+/// All levels of de Casteljau's triangle, concatenated: level 0 (the `n + 1` control points)
+/// first, then level `r` with its `n + 1 − r` points; `(n + 1)(n + 2)/2` points in all, the last
+/// one being the point on the curve.
+pub fn de_casteljau_triangle<P: Point>(points: &[P], s: f64) -> Vec<P> {
+    let n = points.len() - 1;
+    let mut out = Vec::with_capacity((n + 1) * (n + 2) / 2);
+    out.extend_from_slice(points);
+    let mut start = 0;
+    for r in 1..=n {
+        let len = n + 2 - r; // length of level r − 1
+        for i in 0..len - 1 {
+            let p = out[start + i].lerp_to(out[start + i + 1], s);
+            out.push(p);
+        }
+        start += len;
+    }
+    out
+}
+
+/// Splits the control polygon at `s`: the left half's points are the top edge of the
+/// triangle `l_i = p_0^i(s)`, the right half's the hypotenuse `r_i = p_{i}^{n−i}(s)`.
+/// Both halves are Bézier curves of the same degree that together trace the original curve.
+pub fn split_points<P: Point>(points: &[P], s: f64) -> (Vec<P>, Vec<P>) {
+    let n = points.len() - 1;
+    let mut work = points.to_vec();
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = vec![P::ZERO; n + 1];
+    left.push(work[0]);
+    right[n] = work[n];
+    for r in 1..=n {
+        for i in 0..=n - r {
+            work[i] = work[i].lerp_to(work[i + 1], s);
+        }
+        left.push(work[0]);
+        right[n - r] = work[n - r];
+    }
+    (left, right)
+}
+
+/// Control points of the piece of the curve between local parameters `s0 < s1` (both in
+/// `[0, 1]`), as a Bézier curve of the same degree on `[0, 1]`.
+pub fn subsegment_points<P: Point>(points: &[P], s0: f64, s1: f64) -> Vec<P> {
+    if s0 <= 0.0 {
+        if s1 >= 1.0 {
+            return points.to_vec();
+        }
+        return split_points(points, s1).0;
+    }
+    let (_, right) = split_points(points, s0);
+    if s1 >= 1.0 {
+        return right;
+    }
+    split_points(&right, (s1 - s0) / (1.0 - s0)).0
+}
+
+/// Degree elevation by one: `Q_i = i/(n+1) P_{i−1} + (1 − i/(n+1)) P_i`, `i = 0..=n+1`.
+/// The curve does not change; the new polygon lies closer to it.
+pub fn elevate_points<P: Point>(points: &[P]) -> Vec<P> {
+    let n = points.len() - 1;
+    let m = (n + 1) as f64;
+    let mut out = Vec::with_capacity(n + 2);
+    out.push(points[0]);
+    for i in 1..=n {
+        let a = i as f64 / m;
+        out.push(points[i - 1] * a + points[i] * (1.0 - a));
+    }
+    out.push(points[n]);
+    out
+}
+
+/// The hodograph's control points without the factor `n`: the forward differences
+/// `P_{i+1} − P_i`. The derivative of the curve is `n Σ B_i^{n−1}(s) (P_{i+1} − P_i)`.
+pub fn differences<P: Point>(points: &[P]) -> Vec<P> {
+    points.windows(2).map(|w| w[1] - w[0]).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec2;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn triangle_has_all_levels() {
+        let p = [DVec2::ZERO, DVec2::X, DVec2::ONE];
+        let tri = de_casteljau_triangle(&p, 0.5);
+        assert_eq!(tri.len(), 6);
+        assert_eq!(tri[5], DVec2::new(0.75, 0.25));
+    }
+
+    #[test]
+    fn subsegment_of_whole_is_identity() {
+        let p = [DVec2::ZERO, DVec2::X, DVec2::ONE];
+        assert_eq!(subsegment_points(&p, 0.0, 1.0), p.to_vec());
+    }
+}

@@ -1,0 +1,124 @@
+//! Derivatives of Bézier curves: the hodograph, derivatives of any order (rational ones by the
+//! quotient rule on homogeneous derivatives) and curvature (syllabus §2, §4).
+
+use super::{de_casteljau_point, differences, BezierCurve};
+use crate::error::{Error, Result};
+use crate::geom::{Cartesian, Point};
+
+/// Highest derivative order accepted for rational curves (whose derivatives never vanish);
+/// polynomial curves accept any order (zero above the degree).
+pub const MAX_DERIVATIVE_ORDER: usize = 32;
+
+/// The control points of the `k`-th derivative in local parameter `s`: `n!/(n−k)! Δ^k P_i`.
+fn derivative_points<P: Point>(points: &[P], k: usize) -> Vec<P> {
+    let n = points.len() - 1;
+    let mut pts = points.to_vec();
+    for j in 0..k {
+        pts = differences(&pts)
+            .into_iter()
+            .map(|d| d * (n - j) as f64)
+            .collect();
+    }
+    pts
+}
+
+impl<C: Cartesian> BezierCurve<C> {
+    /// The derivative of order `order` at `t` with respect to `t` (order 0 is the point).
+    ///
+    /// Polynomial: `P^(k)(t) = n!/(n−k)! Σ B_i^{n−k}(s) Δ^k P_i / (b − a)^k`, so
+    /// `P'(0) = n(P_1 − P_0)` and `P''(0) = n(n−1)(P_2 − 2P_1 + P_0)` on `[0, 1]`; an order above
+    /// the degree gives the zero vector. Rational: with `A(s)` the numerator and `w(s)` the
+    /// weight of the homogeneous curve, `C^(k) = (A^(k) − Σ_{i=1..k} C(k,i) w^(i) C^(k−i)) / w`.
+    ///
+    /// # Errors
+    /// A bad `t`; [`Error::TooLarge`] for a rational curve and `order > MAX_DERIVATIVE_ORDER`.
+    pub fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        let s = self.local_parameter(t)?;
+        let n = self.degree();
+        let scale = (self.b - self.a).powi(-(order.min(n + MAX_DERIVATIVE_ORDER) as i32));
+        let mut scratch = Vec::new();
+        if !self.rational {
+            if order > n {
+                return Ok(C::ZERO);
+            }
+            let pts = derivative_points(&self.homogeneous, order);
+            return Ok(C::numerator(de_casteljau_point(&pts, s, &mut scratch)) * scale);
+        }
+        if order > MAX_DERIVATIVE_ORDER {
+            return Err(Error::TooLarge {
+                what: "derivative order of a rational curve",
+                value: order,
+                max: MAX_DERIVATIVE_ORDER,
+            });
+        }
+        // Homogeneous derivatives A^(j), w^(j) for j = 0..=order (zero above the degree).
+        let mut homogeneous_derivs = Vec::with_capacity(order + 1);
+        let mut pts = self.homogeneous.clone();
+        for j in 0..=order {
+            if j > n {
+                homogeneous_derivs.push(C::Homogeneous::ZERO);
+                continue;
+            }
+            if j > 0 {
+                pts = differences(&pts)
+                    .into_iter()
+                    .map(|d| d * (n + 1 - j) as f64)
+                    .collect();
+            }
+            homogeneous_derivs.push(de_casteljau_point(&pts, s, &mut scratch));
+        }
+        let w0 = C::weight_of(homogeneous_derivs[0]);
+        let mut cs: Vec<C> = Vec::with_capacity(order + 1);
+        for k in 0..=order {
+            let mut v = C::numerator(homogeneous_derivs[k]);
+            let mut binom = 1.0;
+            for i in 1..=k {
+                binom = binom * (k + 1 - i) as f64 / i as f64;
+                v = v - cs[k - i] * (binom * C::weight_of(homogeneous_derivs[i]));
+            }
+            cs.push(v * (1.0 / w0));
+        }
+        Ok(cs[order] * scale)
+    }
+
+    /// The hodograph: the polynomial curve `P'(t)` of degree `n − 1` with control points
+    /// `n (P_{i+1} − P_i)/(b − a)`, on the same interval. A line's hodograph is constant and is
+    /// returned as a degree-1 curve with two equal points.
+    ///
+    /// # Errors
+    /// [`Error::Mismatch`] for a rational curve, whose derivative is not a Bézier curve of
+    /// this form (sample `derivative` instead).
+    pub fn hodograph(&self) -> Result<Self> {
+        if self.rational {
+            return Err(Error::Mismatch {
+                message: "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead".into(),
+            });
+        }
+        let n = self.degree();
+        let scale = n as f64 / (self.b - self.a);
+        let mut pts: Vec<_> = differences(&self.homogeneous)
+            .into_iter()
+            .map(|d| C::numerator(d) * scale)
+            .collect();
+        if pts.len() == 1 {
+            pts.push(pts[0]);
+        }
+        let curve = BezierCurve::new(pts, None)?;
+        curve.with_interval(self.a, self.b)
+    }
+
+    /// Curvature at `t`: in 2D the signed `κ = (x'y'' − y'x'') / |P'|³` (positive where the curve
+    /// turns counter-clockwise), in 3D `κ = |P' × P''| / |P'|³ >= 0`. `+∞` where the velocity
+    /// vanishes (a cusp, or an end point whose neighbouring control point coincides with it),
+    /// 0 on a straight piece.
+    pub fn curvature(&self, t: f64) -> Result<f64> {
+        let d1 = self.derivative(t, 1)?;
+        let d2 = self.derivative(t, 2)?;
+        let speed = d1.norm();
+        let cross = C::cross_norm(d1, d2);
+        if speed == 0.0 {
+            return Ok(f64::INFINITY);
+        }
+        Ok(cross / (speed * speed * speed))
+    }
+}

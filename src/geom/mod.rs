@@ -1,0 +1,291 @@
+//! Shared geometry: the point trait that lets one implementation of de Casteljau, de Boor and
+//! knot insertion serve 2D, 3D and homogeneous (rational) points, plus flat-array conversion.
+
+use crate::error::{check_finite, Error, Result};
+use glam::{DVec2, DVec3, DVec4};
+use std::ops::{Add, Mul, Sub};
+
+/// A point (or vector) in an affine space over `f64`: what the curve algorithms need.
+///
+/// Implemented for [`DVec2`], [`DVec3`], [`DVec4`] and `f64` (1D, for scalar Bézier functions). Homogeneous points of 2D and 3D curves are
+/// `DVec3` and `DVec4` (`(w·x, w·y, w)`, `(w·x, w·y, w·z, w)`).
+pub trait Point:
+    Copy
+    + PartialEq
+    + std::fmt::Debug
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<f64, Output = Self>
+{
+    /// Number of coordinates.
+    const DIM: usize;
+    /// The zero vector.
+    const ZERO: Self;
+    /// `(1 - t)·self + t·other`; `t = 0` gives `self`, `t = 1` gives `other` exactly.
+    fn lerp_to(self, other: Self, t: f64) -> Self;
+    /// Coordinate `i` (`0 <= i < DIM`).
+    fn coord(&self, i: usize) -> f64;
+    /// Builds a point from the first `DIM` values of `c`.
+    fn from_slice(c: &[f64]) -> Self;
+    /// Writes the `DIM` coordinates into `out[..DIM]`.
+    fn write_to(&self, out: &mut [f64]);
+    /// Component-wise minimum.
+    fn min_by_coord(self, other: Self) -> Self;
+    /// Component-wise maximum.
+    fn max_by_coord(self, other: Self) -> Self;
+    /// Dot product.
+    fn dot_with(self, other: Self) -> f64;
+    /// Euclidean length.
+    fn norm(self) -> f64 {
+        self.dot_with(self).sqrt()
+    }
+}
+
+macro_rules! impl_point {
+    ($t:ty, $dim:expr) => {
+        impl Point for $t {
+            const DIM: usize = $dim;
+            const ZERO: Self = <$t>::ZERO;
+            #[inline]
+            fn lerp_to(self, other: Self, t: f64) -> Self {
+                // Written as (1-t)a + tb rather than a + t(b-a) so both ends are exact.
+                self * (1.0 - t) + other * t
+            }
+            #[inline]
+            fn coord(&self, i: usize) -> f64 {
+                self.to_array()[i]
+            }
+            #[inline]
+            fn from_slice(c: &[f64]) -> Self {
+                <$t>::from_slice(c)
+            }
+            #[inline]
+            fn write_to(&self, out: &mut [f64]) {
+                self.write_to_slice(&mut out[..$dim]);
+            }
+            #[inline]
+            fn min_by_coord(self, other: Self) -> Self {
+                self.min(other)
+            }
+            #[inline]
+            fn max_by_coord(self, other: Self) -> Self {
+                self.max(other)
+            }
+            #[inline]
+            fn dot_with(self, other: Self) -> f64 {
+                self.dot(other)
+            }
+        }
+    };
+}
+impl_point!(DVec2, 2);
+impl_point!(DVec3, 3);
+impl_point!(DVec4, 4);
+
+impl Point for f64 {
+    const DIM: usize = 1;
+    const ZERO: Self = 0.0;
+    #[inline]
+    fn lerp_to(self, other: Self, t: f64) -> Self {
+        self * (1.0 - t) + other * t
+    }
+    #[inline]
+    fn coord(&self, _i: usize) -> f64 {
+        *self
+    }
+    #[inline]
+    fn from_slice(c: &[f64]) -> Self {
+        c[0]
+    }
+    #[inline]
+    fn write_to(&self, out: &mut [f64]) {
+        out[0] = *self;
+    }
+    #[inline]
+    fn min_by_coord(self, other: Self) -> Self {
+        self.min(other)
+    }
+    #[inline]
+    fn max_by_coord(self, other: Self) -> Self {
+        self.max(other)
+    }
+    #[inline]
+    fn dot_with(self, other: Self) -> f64 {
+        self * other
+    }
+}
+
+/// A Cartesian point type of a curve (2D or 3D) and its homogeneous counterpart.
+///
+/// A rational curve with weights `w_i` is the projection of the polynomial curve with
+/// homogeneous control points `P^w_i = (w_i·P_i, w_i)` (syllabus §4).
+pub trait Cartesian: Point {
+    /// The homogeneous point type: one more coordinate, the weight last.
+    type Homogeneous: Point;
+    /// `(w·self, w)`.
+    fn to_homogeneous(self, w: f64) -> Self::Homogeneous;
+    /// The first `DIM` coordinates of `h`, not divided (the numerator of a rational point).
+    fn numerator(h: Self::Homogeneous) -> Self;
+    /// The weight (last coordinate) of `h`.
+    fn weight_of(h: Self::Homogeneous) -> f64;
+    /// Central projection onto `w = 1`: `numerator(h) / weight_of(h)`.
+    fn project(h: Self::Homogeneous) -> Self {
+        Self::numerator(h) * (1.0 / Self::weight_of(h))
+    }
+    /// Distance from `self` to the segment `[a, b]`.
+    fn distance_to_segment(self, a: Self, b: Self) -> f64 {
+        let ab = b - a;
+        let len2 = ab.dot_with(ab);
+        let u = if len2 > 0.0 {
+            ((self - a).dot_with(ab) / len2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (self - (a + ab * u)).norm()
+    }
+    /// The 2D cross product `a.x·b.y − a.y·b.x` for 2D points, the length of `a × b` for 3D.
+    fn cross_norm(a: Self, b: Self) -> f64;
+}
+
+impl Cartesian for DVec2 {
+    type Homogeneous = DVec3;
+    #[inline]
+    fn to_homogeneous(self, w: f64) -> DVec3 {
+        DVec3::new(self.x * w, self.y * w, w)
+    }
+    #[inline]
+    fn numerator(h: DVec3) -> DVec2 {
+        h.truncate()
+    }
+    #[inline]
+    fn weight_of(h: DVec3) -> f64 {
+        h.z
+    }
+    #[inline]
+    fn cross_norm(a: DVec2, b: DVec2) -> f64 {
+        a.perp_dot(b)
+    }
+}
+
+impl Cartesian for DVec3 {
+    type Homogeneous = DVec4;
+    #[inline]
+    fn to_homogeneous(self, w: f64) -> DVec4 {
+        (self * w).extend(w)
+    }
+    #[inline]
+    fn numerator(h: DVec4) -> DVec3 {
+        h.truncate()
+    }
+    #[inline]
+    fn weight_of(h: DVec4) -> f64 {
+        h.w
+    }
+    #[inline]
+    fn cross_norm(a: DVec3, b: DVec3) -> f64 {
+        a.cross(b).length()
+    }
+}
+
+/// Axis-aligned bounding box.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoundingBox<P> {
+    /// Component-wise minimum.
+    pub min: P,
+    /// Component-wise maximum.
+    pub max: P,
+}
+
+impl<P: Point> BoundingBox<P> {
+    /// The box of a non-empty set of points (`None` for an empty slice).
+    pub fn of_points(points: &[P]) -> Option<Self> {
+        let first = *points.first()?;
+        Some(points.iter().fold(
+            BoundingBox {
+                min: first,
+                max: first,
+            },
+            |b, &p| b.including(p),
+        ))
+    }
+    /// The smallest box containing `self` and `p`.
+    pub fn including(self, p: P) -> Self {
+        BoundingBox {
+            min: self.min.min_by_coord(p),
+            max: self.max.max_by_coord(p),
+        }
+    }
+    /// Length of the diagonal.
+    pub fn diagonal(&self) -> f64 {
+        (self.max - self.min).norm()
+    }
+}
+
+/// Splits a flat coordinate array into points of dimension `P::DIM`, validating count and
+/// finiteness ("coordinate 5 is NaN").
+pub fn points_from_flat<P: Point>(coords: &[f64]) -> Result<Vec<P>> {
+    if !coords.len().is_multiple_of(P::DIM) {
+        return Err(Error::CoordinateCount {
+            count: coords.len(),
+            dim: P::DIM,
+        });
+    }
+    check_all_finite(coords, "coordinate")?;
+    Ok(coords.chunks_exact(P::DIM).map(P::from_slice).collect())
+}
+
+/// Checks every value of `values` is finite; the error names `"{what} {index}"`.
+pub fn check_all_finite(values: &[f64], what: &str) -> Result<()> {
+    for (i, &v) in values.iter().enumerate() {
+        check_finite(|| format!("{what} {i}"), v)?;
+    }
+    Ok(())
+}
+
+/// Validates `dim` (2 or 3).
+pub fn check_dim(dim: usize) -> Result<usize> {
+    if dim == 2 || dim == 3 {
+        Ok(dim)
+    } else {
+        Err(Error::InvalidDimension { dim })
+    }
+}
+
+/// Binomial coefficient `C(n, k)` as `f64` (exact for the degrees curves use).
+pub fn binomial(n: usize, k: usize) -> f64 {
+    if k > n {
+        return 0.0;
+    }
+    let k = k.min(n - k);
+    (0..k).fold(1.0, |c, j| c * (n - j) as f64 / (j + 1) as f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn binomial_matches_pascal() {
+        assert_eq!(binomial(4, 2), 6.0);
+        assert_eq!(binomial(10, 3), 120.0);
+        assert_eq!(binomial(3, 4), 0.0);
+        assert_eq!(binomial(0, 0), 1.0);
+    }
+
+    #[test]
+    fn lerp_is_exact_at_both_ends() {
+        let a = DVec2::new(0.1, 0.7);
+        let b = DVec2::new(0.3, -2.9);
+        assert_eq!(a.lerp_to(b, 0.0), a);
+        assert_eq!(a.lerp_to(b, 1.0), b);
+    }
+
+    #[test]
+    fn flat_points_are_validated() {
+        assert!(points_from_flat::<DVec2>(&[1.0, 2.0, 3.0]).is_err());
+        let e = points_from_flat::<DVec2>(&[1.0, f64::NAN]).unwrap_err();
+        assert!(e.to_string().contains("coordinate 1 is NaN"), "{e}");
+    }
+}

@@ -1,0 +1,22 @@
+//! # splinelab
+//!
+//! Parametric curves and surfaces for teaching — Bézier, B-spline, NURBS, interpolating
+//! splines, tensor-product patches — with the constructions (de Casteljau and de Boor
+//! triangles, subdivision halves, intersection boxes) returned as data, compiled to
+//! WebAssembly for an interactive playground.
+//!
+//! The algorithm core is plain Rust over `glam`'s `f64` vectors and builds and tests natively;
+//! the JavaScript bindings live in [`wasm`] only. Conventions follow the syllabus: degree `p`,
+//! control points `P_0..P_n`, Bézier curves on `t ∈ [0, 1]` (or an explicit `[a, b]`),
+//! rational curves evaluated on homogeneous points `(w_i P_i, w_i)` with one division at the
+//! end. Invalid input gives an [`Error`] whose message names the bad value; nothing reachable
+//! from JavaScript panics.
+
+pub mod bezier;
+pub mod error;
+pub mod geom;
+pub mod wasm;
+
+pub use bezier::BezierCurve;
+pub use error::{Error, Result};
+pub use glam::{DVec2, DVec3, DVec4};

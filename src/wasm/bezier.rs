@@ -1,0 +1,515 @@
+//! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
+
+use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
+use crate::error::{check_finite, Error};
+use crate::geom::{check_dim, Cartesian, Point};
+use glam::{DVec2, DVec3};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// A 2D or 3D curve behind one JS class.
+#[derive(Clone)]
+enum Curve {
+    D2(BezierCurve<DVec2>),
+    D3(BezierCurve<DVec3>),
+}
+
+/// Runs `$body` with `$c` bound to the curve of either dimension.
+macro_rules! with_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => $body,
+            Curve::D3($c) => $body,
+        }
+    };
+}
+
+/// Maps a curve of either dimension to a curve of the same dimension.
+macro_rules! map_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => Curve::D2($body),
+            Curve::D3($c) => Curve::D3($body),
+        }
+    };
+}
+
+/// Points as one flat array of `P::DIM` numbers each.
+fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
+    let mut out = vec![0.0; points.len() * P::DIM];
+    for (p, o) in points.iter().zip(out.chunks_exact_mut(P::DIM)) {
+        p.write_to(o);
+    }
+    out
+}
+
+fn point_from<C: Cartesian>(coords: &[f64]) -> Result<C, Error> {
+    if coords.len() != C::DIM {
+        return Err(Error::PointDimension {
+            expected: C::DIM,
+            got: coords.len(),
+        });
+    }
+    Ok(C::from_slice(coords))
+}
+
+fn build(points: &[f64], dim: usize, weights: Option<&[f64]>) -> Result<Curve, Error> {
+    Ok(match check_dim(dim)? {
+        2 => Curve::D2(BezierCurve::from_flat(points, weights)?),
+        _ => Curve::D3(BezierCurve::from_flat(points, weights)?),
+    })
+}
+
+/// A polynomial or rational Bézier curve in 2D or 3D (see the README for the conventions).
+#[wasm_bindgen(js_name = BezierCurve)]
+#[derive(Clone)]
+pub struct JsBezierCurve {
+    inner: Curve,
+}
+
+#[wasm_bindgen(js_class = BezierCurve)]
+impl JsBezierCurve {
+    /// `new BezierCurve(points, dim, weights?)`: flat coordinates `[x0, y0, (z0,) x1, …]`,
+    /// `dim` 2 or 3, optional weights (> 0, one per point) for a rational curve, on t ∈ [0, 1].
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        points: &[f64],
+        dim: usize,
+        weights: Option<Vec<f64>>,
+    ) -> Result<JsBezierCurve, JsError> {
+        Ok(JsBezierCurve {
+            inner: build(points, dim, weights.as_deref())?,
+        })
+    }
+
+    /// `BezierCurve.withInterval(points, dim, a, b, weights?)`: the curve on t ∈ [a, b].
+    #[wasm_bindgen(js_name = withInterval)]
+    pub fn with_interval(
+        points: &[f64],
+        dim: usize,
+        a: f64,
+        b: f64,
+        weights: Option<Vec<f64>>,
+    ) -> Result<JsBezierCurve, JsError> {
+        let curve = build(points, dim, weights.as_deref())?;
+        let inner = match curve {
+            Curve::D2(c) => Curve::D2(c.with_interval(a, b)?),
+            Curve::D3(c) => Curve::D3(c.with_interval(a, b)?),
+        };
+        Ok(JsBezierCurve { inner })
+    }
+
+    /// `BezierCurve.fromPolynomial(coefficients, dim, a, b)`: the curve on [a, b] equal to
+    /// `Σ c_k t^k`; `coefficients` holds `c_0, c_1, …` as flat points of `dim` coordinates.
+    #[wasm_bindgen(js_name = fromPolynomial)]
+    pub fn from_polynomial(
+        coefficients: &[f64],
+        dim: usize,
+        a: f64,
+        b: f64,
+    ) -> Result<JsBezierCurve, JsError> {
+        let inner = match check_dim(dim)? {
+            2 => Curve::D2(bezier::from_polynomial(
+                &crate::geom::points_from_flat::<DVec2>(coefficients)?,
+                a,
+                b,
+            )?),
+            _ => Curve::D3(bezier::from_polynomial(
+                &crate::geom::points_from_flat::<DVec3>(coefficients)?,
+                a,
+                b,
+            )?),
+        };
+        Ok(JsBezierCurve { inner })
+    }
+
+    /// Degree n (number of control points − 1).
+    #[wasm_bindgen(getter)]
+    pub fn degree(&self) -> usize {
+        with_curve!(&self.inner, c => c.degree())
+    }
+
+    /// Dimension: 2 or 3.
+    #[wasm_bindgen(getter)]
+    pub fn dim(&self) -> usize {
+        match self.inner {
+            Curve::D2(_) => 2,
+            Curve::D3(_) => 3,
+        }
+    }
+
+    /// True when some weight differs from 1.
+    #[wasm_bindgen(getter)]
+    pub fn rational(&self) -> bool {
+        with_curve!(&self.inner, c => c.is_rational())
+    }
+
+    /// The parameter interval `[a, b]` (default `[0, 1]`).
+    pub fn domain(&self) -> Vec<f64> {
+        let (a, b) = with_curve!(&self.inner, c => c.interval());
+        vec![a, b]
+    }
+
+    /// The point at t (Float64Array of dim numbers).
+    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
+    }
+
+    /// The derivative of the given order at t (order 0 = the point; above the degree of a
+    /// polynomial curve, the zero vector).
+    pub fn derivative(&self, t: f64, order: usize) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
+    }
+
+    /// Points at every t of `ts`, flat (ts.length·dim numbers), in one pass.
+    pub fn sample(&self, ts: &[f64]) -> Result<Vec<f64>, JsError> {
+        let dim = self.dim();
+        let mut out = vec![0.0; ts.len().saturating_mul(dim)];
+        with_curve!(&self.inner, c => c.sample_into(ts, &mut out))?;
+        Ok(out)
+    }
+
+    /// `count` points at equally spaced parameters over the whole interval, ends included.
+    #[wasm_bindgen(js_name = sampleUniform)]
+    pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
+        if count > bezier::MAX_SAMPLES {
+            return Err(Error::TooLarge {
+                what: "count",
+                value: count,
+                max: bezier::MAX_SAMPLES,
+            }
+            .into());
+        }
+        let mut out = vec![0.0; count * self.dim()];
+        with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
+        Ok(out)
+    }
+
+    /// de Casteljau's triangle at t: every level concatenated, the control points first;
+    /// (n+1)(n+2)/2 points, flat. Rational curves give projected points.
+    #[wasm_bindgen(js_name = deCasteljau)]
+    pub fn de_casteljau(&self, t: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&c.de_casteljau(t)?)))
+    }
+
+    /// de Casteljau's triangle on the homogeneous points `(w·x, w·y, (w·z,) w)`, flat with
+    /// dim + 1 numbers per point.
+    #[wasm_bindgen(js_name = deCasteljauHomogeneous)]
+    pub fn de_casteljau_homogeneous(&self, t: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&c.de_casteljau_homogeneous(t)?)))
+    }
+
+    /// `[left, right]`: the halves at t (top edge and hypotenuse of the triangle), each on [0, 1].
+    pub fn split(&self, t: f64) -> Result<Vec<JsBezierCurve>, JsError> {
+        let (l, r) = match &self.inner {
+            Curve::D2(c) => {
+                let (l, r) = c.split(t)?;
+                (Curve::D2(l), Curve::D2(r))
+            }
+            Curve::D3(c) => {
+                let (l, r) = c.split(t)?;
+                (Curve::D3(l), Curve::D3(r))
+            }
+        };
+        Ok(vec![JsBezierCurve { inner: l }, JsBezierCurve { inner: r }])
+    }
+
+    /// The same curve with degree n + 1.
+    pub fn elevate(&self) -> Result<JsBezierCurve, JsError> {
+        Ok(JsBezierCurve {
+            inner: map_curve!(&self.inner, c => c.elevate()?),
+        })
+    }
+
+    /// The same curve traced backwards (control points reversed).
+    pub fn reversed(&self) -> JsBezierCurve {
+        JsBezierCurve {
+            inner: map_curve!(&self.inner, c => c.reversed()),
+        }
+    }
+
+    /// The hodograph P'(t): a Bézier curve of degree n − 1 (polynomial curves only).
+    pub fn hodograph(&self) -> Result<JsBezierCurve, JsError> {
+        Ok(JsBezierCurve {
+            inner: map_curve!(&self.inner, c => c.hodograph()?),
+        })
+    }
+
+    /// A copy of this curve (a new wasm object; free it too).
+    #[wasm_bindgen(js_name = clone)]
+    pub fn clone_curve(&self) -> JsBezierCurve {
+        self.clone()
+    }
+
+    /// The control points, flat.
+    #[wasm_bindgen(js_name = controlPoints)]
+    pub fn control_points(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => flatten_points(&c.control_points()))
+    }
+
+    /// The weights (all 1 for a polynomial curve).
+    pub fn weights(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => c.weights())
+    }
+
+    /// The homogeneous control points `(w·P, w)`, flat with dim + 1 numbers per point.
+    #[wasm_bindgen(js_name = homogeneousPoints)]
+    pub fn homogeneous_points(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => flatten_points(c.homogeneous_points()))
+    }
+
+    /// Moves control point i in place (the drag path); `point` has dim numbers.
+    #[wasm_bindgen(js_name = setControlPoint)]
+    pub fn set_control_point(&mut self, i: usize, point: &[f64]) -> Result<(), JsError> {
+        with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
+        Ok(())
+    }
+
+    /// Sets weight i (> 0) in place.
+    #[wasm_bindgen(js_name = setWeight)]
+    pub fn set_weight(&mut self, i: usize, w: f64) -> Result<(), JsError> {
+        with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
+        Ok(())
+    }
+
+    /// Polyline vertices (flat, both ends included) within `tolerance` of the curve.
+    pub fn flatten(&self, tolerance: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&c.flatten(tolerance)?)))
+    }
+
+    /// Sorted t where the curve meets the infinite line through (x0, y0) and (x1, y1) (2D).
+    #[wasm_bindgen(js_name = intersectLine)]
+    pub fn intersect_line(
+        &self,
+        x0: f64,
+        y0: f64,
+        x1: f64,
+        y1: f64,
+        tolerance: f64,
+    ) -> Result<Vec<f64>, JsError> {
+        Ok(self
+            .curve_2d("intersectLine")?
+            .intersect_line(DVec2::new(x0, y0), DVec2::new(x1, y1), tolerance)?
+            .ts)
+    }
+
+    /// The boxes visited by `intersectLine`, 6 numbers each: depth, minX, minY, maxX, maxY,
+    /// hit (1 when the line meets the box, 0 when the box was pruned).
+    #[wasm_bindgen(js_name = intersectLineBoxes)]
+    pub fn intersect_line_boxes(
+        &self,
+        x0: f64,
+        y0: f64,
+        x1: f64,
+        y1: f64,
+        tolerance: f64,
+    ) -> Result<Vec<f64>, JsError> {
+        let result = self.curve_2d("intersectLineBoxes")?.intersect_line(
+            DVec2::new(x0, y0),
+            DVec2::new(x1, y1),
+            tolerance,
+        )?;
+        Ok(result
+            .boxes
+            .iter()
+            .flat_map(|b| {
+                [
+                    b.depth as f64,
+                    b.bounds.min.x,
+                    b.bounds.min.y,
+                    b.bounds.max.x,
+                    b.bounds.max.y,
+                    if b.hit { 1.0 } else { 0.0 },
+                ]
+            })
+            .collect())
+    }
+
+    /// How many times the line through (x0, y0), (x1, y1) crosses the control polygon (2D).
+    #[wasm_bindgen(js_name = polygonLineCrossings)]
+    pub fn polygon_line_crossings(
+        &self,
+        x0: f64,
+        y0: f64,
+        x1: f64,
+        y1: f64,
+    ) -> Result<usize, JsError> {
+        for (k, v) in [x0, y0, x1, y1].into_iter().enumerate() {
+            check_finite(|| ["x0", "y0", "x1", "y1"][k].into(), v)?;
+        }
+        Ok(self
+            .curve_2d("polygonLineCrossings")?
+            .polygon_line_crossings(DVec2::new(x0, y0), DVec2::new(x1, y1)))
+    }
+
+    /// Arc length; `accuracy` (absolute) defaults to 1e-13 × the control polygon's length.
+    #[wasm_bindgen(js_name = arcLength)]
+    pub fn arc_length(&self, accuracy: Option<f64>) -> Result<f64, JsError> {
+        Ok(with_curve!(&self.inner, c => c.arc_length(accuracy))?)
+    }
+
+    /// Curvature at t: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity at a cusp.
+    pub fn curvature(&self, t: f64) -> Result<f64, JsError> {
+        Ok(with_curve!(&self.inner, c => c.curvature(t))?)
+    }
+
+    /// The tight bounding box of the curve: `[minX, minY, (minZ,) maxX, maxY, (maxZ)]`.
+    #[wasm_bindgen(js_name = boundingBox)]
+    pub fn bounding_box(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => {
+            let b = c.bounding_box();
+            flatten_points(&[b.min, b.max])
+        })
+    }
+}
+
+impl JsBezierCurve {
+    fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
+        match &self.inner {
+            Curve::D2(c) => Ok(c),
+            Curve::D3(_) => Err(Error::Needs2D { operation, dim: 3 }),
+        }
+    }
+}
+
+/// `bernstein(n, i, t)`: `B_i^n(t) = C(n,i) t^i (1−t)^(n−i)` for `0 <= i <= n`, t ∈ [0, 1].
+#[wasm_bindgen]
+pub fn bernstein(n: usize, i: usize, t: f64) -> Result<f64, JsError> {
+    check_bernstein_args(n, i)?;
+    check_finite(|| "t".into(), t)?;
+    if !(0.0..=1.0).contains(&t) {
+        return Err(Error::ParameterOutOfRange {
+            name: "t",
+            value: t,
+            min: 0.0,
+            max: 1.0,
+        }
+        .into());
+    }
+    Ok(bezier::bernstein(n, i, t))
+}
+
+fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
+    if n > bezier::MAX_DEGREE {
+        return Err(Error::TooLarge {
+            what: "n",
+            value: n,
+            max: bezier::MAX_DEGREE,
+        });
+    }
+    if i > n {
+        return Err(Error::IndexOutOfRange {
+            index: i,
+            count: n + 1,
+        });
+    }
+    Ok(())
+}
+
+/// `bernsteinBasis(n, count)`: every `B_i^n` at `count` equally spaced t in [0, 1], i-major:
+/// value `k` of function `i` at index `i·count + k` ((n+1)·count numbers, for plotting).
+#[wasm_bindgen(js_name = bernsteinBasis)]
+pub fn bernstein_basis(n: usize, count: usize) -> Result<Vec<f64>, JsError> {
+    check_bernstein_args(n, 0)?;
+    if count > bezier::MAX_SAMPLES / (n + 1) {
+        return Err(Error::TooLarge {
+            what: "count",
+            value: count,
+            max: bezier::MAX_SAMPLES / (n + 1),
+        }
+        .into());
+    }
+    let step = if count > 1 {
+        1.0 / (count - 1) as f64
+    } else {
+        0.0
+    };
+    Ok((0..=n)
+        .flat_map(|i| {
+            (0..count).map(move |k| {
+                bezier::bernstein(n, i, if k + 1 == count { 1.0 } else { k as f64 * step })
+            })
+        })
+        .collect())
+}
+
+#[derive(Serialize)]
+struct ContinuityJs {
+    c: f64,
+    g: f64,
+}
+
+fn order_to_js(k: i32) -> f64 {
+    if k == Continuity::INFINITE {
+        f64::INFINITY
+    } else {
+        k as f64
+    }
+}
+
+/// `jointContinuity(left, right, tolerance = 1e-9)`: `{ c, g }`, the largest k with C^k and
+/// G^k at the joint of left's end and right's start (−1: the pieces do not meet; Infinity:
+/// one polynomial). G is checked up to 2.
+#[wasm_bindgen(js_name = jointContinuity)]
+pub fn joint_continuity(
+    left: &JsBezierCurve,
+    right: &JsBezierCurve,
+    tolerance: Option<f64>,
+) -> Result<JsValue, JsError> {
+    let tol = tolerance.unwrap_or(1e-9);
+    let k = match (&left.inner, &right.inner) {
+        (Curve::D2(l), Curve::D2(r)) => bezier::check_continuity(l, r, tol)?,
+        (Curve::D3(l), Curve::D3(r)) => bezier::check_continuity(l, r, tol)?,
+        _ => return Err(dim_mismatch(left, right).into()),
+    };
+    Ok(serde_wasm_bindgen::to_value(&ContinuityJs {
+        c: order_to_js(k.c),
+        g: order_to_js(k.g),
+    })?)
+}
+
+/// `joinBezier(left, right, rule, adjust = "right")`: `[left, right]` with the constrained
+/// points of one piece moved so the joint obeys rule "C0" | "C1" | "C2" | "G1".
+#[wasm_bindgen(js_name = joinBezier)]
+pub fn join_bezier(
+    left: &JsBezierCurve,
+    right: &JsBezierCurve,
+    rule: &str,
+    adjust: Option<String>,
+) -> Result<Vec<JsBezierCurve>, JsError> {
+    let rule = JoinRule::parse(rule)?;
+    let adjust_right = match adjust.as_deref().unwrap_or("right") {
+        "right" => true,
+        "left" => false,
+        other => {
+            return Err(Error::UnknownOption {
+                name: "adjust",
+                value: other.into(),
+                expected: "\"left\", \"right\"",
+            }
+            .into())
+        }
+    };
+    let (l, r) = match (&left.inner, &right.inner) {
+        (Curve::D2(l), Curve::D2(r)) => {
+            let (l, r) = bezier::join(l, r, rule, adjust_right)?;
+            (Curve::D2(l), Curve::D2(r))
+        }
+        (Curve::D3(l), Curve::D3(r)) => {
+            let (l, r) = bezier::join(l, r, rule, adjust_right)?;
+            (Curve::D3(l), Curve::D3(r))
+        }
+        _ => return Err(dim_mismatch(left, right).into()),
+    };
+    Ok(vec![JsBezierCurve { inner: l }, JsBezierCurve { inner: r }])
+}
+
+fn dim_mismatch(left: &JsBezierCurve, right: &JsBezierCurve) -> Error {
+    Error::Mismatch {
+        message: format!(
+            "both pieces need the same dim, got {} and {}",
+            left.dim(),
+            right.dim()
+        ),
+    }
+}

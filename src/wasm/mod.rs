@@ -1,0 +1,16 @@
+//! JavaScript bindings (wasm-bindgen): the only module that knows about JS.
+//!
+//! Thin wrappers: flat `Float64Array`s in and out, camelCase names, and every [`crate::Error`]
+//! turned into a thrown JS `Error` carrying its message (via `JsError`). No maths here.
+
+pub mod bezier;
+
+pub use bezier::JsBezierCurve;
+
+use wasm_bindgen::prelude::*;
+
+/// The crate version, e.g. `"0.1.0"`.
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").into()
+}

@@ -1,0 +1,114 @@
+//! The JavaScript boundary, in Node: bad input becomes a thrown `Error` with a clear message,
+//! never a trap, and the wrappers return the flat layouts the README documents.
+#![cfg(target_arch = "wasm32")]
+
+use splinelab::wasm::{self, JsBezierCurve};
+use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+fn message<T>(r: Result<T, JsError>) -> String {
+    match r {
+        Ok(_) => panic!("expected an error"),
+        Err(e) => JsValue::from(e)
+            .dyn_into::<js_sys::Error>()
+            .expect("a JS Error")
+            .message()
+            .into(),
+    }
+}
+
+fn example() -> JsBezierCurve {
+    JsBezierCurve::new(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2, None).unwrap()
+}
+
+#[test]
+fn constructor_errors_name_the_bad_value() {
+    assert_eq!(
+        message(JsBezierCurve::new(&[0.0, 0.0], 2, None)),
+        "a Bézier curve needs at least 2 control points, got 1"
+    );
+    assert!(message(JsBezierCurve::new(&[0.0, 0.0, 1.0], 2, None)).contains("coordinate count 3"));
+    assert_eq!(
+        message(JsBezierCurve::new(&[0.0; 8], 4, None)),
+        "dim must be 2 or 3, got 4"
+    );
+    assert_eq!(
+        message(JsBezierCurve::new(&[0.0; 8], 1, None)),
+        "dim must be 2 or 3, got 1"
+    );
+    assert!(
+        message(JsBezierCurve::new(&[0.0, f64::NAN, 1.0, 1.0], 2, None))
+            .contains("coordinate 1 is NaN")
+    );
+    assert!(message(JsBezierCurve::new(
+        &[0.0, 0.0, 1.0, 1.0],
+        2,
+        Some(vec![1.0, 0.0])
+    ))
+    .contains("weight 1 is 0"));
+    assert!(message(JsBezierCurve::new(
+        &[0.0, 0.0, 1.0, 1.0],
+        2,
+        Some(vec![1.0])
+    ))
+    .contains("got 1"));
+    // dim is checked before the coordinate count (the documented validation order).
+    assert!(message(JsBezierCurve::new(&[0.0; 5], 5, None)).starts_with("dim must be 2 or 3"));
+}
+
+#[test]
+fn method_errors_are_thrown_not_trapped() {
+    let mut c = example();
+    assert_eq!(
+        message(c.evaluate(1.5)),
+        "t = 1.5 is outside the domain [0, 1]"
+    );
+    assert!(message(c.derivative(f64::INFINITY, 1)).contains("t is inf"));
+    assert!(message(c.set_control_point(7, &[1.0, 1.0])).contains("index 7 is out of range"));
+    assert_eq!(
+        message(c.set_control_point(0, &[1.0, 1.0, 1.0])),
+        "a point needs 2 coordinates, got 3"
+    );
+    assert!(message(c.set_weight(0, 0.0)).contains("weight 0 is 0"));
+    assert!(message(c.sample(&[0.0, 2.0])).contains("t = 2"));
+    assert!(message(c.sample_uniform(usize::MAX)).contains("too large"));
+    assert!(message(c.flatten(-1.0)).contains("tolerance -1"));
+    assert!(message(c.split(-0.5)).contains("t = -0.5"));
+    assert!(message(wasm::bezier::bernstein(3, 4, 0.5)).contains("index 4"));
+    assert!(message(wasm::bezier::bernstein(3, 1, 1.5)).contains("t = 1.5"));
+    let c3 = JsBezierCurve::new(&[0.0; 6], 3, None).unwrap();
+    assert!(message(c3.intersect_line(0.0, 0.0, 1.0, 0.0, 1e-9)).contains("2D curves"));
+    assert!(message(wasm::bezier::join_bezier(&example(), &c3, "C1", None)).contains("same dim"));
+    assert!(message(wasm::bezier::join_bezier(
+        &example(),
+        &example(),
+        "C9",
+        None
+    ))
+    .contains("\"C9\""));
+    // After all that the curve still works.
+    assert_eq!(c.evaluate(0.25).unwrap(), vec![29.0 / 16.0, 23.0 / 16.0]);
+}
+
+#[test]
+fn flat_layouts() {
+    let c = example();
+    assert_eq!(c.de_casteljau(0.25).unwrap().len(), 10 * 2);
+    assert_eq!(c.de_casteljau_homogeneous(0.25).unwrap().len(), 10 * 3);
+    assert_eq!(c.sample_uniform(5).unwrap().len(), 10);
+    assert_eq!(c.domain(), vec![0.0, 1.0]);
+    assert_eq!(c.weights(), vec![1.0; 4]);
+    assert_eq!(c.bounding_box().len(), 4);
+    let boxes = c.intersect_line_boxes(0.0, 1.0, 8.0, 1.0, 1e-6).unwrap();
+    assert_eq!(boxes.len() % 6, 0);
+    assert_eq!(boxes[0], 0.0, "the first box is the whole curve at depth 0");
+    let halves = c.split(0.5).unwrap();
+    assert_eq!(halves.len(), 2);
+    assert_eq!(
+        halves[0].control_points()[6..],
+        halves[1].control_points()[..2]
+    );
+    let basis = wasm::bezier::bernstein_basis(3, 5).unwrap();
+    assert_eq!(basis.len(), 4 * 5);
+    assert_eq!((basis[0], basis[4], basis[19]), (1.0, 0.0, 1.0));
+}
