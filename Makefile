@@ -27,7 +27,7 @@ $(WB_STAMP):
 	@rm -f $(TOOLS)/wasm-bindgen-*.stamp && touch $@
 
 node_modules/.stamp: package.json
-	npm install --no-audit --no-fund
+	npm ci --no-audit --no-fund
 	@touch $@
 
 npm-deps: node_modules/.stamp

@@ -112,3 +112,16 @@ fn flat_layouts() {
     assert_eq!(basis.len(), 4 * 5);
     assert_eq!((basis[0], basis[4], basis[19]), (1.0, 0.0, 1.0));
 }
+
+#[test]
+fn composite_checks_its_layout() {
+    use splinelab::wasm::JsCompositeBezier;
+    let pts = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0, 0.0, 3.0, -1.0, 4.0, 0.0];
+    let c = JsCompositeBezier::new(&pts, 2, &[2, 2], None).unwrap();
+    assert_eq!(c.domain(), vec![0.0, 2.0]);
+    assert_eq!(c.evaluate(2.0).unwrap(), vec![4.0, 0.0]);
+    assert!(message(JsCompositeBezier::new(&pts, 2, &[2, 3], None)).contains("need 7 control points"));
+    assert!(message(JsCompositeBezier::new(&pts, 2, &[2, 2], Some(vec![0.0, 1.0]))).contains("3 breakpoints"));
+    assert!(message(JsCompositeBezier::new(&pts, 2, &[0, 5], None)).contains("degree >= 1"));
+    assert!(message(c.piece(2)).contains("index 2"));
+}

@@ -242,3 +242,92 @@ pub fn from_polynomial<C: Cartesian>(coeffs: &[C], a: f64, b: f64) -> Result<Bez
         .collect();
     BezierCurve::new(points, None)?.with_interval(a, b)
 }
+
+/// A piecewise Bézier curve: pieces on consecutive intervals `[t_0, t_1], [t_1, t_2], …`
+/// (the breakpoints), evaluated with the global parameter. The pieces need not meet: the
+/// continuity at each joint is what [`CompositeCurve::continuity`] reports.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompositeCurve<C: Cartesian> {
+    pieces: Vec<BezierCurve<C>>,
+}
+
+impl<C: Cartesian> CompositeCurve<C> {
+    /// Pieces from their control points and the breakpoints `t_0 < t_1 < … < t_k` (one more
+    /// than the pieces); piece `i` is re-parametrised onto `[t_i, t_{i+1}]`.
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] without pieces, [`Error::Mismatch`] for a wrong number of
+    /// breakpoints, the errors of [`BezierCurve::with_interval`] for breakpoints out of order.
+    pub fn new(pieces: Vec<BezierCurve<C>>, breaks: &[f64]) -> Result<Self> {
+        if pieces.is_empty() {
+            return Err(Error::TooFewPoints {
+                needed: 1,
+                got: 0,
+                what: "a composite curve (pieces)",
+            });
+        }
+        if breaks.len() != pieces.len() + 1 {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "{} pieces need {} breakpoints, got {}",
+                    pieces.len(),
+                    pieces.len() + 1,
+                    breaks.len()
+                ),
+            });
+        }
+        let pieces = pieces
+            .into_iter()
+            .zip(breaks.windows(2))
+            .map(|(p, w)| p.with_interval(w[0], w[1]))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(CompositeCurve { pieces })
+    }
+
+    /// The pieces, each on its own interval.
+    pub fn pieces(&self) -> &[BezierCurve<C>] {
+        &self.pieces
+    }
+
+    /// The global domain `[t_0, t_k]`.
+    pub fn domain(&self) -> (f64, f64) {
+        (self.pieces[0].a, self.pieces[self.pieces.len() - 1].b)
+    }
+
+    /// Index of the piece that owns `t`: pieces are closed on the left, so at a joint the
+    /// right piece is used (right-continuity), except at the very end.
+    pub fn piece_index(&self, t: f64) -> Result<usize> {
+        let (a, b) = self.domain();
+        crate::error::check_finite(|| "t".into(), t)?;
+        if t < a || t > b {
+            return Err(Error::ParameterOutOfRange {
+                name: "t",
+                value: t,
+                min: a,
+                max: b,
+            });
+        }
+        Ok(self
+            .pieces
+            .partition_point(|p| p.b <= t)
+            .min(self.pieces.len() - 1))
+    }
+
+    /// The point at the global parameter `t`.
+    pub fn evaluate(&self, t: f64) -> Result<C> {
+        self.pieces[self.piece_index(t)?].evaluate(t)
+    }
+
+    /// The derivative of the given order at `t` (the right piece's at a joint).
+    pub fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        self.pieces[self.piece_index(t)?].derivative(t, order)
+    }
+
+    /// The continuity at each of the `k − 1` joints (see [`check_continuity`]).
+    pub fn continuity(&self, tolerance: f64) -> Result<Vec<Continuity>> {
+        self.pieces
+            .windows(2)
+            .map(|w| check_continuity(&w[0], &w[1], tolerance))
+            .collect()
+    }
+}

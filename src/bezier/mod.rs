@@ -23,7 +23,9 @@ mod derivative;
 mod flatten;
 mod intersect;
 
-pub use composite::{check_continuity, from_polynomial, join, Continuity, JoinRule};
+pub use composite::{
+    check_continuity, from_polynomial, join, CompositeCurve, Continuity, JoinRule,
+};
 pub use de_casteljau::{
     bernstein, de_casteljau_point, de_casteljau_triangle, differences, elevate_points,
     split_points, subsegment_points,

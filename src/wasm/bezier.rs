@@ -334,8 +334,8 @@ impl JsBezierCurve {
         x1: f64,
         y1: f64,
     ) -> Result<usize, JsError> {
-        for (k, v) in [x0, y0, x1, y1].into_iter().enumerate() {
-            check_finite(|| ["x0", "y0", "x1", "y1"][k].into(), v)?;
+        for (name, v) in [("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1)] {
+            check_finite(|| name.into(), v)?;
         }
         Ok(self
             .curve_2d("polygonLineCrossings")?
@@ -439,11 +439,22 @@ struct ContinuityJs {
     g: f64,
 }
 
-fn order_to_js(k: i32) -> f64 {
-    if k == Continuity::INFINITE {
-        f64::INFINITY
-    } else {
-        k as f64
+/// Relative tolerance of the continuity checks when none is given.
+const DEFAULT_CONTINUITY_TOLERANCE: f64 = 1e-9;
+
+impl From<Continuity> for ContinuityJs {
+    fn from(k: Continuity) -> Self {
+        let order = |k: i32| {
+            if k == Continuity::INFINITE {
+                f64::INFINITY
+            } else {
+                k as f64
+            }
+        };
+        ContinuityJs {
+            c: order(k.c),
+            g: order(k.g),
+        }
     }
 }
 
@@ -456,16 +467,13 @@ pub fn joint_continuity(
     right: &JsBezierCurve,
     tolerance: Option<f64>,
 ) -> Result<JsValue, JsError> {
-    let tol = tolerance.unwrap_or(1e-9);
+    let tol = tolerance.unwrap_or(DEFAULT_CONTINUITY_TOLERANCE);
     let k = match (&left.inner, &right.inner) {
         (Curve::D2(l), Curve::D2(r)) => bezier::check_continuity(l, r, tol)?,
         (Curve::D3(l), Curve::D3(r)) => bezier::check_continuity(l, r, tol)?,
         _ => return Err(dim_mismatch(left, right).into()),
     };
-    Ok(serde_wasm_bindgen::to_value(&ContinuityJs {
-        c: order_to_js(k.c),
-        g: order_to_js(k.g),
-    })?)
+    Ok(serde_wasm_bindgen::to_value(&ContinuityJs::from(k))?)
 }
 
 /// `joinBezier(left, right, rule, adjust = "right")`: `[left, right]` with the constrained
@@ -511,5 +519,137 @@ fn dim_mismatch(left: &JsBezierCurve, right: &JsBezierCurve) -> Error {
             left.dim(),
             right.dim()
         ),
+    }
+}
+
+/// A 2D or 3D composite curve behind one JS class.
+enum Composite {
+    D2(bezier::CompositeCurve<DVec2>),
+    D3(bezier::CompositeCurve<DVec3>),
+}
+
+macro_rules! with_composite {
+    ($composite:expr, $c:ident => $body:expr) => {
+        match $composite {
+            Composite::D2($c) => $body,
+            Composite::D3($c) => $body,
+        }
+    };
+}
+
+fn composite_from<C: Cartesian>(
+    points: &[f64],
+    degrees: &[usize],
+    breaks: &[f64],
+) -> Result<bezier::CompositeCurve<C>, Error> {
+    let pts: Vec<C> = crate::geom::points_from_flat(points)?;
+    let needed: usize = degrees
+        .iter()
+        .map(|&d| d.saturating_add(1))
+        .fold(0, usize::saturating_add);
+    if needed != pts.len() {
+        return Err(Error::Mismatch {
+            message: format!(
+                "degrees {degrees:?} need {needed} control points in all (n + 1 per piece), got {}",
+                pts.len()
+            ),
+        });
+    }
+    let mut rest = pts.as_slice();
+    let mut pieces = Vec::with_capacity(degrees.len());
+    for &d in degrees {
+        let (piece, tail) = rest.split_at(d + 1);
+        pieces.push(BezierCurve::new(piece.to_vec(), None)?);
+        rest = tail;
+    }
+    bezier::CompositeCurve::new(pieces, breaks)
+}
+
+/// A piecewise Bézier curve: `new CompositeBezier(points, dim, degrees, breaks?)` where
+/// `points` holds every piece's n + 1 control points one piece after the other, `degrees` the
+/// degree of each piece and `breaks` the k + 1 breakpoints (default 0, 1, …, k): piece i lives
+/// on `[breaks[i], breaks[i+1]]`.
+#[wasm_bindgen(js_name = CompositeBezier)]
+pub struct JsCompositeBezier {
+    inner: Composite,
+}
+
+#[wasm_bindgen(js_class = CompositeBezier)]
+impl JsCompositeBezier {
+    /// See the class documentation.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        points: &[f64],
+        dim: usize,
+        degrees: &[u32],
+        breaks: Option<Vec<f64>>,
+    ) -> Result<JsCompositeBezier, JsError> {
+        let degrees: Vec<usize> = degrees.iter().map(|&d| d as usize).collect();
+        if let Some(&d) = degrees.iter().find(|&&d| d == 0) {
+            return Err(Error::TooFewPoints {
+                needed: 2,
+                got: d + 1,
+                what: "every piece (degree >= 1)",
+            }
+            .into());
+        }
+        let breaks = breaks.unwrap_or_else(|| (0..=degrees.len()).map(|i| i as f64).collect());
+        let inner = match check_dim(dim)? {
+            2 => Composite::D2(composite_from(points, &degrees, &breaks)?),
+            _ => Composite::D3(composite_from(points, &degrees, &breaks)?),
+        };
+        Ok(JsCompositeBezier { inner })
+    }
+
+    /// Number of pieces.
+    #[wasm_bindgen(getter, js_name = pieceCount)]
+    pub fn piece_count(&self) -> usize {
+        with_composite!(&self.inner, c => c.pieces().len())
+    }
+
+    /// The global domain `[t_0, t_k]`.
+    pub fn domain(&self) -> Vec<f64> {
+        let (a, b) = with_composite!(&self.inner, c => c.domain());
+        vec![a, b]
+    }
+
+    /// Piece i as a `BezierCurve` on its own interval (a copy).
+    pub fn piece(&self, i: usize) -> Result<JsBezierCurve, JsError> {
+        let count = self.piece_count();
+        let inner = match &self.inner {
+            Composite::D2(c) => c.pieces().get(i).cloned().map(Curve::D2),
+            Composite::D3(c) => c.pieces().get(i).cloned().map(Curve::D3),
+        };
+        inner
+            .map(|inner| JsBezierCurve { inner })
+            .ok_or_else(|| Error::IndexOutOfRange { index: i, count }.into())
+    }
+
+    /// The point at the global parameter t (the right piece at a joint).
+    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_composite!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
+    }
+
+    /// The derivative of the given order at t (the right piece's at a joint).
+    pub fn derivative(&self, t: f64, order: usize) -> Result<Vec<f64>, JsError> {
+        Ok(with_composite!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
+    }
+
+    /// Points at every t of `ts`, flat.
+    pub fn sample(&self, ts: &[f64]) -> Result<Vec<f64>, JsError> {
+        Ok(with_composite!(&self.inner, c => {
+            let mut out = Vec::with_capacity(ts.len().saturating_mul(3));
+            for &t in ts {
+                out.extend(flatten_points(&[c.evaluate(t)?]));
+            }
+            out
+        }))
+    }
+
+    /// `[{ c, g }, …]`: the continuity at each joint (see `jointContinuity`).
+    pub fn continuity(&self, tolerance: Option<f64>) -> Result<JsValue, JsError> {
+        let ks = with_composite!(&self.inner, c => c.continuity(tolerance.unwrap_or(DEFAULT_CONTINUITY_TOLERANCE))?);
+        let out: Vec<ContinuityJs> = ks.into_iter().map(ContinuityJs::from).collect();
+        Ok(serde_wasm_bindgen::to_value(&out)?)
     }
 }

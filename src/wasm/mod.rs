@@ -2,10 +2,18 @@
 //!
 //! Thin wrappers: flat `Float64Array`s in and out, camelCase names, and every [`crate::Error`]
 //! turned into a thrown JS `Error` carrying its message (via `JsError`). No maths here.
+//! Nothing here may panic (a panic inside wasm kills the module for the whole page), which
+//! clippy enforces for this module tree.
+#![deny(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    clippy::indexing_slicing
+)]
 
 pub mod bezier;
 
-pub use bezier::JsBezierCurve;
+pub use bezier::{JsBezierCurve, JsCompositeBezier};
 
 use wasm_bindgen::prelude::*;
 

@@ -1,0 +1,417 @@
+// Browser tests of the playground in real Chromium (playwright-core, one browser, pages reused).
+// Table-driven over the demo registry (www/demos/index.js): every demo gets the generic checks
+// (loads cleanly, drag and keyboard change the picture, the link restores it, exports parse,
+// import round-trips, bad links and files are reported without killing the page), then its own
+// checks from DEMO_CHECKS below. Ends with one line "e2e: N passed, M failed"; exits 1 on failure.
+//
+//   node tests/e2e/run.mjs            all tests
+//   node tests/e2e/run.mjs casteljau  only tests whose name contains "casteljau"
+import { chromium } from "playwright-core";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { createHash } from "node:crypto";
+import { startServer } from "../../scripts/serve.mjs";
+
+const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
+const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run", "--enable-unsafe-swiftshader"];
+const VIEWPORT = { width: 1280, height: 900 };
+/** Longest a single test may take (ms) before it counts as failed. */
+const TEST_TIMEOUT_MS = 30_000;
+/** Pixels a handle is dragged in the drag test. */
+const DRAG_PX = { x: 40, y: -30 };
+/** Playback runs this long (ms) in the play test. */
+const PLAY_MS = 500;
+const PNG_SIGNATURE = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+const filter = process.argv[2] ?? "";
+
+let passed = 0;
+let failed = 0;
+
+/** Runs one named test with a timeout; failures are reported and counted, never thrown. */
+async function test(name, body) {
+  if (filter && !name.includes(filter)) return;
+  const started = Date.now();
+  let timer;
+  try {
+    await Promise.race([body(), new Promise((_, reject) => (timer = setTimeout(() => reject(new Error(`timed out after ${TEST_TIMEOUT_MS} ms`)), TEST_TIMEOUT_MS)))]);
+    passed += 1;
+    console.log(`ok   ${name} (${Date.now() - started} ms)`);
+  } catch (err) {
+    failed += 1;
+    console.log(`FAIL ${name}\n     ${String(err.stack ?? err).split("\n").slice(0, 4).join("\n     ")}`);
+  } finally {
+    clearTimeout(timer);
+  }
+}
+
+function assert(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+function equal(actual, expected, message) {
+  if (actual !== expected) throw new Error(`${message}: expected ${JSON.stringify(expected)}, got ${JSON.stringify(actual)}`);
+}
+
+const digest = (text) => createHash("sha256").update(text).digest("hex").slice(0, 16);
+
+// ------------------------------------------------------------------ page helpers
+
+/** Console errors and uncaught exceptions of a page, collected since the last `take()`. */
+function watchErrors(page) {
+  const errors = [];
+  page.on("console", (msg) => {
+    if (msg.type() === "error") errors.push(`console: ${msg.text()}`);
+  });
+  page.on("pageerror", (err) => errors.push(`pageerror: ${err.message}`));
+  return { take: () => errors.splice(0) };
+}
+
+/** Waits two animation frames (the coalesced draw has happened). */
+async function settle(page) {
+  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+}
+
+/** Scopes helpers to one demo instance (`scope` = CSS prefix, e.g. "" or "spline-lab#a "). */
+function demoHelpers(page, scope = "") {
+  const canvasSelector = `${scope}.sl-canvas`;
+  const h = {
+    canvas: () => page.locator(canvasSelector).first(),
+    /** Waits until the demo is mounted, drawn and its formula typeset. */
+    async ready() {
+      await page.locator(`${scope}.sl-figure[data-handles]`).first().waitFor({ state: "attached" });
+      await page.locator(`${scope}.sl-formula .katex`).first().waitFor({ state: "attached" });
+      await settle(page);
+    },
+    /** A digest of the canvas pixels. */
+    async snapshot() {
+      await settle(page);
+      return digest(await h.canvas().evaluate((c) => c.toDataURL("image/png")));
+    },
+    /** Handle centres in page coordinates (canvas box + border). */
+    async handles() {
+      const text = await page.locator(`${scope}.sl-figure`).first().getAttribute("data-handles");
+      const origin = await h.canvas().evaluate((c) => {
+        const r = c.getBoundingClientRect();
+        return { x: r.left + c.clientLeft, y: r.top + c.clientTop };
+      });
+      return (text ?? "").split(";").filter(Boolean).map((pair) => {
+        const [x, y] = pair.split(",").map(Number);
+        return { x: origin.x + x, y: origin.y + y };
+      });
+    },
+    async drag(from, dx, dy) {
+      await page.mouse.move(from.x, from.y);
+      await page.mouse.down();
+      const steps = 6;
+      for (let k = 1; k <= steps; k++) await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
+      await page.mouse.up();
+      await settle(page);
+    },
+    status: () => page.locator(`${scope}.sl-status`).first().textContent(),
+    async statusKind() {
+      return page.locator(`${scope}.sl-status`).first().getAttribute("data-kind");
+    },
+    /** Clicks a toolbar/panel button by its data-action name and returns the download. */
+    async download(action) {
+      const [file] = await Promise.all([page.waitForEvent("download"), page.locator(`${scope}[data-action="${action}"]`).first().click()]);
+      return file;
+    },
+    async importText(name, text) {
+      await page.locator(`${scope}.sl-import-input`).first().setInputFiles({ name, mimeType: "application/json", buffer: Buffer.from(text) });
+      await settle(page);
+    },
+  };
+  return h;
+}
+
+/** A fresh load of a demo (about:blank first, so a same-document hash change cannot keep state). */
+async function openDemo(page, base, id, hash = "") {
+  await page.goto("about:blank");
+  await page.goto(`${base}/index.html#demo=${id}${hash}`);
+  const h = demoHelpers(page);
+  await h.ready();
+  return h;
+}
+
+// ------------------------------------------------------------------ demo-specific checks
+
+/** Extra checks per demo id; each gets (page, helpers, base). */
+const DEMO_CHECKS = {
+  "de-casteljau": [
+    ["worked example shows (29/16, 23/16)", async (page, h) => {
+      const last = await page.locator('.sl-table td[data-level="3"][data-index="0"]').textContent();
+      assert(last.includes("(29/16, 23/16)"), `last cell reads ${last}`);
+      const level1 = await page.locator('.sl-table td[data-level="1"][data-index="1"]').textContent();
+      assert(level1.includes("(3, 5/2)"), `p₁¹ reads ${level1}`);
+      const label = await h.canvas().getAttribute("aria-label");
+      assert(/cubic/.test(label) && label.includes("(1.81, 1.44)"), `aria-label: ${label}`);
+      assert((await page.locator(".sl-formula").textContent()).includes("29"), "formula shows 29/16");
+    }],
+    ["step buttons move t by 1/16", async (page, h) => {
+      const box = page.locator('[data-control="t"] .sl-value');
+      await page.locator('[data-action="step"]').click();
+      equal(await box.inputValue(), "0.313", "after one step");
+      await page.locator('[data-action="step-back"]').click();
+      await page.locator('[data-action="step-back"]').click();
+      equal(await box.inputValue(), "0.188", "after two steps back");
+      assert((await page.locator(".sl-table caption").textContent()).includes("3/16"), "caption shows t = 3/16");
+    }],
+    ["play advances t and pause stops it", async (page) => {
+      const box = page.locator('[data-control="t"] .sl-value');
+      const before = Number(await box.inputValue());
+      await page.locator('[data-action="play"]').click();
+      await page.waitForTimeout(PLAY_MS);
+      await page.locator('[data-action="play"]').click();
+      const after = Number(await box.inputValue());
+      assert(after > before, `t went from ${before} to ${after}`);
+      await page.waitForTimeout(100);
+      equal(Number(await box.inputValue()), after, "t after pause");
+    }],
+    ["typed fraction 1/3 is accepted", async (page) => {
+      const box = page.locator('[data-control="t"] .sl-value');
+      await box.fill("1/3");
+      await box.press("Enter");
+      await settle(page);
+      assert((await page.locator(".sl-table caption").textContent()).includes("1/3"), "caption shows t = 1/3");
+      assert(page.url().includes("s="), "state in the URL");
+    }],
+    ["+ adds a point, Delete removes it, undo/redo", async (page, h) => {
+      await h.canvas().focus();
+      await page.keyboard.press("End");
+      await page.keyboard.press("+");
+      await settle(page);
+      equal((await h.handles()).length, 5, "points after +");
+      assert((await page.locator('[data-info="degree"]').textContent()).includes("n = 4"), "degree 4");
+      await page.keyboard.press("Delete");
+      await settle(page);
+      equal((await h.handles()).length, 4, "points after Delete");
+      await page.keyboard.press("Control+z");
+      await settle(page);
+      equal((await h.handles()).length, 5, "points after undo");
+      await page.keyboard.press("Control+Shift+z");
+      await settle(page);
+      equal((await h.handles()).length, 4, "points after redo");
+    }],
+    ["invalid t in a link names the field", async (page, h, base) => {
+      const state = Buffer.from(JSON.stringify({ points: [[0, 0], [1, 1]], t: 7, construction: true })).toString("base64url");
+      h = await openDemo(page, base, "de-casteljau", `&s=${state}`);
+      const status = await h.status();
+      assert(/“t”/.test(status) && status.includes("7"), `status: ${status}`);
+    }],
+  ],
+};
+
+// ------------------------------------------------------------------ run
+
+const server = await startServer(0);
+const base = `http://127.0.0.1:${server.address().port}`;
+const profile = mkdtempSync(join(tmpdir(), "splinelab-e2e-"));
+const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: ARGS, viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
+const page = context.pages()[0] ?? (await context.newPage());
+const errors = watchErrors(page);
+
+try {
+  // The registry, as the page sees it.
+  await page.goto(`${base}/index.html`);
+  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => ({ id: d.id, title: d.title, section: d.section })));
+
+  await test("gallery lists every demo with a thumbnail and a #demo= link", async () => {
+    await page.locator(".card").first().waitFor();
+    for (const demo of registry) {
+      const card = page.locator(`a.card[href="#demo=${demo.id}"]`);
+      equal(await card.count(), 1, `card for ${demo.id}`);
+      await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), demo.id);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  for (const demo of registry) {
+    const name = (what) => `${demo.id}: ${what}`;
+    let h = demoHelpers(page);
+
+    await test(name("opens from the gallery without console errors"), async () => {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html`);
+      await page.locator(`a.card[data-demo="${demo.id}"]`).click();
+      await h.ready();
+      assert((await h.canvas().getAttribute("role")) === "img", "canvas role=img");
+      assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
+      const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
+      equal(size.w, Math.round(size.cw * size.ratio), "backing store = CSS size × DPR");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+
+    await test(name("dragging a handle changes the picture"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const before = await h.snapshot();
+      const [first, second] = await h.handles();
+      const handle = second ?? first;
+      assert(handle, "the demo has handles");
+      await h.drag(handle, DRAG_PX.x, DRAG_PX.y);
+      const after = await h.snapshot();
+      assert(before !== after, "canvas unchanged after drag");
+      const moved = (await h.handles())[second ? 1 : 0];
+      assert(Math.abs(moved.x - handle.x - DRAG_PX.x) < 1.5 && Math.abs(moved.y - handle.y - DRAG_PX.y) < 1.5, `handle at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + drag`);
+      // Undo puts the handle back; Escape clears the selection: the first picture again.
+      await page.keyboard.press("Control+z");
+      await page.keyboard.press("Escape");
+      await page.mouse.move(1, 1);
+      equal(JSON.stringify((await h.handles())[second ? 1 : 0]), JSON.stringify(handle), "handle after undo");
+      equal(await h.snapshot(), before, "snapshot after undo");
+    });
+
+    await test(name("keyboard nudge changes the picture"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const before = await h.snapshot();
+      const start = (await h.handles())[0];
+      await h.canvas().focus();
+      await page.keyboard.press("Home");
+      await page.keyboard.press("ArrowRight");
+      await page.keyboard.press("Shift+ArrowUp");
+      const after = await h.snapshot();
+      assert(before !== after, "canvas unchanged after arrow keys");
+      const moved = (await h.handles())[0];
+      assert(Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6, `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`);
+    });
+
+    await test(name("the URL restores the same picture after reload"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const [handle] = await h.handles();
+      await h.drag(handle, -25, 35);
+      // Pan on empty space too: the view is part of the picture.
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + 12, y: box.y + box.height - 12 }, 30, -20);
+      await page.keyboard.press("Escape"); // the selection is not part of the state
+      const before = await h.snapshot();
+      const url = page.url();
+      assert(/#demo=[\w-]+&s=[\w-]+$/.test(url), `URL ${url}`);
+      await page.reload();
+      await h.ready();
+      equal(page.url(), url, "URL after reload");
+      equal(await h.snapshot(), before, "snapshot after reload");
+    });
+
+    await test(name("SVG export parses and has paths and labels"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const file = await h.download("export-svg");
+      equal(file.suggestedFilename(), `${demo.id}.svg`, "file name");
+      const text = readFileSync(await file.path(), "utf8");
+      const parsed = await page.evaluate((svg) => {
+        const doc = new DOMParser().parseFromString(svg, "image/svg+xml");
+        return { error: doc.querySelector("parsererror")?.textContent ?? null, root: doc.documentElement.nodeName, paths: doc.querySelectorAll("path").length, texts: doc.querySelectorAll("text").length };
+      }, text);
+      equal(parsed.error, null, "parser error");
+      equal(parsed.root, "svg", "root element");
+      assert(parsed.paths > 3, `only ${parsed.paths} paths`);
+      assert(parsed.texts > 0, "no text labels");
+    });
+
+    await test(name("PNG export is a PNG at 2x"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const file = await h.download("export-png");
+      const bytes = readFileSync(await file.path());
+      assert(bytes.subarray(0, 8).equals(PNG_SIGNATURE), "PNG signature");
+      const cssWidth = await h.canvas().evaluate((c) => c.clientWidth);
+      equal(bytes.readUInt32BE(16), cssWidth * 2, "PNG width = 2 × CSS width");
+    });
+
+    await test(name("JSON export round-trips through import"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const [handle] = await h.handles();
+      await h.drag(handle, 20, 20);
+      const exported = await h.snapshot();
+      const file = await h.download("export-json");
+      const text = readFileSync(await file.path(), "utf8");
+      const data = JSON.parse(text);
+      equal(data.version, 1, "version");
+      equal(data.demo, demo.id, "demo");
+      await page.locator('[data-action="reset"]').click();
+      assert((await h.snapshot()) !== exported, "reset changed the picture");
+      await h.importText(`${demo.id}.json`, text);
+      equal(await h.snapshot(), exported, "snapshot after import");
+      assert((await h.status()).includes(`${demo.id}.json`), "import confirmed in the status area");
+    });
+
+    await test(name("a malformed link shows a message and the page lives"), async () => {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html#demo=${demo.id}&s=%%%not-base64!!`);
+      h = demoHelpers(page);
+      await h.ready();
+      equal(await h.statusKind(), "error", "status kind");
+      assert((await h.status()).length > 10, "a message is shown");
+      // A bad hash edited into a working page keeps the last good picture.
+      const good = await h.snapshot();
+      await page.evaluate(() => (location.hash = "#demo=" + new URLSearchParams(location.hash.slice(1)).get("demo") + "&s=eyJwb2ludHMiOjN9"));
+      await page.waitForFunction(() => document.querySelector(".sl-status")?.textContent.includes("points"));
+      equal(await h.snapshot(), good, "picture kept");
+      const problems = errors.take().filter((e) => !e.includes("404"));
+      assert(problems.length === 0, problems.join("\n"));
+    });
+
+    await test(name("a malformed JSON import shows a message and keeps the picture"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const good = await h.snapshot();
+      await h.importText("broken.json", "{ this is not json");
+      equal(await h.statusKind(), "error", "status kind");
+      assert((await h.status()).includes("broken.json"), "message names the file");
+      await h.importText("wrong.json", JSON.stringify({ version: 1, demo: demo.id, state: { points: "nope" } }));
+      assert((await h.status()).includes("points"), `message names the field: ${await h.status()}`);
+      equal(await h.snapshot(), good, "picture kept");
+      // Still interactive.
+      const [handle] = await h.handles();
+      await h.drag(handle, 15, 0);
+      assert((await h.snapshot()) !== good, "still draggable");
+    });
+
+    for (const [what, body] of DEMO_CHECKS[demo.id] ?? []) {
+      await test(name(what), async () => {
+        h = await openDemo(page, base, demo.id);
+        await body(page, h, base);
+        const problems = errors.take();
+        assert(problems.length === 0, problems.join("\n"));
+      });
+    }
+  }
+
+  await test("embed example: two independent demos in shadow roots", async () => {
+    await page.goto(`${base}/embed-example.html`);
+    const a = demoHelpers(page, "spline-lab#worked ");
+    const b = demoHelpers(page, "spline-lab#quadratic ");
+    await page.locator("spline-lab#worked").scrollIntoViewIfNeeded();
+    await a.ready();
+    await page.locator("spline-lab#quadratic").scrollIntoViewIfNeeded();
+    await b.ready();
+    const shadow = await page.evaluate(() => [...document.querySelectorAll("spline-lab")].map((e) => !!e.shadowRoot?.querySelector("canvas")));
+    equal(JSON.stringify(shadow), "[true,true]", "both rendered in shadow roots");
+    equal((await a.handles()).length, 4, "worked example points");
+    equal((await b.handles()).length, 3, "quadratic points");
+    const cell = await page.locator('spline-lab#worked td[data-level="3"][data-index="0"]').textContent();
+    assert(cell.includes("29/16, 23/16"), `worked example cell: ${cell}`);
+    const caption = await page.locator("spline-lab#quadratic .sl-table caption").textContent();
+    assert(caption.includes("1/2"), `quadratic caption: ${caption}`);
+    // Dragging in one leaves the other alone.
+    const otherBefore = await a.snapshot();
+    const [p0] = await b.handles();
+    const before = await b.snapshot();
+    await b.drag(p0, 20, -20);
+    assert((await b.snapshot()) !== before, "second embed reacts to a drag");
+    equal(await a.snapshot(), otherBefore, "first embed unchanged");
+    const loads = await page.evaluate(() => performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length);
+    equal(loads, 1, "wasm fetched once per page");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+} catch (err) {
+  failed += 1;
+  console.log(`FAIL runner: ${err.stack ?? err}`);
+} finally {
+  await context.close();
+  server.close();
+  rmSync(profile, { recursive: true, force: true });
+}
+
+console.log(`e2e: ${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
