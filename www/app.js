@@ -1,0 +1,189 @@
+/**
+ * The playground page: the gallery (no hash) and a demo view (`#demo=<id>&s=<state>`).
+ * The state of the open demo is written back into the hash after every recorded change
+ * (history.replaceState, so the back button is not flooded); a pasted or edited link is
+ * validated and, if bad, reported while the last good picture stays.
+ */
+import { demos, findDemo } from "./demos/index.js";
+import { loadWasm } from "./lib/wasm.js";
+import { mountDemo, validateState } from "./lib/shell.js";
+import { parseHash, buildHash, decodeState } from "./lib/state.js";
+import { figureToCanvas } from "./lib/export.js";
+import { el } from "./lib/controls.js";
+import { t } from "./lib/strings.js";
+
+/** Gallery thumbnails: CSS size of the rendered figure and its pixel density. */
+const THUMB_WIDTH = 320;
+const THUMB_HEIGHT = 200;
+const THUMB_SCALE = 2;
+/** Syllabus sections, in gallery order. */
+const SECTIONS = [1, 2, 3, 4, 5, 6];
+
+const main = document.getElementById("main");
+const appStatus = main.querySelector(".app-status");
+let controller = null; // the mounted demo (shell controller)
+let currentId = null;
+let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
+
+function showAppStatus(message, kind = "info") {
+  appStatus.textContent = message;
+  appStatus.dataset.kind = kind;
+}
+
+/** Writes the state into the hash without a new history entry. */
+function writeHash(id, state) {
+  lastHash = buildHash(id, state);
+  history.replaceState(null, "", lastHash);
+}
+
+/** The link that restores `state` of demo `id`. */
+function shareUrl(id, state) {
+  return new URL(buildHash(id, state), location.href).href;
+}
+
+function unmount() {
+  controller?.destroy();
+  controller = null;
+  currentId = null;
+  main.querySelectorAll(".gallery, .demo-page").forEach((node) => node.remove());
+}
+
+// ------------------------------------------------------------------ gallery
+async function showGallery(sl) {
+  unmount();
+  document.title = `${t("app.name")} — ${t("gallery.heading")}`;
+  const page = el("div", { class: "gallery" },
+    el("h1", { text: t("gallery.heading") }),
+    el("p", { class: "gallery-intro", text: t("app.tagline") }));
+  for (const section of SECTIONS) {
+    const members = demos.filter((demo) => demo.section === section);
+    if (!members.length) continue;
+    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((demo) => card(demo, sl))));
+  }
+  main.append(page);
+}
+
+function card(demo, sl) {
+  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title: demo.title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT) });
+  if (sl) {
+    // Let the page paint first; thumbnails are a nicety.
+    requestAnimationFrame(() => {
+      try {
+        img.src = thumbnail(demo, sl);
+        img.classList.remove("placeholder");
+      } catch {
+        // leave the placeholder
+      }
+    });
+  }
+  return el("li", {},
+    el("a", { class: "card", href: buildHash(demo.id), dataset: { demo: demo.id } },
+      img,
+      el("span", { class: "card-body" },
+        el("span", { class: "card-title", text: demo.title }),
+        el("span", { class: "card-line", text: demo.summary }))));
+}
+
+/** A PNG data URL of the demo's default state, rendered off-screen through the normal mount. */
+function thumbnail(demo, sl) {
+  const holder = document.createElement("div");
+  const temp = mountDemo(holder, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "embed", shareUrl: () => "" });
+  try {
+    return figureToCanvas(temp.figure, THUMB_SCALE, THUMB_WIDTH, THUMB_HEIGHT).toDataURL("image/png");
+  } finally {
+    temp.destroy();
+  }
+}
+
+// ------------------------------------------------------------------ demo view
+function showDemo(demo, encoded, sl) {
+  unmount();
+  currentId = demo.id;
+  document.title = `${demo.title} — ${t("app.name")}`;
+  let state = validateState(demo, structuredClone(demo.defaultState));
+  let linkError = null;
+  if (encoded) {
+    try {
+      state = validateState(demo, decodeState(encoded));
+    } catch (err) {
+      linkError = err.message;
+    }
+  }
+  const holder = el("div", { class: "demo-page" }, el("a", { class: "back", href: "#", text: t("app.backToGallery") }));
+  const root = el("div");
+  holder.append(root);
+  main.append(holder);
+  try {
+    controller = mountDemo(root, demo, {
+      sl,
+      state,
+      mode: "page",
+      headingLevel: "h1",
+      onCommit: (s) => writeHash(demo.id, s),
+      shareUrl: (s) => shareUrl(demo.id, s),
+    });
+  } catch (err) {
+    // The wasm constructor refused a state that passed validation: fall back to the default.
+    linkError = err.message;
+    controller = mountDemo(root, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "page", headingLevel: "h1", onCommit: (s) => writeHash(demo.id, s), shareUrl: (s) => shareUrl(demo.id, s) });
+  }
+  writeHash(demo.id, controller.state);
+  if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
+}
+
+// ------------------------------------------------------------------ routing
+async function route(sl) {
+  const { demo: id, s } = parseHash(location.hash);
+  if (!id) return showGallery(sl);
+  const demo = findDemo(id);
+  if (!demo) {
+    await showGallery(sl);
+    showAppStatus(t("app.unknownDemo", { id }), "error");
+    return;
+  }
+  if (!sl) return showGallery(sl);
+  if (controller && currentId === id) {
+    // Same demo, new link: validate and apply (no state: the starting picture); a bad one
+    // keeps the current picture.
+    try {
+      controller.accept(s ? decodeState(s) : structuredClone(demo.defaultState), { errorKey: "status.badLink" });
+    } catch (err) {
+      controller.status(t("status.badLink", { message: err.message }), "error");
+    }
+    writeHash(id, controller.state);
+    return;
+  }
+  showDemo(demo, s, sl);
+  main.focus({ preventScroll: true });
+  window.scrollTo(0, 0);
+}
+
+async function start() {
+  document.querySelector(".site-foot").textContent = t("app.footer");
+  showAppStatus(t("app.loading"));
+  let sl = null;
+  try {
+    sl = await loadWasm();
+    showAppStatus("");
+  } catch (err) {
+    showAppStatus(t("app.wasmFailed", { message: err.message }), "error");
+  }
+  await route(sl);
+  window.addEventListener("hashchange", () => {
+    if (location.hash === lastHash) return;
+    if (location.hash === "" || location.hash === "#") showAppStatus("");
+    route(sl).catch((err) => showAppStatus(err.message, "error"));
+  });
+  // Ctrl+Z / Ctrl+Shift+Z also work when nothing in the demo has focus.
+  document.addEventListener("keydown", (event) => {
+    if (!controller || !(event.ctrlKey || event.metaKey) || event.altKey) return;
+    if (document.activeElement !== document.body && document.activeElement !== main) return;
+    const key = event.key.toLowerCase();
+    if (key === "z") controller[event.shiftKey ? "redo" : "undo"]();
+    else if (key === "y") controller.redo();
+    else return;
+    event.preventDefault();
+  });
+}
+
+start();

@@ -1,0 +1,14 @@
+/**
+ * The demo registry: every demo module, in gallery order. The gallery, the playground, the
+ * `<spline-lab>` element and the browser tests all find demos here (see lib/README.md for the
+ * module contract). To add a demo: write `www/demos/<id>.js`, import it below, add it to the list.
+ */
+import * as deCasteljau from "./de-casteljau.js";
+
+/** All demos, in the order the gallery shows them within their section. */
+export const demos = [deCasteljau];
+
+/** The demo with this id, or undefined. */
+export function findDemo(id) {
+  return demos.find((demo) => demo.id === id);
+}

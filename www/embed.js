@@ -1,0 +1,119 @@
+/**
+ * `<spline-lab demo="de-casteljau" points="0,0 2,2 6,4 8,2" t="0.25">`: one demo in a course
+ * page. Load this file as a module (`<script type="module" src=".../embed.js">`); put as many
+ * elements on the page as you like. Each lives in its own shadow root (the page's CSS does not
+ * leak in), the wasm package is loaded once per page, and a demo starts only when it comes
+ * near the viewport. Attributes are the demo's state fields (see lib/attributes.js); changing
+ * an attribute later updates the figure. `view="xmin ymin xmax ymax"` fixes the window.
+ */
+import { findDemo } from "./demos/index.js";
+import { loadWasm } from "./lib/wasm.js";
+import { mountDemo, validateState } from "./lib/shell.js";
+import { stateFromAttributes } from "./lib/attributes.js";
+import { buildHash } from "./lib/state.js";
+import { t } from "./lib/strings.js";
+
+const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
+const PLAYGROUND = new URL("./index.html", import.meta.url).href;
+/** Start a demo when it is this close to the viewport. */
+const START_MARGIN = "200px";
+
+const HOST_CSS = `
+:host { display: block; margin: 1rem 0; }
+:host([hidden]) { display: none; }
+.sl-embed-placeholder { min-height: 16rem; display: grid; place-items: center; border: 1px dashed #8a8a8a; border-radius: 6px; color: #5a5a5a; font: 15px system-ui, sans-serif; }
+.sl-embed-error { color: #d55e00; font: 600 15px system-ui, sans-serif; }
+.sl-embed-error::before { content: "⚠ "; }
+`;
+
+class SplineLabElement extends HTMLElement {
+  connectedCallback() {
+    if (!this.shadowRoot) {
+      const shadow = this.attachShadow({ mode: "open" });
+      const style = document.createElement("style");
+      style.textContent = HOST_CSS;
+      const link = document.createElement("link");
+      link.rel = "stylesheet";
+      link.href = SHELL_CSS;
+      this._root = document.createElement("div");
+      this._root.className = "sl-embed-placeholder";
+      this._root.textContent = t("app.loading");
+      shadow.append(style, link, this._root);
+    }
+    if (this._controller || this._observer) return;
+    this._observer = new IntersectionObserver((entries) => {
+      if (entries.some((e) => e.isIntersecting)) {
+        this._observer.disconnect();
+        this._observer = null;
+        this._start();
+      }
+    }, { rootMargin: START_MARGIN });
+    this._observer.observe(this);
+  }
+
+  disconnectedCallback() {
+    this._observer?.disconnect();
+    this._observer = null;
+    this._attributes?.disconnect();
+    this._controller?.destroy();
+    this._controller = null;
+    if (this._root) {
+      this._root.className = "sl-embed-placeholder";
+      this._root.textContent = t("app.loading");
+    }
+  }
+
+  /** Loads the wasm (shared by the page) and mounts the demo. */
+  async _start() {
+    const demo = findDemo(this.getAttribute("demo") ?? "");
+    if (!demo) return this._fail(t("app.unknownDemo", { id: this.getAttribute("demo") ?? "" }));
+    let sl;
+    try {
+      sl = await loadWasm();
+    } catch (err) {
+      return this._fail(t("app.wasmFailed", { message: err.message }));
+    }
+    if (!this.isConnected) return;
+    let state = validateState(demo, structuredClone(demo.defaultState));
+    let problem = null;
+    try {
+      state = validateState(demo, stateFromAttributes(this, demo.defaultState));
+    } catch (err) {
+      problem = err.message;
+    }
+    const root = document.createElement("div");
+    this._root.replaceWith(root);
+    this._root = root;
+    const options = {
+      sl,
+      mode: "embed",
+      headingLevel: "h2",
+      shareUrl: (s) => `${PLAYGROUND}${buildHash(demo.id, s)}`,
+    };
+    try {
+      this._controller = mountDemo(root, demo, { ...options, state });
+    } catch (err) {
+      problem = err.message; // refused by the wasm constructor: show the default instead
+      this._controller = mountDemo(root, demo, { ...options, state: validateState(demo, structuredClone(demo.defaultState)) });
+    }
+    if (problem) this._controller.status(t("status.rejected", { message: problem }), "error");
+
+    // Attribute edits after start update the figure (validated like any state).
+    this._attributes = new MutationObserver(() => {
+      try {
+        this._controller?.accept(stateFromAttributes(this, demo.defaultState));
+      } catch (err) {
+        this._controller?.status(t("status.rejected", { message: err.message }), "error");
+      }
+    });
+    this._attributes.observe(this, { attributes: true });
+  }
+
+  _fail(message) {
+    this._root.className = "sl-embed-error";
+    this._root.setAttribute("role", "status");
+    this._root.textContent = message;
+  }
+}
+
+if (!customElements.get("spline-lab")) customElements.define("spline-lab", SplineLabElement);

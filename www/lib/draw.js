@@ -1,0 +1,311 @@
+/**
+ * One drawing interface, two back ends (the d3-path idea): `CanvasRenderer` paints on a 2D
+ * canvas context, `SvgRecorder` records the very same calls as SVG markup. A demo's draw
+ * function receives either and cannot tell them apart, so the SVG export is the drawing on
+ * the screen, labels included (as `<text>`).
+ *
+ * Coordinates are CSS pixels with y down (the View converts from world coordinates).
+ * Path calls follow the canvas API: `beginPath`, `moveTo`, `lineTo`, `arc`, `rect`,
+ * `closePath`; then `paint(style)` strokes and/or fills the path. Styles are the constant
+ * objects of theme.js: `{ stroke, fill, width, dash, alpha, join, cap, radius }` and for text
+ * `{ fill, size, weight, halo }`. `scale` (lecture mode) multiplies widths, radii, dashes
+ * and font sizes.
+ */
+import { FONT_FAMILY } from "./theme.js";
+
+const TAU = 2 * Math.PI;
+/** Arcs closer than this to a full turn are drawn as full circles (radians). */
+const FULL_TURN_EPSILON = 1e-9;
+/** Width of the background-coloured halo around labels, in CSS px at scale 1. */
+const HALO_WIDTH = 3;
+/** SVG coordinates are written with this many decimals (1/100 px is invisible). */
+const SVG_DECIMALS = 2;
+const NO_DASH = Object.freeze([]);
+
+/** Canvas `textBaseline` / SVG `dominant-baseline` for each vertical anchor we use. */
+const SVG_BASELINE = { middle: "central", top: "hanging", bottom: "text-after-edge", alphabetic: "alphabetic" };
+const SVG_ANCHOR = { left: "start", center: "middle", right: "end" };
+
+/** The CSS font shorthand for a text style at a given scale. */
+function fontOf(style, scale) {
+  return `${style.weight ?? "normal"} ${style.size * scale}px ${FONT_FAMILY}`;
+}
+
+/** Paints on a CanvasRenderingContext2D whose units are CSS pixels. */
+export class CanvasRenderer {
+  /**
+   * @param {CanvasRenderingContext2D} context
+   * @param {{ pixelRatio?: number, scale?: number, theme: object }} options pixelRatio is the
+   *   backing-store pixels per CSS pixel; scale the lecture-mode factor.
+   */
+  constructor(context, { pixelRatio = 1, scale = 1, theme }) {
+    this.context = context;
+    this.pixelRatio = pixelRatio;
+    this.scale = scale;
+    this.theme = theme;
+    this.width = 0;
+    this.height = 0;
+    /** Scaled dash arrays per style, made once (no allocation per frame). */
+    this._dashCache = new WeakMap();
+    /** Font strings per text style, made once per scale. */
+    this._fontCache = new WeakMap();
+  }
+
+  /** Starts a frame of `width` × `height` CSS px, filled with `background`. */
+  begin(width, height, background) {
+    const c = this.context;
+    this.width = width;
+    this.height = height;
+    // Fill the whole backing store (a fractional CSS size would leave a half-covered last row).
+    c.setTransform(1, 0, 0, 1, 0, 0);
+    c.globalAlpha = 1;
+    c.fillStyle = background;
+    c.fillRect(0, 0, c.canvas.width, c.canvas.height);
+    c.setTransform(this.pixelRatio, 0, 0, this.pixelRatio, 0, 0);
+  }
+
+  /** Ends the frame (nothing to flush on a canvas). */
+  end() {}
+
+  beginPath() { this.context.beginPath(); }
+  moveTo(x, y) { this.context.moveTo(x, y); }
+  lineTo(x, y) { this.context.lineTo(x, y); }
+  closePath() { this.context.closePath(); }
+  rect(x, y, w, h) { this.context.rect(x, y, w, h); }
+  /** Same arguments as CanvasRenderingContext2D.arc (angles in radians, y down). */
+  arc(x, y, r, a0, a1, counterClockwise = false) { this.context.arc(x, y, r, a0, a1, counterClockwise); }
+
+  /** Adds a full circle of radius `r` to the path. */
+  circle(x, y, r) {
+    this.context.moveTo(x + r, y);
+    this.context.arc(x, y, r, 0, TAU);
+  }
+
+  /** Fills then strokes the current path with a style (either part may be absent). */
+  paint(style) {
+    const c = this.context;
+    c.globalAlpha = style.alpha ?? 1;
+    if (style.fill) {
+      c.fillStyle = style.fill;
+      c.fill();
+    }
+    c.globalAlpha = 1;
+    if (style.stroke) {
+      c.strokeStyle = style.stroke;
+      c.lineWidth = (style.width ?? 1) * this.scale;
+      c.lineJoin = style.join ?? "miter";
+      c.lineCap = style.cap ?? "butt";
+      c.setLineDash(this._dash(style));
+      c.stroke();
+      c.setLineDash(NO_DASH);
+    }
+  }
+
+  /** A dot of the style's radius (scaled), filled/stroked with the style. */
+  point(x, y, style) {
+    this.beginPath();
+    this.circle(x, y, style.radius * this.scale);
+    this.paint(style);
+  }
+
+  /**
+   * Draws `string` at (x, y). `align` is "left" | "center" | "right", `baseline`
+   * "middle" | "top" | "bottom" | "alphabetic". A halo in the background colour keeps the
+   * label readable where it crosses a line.
+   */
+  text(string, x, y, style, align = "left", baseline = "middle") {
+    const c = this.context;
+    c.font = this._font(style);
+    c.textAlign = align;
+    c.textBaseline = baseline;
+    if (style.halo) {
+      c.strokeStyle = style.halo;
+      c.lineWidth = HALO_WIDTH * this.scale;
+      c.lineJoin = "round";
+      c.strokeText(string, x, y);
+    }
+    c.fillStyle = style.fill;
+    c.fillText(string, x, y);
+  }
+
+  /** Width of `string` in CSS px with a text style (for label placement). */
+  measure(string, style) {
+    this.context.font = this._font(style);
+    return this.context.measureText(string).width;
+  }
+
+  _dash(style) {
+    if (!style.dash) return NO_DASH;
+    if (this.scale === 1) return style.dash;
+    let cached = this._dashCache.get(style);
+    if (!cached || cached.scale !== this.scale) {
+      cached = { scale: this.scale, dash: style.dash.map((d) => d * this.scale) };
+      this._dashCache.set(style, cached);
+    }
+    return cached.dash;
+  }
+
+  _font(style) {
+    let cached = this._fontCache.get(style);
+    if (!cached || cached.scale !== this.scale) {
+      cached = { scale: this.scale, font: fontOf(style, this.scale) };
+      this._fontCache.set(style, cached);
+    }
+    return cached.font;
+  }
+}
+
+/** Escapes text for SVG content and attribute values. */
+function escapeXml(string) {
+  return String(string).replace(/[&<>"']/g, (ch) => `&#${ch.charCodeAt(0)};`);
+}
+
+/** Formats an SVG coordinate with at most SVG_DECIMALS decimals. */
+function num(value) {
+  return String(Number(value.toFixed(SVG_DECIMALS)));
+}
+
+/**
+ * Records the drawing interface as an SVG document. Only used for export, so it may build
+ * strings freely.
+ */
+export class SvgRecorder {
+  /** @param {{ scale?: number, theme: object, measure?: CanvasRenderingContext2D }} options */
+  constructor({ scale = 1, theme, measureContext = null }) {
+    this.scale = scale;
+    this.theme = theme;
+    this.width = 0;
+    this.height = 0;
+    this._parts = [];
+    this._d = "";
+    this._x = null; // current point, null when the path has none
+    this._y = null;
+    this._measure = measureContext;
+  }
+
+  begin(width, height, background) {
+    this.width = width;
+    this.height = height;
+    this._parts.length = 0;
+    this._parts.push(`<rect width="${num(width)}" height="${num(height)}" fill="${background}"/>`);
+  }
+
+  end() {}
+
+  beginPath() {
+    this._d = "";
+    this._x = this._y = null;
+  }
+
+  moveTo(x, y) {
+    this._d += `M${num(x)},${num(y)}`;
+    this._x = x;
+    this._y = y;
+  }
+
+  lineTo(x, y) {
+    this._d += `L${num(x)},${num(y)}`;
+    this._x = x;
+    this._y = y;
+  }
+
+  closePath() {
+    if (this._x !== null) this._d += "Z";
+  }
+
+  rect(x, y, w, h) {
+    this._d += `M${num(x)},${num(y)}h${num(w)}v${num(h)}h${num(-w)}Z`;
+    this._x = x;
+    this._y = y;
+  }
+
+  /** Canvas arc semantics written as SVG elliptical arcs (a full turn becomes two halves). */
+  arc(x, y, r, a0, a1, counterClockwise = false) {
+    const x0 = x + r * Math.cos(a0);
+    const y0 = y + r * Math.sin(a0);
+    if (this._x === null) this.moveTo(x0, y0);
+    else if (Math.abs(this._x - x0) > 1e-6 || Math.abs(this._y - y0) > 1e-6) this.lineTo(x0, y0);
+    if (!r) return;
+    let da = counterClockwise ? a0 - a1 : a1 - a0;
+    const sweep = counterClockwise ? 0 : 1;
+    if (da >= TAU - FULL_TURN_EPSILON) {
+      const xm = x - r * Math.cos(a0);
+      const ym = y - r * Math.sin(a0);
+      this._d += `A${num(r)},${num(r)},0,1,${sweep},${num(xm)},${num(ym)}`;
+      this._d += `A${num(r)},${num(r)},0,1,${sweep},${num(x0)},${num(y0)}`;
+      this._x = x0;
+      this._y = y0;
+      return;
+    }
+    da = ((da % TAU) + TAU) % TAU;
+    const x1 = x + r * Math.cos(a1);
+    const y1 = y + r * Math.sin(a1);
+    this._d += `A${num(r)},${num(r)},0,${da > Math.PI ? 1 : 0},${sweep},${num(x1)},${num(y1)}`;
+    this._x = x1;
+    this._y = y1;
+  }
+
+  circle(x, y, r) {
+    this.moveTo(x + r, y);
+    this.arc(x, y, r, 0, TAU);
+  }
+
+  paint(style) {
+    if (!this._d) return;
+    const attrs = [`d="${this._d}"`];
+    if (style.fill) {
+      attrs.push(`fill="${style.fill}"`);
+      if (style.alpha !== undefined && style.alpha !== 1) attrs.push(`fill-opacity="${style.alpha}"`);
+    } else {
+      attrs.push('fill="none"');
+    }
+    if (style.stroke) {
+      attrs.push(`stroke="${style.stroke}"`, `stroke-width="${num((style.width ?? 1) * this.scale)}"`);
+      if (style.join) attrs.push(`stroke-linejoin="${style.join}"`);
+      if (style.cap) attrs.push(`stroke-linecap="${style.cap}"`);
+      if (style.dash) attrs.push(`stroke-dasharray="${style.dash.map((d) => num(d * this.scale)).join(" ")}"`);
+    }
+    this._parts.push(`<path ${attrs.join(" ")}/>`);
+  }
+
+  point(x, y, style) {
+    this.beginPath();
+    this.circle(x, y, style.radius * this.scale);
+    this.paint(style);
+  }
+
+  text(string, x, y, style, align = "left", baseline = "middle") {
+    const attrs = [
+      `x="${num(x)}"`,
+      `y="${num(y)}"`,
+      `font-size="${num(style.size * this.scale)}"`,
+      `fill="${style.fill}"`,
+      `text-anchor="${SVG_ANCHOR[align]}"`,
+      `dominant-baseline="${SVG_BASELINE[baseline]}"`,
+    ];
+    if (style.weight) attrs.push(`font-weight="${style.weight}"`);
+    if (style.halo) {
+      attrs.push(`stroke="${style.halo}"`, `stroke-width="${num(HALO_WIDTH * this.scale)}"`, 'stroke-linejoin="round"', 'paint-order="stroke"');
+    }
+    this._parts.push(`<text ${attrs.join(" ")}>${escapeXml(string)}</text>`);
+  }
+
+  measure(string, style) {
+    if (this._measure) {
+      this._measure.font = fontOf(style, this.scale);
+      return this._measure.measureText(string).width;
+    }
+    /** Without a canvas to measure, assume an average glyph of 0.6 em. */
+    return string.length * style.size * this.scale * 0.6;
+  }
+
+  /** The recorded drawing as a standalone SVG document. */
+  toString() {
+    const w = num(this.width);
+    const h = num(this.height);
+    return (
+      `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}" ` +
+      `font-family="${escapeXml(FONT_FAMILY)}">\n${this._parts.join("\n")}\n</svg>\n`
+    );
+  }
+}

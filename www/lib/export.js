@@ -1,0 +1,53 @@
+/**
+ * Figures and states out of the page: SVG (recorded from the same draw calls as the screen),
+ * PNG (2× scale, white background) and JSON (the state exactly as the URL holds it).
+ */
+import { CanvasRenderer, SvgRecorder } from "./draw.js";
+import { LIGHT_THEME } from "./theme.js";
+
+/** PNG exports are rendered at this many pixels per CSS pixel. */
+export const PNG_SCALE = 2;
+
+/** The figure of `view` as an SVG document (light theme, the screen's CSS size). */
+export function figureToSvg(view) {
+  const measure = document.createElement("canvas").getContext("2d");
+  const recorder = new SvgRecorder({ theme: LIGHT_THEME, measureContext: measure });
+  view.renderTo(recorder, view.width, view.height, LIGHT_THEME);
+  return recorder.toString();
+}
+
+/** The figure of `view` on a new canvas at `scale` × its CSS size, white background. */
+export function figureToCanvas(view, scale = PNG_SCALE, width = view.width, height = view.height) {
+  const canvas = document.createElement("canvas");
+  canvas.width = Math.round(width * scale);
+  canvas.height = Math.round(height * scale);
+  const renderer = new CanvasRenderer(canvas.getContext("2d"), { pixelRatio: scale, theme: LIGHT_THEME });
+  view.renderTo(renderer, width, height, LIGHT_THEME);
+  return canvas;
+}
+
+/** The figure of `view` as a PNG Blob at `scale`. */
+export function figureToPng(view, scale = PNG_SCALE) {
+  const canvas = figureToCanvas(view, scale);
+  return new Promise((resolve, reject) => {
+    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error("PNG encoding failed"))), "image/png");
+  });
+}
+
+/** Offers `blob` as a download named `filename`. */
+export function download(blob, filename) {
+  const url = URL.createObjectURL(blob);
+  const link = document.createElement("a");
+  link.href = url;
+  link.download = filename;
+  link.style.display = "none";
+  document.body.append(link);
+  link.click();
+  link.remove();
+  // Give the browser time to start the download before the URL is revoked.
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** Blob helpers with the right MIME types. */
+export const svgBlob = (text) => new Blob([text], { type: "image/svg+xml" });
+export const jsonBlob = (text) => new Blob([text], { type: "application/json" });

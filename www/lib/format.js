@@ -1,0 +1,95 @@
+/**
+ * Number formatting for labels, tables and formulas: fixed decimals, exact fractions when the
+ * inputs allow them, and Unicode sub/superscripts for labels such as P₀ or p₁².
+ */
+
+/** Decimals shown for parameters and coordinates (ui.md). */
+export const DECIMALS = 3;
+/** A parameter counts as a "simple fraction" when its denominator is at most this. */
+export const MAX_SIMPLE_DENOMINATOR = 16;
+/** Largest denominator worth showing as an exact fraction (beyond it, decimals read better). */
+export const MAX_EXACT_DENOMINATOR = 1 << 20;
+/** Relative tolerance when recognising a float as k/den (values come from f64 arithmetic). */
+const FRACTION_TOLERANCE = 1e-9;
+
+const SUBSCRIPTS = "₀₁₂₃₄₅₆₇₈₉";
+const SUPERSCRIPTS = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+
+/** Digits of a non-negative integer written with Unicode subscripts: 12 → "₁₂". */
+export function subscript(n) {
+  return String(n).replace(/\d/g, (d) => SUBSCRIPTS[d]);
+}
+
+/** Digits of a non-negative integer written with Unicode superscripts: 2 → "²". */
+export function superscript(n) {
+  return String(n).replace(/\d/g, (d) => SUPERSCRIPTS[d]);
+}
+
+/** `value` with `DECIMALS` decimals, no "-0.000". */
+export function fmt(value, decimals = DECIMALS) {
+  const s = value.toFixed(decimals);
+  return Number(s) === 0 ? (0).toFixed(decimals) : s;
+}
+
+/** Greatest common divisor of two non-negative integers. */
+function gcd(a, b) {
+  while (b) [a, b] = [b, a % b];
+  return a;
+}
+
+/**
+ * `{ num, den }` with den ≤ MAX_SIMPLE_DENOMINATOR when x is (within float accuracy) such a
+ * fraction, else null. 0.25 → 1/4, 0.3333333333333333 → 1/3.
+ */
+export function simpleFraction(x) {
+  for (let den = 1; den <= MAX_SIMPLE_DENOMINATOR; den++) {
+    const num = Math.round(x * den);
+    if (Math.abs(x * den - num) <= FRACTION_TOLERANCE * den) {
+      const g = gcd(Math.abs(num), den) || 1;
+      return { num: num / g, den: den / g };
+    }
+  }
+  return null;
+}
+
+/**
+ * `{ num, den }` if x is k / `den` for an integer k (within float accuracy), reduced; null
+ * otherwise or when den is too large to be worth showing.
+ */
+export function exactFraction(x, den) {
+  if (!Number.isFinite(x) || den > MAX_EXACT_DENOMINATOR) return null;
+  const scaled = x * den;
+  const num = Math.round(scaled);
+  if (Math.abs(scaled - num) > FRACTION_TOLERANCE * Math.max(1, Math.abs(scaled))) return null;
+  const g = gcd(Math.abs(num), den) || 1;
+  return { num: num / g, den: den / g };
+}
+
+/** "29/16", "-3/4" or "2" for a fraction object. */
+export function fractionText({ num, den }) {
+  return den === 1 ? String(num) : `${num}/${den}`;
+}
+
+/** TeX for a fraction object: \tfrac{29}{16}, -\tfrac{3}{4}, 2. */
+export function fractionTex({ num, den }) {
+  if (den === 1) return String(num);
+  return `${num < 0 ? "-" : ""}\\tfrac{${Math.abs(num)}}{${den}}`;
+}
+
+/** True when every number in the flat list is an integer. */
+export function allIntegers(values) {
+  for (const v of values) if (!Number.isInteger(v)) return false;
+  return true;
+}
+
+/**
+ * Parses typed parameter input: a decimal ("0.25") or a fraction ("1/3"). Returns NaN when the
+ * text is neither.
+ */
+export function parseNumberInput(text) {
+  const trimmed = String(text).trim();
+  const fraction = /^(-?\d+(?:\.\d+)?)\s*\/\s*(\d+(?:\.\d+)?)$/.exec(trimmed);
+  if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+  if (trimmed === "") return NaN;
+  return Number(trimmed);
+}

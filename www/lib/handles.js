@@ -1,0 +1,394 @@
+/**
+ * Draggable control-point handles on a View: pointer events only (capture on down,
+ * `pointercancel` treated as up), hit radius larger for touch, hover and selection states,
+ * keyboard access (Tab / Shift+Tab cycle, arrows nudge, Home / End, + and Delete), and
+ * optional constraints (a handle that may only move along a line shows that line while
+ * dragged). Pointer moves are coalesced: the newest position is applied once per animation
+ * frame, just before the view draws.
+ *
+ * The handles own no data: the demo answers `count()`, `get(i, out)` and `label(i)` and is
+ * told `move(i, x, y)` (a preview, during a drag) and `commit(kind, i)` (the change is final:
+ * add it to the undo history).
+ */
+
+/** Hit radius around a handle centre, in CSS px, for mouse/pen and for touch (ui.md). */
+export const HIT_RADIUS_MOUSE = 10;
+export const HIT_RADIUS_TOUCH = 18;
+/** Keyboard nudge in CSS px: plain arrow and Shift+arrow (ui.md). */
+export const NUDGE_PX = 1;
+export const NUDGE_PX_LARGE = 10;
+/** Consecutive nudges of one handle within this many ms make one undo step. */
+export const NUDGE_MERGE_MS = 800;
+/** Dragged coordinates are rounded to the decimals that still resolve a tenth of a pixel. */
+const SUBPIXEL_DIGITS = 1;
+/** Below this length (CSS px) a direction is considered undefined when placing labels. */
+const DIRECTION_EPSILON = 1e-6;
+
+/**
+ * Rounds a world coordinate to the precision that the current zoom can show (a tenth of a
+ * pixel), so states stay short in links and JSON while the picture does not change.
+ */
+export function roundToView(value, scale) {
+  const digits = Math.max(0, Math.ceil(Math.log10(Math.max(scale, 1))) + SUBPIXEL_DIGITS);
+  const factor = 10 ** digits;
+  return Math.round(value * factor) / factor;
+}
+
+export class Handles {
+  /**
+   * @param {import("./view.js").View} view
+   * @param {object} source
+   * @param {() => number} source.count number of handles.
+   * @param {(i: number, out: Float64Array) => void} source.get writes handle i's world x, y into out.
+   * @param {(i: number) => string} source.label text next to handle i ("P₀").
+   * @param {(i: number, x: number, y: number) => void} source.move handle i moved (preview).
+   * @param {(kind: "drag" | "key", i: number, merge: string | null) => void} source.commit a
+   *   move is finished; nudges of one handle in quick succession share a `merge` key, so they
+   *   make one undo step.
+   * @param {(i: number) => number[] | null} [source.constraint] world line [x0, y0, x1, y1]
+   *   handle i must stay on, or null.
+   * @param {(i: number) => void} [source.add] "+" pressed with handle i selected.
+   * @param {(i: number) => void} [source.remove] Delete pressed with handle i selected.
+   * @param {(i: number) => void} [source.select] selection changed (-1 for none).
+   * @param {boolean} [source.polygon] handles form a polygon in index order (label placement).
+   */
+  constructor(view, source) {
+    this.view = view;
+    this.source = source;
+    this.polygon = source.polygon ?? true;
+    this.selected = -1;
+    this.hovered = -1;
+    this.dragging = -1;
+
+    // Scratch storage, made once.
+    this._p = new Float64Array(2);
+    this._q = new Float64Array(2);
+    this._grab = new Float64Array(2); // offset from pointer to handle centre (world)
+    this._pending = new Float64Array(2);
+    this._sum = new Float64Array(2); // label direction accumulator
+    this._hasPending = false;
+    this._lastNudge = { index: -1, time: 0, group: 0 };
+    this._published = NaN;
+
+    view.addInteractor(this);
+    view.beforeFrame(() => this._flush());
+    this._onKey = (e) => this._key(e);
+    this._onFocus = (e) => this._focus(e);
+    view.canvas.addEventListener("keydown", this._onKey);
+    view.canvas.addEventListener("focus", this._onFocus);
+  }
+
+  /** Selects handle i (-1: none) and redraws. */
+  select(i) {
+    const n = this.source.count();
+    const next = i >= 0 && i < n ? i : -1;
+    if (next === this.selected) return;
+    this.selected = next;
+    this.source.select?.(next);
+    this.view.requestDraw();
+  }
+
+  /** Index of the handle under canvas point (x, y), or -1. */
+  hitTest(x, y, pointerType) {
+    const radius = pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE;
+    const view = this.view;
+    let best = -1;
+    let bestDistance = radius;
+    // Later handles are drawn on top, so on a tie the later one wins.
+    for (let i = 0, n = this.source.count(); i < n; i++) {
+      this.source.get(i, this._p);
+      const d = Math.hypot(view.sx(this._p[0]) - x, view.sy(this._p[1]) - y);
+      if (d <= bestDistance) {
+        best = i;
+        bestDistance = d;
+      }
+    }
+    return best;
+  }
+
+  // -------------------------------------------------------------- interactor
+
+  pointerDown(event, x, y) {
+    const i = this.hitTest(x, y, event.pointerType);
+    if (i < 0) return false;
+    this.source.get(i, this._p);
+    this._grab[0] = this._p[0] - this.view.wx(x);
+    this._grab[1] = this._p[1] - this.view.wy(y);
+    this.dragging = i;
+    this.select(i);
+    this.view.canvas.focus({ preventScroll: true });
+    this.view.canvas.style.cursor = "grabbing";
+    this.view.requestDraw();
+    return true;
+  }
+
+  pointerMove(event, x, y) {
+    if (this.dragging < 0) return;
+    this._pending[0] = this.view.wx(x) + this._grab[0];
+    this._pending[1] = this.view.wy(y) + this._grab[1];
+    this._hasPending = true;
+    this.view.requestDraw();
+  }
+
+  pointerUp(event, x, y) {
+    if (this.dragging < 0) return;
+    this.pointerMove(event, x, y);
+    this._flush();
+    const i = this.dragging;
+    this.dragging = -1;
+    this.view.canvas.style.cursor = this.hitTest(x, y, event.pointerType) >= 0 ? "grab" : "";
+    this.source.commit("drag", i, null);
+    this.view.requestDraw();
+  }
+
+  hover(x, y, pointerType) {
+    const i = this.hitTest(x, y, pointerType);
+    if (i !== this.hovered) {
+      this.hovered = i;
+      this.view.requestDraw();
+    }
+    return i >= 0 ? "grab" : null;
+  }
+
+  leave() {
+    if (this.hovered >= 0) {
+      this.hovered = -1;
+      this.view.requestDraw();
+    }
+  }
+
+  /** Applies the newest pointer position (once per frame). */
+  _flush() {
+    if (!this._hasPending || this.dragging < 0) return;
+    this._hasPending = false;
+    this._apply(this.dragging, this._pending[0], this._pending[1]);
+  }
+
+  /** Projects onto the handle's constraint, rounds to the view's precision, moves. */
+  _apply(i, x, y) {
+    const line = this.source.constraint?.(i);
+    if (line) {
+      const [x0, y0, x1, y1] = line;
+      const dx = x1 - x0;
+      const dy = y1 - y0;
+      const lengthSquared = dx * dx + dy * dy;
+      if (lengthSquared > 0) {
+        const s = ((x - x0) * dx + (y - y0) * dy) / lengthSquared;
+        x = x0 + s * dx;
+        y = y0 + s * dy;
+      }
+    }
+    const scale = this.view.scale;
+    this.source.move(i, roundToView(x, scale), roundToView(y, scale));
+  }
+
+  // -------------------------------------------------------------- keyboard
+
+  /** Forgets hover and drag state (the demo's points were replaced, e.g. by undo). */
+  forgetPointer() {
+    this.hovered = -1;
+    this.dragging = -1;
+    this._hasPending = false;
+  }
+
+  _focus(event) {
+    // Keyboard focus selects a handle; a click on the figure (pan, or a drag) does not.
+    if (this.selected >= 0 || this.source.count() === 0 || !this.view.canvas.matches(":focus-visible")) return;
+    // Arriving backwards (Shift+Tab from an element after the canvas) selects the last handle.
+    const from = event.relatedTarget;
+    const fromAfter = from && this.view.canvas.compareDocumentPosition(from) & Node.DOCUMENT_POSITION_FOLLOWING;
+    this.select(fromAfter ? this.source.count() - 1 : 0);
+  }
+
+  _key(event) {
+    const n = this.source.count();
+    if (n === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
+    const i = this.selected;
+    switch (event.key) {
+      case "Tab": {
+        const next = i + (event.shiftKey ? -1 : 1);
+        if (i >= 0 && next >= 0 && next < n) {
+          this.select(next);
+          event.preventDefault();
+        } else {
+          this.select(-1); // leave the figure: focus moves on, no trap
+        }
+        return;
+      }
+      case "Home":
+        this.select(0);
+        break;
+      case "End":
+        this.select(n - 1);
+        break;
+      case "Escape":
+        this.select(-1);
+        break;
+      case "ArrowLeft":
+      case "ArrowRight":
+      case "ArrowUp":
+      case "ArrowDown":
+        if (i < 0) {
+          this.select(0); // the first arrow press picks a handle, the next ones move it
+          break;
+        }
+        this._nudge(i, event.key, event.shiftKey ? NUDGE_PX_LARGE : NUDGE_PX);
+        break;
+      case "+":
+      case "=":
+        if (!this.source.add) return;
+        this.source.add(i);
+        break;
+      case "Delete":
+      case "Backspace":
+        if (!this.source.remove || i < 0) return;
+        this.source.remove(i);
+        break;
+      default:
+        return;
+    }
+    event.preventDefault();
+  }
+
+  /** Moves handle i by `pixels` in the arrow's direction and commits (merged while repeating). */
+  _nudge(i, key, pixels) {
+    const step = pixels / this.view.scale;
+    this.source.get(i, this._q);
+    const dx = key === "ArrowLeft" ? -step : key === "ArrowRight" ? step : 0;
+    const dy = key === "ArrowDown" ? -step : key === "ArrowUp" ? step : 0;
+    this._apply(i, this._q[0] + dx, this._q[1] + dy);
+    const now = performance.now();
+    const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;
+    if (!repeat) this._lastNudge.group += 1;
+    this._lastNudge.index = i;
+    this._lastNudge.time = now;
+    this.source.commit("key", i, `nudge-${this._lastNudge.group}`);
+    this.view.requestDraw();
+  }
+
+  // -------------------------------------------------------------- drawing
+
+  /**
+   * Draws the handles, their labels (placed away from the polygon's turn) and, while a
+   * constrained handle is dragged, the line it moves along.
+   */
+  draw(r, view) {
+    const theme = r.theme;
+    const n = this.source.count();
+    if (this.dragging >= 0 && this.source.constraint) {
+      const line = this.source.constraint(this.dragging);
+      if (line) this._drawLine(r, view, line, theme.helper);
+    }
+    let signature = n;
+    for (let i = 0; i < n; i++) {
+      this.source.get(i, this._p);
+      const x = view.sx(this._p[0]);
+      const y = view.sy(this._p[1]);
+      signature = signature * 31 + x * 7 + y * 13;
+      const style =
+        i === this.selected ? theme.handleSelected : i === this.hovered || i === this.dragging ? theme.handleHover : theme.handle;
+      r.point(x, y, style);
+      this._drawLabel(r, view, i, n, x, y, i === this.selected ? theme.labelBold : theme.label, style.radius * r.scale);
+    }
+    if (this.dragging < 0 && signature !== this._published && r === view.renderer) this._publish(n, signature);
+  }
+
+  /**
+   * Writes the handles' canvas positions to `data-handles` on the figure host ("x,y;x,y",
+   * CSS px): a stable hook for tests and tools. Only when they changed and no drag is running.
+   */
+  _publish(n, signature) {
+    this._published = signature;
+    const parts = [];
+    for (let i = 0; i < n; i++) {
+      this.source.get(i, this._p);
+      parts.push(`${this.view.sx(this._p[0]).toFixed(1)},${this.view.sy(this._p[1]).toFixed(1)}`);
+    }
+    this.view.host.dataset.handles = parts.join(";");
+  }
+
+  _drawLine(r, view, [x0, y0, x1, y1], style) {
+    const px0 = view.sx(x0);
+    const py0 = view.sy(y0);
+    let dx = view.sx(x1) - px0;
+    let dy = view.sy(y1) - py0;
+    const length = Math.hypot(dx, dy);
+    if (length < DIRECTION_EPSILON) return;
+    const reach = (view.width + view.height) / length; // far enough to cross the whole canvas
+    r.beginPath();
+    r.moveTo(px0 - dx * reach, py0 - dy * reach);
+    r.lineTo(px0 + dx * reach, py0 + dy * reach);
+    r.paint(style);
+  }
+
+  /** Places label i on the outside of the polygon's turn at handle i. */
+  _drawLabel(r, view, i, n, x, y, style, radius) {
+    let dx = 0;
+    let dy = 0;
+    if (this.polygon && n > 1) {
+      if (i > 0) this._addAway(view, i - 1, x, y);
+      if (i < n - 1) this._addAway(view, i + 1, x, y);
+      dx = this._sum[0];
+      dy = this._sum[1];
+      this._sum[0] = this._sum[1] = 0;
+      if (Math.hypot(dx, dy) < 0.2 && i > 0 && i < n - 1) {
+        // Straight through: put the label beside the polygon, on the screen's upper side.
+        this.source.get(i + 1, this._p);
+        const ax = view.sx(this._p[0]) - x;
+        const ay = view.sy(this._p[1]) - y;
+        const len = Math.hypot(ax, ay) || 1;
+        dx = ay / len;
+        dy = -ax / len;
+        if (dy > 0) {
+          dx = -dx;
+          dy = -dy;
+        }
+      }
+    }
+    const length = Math.hypot(dx, dy);
+    if (length < DIRECTION_EPSILON) {
+      dx = Math.SQRT1_2;
+      dy = -Math.SQRT1_2;
+    } else {
+      dx /= length;
+      dy /= length;
+    }
+    placeLabel(r, this.source.label(i), x, y, dx, dy, radius, style);
+  }
+
+  /** Adds the unit vector from handle j towards (x, y) to the scratch sum `_sum`. */
+  _addAway(view, j, x, y) {
+    this.source.get(j, this._p);
+    const ax = x - view.sx(this._p[0]);
+    const ay = y - view.sy(this._p[1]);
+    const len = Math.hypot(ax, ay);
+    if (len < DIRECTION_EPSILON) return;
+    this._sum[0] += ax / len;
+    this._sum[1] += ay / len;
+  }
+
+  /** Removes the listeners (the view removes its own). */
+  destroy() {
+    this.view.canvas.removeEventListener("keydown", this._onKey);
+    this.view.canvas.removeEventListener("focus", this._onFocus);
+  }
+}
+
+/**
+ * Draws `text` next to the point (x, y) in the unit direction (dx, dy) (screen px, y down),
+ * `radius` px from the centre plus a gap, aligned so the text grows away from the point.
+ */
+export function placeLabel(r, text, x, y, dx, dy, radius, style) {
+  const gap = radius + LABEL_GAP_PX * r.scale;
+  const tx = x + dx * gap;
+  const ty = y + dy * gap;
+  const align = dx > LABEL_ALIGN_THRESHOLD ? "left" : dx < -LABEL_ALIGN_THRESHOLD ? "right" : "center";
+  // Vertical: shift by half a line in the direction's vertical sense so the text clears the point.
+  const shift = dy * (style.size * r.scale) * 0.5;
+  r.text(text, tx, ty + shift, style, align, "middle");
+}
+
+/** Gap between a point's edge and its label, CSS px. */
+const LABEL_GAP_PX = 5;
+/** |dx| above this aligns the label's near edge to the point; below, the label is centred. */
+const LABEL_ALIGN_THRESHOLD = 0.35;

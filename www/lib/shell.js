@@ -1,0 +1,323 @@
+/**
+ * The common demo layout and its plumbing (ui.md "Demo view"): title and toolbar (undo, redo,
+ * reset, fit, lecture, share link, export SVG/PNG/JSON, import), the figure (≥ 60 % of the
+ * width), the side panel of controls, a status line (role="status"), the formula panel, then
+ * *What you see* / *Try this*. The shell owns the state history, validation, the view window,
+ * exports and imports; the demo only draws and reports changes. The gallery page, the embed
+ * element and the tests all mount demos through `mountDemo`.
+ */
+import { History, exportJson, parseJsonFile, STATE_VERSION } from "./state.js";
+import { View } from "./view.js";
+import { figureToSvg, figureToPng, download, svgBlob, jsonBlob } from "./export.js";
+import { ensureKatexStyles } from "./formula.js";
+import { checkWindow } from "./validate.js";
+import { el, button } from "./controls.js";
+import { t, has } from "./strings.js";
+import { prefersReducedMotion } from "./theme.js";
+
+/** Info messages clear themselves after this many ms; errors stay until replaced. */
+const INFO_MESSAGE_MS = 8000;
+/** Most "Try this" items a demo may list (strings `<prefix>.try1` … `.tryN`). */
+const MAX_TRY_ITEMS = 6;
+
+/**
+ * A full state (defaults for missing fields) from untrusted input, validated; throws an Error
+ * naming the bad field. `view` is the shell's own field and is checked here.
+ */
+export function validateState(demo, candidate) {
+  let state = candidate;
+  if (state !== null && typeof state === "object" && !Array.isArray(state)) {
+    state = { ...structuredClone(demo.defaultState), ...state };
+  }
+  if (state && typeof state === "object" && "view" in state) {
+    const { view, ...rest } = state;
+    checkWindow(view);
+    demo.validate(rest);
+  } else {
+    demo.validate(state);
+  }
+  return state;
+}
+
+/**
+ * Mounts `demo` inside `root` (emptied first).
+ * @param {HTMLElement | ShadowRoot} root
+ * @param {object} demo a module of www/demos/ (see lib/README.md).
+ * @param {object} options
+ * @param {object} options.sl the initialised wasm package.
+ * @param {object} options.state initial state, already validated (see validateState).
+ * @param {"page" | "embed"} [options.mode] embeds fold the about text and need Ctrl for wheel zoom.
+ * @param {(state: object) => void} [options.onCommit] after every recorded change (page: URL hash).
+ * @param {(state: object) => string} options.shareUrl the link that restores a state.
+ * @param {string} [options.headingLevel] "h1" on the playground page, "h2" in embeds.
+ * @returns {{ state: object, accept: Function, status: Function, destroy: Function, figure: View | null, element: HTMLElement }}
+ */
+export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2" }) {
+  const prefix = demo.strings;
+  const history = new History(state);
+  let figure = null;
+  let statusTimer = 0;
+
+  // ------------------------------------------------------------------ layout
+  const status = el("div", { class: "sl-status", role: "status", "aria-live": "polite" });
+  const figureHost = el("div", { class: "sl-figure" });
+  const helpId = `sl-help-${demo.id}-${Math.random().toString(36).slice(2, 8)}`;
+  const help = el("p", { class: "sl-help", id: helpId, text: t("shell.figureHelp") });
+  const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
+  const formula = el("div", { class: "sl-formula" });
+  const details = el("div", { class: "sl-details" });
+  const fileInput = el("input", { type: "file", accept: ".json,application/json", hidden: true, class: "sl-import-input", "aria-hidden": "true", tabindex: "-1" });
+
+  const buttons = {
+    undo: button({ label: t("toolbar.undo"), title: t("toolbar.undo.title"), name: "undo", onClick: () => undo() }),
+    redo: button({ label: t("toolbar.redo"), title: t("toolbar.redo.title"), name: "redo", onClick: () => redo() }),
+    reset: button({ label: t("toolbar.reset"), title: t("toolbar.reset.title"), name: "reset", onClick: () => reset() }),
+    fit: button({ label: t("toolbar.fit"), title: t("toolbar.fit.title"), name: "fit", onClick: () => fit() }),
+    lecture: button({ label: t("toolbar.lecture"), title: t("toolbar.lecture.title"), name: "lecture", pressed: false, onClick: () => toggleLecture() }),
+    share: button({ label: t("toolbar.share"), title: t("toolbar.share.title"), name: "share", onClick: () => share() }),
+    svg: button({ label: t("toolbar.svg"), title: t("toolbar.svg.title"), name: "export-svg", onClick: () => exportSvg() }),
+    png: button({ label: t("toolbar.png"), title: t("toolbar.png.title"), name: "export-png", onClick: () => exportPng() }),
+    json: button({ label: t("toolbar.json"), title: t("toolbar.json.title"), name: "export-json", onClick: () => exportState() }),
+    import: button({ label: t("toolbar.import"), title: t("toolbar.import.title"), name: "import", onClick: () => fileInput.click() }),
+  };
+  const toolbar = el("div", { class: "sl-toolbar", role: "toolbar", "aria-label": t("toolbar.label") },
+    el("span", { class: "sl-tool-group" }, buttons.undo, buttons.redo, buttons.reset, buttons.fit, buttons.lecture),
+    el("span", { class: "sl-tool-group" }, buttons.share),
+    el("span", { class: "sl-tool-group" }, el("span", { class: "sl-tool-label", text: t("toolbar.export") }), buttons.svg, buttons.png, buttons.json),
+    el("span", { class: "sl-tool-group" }, buttons.import, fileInput));
+
+  const tryItems = [];
+  for (let i = 1; i <= MAX_TRY_ITEMS && has(`${prefix}.try${i}`); i++) tryItems.push(el("li", { text: t(`${prefix}.try${i}`) }));
+  const about =
+    mode === "page"
+      ? el("section", { class: "sl-about" },
+          el("h3", { text: t("shell.whatYouSee") }), el("p", { text: t(`${prefix}.whatYouSee`) }),
+          el("h3", { text: t("shell.tryThis") }), el("ul", {}, tryItems))
+      : null;
+
+  const element = el("section", { class: `sl-demo sl-mode-${mode}`, dataset: { demo: demo.id } },
+    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: demo.title }), toolbar),
+    el("div", { class: "sl-body" },
+      el("div", { class: "sl-figure-wrap" }, figureHost, help),
+      panel,
+      el("div", { class: "sl-below" }, status, formula, details)),
+    about);
+  root.replaceChildren(element);
+  ensureKatexStyles(root.getRootNode ? root.getRootNode() : document);
+
+  // ------------------------------------------------------------------ status
+  function showStatus(message, kind = "info") {
+    clearTimeout(statusTimer);
+    status.textContent = message;
+    status.dataset.kind = kind;
+    if (kind === "info" && message) statusTimer = setTimeout(() => (status.textContent = ""), INFO_MESSAGE_MS);
+  }
+
+  // ------------------------------------------------------------------ state plumbing
+  /** The current window, written into every state the demo reports. */
+  let currentWindow = state.view ?? null;
+  const withView = (s) => (currentWindow ? { ...s, view: currentWindow } : s);
+
+  function refreshButtons() {
+    buttons.undo.disabled = !history.canUndo;
+    buttons.redo.disabled = !history.canRedo;
+  }
+
+  /** Applies the state's window to the figure, or fits one and stores it. */
+  function syncWindow() {
+    if (!figure) return;
+    const s = history.current;
+    if (s.view) {
+      currentWindow = s.view;
+      figure.setWindow(s.view);
+    } else {
+      currentWindow = figure.fit();
+      history.replace({ ...s, view: currentWindow });
+    }
+  }
+
+  /**
+   * Validates and shows an outside state (URL, file, attribute, reset); on success records it.
+   * On failure the message goes to the status area and the last good state stays. Returns
+   * true when accepted.
+   */
+  function accept(candidate, { errorKey = "status.rejected", name = "" } = {}) {
+    let next;
+    try {
+      next = validateState(demo, candidate);
+    } catch (err) {
+      showStatus(t(errorKey, { message: err.message, name }), "error");
+      return false;
+    }
+    const previous = history.current;
+    try {
+      instance.update(next);
+    } catch (err) {
+      // The wasm constructors validate again; keep the page alive on their refusal too.
+      showStatus(t(errorKey, { message: err.message, name }), "error");
+      try {
+        instance.update(previous);
+      } catch {
+        // previous was good before; nothing more to do
+      }
+      return false;
+    }
+    history.commit(next);
+    syncWindow();
+    refreshButtons();
+    onCommit(history.current);
+    return true;
+  }
+
+  function undo() {
+    const s = history.undo();
+    if (!s) return showStatus(t("status.nothingToUndo"));
+    instance.update(s);
+    refreshButtons();
+    onCommit(history.current);
+  }
+
+  function redo() {
+    const s = history.redo();
+    if (!s) return showStatus(t("status.nothingToRedo"));
+    instance.update(s);
+    refreshButtons();
+    onCommit(history.current);
+  }
+
+  function reset() {
+    accept(structuredClone(demo.defaultState));
+  }
+
+  function fit() {
+    if (!figure) return;
+    currentWindow = figure.fit();
+    history.replace({ ...history.current, view: currentWindow });
+    onCommit(history.current);
+  }
+
+  function toggleLecture() {
+    const on = buttons.lecture.getAttribute("aria-pressed") !== "true";
+    buttons.lecture.setAttribute("aria-pressed", String(on));
+    element.classList.toggle("sl-lecture", on);
+    figure?.setLecture(on);
+  }
+
+  async function share() {
+    const url = shareUrl(history.current);
+    try {
+      await navigator.clipboard.writeText(url);
+      showStatus(t("status.linkCopied"));
+    } catch {
+      showStatus(t("status.linkShown", { url }));
+    }
+  }
+
+  function exportSvg() {
+    if (!figure) return;
+    const name = `${demo.id}.svg`;
+    download(svgBlob(figureToSvg(figure)), name);
+    showStatus(t("status.exported", { name }));
+  }
+
+  async function exportPng() {
+    if (!figure) return;
+    const name = `${demo.id}.png`;
+    download(await figureToPng(figure), name);
+    showStatus(t("status.exported", { name }));
+  }
+
+  function exportState() {
+    const name = `${demo.id}.json`;
+    download(jsonBlob(exportJson(demo.id, history.current)), name);
+    showStatus(t("status.exported", { name }));
+  }
+
+  fileInput.addEventListener("change", async () => {
+    const file = fileInput.files?.[0];
+    fileInput.value = "";
+    if (!file) return;
+    const name = file.name;
+    try {
+      const candidate = parseJsonFile(await file.text(), demo.id);
+      if (accept(candidate, { errorKey: "status.badImport", name })) showStatus(t("status.imported", { name }));
+    } catch (err) {
+      showStatus(t("status.badImport", { name, message: err.message }), "error");
+    }
+  });
+
+  // Ctrl+Z / Ctrl+Shift+Z (and Ctrl+Y) anywhere in the demo, except in text boxes (their own undo).
+  const onKeyDown = (event) => {
+    if (!(event.ctrlKey || event.metaKey) || event.altKey) return;
+    const target = event.composedPath()[0];
+    if (target?.tagName === "INPUT" && target.type === "text") return;
+    const key = event.key.toLowerCase();
+    if (key === "z" && !event.shiftKey) undo();
+    else if ((key === "z" && event.shiftKey) || key === "y") redo();
+    else return;
+    event.preventDefault();
+  };
+  element.addEventListener("keydown", onKeyDown);
+
+  // ------------------------------------------------------------------ the demo
+  const ctx = {
+    sl,
+    mode,
+    reducedMotion: prefersReducedMotion(),
+    slots: { figure: figureHost, controls: panel, formula, details },
+    t,
+    /** Creates the demo's View in the figure slot (the shell handles its window and exports). */
+    createFigure(options) {
+      figure = new View(figureHost, {
+        ...options,
+        wheelNeedsModifier: mode === "embed",
+        onWindowChange: (win) => {
+          currentWindow = win;
+          history.replace({ ...history.current, view: win });
+          onCommit(history.current);
+        },
+      });
+      figure.canvas.setAttribute("aria-describedby", helpId);
+      return figure;
+    },
+    /** A change in progress (drag, animation frame): shown, not recorded. */
+    preview(next) {
+      history.preview(withView(next));
+    },
+    /** A finished change: recorded for undo and the URL. `merge` joins repeated key presses. */
+    commit(next, merge = null) {
+      if (history.commit(withView(next), merge)) {
+        refreshButtons();
+        onCommit(history.current);
+      }
+    },
+    /** Shows a message in the status area ("error" messages stay). */
+    status: showStatus,
+  };
+
+  const instance = demo.mount(element, history.current, ctx);
+  syncWindow();
+  refreshButtons();
+
+  return {
+    element,
+    get state() {
+      return history.current;
+    },
+    get figure() {
+      return figure;
+    },
+    accept,
+    undo,
+    redo,
+    status: showStatus,
+    version: STATE_VERSION,
+    destroy() {
+      clearTimeout(statusTimer);
+      element.removeEventListener("keydown", onKeyDown);
+      instance.destroy();
+      figure?.destroy();
+      element.remove();
+    },
+  };
+}

@@ -1,0 +1,135 @@
+/**
+ * The visual language of every figure (ui.md): Okabe–Ito colours, stroke widths, radii and
+ * font sizes, in one place. Demos never write a colour or a width inline; they pick a named
+ * style from the theme that `currentTheme()` returns.
+ *
+ * Sizes are CSS pixels at scale 1. Lecture mode multiplies text, strokes and radii by
+ * `LECTURE_SCALE`; the renderer applies that factor, so the styles below stay constant objects
+ * (made once, never per frame).
+ */
+
+/** Okabe–Ito hues, kept in light and dark mode. */
+export const HUES = Object.freeze({
+  blue: "#0072B2",
+  vermillion: "#D55E00",
+  orange: "#E69F00",
+  bluishGreen: "#009E73",
+  reddishPurple: "#CC79A7",
+  skyBlue: "#56B4E9",
+});
+
+/** Construction levels (de Casteljau, de Boor, Aitken) and per-point colours cycle through these. */
+export const CYCLE = Object.freeze([HUES.orange, HUES.bluishGreen, HUES.reddishPurple, HUES.skyBlue]);
+
+/** Stroke widths in CSS px (ui.md "Colours" table). */
+export const WIDTH = Object.freeze({
+  curve: 2.5,
+  polygon: 1,
+  construction: 1.5,
+  handleOutline: 1.5,
+  helper: 1,
+  basisHover: 3,
+});
+
+/** Radii in CSS px. */
+export const RADIUS = Object.freeze({
+  handle: 5,
+  handleHover: 7,
+  pointOnCurve: 5,
+  constructionPoint: 3.5,
+});
+
+/** Font sizes in CSS px; nothing on a canvas is smaller than 13 px at DPR 1. */
+export const FONT_SIZE = Object.freeze({ label: 15, small: 14 });
+
+/** Font stack shared by canvas text and SVG `<text>`, so exports match the screen. */
+export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
+
+/** Dash pattern of the control polygon, in CSS px. */
+export const POLYGON_DASH = Object.freeze([5, 4]);
+
+/** Dash pattern of helper geometry such as the line a constrained handle moves along. */
+export const HELPER_DASH = Object.freeze([2, 3]);
+
+/** Opacity of helper fills (boxes, hulls). */
+export const HELPER_FILL_ALPHA = 0.15;
+
+/** All text and strokes grow by this factor in lecture mode (ui.md). */
+export const LECTURE_SCALE = 1.6;
+
+/** Gap between a point and its label, in CSS px. */
+export const LABEL_GAP = 9;
+
+const LIGHT = Object.freeze({
+  name: "light",
+  background: "#FFFFFF",
+  text: "#222222",
+  polygon: "#8A8A8A",
+  handleFill: "#FFFFFF",
+  handleOutline: "#222222",
+  helper: "#BBBBBB",
+  grid: "#EEEEEE",
+});
+
+const DARK = Object.freeze({
+  name: "dark",
+  background: "#16181C",
+  text: "#E8E8E8",
+  polygon: "#9A9A9A",
+  handleFill: "#16181C",
+  handleOutline: "#E8E8E8",
+  helper: "#6A6A6A",
+  grid: "#24272D",
+});
+
+/**
+ * Builds the named styles of one colour scheme. A style is a plain object read by the
+ * renderer (draw.js): `stroke`, `fill`, `width`, `dash`, `alpha`, `radius`, `font` fields.
+ */
+function makeTheme(base) {
+  const levelStroke = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.construction }));
+  const levelPoint = CYCLE.map((colour) => Object.freeze({ fill: colour, radius: RADIUS.constructionPoint }));
+  return Object.freeze({
+    ...base,
+    curve: Object.freeze({ stroke: HUES.blue, width: WIDTH.curve, join: "round", cap: "round" }),
+    polygon: Object.freeze({ stroke: base.polygon, width: WIDTH.polygon, dash: POLYGON_DASH }),
+    handle: Object.freeze({ fill: base.handleFill, stroke: base.handleOutline, width: WIDTH.handleOutline, radius: RADIUS.handle }),
+    handleHover: Object.freeze({ fill: base.handleFill, stroke: base.handleOutline, width: WIDTH.handleOutline, radius: RADIUS.handleHover }),
+    handleSelected: Object.freeze({ fill: base.handleFill, stroke: HUES.vermillion, width: 2.5, radius: RADIUS.handleHover }),
+    pointOnCurve: Object.freeze({ fill: HUES.vermillion, stroke: base.background, width: 1, radius: RADIUS.pointOnCurve }),
+    levelStroke: Object.freeze(levelStroke),
+    levelPoint: Object.freeze(levelPoint),
+    helper: Object.freeze({ stroke: base.helper, width: WIDTH.helper, dash: HELPER_DASH }),
+    helperFill: Object.freeze({ fill: base.helper, alpha: HELPER_FILL_ALPHA, stroke: base.helper, width: WIDTH.helper }),
+    label: Object.freeze({ fill: base.text, size: FONT_SIZE.label, halo: base.background }),
+    labelBold: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
+    labelSmall: Object.freeze({ fill: base.text, size: FONT_SIZE.small, halo: base.background }),
+    labelPoint: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
+  });
+}
+
+/** The light theme; exports (SVG, PNG) always use it, on a white background. */
+export const LIGHT_THEME = makeTheme(LIGHT);
+/** The dark theme: background and greys swapped, hues kept. */
+export const DARK_THEME = makeTheme(DARK);
+
+const DARK_QUERY = "(prefers-color-scheme: dark)";
+
+/** The theme matching the reader's colour-scheme preference right now. */
+export function currentTheme() {
+  const dark = typeof matchMedia === "function" && matchMedia(DARK_QUERY).matches;
+  return dark ? DARK_THEME : LIGHT_THEME;
+}
+
+/** Calls `callback` when the colour-scheme preference changes; returns a function that stops it. */
+export function onThemeChange(callback) {
+  if (typeof matchMedia !== "function") return () => {};
+  const query = matchMedia(DARK_QUERY);
+  query.addEventListener("change", callback);
+  return () => query.removeEventListener("change", callback);
+}
+
+/** True when the reader asked for reduced motion: then nothing plays by itself. */
+export function prefersReducedMotion() {
+  return typeof matchMedia === "function" && matchMedia("(prefers-reduced-motion: reduce)").matches;
+}
