@@ -127,6 +127,20 @@ const EN = {
   "deCasteljau.try1": "Press Play and watch the construction slide along the polygon while P(t) traces the curve.",
   "deCasteljau.try2": "Drag P₂ and watch which part of the curve moves most: the Bernstein weight of P₂ peaks at t = 2/3.",
   "deCasteljau.try3": "Select a point with Tab and press + to add one: the degree rises and the triangle grows a level.",
+
+  // Demo: bernstein (strings of www/demos/bernstein.js; keys start with the demo's `strings` prefix)
+
+  // Demo: subdivision (strings of www/demos/subdivision.js; keys start with the demo's `strings` prefix)
+
+  // Demo: flattening (strings of www/demos/flattening.js; keys start with the demo's `strings` prefix)
+
+  // Demo: line-intersection (strings of www/demos/line-intersection.js; keys start with the demo's `strings` prefix)
+
+  // Demo: joining (strings of www/demos/joining.js; keys start with the demo's `strings` prefix)
+
+  // Demo: bezier-properties (strings of www/demos/bezier-properties.js; keys start with the demo's `strings` prefix)
+
+  // Demo: derivatives (strings of www/demos/derivatives.js; keys start with the demo's `strings` prefix)
 };
 
 const locales = { en: EN };
