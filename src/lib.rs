@@ -13,10 +13,12 @@
 //! from JavaScript panics.
 
 pub mod bezier;
+pub mod bspline;
 pub mod error;
 pub mod geom;
 pub mod wasm;
 
 pub use bezier::BezierCurve;
+pub use bspline::BSplineCurve;
 pub use error::{Error, Result};
 pub use glam::{DVec2, DVec3, DVec4};

@@ -120,8 +120,42 @@ fn composite_checks_its_layout() {
     let c = JsCompositeBezier::new(&pts, 2, &[2, 2], None).unwrap();
     assert_eq!(c.domain(), vec![0.0, 2.0]);
     assert_eq!(c.evaluate(2.0).unwrap(), vec![4.0, 0.0]);
-    assert!(message(JsCompositeBezier::new(&pts, 2, &[2, 3], None)).contains("need 7 control points"));
-    assert!(message(JsCompositeBezier::new(&pts, 2, &[2, 2], Some(vec![0.0, 1.0]))).contains("3 breakpoints"));
+    assert!(
+        message(JsCompositeBezier::new(&pts, 2, &[2, 3], None)).contains("need 7 control points")
+    );
+    assert!(message(JsCompositeBezier::new(
+        &pts,
+        2,
+        &[2, 2],
+        Some(vec![0.0, 1.0])
+    ))
+    .contains("3 breakpoints"));
     assert!(message(JsCompositeBezier::new(&pts, 2, &[0, 5], None)).contains("degree >= 1"));
     assert!(message(c.piece(2)).contains("index 2"));
+}
+
+#[test]
+fn bspline_boundary() {
+    use splinelab::wasm::{bspline as b, JsBSplineCurve};
+    let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
+    let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
+    let c = JsBSplineCurve::new(&pts, 2, 2, &knots, None).unwrap();
+    assert_eq!(c.domain(), vec![0.0, 4.0]);
+    assert_eq!(c.de_boor(1.5).unwrap().len(), 6 * 2);
+    assert_eq!(c.basis(1.5).unwrap().len(), 6);
+    assert_eq!(c.to_bezier().unwrap().len(), 4);
+    assert_eq!(c.insert_knot(1.5, None).unwrap().knots().len(), 10);
+    assert_eq!(c.segment_matrix(3, None).unwrap(), vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]);
+    assert_eq!(message(JsBSplineCurve::new(&pts, 4, 2, &knots, None)), "dim must be 2 or 3, got 4");
+    assert!(message(JsBSplineCurve::new(&pts, 2, 2, &knots[..8], None)).contains("n+p+2"));
+    assert!(message(JsBSplineCurve::new(&pts, 2, 0, &knots, None)).contains("degree must be at least 1"));
+    assert!(message(JsBSplineCurve::new(&pts, 2, 6, &knots, None)).contains("degree 6 needs at least"));
+    assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
+    assert!(message(c.insert_knot(0.0, Some(1))).contains("multiplicity 4"));
+    assert!(message(c.segment_matrix(0, None)).contains("span 0"));
+    assert!(message(b::knot_vector(&pts, 2, 2, "open")).contains("\"open\""));
+    assert!(message(b::parameterize(&[0.0, 0.0, 0.0, 0.0], 2, "chord")).contains("coincide"));
+    assert!(message(b::phantom_points(&pts, 2, 2)).contains("even"));
+    assert!(message(b::uniform_segment_matrix(0)).contains("degree must be"));
+    assert_eq!(b::knot_vector(&pts, 2, 2, "clamped").unwrap(), vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]);
 }

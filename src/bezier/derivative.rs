@@ -5,9 +5,7 @@ use super::{de_casteljau_point, differences, BezierCurve};
 use crate::error::{Error, Result};
 use crate::geom::{Cartesian, Point};
 
-/// Highest derivative order accepted for rational curves (whose derivatives never vanish);
-/// polynomial curves accept any order (zero above the degree).
-pub const MAX_DERIVATIVE_ORDER: usize = 32;
+use crate::geom::MAX_DERIVATIVE_ORDER;
 
 /// The control points of the `k`-th derivative in local parameter `s`: `n!/(n−k)! Δ^k P_i`.
 fn derivative_points<P: Point>(points: &[P], k: usize) -> Vec<P> {
@@ -67,18 +65,7 @@ impl<C: Cartesian> BezierCurve<C> {
             }
             homogeneous_derivs.push(de_casteljau_point(&pts, s, &mut scratch));
         }
-        let w0 = C::weight_of(homogeneous_derivs[0]);
-        let mut cs: Vec<C> = Vec::with_capacity(order + 1);
-        for k in 0..=order {
-            let mut v = C::numerator(homogeneous_derivs[k]);
-            let mut binom = 1.0;
-            for i in 1..=k {
-                binom = binom * (k + 1 - i) as f64 / i as f64;
-                v = v - cs[k - i] * (binom * C::weight_of(homogeneous_derivs[i]));
-            }
-            cs.push(v * (1.0 / w0));
-        }
-        Ok(cs[order] * scale)
+        Ok(crate::geom::rational_derivative::<C>(&homogeneous_derivs) * scale)
     }
 
     /// The hodograph: the polynomial curve `P'(t)` of degree `n − 1` with control points

@@ -40,8 +40,8 @@ use crate::geom::{check_all_finite, BoundingBox, Cartesian};
 /// degrees are of no practical use: the syllabus recommends piecewise curves above ~5).
 pub const MAX_DEGREE: usize = 64;
 
-/// Largest number of samples one dense call may produce.
-pub const MAX_SAMPLES: usize = 1 << 24;
+pub use crate::geom::MAX_SAMPLES;
+use crate::geom::{check_out_len, check_weights};
 
 /// A polynomial or rational Bézier curve in 2D (`C = DVec2`) or 3D (`C = DVec3`).
 ///
@@ -437,39 +437,4 @@ impl<C: Cartesian> BezierCurve<C> {
         }
         count
     }
-}
-
-/// Validates a weight list: count, finite, > 0.
-pub(crate) fn check_weights(w: &[f64], expected: usize) -> Result<()> {
-    if w.len() != expected {
-        return Err(Error::WeightCount {
-            expected,
-            got: w.len(),
-        });
-    }
-    check_all_finite(w, "weight")?;
-    if let Some((index, &value)) = w.iter().enumerate().find(|(_, &wi)| wi <= 0.0) {
-        return Err(Error::NonPositiveWeight { index, value });
-    }
-    Ok(())
-}
-
-/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count`.
-pub(crate) fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
-    if count > MAX_SAMPLES {
-        return Err(Error::TooLarge {
-            what: "sample count",
-            value: count,
-            max: MAX_SAMPLES,
-        });
-    }
-    if len != count * dim {
-        return Err(Error::Mismatch {
-            message: format!(
-                "output buffer has {len} values, {count} points need {}",
-                count * dim
-            ),
-        });
-    }
-    Ok(())
 }

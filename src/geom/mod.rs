@@ -187,6 +187,73 @@ impl Cartesian for DVec3 {
     }
 }
 
+/// The `k`-th derivative of a rational curve from the derivatives `A^(0..=k)` of its homogeneous
+/// curve (`k = homogeneous_derivs.len() − 1`), by the quotient rule
+/// `C^(k) = (A^(k) − Σ_{i=1..k} C(k,i) w^(i) C^(k−i)) / w` (NURBS Book eq. 4.8), where `A` is
+/// split into the numerator and the weight `w`. `homogeneous_derivs` must not be empty.
+pub fn rational_derivative<C: Cartesian>(homogeneous_derivs: &[C::Homogeneous]) -> C {
+    let order = homogeneous_derivs.len() - 1;
+    let w0 = C::weight_of(homogeneous_derivs[0]);
+    let mut cs: Vec<C> = Vec::with_capacity(order + 1);
+    for k in 0..=order {
+        let mut v = C::numerator(homogeneous_derivs[k]);
+        let mut binom = 1.0;
+        for i in 1..=k {
+            binom = binom * (k + 1 - i) as f64 / i as f64;
+            v = v - cs[k - i] * (binom * C::weight_of(homogeneous_derivs[i]));
+        }
+        cs.push(v * (1.0 / w0));
+    }
+    cs[order]
+}
+
+/// Highest degree accepted by the curve constructors: de Casteljau and de Boor cost O(p²) per
+/// point and such degrees are of no practical use (the syllabus recommends piecewise curves
+/// above ~5).
+pub const MAX_DEGREE: usize = 64;
+
+/// Highest derivative order accepted for rational curves (whose derivatives never vanish);
+/// polynomial curves accept any order (zero above the degree).
+pub const MAX_DERIVATIVE_ORDER: usize = 32;
+
+/// Largest number of samples one dense call may produce.
+pub const MAX_SAMPLES: usize = 1 << 24;
+
+/// Validates a weight list: count, finite, > 0.
+pub fn check_weights(w: &[f64], expected: usize) -> Result<()> {
+    if w.len() != expected {
+        return Err(Error::WeightCount {
+            expected,
+            got: w.len(),
+        });
+    }
+    check_all_finite(w, "weight")?;
+    if let Some((index, &value)) = w.iter().enumerate().find(|(_, &wi)| wi <= 0.0) {
+        return Err(Error::NonPositiveWeight { index, value });
+    }
+    Ok(())
+}
+
+/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count`.
+pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
+    if count > MAX_SAMPLES {
+        return Err(Error::TooLarge {
+            what: "sample count",
+            value: count,
+            max: MAX_SAMPLES,
+        });
+    }
+    if len != count * dim {
+        return Err(Error::Mismatch {
+            message: format!(
+                "output buffer has {len} values, {count} points need {}",
+                count * dim
+            ),
+        });
+    }
+    Ok(())
+}
+
 /// Axis-aligned bounding box.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BoundingBox<P> {

@@ -35,7 +35,7 @@ macro_rules! map_curve {
 }
 
 /// Points as one flat array of `P::DIM` numbers each.
-fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
+pub(crate) fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
     let mut out = vec![0.0; points.len() * P::DIM];
     for (p, o) in points.iter().zip(out.chunks_exact_mut(P::DIM)) {
         p.write_to(o);
@@ -43,7 +43,7 @@ fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
     out
 }
 
-fn point_from<C: Cartesian>(coords: &[f64]) -> Result<C, Error> {
+pub(crate) fn point_from<C: Cartesian>(coords: &[f64]) -> Result<C, Error> {
     if coords.len() != C::DIM {
         return Err(Error::PointDimension {
             expected: C::DIM,
@@ -364,6 +364,20 @@ impl JsBezierCurve {
 }
 
 impl JsBezierCurve {
+    /// Wraps a core 2D curve.
+    pub(crate) fn from_2d(c: BezierCurve<DVec2>) -> Self {
+        JsBezierCurve {
+            inner: Curve::D2(c),
+        }
+    }
+
+    /// Wraps a core 3D curve.
+    pub(crate) fn from_3d(c: BezierCurve<DVec3>) -> Self {
+        JsBezierCurve {
+            inner: Curve::D3(c),
+        }
+    }
+
     fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
         match &self.inner {
             Curve::D2(c) => Ok(c),

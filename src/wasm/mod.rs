@@ -12,8 +12,10 @@
 )]
 
 pub mod bezier;
+pub mod bspline;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
+pub use bspline::JsBSplineCurve;
 
 use wasm_bindgen::prelude::*;
 

@@ -1,0 +1,368 @@
+//! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
+
+use super::bezier::{flatten_points, point_from, JsBezierCurve};
+use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
+use crate::error::Error;
+use crate::geom::{check_dim, points_from_flat, Cartesian};
+use glam::{DVec2, DVec3};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// A 2D or 3D curve behind one JS class.
+#[derive(Clone)]
+enum Curve {
+    D2(BSplineCurve<DVec2>),
+    D3(BSplineCurve<DVec3>),
+}
+
+macro_rules! with_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => $body,
+            Curve::D3($c) => $body,
+        }
+    };
+}
+
+macro_rules! map_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => Curve::D2($body),
+            Curve::D3($c) => Curve::D3($body),
+        }
+    };
+}
+
+/// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
+#[wasm_bindgen(js_name = BSplineCurve)]
+#[derive(Clone)]
+pub struct JsBSplineCurve {
+    inner: Curve,
+}
+
+#[derive(Serialize)]
+struct BasisTableJs {
+    span: usize,
+    levels: Vec<Vec<f64>>,
+}
+
+#[derive(Serialize)]
+struct KnotContinuityJs {
+    knot: f64,
+    multiplicity: usize,
+    continuity: i32,
+}
+
+#[wasm_bindgen(js_class = BSplineCurve)]
+impl JsBSplineCurve {
+    /// `new BSplineCurve(points, dim, degree, knots, weights?)`: n + 1 points (flat), n + p + 2
+    /// non-decreasing knots, optional weights (> 0) for a NURBS.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        points: &[f64],
+        dim: usize,
+        degree: usize,
+        knots: &[f64],
+        weights: Option<Vec<f64>>,
+    ) -> Result<JsBSplineCurve, JsError> {
+        let w = weights.as_deref();
+        let inner = match check_dim(dim)? {
+            2 => Curve::D2(BSplineCurve::from_flat(points, degree, knots.to_vec(), w)?),
+            _ => Curve::D3(BSplineCurve::from_flat(points, degree, knots.to_vec(), w)?),
+        };
+        Ok(JsBSplineCurve { inner })
+    }
+
+    /// `BSplineCurve.closed(points, dim, degree, weights?)`: a closed curve through the cycle of
+    /// points (the first p repeated at the end, uniform knots), joined with C^(p−1).
+    pub fn closed(
+        points: &[f64],
+        dim: usize,
+        degree: usize,
+        weights: Option<Vec<f64>>,
+    ) -> Result<JsBSplineCurve, JsError> {
+        let w = weights.as_deref();
+        let inner = match check_dim(dim)? {
+            2 => Curve::D2(BSplineCurve::closed(points_from_flat(points)?, degree, w)?),
+            _ => Curve::D3(BSplineCurve::closed(points_from_flat(points)?, degree, w)?),
+        };
+        Ok(JsBSplineCurve { inner })
+    }
+
+    /// Degree p.
+    #[wasm_bindgen(getter)]
+    pub fn degree(&self) -> usize {
+        with_curve!(&self.inner, c => c.degree())
+    }
+
+    /// Dimension: 2 or 3.
+    #[wasm_bindgen(getter)]
+    pub fn dim(&self) -> usize {
+        match self.inner {
+            Curve::D2(_) => 2,
+            Curve::D3(_) => 3,
+        }
+    }
+
+    /// True when some weight differs from 1.
+    #[wasm_bindgen(getter)]
+    pub fn rational(&self) -> bool {
+        with_curve!(&self.inner, c => c.is_rational())
+    }
+
+    /// For a closed curve, how many trailing control points repeat the first ones (0 if open).
+    #[wasm_bindgen(getter)]
+    pub fn wrapped(&self) -> usize {
+        with_curve!(&self.inner, c => c.wrapped())
+    }
+
+    /// The domain `[u_p, u_{n+1}]`.
+    pub fn domain(&self) -> Vec<f64> {
+        let (a, b) = with_curve!(&self.inner, c => c.domain());
+        vec![a, b]
+    }
+
+    /// The knot vector.
+    pub fn knots(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => c.knots().as_slice().to_vec())
+    }
+
+    /// Indices k of the non-empty spans `[u_k, u_{k+1})` of the domain, in order.
+    pub fn spans(&self) -> Vec<u32> {
+        with_curve!(&self.inner, c => c.knots().spans().map(|k| k as u32).collect())
+    }
+
+    /// The span index k of u.
+    pub fn span(&self, u: f64) -> Result<usize, JsError> {
+        Ok(with_curve!(&self.inner, c => c.span(u))?)
+    }
+
+    /// The control points, flat.
+    #[wasm_bindgen(js_name = controlPoints)]
+    pub fn control_points(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => flatten_points(&c.control_points()))
+    }
+
+    /// The weights (all 1 for a polynomial curve).
+    pub fn weights(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => c.weights())
+    }
+
+    /// The homogeneous control points `(w·P, w)`, flat with dim + 1 numbers each.
+    #[wasm_bindgen(js_name = homogeneousPoints)]
+    pub fn homogeneous_points(&self) -> Vec<f64> {
+        with_curve!(&self.inner, c => flatten_points(c.homogeneous_points()))
+    }
+
+    /// The point at u.
+    pub fn evaluate(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&[c.evaluate(u)?])))
+    }
+
+    /// The derivative of the given order at u (zero above the degree of a polynomial curve).
+    pub fn derivative(&self, u: f64, order: usize) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(u, order)?])))
+    }
+
+    /// Points at every u of `us`, flat, walking the spans once for sorted input.
+    pub fn sample(&self, us: &[f64]) -> Result<Vec<f64>, JsError> {
+        let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
+        with_curve!(&self.inner, c => c.sample_into(us, &mut out))?;
+        Ok(out)
+    }
+
+    /// `count` points at equally spaced u over the domain, ends included.
+    #[wasm_bindgen(js_name = sampleUniform)]
+    pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
+        if count > crate::geom::MAX_SAMPLES {
+            return Err(Error::TooLarge {
+                what: "count",
+                value: count,
+                max: crate::geom::MAX_SAMPLES,
+            }
+            .into());
+        }
+        let mut out = vec![0.0; count * self.dim()];
+        with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
+        Ok(out)
+    }
+
+    /// `N_{i,p}(u)` for i = 0..n.
+    pub fn basis(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => c.basis(u))?)
+    }
+
+    /// Every basis function at `count` equally spaced u over the domain, i-major:
+    /// `N_{i,p}(u_j)` at index `i·count + j`.
+    #[wasm_bindgen(js_name = basisCurves)]
+    pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => c.basis_curves(count))?)
+    }
+
+    /// Derivatives of every basis function at u: row d = 0..=order holds `N^{(d)}_{i,p}(u)`,
+    /// i = 0..n, rows concatenated.
+    #[wasm_bindgen(js_name = basisDerivatives)]
+    pub fn basis_derivatives(&self, u: f64, order: usize) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => c.basis_derivatives_at(u, order))?)
+    }
+
+    /// The Cox–de Boor triangle at u: `{ span: k, levels }` where `levels[r]` holds
+    /// `N_{k−r,r}(u) … N_{k,r}(u)`.
+    #[wasm_bindgen(js_name = basisTable)]
+    pub fn basis_table(&self, u: f64) -> Result<JsValue, JsError> {
+        let (span, levels) = with_curve!(&self.inner, c => c.basis_table(u))?;
+        Ok(serde_wasm_bindgen::to_value(&BasisTableJs {
+            span,
+            levels,
+        })?)
+    }
+
+    /// de Boor's triangle at u: levels concatenated, the p + 1 active points first, C(u) last;
+    /// (p+1)(p+2)/2 points, flat. Rational curves give projected points.
+    #[wasm_bindgen(js_name = deBoor)]
+    pub fn de_boor(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor(u)?)))
+    }
+
+    /// de Boor's triangle on the homogeneous points, dim + 1 numbers each.
+    #[wasm_bindgen(js_name = deBoorHomogeneous)]
+    pub fn de_boor_homogeneous(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor_homogeneous(u)?)))
+    }
+
+    /// A new curve with knot u inserted `times` times (default 1): same shape, more points.
+    #[wasm_bindgen(js_name = insertKnot)]
+    pub fn insert_knot(&self, u: f64, times: Option<usize>) -> Result<JsBSplineCurve, JsError> {
+        let times = times.unwrap_or(1);
+        Ok(JsBSplineCurve {
+            inner: map_curve!(&self.inner, c => c.insert_knot(u, times)?),
+        })
+    }
+
+    /// A new curve with every knot of `us` inserted (knot refinement).
+    pub fn refine(&self, us: &[f64]) -> Result<JsBSplineCurve, JsError> {
+        Ok(JsBSplineCurve {
+            inner: map_curve!(&self.inner, c => c.refine(us)?),
+        })
+    }
+
+    /// The Bézier segments, one per non-empty span, in span order, each on t ∈ [0, 1].
+    #[wasm_bindgen(js_name = toBezier)]
+    pub fn to_bezier(&self) -> Result<Vec<JsBezierCurve>, JsError> {
+        Ok(match &self.inner {
+            Curve::D2(c) => c
+                .to_bezier()?
+                .into_iter()
+                .map(JsBezierCurve::from_2d)
+                .collect(),
+            Curve::D3(c) => c
+                .to_bezier()?
+                .into_iter()
+                .map(JsBezierCurve::from_3d)
+                .collect(),
+        })
+    }
+
+    /// `[{ knot, multiplicity, continuity }]` for each distinct interior knot: C^(p − r)
+    /// (continuity −1 where the curve may break).
+    #[wasm_bindgen(js_name = knotContinuity)]
+    pub fn knot_continuity(&self) -> Result<JsValue, JsError> {
+        let list: Vec<KnotContinuityJs> = with_curve!(&self.inner, c => c.knot_continuity())
+            .into_iter()
+            .map(|k| KnotContinuityJs {
+                knot: k.knot,
+                multiplicity: k.multiplicity,
+                continuity: k.continuity,
+            })
+            .collect();
+        Ok(serde_wasm_bindgen::to_value(&list)?)
+    }
+
+    /// The segment matrix of span k, row-major (p+1)×(p+1): `[x^p … 1] M [P_{k−p} … P_k]`, in
+    /// the local t ∈ [0, 1] when `local` (default) or in the global u.
+    #[wasm_bindgen(js_name = segmentMatrix)]
+    pub fn segment_matrix(&self, k: usize, local: Option<bool>) -> Result<Vec<f64>, JsError> {
+        let m = with_curve!(&self.inner, c => c.segment_matrix(k, local.unwrap_or(true)))?;
+        Ok(m.concat())
+    }
+
+    /// Moves control point i in place (a closed curve's repeated copy follows).
+    #[wasm_bindgen(js_name = setControlPoint)]
+    pub fn set_control_point(&mut self, i: usize, point: &[f64]) -> Result<(), JsError> {
+        with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
+        Ok(())
+    }
+
+    /// Sets weight i (> 0) in place.
+    #[wasm_bindgen(js_name = setWeight)]
+    pub fn set_weight(&mut self, i: usize, w: f64) -> Result<(), JsError> {
+        with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
+        Ok(())
+    }
+
+    /// A copy of this curve (a new wasm object; free it too).
+    #[wasm_bindgen(js_name = clone)]
+    pub fn clone_curve(&self) -> JsBSplineCurve {
+        self.clone()
+    }
+}
+
+fn flat_points<C: Cartesian>(points: &[f64]) -> Result<Vec<C>, Error> {
+    points_from_flat(points)
+}
+
+/// `knotVector(points, dim, degree, kind)`: kind "uniform" | "clamped" | "chord" | "centripetal"
+/// (the Greek notes' formulas in our convention, n + p + 2 knots).
+#[wasm_bindgen(js_name = knotVector)]
+pub fn knot_vector(
+    points: &[f64],
+    dim: usize,
+    degree: usize,
+    kind: &str,
+) -> Result<Vec<f64>, JsError> {
+    let kind = KnotKind::parse(kind)?;
+    Ok(match check_dim(dim)? {
+        2 => bspline::knot_vector(&flat_points::<DVec2>(points)?, degree, kind)?,
+        _ => bspline::knot_vector(&flat_points::<DVec3>(points)?, degree, kind)?,
+    })
+}
+
+/// `parameterize(points, dim, kind)`: cumulative parameters from 0; kind "uniform" | "chord" |
+/// "centripetal".
+#[wasm_bindgen]
+pub fn parameterize(points: &[f64], dim: usize, kind: &str) -> Result<Vec<f64>, JsError> {
+    let kind = Parameterization::parse(kind)?;
+    Ok(match check_dim(dim)? {
+        2 => bspline::parameterize(&flat_points::<DVec2>(points)?, kind)?,
+        _ => bspline::parameterize(&flat_points::<DVec3>(points)?, kind)?,
+    })
+}
+
+/// `phantomPoints(points, dim, degree)`: the points with `(p − 1)/2` reflected phantom points at
+/// each end, so a uniform B-spline of odd degree p passes through the first and last point.
+#[wasm_bindgen(js_name = phantomPoints)]
+pub fn phantom_points(points: &[f64], dim: usize, degree: usize) -> Result<Vec<f64>, JsError> {
+    Ok(match check_dim(dim)? {
+        2 => flatten_points(&bspline::phantom_points(
+            &flat_points::<DVec2>(points)?,
+            degree,
+        )?),
+        _ => flatten_points(&bspline::phantom_points(
+            &flat_points::<DVec3>(points)?,
+            degree,
+        )?),
+    })
+}
+
+/// `uniformSegmentMatrix(p)`: the matrix of every interior segment of a uniform B-spline of
+/// degree p (row-major, (p+1)², highest power first), e.g. 1/6·[[−1,3,−3,1],…] for p = 3.
+#[wasm_bindgen(js_name = uniformSegmentMatrix)]
+pub fn uniform_segment_matrix(p: usize) -> Result<Vec<f64>, JsError> {
+    if p == 0 || p > crate::geom::MAX_DEGREE {
+        return Err(Error::Mismatch {
+            message: format!("degree must be 1..={}, got {p}", crate::geom::MAX_DEGREE),
+        }
+        .into());
+    }
+    Ok(bspline::uniform_segment_matrix(p).concat())
+}

@@ -1,0 +1,704 @@
+//! B-spline curves against independent expectations: the Croatian quadratic example (with the
+//! syllabus' corrected polynomials), the notes' matrices, Bézier special cases, invariants of
+//! knot insertion and extraction, and fixtures from scipy's BSpline
+//! (`tests/fixtures/make_bspline_fixtures.py`). Runs natively and in Node.
+
+mod common;
+
+use common::*;
+use splinelab::bezier::{self, BezierCurve};
+use splinelab::bspline::{self, BSplineCurve, KnotKind, Parameterization};
+use splinelab::{DVec2, DVec3};
+use std::f64::consts::FRAC_1_SQRT_2;
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+/// The quadratic example of the Croatian notes: p = 2, six points, U = [0,0,0,1,2,3,4,4,4].
+fn croatian() -> BSplineCurve<DVec2> {
+    let pts = pts2(&[
+        (0.0, 0.0),
+        (1.0, 2.0),
+        (3.0, 3.0),
+        (5.0, 1.0),
+        (6.0, 3.0),
+        (8.0, 0.0),
+    ]);
+    BSplineCurve::new(
+        pts,
+        2,
+        vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0],
+        None,
+    )
+    .unwrap()
+}
+
+/// The syllabus' basis polynomials of the Croatian example: N_{i,2}(u), piece by piece.
+fn croatian_basis(i: usize, u: f64) -> f64 {
+    let span = (u.floor() as usize).min(3);
+    match (i, span) {
+        (0, 0) => (1.0 - u).powi(2),
+        (1, 0) => u * (4.0 - 3.0 * u) / 2.0,
+        (1, 1) => (2.0 - u).powi(2) / 2.0,
+        (2, 0) => u * u / 2.0,
+        (2, 1) => (-2.0 * u * u + 6.0 * u - 3.0) / 2.0,
+        (2, 2) => (3.0 - u).powi(2) / 2.0,
+        (3, 1) => (u - 1.0).powi(2) / 2.0,
+        (3, 2) => (-2.0 * u * u + 10.0 * u - 11.0) / 2.0,
+        (3, 3) => (4.0 - u).powi(2) / 2.0,
+        (4, 2) => (u - 2.0).powi(2) / 2.0,
+        (4, 3) => (-3.0 * u * u + 20.0 * u - 32.0) / 2.0,
+        (5, 3) => (u - 3.0).powi(2),
+        _ => 0.0,
+    }
+}
+
+#[test]
+fn croatian_example_basis_matches_the_corrected_polynomials() {
+    let c = croatian();
+    for k in 0..=400 {
+        let u = k as f64 / 100.0;
+        let basis = c.basis(u).unwrap();
+        for (i, &b) in basis.iter().enumerate() {
+            assert_close(b, croatian_basis(i, u), 1e-14, &format!("N_{i},2({u})"));
+        }
+    }
+    // The notes print +11 in N_{3,2} on [2, 3]; the value at u = 2.5 tells them apart.
+    assert_close(c.basis(2.5).unwrap()[3], 0.75, 1e-15, "N_3,2(2.5)");
+}
+
+#[test]
+fn segment_matrices_match_the_notes() {
+    let c = croatian();
+    // Global form on [1, 2]: columns N_{1,2}, N_{2,2}, N_{3,2} = (2−u)²/2, (−2u²+6u−3)/2, (u−1)²/2.
+    let m = c.segment_matrix(3, false).unwrap();
+    let expected = [[0.5, -1.0, 0.5], [-2.0, 3.0, -1.0], [2.0, -1.5, 0.5]];
+    for (r, row) in expected.iter().enumerate() {
+        for (j, &e) in row.iter().enumerate() {
+            assert_close(m[r][j], e, 1e-14, &format!("global M[{r}][{j}]"));
+        }
+    }
+    // Local form of both interior spans: the periodic segment.
+    let periodic = [[0.5, -1.0, 0.5], [-1.0, 1.0, 0.0], [0.5, 0.5, 0.0]];
+    for k in [3, 4] {
+        let m = c.segment_matrix(k, true).unwrap();
+        for (r, row) in periodic.iter().enumerate() {
+            for (j, &e) in row.iter().enumerate() {
+                assert_close(m[r][j], e, 1e-14, &format!("span {k} M[{r}][{j}]"));
+            }
+        }
+    }
+    let q = bspline::uniform_segment_matrix(2);
+    let cubic = bspline::uniform_segment_matrix(3);
+    let expected_cubic = [
+        [-1.0, 3.0, -3.0, 1.0],
+        [3.0, -6.0, 3.0, 0.0],
+        [-3.0, 0.0, 3.0, 0.0],
+        [1.0, 4.0, 1.0, 0.0],
+    ];
+    for r in 0..3 {
+        for j in 0..3 {
+            assert_close(q[r][j], periodic[r][j], 1e-15, "uniform quadratic");
+        }
+    }
+    for r in 0..4 {
+        for j in 0..4 {
+            assert_close(
+                cubic[r][j],
+                expected_cubic[r][j] / 6.0,
+                1e-15,
+                "uniform cubic",
+            );
+        }
+    }
+    assert!(c.segment_matrix(1, true).is_err());
+}
+
+/// A random valid knot vector for `count` points of degree `p`, with some repeated knots.
+fn random_knots(rng: &mut Rng, count: usize, p: usize, clamped: bool) -> Vec<f64> {
+    let m = count + p + 1;
+    loop {
+        let mut k: Vec<f64> = (0..m)
+            .map(|_| (rng.range(0.0, 10.0) * 2.0).round() / 2.0)
+            .collect();
+        k.sort_by(f64::total_cmp);
+        if clamped {
+            for i in 0..=p {
+                k[i] = k[0];
+                k[m - 1 - i] = k[m - 1];
+            }
+        }
+        if let Ok(kv) = bspline::KnotVector::new(k.clone(), p, count) {
+            let _ = kv;
+            return k;
+        }
+    }
+}
+
+#[test]
+fn partition_of_unity_and_non_negativity_on_random_knots() {
+    let mut rng = Rng::new(17);
+    for case in 0..60 {
+        let p = 1 + case % 5;
+        let count = p + 1 + (case % 7);
+        let knots = random_knots(&mut rng, count, p, case % 2 == 0);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let c = BSplineCurve::new(pts, p, knots.clone(), None).unwrap();
+        let (a, b) = c.domain();
+        for k in 0..=50 {
+            let u = a + (b - a) * k as f64 / 50.0;
+            let basis = c.basis(u).unwrap();
+            let sum: f64 = basis.iter().sum();
+            assert_close(
+                sum,
+                1.0,
+                1e-13,
+                &format!("seed 17 case {case}: Σ N at u = {u}, knots {knots:?}"),
+            );
+            assert!(
+                basis.iter().all(|&v| v >= -1e-15),
+                "non-negative: {basis:?}"
+            );
+            assert!(
+                basis.iter().filter(|&&v| v != 0.0).count() <= p + 1,
+                "at most p + 1 non-zero"
+            );
+        }
+    }
+}
+
+#[test]
+fn bezier_knots_give_the_bezier_curve_and_de_boor_is_de_casteljau() {
+    let pts = pts2(&[(0.0, 0.0), (2.0, 2.0), (6.0, 4.0), (8.0, 2.0)]);
+    let b = BSplineCurve::new(
+        pts.clone(),
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+        None,
+    )
+    .unwrap();
+    let bez = BezierCurve::new(pts.clone(), None).unwrap();
+    for k in 0..=20 {
+        let t = k as f64 / 20.0;
+        assert_close2(
+            b.evaluate(t).unwrap(),
+            bez.evaluate(t).unwrap(),
+            1e-14,
+            "B-spline = Bézier",
+        );
+    }
+    // On Bézier knots, de Boor's α is t at every step: the triangles coincide.
+    let tri = b.de_boor(0.25).unwrap();
+    assert_eq!(tri.len(), 10);
+    assert_eq!(tri, bez.de_casteljau(0.25).unwrap());
+    assert_eq!(*tri.last().unwrap(), DVec2::new(29.0 / 16.0, 23.0 / 16.0));
+}
+
+#[test]
+fn de_boor_triangle_ends_at_the_point() {
+    let c = croatian();
+    for k in 0..=16 {
+        let u = k as f64 / 4.0;
+        let tri = c.de_boor(u).unwrap();
+        assert_eq!(tri.len(), 6);
+        assert_close2(
+            *tri.last().unwrap(),
+            c.evaluate(u).unwrap(),
+            1e-14,
+            "de Boor = basis sum",
+        );
+    }
+}
+
+#[test]
+fn clamped_curves_interpolate_their_end_points() {
+    let c = croatian();
+    assert_eq!(c.evaluate(0.0).unwrap(), DVec2::new(0.0, 0.0));
+    assert_eq!(c.evaluate(4.0).unwrap(), DVec2::new(8.0, 0.0));
+    // End derivatives of a clamped curve: p (P1 − P0)/(u_{p+1} − u_1).
+    assert_close2(
+        c.derivative(0.0, 1).unwrap(),
+        DVec2::new(2.0, 4.0),
+        1e-14,
+        "start tangent",
+    );
+    assert_close2(
+        c.derivative(4.0, 1).unwrap(),
+        DVec2::new(4.0, -6.0),
+        1e-14,
+        "end tangent",
+    );
+}
+
+#[test]
+fn knot_insertion_matches_a_hand_computed_case_and_keeps_the_curve() {
+    let c = croatian();
+    let p = c.control_points();
+    let r = c.insert_knot(1.5, 1).unwrap();
+    assert_eq!(
+        r.knots().as_slice(),
+        &[0.0, 0.0, 0.0, 1.0, 1.5, 2.0, 3.0, 4.0, 4.0, 4.0]
+    );
+    // α_2 = (1.5 − 0)/(2 − 0) = 3/4, α_3 = (1.5 − 1)/(3 − 1) = 1/4.
+    let expected = vec![
+        p[0],
+        p[1],
+        p[1] * 0.25 + p[2] * 0.75,
+        p[2] * 0.75 + p[3] * 0.25,
+        p[3],
+        p[4],
+        p[5],
+    ];
+    assert_eq!(r.control_points(), expected);
+    assert_eq!(r.weights(), vec![1.0; 7]);
+    let mut rng = Rng::new(23);
+    for case in 0..30 {
+        let pdeg = 1 + case % 4;
+        let count = pdeg + 2 + case % 5;
+        let knots = random_knots(&mut rng, count, pdeg, case % 3 != 0);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let w: Vec<f64> = (0..count).map(|_| rng.range(0.5, 2.0)).collect();
+        let c = BSplineCurve::new(pts, pdeg, knots, Some(&w)).unwrap();
+        let (a, b) = c.domain();
+        let u = rng.range(a, b);
+        let times = 1 + case % 2;
+        let Ok(r) = c.insert_knot(u, times) else {
+            continue;
+        };
+        assert_eq!(r.control_points().len(), count + times);
+        for k in 0..=40 {
+            let s = a + (b - a) * k as f64 / 40.0;
+            assert_close2(
+                r.evaluate(s).unwrap(),
+                c.evaluate(s).unwrap(),
+                1e-11,
+                &format!("case {case}: insertion keeps C({s})"),
+            );
+        }
+        let refined = c.refine(&[a + 0.3 * (b - a), a + 0.7 * (b - a), a + 0.3 * (b - a)]);
+        if let Ok(refined) = refined {
+            for k in 0..=40 {
+                let s = a + (b - a) * k as f64 / 40.0;
+                assert_close2(
+                    refined.evaluate(s).unwrap(),
+                    c.evaluate(s).unwrap(),
+                    1e-11,
+                    "refinement keeps the curve",
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn extracted_bezier_segments_reproduce_the_curve() {
+    let mut rng = Rng::new(29);
+    for case in 0..30 {
+        let p = 1 + case % 4;
+        let count = p + 1 + case % 6;
+        let knots = random_knots(&mut rng, count, p, case % 2 == 0);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let w: Vec<f64> = (0..count)
+            .map(|_| {
+                if case % 3 == 0 {
+                    rng.range(0.5, 2.0)
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        let c = BSplineCurve::new(pts, p, knots, Some(&w)).unwrap();
+        let segments = c.to_bezier().unwrap();
+        let spans: Vec<usize> = c.knots().spans().collect();
+        assert_eq!(
+            segments.len(),
+            spans.len(),
+            "one segment per non-empty span"
+        );
+        let u = c.knots().as_slice();
+        for (seg, &k) in segments.iter().zip(&spans) {
+            assert_eq!(seg.degree(), p);
+            for j in 0..=10 {
+                // At a break (multiplicity p + 1) the curve takes the right piece's value.
+                if j == 10
+                    && k + 1 < c.control_points().len()
+                    && c.knots().multiplicity(u[k + 1]) > p
+                {
+                    continue;
+                }
+                let t = j as f64 / 10.0;
+                let s = u[k] + (u[k + 1] - u[k]) * t;
+                assert_close2(
+                    seg.evaluate(t).unwrap(),
+                    c.evaluate(s).unwrap(),
+                    1e-11,
+                    &format!("case {case} span {k}"),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn derivative_matches_the_control_point_difference_formula() {
+    // C'(u) = Σ N_{i,p−1}(u) Q_i with Q_i = p (P_{i+1} − P_i)/(u_{i+p+1} − u_{i+1}) on the knots
+    // without their first and last value.
+    let mut rng = Rng::new(31);
+    for case in 0..20 {
+        let p = 2 + case % 3;
+        let count = p + 2 + case % 4;
+        let knots = random_knots(&mut rng, count, p, true);
+        if knots
+            .windows(2)
+            .any(|w| w[0] == w[1] && w[0] > knots[0] && w[1] < knots[knots.len() - 1])
+        {
+            continue; // keep the derivative continuous for this comparison
+        }
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let c = BSplineCurve::new(pts.clone(), p, knots.clone(), None).unwrap();
+        let q: Vec<DVec2> = (0..count - 1)
+            .map(|i| (pts[i + 1] - pts[i]) * (p as f64 / (knots[i + p + 1] - knots[i + 1])))
+            .collect();
+        let d = BSplineCurve::new(q, p - 1, knots[1..knots.len() - 1].to_vec(), None).unwrap();
+        let (a, b) = c.domain();
+        for k in 0..=30 {
+            let u = a + (b - a) * k as f64 / 30.0;
+            assert_close2(
+                c.derivative(u, 1).unwrap(),
+                d.evaluate(u).unwrap(),
+                1e-10,
+                &format!("case {case} u = {u}"),
+            );
+        }
+        assert_eq!(
+            c.derivative(a, p + 1).unwrap(),
+            DVec2::ZERO,
+            "order above the degree"
+        );
+    }
+}
+
+#[test]
+fn closed_curves_join_with_full_continuity() {
+    let pts = pts2(&[(0.0, 0.0), (4.0, 0.0), (5.0, 3.0), (2.0, 5.0), (-1.0, 3.0)]);
+    for p in 1..=4 {
+        let c = BSplineCurve::closed(pts.clone(), p, None).unwrap();
+        assert_eq!(c.control_points().len(), pts.len() + p);
+        let (a, b) = c.domain();
+        assert_eq!((a, b), (p as f64, (pts.len() + p) as f64));
+        for order in 0..p {
+            assert_close2(
+                c.derivative(a, order).unwrap(),
+                c.derivative(b, order).unwrap(),
+                1e-12,
+                &format!("p = {p}, C^{order} at the seam"),
+            );
+        }
+        // Dragging a wrapped point moves its copy.
+        let mut d = c.clone();
+        d.set_control_point(0, DVec2::new(1.0, -1.0)).unwrap();
+        if p > 0 {
+            assert_eq!(d.control_points()[pts.len()], DVec2::new(1.0, -1.0));
+        }
+        assert_close2(
+            d.evaluate(a).unwrap(),
+            d.evaluate(b).unwrap(),
+            1e-12,
+            "still closed after an edit",
+        );
+    }
+}
+
+#[test]
+fn knot_multiplicity_lowers_continuity_as_the_table_says() {
+    // Cubic: interior knot multiplicity 1, 2, 3, 4 → C2, C1, C0, break (the Croatian table).
+    let pts: Vec<DVec2> = pts2(&[
+        (0.0, 0.0),
+        (1.0, 3.0),
+        (3.0, 4.0),
+        (5.0, 1.0),
+        (6.0, 4.0),
+        (8.0, 2.0),
+        (9.0, 5.0),
+        (11.0, 0.0),
+    ]);
+    for r in 1..=4usize {
+        let mut knots = vec![0.0; 4];
+        knots.extend(std::iter::repeat_n(1.0, r));
+        let rest = pts.len() + 4 - knots.len() - 4;
+        knots.extend((0..rest).map(|i| 2.0 + i as f64));
+        let end = knots[knots.len() - 1] + 1.0;
+        knots.extend([end; 4]);
+        let c = BSplineCurve::new(pts.clone(), 3, knots, None).unwrap();
+        let at_one = c
+            .knot_continuity()
+            .into_iter()
+            .find(|k| k.knot == 1.0)
+            .unwrap();
+        assert_eq!((at_one.multiplicity, at_one.continuity), (r, 3 - r as i32));
+        // Independent check: the Bézier segments on either side of u = 1, placed on their spans.
+        let segs = c.to_bezier().unwrap();
+        let u = c.knots().as_slice();
+        let spans: Vec<usize> = c.knots().spans().collect();
+        let i = spans.iter().position(|&k| u[k] == 1.0).unwrap();
+        let left = segs[i - 1]
+            .clone()
+            .with_interval(u[spans[i - 1]], 1.0)
+            .unwrap();
+        let right = segs[i].clone().with_interval(1.0, u[spans[i] + 1]).unwrap();
+        let found = bezier::check_continuity(&left, &right, 1e-9).unwrap();
+        assert_eq!(found.c, 3 - r as i32, "multiplicity {r}");
+    }
+}
+
+#[test]
+fn parameterizations_and_knot_vectors_follow_the_notes() {
+    let pts = pts2(&[
+        (0.0, 0.0),
+        (3.0, 4.0),
+        (3.0, 4.0 + 9.0),
+        (3.0 + 16.0, 13.0),
+        (19.0, 13.0 + 1.0),
+    ]);
+    assert_eq!(
+        bspline::parameterize(&pts, Parameterization::Uniform).unwrap(),
+        vec![0.0, 1.0, 2.0, 3.0, 4.0]
+    );
+    assert_eq!(
+        bspline::parameterize(&pts, Parameterization::Chord).unwrap(),
+        vec![0.0, 5.0, 14.0, 30.0, 31.0]
+    );
+    let cen = bspline::parameterize(&pts, Parameterization::Centripetal).unwrap();
+    assert_close(cen[4], 5f64.sqrt() + 3.0 + 4.0 + 1.0, 1e-14, "centripetal");
+    // n = 4, p = 2.
+    assert_eq!(
+        bspline::knot_vector(&pts, 2, KnotKind::Uniform).unwrap(),
+        (0..8).map(|i| i as f64).collect::<Vec<_>>()
+    );
+    assert_eq!(
+        bspline::knot_vector(&pts, 2, KnotKind::Clamped).unwrap(),
+        vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]
+    );
+    // Interior knots at the first n − p = 2 cumulative lengths; ends at the first 3 legs' total.
+    assert_eq!(
+        bspline::knot_vector(&pts, 2, KnotKind::Chord).unwrap(),
+        vec![0.0, 0.0, 0.0, 5.0, 14.0, 30.0, 30.0, 30.0]
+    );
+    let k = bspline::knot_vector(&pts, 2, KnotKind::Centripetal).unwrap();
+    assert_close(k[3], 5f64.sqrt(), 1e-15, "centripetal knot");
+    assert_close(k[7], 5f64.sqrt() + 7.0, 1e-14, "centripetal end");
+    let repeated = pts2(&[(0.0, 0.0), (1.0, 1.0), (1.0, 1.0), (2.0, 0.0)]);
+    let e = bspline::parameterize(&repeated, Parameterization::Chord)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("points 1 and 2 coincide"), "{e}");
+    assert!(bspline::knot_vector(&repeated, 2, KnotKind::Centripetal).is_err());
+}
+
+#[test]
+fn phantom_points_make_a_uniform_cubic_pass_through_the_ends() {
+    let pts = pts2(&[(0.0, 0.0), (2.0, 3.0), (5.0, 3.0), (7.0, 0.0)]);
+    let ghost = bspline::phantom_points(&pts, 3).unwrap();
+    assert_eq!(
+        ghost[0],
+        DVec2::new(-2.0, -3.0),
+        "P_−1 = 2P_0 − P_1, collinear with P_0 P_1"
+    );
+    let knots = bspline::knot_vector(&ghost, 3, KnotKind::Uniform).unwrap();
+    let c = BSplineCurve::new(ghost, 3, knots, None).unwrap();
+    let (a, b) = c.domain();
+    assert_close2(c.evaluate(a).unwrap(), pts[0], 1e-14, "starts at P0");
+    assert_close2(c.evaluate(b).unwrap(), pts[3], 1e-14, "ends at Pn");
+    assert!(bspline::phantom_points(&pts, 2).is_err());
+}
+
+#[test]
+fn nurbs_circle_has_radius_exactly_one() {
+    let s = FRAC_1_SQRT_2;
+    let pts = pts2(&[
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ]);
+    let w = [1.0, s, 1.0, s, 1.0, s, 1.0, s, 1.0];
+    let knots = vec![
+        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+    ];
+    let c = BSplineCurve::new(pts, 2, knots, Some(&w)).unwrap();
+    let mut out = vec![0.0; 2 * 1001];
+    c.sample_uniform_into(1001, &mut out).unwrap();
+    for p in out.chunks(2) {
+        assert_close(p[0].hypot(p[1]), 1.0, 1e-12, "radius");
+    }
+    for k in 1..10 {
+        let u = k as f64 / 10.0;
+        let d1 = c.derivative(u, 1).unwrap();
+        assert_close(
+            d1.dot(c.evaluate(u).unwrap()),
+            0.0,
+            1e-12,
+            "tangent ⟂ radius",
+        );
+    }
+    // 3D: the same circle lifted to z = 2 stays there.
+    let pts3: Vec<DVec3> = c.control_points().iter().map(|p| p.extend(2.0)).collect();
+    let c3 = BSplineCurve::new(pts3, 2, c.knots().as_slice().to_vec(), Some(&w)).unwrap();
+    assert_close(c3.evaluate(0.3).unwrap().z, 2.0, 1e-15, "z");
+}
+
+#[test]
+fn dense_sampling_equals_pointwise_evaluation() {
+    let c = croatian();
+    let us: Vec<f64> = (0..=200).map(|k| 4.0 * k as f64 / 200.0).rev().collect();
+    let mut out = vec![0.0; us.len() * 2];
+    c.sample_into(&us, &mut out).unwrap();
+    for (k, &u) in us.iter().enumerate() {
+        assert_eq!(
+            DVec2::new(out[2 * k], out[2 * k + 1]),
+            c.evaluate(u).unwrap(),
+            "u = {u} (unsorted input)"
+        );
+    }
+    let curves = c.basis_curves(41).unwrap();
+    for i in 0..6 {
+        for j in 0..41 {
+            assert_close(
+                curves[i * 41 + j],
+                croatian_basis(i, j as f64 / 10.0),
+                1e-14,
+                "basis curve",
+            );
+        }
+    }
+}
+
+#[test]
+fn basis_table_is_the_cox_de_boor_triangle() {
+    let (k, levels) = croatian().basis_table(1.5).unwrap();
+    assert_eq!(k, 3);
+    assert_eq!(levels[0], vec![1.0]);
+    // Level 1 on span [1, 2): N_{2,1} = (2 − u)/(2 − 1), N_{3,1} = (u − 1)/(2 − 1).
+    assert_eq!(levels[1], vec![0.5, 0.5]);
+    for (j, v) in levels[2].iter().enumerate() {
+        assert_close(*v, croatian_basis(1 + j, 1.5), 1e-15, "level 2");
+    }
+}
+
+/// The scipy fixtures: `curve` blocks followed by evaluations, derivatives and basis values.
+#[test]
+fn fixtures_from_scipy_bspline() {
+    let text = include_str!("fixtures/bspline_scipy.txt");
+    let mut curve: Option<BSplineCurve<DVec2>> = None;
+    let mut checked = 0;
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
+        let mut words = line.split_whitespace();
+        let tag = words.next().unwrap();
+        let nums: Vec<f64> = words.map(|w| w.parse().unwrap()).collect();
+        match tag {
+            "curve" => {
+                let p = nums[0] as usize;
+                let count = nums[1] as usize;
+                let knots = nums[2..2 + count + p + 1].to_vec();
+                let coords = &nums[2 + count + p + 1..];
+                curve = Some(BSplineCurve::from_flat(coords, p, knots, None).unwrap());
+            }
+            "eval" => {
+                let c = curve.as_ref().unwrap();
+                let (u, order) = (nums[0], nums[1] as usize);
+                let got = c.derivative(u, order).unwrap();
+                let scale = 1.0 + nums[2].abs().max(nums[3].abs());
+                assert_close2(
+                    got,
+                    DVec2::new(nums[2], nums[3]),
+                    1e-12 * scale,
+                    &format!("order {order} at u = {u}"),
+                );
+                checked += 1;
+            }
+            "basis" => {
+                let c = curve.as_ref().unwrap();
+                let got = c.basis(nums[0]).unwrap();
+                for (i, (&g, &e)) in got.iter().zip(&nums[1..]).enumerate() {
+                    assert_close(g, e, 1e-13, &format!("N_{i} at u = {}", nums[0]));
+                }
+                checked += 1;
+            }
+            other => panic!("unknown fixture line {other}"),
+        }
+    }
+    assert!(checked > 100, "only {checked} fixture values");
+}
+
+#[test]
+fn bad_input_gives_clear_errors() {
+    let pts = pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 1.0)]);
+    let err = |p: usize, k: Vec<f64>, w: Option<&[f64]>| {
+        BSplineCurve::new(pts.clone(), p, k, w)
+            .unwrap_err()
+            .to_string()
+    };
+    assert_eq!(
+        err(2, vec![0.0; 6], None),
+        "knot vector must have n+p+2 = 3 + 2 + 2 = 7 values, got 6"
+    );
+    assert!(err(2, vec![0.0, 0.0, 0.0, 2.0, 1.0, 3.0, 3.0], None)
+        .contains("u_4 = 1 comes after u_3 = 2"));
+    assert!(err(2, vec![0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0], None).contains("empty"));
+    assert!(err(2, vec![0.0, 0.0, 0.0, f64::NAN, 1.0, 1.0, 1.0], None).contains("knot u_3 is NaN"));
+    assert_eq!(
+        err(0, vec![0.0; 5], None),
+        "degree must be at least 1, got 0"
+    );
+    assert_eq!(
+        err(4, vec![0.0; 9], None),
+        "degree 4 needs at least p+1 = 5 control points, got 4"
+    );
+    assert!(err(
+        2,
+        vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0],
+        Some(&[1.0, 1.0, -1.0, 1.0])
+    )
+    .contains("weight 2 is -1"));
+    let c = croatian();
+    assert_eq!(
+        c.evaluate(4.5).unwrap_err().to_string(),
+        "u = 4.5 is outside the domain [0, 4]"
+    );
+    assert!(c
+        .evaluate(f64::NAN)
+        .unwrap_err()
+        .to_string()
+        .contains("u is NaN"));
+    assert!(c
+        .insert_knot(4.0, 1)
+        .unwrap_err()
+        .to_string()
+        .contains("multiplicity 4"));
+    assert!(c
+        .insert_knot(2.0, 3)
+        .unwrap_err()
+        .to_string()
+        .contains("at most p+1 = 3"));
+    assert!(
+        c.insert_knot(2.0, 2).is_ok(),
+        "multiplicity p + 1 inside is allowed (a break)"
+    );
+    let mut m = c.clone();
+    assert!(m
+        .set_control_point(6, DVec2::ZERO)
+        .unwrap_err()
+        .to_string()
+        .contains("index 6"));
+    assert!(KnotKind::parse("open")
+        .unwrap_err()
+        .to_string()
+        .contains("\"open\""));
+}
