@@ -847,17 +847,35 @@ fn bad_input_gives_clear_errors() {
 fn composite_curves_use_the_global_parameter_and_report_each_joint() {
     // Three quadratic pieces of y = x² (x = t on [0, 3]) are one polynomial: C∞ at both joints;
     // then a kink at t = 2 by moving the third piece's middle point.
-    let piece = |a: f64| bezier::from_polynomial(&pts2(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]), a, a + 1.0).unwrap();
+    let piece = |a: f64| {
+        bezier::from_polynomial(&pts2(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]), a, a + 1.0).unwrap()
+    };
     let pieces = vec![piece(0.0), piece(1.0), piece(2.0)];
     let c = bezier::CompositeCurve::new(pieces.clone(), &[0.0, 1.0, 2.0, 3.0]).unwrap();
     for k in 0..=30 {
         let t = k as f64 / 10.0;
-        assert_close2(c.evaluate(t).unwrap(), DVec2::new(t, t * t), 1e-12, "y = x²");
+        assert_close2(
+            c.evaluate(t).unwrap(),
+            DVec2::new(t, t * t),
+            1e-12,
+            "y = x²",
+        );
     }
-    assert_eq!(c.piece_index(1.0).unwrap(), 1, "right-continuous at a joint");
-    assert_eq!(c.piece_index(3.0).unwrap(), 2, "the end belongs to the last piece");
+    assert_eq!(
+        c.piece_index(1.0).unwrap(),
+        1,
+        "right-continuous at a joint"
+    );
+    assert_eq!(
+        c.piece_index(3.0).unwrap(),
+        2,
+        "the end belongs to the last piece"
+    );
     let k = c.continuity(1e-9).unwrap();
-    assert_eq!(k.iter().map(|k| k.c).collect::<Vec<_>>(), vec![Continuity::INFINITE; 2]);
+    assert_eq!(
+        k.iter().map(|k| k.c).collect::<Vec<_>>(),
+        vec![Continuity::INFINITE; 2]
+    );
     let mut kinked = pieces;
     let mut third = kinked[2].clone();
     third.set_control_point(1, DVec2::new(2.5, 5.0)).unwrap();

@@ -702,3 +702,47 @@ fn bad_input_gives_clear_errors() {
         .to_string()
         .contains("\"open\""));
 }
+
+#[test]
+fn repeated_control_points_keep_c2_but_a_triple_point_makes_a_corner() {
+    // Uniform cubic with P3 repeated: the Croatian table's control-point multiplicity. Measured
+    // at the knot where the repeated points are all active, between the Bézier segments.
+    let measure = |pts: Vec<DVec2>| {
+        let knots = bspline::knot_vector(&pts, 3, KnotKind::Uniform).unwrap();
+        let c = BSplineCurve::new(pts, 3, knots, None).unwrap();
+        let segs = c.to_bezier().unwrap();
+        let u = c.knots().as_slice().to_vec();
+        let spans: Vec<usize> = c.knots().spans().collect();
+        (1..segs.len())
+            .map(|i| {
+                let l = segs[i - 1]
+                    .clone()
+                    .with_interval(u[spans[i - 1]], u[spans[i - 1] + 1])
+                    .unwrap();
+                let r = segs[i]
+                    .clone()
+                    .with_interval(u[spans[i]], u[spans[i] + 1])
+                    .unwrap();
+                bezier::check_continuity(&l, &r, 1e-9).unwrap()
+            })
+            .collect::<Vec<_>>()
+    };
+    let base = pts2(&[
+        (0.0, 0.0),
+        (1.0, 3.0),
+        (3.0, 4.0),
+        (5.0, 1.0),
+        (6.0, 4.0),
+        (8.0, 2.0),
+    ]);
+    let mut triple = base.clone();
+    triple.splice(3..3, [base[3], base[3]]);
+    let joints = measure(triple);
+    assert!(joints.iter().all(|k| k.c >= 2), "C2 everywhere: {joints:?}");
+    assert!(
+        joints.iter().any(|k| k.g == 0),
+        "a corner where the velocity vanishes: {joints:?}"
+    );
+    let joints = measure(base);
+    assert!(joints.iter().all(|k| k.c >= 2 && k.g == 2), "{joints:?}");
+}

@@ -38,7 +38,8 @@ impl JoinRule {
 
 /// The continuity found at a joint: `c` is the largest k with `C^k` (−1 when the pieces do not
 /// meet, [`Continuity::INFINITE`] when they are pieces of one polynomial), `g` the largest k
-/// with `G^k` (checked up to `G^2`; never less than `c`).
+/// with `G^k` (checked up to `G^2`; 0 when the velocity vanishes at the joint, where the
+/// tangent is undefined even if the derivatives agree).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Continuity {
     /// Parametric continuity order.
@@ -178,15 +179,17 @@ pub fn check_continuity<C: Cartesian>(
     if c == top as i32 && polynomial {
         c = Continuity::INFINITE;
     }
-    let mut g = c.min(2);
-    if c == 0 || c == 1 {
+    // Geometric continuity is measured directly: with zero velocity at the joint the tangent
+    // is undefined, so C^k does not imply G^1 there (a triple control point makes a corner).
+    let mut g = c.min(0);
+    if c >= 0 {
         let d1 = (left.derivative(left.b, 1)?, right.derivative(right.a, 1)?);
         let d2 = (left.derivative(left.b, 2)?, right.derivative(right.a, 2)?);
-        let (sl, sr) = (d1.0.norm(), d1.1.norm());
-        if sl > 0.0 && sr > 0.0 {
-            let (tl, tr) = (d1.0 * (1.0 / sl), d1.1 * (1.0 / sr));
+        let moving = !same(d1.0, C::ZERO) && !same(d1.1, C::ZERO);
+        if moving {
+            let (tl, tr) = (d1.0 * (1.0 / d1.0.norm()), d1.1 * (1.0 / d1.1.norm()));
             if same(tl, tr) {
-                g = g.max(1);
+                g = 1;
                 let kappa =
                     |d1: C, d2: C, t: C| (d2 - t * d2.dot_with(t)) * (1.0 / d1.dot_with(d1));
                 if same(kappa(d1.0, d2.0, tl), kappa(d1.1, d2.1, tr)) {
@@ -195,10 +198,7 @@ pub fn check_continuity<C: Cartesian>(
             }
         }
     }
-    Ok(Continuity {
-        c,
-        g: g.max(c.min(2)),
-    })
+    Ok(Continuity { c, g })
 }
 
 /// A Bézier curve on `[a, b]` equal to the polynomial `Σ_k c_k t^k` in the global parameter
