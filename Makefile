@@ -40,8 +40,11 @@ tools: rust-target $(WB_STAMP) npm-deps
 
 build: tools
 	cargo build --release --lib --target $(WASM_TARGET)
-	$(TOOLS)/bin/wasm-bindgen --target web --out-dir $(PKG) --out-name splinelab $(WASM_OUT)
-	node_modules/.bin/wasm-opt -O $(PKG)/splinelab_bg.wasm -o $(PKG)/splinelab_bg.wasm
+	@# Built beside www/ and swapped in at the end, so a page loading meanwhile sees whole files.
+	rm -rf target/pkg-next
+	$(TOOLS)/bin/wasm-bindgen --target web --out-dir target/pkg-next --out-name splinelab $(WASM_OUT)
+	node_modules/.bin/wasm-opt -O target/pkg-next/splinelab_bg.wasm -o target/pkg-next/splinelab_bg.wasm
+	rm -rf $(PKG) && mv target/pkg-next $(PKG)
 	node scripts/vendor.mjs
 
 serve: build
