@@ -16,6 +16,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod error;
 pub mod geom;
+pub mod rational;
 pub mod wasm;
 
 pub use bezier::BezierCurve;

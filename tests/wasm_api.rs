@@ -145,11 +145,20 @@ fn bspline_boundary() {
     assert_eq!(c.basis(1.5).unwrap().len(), 6);
     assert_eq!(c.to_bezier().unwrap().len(), 4);
     assert_eq!(c.insert_knot(1.5, None).unwrap().knots().len(), 10);
-    assert_eq!(c.segment_matrix(3, None).unwrap(), vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]);
-    assert_eq!(message(JsBSplineCurve::new(&pts, 4, 2, &knots, None)), "dim must be 2 or 3, got 4");
+    assert_eq!(
+        c.segment_matrix(3, None).unwrap(),
+        vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]
+    );
+    assert_eq!(
+        message(JsBSplineCurve::new(&pts, 4, 2, &knots, None)),
+        "dim must be 2 or 3, got 4"
+    );
     assert!(message(JsBSplineCurve::new(&pts, 2, 2, &knots[..8], None)).contains("n+p+2"));
-    assert!(message(JsBSplineCurve::new(&pts, 2, 0, &knots, None)).contains("degree must be at least 1"));
-    assert!(message(JsBSplineCurve::new(&pts, 2, 6, &knots, None)).contains("degree 6 needs at least"));
+    assert!(message(JsBSplineCurve::new(&pts, 2, 0, &knots, None))
+        .contains("degree must be at least 1"));
+    assert!(
+        message(JsBSplineCurve::new(&pts, 2, 6, &knots, None)).contains("degree 6 needs at least")
+    );
     assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
     assert!(message(c.insert_knot(0.0, Some(1))).contains("multiplicity 4"));
     assert!(message(c.segment_matrix(0, None)).contains("span 0"));
@@ -157,5 +166,56 @@ fn bspline_boundary() {
     assert!(message(b::parameterize(&[0.0, 0.0, 0.0, 0.0], 2, "chord")).contains("coincide"));
     assert!(message(b::phantom_points(&pts, 2, 2)).contains("even"));
     assert!(message(b::uniform_segment_matrix(0)).contains("degree must be"));
-    assert_eq!(b::knot_vector(&pts, 2, 2, "clamped").unwrap(), vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]);
+    assert_eq!(
+        b::knot_vector(&pts, 2, 2, "clamped").unwrap(),
+        vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]
+    );
+}
+
+#[test]
+fn rational_constructors_and_projective_maps() {
+    use splinelab::wasm::rational as r;
+    let c = r::circle(1.0, 2.0, 3.0).unwrap();
+    let p = c.evaluate(0.3).unwrap();
+    assert!(((p[0] - 1.0).hypot(p[1] - 2.0) - 3.0).abs() < 1e-12);
+    assert_eq!(c.weights().len(), 9);
+    assert!(message(r::circle(0.0, 0.0, -1.0)).contains("r must be > 0, got -1"));
+    assert!(message(r::circular_arc(0.0, 0.0, 1.0, 0.0, 0.0)).contains("sweep"));
+    assert!(message(r::ellipse(0.0, 0.0, 1.0, f64::NAN, None)).contains("ry is NaN"));
+    assert!(message(r::ellipse_arc(
+        &[0.0, 0.0],
+        &[1.0, 0.0, 0.0],
+        &[0.0, 1.0],
+        0.0,
+        1.0
+    ))
+    .contains("same length"));
+    assert_eq!(
+        r::ellipse_arc(&[0.0; 3], &[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0], 0.0, 1.0)
+            .unwrap()
+            .dim(),
+        3
+    );
+    assert!(message(r::circular_arc_bezier(&[0.0, 0.0, 1.0, 1.0, 3.0, 0.0])).contains("isosceles"));
+    assert!(message(r::circular_arc_bezier(&[0.0, 0.0, 1.0, 1.0])).contains("3 control points"));
+    assert_eq!(r::conic_kind(1.0, 2.0, 1.0).unwrap(), "hyperbola");
+    assert!(message(r::conic_kind(1.0, -2.0, 1.0)).contains("weight 1 is -2"));
+    let bez = JsBezierCurve::new(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2, None).unwrap();
+    assert!(message(bez.projective_map(&[1.0; 8])).contains("9 numbers"));
+    assert!(
+        message(bez.projective_map(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0]))
+            .contains("singular")
+    );
+    let shifted = bez
+        .projective_map(&[1.0, 0.0, 5.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+        .unwrap();
+    assert_eq!(
+        shifted.evaluate(0.5).unwrap(),
+        vec![6.0, 0.5],
+        "row-major: translation in the last column"
+    );
+    assert!(
+        message(c.projective_map(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.5]))
+            .contains("weights must stay > 0")
+    );
 }

@@ -99,13 +99,9 @@ impl<C: Cartesian> BezierCurve<C> {
     /// vanishes (a cusp, or an end point whose neighbouring control point coincides with it),
     /// 0 on a straight piece.
     pub fn curvature(&self, t: f64) -> Result<f64> {
-        let d1 = self.derivative(t, 1)?;
-        let d2 = self.derivative(t, 2)?;
-        let speed = d1.norm();
-        let cross = C::cross_norm(d1, d2);
-        if speed == 0.0 {
-            return Ok(f64::INFINITY);
-        }
-        Ok(cross / (speed * speed * speed))
+        Ok(crate::geom::curvature(
+            self.derivative(t, 1)?,
+            self.derivative(t, 2)?,
+        ))
     }
 }

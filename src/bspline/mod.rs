@@ -291,6 +291,14 @@ impl<C: Cartesian> BSplineCurve<C> {
         }
     }
 
+    /// Curvature at `u` (see [`crate::geom::curvature`]: signed in 2D, `+∞` at zero velocity).
+    pub fn curvature(&self, u: f64) -> Result<f64> {
+        Ok(crate::geom::curvature(
+            self.derivative(u, 1)?,
+            self.derivative(u, 2)?,
+        ))
+    }
+
     /// `N_{i,p}(u)` for every `i = 0..=n` (zero outside the span's `p + 1`).
     pub fn basis(&self, u: f64) -> Result<Vec<f64>> {
         let u = self.knots.check_parameter(u)?;

@@ -207,6 +207,16 @@ pub fn rational_derivative<C: Cartesian>(homogeneous_derivs: &[C::Homogeneous]) 
     cs[order]
 }
 
+/// Curvature from the first two derivatives: in 2D the signed `(x'y'' − y'x'') / |P'|³`
+/// (positive turning counter-clockwise), in 3D `|P' × P''| / |P'|³`; `+∞` where `P' = 0`.
+pub fn curvature<C: Cartesian>(d1: C, d2: C) -> f64 {
+    let speed = d1.norm();
+    if speed == 0.0 {
+        return f64::INFINITY;
+    }
+    C::cross_norm(d1, d2) / (speed * speed * speed)
+}
+
 /// Highest degree accepted by the curve constructors: de Casteljau and de Boor cost O(p²) per
 /// point and such degrees are of no practical use (the syllabus recommends piecewise curves
 /// above ~5).

@@ -378,7 +378,7 @@ impl JsBezierCurve {
         }
     }
 
-    fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
+    pub(crate) fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
         match &self.inner {
             Curve::D2(c) => Ok(c),
             Curve::D3(_) => Err(Error::Needs2D { operation, dim: 3 }),

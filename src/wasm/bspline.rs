@@ -300,10 +300,39 @@ impl JsBSplineCurve {
         Ok(())
     }
 
+    /// Curvature at u: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity at a cusp.
+    pub fn curvature(&self, u: f64) -> Result<f64, JsError> {
+        Ok(with_curve!(&self.inner, c => c.curvature(u))?)
+    }
+
     /// A copy of this curve (a new wasm object; free it too).
     #[wasm_bindgen(js_name = clone)]
     pub fn clone_curve(&self) -> JsBSplineCurve {
         self.clone()
+    }
+}
+
+impl JsBSplineCurve {
+    /// Wraps a core 2D curve.
+    pub(crate) fn from_2d(c: BSplineCurve<DVec2>) -> Self {
+        JsBSplineCurve {
+            inner: Curve::D2(c),
+        }
+    }
+
+    /// Wraps a core 3D curve.
+    pub(crate) fn from_3d(c: BSplineCurve<DVec3>) -> Self {
+        JsBSplineCurve {
+            inner: Curve::D3(c),
+        }
+    }
+
+    /// The 2D curve, or an error naming the operation.
+    pub(crate) fn curve_2d(&self, operation: &'static str) -> Result<&BSplineCurve<DVec2>, Error> {
+        match &self.inner {
+            Curve::D2(c) => Ok(c),
+            Curve::D3(_) => Err(Error::Needs2D { operation, dim: 3 }),
+        }
     }
 }
 

@@ -13,6 +13,7 @@
 
 pub mod bezier;
 pub mod bspline;
+pub mod rational;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;

@@ -1,0 +1,164 @@
+//! Conics as rational quadratic Bézier curves, and exact circular/elliptic arcs as NURBS.
+
+use crate::bezier::BezierCurve;
+use crate::bspline::BSplineCurve;
+use crate::error::{check_finite, Error, Result};
+use crate::geom::Cartesian;
+use glam::DVec2;
+use std::f64::consts::FRAC_PI_2;
+
+/// The largest sweep of one rational quadratic piece in [`ellipse_arc`] (90°): smaller pieces
+/// keep the middle weight `cos(Δ/2) >= √2/2` and the control triangle compact.
+pub const MAX_ARC_PIECE: f64 = FRAC_PI_2;
+
+/// The type of conic a rational quadratic Bézier curve with weights `w0, w1, w2` lies on,
+/// decided by the shape factor `k = w1² / (w0 w2)` (in the standard form `w0 = w2 = 1` it is
+/// `w1²`): ellipse for `k < 1`, parabola for `k = 1`, hyperbola for `k > 1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ConicKind {
+    /// `w1 < 1` in standard form (a circle for the right triangle and weight).
+    Ellipse,
+    /// `w1 = 1`: the polynomial quadratic.
+    Parabola,
+    /// `w1 > 1`.
+    Hyperbola,
+}
+
+impl ConicKind {
+    /// `"ellipse" | "parabola" | "hyperbola"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ConicKind::Ellipse => "ellipse",
+            ConicKind::Parabola => "parabola",
+            ConicKind::Hyperbola => "hyperbola",
+        }
+    }
+}
+
+/// Classifies by the shape factor `w1² / (w0 w2)`; `|k − 1| <= 1e-12` counts as a parabola.
+///
+/// # Errors
+/// [`Error::NonPositiveWeight`] / [`Error::NotFinite`] for bad weights.
+pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<ConicKind> {
+    /// How close to 1 the shape factor must be to call the conic a parabola.
+    const PARABOLA_TOLERANCE: f64 = 1e-12;
+    crate::geom::check_weights(&[w0, w1, w2], 3)?;
+    let k = w1 * w1 / (w0 * w2);
+    Ok(if (k - 1.0).abs() <= PARABOLA_TOLERANCE {
+        ConicKind::Parabola
+    } else if k < 1.0 {
+        ConicKind::Ellipse
+    } else {
+        ConicKind::Hyperbola
+    })
+}
+
+/// The exact circular arc of the isosceles control triangle `P0 P1 P2` (`|P0P1| = |P1P2|`):
+/// weights `1, sin θ, 1` where `θ` is half the angle at `P1` (equivalently `cos(Δ/2)` for the
+/// arc's sweep `Δ`). The arc is tangent to `P0P1` at `P0` and to `P1P2` at `P2`.
+///
+/// # Errors
+/// [`Error::Mismatch`] unless the legs are equal (to `1e-9` relative) and the triangle is not
+/// degenerate (collinear points or a zero leg).
+pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<BezierCurve<DVec2>> {
+    for (name, v) in [
+        ("x0", p0.x),
+        ("y0", p0.y),
+        ("x1", p1.x),
+        ("y1", p1.y),
+        ("x2", p2.x),
+        ("y2", p2.y),
+    ] {
+        check_finite(|| name.into(), v)?;
+    }
+    let (a, b) = (p0 - p1, p2 - p1);
+    let (la, lb) = (a.length(), b.length());
+    if la == 0.0 || lb == 0.0 || a.perp_dot(b).abs() <= 1e-12 * la * lb {
+        return Err(Error::Mismatch {
+            message: "a circular arc needs a proper triangle P0 P1 P2 (no coincident or collinear points)".into(),
+        });
+    }
+    if (la - lb).abs() > 1e-9 * la.max(lb) {
+        return Err(Error::Mismatch {
+            message: format!(
+                "a circular arc needs an isosceles triangle: |P0P1| = {la} but |P1P2| = {lb}"
+            ),
+        });
+    }
+    // Half the angle at P1: sin θ = |a × b| … computed from the unit vectors' half-angle.
+    let angle = a.angle_to(b).abs();
+    let w1 = (0.5 * angle).sin();
+    BezierCurve::new(vec![p0, p1, p2], Some(&[1.0, w1, 1.0]))
+}
+
+/// The arc `center + cos θ · axis_x + sin θ · axis_y` for `θ` from `start` to `start + sweep`
+/// (radians; negative sweeps run clockwise), as an exact NURBS of degree 2 on `[0, 1]`: the
+/// sweep is cut into `⌈|sweep| / 90°⌉` equal pieces, each a rational quadratic with end weights
+/// 1 and middle weight `cos(Δ/2)`, joined by double knots. Perpendicular axes of equal length
+/// give a circle, other axes an ellipse (an affine image of the circle, which stays exact).
+/// A full turn (`|sweep| = 2π`) gives the 9-point circle with knots
+/// `0,0,0,¼,¼,½,½,¾,¾,1,1,1`.
+///
+/// # Errors
+/// [`Error::NotFinite`]; [`Error::Mismatch`] for a zero sweep, a sweep beyond a full turn or
+/// parallel (degenerate) axes.
+pub fn ellipse_arc<C: Cartesian>(
+    center: C,
+    axis_x: C,
+    axis_y: C,
+    start: f64,
+    sweep: f64,
+) -> Result<BSplineCurve<C>> {
+    check_finite(|| "start angle".into(), start)?;
+    check_finite(|| "sweep".into(), sweep)?;
+    for (what, p) in [("center", center), ("axis_x", axis_x), ("axis_y", axis_y)] {
+        for k in 0..C::DIM {
+            check_finite(|| format!("{what} coordinate {k}"), p.coord(k))?;
+        }
+    }
+    let full = std::f64::consts::TAU;
+    if sweep == 0.0 || sweep.abs() > full * (1.0 + 1e-12) {
+        return Err(Error::Mismatch {
+            message: format!(
+                "the sweep must be non-zero and at most one full turn (2π), got {sweep}"
+            ),
+        });
+    }
+    if C::cross_norm(axis_x, axis_y).abs() <= 1e-12 * axis_x.norm() * axis_y.norm() {
+        return Err(Error::Mismatch {
+            message: "the two axes of an ellipse must not be parallel or zero".into(),
+        });
+    }
+    let pieces = ((sweep.abs() / MAX_ARC_PIECE) - 1e-9).ceil().max(1.0) as usize;
+    let delta = sweep / pieces as f64;
+    let w_mid = (0.5 * delta).cos();
+    let at =
+        |theta: f64, scale: f64| center + (axis_x * theta.cos() + axis_y * theta.sin()) * scale;
+    let mut points = Vec::with_capacity(2 * pieces + 1);
+    let mut weights = Vec::with_capacity(2 * pieces + 1);
+    let mut knots = vec![0.0; 3];
+    for i in 0..pieces {
+        let theta0 = start + delta * i as f64;
+        if i == 0 {
+            points.push(at(theta0, 1.0));
+            weights.push(1.0);
+        }
+        // The middle point: where the end tangents meet, at distance 1/cos(Δ/2) along the
+        // bisector (of the unit circle, before the affine map).
+        points.push(at(theta0 + 0.5 * delta, 1.0 / w_mid));
+        weights.push(w_mid);
+        let end = if i + 1 == pieces {
+            start + sweep
+        } else {
+            theta0 + delta
+        };
+        points.push(at(end, 1.0));
+        weights.push(1.0);
+        if i + 1 < pieces {
+            let u = (i + 1) as f64 / pieces as f64;
+            knots.extend([u, u]);
+        }
+    }
+    knots.extend([1.0; 3]);
+    BSplineCurve::new(points, 2, knots, Some(&weights))
+}

@@ -1,0 +1,14 @@
+//! Rational curves (syllabus §4): conic sections as rational quadratic Béziers, exact circles,
+//! arcs and ellipses as NURBS, and projective maps of control points.
+//!
+//! Rational Bézier and B-spline curves themselves are [`crate::BezierCurve`] and
+//! [`crate::BSplineCurve`] with weights: `P(t) = Σ B_i w_i P_i / Σ B_i w_i`, evaluated on the
+//! homogeneous points `(w_i P_i, w_i)` with one division at the end. Only the ratios of the
+//! weights matter; raising `w_i` pulls the curve toward `P_i`; weights must be > 0 (a zero or
+//! negative weight can make the denominator vanish: a pole).
+
+mod conics;
+mod projective;
+
+pub use conics::{circle_arc_from_triangle, conic_kind, ellipse_arc, ConicKind, MAX_ARC_PIECE};
+pub use projective::{projective_map_bezier, projective_map_bspline};

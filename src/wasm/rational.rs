@@ -1,0 +1,179 @@
+//! Conics, circles, ellipses and projective maps for JavaScript.
+
+use super::bezier::JsBezierCurve;
+use super::bspline::JsBSplineCurve;
+use crate::error::Error;
+use crate::rational;
+use glam::{DMat3, DVec2, DVec3};
+use wasm_bindgen::prelude::*;
+
+/// `circle(cx, cy, r)`: the full circle as the 9-point NURBS of degree 2 (knots
+/// 0,0,0,¼,¼,½,½,¾,¾,1,1,1), starting at angle 0 and running counter-clockwise.
+#[wasm_bindgen]
+pub fn circle(cx: f64, cy: f64, r: f64) -> Result<JsBSplineCurve, JsError> {
+    circular_arc(cx, cy, r, 0.0, std::f64::consts::TAU)
+}
+
+/// `circularArc(cx, cy, r, startAngle, sweep)`: an exact arc (radians; a negative sweep runs
+/// clockwise), cut into pieces of at most 90°.
+#[wasm_bindgen(js_name = circularArc)]
+pub fn circular_arc(
+    cx: f64,
+    cy: f64,
+    r: f64,
+    start_angle: f64,
+    sweep: f64,
+) -> Result<JsBSplineCurve, JsError> {
+    check_radius("r", r)?;
+    let c = rational::ellipse_arc(
+        DVec2::new(cx, cy),
+        DVec2::new(r, 0.0),
+        DVec2::new(0.0, r),
+        start_angle,
+        sweep,
+    )?;
+    Ok(JsBSplineCurve::from_2d(c))
+}
+
+/// `ellipse(cx, cy, rx, ry, rotation = 0)`: the full ellipse with semi-axes rx, ry, the first
+/// axis turned by `rotation` radians, as an exact NURBS.
+#[wasm_bindgen]
+pub fn ellipse(
+    cx: f64,
+    cy: f64,
+    rx: f64,
+    ry: f64,
+    rotation: Option<f64>,
+) -> Result<JsBSplineCurve, JsError> {
+    check_radius("rx", rx)?;
+    check_radius("ry", ry)?;
+    let phi = rotation.unwrap_or(0.0);
+    crate::error::check_finite(|| "rotation".into(), phi)?;
+    let (ex, ey) = (
+        DVec2::new(phi.cos(), phi.sin()),
+        DVec2::new(-phi.sin(), phi.cos()),
+    );
+    let c = rational::ellipse_arc(
+        DVec2::new(cx, cy),
+        ex * rx,
+        ey * ry,
+        0.0,
+        std::f64::consts::TAU,
+    )?;
+    Ok(JsBSplineCurve::from_2d(c))
+}
+
+/// `ellipseArc(center, axisX, axisY, start, sweep)`: `center + cos θ·axisX + sin θ·axisY` for θ
+/// from start to start + sweep, in 2D or 3D (the length of `center`), as an exact NURBS.
+#[wasm_bindgen(js_name = ellipseArc)]
+pub fn ellipse_arc(
+    center: &[f64],
+    axis_x: &[f64],
+    axis_y: &[f64],
+    start: f64,
+    sweep: f64,
+) -> Result<JsBSplineCurve, JsError> {
+    if axis_x.len() != center.len() || axis_y.len() != center.len() {
+        return Err(Error::Mismatch {
+            message: format!(
+                "center, axisX and axisY need the same length, got {}, {}, {}",
+                center.len(),
+                axis_x.len(),
+                axis_y.len()
+            ),
+        }
+        .into());
+    }
+    Ok(match crate::geom::check_dim(center.len())? {
+        2 => JsBSplineCurve::from_2d(rational::ellipse_arc(
+            DVec2::from_slice(center),
+            DVec2::from_slice(axis_x),
+            DVec2::from_slice(axis_y),
+            start,
+            sweep,
+        )?),
+        _ => JsBSplineCurve::from_3d(rational::ellipse_arc(
+            DVec3::from_slice(center),
+            DVec3::from_slice(axis_x),
+            DVec3::from_slice(axis_y),
+            start,
+            sweep,
+        )?),
+    })
+}
+
+/// `circularArcBezier(points)`: the rational quadratic Bézier of an isosceles control
+/// triangle `[x0, y0, x1, y1, x2, y2]` (`|P0P1| = |P1P2|`) with weights 1, sin θ, 1 (θ half the
+/// angle at P1): an exact circular arc.
+#[wasm_bindgen(js_name = circularArcBezier)]
+pub fn circular_arc_bezier(points: &[f64]) -> Result<JsBezierCurve, JsError> {
+    let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
+    match pts.as_slice() {
+        [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
+            *p0, *p1, *p2,
+        )?)),
+        _ => Err(Error::Mismatch {
+            message: format!(
+                "a circular arc needs 3 control points (6 numbers), got {}",
+                pts.len()
+            ),
+        }
+        .into()),
+    }
+}
+
+/// `conicKind(w0, w1, w2)`: "ellipse" | "parabola" | "hyperbola" for a rational quadratic with
+/// these weights (by the shape factor w1²/(w0·w2) against 1).
+#[wasm_bindgen(js_name = conicKind)]
+pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, JsError> {
+    Ok(rational::conic_kind(w0, w1, w2)?.name().into())
+}
+
+fn check_radius(name: &'static str, r: f64) -> Result<(), Error> {
+    crate::error::check_finite(|| name.into(), r)?;
+    if r <= 0.0 {
+        return Err(Error::Mismatch {
+            message: format!("{name} must be > 0, got {r}"),
+        });
+    }
+    Ok(())
+}
+
+/// A row-major 3×3 matrix from JS.
+fn matrix(m: &[f64]) -> Result<DMat3, Error> {
+    let rows: &[f64; 9] = m.try_into().map_err(|_| Error::Mismatch {
+        message: format!(
+            "a projective map is a 3×3 matrix (9 numbers, row by row), got {}",
+            m.len()
+        ),
+    })?;
+    crate::geom::check_all_finite(rows, "matrix entry")?;
+    Ok(DMat3::from_cols_array(rows).transpose())
+}
+
+#[wasm_bindgen(js_class = BezierCurve)]
+impl JsBezierCurve {
+    /// `projectiveMap(matrix)`: the image under the projective map given as 9 numbers row by
+    /// row, acting on homogeneous (x, y, 1) (2D curves); a rational curve with new weights.
+    #[wasm_bindgen(js_name = projectiveMap)]
+    pub fn projective_map(&self, m: &[f64]) -> Result<JsBezierCurve, JsError> {
+        let m = matrix(m)?;
+        Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
+            self.curve_2d("projectiveMap")?,
+            &m,
+        )?))
+    }
+}
+
+#[wasm_bindgen(js_class = BSplineCurve)]
+impl JsBSplineCurve {
+    /// `projectiveMap(matrix)`: as `BezierCurve.projectiveMap`, same knots.
+    #[wasm_bindgen(js_name = projectiveMap)]
+    pub fn projective_map(&self, m: &[f64]) -> Result<JsBSplineCurve, JsError> {
+        let m = matrix(m)?;
+        Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(
+            self.curve_2d("projectiveMap")?,
+            &m,
+        )?))
+    }
+}
