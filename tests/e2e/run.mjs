@@ -7,9 +7,10 @@
 //   node tests/e2e/run.mjs            all tests
 //   node tests/e2e/run.mjs casteljau  only tests whose name contains "casteljau"
 import { chromium } from "playwright-core";
-import { mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { mkdtempSync, readdirSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { join } from "node:path";
+import { join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
 import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
 
@@ -24,6 +25,16 @@ const DRAG_PX = { x: 40, y: -30 };
 const PLAY_MS = 500;
 const PNG_SIGNATURE = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
 const filter = process.argv[2] ?? "";
+const ROOT = resolve(fileURLToPath(new URL("../..", import.meta.url)));
+
+/** Every .js file below `dir`, except the generated pkg/ and vendor/ folders. */
+function listJs(dir) {
+  return readdirSync(dir, { withFileTypes: true }).flatMap((entry) => {
+    const path = join(dir, entry.name);
+    if (entry.isDirectory()) return ["pkg", "vendor"].includes(entry.name) ? [] : listJs(path);
+    return entry.name.endsWith(".js") ? [path] : [];
+  });
+}
 
 let passed = 0;
 let failed = 0;
@@ -160,6 +171,25 @@ try {
   // The registry, as the page sees it.
   await page.goto(`${base}/index.html`);
   const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => ({ id: d.id, title: d.title, section: d.section })));
+
+  await test("strings: every key the UI asks for exists in English", async () => {
+    // Literal keys t("…") anywhere in www/, plus the keys the shell builds from each demo's prefix.
+    const missingDemoKeys = await page.evaluate(async () => {
+      const strings = await import("./lib/strings.js");
+      const { demos } = await import("./demos/index.js");
+      const keys = demos.flatMap((d) => ["title", "summary", "whatYouSee", "try1"].map((k) => `${d.strings}.${k}`));
+      return keys.filter((k) => !strings.has(k));
+    });
+    assert(missingDemoKeys.length === 0, `missing demo keys: ${missingDemoKeys.join(", ")}`);
+    const missing = [];
+    const strings = await import("../../www/lib/strings.js");
+    for (const file of listJs(join(ROOT, "www"))) {
+      for (const [, key] of readFileSync(file, "utf8").matchAll(/\bt\("([\w.]+)"/g)) {
+        if (!strings.has(key)) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
+      }
+    }
+    assert(missing.length === 0, `keys missing from strings.js:\n${missing.join("\n")}`);
+  });
 
   await test("gallery lists every demo with a thumbnail and a #demo= link", async () => {
     await page.locator(".card").first().waitFor();
