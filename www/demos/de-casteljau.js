@@ -168,7 +168,8 @@ export function mount(container, initialState, ctx) {
   let frameId = 0;
   const tick = (now) => {
     if (!playing) return;
-    const dt = (now - lastTime) / 1000;
+    // The first frame's timestamp may precede performance.now() taken in play(): never step back.
+    const dt = Math.max(0, now - lastTime) / 1000;
     lastTime = now;
     const next = Math.min(1, work.t + PLAY_SPEED * dt);
     setT(next, false);

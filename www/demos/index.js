@@ -4,9 +4,16 @@
  * module contract). To add a demo: write `www/demos/<id>.js`, import it below, add it to the list.
  */
 import * as deCasteljau from "./de-casteljau.js";
+import * as bernstein from "./bernstein.js";
+import * as subdivision from "./subdivision.js";
+import * as flattening from "./flattening.js";
+import * as lineIntersection from "./line-intersection.js";
+import * as joining from "./joining.js";
+import * as bezierProperties from "./bezier-properties.js";
+import * as derivatives from "./derivatives.js";
 
 /** All demos, in the order the gallery shows them within their section. */
-export const demos = [deCasteljau];
+export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives];
 
 /** The demo with this id, or undefined. */
 export function findDemo(id) {

@@ -39,29 +39,44 @@ export function el(tag, props = {}, ...children) {
  * @param {(message: string) => void} [o.onError] typed text that is not a number in range.
  * @param {(value: number) => string} [o.format] text shown in the box.
  * @param {string} [o.name] data-control name (tests and styling).
+ * @param {boolean} [o.log] logarithmic slider (min > 0): the range moves in log10 of the value
+ *   with `step` in log10 units; `min`, `max`, `value` and what onChange gets stay plain values.
  */
-export function slider({ label, inputLabel, min, max, step, value, onChange, onError, format = fmt, name, badNumber }) {
+export function slider({ label, inputLabel, min, max, step, value, onChange, onError, format = fmt, name, badNumber, log = false }) {
   const id = uid("range");
-  const range = el("input", { type: "range", id, min: String(min), max: String(max), step: String(step), value: String(value) });
+  /** Value ↔ range position (the identity unless `log`). */
+  const toRange = log ? Math.log10 : (v) => v;
+  const fromRange = log ? (p) => 10 ** p : (p) => p;
+  const range = el("input", { type: "range", id, min: String(toRange(min)), max: String(toRange(max)), step: String(step), value: String(toRange(value)) });
   const box = el("input", { type: "text", inputmode: "decimal", class: "sl-value", "aria-label": inputLabel, size: "6", value: format(value) });
   const row = el("div", { class: "sl-control sl-slider", dataset: name ? { control: name } : undefined },
     el("label", { for: id, text: label }),
     el("div", { class: "sl-slider-row" }, range, box));
 
+  /** The value shown (unsnapped: a log slider's range position is rounded to its step). */
+  let current = value;
+  /** The accepted range (`setRange` moves it, e.g. a B-spline's domain after a knot change). */
+  let lo = min;
+  let hi = max;
   range.addEventListener("input", () => {
-    const v = Number(range.value);
+    const v = fromRange(Number(range.value));
+    current = v;
     box.value = format(v);
     onChange(v, false);
   });
-  range.addEventListener("change", () => onChange(Number(range.value), true));
+  range.addEventListener("change", () => {
+    current = fromRange(Number(range.value));
+    onChange(current, true);
+  });
   const typed = () => {
     const v = parseNumberInput(box.value);
-    if (!Number.isFinite(v) || v < min || v > max) {
+    if (!Number.isFinite(v) || v < lo || v > hi) {
       onError?.(badNumber ? badNumber(box.value) : box.value);
-      box.value = format(Number(range.value));
+      box.value = format(current);
       return;
     }
-    range.value = String(v);
+    current = v;
+    range.value = String(toRange(v));
     onChange(v, true);
   };
   box.addEventListener("change", typed);
@@ -75,8 +90,17 @@ export function slider({ label, inputLabel, min, max, step, value, onChange, onE
     box,
     /** Shows `v` without firing onChange. */
     set(v) {
-      range.value = String(v);
+      current = v;
+      range.value = String(toRange(v));
       if (document.activeElement !== box && box.getRootNode().activeElement !== box) box.value = format(v);
+    },
+    /** Changes the accepted range (and the step when given) without firing onChange; call `set` after. */
+    setRange(newMin, newMax, newStep = null) {
+      lo = newMin;
+      hi = newMax;
+      range.min = String(toRange(newMin));
+      range.max = String(toRange(newMax));
+      if (newStep !== null) range.step = String(newStep);
     },
   };
 }
@@ -106,4 +130,37 @@ export function checkbox({ label, checked, onChange, name }) {
 /** A titled group of controls. */
 export function group(title, ...children) {
   return el("fieldset", { class: "sl-group" }, title ? el("legend", { text: title }) : null, ...children);
+}
+
+/**
+ * Radio buttons for one choice, each with its visible label (arrow keys move between them, as
+ * the browser does for a radio group). Put the returned rows in a `group(title, …)`.
+ * @param {object} o
+ * @param {{ value: string, label: string }[]} o.options
+ * @param {string} o.value the choice shown first.
+ * @param {(value: string) => void} o.onChange a choice was made.
+ * @param {string} [o.name] data-control name (tests and styling); also the radios' name.
+ * @returns {{ element: HTMLElement, inputs: HTMLInputElement[], set(value: string): void }}
+ */
+export function radios({ options, value, onChange, name }) {
+  const groupName = uid(`radio-${name ?? "choice"}`);
+  const inputs = [];
+  const rows = options.map((option) => {
+    const id = uid("radio");
+    const input = el("input", { type: "radio", id, name: groupName, value: option.value, checked: option.value === value });
+    input.addEventListener("change", () => {
+      if (input.checked) onChange(option.value);
+    });
+    inputs.push(input);
+    return el("div", { class: "sl-control sl-check", dataset: { choice: option.value } }, input, el("label", { for: id, text: option.label }));
+  });
+  const element = el("div", { class: "sl-radios", role: "radiogroup", dataset: name ? { control: name } : undefined }, rows);
+  return {
+    element,
+    inputs,
+    /** Shows `v` without firing onChange. */
+    set(v) {
+      for (const input of inputs) input.checked = input.value === v;
+    },
+  };
 }

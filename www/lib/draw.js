@@ -7,7 +7,8 @@
  * Coordinates are CSS pixels with y down (the View converts from world coordinates).
  * Path calls follow the canvas API: `beginPath`, `moveTo`, `lineTo`, `arc`, `rect`,
  * `closePath`; then `paint(style)` strokes and/or fills the path. Styles are the constant
- * objects of theme.js: `{ stroke, fill, width, dash, alpha, join, cap, radius }` and for text
+ * objects of theme.js: `{ stroke, fill, width, dash, alpha, strokeAlpha, join, cap, radius }`
+ * (`alpha` is the fill's opacity, `strokeAlpha` the stroke's, both 1 when absent) and for text
  * `{ fill, size, weight, halo }`. `scale` (lecture mode) multiplies widths, radii, dashes
  * and font sizes.
  */
@@ -89,7 +90,7 @@ export class CanvasRenderer {
       c.fillStyle = style.fill;
       c.fill();
     }
-    c.globalAlpha = 1;
+    c.globalAlpha = style.strokeAlpha ?? 1;
     if (style.stroke) {
       c.strokeStyle = style.stroke;
       c.lineWidth = (style.width ?? 1) * this.scale;
@@ -99,6 +100,7 @@ export class CanvasRenderer {
       c.stroke();
       c.setLineDash(NO_DASH);
     }
+    c.globalAlpha = 1;
   }
 
   /** A dot of the style's radius (scaled), filled/stroked with the style. */
@@ -264,6 +266,7 @@ export class SvgRecorder {
       if (style.join) attrs.push(`stroke-linejoin="${style.join}"`);
       if (style.cap) attrs.push(`stroke-linecap="${style.cap}"`);
       if (style.dash) attrs.push(`stroke-dasharray="${style.dash.map((d) => num(d * this.scale)).join(" ")}"`);
+      if (style.strokeAlpha !== undefined && style.strokeAlpha !== 1) attrs.push(`stroke-opacity="${style.strokeAlpha}"`);
     }
     this._parts.push(`<path ${attrs.join(" ")}/>`);
   }

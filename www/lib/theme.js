@@ -29,6 +29,10 @@ export const WIDTH = Object.freeze({
   handleOutline: 1.5,
   helper: 1,
   basisHover: 3,
+  basisRing: 2.5,
+  basisBand: 8,
+  highlightBand: 12,
+  split: 2,
 });
 
 /** Radii in CSS px. */
@@ -37,6 +41,8 @@ export const RADIUS = Object.freeze({
   handleHover: 7,
   pointOnCurve: 5,
   constructionPoint: 3.5,
+  basisRing: 9.5,
+  splitPoint: 4,
 });
 
 /** Font sizes in CSS px; nothing on a canvas is smaller than 13 px at DPR 1. */
@@ -47,6 +53,15 @@ export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helve
 
 /** Dash pattern of the control polygon, in CSS px. */
 export const POLYGON_DASH = Object.freeze([5, 4]);
+
+/** Dash pattern of the right half of a subdivided curve's control polygon, in CSS px. */
+export const SPLIT_DASH = Object.freeze([7, 4]);
+
+/**
+ * Curves compared in one figure (e.g. one control polygon under several knot vectors): solid,
+ * dashed and dotted, so the style and not only the colour tells them apart (`compareCurve[i]`).
+ */
+export const COMPARE_DASH = Object.freeze([null, Object.freeze([10, 6]), Object.freeze([0.5, 6])]);
 
 /** Dash pattern of helper geometry such as the line a constrained handle moves along. */
 export const HELPER_DASH = Object.freeze([2, 3]);
@@ -89,6 +104,11 @@ const DARK = Object.freeze({
 function makeTheme(base) {
   const levelStroke = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.construction }));
   const levelPoint = CYCLE.map((colour) => Object.freeze({ fill: colour, radius: RADIUS.constructionPoint }));
+  const basisStroke = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.construction, join: "round" }));
+  const basisHover = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisHover, join: "round" }));
+  const basisRing = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisRing, radius: RADIUS.basisRing }));
+  const basisBand = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisBand, join: "round", cap: "round" }));
+  const basisPoint = CYCLE.map((colour) => Object.freeze({ fill: colour, stroke: base.background, width: 1, radius: RADIUS.constructionPoint }));
   return Object.freeze({
     ...base,
     curve: Object.freeze({ stroke: HUES.blue, width: WIDTH.curve, join: "round", cap: "round" }),
@@ -105,6 +125,31 @@ function makeTheme(base) {
     labelBold: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
     labelSmall: Object.freeze({ fill: base.text, size: FONT_SIZE.small, halo: base.background }),
     labelPoint: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
+    // Basis functions and their control points share a colour of CYCLE (index i mod CYCLE.length).
+    basisStroke: Object.freeze(basisStroke),
+    basisHover: Object.freeze(basisHover),
+    basisRing: Object.freeze(basisRing),
+    basisBand: Object.freeze(basisBand),
+    basisPoint: Object.freeze(basisPoint),
+    // Plot axes and frames drawn next to a figure.
+    axis: Object.freeze({ stroke: base.polygon, width: WIDTH.helper }),
+    plotBackground: Object.freeze({ fill: base.background }),
+    // A marker line at the current parameter (the colour of the point on the curve).
+    marker: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction }),
+    // The two halves of a subdivided curve: left solid, right dashed (never colour alone).
+    splitLeft: Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.split }),
+    splitRight: Object.freeze({ stroke: HUES.reddishPurple, width: WIDTH.split, dash: SPLIT_DASH }),
+    splitLeftPoint: Object.freeze({ fill: HUES.bluishGreen, stroke: base.background, width: 1, radius: RADIUS.splitPoint }),
+    splitRightPoint: Object.freeze({ fill: HUES.reddishPurple, stroke: base.background, width: 1, radius: RADIUS.splitPoint }),
+    // A stretch of the curve singled out (a segment, a span): a wide translucent band under it.
+    highlightBand: Object.freeze({ stroke: HUES.blue, width: WIDTH.highlightBand, strokeAlpha: 0.25, join: "round", cap: "round" }),
+    // Curves compared in one figure: blue solid, bluish green dashed, reddish purple dotted.
+    compareCurve: Object.freeze(
+      [HUES.blue, HUES.bluishGreen, HUES.reddishPurple].map((colour, i) =>
+        Object.freeze({ stroke: colour, width: WIDTH.curve, join: "round", cap: i === 1 ? "butt" : "round", ...(COMPARE_DASH[i] ? { dash: COMPARE_DASH[i] } : {}) })),
+    ),
+    comparePoint: Object.freeze(
+      [HUES.blue, HUES.bluishGreen, HUES.reddishPurple].map((colour) => Object.freeze({ fill: colour, stroke: base.background, width: 1, radius: RADIUS.splitPoint }))),
   });
 }
 

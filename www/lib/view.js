@@ -28,6 +28,9 @@ const WHEEL_SETTLE_MS = 250;
 /** Window coordinates stored in state keep this many significant digits (compact links). */
 const WINDOW_DIGITS = 6;
 
+/** No canvas area reserved outside the world window (see the `insets` option). */
+const NO_INSETS = Object.freeze([0, 0, 0, 0]);
+
 /** Rounds to `WINDOW_DIGITS` significant digits. */
 function roundWindowValue(value) {
   return Number(value.toPrecision(WINDOW_DIGITS));
@@ -43,9 +46,14 @@ export class View {
    * @param {string} [options.label] accessible name of the figure.
    * @param {boolean} [options.wheelNeedsModifier] true in embeds: plain wheel scrolls the page,
    *   Ctrl/⌘ + wheel (and trackpad pinch) zooms.
+   * @param {(width: number, height: number) => number[]} [options.insets] CSS px of the canvas
+   *   kept free of the world window, `[top, right, bottom, left]`, for a canvas of width ×
+   *   height (e.g. a plot drawn in screen space below the figure); the window is shown whole
+   *   and centred in the rest. Default: none.
    */
-  constructor(host, { draw, bounds = null, onWindowChange = null, label = "", wheelNeedsModifier = false }) {
+  constructor(host, { draw, bounds = null, onWindowChange = null, label = "", wheelNeedsModifier = false, insets = null }) {
     this.host = host;
+    this.insets = insets;
     this.drawFigure = draw;
     this.bounds = bounds;
     this.onWindowChange = onWindowChange;
@@ -143,11 +151,12 @@ export class View {
 
   /** Computes the transform for a canvas of w × h CSS px. */
   _layout(w, h) {
-    const width = w || 1;
-    const height = h || 1;
+    const [top, right, bottom, left] = this.insets?.(w || 1, h || 1) ?? NO_INSETS;
+    const width = Math.max(1, (w || 1) - left - right);
+    const height = Math.max(1, (h || 1) - top - bottom);
     this._scale = Math.min(width / (2 * this._hw), height / (2 * this._hh));
-    this._ox = width / 2 - this._cx * this._scale;
-    this._oy = height / 2 + this._cy * this._scale;
+    this._ox = left + width / 2 - this._cx * this._scale;
+    this._oy = top + height / 2 + this._cy * this._scale;
   }
 
   // ---------------------------------------------------------------- drawing

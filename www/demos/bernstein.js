@@ -1,0 +1,862 @@
+/**
+ * Demo 2 (syllabus §2): the Bernstein basis. A Bézier curve on top, and below it, in the same
+ * canvas (so SVG/PNG exports hold both), the plot of every B_i^n on t ∈ [0, 1], each in the
+ * colour of its control point. A marker at t lists the weights B_i^n(t) and their sum (= 1);
+ * hovering a basis function (in the plot or the table) or selecting a control point shows where
+ * that point acts most: the single maximum of B_i^n at t = i/n and the curve point P(i/n).
+ *
+ * Same habits as the reference demo (de-casteljau.js): the curve lives in wasm and is updated in
+ * place while dragging, the plot comes from one `bernsteinBasis(n, count)` call per degree, the
+ * curve from one `sampleUniform` per change, weights from `bernstein(n, i, t)`; the draw path
+ * allocates nothing and replaced wasm objects are freed.
+ */
+import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { FormulaPanel } from "../lib/formula.js";
+import { slider, button, group, el } from "../lib/controls.js";
+import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
+import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import { CYCLE } from "../lib/theme.js";
+import { t } from "../lib/strings.js";
+
+export const id = "bernstein";
+/** Prefix of this demo's keys in strings.js. */
+export const strings = "bernstein";
+export const title = t("bernstein.title");
+export const summary = t("bernstein.summary");
+/** Syllabus section. */
+export const section = 2;
+
+/** The worked example of the Greek notes (syllabus §2) at t = 1/4: weights 27/64, 27/64, 9/64, 1/64. */
+export const defaultState = Object.freeze({
+  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  t: 0.25,
+});
+
+/** Fewest and most control points (degree 1 … 10). */
+export const MIN_POINTS = 2;
+export const MAX_POINTS = 11;
+/**
+ * Samples along the curve and along each basis function: the same count, so sample k of both
+ * is at the same t = k / (SAMPLES − 1) (the highlighted band on the curve uses that).
+ */
+const SAMPLES = 201;
+/** Fitting leaves this fraction of the height free above and below for the handles' labels (the curve area is short). */
+const LABEL_ROOM = 0.08;
+/** Animation speed in t per second, and the step of the step buttons (ui.md). */
+const PLAY_SPEED = 0.25;
+const STEP = 1 / 16;
+/** Slider resolution for t. */
+const T_SLIDER_STEP = 0.001;
+/** Slack when snapping t to the step grid, so 0.25 counts as on the grid. */
+const GRID_SLACK = 1e-9;
+/** A new point appended after the last goes this fraction of the last leg further on. */
+const APPEND_FRACTION = 0.5;
+
+/**
+ * The plot takes this fraction of the canvas height, below the curve; at least PLOT_MIN_PX,
+ * but never more than PLOT_FRACTION_SHORT of a short canvas (gallery thumbnails).
+ */
+const PLOT_FRACTION = 0.4;
+const PLOT_MIN_PX = 150;
+const PLOT_FRACTION_SHORT = 0.55;
+/** Margins of the plot frame inside its strip, CSS px at scale 1 (labels live there). */
+const PLOT_MARGIN = Object.freeze({ top: 30, right: 22, bottom: 34, left: 40 });
+/** Tick labels i/n on the t axis only while they are at least this far apart (CSS px). */
+const TICK_LABEL_MIN_GAP = 34;
+/** Curve names B_i^n are written at the peaks up to this degree (beyond, they crowd). */
+const NAME_LABELS_MAX_DEGREE = 6;
+/** A pointer this close (CSS px, vertically) to a basis curve highlights it. */
+const PLOT_HOVER_PX = 14;
+/** Dragging t in the plot snaps to a tick i/n within this many CSS px. */
+const TICK_SNAP_PX = 5;
+/** The band on the curve marks where the highlighted B_i^n is at least this fraction of its maximum. */
+const BAND_FRACTION = 0.5;
+/** Sums in the formula panel switch from fractions to decimals beyond this common denominator. */
+const FORMULA_MAX_DENOMINATOR = 4096;
+/** Length of a tick mark on the axes, CSS px. */
+const TICK_PX = 5;
+
+/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
+export function validate(state) {
+  checkObject(state, ["points", "t"]);
+  checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
+  checkNumber(state, "t", { min: 0, max: 1 });
+}
+
+/** "cubic", "quartic", … for degree n. */
+function kindOf(n) {
+  return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
+}
+
+/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
+function flatten(points) {
+  const flat = new Float64Array(points.length * 2);
+  points.forEach(([x, y], i) => {
+    flat[2 * i] = x;
+    flat[2 * i + 1] = y;
+  });
+  return flat;
+}
+
+/** Binomial coefficient C(n, i), for the formula panel only (the weights come from the core). */
+function binomial(n, i) {
+  let c = 1;
+  for (let k = 1; k <= i; k++) c = (c * (n - i + k)) / k;
+  return Math.round(c);
+}
+
+/**
+ * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
+ * `createFigure`, `preview`, `commit`, `status`.
+ */
+export function mount(container, initialState, ctx) {
+  const { sl } = ctx;
+  /** The state shown; mutated in place during drags and animation, committed as a copy. */
+  let work = structuredClone(initialState);
+  let curve = new sl.BezierCurve(flatten(work.points), 2);
+
+  // Derived data, recomputed only when the geometry, the degree or t changed.
+  let samples = null; // curve.sampleUniform(SAMPLES)
+  let basis = null; // sl.bernsteinBasis(n, SAMPLES), i-major
+  let basisDegree = -1;
+  let peakTs = null; // [0, 1/n, …, 1], made per degree
+  let peakPoints = null; // curve.sample(peakTs): P(i/n)
+  let point = null; // curve.evaluate(t)
+  let geometryDirty = true;
+  let tDirty = true;
+  const values = new Float64Array(MAX_POINTS); // B_i^n(t), from the core
+  const mirrored = new Float64Array(MAX_POINTS); // B_{n-i}^n(1 - t), from the core
+  const peakValues = new Float64Array(MAX_POINTS); // B_i^n(i/n), from the core
+  const pointScratch = new Float64Array(2);
+  const insetScratch = [0, 0, 0, 0];
+  const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0 }; // frame (CSS px) and the strip's top
+  const handleLabels = []; // "P₀" …
+  const basisNames = []; // "B₀³" … per (n, i)
+  const peakLabels = []; // "max at t = 1/3" per (n, i)
+  const peakPointLabels = []; // "P(1/3)" per (n, i)
+  const tickLabels = []; // "1/3" per (n, i)
+  let markerLabel = ""; // "t = 1/4", rebuilt when t changes
+
+  // What is highlighted: a basis curve under the pointer in the plot, a table row, or a handle.
+  let plotHover = -1;
+  let rowHover = -1;
+  let shownHighlight = -2; // the highlight the panels show (-2: not yet synced)
+
+  // ------------------------------------------------------------ figure
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points, LABEL_ROOM), insets });
+  // A taller figure than the default: the curve and the plot share it.
+  ctx.slots.figure.classList.add("sl-figure-tall");
+
+  // The plot claims its frame before the handles see the pointer (a handle hidden under the
+  // plot cannot be grabbed there; pan to reach it): press or drag there to set t.
+  let draggingT = false;
+  view.addInteractor({
+    pointerDown(event, x, y) {
+      if (!inPlot(x, y)) return false;
+      stop();
+      draggingT = true;
+      plotHover = basisAt(x, y);
+      setT(tAtPixel(x), false);
+      return true;
+    },
+    pointerMove(event, x) {
+      if (draggingT) setT(tAtPixel(x), false);
+    },
+    pointerUp(event, x) {
+      if (!draggingT) return;
+      draggingT = false;
+      setT(tAtPixel(x), true);
+    },
+    hover(x, y) {
+      const inside = inPlot(x, y);
+      const i = inside ? basisAt(x, y) : -1;
+      if (inside) handles.leave(); // the pointer left the handles' area
+      if (i !== plotHover) {
+        plotHover = i;
+        view.requestDraw();
+      }
+      return inside ? "col-resize" : null;
+    },
+    leave() {
+      if (plotHover >= 0) {
+        plotHover = -1;
+        view.requestDraw();
+      }
+    },
+  });
+
+  const handles = new Handles(view, {
+    count: () => work.points.length,
+    get: (i, out) => {
+      out[0] = work.points[i][0];
+      out[1] = work.points[i][1];
+    },
+    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
+    move: (i, x, y) => {
+      work.points[i][0] = x;
+      work.points[i][1] = y;
+      pointScratch[0] = x;
+      pointScratch[1] = y;
+      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+      geometryDirty = true;
+    },
+    commit: (kind, i, merge) => commitWork(merge),
+    add: (i) => addPoint(i),
+    remove: (i) => removePoint(i),
+  });
+
+  /** The canvas strip below the world window: [top, right, bottom, left] (scratch, no allocation). */
+  function insets(width, height) {
+    insetScratch[2] = plotHeight(height);
+    return insetScratch;
+  }
+
+  /** Height of the plot strip: PLOT_FRACTION of the canvas, at least PLOT_MIN_PX while that leaves the curve half. */
+  function plotHeight(height) {
+    return Math.max(Math.round(height * PLOT_FRACTION), Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)));
+  }
+
+  /** Lays out the plot frame for a canvas of width × height CSS px at text scale `scale`. */
+  function layoutPlot(width, height, scale) {
+    plot.top = height - plotHeight(height);
+    plot.x0 = PLOT_MARGIN.left * scale;
+    plot.x1 = width - PLOT_MARGIN.right * scale;
+    plot.y0 = height - PLOT_MARGIN.bottom * scale; // value 0 (y down on screen)
+    plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value 1
+  }
+
+  const px = (tValue) => plot.x0 + tValue * (plot.x1 - plot.x0);
+  const py = (value) => plot.y0 - value * (plot.y0 - plot.y1);
+
+  function inPlot(x, y) {
+    layoutPlot(view.width, view.height, view.renderer.scale);
+    return x >= plot.x0 - TICK_SNAP_PX && x <= plot.x1 + TICK_SNAP_PX && y >= plot.y1 - TICK_SNAP_PX && y <= plot.y0 + TICK_SNAP_PX;
+  }
+
+  /** t under canvas x in the plot: snapped to a tick i/n nearby, else to the slider's step. */
+  function tAtPixel(x) {
+    layoutPlot(view.width, view.height, view.renderer.scale);
+    const n = work.points.length - 1;
+    const raw = Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
+    const tick = Math.round(raw * n);
+    if (Math.abs(px(tick / n) - x) <= TICK_SNAP_PX) return tick / n;
+    return Number((Math.round(raw / T_SLIDER_STEP) * T_SLIDER_STEP).toFixed(3));
+  }
+
+  /** The basis function whose graph passes nearest (vertically) to canvas point (x, y), or -1. */
+  function basisAt(x, y) {
+    if (!basis) return -1;
+    const n = work.points.length - 1;
+    const raw = Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
+    const k = Math.round(raw * (SAMPLES - 1));
+    let best = -1;
+    let bestDistance = PLOT_HOVER_PX;
+    for (let i = 0; i <= n; i++) {
+      const d = Math.abs(py(basis[i * SAMPLES + k]) - y);
+      if (d <= bestDistance) {
+        best = i;
+        bestDistance = d;
+      }
+    }
+    return best;
+  }
+
+  /** The highlighted basis function: plot hover, then table row, then the handle in hand, hovered or selected. */
+  function highlighted() {
+    if (plotHover >= 0) return plotHover;
+    if (rowHover >= 0) return rowHover;
+    if (handles.dragging >= 0) return handles.dragging;
+    if (handles.hovered >= 0) return handles.hovered;
+    return handles.selected;
+  }
+
+  // ------------------------------------------------------------ side panel
+  const tSlider = slider({
+    label: t("control.t"),
+    inputLabel: t("control.t.input"),
+    name: "t",
+    min: 0,
+    max: 1,
+    step: T_SLIDER_STEP,
+    value: work.t,
+    onChange: (value, final) => {
+      stop();
+      setT(value, final);
+    },
+    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
+  });
+  const playButton = button({ label: t("control.play"), name: "play", pressed: false, onClick: () => toggle() });
+  const backButton = button({ label: t("control.stepBack"), title: t("control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
+  const forwardButton = button({ label: t("control.stepForward"), title: t("control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
+  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
+  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const sumText = el("p", { class: "sl-note", dataset: { info: "sum" } });
+  const peakText = el("p", { class: "sl-note", dataset: { info: "peak" }, "aria-live": "polite" });
+  ctx.slots.controls.append(
+    group(null, tSlider.element, el("div", { class: "sl-button-row" }, backButton, playButton, forwardButton), sumText),
+    group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
+    group(null, peakText),
+  );
+
+  // Space plays/pauses while the figure has focus.
+  const onFigureKey = (event) => {
+    if (event.key === " " && !event.ctrlKey && !event.metaKey) {
+      toggle();
+      event.preventDefault();
+    }
+  };
+  view.canvas.addEventListener("keydown", onFigureKey);
+
+  // ------------------------------------------------------------ formula and table (the legend)
+  const formula = new FormulaPanel(ctx.slots.formula);
+  const tableTitle = el("p", { class: "sl-table-title", id: `sl-bernstein-${Math.random().toString(36).slice(2, 8)}` });
+  const table = el("table", { class: "sl-table", dataset: { table: "bernstein" }, "aria-labelledby": tableTitle.id });
+  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  let tableDegree = -1;
+  let tableRows = []; // per i: { row, value, valueDecimal, mirror, mirrorDecimal, peak }
+  let sumCells = null;
+
+  // ------------------------------------------------------------ animation
+  let playing = false;
+  let lastTime = 0;
+  let frameId = 0;
+  const tick = (now) => {
+    if (!playing) return;
+    const dt = Math.max(0, now - lastTime) / 1000; // the first frame may precede play()
+    lastTime = now;
+    const next = Math.min(1, work.t + PLAY_SPEED * dt);
+    setT(next, false);
+    if (next >= 1) stop();
+    else frameId = requestAnimationFrame(tick);
+  };
+
+  function play() {
+    if (playing) return;
+    if (work.t >= 1) setT(0, false);
+    playing = true;
+    playButton.textContent = t("control.pause");
+    playButton.setAttribute("aria-pressed", "true");
+    lastTime = performance.now();
+    frameId = requestAnimationFrame(tick);
+  }
+
+  /** Stops the animation and records where it stopped. */
+  function stop() {
+    if (!playing) return;
+    playing = false;
+    cancelAnimationFrame(frameId);
+    playButton.textContent = t("control.play");
+    playButton.setAttribute("aria-pressed", "false");
+    commitWork();
+  }
+
+  function toggle() {
+    if (playing) stop();
+    else play();
+  }
+
+  /** Moves t to the previous/next multiple of 1/16. */
+  function step(direction) {
+    stop();
+    const k = direction > 0 ? Math.floor(work.t / STEP + GRID_SLACK) + 1 : Math.ceil(work.t / STEP - GRID_SLACK) - 1;
+    setT(Math.min(1, Math.max(0, k * STEP)), true);
+  }
+
+  function setT(value, final) {
+    work.t = value;
+    tSlider.set(value);
+    tDirty = true;
+    view.requestDraw();
+    if (final) commitWork();
+  }
+
+  // ------------------------------------------------------------ edits
+  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
+  function commitWork(merge = null) {
+    ctx.commit(structuredClone(work), merge);
+  }
+
+  /** Replaces the wasm curve after the number of points changed (the old one is freed). */
+  function rebuild() {
+    const next = new sl.BezierCurve(flatten(work.points), 2);
+    curve.free();
+    curve = next;
+    geometryDirty = true;
+    view.requestDraw();
+  }
+
+  /** Adds a point after handle i (at the end when none is selected). */
+  function addPoint(i) {
+    const pts = work.points;
+    if (pts.length >= MAX_POINTS) {
+      ctx.status(t("bernstein.maxPoints", { max: MAX_POINTS }), "error");
+      return;
+    }
+    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
+    const a = pts[at];
+    const b = at + 1 < pts.length ? pts[at + 1] : null;
+    const prev = pts[at - 1] ?? a;
+    // Between two points: the middle of the leg; after the last: continue the last leg.
+    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
+    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
+    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    rebuild();
+    handles.select(at + 1);
+    commitWork();
+  }
+
+  /** Removes handle i (the last one when none is selected). */
+  function removePoint(i) {
+    const pts = work.points;
+    if (pts.length <= MIN_POINTS) {
+      ctx.status(t("bernstein.minPoints", { min: MIN_POINTS }), "error");
+      return;
+    }
+    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
+    pts.splice(at, 1);
+    rebuild();
+    handles.select(Math.min(at, pts.length - 1));
+    commitWork();
+  }
+
+  // ------------------------------------------------------------ core data
+  /** Asks the core for the samples, the basis and the weights when something changed. */
+  function recompute() {
+    const n = work.points.length - 1;
+    let changed = false;
+    if (basisDegree !== n) {
+      basis = sl.bernsteinBasis(n, SAMPLES); // one call: every B_i^n at SAMPLES t values
+      basisDegree = n;
+      const ts = new Float64Array(n + 1);
+      for (let i = 0; i <= n; i++) {
+        ts[i] = i / n;
+        peakValues[i] = sl.bernstein(n, i, i / n);
+      }
+      peakTs = ts;
+      geometryDirty = true;
+    }
+    if (geometryDirty) {
+      samples = curve.sampleUniform(SAMPLES);
+      peakPoints = curve.sample(peakTs); // P(i/n) for every i, one call
+    }
+    if (geometryDirty || tDirty) {
+      point = curve.evaluate(work.t);
+      for (let i = 0; i <= n; i++) {
+        values[i] = sl.bernstein(n, i, work.t);
+        mirrored[i] = sl.bernstein(n, n - i, 1 - work.t);
+      }
+      const f = simpleFraction(work.t);
+      markerLabel = t("bernstein.marker", { t: f ? fractionText(f) : fmt(work.t) });
+      changed = true;
+    }
+    geometryDirty = tDirty = false;
+    const hi = highlighted();
+    if (changed || hi !== shownHighlight) {
+      shownHighlight = hi;
+      syncPanels(hi);
+    }
+  }
+
+  // ------------------------------------------------------------ drawing
+  /** Draws the figure (screen, SVG and PNG exports all come through here). */
+  function draw(r, v) {
+    recompute();
+    const theme = r.theme;
+    const pts = work.points;
+    const n = pts.length - 1;
+    const hi = shownHighlight;
+    const cycle = theme.basisStroke.length;
+
+    // ---- the curve area (world window, above the plot)
+    r.beginPath();
+    for (let i = 0; i <= n; i++) {
+      const x = v.sx(pts[i][0]);
+      const y = v.sy(pts[i][1]);
+      if (i === 0) r.moveTo(x, y);
+      else r.lineTo(x, y);
+    }
+    r.paint(theme.polygon);
+
+    // Where the highlighted B_i^n is at least half its maximum: a band in its colour under the curve.
+    if (hi >= 0) {
+      const threshold = BAND_FRACTION * peakValues[hi];
+      const offset = hi * SAMPLES;
+      let open = false;
+      r.beginPath();
+      for (let k = 0; k < SAMPLES; k++) {
+        if (basis[offset + k] >= threshold) {
+          const x = v.sx(samples[2 * k]);
+          const y = v.sy(samples[2 * k + 1]);
+          if (open) r.lineTo(x, y);
+          else r.moveTo(x, y);
+          open = true;
+        } else {
+          open = false;
+        }
+      }
+      r.paint(theme.basisBand[hi % cycle]);
+    }
+
+    r.beginPath();
+    for (let k = 0; k < SAMPLES; k++) {
+      const x = v.sx(samples[2 * k]);
+      const y = v.sy(samples[2 * k + 1]);
+      if (k === 0) r.moveTo(x, y);
+      else r.lineTo(x, y);
+    }
+    r.paint(theme.curve);
+
+    // Every control point ringed in its basis function's colour.
+    for (let i = 0; i <= n; i++) r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
+
+    // The highlighted point's peak: P(i/n) on the curve, joined to P_i.
+    let peakX = 0;
+    let peakY = 0;
+    if (hi >= 0) {
+      peakX = v.sx(peakPoints[2 * hi]);
+      peakY = v.sy(peakPoints[2 * hi + 1]);
+      r.beginPath();
+      r.moveTo(v.sx(pts[hi][0]), v.sy(pts[hi][1]));
+      r.lineTo(peakX, peakY);
+      r.paint(theme.helper);
+    }
+
+    handles.draw(r, v);
+
+    const pointX = v.sx(point[0]);
+    const pointY = v.sy(point[1]);
+    r.point(pointX, pointY, theme.pointOnCurve);
+    labelAwayFromHull(r, v, t("bernstein.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
+    if (hi >= 0) {
+      r.point(peakX, peakY, theme.basisPoint[hi % cycle]);
+      labelAwayFromHull(r, v, peakPointLabel(n, hi), peakX, peakY, theme.labelBold, theme.basisPoint[0].radius * r.scale);
+    }
+
+    // ---- the plot strip (screen space, below the world window; covers anything panned into it)
+    const w = r.width;
+    const h = r.height;
+    layoutPlot(w, h, r.scale);
+    r.beginPath();
+    r.rect(0, plot.top, w, h - plot.top);
+    r.paint(theme.plotBackground);
+    r.beginPath();
+    r.moveTo(0, plot.top);
+    r.lineTo(w, plot.top);
+    r.paint(theme.axis);
+
+    // Axes: t from 0 to 1, value from 0 to 1, a dashed line at 1, ticks at i/n.
+    r.beginPath();
+    r.moveTo(plot.x0, plot.y1);
+    r.lineTo(plot.x0, plot.y0);
+    r.lineTo(plot.x1, plot.y0);
+    r.paint(theme.axis);
+    r.beginPath();
+    r.moveTo(plot.x0, plot.y1);
+    r.lineTo(plot.x1, plot.y1);
+    r.paint(theme.helper);
+    const tickGap = (plot.x1 - plot.x0) / n;
+    const labelEvery = Math.max(1, Math.ceil((TICK_LABEL_MIN_GAP * r.scale) / tickGap));
+    r.beginPath();
+    for (let i = 0; i <= n; i++) {
+      r.moveTo(px(i / n), plot.y0);
+      r.lineTo(px(i / n), plot.y0 + TICK_PX * r.scale);
+    }
+    r.paint(theme.axis);
+    for (let i = 0; i <= n; i++) {
+      // Every labelEvery-th tick and the last one (dropping a labelled tick too close to it).
+      if (i !== n && (i % labelEvery !== 0 || n - i < labelEvery)) continue;
+      r.text(tickLabel(n, i), px(i / n), plot.y0 + (TICK_PX + 2) * r.scale, theme.labelSmall, "center", "top");
+    }
+    r.text(t("bernstein.axisValue0"), plot.x0 - (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "right", "middle");
+    r.text(t("bernstein.axisValue1"), plot.x0 - (TICK_PX + 2) * r.scale, plot.y1, theme.labelSmall, "right", "middle");
+    r.text(t("bernstein.axisT"), plot.x1 + (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "left", "middle");
+
+    // The basis functions, from the core's table (highlighted one last, on top).
+    for (let i = 0; i <= n; i++) if (i !== hi) drawBasis(r, i, theme.basisStroke[i % cycle]);
+    if (hi >= 0) drawBasis(r, hi, theme.basisHover[hi % cycle]);
+
+    // Names at the peaks (B_0 at the left end, B_n at the right end).
+    if (n <= NAME_LABELS_MAX_DEGREE) {
+      for (let i = 0; i <= n; i++) {
+        const align = i === 0 ? "left" : i === n ? "right" : "center";
+        const x = px(i / n) + (i === 0 ? 4 : i === n ? -4 : 0) * r.scale;
+        r.text(basisName(n, i), x, py(peakValues[i]) - 5 * r.scale, i === hi ? theme.labelBold : theme.labelSmall, align, "bottom");
+      }
+    }
+
+    // The highlighted function's maximum at t = i/n.
+    if (hi >= 0) {
+      const x = px(hi / n);
+      const y = py(peakValues[hi]);
+      r.beginPath();
+      r.moveTo(x, y);
+      r.lineTo(x, plot.y0);
+      r.paint(theme.helper);
+      r.point(x, y, theme.basisPoint[hi % cycle]);
+      const align = hi === 0 ? "left" : hi === n ? "right" : "center";
+      const dx = (hi === 0 ? 8 : hi === n ? -8 : 0) * r.scale;
+      r.text(peakLabel(n, hi), x + dx, (y + plot.y0) / 2, theme.labelBold, align, "middle");
+    }
+
+    // The marker at t, with the weights B_i^n(t) as dots.
+    const mx = px(work.t);
+    r.beginPath();
+    r.moveTo(mx, plot.y1 - 2 * r.scale);
+    r.lineTo(mx, plot.y0);
+    r.paint(theme.marker);
+    for (let i = 0; i <= n; i++) r.point(mx, py(values[i]), theme.basisPoint[i % cycle]);
+    const markerAlign = work.t < 0.1 ? "left" : work.t > 0.9 ? "right" : "center";
+    r.text(markerLabel, mx, plot.y1 - 4 * r.scale, theme.labelPoint, markerAlign, "bottom");
+  }
+
+  /** One basis function's graph from the core's samples. */
+  function drawBasis(r, i, style) {
+    const offset = i * SAMPLES;
+    r.beginPath();
+    for (let k = 0; k < SAMPLES; k++) {
+      const x = px(k / (SAMPLES - 1));
+      const y = py(basis[offset + k]);
+      if (k === 0) r.moveTo(x, y);
+      else r.lineTo(x, y);
+    }
+    r.paint(style);
+  }
+
+  /** Labels a point of the curve on the side away from the control points' centroid. */
+  function labelAwayFromHull(r, v, text, x, y, style, radius) {
+    const pts = work.points;
+    let cx = 0;
+    let cy = 0;
+    for (let i = 0; i < pts.length; i++) {
+      cx += v.sx(pts[i][0]);
+      cy += v.sy(pts[i][1]);
+    }
+    cx /= pts.length;
+    cy /= pts.length;
+    let dx = x - cx;
+    let dy = y - cy;
+    const length = Math.hypot(dx, dy);
+    if (length < 1) {
+      dx = -Math.SQRT1_2;
+      dy = -Math.SQRT1_2;
+    } else {
+      dx /= length;
+      dy /= length;
+    }
+    placeLabel(r, text, x, y, dx, dy, radius, style);
+  }
+
+  /** Cached label strings, keyed by (n, i). */
+  const key = (n, i) => n * (MAX_POINTS + 1) + i;
+  function basisName(n, i) {
+    return (basisNames[key(n, i)] ??= `B${subscript(i)}${superscript(n)}`);
+  }
+  function tickLabel(n, i) {
+    return (tickLabels[key(n, i)] ??= fractionText(exactFraction(i / n, n)));
+  }
+  function peakLabel(n, i) {
+    return (peakLabels[key(n, i)] ??= t("bernstein.peakLabel", { t: tickLabel(n, i) }));
+  }
+  function peakPointLabel(n, i) {
+    return (peakPointLabels[key(n, i)] ??= t("bernstein.peakPointLabel", { t: tickLabel(n, i) }));
+  }
+
+  // ------------------------------------------------------------ panels (formula, table, notes, label)
+  function syncPanels(hi) {
+    const pts = work.points;
+    const n = pts.length - 1;
+    degreeText.textContent = t("bernstein.degree", { n, count: n + 1 });
+    addButton.disabled = n + 1 >= MAX_POINTS;
+    removeButton.disabled = n + 1 <= MIN_POINTS;
+
+    // Exact fractions when t is a simple fraction: B_i^n(t) is then k / den^n. The point needs
+    // integer control points too.
+    const tFraction = simpleFraction(work.t);
+    const weightDen = tFraction ? tFraction.den ** n : 0;
+    const exactPoints = tFraction && allIntegers(pts.flat());
+    const tTex = tFraction ? fractionTex(tFraction) : fmt(work.t);
+    const tText = tFraction ? fractionText(tFraction) : fmt(work.t);
+    const weight = (value, tex) => {
+      const f = tFraction ? exactFraction(value, weightDen) : null;
+      if (!f) return fmt(value);
+      return tex ? fractionTex(f) : fractionText(f);
+    };
+    const coordinate = (value, den, tex) => {
+      const f = den ? exactFraction(value, den) : null;
+      if (!f) return fmt(value);
+      return tex ? fractionTex(f) : fractionText(f);
+    };
+    let sum = 0;
+    for (let i = 0; i <= n; i++) sum += values[i];
+
+    // Formula panel: the definition, one function with its numbers, the sum, the curve point.
+    const oneMinusTex = tFraction ? fractionTex({ num: tFraction.den - tFraction.num, den: tFraction.den }) : fmt(1 - work.t);
+    // The highlighted function, else the one whose maximum i/n lies nearest t.
+    const focus = hi >= 0 ? hi : Math.round(work.t * n);
+    const terms = [];
+    const weighted = [];
+    // Long sums read better in decimals once the common denominator grows large (the table keeps fractions).
+    const compact = weightDen > FORMULA_MAX_DENOMINATOR;
+    for (let i = 0; i <= n; i++) {
+      const w = compact ? fmt(values[i]) : weight(values[i], true);
+      terms.push(w);
+      weighted.push(`${w}\\,P_{${i}}`);
+    }
+    const pointDen = exactPoints && !compact ? weightDen : 0;
+    const pointTex = `\\left(${coordinate(point[0], pointDen, true)},\\ ${coordinate(point[1], pointDen, true)}\\right)`;
+    const approx = pointDen && (!Number.isInteger(point[0]) || !Number.isInteger(point[1])) ? `\\approx (${fmt(point[0])},\\ ${fmt(point[1])})` : "";
+    const peakT = fractionTex(exactFraction(focus / n, n));
+    // t^i and (1 − t)^(n−i) written out (exact when t is a simple fraction): display only.
+    const power = (num, den, k) => (tFraction ? fractionTex({ num: num ** k, den: den ** k }) : fmt((num / den) ** k));
+    const tPower = tFraction ? power(tFraction.num, tFraction.den, focus) : power(work.t, 1, focus);
+    const sPower = tFraction ? power(tFraction.den - tFraction.num, tFraction.den, n - focus) : power(1 - work.t, 1, n - focus);
+    formula.set([
+      `B_i^{${n}}(t) = \\binom{${n}}{i}\\, t^{i}\\,(1-t)^{${n}-i},\\qquad \\max_{[0,1]} B_i^{${n}} = B_i^{${n}}\\!\\left(\\tfrac{i}{${n}}\\right),\\qquad t = ${tTex}`,
+      `B_{${focus}}^{${n}}(${tTex}) = \\binom{${n}}{${focus}} \\left(${tTex}\\right)^{${focus}} \\left(${oneMinusTex}\\right)^{${n - focus}} = ${binomial(n, focus)} \\cdot ${tPower} \\cdot ${sPower} = ${weight(values[focus], true)},\\qquad \\text{${t("bernstein.formulaPeak")}}\\ t = ${peakT}`,
+      `\\sum_{i=0}^{${n}} B_i^{${n}}(${tTex}) = ${terms.join(" + ")} = ${weight(sum, true)}`,
+      `P(${tTex}) = \\sum_{i=0}^{${n}} B_i^{${n}}(${tTex})\\,P_i = ${weighted.join(" + ")} = ${pointTex} ${approx}`,
+    ]);
+
+    // Table: one row per basis function (the legend), then the sum.
+    if (tableDegree !== n) buildTable(n);
+    setText(tableTitle, t("bernstein.tableCaption", { n, t: tText }));
+    const valueTexts = [];
+    for (let i = 0; i <= n; i++) {
+      const cells = tableRows[i];
+      const exact = weight(values[i], false);
+      const decimal = fmt(values[i]);
+      setText(cells.value, exact);
+      setText(cells.valueDecimal, exact === decimal ? "" : `≈ ${decimal}`);
+      const mirrorExact = weight(mirrored[i], false);
+      const mirrorDecimal = fmt(mirrored[i]);
+      setText(cells.mirror, mirrorExact);
+      setText(cells.mirrorDecimal, mirrorExact === mirrorDecimal ? "" : `≈ ${mirrorDecimal}`);
+      cells.row.classList.toggle("sl-highlight", i === hi);
+      valueTexts.push(fmt(values[i]));
+    }
+    const sumExact = weight(sum, false);
+    setText(sumCells.value, sumExact);
+    setText(sumCells.valueDecimal, sumExact === fmt(sum) || /^\d+$/.test(sumExact) ? "" : `≈ ${fmt(sum)}`);
+    setText(sumText, t("bernstein.sumNote", { count: n + 1, t: tText, sum: sumExact }));
+
+    // Where the highlighted function acts most.
+    let ariaPeak = "";
+    if (hi >= 0) {
+      const peakDen = exactPoints ? n ** n : 0;
+      const x = coordinate(peakPoints[2 * hi], peakDen, false);
+      const y = coordinate(peakPoints[2 * hi + 1], peakDen, false);
+      setText(peakText, t("bernstein.peakNote", { b: basisName(n, hi), p: handleLabels[hi] ?? `P${subscript(hi)}`, t: tickLabel(n, hi), x, y }));
+      ariaPeak = t("bernstein.ariaPeak", { b: basisName(n, hi), t: tickLabel(n, hi), x: fmt(peakPoints[2 * hi], 2), y: fmt(peakPoints[2 * hi + 1], 2) });
+    } else {
+      setText(peakText, t("bernstein.peakHint"));
+    }
+    view.setLabel(
+      t("bernstein.aria", { kind: kindOf(n), count: n + 1, n, t: fmt(work.t), values: valueTexts.join(", "), sum: fmt(sum), x: fmt(point[0], 2), y: fmt(point[1], 2) }) + ariaPeak,
+    );
+  }
+
+  /** Rebuilds the table's rows for degree n (only when the degree changed). */
+  function buildTable(n) {
+    tableDegree = n;
+    tableRows = [];
+    const head = el("tr", {},
+      el("th", { scope: "col", text: t("bernstein.colFunction") }),
+      el("th", { scope: "col", text: t("bernstein.colValue") }),
+      el("th", { scope: "col", text: t("bernstein.colMirror") }),
+      el("th", { scope: "col", text: t("bernstein.colPeak") }));
+    const rows = [];
+    for (let i = 0; i <= n; i++) {
+      const cells = {
+        value: el("span", { class: "sl-cell-value" }),
+        valueDecimal: el("span", { class: "sl-cell-decimal" }),
+        mirror: el("span", { class: "sl-cell-value" }),
+        mirrorDecimal: el("span", { class: "sl-cell-decimal" }),
+      };
+      const peakValue = exactFraction(peakValues[i], n ** n) ?? exactFraction(peakValues[i], 1);
+      const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
+      swatch.style.background = CYCLE[i % CYCLE.length];
+      const row = el("tr", { tabindex: "0", dataset: { index: String(i) } },
+        el("th", { scope: "row" }, swatch, t("bernstein.rowName", { b: basisName(n, i), p: `P${subscript(i)}` })),
+        el("td", { dataset: { cell: "value" } }, cells.value, cells.valueDecimal),
+        el("td", { dataset: { cell: "mirror" } }, cells.mirror, cells.mirrorDecimal),
+        el("td", { dataset: { cell: "peak" }, text: t("bernstein.peakCell", { t: tickLabel(n, i), value: peakValue ? fractionText(peakValue) : fmt(peakValues[i]) }) }));
+      const enter = () => setRowHover(i);
+      const leave = () => setRowHover(-1);
+      row.addEventListener("pointerenter", enter);
+      row.addEventListener("pointerleave", leave);
+      row.addEventListener("focus", enter);
+      row.addEventListener("blur", leave);
+      cells.row = row;
+      tableRows.push(cells);
+      rows.push(row);
+    }
+    sumCells = { value: el("span", { class: "sl-cell-value" }), valueDecimal: el("span", { class: "sl-cell-decimal" }) };
+    rows.push(el("tr", { dataset: { index: "sum" } },
+      el("th", { scope: "row", text: t("bernstein.sumRow") }),
+      el("td", { dataset: { cell: "value" } }, sumCells.value, sumCells.valueDecimal),
+      el("td", {}),
+      el("td", {})));
+    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
+  }
+
+  function setRowHover(i) {
+    if (rowHover === i) return;
+    rowHover = i;
+    view.requestDraw();
+  }
+
+  /** Sets a node's text only when it changed (no layout work for identical text). */
+  function setText(node, text) {
+    if (node.textContent !== text) node.textContent = text;
+  }
+
+  recompute();
+
+  // ------------------------------------------------------------ contract
+  return {
+    /** Shows a validated state from outside (undo, reset, link, import). */
+    update(state) {
+      const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
+      stop();
+      curve.free();
+      curve = next;
+      work = structuredClone(state);
+      handles.forgetPointer();
+      if (handles.selected >= work.points.length) handles.select(-1);
+      plotHover = rowHover = -1;
+      draggingT = false;
+      tSlider.set(work.t);
+      geometryDirty = tDirty = true;
+      view.requestDraw();
+      recompute();
+    },
+    destroy() {
+      playing = false;
+      cancelAnimationFrame(frameId);
+      view.canvas.removeEventListener("keydown", onFigureKey);
+      handles.destroy();
+      formula.destroy();
+      curve.free();
+    },
+  };
+}
+
+/**
+ * [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull), taller by
+ * `room` × the height above and below.
+ */
+function boundsOf(points, room = 0) {
+  let x0 = Infinity;
+  let y0 = Infinity;
+  let x1 = -Infinity;
+  let y1 = -Infinity;
+  for (const [x, y] of points) {
+    x0 = Math.min(x0, x);
+    y0 = Math.min(y0, y);
+    x1 = Math.max(x1, x);
+    y1 = Math.max(y1, y);
+  }
+  const pad = room * (y1 - y0);
+  return [x0, y0 - pad, x1, y1 + pad];
+}
