@@ -11,9 +11,16 @@ import * as lineIntersection from "./line-intersection.js";
 import * as joining from "./joining.js";
 import * as bezierProperties from "./bezier-properties.js";
 import * as derivatives from "./derivatives.js";
+import * as bsplineBasis from "./bspline-basis.js";
+import * as deBoor from "./de-boor.js";
+import * as knotVectors from "./knot-vectors.js";
+import * as localControl from "./local-control.js";
+import * as knotInsertion from "./knot-insertion.js";
+import * as multiplicity from "./multiplicity.js";
+import * as matrixForm from "./matrix-form.js";
 
 /** All demos, in the order the gallery shows them within their section. */
-export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives];
+export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives, bsplineBasis, deBoor, knotVectors, localControl, knotInsertion, multiplicity, matrixForm];
 
 /** The demo with this id, or undefined. */
 export function findDemo(id) {
