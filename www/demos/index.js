@@ -18,9 +18,14 @@ import * as localControl from "./local-control.js";
 import * as knotInsertion from "./knot-insertion.js";
 import * as multiplicity from "./multiplicity.js";
 import * as matrixForm from "./matrix-form.js";
+import * as weights from "./weights.js";
+import * as conics from "./conics.js";
+import * as nurbsCircle from "./nurbs-circle.js";
+import * as projective from "./projective.js";
+import * as negativeWeights from "./negative-weights.js";
 
 /** All demos, in the order the gallery shows them within their section. */
-export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives, bsplineBasis, deBoor, knotVectors, localControl, knotInsertion, multiplicity, matrixForm];
+export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives, bsplineBasis, deBoor, knotVectors, localControl, knotInsertion, multiplicity, matrixForm, weights, conics, nurbsCircle, projective, negativeWeights];
 
 /** The demo with this id, or undefined. */
 export function findDemo(id) {
