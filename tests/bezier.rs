@@ -886,3 +886,42 @@ fn composite_curves_use_the_global_parameter_and_report_each_joint() {
     assert!(bezier::CompositeCurve::new(vec![piece(0.0)], &[0.0]).is_err());
     assert!(c.evaluate(3.5).unwrap_err().to_string().contains("[0, 3]"));
 }
+
+#[test]
+fn batched_arc_lengths_equal_the_single_ones() {
+    let mut rng = Rng::new(41);
+    let curves: Vec<Vec<DVec2>> = (0..30).map(|_| random_curve(&mut rng, 3)).collect();
+    let flat: Vec<f64> = curves.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
+    let batch = bezier::arc_lengths::<DVec2>(&flat, 3, None).unwrap();
+    for (c, l) in curves.iter().zip(&batch) {
+        assert_eq!(
+            *l,
+            BezierCurve::new(c.clone(), None)
+                .unwrap()
+                .arc_length(None)
+                .unwrap()
+        );
+    }
+    assert!(bezier::arc_lengths::<DVec2>(&flat[..7], 3, None)
+        .unwrap_err()
+        .to_string()
+        .contains("do not split"));
+}
+
+#[test]
+fn arc_length_of_a_cusp_away_from_dyadic_points() {
+    // (t², t³) on [−1, 2]: the cusp sits at s = 1/3. ∫|t|√(4 + 9t²) dt = ((13^{3/2} − 8) + (40^{3/2} − 8))/27.
+    let cusp = bezier::from_polynomial(
+        &pts2(&[(0.0, 0.0), (0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]),
+        -1.0,
+        2.0,
+    )
+    .unwrap();
+    let exact = (13f64.powf(1.5) - 8.0 + 40f64.powf(1.5) - 8.0) / 27.0;
+    assert_close(
+        cusp.arc_length(None).unwrap(),
+        exact,
+        1e-12 * exact,
+        "cusp at s = 1/3",
+    );
+}

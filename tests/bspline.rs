@@ -746,3 +746,33 @@ fn repeated_control_points_keep_c2_but_a_triple_point_makes_a_corner() {
     let joints = measure(base);
     assert!(joints.iter().all(|k| k.c >= 2 && k.g == 2), "{joints:?}");
 }
+
+#[test]
+fn dense_derivatives_equal_the_pointwise_derivative() {
+    let mut rng = Rng::new(37);
+    for case in 0..24 {
+        let p = 1 + case % 4;
+        let count = p + 2 + case % 5;
+        let knots = random_knots(&mut rng, count, p, case % 2 == 0);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let w: Vec<f64> = (0..count).map(|_| rng.range(0.5, 2.0)).collect();
+        let c =
+            BSplineCurve::new(pts, p, knots, if case % 3 == 0 { None } else { Some(&w) }).unwrap();
+        let (a, b) = c.domain();
+        let us: Vec<f64> = (0..=60).map(|k| a + (b - a) * k as f64 / 60.0).collect();
+        for order in 0..=3 {
+            let mut out = vec![0.0; us.len() * 2];
+            c.sample_derivatives_into(&us, order, &mut out).unwrap();
+            for (k, &u) in us.iter().enumerate() {
+                let e = c.derivative(u, order).unwrap();
+                let got = DVec2::new(out[2 * k], out[2 * k + 1]);
+                assert_close2(
+                    got,
+                    e,
+                    1e-9 * (1.0 + e.length()),
+                    &format!("case {case} order {order} u = {u}"),
+                );
+            }
+        }
+    }
+}

@@ -23,6 +23,7 @@ mod derivative;
 mod flatten;
 mod intersect;
 
+pub use arc_length::arc_lengths;
 pub use composite::{
     check_continuity, from_polynomial, join, CompositeCurve, Continuity, JoinRule,
 };

@@ -299,6 +299,84 @@ impl<C: Cartesian> BSplineCurve<C> {
         ))
     }
 
+    /// The control points of the derivative curves of the homogeneous curve, orders
+    /// `0..=order` (NURBS Book eq. 3.8): `P^(k)_i = (p − k + 1)/(u_{i+p+1} − u_{i+k})
+    /// (P^(k−1)_{i+1} − P^(k−1)_i)`; the `k`-th is a B-spline of degree `p − k` whose value at `u`
+    /// is `Σ_j N_{s−p+k+j, p−k}(u) P^(k)_{s−p+j}` on the original knots (`s` the span of `u`).
+    fn derivative_points(&self, order: usize) -> Vec<Vec<C::Homogeneous>> {
+        let p = self.degree();
+        let u = self.knots.as_slice();
+        let mut out = vec![self.homogeneous.clone()];
+        for k in 1..=order.min(p) {
+            let prev = &out[k - 1];
+            let next = (0..prev.len() - 1)
+                .map(|i| {
+                    let d = u[i + p + 1] - u[i + k];
+                    if d == 0.0 {
+                        C::Homogeneous::ZERO
+                    } else {
+                        (prev[i + 1] - prev[i]) * ((p - k + 1) as f64 / d)
+                    }
+                })
+                .collect();
+            out.push(next);
+        }
+        out
+    }
+
+    /// Writes the derivative of order `order` at every `u` of `us` into `out` (point-major),
+    /// walking the spans once for sorted input: the derivative control points are computed
+    /// once, then each point costs `order + 1` basis evaluations and no allocation (the
+    /// quotient rule for rational curves runs on the stack).
+    ///
+    /// # Errors
+    /// A bad parameter, [`Error::TooLarge`] above [`MAX_DERIVATIVE_ORDER`], a wrong `out` length.
+    pub fn sample_derivatives_into(&self, us: &[f64], order: usize, out: &mut [f64]) -> Result<()> {
+        check_out_len(out.len(), us.len(), C::DIM)?;
+        if order > MAX_DERIVATIVE_ORDER {
+            return Err(Error::TooLarge {
+                what: "derivative order",
+                value: order,
+                max: MAX_DERIVATIVE_ORDER,
+            });
+        }
+        for &u in us {
+            self.knots.check_parameter(u)?;
+        }
+        let p = self.degree();
+        if !self.rational && order > p {
+            out.fill(0.0);
+            return Ok(());
+        }
+        let points = self.derivative_points(order);
+        let mut basis = vec![0.0; p + 1];
+        let mut scratch = BasisScratch::default();
+        let mut homogeneous = vec![C::Homogeneous::ZERO; order + 1];
+        let knots = self.knots.as_slice();
+        let mut s = p;
+        for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
+            s = self.knots.span_from(u, s);
+            for (k, h) in homogeneous.iter_mut().enumerate() {
+                *h = C::Homogeneous::ZERO;
+                if k > p {
+                    continue;
+                }
+                let q = p - k;
+                basis_functions(knots, s, u, q, &mut basis[..=q], &mut scratch, None);
+                for (j, &b) in basis[..=q].iter().enumerate() {
+                    *h = *h + points[k][s - p + j] * b;
+                }
+            }
+            let d = if self.rational {
+                rational_derivative::<C>(&homogeneous)
+            } else {
+                C::numerator(homogeneous[order])
+            };
+            d.write_to(o);
+        }
+        Ok(())
+    }
+
     /// `N_{i,p}(u)` for every `i = 0..=n` (zero outside the span's `p + 1`).
     pub fn basis(&self, u: f64) -> Result<Vec<f64>> {
         let u = self.knots.check_parameter(u)?;

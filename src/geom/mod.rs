@@ -190,11 +190,13 @@ impl Cartesian for DVec3 {
 /// The `k`-th derivative of a rational curve from the derivatives `A^(0..=k)` of its homogeneous
 /// curve (`k = homogeneous_derivs.len() − 1`), by the quotient rule
 /// `C^(k) = (A^(k) − Σ_{i=1..k} C(k,i) w^(i) C^(k−i)) / w` (NURBS Book eq. 4.8), where `A` is
-/// split into the numerator and the weight `w`. `homogeneous_derivs` must not be empty.
+/// split into the numerator and the weight `w`. `homogeneous_derivs` must not be empty; orders
+/// above [`MAX_DERIVATIVE_ORDER`] are not computed.
 pub fn rational_derivative<C: Cartesian>(homogeneous_derivs: &[C::Homogeneous]) -> C {
-    let order = homogeneous_derivs.len() - 1;
+    let order = (homogeneous_derivs.len() - 1).min(MAX_DERIVATIVE_ORDER);
     let w0 = C::weight_of(homogeneous_derivs[0]);
-    let mut cs: Vec<C> = Vec::with_capacity(order + 1);
+    // Lower orders on the stack: dense sampling calls this once per point.
+    let mut cs = [C::ZERO; MAX_DERIVATIVE_ORDER + 1];
     for k in 0..=order {
         let mut v = C::numerator(homogeneous_derivs[k]);
         let mut binom = 1.0;
@@ -202,7 +204,7 @@ pub fn rational_derivative<C: Cartesian>(homogeneous_derivs: &[C::Homogeneous]) 
             binom = binom * (k + 1 - i) as f64 / i as f64;
             v = v - cs[k - i] * (binom * C::weight_of(homogeneous_derivs[i]));
         }
-        cs.push(v * (1.0 / w0));
+        cs[k] = v * (1.0 / w0);
     }
     cs[order]
 }

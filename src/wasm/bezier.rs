@@ -420,6 +420,21 @@ fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
     Ok(())
 }
 
+/// `arcLengths(points, dim, degree, accuracy?)`: the arc lengths of many Bézier curves of one
+/// degree given back to back (`(degree + 1)·dim` numbers each), in one call.
+#[wasm_bindgen(js_name = arcLengths)]
+pub fn arc_lengths(
+    points: &[f64],
+    dim: usize,
+    degree: usize,
+    accuracy: Option<f64>,
+) -> Result<Vec<f64>, JsError> {
+    Ok(match check_dim(dim)? {
+        2 => bezier::arc_lengths::<DVec2>(points, degree, accuracy)?,
+        _ => bezier::arc_lengths::<DVec3>(points, degree, accuracy)?,
+    })
+}
+
 /// `bernsteinBasis(n, count)`: every `B_i^n` at `count` equally spaced t in [0, 1], i-major:
 /// value `k` of function `i` at index `i·count + k` ((n+1)·count numbers, for plotting).
 #[wasm_bindgen(js_name = bernsteinBasis)]

@@ -171,6 +171,15 @@ impl JsBSplineCurve {
         Ok(out)
     }
 
+    /// The derivative of the given order at every u of `us`, flat (us.length·dim numbers), in
+    /// one pass: the batched form of `derivative(u, order)`.
+    #[wasm_bindgen(js_name = sampleDerivatives)]
+    pub fn sample_derivatives(&self, us: &[f64], order: usize) -> Result<Vec<f64>, JsError> {
+        let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
+        with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
+        Ok(out)
+    }
+
     /// `count` points at equally spaced u over the domain, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
     pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
