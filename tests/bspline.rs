@@ -776,3 +776,34 @@ fn dense_derivatives_equal_the_pointwise_derivative() {
         }
     }
 }
+
+#[test]
+fn fast_dense_sampling_equals_the_pointwise_path_for_every_degree() {
+    let mut rng = Rng::new(43);
+    for case in 0..35 {
+        let p = 1 + case % 7; // degrees 1–5 use the unrolled kernels, 6–7 the generic path
+        let count = p + 1 + case % 6;
+        let knots = random_knots(&mut rng, count, p, case % 2 == 1);
+        let pts: Vec<DVec3> = (0..count).map(|_| rng.point3(5.0)).collect();
+        let w: Vec<f64> = (0..count).map(|_| rng.range(0.5, 2.0)).collect();
+        let c =
+            BSplineCurve::new(pts, p, knots, if case % 3 == 0 { None } else { Some(&w) }).unwrap();
+        let (a, b) = c.domain();
+        let us: Vec<f64> = (0..=97).map(|k| a + (b - a) * k as f64 / 97.0).collect();
+        let mut out = vec![0.0; us.len() * 3];
+        c.sample_into(&us, &mut out).unwrap();
+        let mut uniform = vec![0.0; us.len() * 3];
+        c.sample_uniform_into(us.len(), &mut uniform).unwrap();
+        for (k, &u) in us.iter().enumerate() {
+            let e = c.evaluate(u).unwrap();
+            let tol = 1e-12 * (1.0 + e.length());
+            assert_close3(
+                DVec3::from_slice(&out[3 * k..]),
+                e,
+                tol,
+                &format!("case {case}, p = {p}, u = {u}"),
+            );
+            assert_close3(DVec3::from_slice(&uniform[3 * k..]), e, tol, "uniform");
+        }
+    }
+}

@@ -22,6 +22,7 @@ mod de_boor;
 mod insert;
 mod knots;
 mod matrix;
+mod sample;
 
 pub use basis::{basis_derivatives, basis_functions, BasisScratch};
 pub use construct::{knot_vector, parameterize, phantom_points, KnotKind, Parameterization};
@@ -173,7 +174,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     }
 
     #[inline]
-    fn project(&self, h: C::Homogeneous) -> C {
+    pub(crate) fn project(&self, h: C::Homogeneous) -> C {
         if self.rational {
             C::project(h)
         } else {
@@ -217,14 +218,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         for &u in us {
             self.knots.check_parameter(u)?;
         }
-        let mut basis = vec![0.0; self.degree() + 1];
-        let mut scratch = BasisScratch::default();
-        let mut k = self.degree();
-        for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
-            k = self.knots.span_from(u, k);
-            self.evaluate_in_span(k, u, &mut basis, &mut scratch)
-                .write_to(o);
-        }
+        self.sample_params_into(us.iter().copied(), out);
         Ok(())
     }
 
@@ -237,19 +231,14 @@ impl<C: Cartesian> BSplineCurve<C> {
         } else {
             0.0
         };
-        let mut basis = vec![0.0; self.degree() + 1];
-        let mut scratch = BasisScratch::default();
-        let mut k = self.degree();
-        for (i, o) in out.chunks_exact_mut(C::DIM).enumerate() {
-            let u = if i + 1 == count {
+        let params = (0..count).map(|i| {
+            if i + 1 == count {
                 b
             } else {
                 a + step * i as f64
-            };
-            k = self.knots.span_from(u, k);
-            self.evaluate_in_span(k, u, &mut basis, &mut scratch)
-                .write_to(o);
-        }
+            }
+        });
+        self.sample_params_into(params, out);
         Ok(())
     }
 
