@@ -91,7 +91,7 @@ fn dense_sampling_equals_pointwise_evaluation() {
     c.sample_uniform_into(ts.len(), &mut uniform).unwrap();
     for (k, &t) in ts.iter().enumerate() {
         let p = c.evaluate(t).unwrap();
-        assert_eq!(DVec2::new(out[2 * k], out[2 * k + 1]), p);
+        assert_close2(DVec2::new(out[2 * k], out[2 * k + 1]), p, 1e-14, "sample");
         assert_close2(
             DVec2::new(uniform[2 * k], uniform[2 * k + 1]),
             p,
@@ -924,4 +924,34 @@ fn arc_length_of_a_cusp_away_from_dyadic_points() {
         1e-12 * exact,
         "cusp at s = 1/3",
     );
+}
+
+#[test]
+fn dense_sampling_matches_de_casteljau_for_every_degree() {
+    // Horner's rule on the power basis up to degree 5, de Casteljau above: both against the
+    // independent Bernstein sum.
+    let mut rng = Rng::new(47);
+    for degree in 1..=9 {
+        for rational in [false, true] {
+            let pts = random_curve(&mut rng, degree);
+            let w: Vec<f64> = (0..=degree).map(|_| rng.range(0.5, 2.0)).collect();
+            let c = BezierCurve::new(pts.clone(), rational.then_some(w.as_slice())).unwrap();
+            let ts: Vec<f64> = (0..=50).map(|k| k as f64 / 50.0).collect();
+            let mut out = vec![0.0; 2 * ts.len()];
+            c.sample_into(&ts, &mut out).unwrap();
+            for (k, &t) in ts.iter().enumerate() {
+                let e = bernstein_sum2(&pts, rational.then_some(w.as_slice()), t);
+                assert_close2(
+                    DVec2::new(out[2 * k], out[2 * k + 1]),
+                    e,
+                    1e-12 * (1.0 + e.length()),
+                    &format!("degree {degree}, t = {t}"),
+                );
+            }
+            if !rational {
+                assert_eq!(DVec2::new(out[0], out[1]), pts[0], "exact start");
+                assert_eq!(DVec2::new(out[100], out[101]), pts[degree], "exact end");
+            }
+        }
+    }
 }

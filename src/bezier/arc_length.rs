@@ -1,6 +1,6 @@
 //! Arc length by adaptive Gauss–Legendre quadrature of the speed `|P'|`, split at cusps.
 
-use super::{de_casteljau_point, differences, BezierCurve};
+use super::{de_casteljau_point, differences, power_coefficients, BezierCurve};
 use crate::error::{check_tolerance, Result};
 use crate::geom::Cartesian;
 use std::sync::OnceLock;
@@ -65,7 +65,10 @@ impl<'a, C: Cartesian> Speed<'a, C> {
         let velocity = if curve.rational {
             Vec::new()
         } else {
-            power_basis::<C>(&first)
+            power_coefficients(&first)
+                .into_iter()
+                .map(C::numerator)
+                .collect()
         };
         Speed {
             curve,
@@ -111,21 +114,6 @@ impl<'a, C: Cartesian> Speed<'a, C> {
         self.adaptive(lo, mid, left, 0.5 * accuracy, depth + 1)
             + self.adaptive(mid, hi, right, 0.5 * accuracy, depth + 1)
     }
-}
-
-/// Power-basis coefficients `c_k` of the polynomial `Σ_i B_i^m(s) Q_i` (numerators of the
-/// homogeneous points `Q_i`): `c_k = C(m,k) Σ_{i<=k} (−1)^{k−i} C(k,i) Q_i`.
-fn power_basis<C: Cartesian>(points: &[C::Homogeneous]) -> Vec<C> {
-    let m = points.len() - 1;
-    (0..=m)
-        .map(|k| {
-            let sum = (0..=k).fold(C::ZERO, |acc, i| {
-                let sign = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
-                acc + C::numerator(points[i]) * (sign * crate::geom::binomial(k, i))
-            });
-            sum * crate::geom::binomial(m, k)
-        })
-        .collect()
 }
 
 impl<C: Cartesian> BezierCurve<C> {

@@ -110,6 +110,29 @@ pub fn differences<P: Point>(points: &[P]) -> Vec<P> {
     points.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
+/// Power-basis coefficients `c_k` of `Σ_i B_i^m(s) Q_i = Σ_k c_k s^k`:
+/// `c_k = C(m,k) Σ_{i<=k} (−1)^{k−i} C(k,i) Q_i`. Evaluating them by Horner's rule costs `m`
+/// multiply-adds per coordinate instead of de Casteljau's `m(m+1)/2` lerps; for the low degrees
+/// where it is used the rounding stays at the level of a few ulps of the coefficients.
+pub fn power_coefficients<P: Point>(points: &[P]) -> Vec<P> {
+    let m = points.len() - 1;
+    (0..=m)
+        .map(|k| {
+            let sum = (0..=k).fold(P::ZERO, |acc, i| {
+                let sign = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
+                acc + points[i] * (sign * binomial(k, i))
+            });
+            sum * binomial(m, k)
+        })
+        .collect()
+}
+
+/// `Σ_k coeffs[k] s^k` by Horner's rule.
+#[inline]
+pub fn horner<P: Point>(coeffs: &[P], s: f64) -> P {
+    coeffs.iter().rev().fold(P::ZERO, |acc, &c| acc * s + c)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -28,8 +28,8 @@ pub use composite::{
     check_continuity, from_polynomial, join, CompositeCurve, Continuity, JoinRule,
 };
 pub use de_casteljau::{
-    bernstein, de_casteljau_point, de_casteljau_triangle, differences, elevate_points,
-    split_points, subsegment_points,
+    bernstein, de_casteljau_point, de_casteljau_triangle, differences, elevate_points, horner,
+    power_coefficients, split_points, subsegment_points,
 };
 pub use flatten::MAX_FLATTEN_SEGMENTS;
 pub use intersect::{LineIntersection, VisitedBox, MAX_INTERSECTION_DEPTH};
@@ -42,6 +42,10 @@ use crate::geom::{check_all_finite, BoundingBox, Cartesian};
 pub const MAX_DEGREE: usize = 64;
 
 pub use crate::geom::MAX_SAMPLES;
+
+/// Highest degree sampled by Horner's rule on the power basis; the power form's coefficients
+/// grow like `C(n, k) 2^k` and would lose digits to cancellation at high degrees.
+pub const HORNER_MAX_DEGREE: usize = 5;
 use crate::geom::{check_out_len, check_weights};
 
 /// A polynomial or rational Bézier curve in 2D (`C = DVec2`) or 3D (`C = DVec3`).
@@ -229,11 +233,7 @@ impl<C: Cartesian> BezierCurve<C> {
             check_finite(|| format!("parameter {i}"), t)?;
             self.local_parameter(t)?;
         }
-        let mut scratch = Vec::with_capacity(self.homogeneous.len());
-        for (&t, o) in ts.iter().zip(out.chunks_exact_mut(C::DIM)) {
-            self.evaluate_local(self.to_local(t), &mut scratch)
-                .write_to(o);
-        }
+        self.sample_local_into(ts.iter().map(|&t| self.to_local(t)), out);
         Ok(())
     }
 
@@ -241,17 +241,45 @@ impl<C: Cartesian> BezierCurve<C> {
     /// `out` (`count·DIM` values); `count = 1` gives the start point.
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), count, C::DIM)?;
-        let mut scratch = Vec::with_capacity(self.homogeneous.len());
         let step = if count > 1 {
             1.0 / (count - 1) as f64
         } else {
             0.0
         };
-        for (k, o) in out.chunks_exact_mut(C::DIM).enumerate() {
-            let s = if k + 1 == count { 1.0 } else { k as f64 * step };
-            self.evaluate_local(s, &mut scratch).write_to(o);
-        }
+        self.sample_local_into(
+            (0..count).map(|k| if k + 1 == count { 1.0 } else { k as f64 * step }),
+            out,
+        );
         Ok(())
+    }
+
+    /// Dense evaluation at local parameters: up to [`HORNER_MAX_DEGREE`] by Horner's rule on
+    /// the power-basis form computed once (`n` multiply-adds per coordinate instead of
+    /// de Casteljau's `n(n+1)/2` lerps), above that by de Casteljau with one scratch buffer.
+    /// The ends `s = 0` and `s = 1` are the end control points exactly.
+    fn sample_local_into(&self, params: impl Iterator<Item = f64>, out: &mut [f64]) {
+        let (first, last) = (
+            self.homogeneous[0],
+            self.homogeneous[self.homogeneous.len() - 1],
+        );
+        if self.degree() <= HORNER_MAX_DEGREE {
+            let coeffs = power_coefficients(&self.homogeneous);
+            for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
+                let h = if s == 0.0 {
+                    first
+                } else if s == 1.0 {
+                    last
+                } else {
+                    horner(&coeffs, s)
+                };
+                self.project(h).write_to(o);
+            }
+        } else {
+            let mut scratch = Vec::with_capacity(self.homogeneous.len());
+            for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
+                self.evaluate_local(s, &mut scratch).write_to(o);
+            }
+        }
     }
 
     /// de Casteljau's triangle at `t` in Cartesian form: all levels concatenated, level 0 (the
