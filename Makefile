@@ -4,6 +4,7 @@
 #   make test-native  the fast loop: core tests and doctests only
 #   make lint         rustfmt check and clippy with warnings denied
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
+#   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
 SHELL := /bin/bash
 PORT ?= 8000
 TOOLS := $(CURDIR)/.tools
@@ -14,7 +15,7 @@ WB_STAMP := $(TOOLS)/wasm-bindgen-$(WB_VERSION).stamp
 WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
 
-.PHONY: all build serve test test-native test-wasm test-e2e lint screenshots clean tools rust-target npm-deps chromium
+.PHONY: all build serve test test-native test-wasm test-e2e lint screenshots bench clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -70,6 +71,10 @@ lint:
 
 screenshots: build chromium
 	node scripts/screenshots.mjs
+
+# Prints the table and writes bench/results/latest.json; see bench/README.md. No timing asserts.
+bench: build chromium
+	node bench/bench.mjs $(BENCH_ARGS)
 
 clean:
 	cargo clean
