@@ -807,3 +807,55 @@ fn fast_dense_sampling_equals_the_pointwise_path_for_every_degree() {
         }
     }
 }
+
+#[test]
+fn one_pass_refinement_equals_repeated_insertion() {
+    let mut rng = Rng::new(53);
+    for case in 0..30 {
+        let p = 1 + case % 4;
+        let count = p + 2 + case % 6;
+        let knots = random_knots(&mut rng, count, p, case % 2 == 0);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let w: Vec<f64> = (0..count).map(|_| rng.range(0.5, 2.0)).collect();
+        let c =
+            BSplineCurve::new(pts, p, knots, if case % 3 == 0 { None } else { Some(&w) }).unwrap();
+        let (a, b) = c.domain();
+        let mut us: Vec<f64> = (0..1 + case % 5).map(|_| rng.range(a, b)).collect();
+        us.push(a + 0.5 * (b - a));
+        us.push(a + 0.5 * (b - a));
+        if case % 2 == 1 {
+            us.extend([a, b]); // the domain's ends, where an unclamped vector has room
+        }
+        let Ok(refined) = c.refine(&us) else { continue };
+        let mut sorted = us.clone();
+        sorted.sort_by(f64::total_cmp);
+        let mut one_by_one = c.clone();
+        for &u in &sorted {
+            one_by_one = one_by_one.insert_knot(u, 1).unwrap();
+        }
+        assert_eq!(
+            refined.knots().as_slice(),
+            one_by_one.knots().as_slice(),
+            "case {case}"
+        );
+        for (x, y) in refined
+            .control_points()
+            .iter()
+            .zip(one_by_one.control_points())
+        {
+            assert_close2(*x, y, 1e-12, &format!("case {case}: refined point"));
+        }
+    }
+    let c = croatian();
+    assert!(c
+        .refine(&[2.0, 2.0, 2.0])
+        .unwrap_err()
+        .to_string()
+        .contains("multiplicity 4"));
+    assert!(c
+        .refine(&[5.0])
+        .unwrap_err()
+        .to_string()
+        .contains("u = 5 is outside"));
+    assert_eq!(c.refine(&[]).unwrap().control_points(), c.control_points());
+}

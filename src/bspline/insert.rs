@@ -78,22 +78,94 @@ impl<C: Cartesian> BSplineCurve<C> {
     }
 
     /// Knot refinement: inserts every value of `us` (in any order; repeated values raise the
-    /// multiplicity) and returns the refined curve, same shape.
+    /// multiplicity) in one pass and returns the refined curve, same shape.
+    ///
+    /// NURBS Book A5.4: the untouched head and tail of the control polygon are copied, then
+    /// the new knots are inserted from the last to the first, each updating only the `p`
+    /// points around it — O(n + m·p) for m new knots instead of m separate insertions.
     ///
     /// # Errors
-    /// As [`BSplineCurve::insert_knot`] for each value.
+    /// A value outside the domain or not finite (naming it), or a knot whose multiplicity
+    /// would exceed `p + 1`.
     pub fn refine(&self, us: &[f64]) -> Result<Self> {
-        let mut sorted = us.to_vec();
-        for (i, &u) in sorted.iter().enumerate() {
+        let mut x = us.to_vec();
+        for (i, &u) in x.iter().enumerate() {
             check_finite(|| format!("knot {i} to insert"), u)?;
+            self.knots.check_parameter(u)?;
         }
-        sorted.sort_by(f64::total_cmp);
-        let mut curve = self.clone();
-        for u in sorted {
-            curve = curve.insert_knot(u, 1)?;
+        if x.is_empty() {
+            let mut same = self.clone();
+            same.wrap = 0;
+            return Ok(same);
         }
-        curve.wrap = 0;
-        Ok(curve)
+        x.sort_by(f64::total_cmp);
+        let p = self.degree();
+        for run in x.chunk_by(|a, b| a == b) {
+            let total = self.knots.multiplicity(run[0]) + run.len();
+            if total > p + 1 {
+                return Err(Error::Mismatch {
+                    message: format!(
+                        "inserting knot {} {} time(s) would give it multiplicity {total}; a degree-{p} curve allows at most p+1 = {}",
+                        run[0],
+                        run.len(),
+                        p + 1
+                    ),
+                });
+            }
+        }
+        let u = self.knots.as_slice();
+        let pw = &self.homogeneous;
+        let n = pw.len() - 1;
+        let m = n + p + 1;
+        let r = x.len() - 1;
+        let a = self.knots.span(x[0]);
+        let b = self.knots.span(x[r]) + 1;
+        let mut q = vec![C::Homogeneous::ZERO; n + r + 2];
+        let mut ubar = vec![0.0; m + r + 2];
+        q[..=a - p].copy_from_slice(&pw[..=a - p]);
+        for j in b - 1..=n {
+            q[j + r + 1] = pw[j];
+        }
+        ubar[..=a].copy_from_slice(&u[..=a]);
+        for j in b + p..=m {
+            ubar[j + r + 1] = u[j];
+        }
+        let mut i = b + p - 1;
+        let mut k = b + p + r;
+        for j in (0..=r).rev() {
+            while x[j] <= u[i] && i > a {
+                q[k - p - 1] = pw[i - p - 1];
+                ubar[k] = u[i];
+                k -= 1;
+                i -= 1;
+            }
+            q[k - p - 1] = q[k - p];
+            for l in 1..=p {
+                let ind = k - p + l;
+                let alpha = ubar[k + l] - x[j];
+                if alpha == 0.0 {
+                    q[ind - 1] = q[ind];
+                } else {
+                    let alpha = alpha / (ubar[k + l] - u[i - p + l]);
+                    q[ind - 1] = q[ind - 1] * alpha + q[ind] * (1.0 - alpha);
+                }
+            }
+            ubar[k] = x[j];
+            k -= 1;
+        }
+        if !self.rational {
+            // Keep polynomial weights exactly 1 ((1 − α)·1 + α·1 may round).
+            for h in &mut q {
+                *h = C::numerator(*h).to_homogeneous(1.0);
+            }
+        }
+        let knots = KnotVector::new(ubar, p, q.len())?;
+        Ok(BSplineCurve {
+            homogeneous: q,
+            rational: self.rational,
+            knots,
+            wrap: 0,
+        })
     }
 
     /// Bézier extraction: every distinct knot of the domain is raised to multiplicity `p`,
