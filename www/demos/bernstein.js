@@ -10,13 +10,18 @@
  * curve from one `sampleUniform` per change, weights from `bernstein(n, i, t)`; the draw path
  * allocates nothing and replaced wasm objects are freed.
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, pointHandles, placeLabelAway } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
+import { slider, button, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { Player } from "../lib/player.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bernstein";
 /** Prefix of this demo's keys in strings.js. */
@@ -42,15 +47,8 @@ export const MAX_POINTS = 11;
 const SAMPLES = 201;
 /** Fitting leaves this fraction of the height free above and below for the handles' labels (the curve area is short). */
 const LABEL_ROOM = 0.08;
-/** Animation speed in t per second, and the step of the step buttons (ui.md). */
-const PLAY_SPEED = 0.25;
-const STEP = 1 / 16;
 /** Slider resolution for t. */
 const T_SLIDER_STEP = 0.001;
-/** Slack when snapping t to the step grid, so 0.25 counts as on the grid. */
-const GRID_SLACK = 1e-9;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 
 /**
  * The plot takes this fraction of the canvas height, below the curve; at least PLOT_MIN_PX,
@@ -83,21 +81,6 @@ export function validate(state) {
   checkNumber(state, "t", { min: 0, max: 1 });
 }
 
-/** "cubic", "quartic", … for degree n. */
-function kindOf(n) {
-  return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** Binomial coefficient C(n, i), for the formula panel only (the weights come from the core). */
 function binomial(n, i) {
   let c = 1;
@@ -127,7 +110,6 @@ export function mount(container, initialState, ctx) {
   const values = new Float64Array(MAX_POINTS); // B_i^n(t), from the core
   const mirrored = new Float64Array(MAX_POINTS); // B_{n-i}^n(1 - t), from the core
   const peakValues = new Float64Array(MAX_POINTS); // B_i^n(i/n), from the core
-  const pointScratch = new Float64Array(2);
   const insetScratch = [0, 0, 0, 0];
   const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0 }; // frame (CSS px) and the strip's top
   const handleLabels = []; // "P₀" …
@@ -143,7 +125,7 @@ export function mount(container, initialState, ctx) {
   let shownHighlight = -2; // the highlight the panels show (-2: not yet synced)
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points, LABEL_ROOM), insets });
+  const view = ctx.createFigure({ draw, bounds: () => paddedBounds(work.points, LABEL_ROOM), insets });
   // A taller figure than the default: the curve and the plot share it.
   ctx.slots.figure.classList.add("sl-figure-tall");
 
@@ -153,7 +135,7 @@ export function mount(container, initialState, ctx) {
   view.addInteractor({
     pointerDown(event, x, y) {
       if (!inPlot(x, y)) return false;
-      stop();
+      player.stop();
       draggingT = true;
       plotHover = basisAt(x, y);
       setT(tAtPixel(x), false);
@@ -186,20 +168,10 @@ export function mount(container, initialState, ctx) {
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -280,88 +252,30 @@ export function mount(container, initialState, ctx) {
     step: T_SLIDER_STEP,
     value: work.t,
     onChange: (value, final) => {
-      stop();
+      player.stop();
       setT(value, final);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const playButton = button({ label: t("control.play"), name: "play", pressed: false, onClick: () => toggle() });
-  const backButton = button({ label: t("control.stepBack"), title: t("control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
-  const forwardButton = button({ label: t("control.stepForward"), title: t("control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => commitWork() });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
   const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
   const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
   const sumText = el("p", { class: "sl-note", dataset: { info: "sum" } });
   const peakText = el("p", { class: "sl-note", dataset: { info: "peak" }, "aria-live": "polite" });
   ctx.slots.controls.append(
-    group(null, tSlider.element, el("div", { class: "sl-button-row" }, backButton, playButton, forwardButton), sumText),
+    group(null, tSlider.element, player.element, sumText),
     group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
     group(null, peakText),
   );
 
-  // Space plays/pauses while the figure has focus.
-  const onFigureKey = (event) => {
-    if (event.key === " " && !event.ctrlKey && !event.metaKey) {
-      toggle();
-      event.preventDefault();
-    }
-  };
-  view.canvas.addEventListener("keydown", onFigureKey);
-
   // ------------------------------------------------------------ formula and table (the legend)
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-bernstein-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "bernstein" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("bernstein");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableDegree = -1;
   let tableRows = []; // per i: { row, value, valueDecimal, mirror, mirrorDecimal, peak }
   let sumCells = null;
-
-  // ------------------------------------------------------------ animation
-  let playing = false;
-  let lastTime = 0;
-  let frameId = 0;
-  const tick = (now) => {
-    if (!playing) return;
-    const dt = Math.max(0, now - lastTime) / 1000; // the first frame may precede play()
-    lastTime = now;
-    const next = Math.min(1, work.t + PLAY_SPEED * dt);
-    setT(next, false);
-    if (next >= 1) stop();
-    else frameId = requestAnimationFrame(tick);
-  };
-
-  function play() {
-    if (playing) return;
-    if (work.t >= 1) setT(0, false);
-    playing = true;
-    playButton.textContent = t("control.pause");
-    playButton.setAttribute("aria-pressed", "true");
-    lastTime = performance.now();
-    frameId = requestAnimationFrame(tick);
-  }
-
-  /** Stops the animation and records where it stopped. */
-  function stop() {
-    if (!playing) return;
-    playing = false;
-    cancelAnimationFrame(frameId);
-    playButton.textContent = t("control.play");
-    playButton.setAttribute("aria-pressed", "false");
-    commitWork();
-  }
-
-  function toggle() {
-    if (playing) stop();
-    else play();
-  }
-
-  /** Moves t to the previous/next multiple of 1/16. */
-  function step(direction) {
-    stop();
-    const k = direction > 0 ? Math.floor(work.t / STEP + GRID_SLACK) + 1 : Math.ceil(work.t / STEP - GRID_SLACK) - 1;
-    setT(Math.min(1, Math.max(0, k * STEP)), true);
-  }
 
   function setT(value, final) {
     work.t = value;
@@ -388,35 +302,21 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("bernstein.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("bernstein.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected). */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("bernstein.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("bernstein.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -469,13 +369,7 @@ export function mount(container, initialState, ctx) {
     const cycle = theme.basisStroke.length;
 
     // ---- the curve area (world window, above the plot)
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
 
     // Where the highlighted B_i^n is at least half its maximum: a band in its colour under the curve.
@@ -498,13 +392,7 @@ export function mount(container, initialState, ctx) {
       r.paint(theme.basisBand[hi % cycle]);
     }
 
-    r.beginPath();
-    for (let k = 0; k < SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, SAMPLES);
     r.paint(theme.curve);
 
     // Every control point ringed in its basis function's colour.
@@ -527,10 +415,10 @@ export function mount(container, initialState, ctx) {
     const pointX = v.sx(point[0]);
     const pointY = v.sy(point[1]);
     r.point(pointX, pointY, theme.pointOnCurve);
-    labelAwayFromHull(r, v, t("bernstein.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
+    placeLabelAway(r, v, work.points, t("bernstein.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
     if (hi >= 0) {
       r.point(peakX, peakY, theme.basisPoint[hi % cycle]);
-      labelAwayFromHull(r, v, peakPointLabel(n, hi), peakX, peakY, theme.labelBold, theme.basisPoint[0].radius * r.scale);
+      placeLabelAway(r, v, work.points, peakPointLabel(n, hi), peakX, peakY, theme.labelBold, theme.basisPoint[0].radius * r.scale);
     }
 
     // ---- the plot strip (screen space, below the world window; covers anything panned into it)
@@ -621,30 +509,6 @@ export function mount(container, initialState, ctx) {
       else r.lineTo(x, y);
     }
     r.paint(style);
-  }
-
-  /** Labels a point of the curve on the side away from the control points' centroid. */
-  function labelAwayFromHull(r, v, text, x, y, style, radius) {
-    const pts = work.points;
-    let cx = 0;
-    let cy = 0;
-    for (let i = 0; i < pts.length; i++) {
-      cx += v.sx(pts[i][0]);
-      cy += v.sy(pts[i][1]);
-    }
-    cx /= pts.length;
-    cy /= pts.length;
-    let dx = x - cx;
-    let dy = y - cy;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) {
-      dx = -Math.SQRT1_2;
-      dy = -Math.SQRT1_2;
-    } else {
-      dx /= length;
-      dy /= length;
-    }
-    placeLabel(r, text, x, y, dx, dy, radius, style);
   }
 
   /** Cached label strings, keyed by (n, i). */
@@ -752,7 +616,7 @@ export function mount(container, initialState, ctx) {
       setText(peakText, t("bernstein.peakHint"));
     }
     view.setLabel(
-      t("bernstein.aria", { kind: kindOf(n), count: n + 1, n, t: fmt(work.t), values: valueTexts.join(", "), sum: fmt(sum), x: fmt(point[0], 2), y: fmt(point[1], 2) }) + ariaPeak,
+      t("bernstein.aria", { kind: degreeName(n), count: n + 1, n, t: fmt(work.t), values: valueTexts.join(", "), sum: fmt(sum), x: fmt(point[0], 2), y: fmt(point[1], 2) }) + ariaPeak,
     );
   }
 
@@ -806,11 +670,6 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -818,7 +677,7 @@ export function mount(container, initialState, ctx) {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
       const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
-      stop();
+      player.stop();
       curve.free();
       curve = next;
       work = structuredClone(state);
@@ -832,9 +691,7 @@ export function mount(container, initialState, ctx) {
       recompute();
     },
     destroy() {
-      playing = false;
-      cancelAnimationFrame(frameId);
-      view.canvas.removeEventListener("keydown", onFigureKey);
+      player.destroy();
       handles.destroy();
       formula.destroy();
       curve.free();
@@ -842,21 +699,9 @@ export function mount(container, initialState, ctx) {
   };
 }
 
-/**
- * [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull), taller by
- * `room` × the height above and below.
- */
-function boundsOf(points, room = 0) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
+/** The points' bounding box (the curve lies in their convex hull), taller by `room` × the height above and below. */
+function paddedBounds(points, room) {
+  const [x0, y0, x1, y1] = boundsOf(points);
   const pad = room * (y1 - y0);
   return [x0, y0 - pad, x1, y1 + pad];
 }

@@ -5,16 +5,21 @@
  * the curve is updated in place while dragging (`setControlPoint`), and everything drawn about
  * the curve comes from the core — samples, `reversed()`, `elevate()`, `intersectLine`,
  * `polygonLineCrossings`, and a second `BezierCurve` built from the mapped control points.
- * JS only does drawing support: the hull polygon of the control points (a documented
- * monotone chain), the 2×2 matrix applied to points, and the distances reported as checks.
+ * JS only does drawing support: the hull polygon of the control points (`convexHull` in
+ * lib/geometry.js, a documented monotone chain), the 2×2 matrix applied to points, and the
+ * distances reported as checks.
  */
-import { Handles, roundToView } from "../lib/handles.js";
+import { Handles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, radios } from "../lib/controls.js";
+import { slider, button, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkChoice } from "../lib/validate.js";
 import { fmt, subscript, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath } from "../lib/draw.js";
 
 export const id = "bezier-properties";
 /** Prefix of this demo's keys in strings.js. */
@@ -62,8 +67,6 @@ const CHEVRON_PX = 11;
 const CHEVRON_ANGLE = 0.5;
 /** Distance (model units) within which `intersectLine` reports a hit. */
 const INTERSECT_TOLERANCE = 1e-9;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 
 // Styles of this demo's own marks (theme hues are the same in light and dark mode).
 const MAPPED_CURVE_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.curve, join: "round", cap: "round" });
@@ -87,46 +90,6 @@ export function validate(state) {
   checkPoints(state, "line", { min: 2, max: 2 });
   const [[x0, y0], [x1, y1]] = state.line;
   if (x0 === x1 && y0 === y1) throw new Error(t("bezierProperties.lineDegenerate"));
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points. */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
-/**
- * The convex hull of points (drawing support for the hull property, not a curve algorithm):
- * Andrew's monotone chain. Sort the indices by x (then y), build the lower chain left to right
- * and the upper chain right to left, popping the last point while it does not make a strict
- * left turn (cross product ≤ 0, so collinear points are dropped). Returns the indices of the
- * hull's vertices counter-clockwise, starting at the leftmost point; one or two indices when
- * all points coincide or are collinear. O(n log n); n ≤ 9 here.
- */
-export function convexHull(points) {
-  const order = points.map((_, i) => i).sort((a, b) => points[a][0] - points[b][0] || points[a][1] - points[b][1]);
-  const cross = (o, a, b) =>
-    (points[a][0] - points[o][0]) * (points[b][1] - points[o][1]) - (points[a][1] - points[o][1]) * (points[b][0] - points[o][0]);
-  const chain = (indices) => {
-    const out = [];
-    for (const i of indices) {
-      while (out.length >= 2 && cross(out[out.length - 2], out[out.length - 1], i) <= 0) out.pop();
-      out.push(i);
-    }
-    out.pop(); // the last point starts the other chain
-    return out;
-  };
-  const lower = chain(order);
-  const upper = chain(order.slice().reverse());
-  const hull = lower.concat(upper);
-  // All points equal: the chains are empty; collinear: keep the two ends.
-  if (hull.length === 0) return order.slice(0, 1);
-  const same = (a, b) => points[a][0] === points[b][0] && points[a][1] === points[b][1];
-  return hull.length === 2 && same(hull[0], hull[1]) ? hull.slice(0, 1) : hull;
 }
 
 /** The 2×2 matrix R(θ)·sI·H(k) of the affine map: rotation, uniform scale, shear along x. */
@@ -313,9 +276,8 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-elevated-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "elevation" }, "aria-labelledby": tableTitle.id });
-  const tableBlock = el("div", {}, tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("elevation");
+  const tableBlock = el("div", {}, tableTitle, tableWrap);
   ctx.slots.details.append(tableBlock);
   let tableCells = [];
 
@@ -339,35 +301,22 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none, or a point of the line, is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("bezierProperties.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("bezierProperties.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes control point i (the last one when none is selected); points of the line stay. */
   function removePoint(i) {
-    const pts = work.points;
-    if (i >= pts.length) return;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("bezierProperties.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 ? i : pts.length - 1;
-    pts.splice(at, 1);
+    if (i >= work.points.length) return; // not a control point
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("bezierProperties.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -700,11 +649,6 @@ export function mount(container, initialState, ctx) {
     }
   }
 
-  /** Sets a node's text only when it changed. */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -738,30 +682,4 @@ export function mount(container, initialState, ctx) {
       reversedCurve?.free();
     },
   };
-}
-
-/** Adds the polyline through points `from … to − 1` of a flat list to a new path. */
-function flatPath(r, v, flat, from, to) {
-  r.beginPath();
-  for (let k = from; k < to; k++) {
-    const x = v.sx(flat[2 * k]);
-    const y = v.sy(flat[2 * k + 1]);
-    if (k === from) r.moveTo(x, y);
-    else r.lineTo(x, y);
-  }
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points. */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

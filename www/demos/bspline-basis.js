@@ -17,14 +17,19 @@
  * the knots by the clamped uniform vector of the core (`knotVector(points, 2, p, "clamped")`:
  * p + 1 zeros, 1 … n − p, p + 1 copies of n − p + 1), and u is clamped into the new domain.
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, pointHandles, placeLabelAway } from "../lib/handles.js";
 import { KnotRuler, raiseMultiplicity, lowerMultiplicity, knotText } from "../lib/knot-ruler.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, radios } from "../lib/controls.js";
+import { slider, button, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, fractionText } from "../lib/format.js";
+import { fmt, subscript, superscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
+import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "bspline-basis";
 /** Prefix of this demo's keys in strings.js. */
@@ -57,8 +62,6 @@ export const MAX_DEGREE = 5;
 const SAMPLES = 241;
 /** Slider resolution for u, as a fraction of the domain's length. */
 const U_SLIDER_RESOLUTION = 1 / 1000;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** The plot takes this fraction of the canvas height (at least PLOT_MIN_PX), above the ruler. */
 const PLOT_FRACTION = 0.27;
 const PLOT_MIN_PX = 120;
@@ -98,21 +101,6 @@ export function validate(state) {
   if (state.u < a || state.u > b) throw new Error(t("bsplineBasis.uRange", { a, b, u: state.u }));
 }
 
-/** "linear", "quadratic", "cubic", … for degree p. */
-function kindOf(p) {
-  return p <= 5 ? t(`curve.degree.${p}`) : t("curve.degree.n", { n: p });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm calls). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** Styles of the plot that the theme does not have, made once per theme. */
 const supportStyles = new WeakMap();
 function supportFill(theme) {
@@ -146,10 +134,8 @@ export function mount(container, initialState, ctx) {
   let geometryDirty = true;
   let uDirty = true;
   const peakK = new Int32Array(MAX_POINTS); // sample index of each N_i's maximum (label placement)
-  const pointScratch = new Float64Array(2);
   const insetScratch = [0, 0, 0, 0];
   const plot = { x0: 0, x1: 0, y0: 0, y1: 0, top: 0, bottom: 0 }; // frame (CSS px), strip top/bottom
-  const handleLabels = []; // "P₀" …
   const basisNames = []; // "N₀,₂" … per (p, i)
   let markerLabel = ""; // "u = 2.5", rebuilt when u changes
 
@@ -212,20 +198,10 @@ export function mount(container, initialState, ctx) {
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: the basis does not change
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: the basis does not change
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -315,7 +291,7 @@ export function mount(container, initialState, ctx) {
     value: String(work.degree),
     options: Array.from({ length: MAX_DEGREE - MIN_DEGREE + 1 }, (_, k) => {
       const p = MIN_DEGREE + k;
-      return { value: String(p), label: t("bsplineBasis.degreeOption", { p, kind: kindOf(p) }) };
+      return { value: String(p), label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }) };
     }),
     onChange: (value) => setDegree(Number(value)),
   });
@@ -345,16 +321,13 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and tables
   const formula = new FormulaPanel(ctx.slots.formula);
-  const suffix = Math.random().toString(36).slice(2, 8);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-basis-${suffix}` });
-  const valuesTable = el("table", { class: "sl-table", dataset: { table: "basis" }, "aria-labelledby": tableTitle.id });
-  const triangleTitle = el("p", { class: "sl-table-title", id: `sl-triangle-${suffix}` });
-  const triangleTable = el("table", { class: "sl-table", dataset: { table: "cox-de-boor" }, "aria-labelledby": triangleTitle.id });
+  const { title: tableTitle, table: valuesTable, wrap: valuesTableWrap } = titledTable("basis");
+  const { title: triangleTitle, table: triangleTable, wrap: triangleTableWrap } = titledTable("cox-de-boor");
   ctx.slots.details.append(
     tableTitle,
-    el("div", { class: "sl-table-wrap" }, valuesTable),
+    valuesTableWrap,
     triangleTitle,
-    el("div", { class: "sl-table-wrap" }, triangleTable),
+    triangleTableWrap,
   );
   let tableShape = ""; // "count/p" the values table was built for
   let tableRows = []; // per i: { row, support, value, exact }
@@ -375,13 +348,8 @@ export function mount(container, initialState, ctx) {
 
   /** Replaces the curve after the knots, the degree or the points changed; false (and a message) if refused. */
   function rebuild() {
-    let next;
-    try {
-      next = build(work);
-    } catch (err) {
-      ctx.status(t("status.rejected", { message: err.message }), "error");
-      return false;
-    }
+    const next = buildOrReport(() => build(work), ctx);
+    if (!next) return false;
     curve.free();
     curve = next;
     knotsDirty = true;
@@ -452,39 +420,26 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected); the knots become clamped uniform. */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("bsplineBasis.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("bsplineBasis.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     work.knots = clampedKnots();
     rebuild();
     ruler.forgetPointer();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected); the knots become clamped uniform. */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= Math.max(MIN_POINTS, work.degree + 1)) {
-      ctx.status(t("bsplineBasis.minPoints", { min: Math.max(MIN_POINTS, work.degree + 1), p: work.degree }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const min = Math.max(MIN_POINTS, work.degree + 1);
+    const next = withPointRemoved(work.points, i, min);
+    if (!next) return ctx.status(t("bsplineBasis.minPoints", { min, p: work.degree }), "error");
+    work.points = next.points;
     work.knots = clampedKnots();
     rebuild();
     ruler.forgetPointer();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -541,13 +496,7 @@ export function mount(container, initialState, ctx) {
     const knots = work.knots;
 
     // ---- the curve area (world window, above the plot)
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
 
     // The highlighted function's support [u_i, u_{i+p+1}) on the curve: a band in its colour.
@@ -571,13 +520,7 @@ export function mount(container, initialState, ctx) {
       r.paint(theme.basisBand[hi % cycle]);
     }
 
-    r.beginPath();
-    for (let k = 0; k < SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, SAMPLES);
     r.paint(theme.curve);
 
     // Every control point ringed in its basis function's colour.
@@ -587,7 +530,7 @@ export function mount(container, initialState, ctx) {
     const pointX = v.sx(point[0]);
     const pointY = v.sy(point[1]);
     r.point(pointX, pointY, theme.pointOnCurve);
-    labelAwayFromHull(r, v, t("bsplineBasis.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
+    placeLabelAway(r, v, work.points, t("bsplineBasis.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
 
     // ---- the plot strip and the ruler (screen space, below the world window)
     const w = r.width;
@@ -677,30 +620,6 @@ export function mount(container, initialState, ctx) {
       else r.lineTo(x, y);
     }
     r.paint(style);
-  }
-
-  /** Labels a point of the curve on the side away from the control points' centroid. */
-  function labelAwayFromHull(r, v, text, x, y, style, radius) {
-    const pts = work.points;
-    let cx = 0;
-    let cy = 0;
-    for (let i = 0; i < pts.length; i++) {
-      cx += v.sx(pts[i][0]);
-      cy += v.sy(pts[i][1]);
-    }
-    cx /= pts.length;
-    cy /= pts.length;
-    let dx = x - cx;
-    let dy = y - cy;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) {
-      dx = -Math.SQRT1_2;
-      dy = -Math.SQRT1_2;
-    } else {
-      dx /= length;
-      dy /= length;
-    }
-    placeLabel(r, text, x, y, dx, dy, radius, style);
   }
 
   /** "N₃,₂" (cached per degree and index). */
@@ -793,7 +712,7 @@ export function mount(container, initialState, ctx) {
     if (hi >= 0) ariaSupport = t("bsplineBasis.ariaSupport", { name: basisName(p, hi), a: kt(knots[hi]), b: kt(knots[hi + p + 1]) });
     view.setLabel(
       t("bsplineBasis.aria", {
-        kind: kindOf(p),
+        kind: degreeName(p),
         count: n + 1,
         knots: knots.map(kt).join(", "),
         u: uText,
@@ -873,11 +792,6 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -913,19 +827,4 @@ function argmax(values, n) {
   let best = 0;
   for (let i = 1; i <= n; i++) if (values[i] > values[best]) best = i;
   return best;
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

@@ -6,12 +6,18 @@
  * wasm objects are freed. A strip under the figure shows the knot vector with the active span
  * [u_k, u_{k+1}) and the parameter u; pressing or dragging there sets u.
  */
-import { Handles, roundToView, placeLabel as placeLabelAt } from "../lib/handles.js";
+import { Handles, placeLabel as placeLabelAt, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, parseNumberInput, MAX_EXACT_DENOMINATOR } from "../lib/format.js";
+import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, parseNumberInput, MAX_EXACT_DENOMINATOR, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { Player } from "../lib/player.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
+import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "de-boor";
 /** Prefix of this demo's keys in strings.js. */
@@ -40,24 +46,16 @@ export const MAX_POINTS = 11;
 export const MAX_DEGREE = 5;
 /** Points sampled along the curve for drawing (one `sampleUniform` call per change). */
 const CURVE_SAMPLES = 256;
-/** Animation speed as a fraction of the domain per second (ui.md: about 0.25 per second). */
-const PLAY_FRACTION_PER_SECOND = 0.25;
-/** The step buttons move u by this fraction of the domain's length (1/16, as t in de Casteljau). */
-const STEP_FRACTION = 1 / 16;
 /** Slider resolution as a fraction of the domain. */
 const U_SLIDER_RESOLUTION = 1 / 1000;
 /** Intermediate points are labelled up to this degree (beyond, labels crowd; the table has them). */
 const LABEL_LEVELS_MAX_DEGREE = 4;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /**
  * Candidate label directions around a construction point, as (normal, leg) components and a
  * bonus in px for the plain normals; a label's centre is probed this far from its point.
  */
 const LABEL_DIRECTIONS = Object.freeze([1, 0, 4, -1, 0, 4, Math.SQRT1_2, Math.SQRT1_2, 0, Math.SQRT1_2, -Math.SQRT1_2, 0, -Math.SQRT1_2, Math.SQRT1_2, 0, -Math.SQRT1_2, -Math.SQRT1_2, 0]);
 const LABEL_PROBE_PX = 14;
-/** Slack when snapping u to the step grid, so 3/2 counts as on the grid. */
-const GRID_SLACK = 1e-9;
 /** Height of the knot strip under the figure, CSS px. */
 const STRIP_PX = 78;
 /** Knot strip layout, CSS px (× lecture scale): side margins, line below the strip's top. */
@@ -102,21 +100,6 @@ export function validate(state) {
   checkBoolean(state, "construction");
 }
 
-/** "cubic", "quartic", … for degree p. */
-function kindOf(p) {
-  return p <= 5 ? t(`curve.degree.${p}`) : t("curve.degree.n", { n: p });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** A number as short text: integers plain, simple fractions as a/b, else 3 decimals. */
 function numberText(x) {
   if (Number.isInteger(x)) return String(x);
@@ -156,11 +139,9 @@ export function mount(container, initialState, ctx) {
   let span = 0; // curve.span(u): u_k <= u < u_{k+1}
   let geometryDirty = true;
   let uDirty = true;
-  const pointScratch = new Float64Array(2);
   const levelLabels = []; // "d₂¹" … cached per (j, r)
   const placed = new Float64Array(2 * 32); // centres of the labels placed in this draw
   let placedCount = 0;
-  const handleLabels = []; // "P₀" …
   // The knot strip: distinct knots, their multiplicities and value labels (rebuilt on knot changes).
   const distinct = new Float64Array(MAX_POINTS + MAX_DEGREE + 1);
   const multiplicity = new Uint8Array(MAX_POINTS + MAX_DEGREE + 1);
@@ -191,7 +172,7 @@ export function mount(container, initialState, ctx) {
   view.addInteractor({
     pointerDown(event, x, y) {
       if (!inStrip(x, y)) return false;
-      stop();
+      player.stop();
       draggingU = true;
       setU(uAtPixel(x), false);
       return true;
@@ -213,20 +194,10 @@ export function mount(container, initialState, ctx) {
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -243,14 +214,19 @@ export function mount(container, initialState, ctx) {
     step: (b0 - a0) * U_SLIDER_RESOLUTION,
     value: work.u,
     onChange: (value, final) => {
-      stop();
+      player.stop();
       setU(value, final);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const playButton = button({ label: t("control.play"), name: "play", pressed: false, onClick: () => toggle() });
-  const backButton = button({ label: t("control.stepBack"), title: t("deBoor.control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
-  const forwardButton = button({ label: t("control.stepForward"), title: t("deBoor.control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const player = new Player(view, {
+    get: () => work.u,
+    set: (value, final) => setU(value, final),
+    stopped: () => commitWork(),
+    range: () => domainOf(work),
+    stepBackTitle: t("deBoor.control.stepBack.title"),
+    stepTitle: t("deBoor.control.stepForward.title"),
+  });
   const spanText = el("p", { class: "sl-readout", dataset: { info: "span" }, "aria-live": "polite" });
   const degreeSlider = slider({
     label: t("deBoor.control.degree"),
@@ -288,7 +264,7 @@ export function mount(container, initialState, ctx) {
     },
   });
   ctx.slots.controls.append(
-    group(null, uSlider.element, el("div", { class: "sl-button-row" }, backButton, playButton, forwardButton), spanText),
+    group(null, uSlider.element, player.element, spanText),
     group(
       null,
       degreeSlider.element,
@@ -300,74 +276,12 @@ export function mount(container, initialState, ctx) {
     group(null, constructionBox.element),
   );
 
-  // Space plays/pauses while the figure has focus.
-  const onFigureKey = (event) => {
-    if (event.key === " " && !event.ctrlKey && !event.metaKey) {
-      toggle();
-      event.preventDefault();
-    }
-  };
-  view.canvas.addEventListener("keydown", onFigureKey);
-
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-deboor-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "de-boor" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("de-boor");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableDegree = -1;
   let tableCells = []; // per triangle point: { name, exact, decimal, alpha } spans
-
-  // ------------------------------------------------------------ animation
-  let playing = false;
-  let lastTime = 0;
-  let frameId = 0;
-  const tick = (now) => {
-    if (!playing) return;
-    // The frame's timestamp may precede the performance.now() taken in play(): never step back.
-    const dt = Math.max(0, (now - lastTime) / 1000);
-    lastTime = Math.max(lastTime, now);
-    const [a, b] = domainOf(work);
-    const next = Math.min(b, Math.max(a, work.u + PLAY_FRACTION_PER_SECOND * (b - a) * dt));
-    setU(next, false);
-    if (next >= b) stop();
-    else frameId = requestAnimationFrame(tick);
-  };
-
-  function play() {
-    if (playing) return;
-    const [a, b] = domainOf(work);
-    if (work.u >= b) setU(a, false);
-    playing = true;
-    playButton.textContent = t("control.pause");
-    playButton.setAttribute("aria-pressed", "true");
-    lastTime = performance.now();
-    frameId = requestAnimationFrame(tick);
-  }
-
-  /** Stops the animation and records where it stopped. */
-  function stop() {
-    if (!playing) return;
-    playing = false;
-    cancelAnimationFrame(frameId);
-    playButton.textContent = t("control.play");
-    playButton.setAttribute("aria-pressed", "false");
-    commitWork();
-  }
-
-  function toggle() {
-    if (playing) stop();
-    else play();
-  }
-
-  /** Moves u to the previous/next point of the grid a + k·(b − a)/16. */
-  function step(direction) {
-    stop();
-    const [a, b] = domainOf(work);
-    const h = (b - a) * STEP_FRACTION;
-    const s = (work.u - a) / h;
-    const k = direction > 0 ? Math.floor(s + GRID_SLACK) + 1 : Math.ceil(s - GRID_SLACK) - 1;
-    setU(Math.min(b, Math.max(a, a + k * h)), true);
-  }
 
   function setU(value, final) {
     work.u = value;
@@ -389,14 +303,9 @@ export function mount(container, initialState, ctx) {
    * Returns false (and says why) when the core refused.
    */
   function rebuild(next) {
-    let built;
-    try {
-      built = new sl.BSplineCurve(flatten(next.points), 2, next.degree, next.knots);
-    } catch (err) {
-      ctx.status(t("status.rejected", { message: err.message }), "error");
-      return false;
-    }
-    stop();
+    const built = buildOrReport(() => new sl.BSplineCurve(flatten(next.points), 2, next.degree, next.knots), ctx);
+    if (!built) return false;
+    player.stop();
     curve.free();
     curve = built;
     const [a, b] = domainOf(work);
@@ -461,39 +370,21 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected); knots become clamped uniform. */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("deBoor.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    const next = structuredClone(pts);
-    next.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
-    if (!rebuild({ points: next, degree: work.degree, knots: clampedKnots(next, work.degree) })) return;
-    handles.select(at + 1);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("deBoor.maxPoints", { max: MAX_POINTS }), "error");
+    if (!rebuild({ points: next.points, degree: work.degree, knots: clampedKnots(next.points, work.degree) })) return;
+    handles.select(next.index);
     ctx.status(t("deBoor.knotsReset"), "info");
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected); the degree drops if it must. */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("deBoor.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const next = structuredClone(pts);
-    next.splice(at, 1);
-    const p = Math.min(work.degree, next.length - 1);
-    if (!rebuild({ points: next, degree: p, knots: clampedKnots(next, p) })) return;
-    handles.select(Math.min(at, next.length - 1));
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("deBoor.minPoints", { min: MIN_POINTS }), "error");
+    const p = Math.min(work.degree, next.points.length - 1);
+    if (!rebuild({ points: next.points, degree: p, knots: clampedKnots(next.points, p) })) return;
+    handles.select(next.index);
     ctx.status(t("deBoor.knotsReset"), "info");
     commitWork();
   }
@@ -532,33 +423,15 @@ export function mount(container, initialState, ctx) {
     const p = work.degree;
 
     // Control polygon, then its active part (the p + 1 points of the span) solid.
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
     if (work.construction) {
-      r.beginPath();
-      for (let j = 0; j <= p; j++) {
-        const x = v.sx(triangle[2 * j]);
-        const y = v.sy(triangle[2 * j + 1]);
-        if (j === 0) r.moveTo(x, y);
-        else r.lineTo(x, y);
-      }
+      flatPath(r, v, triangle, 0, p + 1);
       r.paint(theme.axis);
     }
 
     // The curve, from one batched sample call.
-    r.beginPath();
-    for (let s = 0; s < CURVE_SAMPLES; s++) {
-      const x = v.sx(samples[2 * s]);
-      const y = v.sy(samples[2 * s + 1]);
-      if (s === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // Centroid of the active points on screen: labels go on the side away from it.
@@ -799,7 +672,7 @@ export function mount(container, initialState, ctx) {
     spanCaption = t("deBoor.spanCaption", { k: subscript(k), k1: subscript(k + 1) });
     uCaption = t("deBoor.uCaption", { u: uText });
 
-    view.setLabel(t("deBoor.aria", { kind: kindOf(p), count: n + 1, knots: knots.map(numberText).join(" "), u: fmt(work.u), k, uk: numberText(knots[k]), uk1: numberText(knots[k + 1]), x: fmt(x, 2), y: fmt(y, 2) }));
+    view.setLabel(t("deBoor.aria", { kind: degreeName(p), count: n + 1, knots: knots.map(numberText).join(" "), u: fmt(work.u), k, uk: numberText(knots[k]), uk1: numberText(knots[k + 1]), x: fmt(x, 2), y: fmt(y, 2) }));
     degreeText.textContent = t("deBoor.degree", { p, count: n + 1, segments: curve.spans().length });
     spanText.textContent = t("deBoor.span", { k, ks: subscript(k), ks1: subscript(k + 1), uk: numberText(knots[k]), uk1: numberText(knots[k + 1]) });
     spanText.dataset.span = String(k);
@@ -910,11 +783,6 @@ export function mount(container, initialState, ctx) {
     table.replaceChildren(el("tbody", {}, rows));
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   syncDomain();
   recompute();
 
@@ -923,7 +791,7 @@ export function mount(container, initialState, ctx) {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
       const next = new sl.BSplineCurve(flatten(state.points), 2, state.degree, state.knots); // throws before anything changes
-      stop();
+      player.stop();
       curve.free();
       curve = next;
       work = structuredClone(state);
@@ -936,9 +804,7 @@ export function mount(container, initialState, ctx) {
       recompute();
     },
     destroy() {
-      playing = false;
-      cancelAnimationFrame(frameId);
-      view.canvas.removeEventListener("keydown", onFigureKey);
+      player.destroy();
       handles.destroy();
       formula.destroy();
       curve.free();
@@ -949,19 +815,4 @@ export function mount(container, initialState, ctx) {
 /** The domain [u_p, u_{n+1}] of a state (read off its knot vector). */
 function domainOf(state) {
   return [state.knots[state.degree], state.knots[state.points.length]];
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

@@ -3,14 +3,22 @@
  * shape — state, validate, mount → { update, destroy } — and its habits: the curve lives in
  * wasm and is updated in place while dragging (`setControlPoint`), the picture is drawn from
  * what the core returns (`deCasteljau(t)`, one `sampleUniform` per change), nothing is
- * allocated per frame in the draw path, and replaced wasm objects are freed.
+ * allocated per frame in the draw path, and replaced wasm objects are freed. What several demos
+ * need is in lib/ (see lib/README.md), not copied here: `Player` animates t, `pointHandles` and
+ * `withPointAdded`/`withPointRemoved` handle the control points, `titledTable` the table,
+ * `pointsPath`/`flatPath` the polylines.
  */
-import { Handles, roundToView, placeLabel as placeLabelAt } from "../lib/handles.js";
+import { Handles, placeLabel as placeLabelAt, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { Player } from "../lib/player.js";
+import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "de-casteljau";
 /** Prefix of this demo's keys in strings.js. */
@@ -32,17 +40,10 @@ export const MIN_POINTS = 2;
 export const MAX_POINTS = 11;
 /** Points sampled along the curve for drawing (one `sampleUniform` call per change). */
 const CURVE_SAMPLES = 256;
-/** Animation speed in t per second, and the step of the step buttons (ui.md). */
-const PLAY_SPEED = 0.25;
-const STEP = 1 / 16;
 /** Slider resolution for t. */
 const T_SLIDER_STEP = 0.001;
 /** Intermediate points are labelled up to this degree (beyond, labels crowd; the table has them). */
 const LABEL_LEVELS_MAX_DEGREE = 4;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
-/** Slack when snapping t to the step grid, so 0.25 counts as on the grid. */
-const GRID_SLACK = 1e-9;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -50,21 +51,6 @@ export function validate(state) {
   checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
   checkNumber(state, "t", { min: 0, max: 1 });
   checkBoolean(state, "construction");
-}
-
-/** "cubic", "quartic", … for degree n. */
-function kindOf(n) {
-  return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /**
@@ -82,27 +68,15 @@ export function mount(container, initialState, ctx) {
   let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
   let geometryDirty = true;
   let tDirty = true;
-  const pointScratch = new Float64Array(2);
   const levelLabels = []; // "p₀¹" … cached per (i, r)
-  const handleLabels = []; // "P₀" …
 
   // ------------------------------------------------------------ figure
   const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points) });
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -118,14 +92,12 @@ export function mount(container, initialState, ctx) {
     step: T_SLIDER_STEP,
     value: work.t,
     onChange: (value, final) => {
-      stop();
+      player.stop();
       setT(value, final);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const playButton = button({ label: t("control.play"), name: "play", pressed: false, onClick: () => toggle() });
-  const backButton = button({ label: t("control.stepBack"), title: t("control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
-  const forwardButton = button({ label: t("control.stepForward"), title: t("control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => commitWork() });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
   const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
   const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
@@ -140,74 +112,17 @@ export function mount(container, initialState, ctx) {
     },
   });
   ctx.slots.controls.append(
-    group(null, tSlider.element, el("div", { class: "sl-button-row" }, backButton, playButton, forwardButton)),
+    group(null, tSlider.element, player.element),
     group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
     group(null, constructionBox.element),
   );
 
-  // Space plays/pauses while the figure has focus.
-  const onFigureKey = (event) => {
-    if (event.key === " " && !event.ctrlKey && !event.metaKey) {
-      toggle();
-      event.preventDefault();
-    }
-  };
-  view.canvas.addEventListener("keydown", onFigureKey);
-
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-triangle-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "de-casteljau" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("de-casteljau");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableDegree = -1;
   let tableCells = []; // per triangle point: { exact, decimal } spans
-
-  // ------------------------------------------------------------ animation
-  let playing = false;
-  let lastTime = 0;
-  let frameId = 0;
-  const tick = (now) => {
-    if (!playing) return;
-    // The first frame's timestamp may precede performance.now() taken in play(): never step back.
-    const dt = Math.max(0, now - lastTime) / 1000;
-    lastTime = now;
-    const next = Math.min(1, work.t + PLAY_SPEED * dt);
-    setT(next, false);
-    if (next >= 1) stop();
-    else frameId = requestAnimationFrame(tick);
-  };
-
-  function play() {
-    if (playing) return;
-    if (work.t >= 1) setT(0, false);
-    playing = true;
-    playButton.textContent = t("control.pause");
-    playButton.setAttribute("aria-pressed", "true");
-    lastTime = performance.now();
-    frameId = requestAnimationFrame(tick);
-  }
-
-  /** Stops the animation and records where it stopped. */
-  function stop() {
-    if (!playing) return;
-    playing = false;
-    cancelAnimationFrame(frameId);
-    playButton.textContent = t("control.play");
-    playButton.setAttribute("aria-pressed", "false");
-    commitWork();
-  }
-
-  function toggle() {
-    if (playing) stop();
-    else play();
-  }
-
-  /** Moves t to the previous/next multiple of 1/16. */
-  function step(direction) {
-    stop();
-    const k = direction > 0 ? Math.floor(work.t / STEP + GRID_SLACK) + 1 : Math.ceil(work.t / STEP - GRID_SLACK) - 1;
-    setT(Math.min(1, Math.max(0, k * STEP)), true);
-  }
 
   function setT(value, final) {
     work.t = value;
@@ -234,35 +149,21 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("deCasteljau.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("deCasteljau.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected). */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("deCasteljau.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("deCasteljau.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -287,23 +188,11 @@ export function mount(container, initialState, ctx) {
     const n = pts.length - 1;
 
     // Control polygon.
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
 
     // The curve, from one batched sample call.
-    r.beginPath();
-    for (let k = 0; k < CURVE_SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // The triangle: level r has n + 1 - r points, stored after the levels before it.
@@ -392,7 +281,7 @@ export function mount(container, initialState, ctx) {
     const last = 2 * levelStart(n, n);
     const x = triangle[last];
     const y = triangle[last + 1];
-    view.setLabel(t("deCasteljau.aria", { kind: kindOf(n), count: n + 1, t: fmt(work.t), x: fmt(x, 2), y: fmt(y, 2) }));
+    view.setLabel(t("deCasteljau.aria", { kind: degreeName(n), count: n + 1, t: fmt(work.t), x: fmt(x, 2), y: fmt(y, 2) }));
     degreeText.textContent = t("deCasteljau.degree", { n, count: n + 1 });
     addButton.disabled = n + 1 >= MAX_POINTS;
     removeButton.disabled = n + 1 <= MIN_POINTS;
@@ -433,8 +322,7 @@ export function mount(container, initialState, ctx) {
         const decimalText = `(${fmt(px)}, ${fmt(py)})`;
         const exactText = exact ? `(${coord(px, level, false)}, ${coord(py, level, false)})` : decimalText;
         // Exact value first; the decimals underneath when they say something different.
-        setText(tableCells[k].exact, exactText);
-        setText(tableCells[k].decimal, exactText === decimalText ? "" : `≈ ${decimalText}`);
+        setValueSpans(tableCells[k], exactText, decimalText);
       }
     }
   }
@@ -448,18 +336,13 @@ export function mount(container, initialState, ctx) {
       const cells = [el("th", { scope: "row", text: t("deCasteljau.tableLevel", { r: level }) })];
       for (let i = 0; i <= n - level; i++) {
         const name = `${level === 0 ? "P" : "p"}${subscript(i)}${level === 0 ? "" : superscript(level)} = `;
-        const spans = { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) };
+        const spans = valueSpans();
         tableCells.push(spans);
         cells.push(el("td", { dataset: { level: String(level), index: String(i) } }, el("span", { class: "sl-cell-name", text: name }), spans.exact, spans.decimal));
       }
       rows.push(el("tr", {}, cells));
     }
     table.replaceChildren(el("tbody", {}, rows));
-  }
-
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
   }
 
   syncPanels();
@@ -469,7 +352,7 @@ export function mount(container, initialState, ctx) {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
       const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
-      stop();
+      player.stop();
       curve.free();
       curve = next;
       work = structuredClone(state);
@@ -482,27 +365,10 @@ export function mount(container, initialState, ctx) {
       recompute();
     },
     destroy() {
-      playing = false;
-      cancelAnimationFrame(frameId);
-      view.canvas.removeEventListener("keydown", onFigureKey);
+      player.destroy();
       handles.destroy();
       formula.destroy();
       curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

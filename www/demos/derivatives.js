@@ -7,13 +7,18 @@
  * (de-casteljau.js): the curve is updated in place while dragging (`setControlPoint`), and all
  * numbers come from the core (`derivative`, `curvature`, `hodograph`, `arcLength`).
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, placeLabel } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
+import { slider, button, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, exactFraction, fractionTex, allIntegers } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { Player } from "../lib/player.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, arrow } from "../lib/draw.js";
 
 export const id = "derivatives";
 /** Prefix of this demo's keys in strings.js. */
@@ -39,19 +44,9 @@ export const MIN_POINTS = 3;
 export const MAX_POINTS = 9;
 /** Points sampled along the curve and the hodograph (one `sampleUniform` each per change). */
 const CURVE_SAMPLES = 256;
-/** Animation speed in t per second, and the step of the step buttons (ui.md). */
-const PLAY_SPEED = 0.25;
-const STEP = 1 / 16;
 const T_SLIDER_STEP = 0.001;
-/** Slack when snapping t to the step grid. */
-const GRID_SLACK = 1e-9;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** Length of the drawn unit normal, CSS px. */
 const NORMAL_PX = 36;
-/** Arrow heads: length (CSS px) and half-angle (radians). */
-const ARROW_HEAD_PX = 10;
-const ARROW_HEAD_ANGLE = 0.45;
 /**
  * The osculating circle is left out when its radius exceeds this many times the size of the
  * control polygon (κ ≈ 0: "straight here").
@@ -75,16 +70,6 @@ export function validate(state) {
   checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
   checkNumber(state, "t", { min: 0, max: 1 });
   checkNumbers(state, "hodographOrigin", { min: 2, max: 2 });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points. */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /** A number as short text: integers without decimals, else 3 decimals. */
@@ -170,14 +155,12 @@ export function mount(container, initialState, ctx) {
     step: T_SLIDER_STEP,
     value: work.t,
     onChange: (value, final) => {
-      stop();
+      player.stop();
       setT(value, final);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const playButton = button({ label: t("control.play"), name: "play", pressed: false, onClick: () => toggle() });
-  const backButton = button({ label: t("control.stepBack"), title: t("control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
-  const forwardButton = button({ label: t("control.stepForward"), title: t("control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => commitWork() });
   const readout = el("p", { class: "sl-readout", dataset: { info: "curvature" }, "aria-live": "polite" });
   const readoutNote = el("p", { class: "sl-note", dataset: { info: "radius" } });
   const lengthText = el("p", { class: "sl-note", dataset: { info: "arc-length" } });
@@ -185,23 +168,13 @@ export function mount(container, initialState, ctx) {
   const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
   const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
   ctx.slots.controls.append(
-    group(null, tSlider.element, el("div", { class: "sl-button-row" }, backButton, playButton, forwardButton)),
+    group(null, tSlider.element, player.element),
     group(t("derivatives.curvatureLegend"), readout, readoutNote, lengthText),
     group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
   );
 
-  // Space plays/pauses while the figure has focus.
-  const onFigureKey = (event) => {
-    if (event.key === " " && !event.ctrlKey && !event.metaKey) {
-      toggle();
-      event.preventDefault();
-    }
-  };
-  view.canvas.addEventListener("keydown", onFigureKey);
-
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-derivatives-${Math.random().toString(36).slice(2, 8)}` });
   const quantityKeys = ["point", "dp", "ddp", "kappa", "radius", "dp0", "dp1", "length"];
   const cells = {};
   const quantityRows = quantityKeys.map((key) => {
@@ -209,55 +182,9 @@ export function mount(container, initialState, ctx) {
     return el("tr", {}, el("th", { scope: "row", text: t(`derivatives.row.${key}`) }), cells[key]);
   });
   const hodographBody = el("tbody");
-  const table = el("table", { class: "sl-table", dataset: { table: "derivatives" }, "aria-labelledby": tableTitle.id }, el("tbody", {}, quantityRows), hodographBody);
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, wrap: tableWrap } = titledTable("derivatives", { children: [el("tbody", {}, quantityRows), hodographBody] });
+  ctx.slots.details.append(tableTitle, tableWrap);
   let hodographCells = [];
-
-  // ------------------------------------------------------------ animation
-  let playing = false;
-  let lastTime = 0;
-  let frameId = 0;
-  const tick = (now) => {
-    if (!playing) return;
-    const dt = Math.max(0, now - lastTime) / 1000; // the first frame may precede play()
-    lastTime = now;
-    const next = Math.min(1, work.t + PLAY_SPEED * dt);
-    setT(next, false);
-    if (next >= 1) stop();
-    else frameId = requestAnimationFrame(tick);
-  };
-
-  function play() {
-    if (playing) return;
-    if (work.t >= 1) setT(0, false);
-    playing = true;
-    playButton.textContent = t("control.pause");
-    playButton.setAttribute("aria-pressed", "true");
-    lastTime = performance.now();
-    frameId = requestAnimationFrame(tick);
-  }
-
-  /** Stops the animation and records where it stopped. */
-  function stop() {
-    if (!playing) return;
-    playing = false;
-    cancelAnimationFrame(frameId);
-    playButton.textContent = t("control.play");
-    playButton.setAttribute("aria-pressed", "false");
-    commitWork();
-  }
-
-  function toggle() {
-    if (playing) stop();
-    else play();
-  }
-
-  /** Moves t to the previous/next multiple of 1/16. */
-  function step(direction) {
-    stop();
-    const k = direction > 0 ? Math.floor(work.t / STEP + GRID_SLACK) + 1 : Math.ceil(work.t / STEP - GRID_SLACK) - 1;
-    setT(Math.min(1, Math.max(0, k * STEP)), true);
-  }
 
   function setT(value, final) {
     work.t = value;
@@ -284,35 +211,22 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none, or the origin, is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("derivatives.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("derivatives.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes control point i (the last one when none is selected); the origin stays. */
   function removePoint(i) {
-    const pts = work.points;
-    if (i >= pts.length) return;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("derivatives.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 ? i : pts.length - 1;
-    pts.splice(at, 1);
+    if (i >= work.points.length) return; // not a control point
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("derivatives.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -449,13 +363,7 @@ export function mount(container, initialState, ctx) {
       else r.lineTo(v.sx(pts[i][0]), v.sy(pts[i][1]));
     }
     r.paint(theme.polygon);
-    r.beginPath();
-    for (let k = 0; k < CURVE_SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     const px = v.sx(point[0]);
@@ -508,26 +416,6 @@ export function mount(container, initialState, ctx) {
   function hodographLabel(i, n) {
     const key = n * (MAX_POINTS + 1) + i;
     return (hodographLabels[key] ??= `${n}(P${subscript(i + 1)}−P${subscript(i)})`);
-  }
-
-  /** An arrow from (x0, y0) to (x1, y1) in canvas px (nothing when it has no length). */
-  function arrow(r, x0, y0, x1, y1, style) {
-    const dx = x1 - x0;
-    const dy = y1 - y0;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) return;
-    const head = Math.min(ARROW_HEAD_PX * r.scale, length / 2);
-    const ux = dx / length;
-    const uy = dy / length;
-    const c = Math.cos(ARROW_HEAD_ANGLE);
-    const sn = Math.sin(ARROW_HEAD_ANGLE);
-    r.beginPath();
-    r.moveTo(x0, y0);
-    r.lineTo(x1, y1);
-    r.moveTo(x1 - head * (ux * c - uy * sn), y1 - head * (uy * c + ux * sn));
-    r.lineTo(x1, y1);
-    r.lineTo(x1 - head * (ux * c + uy * sn), y1 - head * (uy * c - ux * sn));
-    r.paint(style);
   }
 
   /** Labels an arrow at its tip, continuing its direction. */
@@ -609,11 +497,6 @@ export function mount(container, initialState, ctx) {
     for (let i = 0; i < n; i++) setText(hodographCells[i], `(${short(hodographPoints[2 * i])}, ${short(hodographPoints[2 * i + 1])})`);
   }
 
-  /** Sets a node's text only when it changed. */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -621,7 +504,7 @@ export function mount(container, initialState, ctx) {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
       const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
-      stop();
+      player.stop();
       curve.free();
       curve = next;
       work = structuredClone(state);
@@ -633,9 +516,7 @@ export function mount(container, initialState, ctx) {
       recompute();
     },
     destroy() {
-      playing = false;
-      cancelAnimationFrame(frameId);
-      view.canvas.removeEventListener("keydown", onFigureKey);
+      player.destroy();
       handles.destroy();
       formula.destroy();
       curve.free();

@@ -9,12 +9,14 @@
  * subdivision in JS), nothing is allocated per frame in the draw path, and replaced wasm
  * objects are freed.
  */
-import { Handles } from "../lib/handles.js";
+import { Handles, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { flatPath } from "../lib/draw.js";
 
 export const id = "flattening";
 /** Prefix of this demo's keys in strings.js. */
@@ -82,16 +84,6 @@ function coord(x) {
   return Number.isInteger(x) ? String(x) : fmt(x, 2);
 }
 
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** A tolerance as typed or shown: "0.05", "0.0015" (no trailing zeros, no float noise). */
 function formatTolerance(value) {
   return String(Number(value.toPrecision(SHOWN_DIGITS)));
@@ -120,27 +112,16 @@ export function mount(container, initialState, ctx) {
   let toleranceDirty = true;
   let countLabel = "";
   const pointScratch = new Float64Array(2);
-  const handleLabels = []; // "P₀" …
   /** The band's style: helper grey, width 2ε in world units (set per draw, made once). */
   const bandStyle = { stroke: "", strokeAlpha: BAND_ALPHA, width: 1, join: "round", cap: "round" };
 
   // ------------------------------------------------------------ figure
   const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points) });
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
   });
 
@@ -243,7 +224,7 @@ export function mount(container, initialState, ctx) {
     if (work.band) {
       bandStyle.stroke = theme.helper.stroke;
       bandStyle.width = (2 * work.tolerance * v.scale) / r.scale; // the renderer multiplies by r.scale
-      tracePolyline(r, v, polyline, vertices);
+      flatPath(r, v, polyline, 0, vertices);
       r.paint(bandStyle);
     }
 
@@ -256,11 +237,11 @@ export function mount(container, initialState, ctx) {
     r.paint(theme.polygon);
 
     // The curve, from one batched sample call.
-    tracePolyline(r, v, samples, CURVE_SAMPLES);
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // The polyline from flatten(ε) and its vertices.
-    tracePolyline(r, v, polyline, vertices);
+    flatPath(r, v, polyline, 0, vertices);
     r.paint(theme.levelStroke[0]);
     for (let k = 0; k < vertices; k++) r.point(v.sx(polyline[2 * k]), v.sy(polyline[2 * k + 1]), theme.levelPoint[0]);
 
@@ -268,17 +249,6 @@ export function mount(container, initialState, ctx) {
 
     // The count in the corner, so projections and exports carry it too.
     r.text(countLabel, COUNT_LABEL_INSET * r.scale, COUNT_LABEL_INSET * r.scale, theme.label, "left", "top");
-  }
-
-  /** Adds a flat 2D polyline of `count` vertices to the path, in screen coordinates. */
-  function tracePolyline(r, v, flat, count) {
-    r.beginPath();
-    for (let k = 0; k < count; k++) {
-      const x = v.sx(flat[2 * k]);
-      const y = v.sy(flat[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
   }
 
   // ------------------------------------------------------------ panels (formula, label)
@@ -319,11 +289,6 @@ export function mount(container, initialState, ctx) {
     ]);
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -361,19 +326,4 @@ export function mount(container, initialState, ctx) {
       curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

@@ -9,11 +9,14 @@
  */
 import { Handles, placeLabel } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { group, el, radios } from "../lib/controls.js";
+import { group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkChoice } from "../lib/validate.js";
 import { fmt, superscript } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { titledTable } from "../lib/table.js";
+import { pointsPath, flatPath, arrow } from "../lib/draw.js";
 
 export const id = "joining";
 /** Prefix of this demo's keys in strings.js. */
@@ -44,9 +47,6 @@ const DEGREE = POINTS_PER_PIECE - 1;
 const CURVE_SAMPLES = 128;
 /** The tangent arrows at the joint are drawn at this fraction of P′(1) and Q′(1). */
 const ARROW_SCALE = 1 / 6;
-/** Arrow heads: length (CSS px) and half-angle (radians). */
-const ARROW_HEAD_PX = 10;
-const ARROW_HEAD_ANGLE = 0.45;
 /** The tangent line P₂–P₃–Q₁ is drawn this fraction of its length beyond both ends. */
 const TANGENT_LINE_OVERSHOOT = 0.25;
 /** Half the side of the square marking a point the rule sets (CSS px). */
@@ -88,16 +88,6 @@ export function validate(state) {
   checkPoints(state, "left", { min: POINTS_PER_PIECE, max: POINTS_PER_PIECE });
   checkPoints(state, "right", { min: POINTS_PER_PIECE, max: POINTS_PER_PIECE });
   checkChoice(state, "rule", RULES);
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of a list of points. */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /** The two wasm pieces of a state: P on [0, 1], Q on [1, 2]. */
@@ -237,15 +227,14 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-joint-${Math.random().toString(36).slice(2, 8)}`, text: t("joining.tableCaption") });
   const rowKeys = ["p3-p2", "q1-q0", "dp", "dq", "ddp", "ddq"];
   const cells = {};
   const rows = rowKeys.map((key) => {
     cells[key] = el("td", { dataset: { vector: key } });
     return el("tr", {}, el("th", { scope: "row", text: t(`joining.row.${key}`) }), cells[key]);
   });
-  const table = el("table", { class: "sl-table", dataset: { table: "joining" }, "aria-labelledby": tableTitle.id }, el("tbody", {}, rows));
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, wrap: tableWrap } = titledTable("joining", { caption: t("joining.tableCaption"), children: [el("tbody", {}, rows)] });
+  ctx.slots.details.append(tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
   /** Records the shown state (panels follow at the next draw). */
@@ -424,15 +413,15 @@ export function mount(container, initialState, ctx) {
     }
 
     // Control polygons.
-    polyline(r, v, P);
+    pointsPath(r, v, P);
     r.paint(theme.polygon);
-    polyline(r, v, Q);
+    pointsPath(r, v, Q);
     r.paint(theme.polygon);
 
     // The two pieces: P blue, Q bluish green (and their labels tell them apart too).
-    samplesPath(r, v, leftSamples);
+    flatPath(r, v, leftSamples);
     r.paint(theme.curve);
-    samplesPath(r, v, rightSamples);
+    flatPath(r, v, rightSamples);
     r.paint(RIGHT_CURVE_STYLE);
 
     // Points the rule sets: a square around the handle.
@@ -466,26 +455,6 @@ export function mount(container, initialState, ctx) {
     const margin = TEXT_MARGIN_PX * r.scale;
     r.text(verdictText, margin, margin, theme.labelBold, "left", "top");
     r.text(ARROW_CAPTION, margin, v.height - margin, theme.labelSmall, "left", "bottom");
-  }
-
-  /** An arrow from (x0, y0) to (x1, y1) in canvas px (nothing when it has no length). */
-  function arrow(r, x0, y0, x1, y1, style) {
-    const dx = x1 - x0;
-    const dy = y1 - y0;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) return;
-    const head = Math.min(ARROW_HEAD_PX * r.scale, length / 2);
-    const ux = dx / length;
-    const uy = dy / length;
-    const c = Math.cos(ARROW_HEAD_ANGLE);
-    const s = Math.sin(ARROW_HEAD_ANGLE);
-    r.beginPath();
-    r.moveTo(x0, y0);
-    r.lineTo(x1, y1);
-    r.moveTo(x1 - head * (ux * c - uy * s), y1 - head * (uy * c + ux * s));
-    r.lineTo(x1, y1);
-    r.lineTo(x1 - head * (ux * c + uy * s), y1 - head * (uy * c - ux * s));
-    r.paint(style);
   }
 
   /**
@@ -552,11 +521,6 @@ export function mount(container, initialState, ctx) {
     formula.set(lines);
   }
 
-  /** Sets a node's text only when it changed. */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -595,42 +559,4 @@ export function mount(container, initialState, ctx) {
       right.free();
     },
   };
-}
-
-/** Adds a polyline through `points` (world) to the path. */
-function polyline(r, v, points) {
-  for (let i = 0; i < points.length; i++) {
-    const x = v.sx(points[i][0]);
-    const y = v.sy(points[i][1]);
-    if (i === 0) {
-      r.beginPath();
-      r.moveTo(x, y);
-    } else r.lineTo(x, y);
-  }
-}
-
-/** Adds the polyline through flat samples [x0, y0, x1, y1, …] to the path. */
-function samplesPath(r, v, samples) {
-  r.beginPath();
-  for (let k = 0; k < samples.length; k += 2) {
-    const x = v.sx(samples[k]);
-    const y = v.sy(samples[k + 1]);
-    if (k === 0) r.moveTo(x, y);
-    else r.lineTo(x, y);
-  }
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points. */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

@@ -16,13 +16,17 @@
  * (`sampleUniform`), and the α_i are only displayed from the knot vector (the core computes the
  * new points itself).
  */
-import { Handles, placeLabel, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "../lib/handles.js";
+import { Handles, placeLabel, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, simpleFraction, fractionText, fractionTex } from "../lib/format.js";
+import { fmt, subscript, simpleFraction, fractionText, fractionTex, degreeName } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath } from "../lib/draw.js";
+import { ParameterStrip } from "../lib/param-strip.js";
 
 export const id = "knot-insertion";
 /** Prefix of this demo's keys in strings.js. */
@@ -93,21 +97,6 @@ export function validate(state) {
   checkBoolean(state, "bezier");
 }
 
-/** "cubic", "quartic", … for degree p. */
-function kindOf(p) {
-  return p <= 5 ? t(`curve.degree.${p}`) : t("curve.degree.n", { n: p });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** A knot or parameter value as text: integers plain, else up to 3 decimals. */
 function knotText(value) {
   return Number.isInteger(value) ? String(value) : String(Number(value.toFixed(3)));
@@ -168,10 +157,7 @@ export function mount(container, initialState, ctx) {
   let distinct = []; // distinct knot values of the current curve
   let knotLabels = []; // their labels ("0 ×3")
   const insertedSet = new Set(); // inserted values (strip ticks)
-  const pointScratch = new Float64Array(2);
   const insetScratch = [0, 0, 0, 0];
-  const strip = { top: 0, x0: 0, x1: 0, a: 0, b: 1 };
-  const handleLabels = []; // "P₀" …
   const qLabels = []; // "Q₀" …
   let uLabel = "";
   let hoverIndex = -1; // the sample under the pointer (click inserts its u)
@@ -189,46 +175,24 @@ export function mount(container, initialState, ctx) {
     return insetScratch;
   }
 
-  // The knot strip claims the pointer first: press or drag there to set u.
-  let draggingU = false;
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      if (!inStrip(y)) return false;
-      draggingU = true;
-      setU(uAtPixel(x), false);
-      return true;
-    },
-    pointerMove(event, x) {
-      if (draggingU) setU(uAtPixel(x), false);
-    },
-    pointerUp(event, x) {
-      if (!draggingU) return;
-      draggingU = false;
-      setU(uAtPixel(x), true);
-    },
-    hover(x, y) {
-      if (!inStrip(y)) return null;
+  // The knot strip claims the pointer before the handles: press or drag there to set u.
+  const strip = new ParameterStrip(view, {
+    height: STRIP_PX,
+    margin: STRIP_MARGIN,
+    step: U_STEP,
+    range: () => domain(),
+    pick: (u, final) => setU(u, final),
+    over: () => {
       handles.leave(); // the pointer left the handles' area (they are not asked while it is here)
       setHover(-1);
-      return "col-resize";
     },
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      base.setControlPoint(i, pointScratch); // in place: the original curve is not rebuilt
+    ...pointHandles(() => work.points, (i, xy) => {
+      base.setControlPoint(i, xy); // in place: the original curve is not rebuilt
       geometryDirty = curvesStale = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
   });
 
@@ -302,9 +266,8 @@ export function mount(container, initialState, ctx) {
   const knotsAfter = el("p", { class: "sl-note", dataset: { info: "knots-after" } });
   const alphaText = el("p", { class: "sl-note", dataset: { info: "alphas" } });
   const insertedText = el("p", { class: "sl-note", dataset: { info: "inserted" } });
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-boehm-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "knot-insertion" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(knotsBefore, knotsAfter, alphaText, insertedText, tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("knot-insertion");
+  ctx.slots.details.append(knotsBefore, knotsAfter, alphaText, insertedText, tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
   /** Records the shown state (panels follow at the next draw, after the core recomputed). */
@@ -416,27 +379,6 @@ export function mount(container, initialState, ctx) {
   }
 
   // ------------------------------------------------------------ knot strip
-  function layoutStrip(width, height, scale) {
-    strip.top = height - STRIP_PX * scale;
-    strip.x0 = STRIP_MARGIN * scale;
-    strip.x1 = width - STRIP_MARGIN * scale;
-    [strip.a, strip.b] = domain();
-  }
-
-  function inStrip(y) {
-    layoutStrip(view.width, view.height, view.renderer.scale);
-    return y >= strip.top;
-  }
-
-  const ux = (u) => strip.x0 + ((u - strip.a) / (strip.b - strip.a)) * (strip.x1 - strip.x0);
-
-  /** u under canvas x in the strip, on the slider's grid. */
-  function uAtPixel(x) {
-    layoutStrip(view.width, view.height, view.renderer.scale);
-    const raw = strip.a + ((x - strip.x0) / (strip.x1 - strip.x0)) * (strip.b - strip.a);
-    return Math.round(Math.min(strip.b, Math.max(strip.a, raw)) / U_STEP) * U_STEP;
-  }
-
   // ------------------------------------------------------------ the core's answers
   function recompute() {
     if (curvesStale && work.inserted.length > 0) {
@@ -537,11 +479,11 @@ export function mount(container, initialState, ctx) {
     const inserted = work.inserted.length > 0;
 
     // The polygon before the last insertion: ghosted (the original one, plain, before any).
-    polyline(r, v, previousPoints, 0, previousPoints.length / 2);
+    flatPath(r, v, previousPoints);
     r.paint(inserted ? st.ghost : theme.polygon);
 
     // The curve (the same before and after: drawn from the refined curve).
-    polyline(r, v, samples, 0, CURVE_SAMPLES);
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     if (work.bezier) {
@@ -549,14 +491,14 @@ export function mount(container, initialState, ctx) {
       for (let s = 0; s < segments.length; s++) {
         const pts = segments[s];
         const colour = s % theme.levelStroke.length;
-        polyline(r, v, pts, 0, pts.length / 2);
+        flatPath(r, v, pts);
         r.paint(theme.levelStroke[colour]);
         for (let j = 0; j < pts.length / 2; j++) r.point(v.sx(pts[2 * j]), v.sy(pts[2 * j + 1]), theme.levelPoint[colour]);
       }
     } else if (inserted) {
       // The new polygon Q, strong; the points the last insertion made in vermillion.
       const count = currentPoints.length / 2;
-      polyline(r, v, currentPoints, 0, count);
+      flatPath(r, v, currentPoints, 0, count);
       r.paint(st.strong);
       for (let i = 0; i < count; i++) r.point(v.sx(currentPoints[2 * i]), v.sy(currentPoints[2 * i + 1]), st.q);
     }
@@ -586,17 +528,6 @@ export function mount(container, initialState, ctx) {
     }
 
     drawStrip(r, theme, st);
-  }
-
-  /** Adds the polyline through points first … first+count−1 of a flat xy array to a new path. */
-  function polyline(r, v, flat, first, count) {
-    r.beginPath();
-    for (let j = first; j < first + count; j++) {
-      const x = v.sx(flat[2 * j]);
-      const y = v.sy(flat[2 * j + 1]);
-      if (j === first) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
   }
 
   /**
@@ -632,7 +563,7 @@ export function mount(container, initialState, ctx) {
   /** The parameter line under the figure: the knots as ticks (inserted ones longer, vermillion) and u. */
   function drawStrip(r, theme, st) {
     const s = r.scale;
-    layoutStrip(r.width, r.height, s);
+    strip.layout(r.width, r.height, s);
     const top = strip.top;
     const axisY = top + STRIP_ROW.axis * s;
     r.beginPath();
@@ -642,7 +573,7 @@ export function mount(container, initialState, ctx) {
     r.beginPath();
     for (let j = 0; j < distinct.length; j++) {
       if (insertedSet.has(distinct[j])) continue;
-      const x = ux(distinct[j]);
+      const x = strip.px(distinct[j]);
       r.moveTo(x, axisY - TICK_PX * s);
       r.lineTo(x, axisY + TICK_PX * s);
     }
@@ -650,21 +581,21 @@ export function mount(container, initialState, ctx) {
     r.beginPath();
     for (let j = 0; j < distinct.length; j++) {
       if (!insertedSet.has(distinct[j])) continue;
-      const x = ux(distinct[j]);
+      const x = strip.px(distinct[j]);
       r.moveTo(x, axisY - INSERTED_TICK_PX * s);
       r.lineTo(x, axisY + INSERTED_TICK_PX * s);
     }
     r.paint(st.insertedTick);
     let lastLabel = -Infinity;
     for (let j = 0; j < distinct.length; j++) {
-      const x = ux(distinct[j]);
+      const x = strip.px(distinct[j]);
       const isEnd = j === distinct.length - 1;
       if (x - lastLabel < LABEL_SPACING_PX * s && !isEnd) continue;
       if (isEnd && x - lastLabel < LABEL_SPACING_PX * s) continue;
       r.text(knotLabels[j], x, top + STRIP_ROW.ticks * s, insertedSet.has(distinct[j]) ? theme.labelPoint : theme.labelSmall, "center", "middle");
       lastLabel = x;
     }
-    const x = ux(work.u);
+    const x = strip.px(work.u);
     r.point(x, axisY, theme.pointOnCurve);
     const align = x < strip.x0 + 40 * s ? "left" : x > strip.x1 - 40 * s ? "right" : "center";
     r.text(uLabel, x, top + STRIP_ROW.label * s, theme.labelPoint, align, "middle");
@@ -727,7 +658,7 @@ export function mount(container, initialState, ctx) {
     insertButton.disabled = work.inserted.length >= MAX_INSERTED;
 
     view.setLabel(t(preview ? "knotInsertion.ariaNone" : "knotInsertion.aria", {
-      kind: kindOf(p), count, knots: currentKnots.length, s: knotText(s),
+      kind: degreeName(p), count, knots: currentKnots.length, s: knotText(s),
       alphas: alphas.map(({ value }) => fmt(value)).join(", "),
       segments: work.bezier ? t("knotInsertion.ariaSegments", { count: segments.length }) : "",
     }));
@@ -752,11 +683,6 @@ export function mount(container, initialState, ctx) {
   function numberText(value) {
     const f = simpleFraction(value);
     return f ? fractionText(f) : fmt(value);
-  }
-
-  /** Sets a node's text only when it changed. */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
   }
 
   uSlider.range.min = String(domain()[0]);
@@ -784,7 +710,7 @@ export function mount(container, initialState, ctx) {
       work = structuredClone(state);
       handles.forgetPointer();
       if (handles.selected >= work.points.length) handles.select(-1);
-      draggingU = false;
+      strip.dragging = false;
       pressIndex = -1;
       hoverIndex = -1;
       uSlider.range.min = String(domain()[0]);
@@ -802,19 +728,4 @@ export function mount(container, initialState, ctx) {
       base.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

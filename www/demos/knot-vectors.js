@@ -10,12 +10,17 @@
  * drag and the curve is rebuilt (once per frame at most, in `recompute`) — the core has no
  * "set knots in place".
  */
-import { Handles, roundToView } from "../lib/handles.js";
+import { Handles, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, radios } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean, checkChoice } from "../lib/validate.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
+import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "knot-vectors";
 /** Prefix of this demo's keys in strings.js. */
@@ -46,8 +51,6 @@ export const SPACINGS = Object.freeze(["uniform", "chord", "centripetal"]);
 const KINDS = Object.freeze(["clamped", "unclamped", "closed"]);
 /** Points sampled along each curve (one `sampleUniform` call per curve and change). */
 const CURVE_SAMPLES = 256;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** Legend layout (CSS px × lecture scale): margin, swatch length, line height, gaps. */
 const LEGEND_MARGIN = 12;
 const LEGEND_SWATCH = 34;
@@ -65,21 +68,6 @@ export function validate(state) {
   checkBoolean(state, "clamped");
   checkBoolean(state, "unclamped");
   checkBoolean(state, "closed");
-}
-
-/** "cubic", "quartic", … for degree p. */
-function kindOf(p) {
-  return p <= 5 ? t(`curve.degree.${p}`) : t("curve.degree.n", { n: p });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /** A knot as short text: integers plain, else 3 decimals. */
@@ -130,8 +118,6 @@ export function mount(container, initialState, ctx) {
   let knotLists = [[], [], []]; // per curve: knots() as plain arrays (panels)
   let geometryDirty = true;
   let clampedKnotsDirty = false; // chord/centripetal knots follow the points: rebuild that curve
-  const pointScratch = new Float64Array(2);
-  const handleLabels = []; // "P₀" …
   const legendLabels = KINDS.map((kind) => t(`knotVectors.legend.${kind}`)); // [0] follows the spacing
   const domains = new Float64Array(6); // per curve: a, b
 
@@ -182,22 +168,12 @@ export function mount(container, initialState, ctx) {
     for (let c = 0; c < KINDS.length; c++) legendWidths[c] = r.measure(legendLabels[c], r.theme.labelSmall) / r.scale;
   }
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
+    ...pointHandles(() => work.points, (i, xy) => {
       // In place on every curve (the closed curve's repeated copy follows in the core).
-      for (const curve of curves) curve.setControlPoint(i, pointScratch);
+      for (const curve of curves) curve.setControlPoint(i, xy);
       if (work.spacing !== "uniform") clampedKnotsDirty = true;
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -249,8 +225,7 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-knots-${Math.random().toString(36).slice(2, 8)}`, text: t("knotVectors.tableCaption") });
-  const table = el("table", { class: "sl-table", dataset: { table: "knot-vectors" }, "aria-labelledby": tableTitle.id });
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("knot-vectors", { caption: t("knotVectors.tableCaption") });
   const tableRows = KINDS.map((kind, index) => {
     const cells = {
       knots: el("td", { dataset: { cell: "knots" } }),
@@ -267,7 +242,7 @@ export function mount(container, initialState, ctx) {
     el("thead", {}, el("tr", {}, ["curve", "knots", "domain", "start", "end"].map((key) => el("th", { scope: "col", text: t(`knotVectors.column.${key}`) })))),
     el("tbody", {}, tableRows.map((r) => r.row)),
   );
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  ctx.slots.details.append(tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
   /** Records the shown state (panels follow at the next draw, after the core recomputed). */
@@ -280,13 +255,8 @@ export function mount(container, initialState, ctx) {
    * refuse, e.g. chord spacing with two equal consecutive points), then frees the old ones.
    */
   function rebuild(next) {
-    let built;
-    try {
-      built = buildCurves(sl, next);
-    } catch (err) {
-      ctx.status(t("status.rejected", { message: err.message }), "error");
-      return false;
-    }
+    const built = buildOrReport(() => buildCurves(sl, next), ctx);
+    if (!built) return false;
     for (const curve of curves) curve.free();
     curves = built;
     work.points = next.points;
@@ -318,39 +288,21 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("knotVectors.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    const next = structuredClone(pts);
-    next.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
-    if (!rebuild({ ...work, points: next })) return;
-    handles.select(at + 1);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("knotVectors.maxPoints", { max: MAX_POINTS }), "error");
+    if (!rebuild({ ...work, points: next.points })) return;
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected); the degree drops if it must. */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("knotVectors.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const next = structuredClone(pts);
-    next.splice(at, 1);
-    const degree = Math.min(work.degree, next.length - 1);
-    if (!rebuild({ ...work, points: next, degree })) return;
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("knotVectors.minPoints", { min: MIN_POINTS }), "error");
+    const degree = Math.min(work.degree, next.points.length - 1);
+    if (!rebuild({ ...work, points: next.points, degree })) return;
     degreeSlider.set(degree);
-    handles.select(Math.min(at, next.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -392,13 +344,7 @@ export function mount(container, initialState, ctx) {
     const n = pts.length - 1;
 
     // Control polygon (closed with a dashed leg back to P₀ when the closed curve is shown).
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     if (work.closed) r.lineTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
     r.paint(theme.polygon);
 
@@ -406,13 +352,7 @@ export function mount(container, initialState, ctx) {
     for (let c = KINDS.length - 1; c >= 0; c--) {
       if (!work[KINDS[c]]) continue;
       const s = samples[c];
-      r.beginPath();
-      for (let k = 0; k < CURVE_SAMPLES; k++) {
-        const x = v.sx(s[2 * k]);
-        const y = v.sy(s[2 * k + 1]);
-        if (k === 0) r.moveTo(x, y);
-        else r.lineTo(x, y);
-      }
+      flatPath(r, v, s, 0, CURVE_SAMPLES);
       r.paint(theme.compareCurve[c]);
     }
     for (let c = 0; c < KINDS.length; c++) {
@@ -502,12 +442,7 @@ export function mount(container, initialState, ctx) {
     lines.push(`C_{\\text{${t("knotVectors.tex.clamped")}}}(u_{${p}}) = ${c0} ${c0 === p0 ? "= P_0" : "\\ne P_0"},\\qquad C_{\\text{${t("knotVectors.tex.unclamped")}}}(u_{${p}}) = ${u0} ${u0 === p0 ? "= P_0" : "\\ne P_0"}`);
     formula.set(lines);
 
-    view.setLabel(t("knotVectors.aria", { kind: kindOf(p), count: n + 1, clamped: knotLists[0].map(knotText).join(" "), c0, u0, p0 }));
-  }
-
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
+    view.setLabel(t("knotVectors.aria", { kind: degreeName(p), count: n + 1, clamped: knotLists[0].map(knotText).join(" "), c0, u0, p0 }));
   }
 
   recompute();
@@ -536,19 +471,4 @@ export function mount(container, initialState, ctx) {
       for (const curve of curves) curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curves lie in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

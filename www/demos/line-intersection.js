@@ -12,10 +12,13 @@
  */
 import { Handles, placeLabel } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
+import { slider, button, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, fractionText } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath } from "../lib/draw.js";
 
 export const id = "line-intersection";
 /** Prefix of this demo's keys in strings.js. */
@@ -72,16 +75,6 @@ function coord(x) {
   return Number.isInteger(x) ? String(x) : fmt(x, 2);
 }
 
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
 /** What the core says about a curve and a line (every call that can throw, together). */
 function intersect(curve, [[ax, ay], [bx, by]]) {
   const roots = curve.intersectLine(ax, ay, bx, by, ROOT_TOLERANCE);
@@ -114,7 +107,7 @@ export function mount(container, initialState, ctx) {
   let rootLabels = []; // "t = 0.266" per root, made when the roots change
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points, work.line) });
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf([...work.points, ...work.line]) });
   const handles = new Handles(view, {
     count: () => POINT_COUNT + LINE_HANDLES,
     get: (i, out) => {
@@ -166,9 +159,8 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-roots-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "intersections" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("intersections");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableCells = null; // per intersection: { t, point } cells
 
   // ------------------------------------------------------------ edits
@@ -250,13 +242,7 @@ export function mount(container, initialState, ctx) {
     r.paint(theme.polygon);
 
     // The curve, from one batched sample call.
-    r.beginPath();
-    for (let k = 0; k < CURVE_SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // The infinite line through A and B, across the whole figure.
@@ -387,11 +373,6 @@ export function mount(container, initialState, ctx) {
     table.replaceChildren(head, el("tbody", {}, rows));
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -422,19 +403,4 @@ export function mount(container, initialState, ctx) {
       curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of the control points and the line's two points. */
-function boundsOf(points, line) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of [...points, ...line]) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

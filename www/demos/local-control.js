@@ -10,16 +10,22 @@
  * Everything about the curve comes from the core: the knot vector (`knotVector(…, "clamped")`),
  * the samples (one `sampleUniform` for the curve, one `sample(us)` for the highlighted range,
  * one for the knot points), `span(u)`, `basis(u)` and `evaluate(u)`. JS only adds drawing
- * support: the convex hull polygon of a handful of points (monotone chain, below) and the knot
- * strip under the figure (ticks on a line). Drags go through `setControlPoint`.
+ * support: the convex hull polygon of a handful of points (monotone chain, `convexHull` in
+ * lib/geometry.js) and the knot strip under the figure (ticks on a line, picked through
+ * lib/param-strip.js). Drags go through `setControlPoint`.
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
+import { slider, button, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
-import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { CYCLE, WIDTH, RADIUS } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath } from "../lib/draw.js";
+import { ParameterStrip } from "../lib/param-strip.js";
 
 export const id = "local-control";
 /** Prefix of this demo's keys in strings.js. */
@@ -59,8 +65,6 @@ const STRIP_MARGIN = 34;
 const STRIP_ROW = Object.freeze({ label: 12, bar: 28, axis: 44, ticks: 62 });
 /** Half-length of a knot tick, CSS px. */
 const TICK_PX = 6;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -72,48 +76,6 @@ export function validate(state) {
   // Clamped knots 0 … n − p + 1: the domain of u.
   checkNumber(state, "u", { min: 0, max: count - state.degree });
   checkNumber(state, "point", { min: 0, max: count - 1, integer: true });
-}
-
-/** "cubic", "quartic", … for degree p. */
-function kindOf(p) {
-  return p <= 5 ? t(`curve.degree.${p}`) : t("curve.degree.n", { n: p });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
-
-/**
- * The convex hull of some of the points (drawing support for the strong convex hull property,
- * not a curve algorithm): Andrew's monotone chain. `indices` are indices into `points`; they are
- * sorted by x (then y), the lower chain is built left to right and the upper chain right to
- * left, popping the last vertex while it does not make a strict left turn (cross product ≤ 0,
- * so collinear points are dropped). Returns the hull's vertex indices counter-clockwise from the
- * leftmost point; one index when all points coincide, two when they are collinear.
- */
-export function convexHull(points, indices) {
-  const order = indices.slice().sort((a, b) => points[a][0] - points[b][0] || points[a][1] - points[b][1]);
-  const cross = (o, a, b) =>
-    (points[a][0] - points[o][0]) * (points[b][1] - points[o][1]) - (points[a][1] - points[o][1]) * (points[b][0] - points[o][0]);
-  const chain = (list) => {
-    const out = [];
-    for (const i of list) {
-      while (out.length >= 2 && cross(out[out.length - 2], out[out.length - 1], i) <= 0) out.pop();
-      out.push(i);
-    }
-    out.pop(); // the last vertex starts the other chain
-    return out;
-  };
-  const hull = chain(order).concat(chain(order.slice().reverse()));
-  if (hull.length === 0) return order.slice(0, 1); // all points equal (or a single point)
-  const same = (a, b) => points[a][0] === points[b][0] && points[a][1] === points[b][1];
-  return hull.length === 2 && same(hull[0], hull[1]) ? hull.slice(0, 1) : hull;
 }
 
 /** Product over r = 1..p of lcm(1..r): with integer knot gaps ≤ r at level r, it clears every
@@ -159,10 +121,7 @@ export function mount(container, initialState, ctx) {
   let point = null; // curve.evaluate(u)
   let activeHull = []; // hull vertex indices of P_{k−p} … P_k
   let wholeHull = []; // hull vertex indices of all points
-  const pointScratch = new Float64Array(2);
   const insetScratch = [0, 0, 0, 0];
-  const strip = { top: 0, x0: 0, x1: 0, a: 0, b: 1 };
-  const handleLabels = []; // "P₀" …
   let knotLabels = []; // "0 ×4" … per distinct knot
   let uLabel = "";
   let knotStyles = null; // per theme: { dot, tick }
@@ -178,45 +137,25 @@ export function mount(container, initialState, ctx) {
     return insetScratch;
   }
 
+  const uRange = [0, 1]; // the strip's [a, b], reused (no allocation per frame)
   // The knot strip claims the pointer before the handles: press or drag there to set u.
-  let draggingU = false;
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      if (!inStrip(y)) return false;
-      draggingU = true;
-      setU(uAtPixel(x), false);
-      return true;
+  const strip = new ParameterStrip(view, {
+    height: STRIP_PX,
+    margin: STRIP_MARGIN,
+    step: U_STEP,
+    range: () => {
+      uRange[1] = domainEnd();
+      return uRange;
     },
-    pointerMove(event, x) {
-      if (draggingU) setU(uAtPixel(x), false);
-    },
-    pointerUp(event, x) {
-      if (!draggingU) return;
-      draggingU = false;
-      setU(uAtPixel(x), true);
-    },
-    hover(x, y) {
-      if (!inStrip(y)) return null;
-      handles.leave(); // the pointer left the handles' area (they are not asked while it is here)
-      return "col-resize";
-    },
+    pick: (u, final) => setU(u, final),
+    over: () => handles.leave(), // the pointer left the handles' area (they are not asked while it is here)
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -282,9 +221,8 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-local-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "local-control" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("local-control");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableShape = "";
   let tableRows = []; // per i: { row, value, support }
 
@@ -351,60 +289,25 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("localControl.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("localControl.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected). */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= work.degree + 1) {
-      ctx.status(t("localControl.error.tooFewPoints", { min: work.degree + 1, p: work.degree, count: pts.length - 1 }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const next = withPointRemoved(work.points, i, work.degree + 1);
+    if (!next) return ctx.status(t("localControl.error.tooFewPoints", { min: work.degree + 1, p: work.degree, count: work.points.length - 1 }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
   // ------------------------------------------------------------ knot strip
-  function layoutStrip(width, height, scale) {
-    strip.top = height - STRIP_PX * scale;
-    strip.x0 = STRIP_MARGIN * scale;
-    strip.x1 = width - STRIP_MARGIN * scale;
-    strip.a = 0;
-    strip.b = domainEnd();
-  }
-
-  function inStrip(y) {
-    layoutStrip(view.width, view.height, view.renderer.scale);
-    return y >= strip.top;
-  }
-
-  const ux = (u) => strip.x0 + ((u - strip.a) / (strip.b - strip.a)) * (strip.x1 - strip.x0);
-
-  /** u under canvas x in the strip, on the slider's grid. */
-  function uAtPixel(x) {
-    layoutStrip(view.width, view.height, view.renderer.scale);
-    const raw = strip.a + ((x - strip.x0) / (strip.x1 - strip.x0)) * (strip.b - strip.a);
-    return Math.round(Math.min(strip.b, Math.max(strip.a, raw)) / U_STEP) * U_STEP;
-  }
-
   // ------------------------------------------------------------ the core's answers
   /** Asks the core for samples, span, basis and point when something changed. */
   function recompute() {
@@ -513,23 +416,11 @@ export function mount(container, initialState, ctx) {
     r.paint(theme.polygon);
 
     // The range P_i acts on: a band in P_i's colour under the curve, from one sample(us) call.
-    r.beginPath();
-    for (let j = 0; j < SUPPORT_SAMPLES; j++) {
-      const x = v.sx(supportSamples[2 * j]);
-      const y = v.sy(supportSamples[2 * j + 1]);
-      if (j === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, supportSamples, 0, SUPPORT_SAMPLES);
     r.paint(theme.basisBand[colour]);
 
     // The curve.
-    r.beginPath();
-    for (let j = 0; j < CURVE_SAMPLES; j++) {
-      const x = v.sx(samples[2 * j]);
-      const y = v.sy(samples[2 * j + 1]);
-      if (j === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // The joints C(u_j) at the distinct knots.
@@ -580,17 +471,17 @@ export function mount(container, initialState, ctx) {
   /** The parameter line under the figure: knots as ticks, the lit range, the span of u, u. */
   function drawStrip(r, theme, styles, colour) {
     const s = r.scale;
-    layoutStrip(r.width, r.height, s);
+    strip.layout(r.width, r.height, s);
     const top = strip.top;
     const axisY = top + STRIP_ROW.axis * s;
     // The span of u, shaded like the active hull.
     r.beginPath();
-    r.rect(ux(knots[span]), axisY - TICK_PX * 1.6 * s, ux(knots[span + 1]) - ux(knots[span]), TICK_PX * 3.2 * s);
+    r.rect(strip.px(knots[span]), axisY - TICK_PX * 1.6 * s, strip.px(knots[span + 1]) - strip.px(knots[span]), TICK_PX * 3.2 * s);
     r.paint(theme.helperFill);
     // The range of P_i, as a bar in its colour.
     r.beginPath();
-    r.moveTo(ux(supportLo), top + STRIP_ROW.bar * s);
-    r.lineTo(ux(supportHi), top + STRIP_ROW.bar * s);
+    r.moveTo(strip.px(supportLo), top + STRIP_ROW.bar * s);
+    r.lineTo(strip.px(supportHi), top + STRIP_ROW.bar * s);
     r.paint(theme.basisBand[colour]);
     // The axis and the knots.
     r.beginPath();
@@ -599,14 +490,14 @@ export function mount(container, initialState, ctx) {
     r.paint(theme.axis);
     r.beginPath();
     for (let j = 0; j < distinct.length; j++) {
-      const x = ux(distinct[j]);
+      const x = strip.px(distinct[j]);
       r.moveTo(x, axisY - TICK_PX * s);
       r.lineTo(x, axisY + TICK_PX * s);
     }
     r.paint(styles.tick);
-    for (let j = 0; j < distinct.length; j++) r.text(knotLabels[j], ux(distinct[j]), top + STRIP_ROW.ticks * s, theme.labelSmall, "center", "middle");
+    for (let j = 0; j < distinct.length; j++) r.text(knotLabels[j], strip.px(distinct[j]), top + STRIP_ROW.ticks * s, theme.labelSmall, "center", "middle");
     // u itself.
-    const x = ux(work.u);
+    const x = strip.px(work.u);
     r.point(x, axisY, theme.pointOnCurve);
     const align = x < strip.x0 + 40 * s ? "left" : x > strip.x1 - 40 * s ? "right" : "center";
     r.text(uLabel, x, top + STRIP_ROW.label * s, theme.labelPoint, align, "middle");
@@ -664,7 +555,7 @@ export function mount(container, initialState, ctx) {
     spanText.dataset.wholeHullVertices = String(wholeHull.length);
     supportText.textContent = t("localControl.readout.support", { name: `P${subscript(i)}`, lo, hi: `${hi}${closing}` });
     view.setLabel(t("localControl.aria", {
-      kind: kindOf(p), count: n + 1, name: `P${subscript(i)}`, lo, hi: `${hi}${closing}`,
+      kind: degreeName(p), count: n + 1, name: `P${subscript(i)}`, lo, hi: `${hi}${closing}`,
       u: fmt(work.u), k, names: activeNames.join(", "), x: fmt(x, 2), y: fmt(y, 2), hull: activeHull.length,
     }));
     addButton.disabled = n + 1 >= MAX_POINTS;
@@ -703,11 +594,6 @@ export function mount(container, initialState, ctx) {
     table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
   }
 
-  /** Sets a node's text only when it changed. */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   syncControls();
   recompute();
 
@@ -723,7 +609,7 @@ export function mount(container, initialState, ctx) {
       work = structuredClone(state);
       handles.forgetPointer();
       if (handles.selected >= work.points.length) handles.select(-1);
-      draggingU = false;
+      strip.dragging = false;
       syncControls();
       geometryDirty = structureDirty = supportDirty = uDirty = true;
       view.requestDraw();
@@ -735,19 +621,4 @@ export function mount(container, initialState, ctx) {
       curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

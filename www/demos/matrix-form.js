@@ -7,13 +7,18 @@
  * twice: as the matrix product of those displayed numbers and as `evaluate(u)` from the core,
  * so students see they agree. The curve itself is drawn from the core (`sampleUniform`, `sample`).
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, radios } from "../lib/controls.js";
+import { slider, button, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkChoice } from "../lib/validate.js";
-import { fmt, subscript, simpleFraction, fractionText, fractionTex } from "../lib/format.js";
+import { fmt, subscript, simpleFraction, fractionText, fractionTex, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { titledTable } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
+import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "matrix-form";
 /** Prefix of this demo's keys in strings.js. */
@@ -44,8 +49,6 @@ const CURVE_SAMPLES = 256;
 const SEGMENT_SAMPLES = 64;
 /** Slider resolution for t. */
 const T_SLIDER_STEP = 0.001;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** A press this close to the curve (CSS px) selects the segment under it. */
 const CURVE_HIT_PX = 8;
 /** Matrix entries equal within this count as the same (floating-point round-off). */
@@ -67,21 +70,6 @@ export function validate(state) {
 /** Number of segments n − p + 1 (one per span; no repeated interior knots here). */
 function segmentCount(state) {
   return state.points.length - state.degree;
-}
-
-/** "quadratic" / "cubic". */
-function kindOf(p) {
-  return t(`curve.degree.${p}`);
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /** The B-spline of a state: knots from the core's `knotVector` ("uniform" or "clamped"). */
@@ -134,27 +122,15 @@ export function mount(container, initialState, ctx) {
   const product = new Float64Array(2); // [t^p … 1] M [P…] from the displayed numbers
   let geometryDirty = true;
   let segmentDirty = true;
-  const pointScratch = new Float64Array(2);
-  const handleLabels = []; // "P₀" …
   let pointLabel = ""; // "C₂(t)", rebuilt when the segment changes
 
   // ------------------------------------------------------------ figure
   const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points) });
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= `P${subscript(i)}`),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -267,16 +243,18 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and tables
   const formula = new FormulaPanel(ctx.slots.formula);
-  const matrixTitle = el("p", { class: "sl-table-title", id: `sl-matrix-${Math.random().toString(36).slice(2, 8)}` });
-  const matrixTable = el("table", { class: "sl-table", dataset: { table: "matrix" }, "aria-labelledby": matrixTitle.id });
-  const resultTitle = el("p", { class: "sl-table-title", id: `sl-result-${Math.random().toString(36).slice(2, 8)}`, text: t("matrixForm.resultCaption") });
+  const { title: matrixTitle, table: matrixTable, wrap: matrixTableWrap } = titledTable("matrix");
   const productCell = el("td", { dataset: { result: "product" } });
   const evaluateCell = el("td", { dataset: { result: "evaluate" } });
-  const resultTable = el("table", { class: "sl-table", dataset: { table: "result" }, "aria-labelledby": resultTitle.id },
-    el("tbody", {},
-      el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.product") }), productCell),
-      el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.evaluate") }), evaluateCell)));
-  ctx.slots.details.append(matrixTitle, el("div", { class: "sl-table-wrap" }, matrixTable), resultTitle, el("div", { class: "sl-table-wrap" }, resultTable));
+  const result = titledTable("result", {
+    caption: t("matrixForm.resultCaption"),
+    children: [
+      el("tbody", {},
+        el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.product") }), productCell),
+        el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.evaluate") }), evaluateCell)),
+    ],
+  });
+  ctx.slots.details.append(matrixTitle, matrixTableWrap, result.title, result.wrap);
   let matrixSize = -1;
   let matrixCells = []; // td per entry, row-major
   let factorCell = null;
@@ -293,13 +271,8 @@ export function mount(container, initialState, ctx) {
    * refuse), then the old one is freed; the segment stays in range.
    */
   function rebuild(next) {
-    let built;
-    try {
-      built = buildCurve(sl, next);
-    } catch (err) {
-      ctx.status(t("status.rejected", { message: err.message }), "error");
-      return false;
-    }
+    const built = buildOrReport(() => buildCurve(sl, next), ctx);
+    if (!built) return false;
     curve.free();
     curve = built;
     work = next;
@@ -324,37 +297,20 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("matrixForm.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    const next = structuredClone(work);
-    next.points.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
-    if (!rebuild(next)) return;
-    handles.select(at + 1);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("matrixForm.maxPoints", { max: MAX_POINTS }), "error");
+    if (!rebuild({ ...structuredClone(work), points: next.points })) return;
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected); a cubic needs four points. */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= Math.max(MIN_POINTS, work.degree + 1)) {
-      ctx.status(t("matrixForm.minPoints", { min: Math.max(MIN_POINTS, work.degree + 1), p: work.degree }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const next = structuredClone(work);
-    next.points.splice(at, 1);
-    if (!rebuild(next)) return;
-    handles.select(Math.min(at, next.points.length - 1));
+    const min = Math.max(MIN_POINTS, work.degree + 1);
+    const next = withPointRemoved(work.points, i, min);
+    if (!next) return ctx.status(t("matrixForm.minPoints", { min, p: work.degree }), "error");
+    if (!rebuild({ ...structuredClone(work), points: next.points })) return;
+    handles.select(next.index);
     commitWork();
   }
 
@@ -398,13 +354,7 @@ export function mount(container, initialState, ctx) {
     const first = work.segment - 1; // P_{i−1}, the first active point
 
     // Control polygon, then the active part solid.
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
     r.beginPath();
     for (let j = 0; j <= p; j++) {
@@ -416,21 +366,9 @@ export function mount(container, initialState, ctx) {
     r.paint(theme.axis);
 
     // The selected segment as a band under the curve; the curve from one batched sample call.
-    r.beginPath();
-    for (let s = 0; s < SEGMENT_SAMPLES; s++) {
-      const x = v.sx(segmentSamples[2 * s]);
-      const y = v.sy(segmentSamples[2 * s + 1]);
-      if (s === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, segmentSamples, 0, SEGMENT_SAMPLES);
     r.paint(theme.highlightBand);
-    r.beginPath();
-    for (let s = 0; s < CURVE_SAMPLES; s++) {
-      const x = v.sx(samples[2 * s]);
-      const y = v.sy(samples[2 * s + 1]);
-      if (s === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // Rings around the active points, in the colours of their column in the formula.
@@ -539,7 +477,7 @@ export function mount(container, initialState, ctx) {
     setText(productCell, `(${fmt(product[0])}, ${fmt(product[1])})`);
     setText(evaluateCell, `(${fmt(evaluated[0])}, ${fmt(evaluated[1])})`);
 
-    view.setLabel(t("matrixForm.aria", { kind: kindOf(p), knots: t(`matrixForm.knots.${work.knots}`), count: n + 1, i, t: fmt(work.t), x: fmt(evaluated[0], 2), y: fmt(evaluated[1], 2), periodic: t(same ? "matrixForm.aria.periodic" : "matrixForm.aria.notPeriodic") }));
+    view.setLabel(t("matrixForm.aria", { kind: degreeName(p), knots: t(`matrixForm.knots.${work.knots}`), count: n + 1, i, t: fmt(work.t), x: fmt(evaluated[0], 2), y: fmt(evaluated[1], 2), periodic: t(same ? "matrixForm.aria.periodic" : "matrixForm.aria.notPeriodic") }));
   }
 
   /** Rebuilds the matrix table for (p + 1) × (p + 1) entries (only when the size changed). */
@@ -569,11 +507,6 @@ export function mount(container, initialState, ctx) {
     matrixTable.replaceChildren(el("thead", {}, el("tr", {}, header)), el("tbody", {}, rows));
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -597,19 +530,4 @@ export function mount(container, initialState, ctx) {
       curve.free();
     },
   };
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

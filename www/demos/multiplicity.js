@@ -18,13 +18,17 @@
  * control points, so the knots are replaced by the core's clamped uniform vector for the new
  * count (`knotVector(points, 2, 3, "clamped")`); knot multiplicities start again from 1.
  */
-import { Handles } from "../lib/handles.js";
+import { Handles, pointHandles } from "../lib/handles.js";
 import { KnotRuler, raiseMultiplicity, lowerMultiplicity, stackOf, knotText } from "../lib/knot-ruler.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { button, group, el, radios } from "../lib/controls.js";
+import { button, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript, superscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { boundsOf } from "../lib/geometry.js";
+import { titledTable } from "../lib/table.js";
+import { pointsPath } from "../lib/draw.js";
+import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "multiplicity";
 /** Prefix of this demo's keys in strings.js. */
@@ -127,7 +131,6 @@ export function mount(container, initialState, ctx) {
   let joints = []; // measured per distinct interior knot: { knot, c, g, left: [x, y], right: [x, y] }
   let knotsDirty = true;
   let geometryDirty = true;
-  const pointScratch = new Float64Array(2);
   const insetScratch = [0, 0, 0, 0];
   const domainScratch = [0, 1];
   let handleLabels = []; // "P₄ = P₅ = P₆" …, rebuilt when the repetition changes
@@ -152,22 +155,12 @@ export function mount(container, initialState, ctx) {
   });
 
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => (handleLabels[i] ??= pointName(i)),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
+    ...pointHandles(() => work.points, (i, xy) => {
       const first = expandedIndex(work, i);
       const copies = i === work.repeatPoint ? work.repeatTimes : 1;
-      for (let c = 0; c < copies; c++) curve.setControlPoint(first + c, pointScratch); // in place
+      for (let c = 0; c < copies; c++) curve.setControlPoint(first + c, xy); // in place
       geometryDirty = true;
-    },
+    }, (i) => (handleLabels[i] ??= pointName(i))),
     commit: (kind, i, merge) => commitWork(merge),
     select: (i) => i >= 0 && ruler.select(-1),
   });
@@ -210,23 +203,24 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ formula and tables
   const formula = new FormulaPanel(ctx.slots.formula);
-  const suffix = Math.random().toString(36).slice(2, 8);
-  const notesTitle = el("p", { class: "sl-table-title", id: `sl-notes-${suffix}`, text: t("multiplicity.notesCaption") });
   const notesCells = [];
   const notesRows = NOTES_TABLE.map((row, k) => {
     const cells = row.map((text, column) => el("td", { dataset: { column: column === 0 ? "points" : "knots", multiplicity: String(k + 1) }, text: column === 1 && k === 3 ? t("multiplicity.notesBreak") : text }));
     notesCells.push(cells);
     return el("tr", { dataset: { multiplicity: String(k + 1) } }, el("th", { scope: "row", text: String(k + 1) }), cells);
   });
-  const notesTable = el("table", { class: "sl-table", dataset: { table: "notes" }, "aria-labelledby": notesTitle.id },
-    el("thead", {}, el("tr", {},
-      el("th", { scope: "col", text: t("multiplicity.colMultiplicity") }),
-      el("th", { scope: "col", text: t("multiplicity.colPoints") }),
-      el("th", { scope: "col", text: t("multiplicity.colKnots") }))),
-    el("tbody", {}, notesRows));
-  const knotsTitle = el("p", { class: "sl-table-title", id: `sl-knots-${suffix}`, text: t("multiplicity.knotsCaption") });
-  const knotsTable = el("table", { class: "sl-table", dataset: { table: "knots" }, "aria-labelledby": knotsTitle.id });
-  ctx.slots.details.append(notesTitle, el("div", { class: "sl-table-wrap" }, notesTable), knotsTitle, el("div", { class: "sl-table-wrap" }, knotsTable));
+  const notes = titledTable("notes", {
+    caption: t("multiplicity.notesCaption"),
+    children: [
+      el("thead", {}, el("tr", {},
+        el("th", { scope: "col", text: t("multiplicity.colMultiplicity") }),
+        el("th", { scope: "col", text: t("multiplicity.colPoints") }),
+        el("th", { scope: "col", text: t("multiplicity.colKnots") }))),
+      el("tbody", {}, notesRows),
+    ],
+  });
+  const { title: knotsTitle, table: knotsTable, wrap: knotsTableWrap } = titledTable("knots", { caption: t("multiplicity.knotsCaption") });
+  ctx.slots.details.append(notes.title, notes.wrap, knotsTitle, knotsTableWrap);
 
   // ------------------------------------------------------------ edits
   /** Records the shown state (panels follow at the next draw, after the core recomputed). */
@@ -241,13 +235,8 @@ export function mount(container, initialState, ctx) {
 
   /** Replaces the curve after the knots or the repetition changed; false (and a message) if refused. */
   function rebuild() {
-    let next;
-    try {
-      next = build(work);
-    } catch (err) {
-      ctx.status(t("status.rejected", { message: err.message }), "error");
-      return false;
-    }
+    const next = buildOrReport(() => build(work), ctx);
+    if (!next) return false;
     curve.free();
     curve = next;
     knotsDirty = true;
@@ -412,13 +401,7 @@ export function mount(container, initialState, ctx) {
     const pts = work.points;
 
     // Control polygon (of the distinct points: a repeated point is one corner).
-    r.beginPath();
-    for (let i = 0; i < pts.length; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts);
     r.paint(theme.polygon);
 
     // The curve, from one batched sample call; at a break the pieces are not joined.
@@ -588,11 +571,6 @@ export function mount(container, initialState, ctx) {
     return "";
   }
 
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -630,19 +608,4 @@ function pair([x, y]) {
 /** "₁₂" → "12". */
 function fromSubscript(text) {
   return text.replace(/[₀-₉]/g, (c) => String(c.charCodeAt(0) - 0x2080));
-}
-
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
 }

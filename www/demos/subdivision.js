@@ -9,12 +9,17 @@
  * place while dragging, everything drawn comes from the core (`sampleUniform`, `split`,
  * `deCasteljau`), the draw path allocates nothing and replaced wasm objects are freed.
  */
-import { Handles, roundToView, placeLabel } from "../lib/handles.js";
+import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
+import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
+import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { Player } from "../lib/player.js";
+import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "subdivision";
 /** Prefix of this demo's keys in strings.js. */
@@ -41,13 +46,8 @@ export const MAX_LEVELS = 6;
 const HALF = 0.5;
 /** Points sampled along the curve for drawing (one `sampleUniform` call per change). */
 const CURVE_SAMPLES = 256;
-/** Step of the step buttons for t0 (ui.md), and the slider resolution. */
-const STEP = 1 / 16;
+/** Slider resolution for t0. */
 const T_SLIDER_STEP = 0.001;
-/** Slack when snapping t to the step grid, so 0.25 counts as on the grid. */
-const GRID_SLACK = 1e-9;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** Left/right points are labelled up to this degree (beyond, labels crowd; the table has them). */
 const LABEL_MAX_DEGREE = 6;
 /** Fitting leaves this fraction of the width free on each side for the long end labels "P₀ = L₀". */
@@ -62,21 +62,6 @@ export function validate(state) {
   checkNumber(state, "t", { min: 0, max: 1 });
   checkNumber(state, "levels", { min: 0, max: MAX_LEVELS, integer: true });
   checkBoolean(state, "triangle");
-}
-
-/** "cubic", "quartic", … for degree n. */
-function kindOf(n) {
-  return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
-}
-
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
 }
 
 /**
@@ -127,28 +112,17 @@ export function mount(container, initialState, ctx) {
   let geometryDirty = true;
   let tDirty = true;
   let levelsDirty = true;
-  const pointScratch = new Float64Array(2);
   const handleLabels = []; // "P₀", or "P₀ = L₀" at the ends while the split is shown
   const sideLabels = []; // "L₁", "R₂" … cached per (side, i)
   let splitLabel = ""; // "L₃ = R₀"
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points, END_LABEL_ROOM) });
+  const view = ctx.createFigure({ draw, bounds: () => paddedBounds(work.points, END_LABEL_ROOM) });
   const handles = new Handles(view, {
-    count: () => work.points.length,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => handleLabel(i),
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
+    ...pointHandles(() => work.points, (i, xy) => {
+      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
-    },
+    }, handleLabel),
     commit: (kind, i, merge) => commitWork(merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
@@ -166,8 +140,13 @@ export function mount(container, initialState, ctx) {
     onChange: (value, final) => setT(value, final),
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const backButton = button({ label: t("control.stepBack"), title: t("subdivision.control.stepBack.title"), name: "step-back", onClick: () => step(-1) });
-  const forwardButton = button({ label: t("control.stepForward"), title: t("subdivision.control.stepForward.title"), name: "step", onClick: () => step(1) });
+  const stepper = new Player(view, {
+    get: () => work.t,
+    set: (value, final) => setT(value, final),
+    playable: false,
+    stepBackTitle: t("subdivision.control.stepBack.title"),
+    stepTitle: t("subdivision.control.stepForward.title"),
+  });
   const levelsSlider = slider({
     label: t("subdivision.control.levels"),
     inputLabel: t("subdivision.control.levels.input"),
@@ -195,26 +174,19 @@ export function mount(container, initialState, ctx) {
   const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
   const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
   ctx.slots.controls.append(
-    group(null, tSlider.element, el("div", { class: "sl-button-row" }, backButton, forwardButton), triangleBox.element),
+    group(null, tSlider.element, stepper.element, triangleBox.element),
     group(null, levelsSlider.element, levelsText),
     group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
   );
 
   // ------------------------------------------------------------ formula and table
   const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-subdivision-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "subdivision" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
+  const { title: tableTitle, table, wrap: tableWrap } = titledTable("subdivision");
+  ctx.slots.details.append(tableTitle, tableWrap);
   let tableDegree = -1;
   let tableCells = []; // per i: { left: { exact, decimal }, right: { exact, decimal } }
 
   // ------------------------------------------------------------ edits
-  /** Moves t0 to the previous/next multiple of 1/16. */
-  function step(direction) {
-    const k = direction > 0 ? Math.floor(work.t / STEP + GRID_SLACK) + 1 : Math.ceil(work.t / STEP - GRID_SLACK) - 1;
-    setT(Math.min(1, Math.max(0, k * STEP)), true);
-  }
-
   function setT(value, final) {
     work.t = value;
     tSlider.set(value);
@@ -250,35 +222,21 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("subdivision.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    // Between two points: the middle of the leg; after the last: continue the last leg.
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("subdivision.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     commitWork();
   }
 
   /** Removes handle i (the last one when none is selected). */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("subdivision.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("subdivision.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     commitWork();
   }
 
@@ -326,23 +284,11 @@ export function mount(container, initialState, ctx) {
     }
 
     // The original control polygon.
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      const x = v.sx(pts[i][0]);
-      const y = v.sy(pts[i][1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    pointsPath(r, v, pts, 0, n + 1);
     r.paint(theme.polygon);
 
     // The curve, from one batched sample call.
-    r.beginPath();
-    for (let k = 0; k < CURVE_SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
+    flatPath(r, v, samples, 0, CURVE_SAMPLES);
     r.paint(theme.curve);
 
     // Repeated subdivision: 2^k polygons in two alternating colours, over
@@ -524,7 +470,7 @@ export function mount(container, initialState, ctx) {
 
     const levelsAria = k === 0 ? "" : t("subdivision.ariaLevels", { k, polygons, total });
     view.setLabel(
-      t("subdivision.aria", { kind: kindOf(n), count: n + 1, t: fmt(work.t), n: subscript(n), x: fmt(right[0], 2), y: fmt(right[1], 2) }) + levelsAria,
+      t("subdivision.aria", { kind: degreeName(n), count: n + 1, t: fmt(work.t), n: subscript(n), x: fmt(right[0], 2), y: fmt(right[1], 2) }) + levelsAria,
     );
   }
 
@@ -532,8 +478,7 @@ export function mount(container, initialState, ctx) {
   function fillCell(cell, flat, i, coord) {
     const decimalText = `(${fmt(flat[2 * i])}, ${fmt(flat[2 * i + 1])})`;
     const exactText = `(${coord(flat[2 * i], false)}, ${coord(flat[2 * i + 1], false)})`;
-    setText(cell.exact, exactText);
-    setText(cell.decimal, exactText === decimalText ? "" : `≈ ${decimalText}`);
+    setValueSpans(cell, exactText, decimalText);
   }
 
   /** Rebuilds the table's rows for degree n (only when the degree changed). */
@@ -547,8 +492,8 @@ export function mount(container, initialState, ctx) {
     const rows = [];
     for (let i = 0; i <= n; i++) {
       const cells = {
-        left: { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) },
-        right: { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) },
+        left: valueSpans(),
+        right: valueSpans(),
       };
       tableCells.push(cells);
       const leftName = `l${subscript(i)} = p${subscript(0)}${superscript(i)} = `;
@@ -559,11 +504,6 @@ export function mount(container, initialState, ctx) {
         el("td", { dataset: { side: "right", index: String(i) } }, el("span", { class: "sl-cell-name", text: rightName }), cells.right.exact, cells.right.decimal)));
     }
     table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
-  }
-
-  /** Sets a node's text only when it changed (no layout work for identical text). */
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
   }
 
   recompute();
@@ -586,6 +526,7 @@ export function mount(container, initialState, ctx) {
       recompute();
     },
     destroy() {
+      stepper.destroy();
       handles.destroy();
       formula.destroy();
       curve.free();
@@ -593,21 +534,9 @@ export function mount(container, initialState, ctx) {
   };
 }
 
-/**
- * [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull), widened
- * on the left and right by `room` × the width.
- */
-function boundsOf(points, room = 0) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
+/** The points' bounding box (the curve lies in their convex hull), widened left and right by `room` × the width. */
+function paddedBounds(points, room) {
+  const [x0, y0, x1, y1] = boundsOf(points);
   const pad = room * (x1 - x0);
   return [x0 - pad, y0, x1 + pad, y1];
 }

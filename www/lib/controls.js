@@ -27,6 +27,11 @@ export function el(tag, props = {}, ...children) {
   return node;
 }
 
+/** Sets a node's text only when it changed (no layout work for identical text). */
+export function setText(node, text) {
+  if (node.textContent !== text) node.textContent = text;
+}
+
 /**
  * A slider with a typed-value box.
  * @param {object} o

@@ -312,3 +312,60 @@ export class SvgRecorder {
     );
   }
 }
+
+/**
+ * Starts a new path: the polyline through points `from` … `to − 1` of a list of [x, y] world
+ * points (`view` maps them to CSS px, e.g. a control polygon). Paint it with `r.paint(style)`.
+ * Allocates nothing, so draw functions may call it every frame.
+ */
+export function pointsPath(r, view, points, from = 0, to = points.length) {
+  r.beginPath();
+  for (let i = from; i < to; i++) {
+    const x = view.sx(points[i][0]);
+    const y = view.sy(points[i][1]);
+    if (i === from) r.moveTo(x, y);
+    else r.lineTo(x, y);
+  }
+}
+
+/**
+ * Starts a new path: the polyline through vertices `from` … `to − 1` of a flat world array
+ * [x0, y0, x1, y1, …] such as `sampleUniform` returns (default: all of it). Paint it with
+ * `r.paint(style)`. Allocates nothing.
+ */
+export function flatPath(r, view, flat, from = 0, to = flat.length / 2) {
+  r.beginPath();
+  for (let k = from; k < to; k++) {
+    const x = view.sx(flat[2 * k]);
+    const y = view.sy(flat[2 * k + 1]);
+    if (k === from) r.moveTo(x, y);
+    else r.lineTo(x, y);
+  }
+}
+
+/** Arrow heads: length (CSS px at scale 1) and half-angle (radians). */
+export const ARROW_HEAD_PX = 10;
+export const ARROW_HEAD_ANGLE = 0.45;
+
+/**
+ * Paints an arrow from (x0, y0) to (x1, y1), canvas CSS px, with `style` (a vector such as a
+ * derivative); nothing when it is shorter than a pixel. The head is at most half the arrow.
+ */
+export function arrow(r, x0, y0, x1, y1, style) {
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) return;
+  const head = Math.min(ARROW_HEAD_PX * r.scale, length / 2);
+  const ux = dx / length;
+  const uy = dy / length;
+  const c = Math.cos(ARROW_HEAD_ANGLE);
+  const s = Math.sin(ARROW_HEAD_ANGLE);
+  r.beginPath();
+  r.moveTo(x0, y0);
+  r.lineTo(x1, y1);
+  r.moveTo(x1 - head * (ux * c - uy * s), y1 - head * (uy * c + ux * s));
+  r.lineTo(x1, y1);
+  r.lineTo(x1 - head * (ux * c + uy * s), y1 - head * (uy * c - ux * s));
+  r.paint(style);
+}

@@ -2,6 +2,7 @@
  * Number formatting for labels, tables and formulas: fixed decimals, exact fractions when the
  * inputs allow them, and Unicode sub/superscripts for labels such as P₀ or p₁².
  */
+import { t } from "./strings.js";
 
 /** Decimals shown for parameters and coordinates (ui.md). */
 export const DECIMALS = 3;
@@ -23,6 +24,11 @@ export function subscript(n) {
 /** Digits of a non-negative integer written with Unicode superscripts: 2 → "²". */
 export function superscript(n) {
   return String(n).replace(/\d/g, (d) => SUPERSCRIPTS[d]);
+}
+
+/** The name of a curve's degree for labels: "linear", "quadratic", "cubic", … then "degree 7". */
+export function degreeName(n) {
+  return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
 }
 
 /** `value` with `DECIMALS` decimals, no "-0.000". */

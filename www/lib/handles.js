@@ -10,6 +10,7 @@
  * told `move(i, x, y)` (a preview, during a drag) and `commit(kind, i)` (the change is final:
  * add it to the undo history).
  */
+import { subscript } from "./format.js";
 
 /** Hit radius around a handle centre, in CSS px, for mouse/pen and for touch (ui.md). */
 export const HIT_RADIUS_MOUSE = 10;
@@ -32,6 +33,41 @@ export function roundToView(value, scale) {
   const digits = Math.max(0, Math.ceil(Math.log10(Math.max(scale, 1))) + SUBPIXEL_DIGITS);
   const factor = 10 ** digits;
   return Math.round(value * factor) / factor;
+}
+
+/**
+ * The `count`, `get`, `label` and `move` options of `Handles` for a demo's list of [x, y]
+ * control points: `points()` returns the current list (a demo may replace it); a dragged point is
+ * written into it, then `moved(i, xy)` runs with `xy` a reused Float64Array [x, y] to hand to
+ * `curve.setControlPoint(i, xy)` (nothing is allocated while dragging). Labels are P₀, P₁, …
+ * (cached), or `label(i)` when given.
+ *
+ *   const handles = new Handles(view, {
+ *     ...pointHandles(() => work.points, (i, xy) => {
+ *       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
+ *       geometryDirty = true;
+ *     }),
+ *     commit: (kind, i, merge) => commitWork(merge),
+ *   });
+ */
+export function pointHandles(points, moved, label = null) {
+  const labels = [];
+  const xy = new Float64Array(2);
+  return {
+    count: () => points().length,
+    get: (i, out) => {
+      out[0] = points()[i][0];
+      out[1] = points()[i][1];
+    },
+    label: label ?? ((i) => (labels[i] ??= `P${subscript(i)}`)),
+    move: (i, x, y) => {
+      points()[i][0] = x;
+      points()[i][1] = y;
+      xy[0] = x;
+      xy[1] = y;
+      moved(i, xy);
+    },
+  };
 }
 
 export class Handles {
@@ -392,3 +428,30 @@ export function placeLabel(r, text, x, y, dx, dy, radius, style) {
 const LABEL_GAP_PX = 5;
 /** |dx| above this aligns the label's near edge to the point; below, the label is centred. */
 const LABEL_ALIGN_THRESHOLD = 0.35;
+
+/**
+ * Draws `text` next to the screen point (x, y) on the side away from the centroid of `points`
+ * (world [x, y] points, e.g. the control points, mapped with `view`): outside the construction.
+ * Straight up-left when (x, y) is at the centroid. Allocates nothing.
+ */
+export function placeLabelAway(r, view, points, text, x, y, style, radius) {
+  let cx = 0;
+  let cy = 0;
+  for (let i = 0; i < points.length; i++) {
+    cx += view.sx(points[i][0]);
+    cy += view.sy(points[i][1]);
+  }
+  cx /= points.length;
+  cy /= points.length;
+  let dx = x - cx;
+  let dy = y - cy;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) {
+    dx = -Math.SQRT1_2;
+    dy = -Math.SQRT1_2;
+  } else {
+    dx /= length;
+    dy /= length;
+  }
+  placeLabel(r, text, x, y, dx, dy, radius, style);
+}

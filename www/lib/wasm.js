@@ -4,6 +4,8 @@
  * once. URLs resolve relative to this file, so embeds work from any page location.
  */
 
+import { t } from "./strings.js";
+
 const PACKAGE_URL = new URL("../pkg/splinelab.js", import.meta.url);
 
 let loading = null;
@@ -19,4 +21,23 @@ export function loadWasm() {
     throw err;
   });
   return loading;
+}
+
+/**
+ * Builds a new wasm object with `build()` — first, before the old one is freed, since the core
+ * may refuse the input. On a refusal (the constructor throws) the reason goes to the status line
+ * (`ctx.status`) and the result is null; the demo then keeps its old object and state:
+ *
+ *   const built = buildOrReport(() => new sl.BSplineCurve(flatten(next.points), 2, p, knots), ctx);
+ *   if (!built) return false;
+ *   curve.free();
+ *   curve = built;
+ */
+export function buildOrReport(build, ctx) {
+  try {
+    return build();
+  } catch (err) {
+    ctx.status(t("status.rejected", { message: err.message }), "error");
+    return null;
+  }
 }

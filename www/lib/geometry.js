@@ -1,0 +1,58 @@
+/**
+ * Point lists for the demos: the flat array the wasm constructors take, the bounding box a
+ * figure fits, and — as drawing support only, not a curve algorithm — the convex hull that the
+ * hull-property demos shade. Curve algorithms belong to the core (src/), never here.
+ */
+
+/** Flat Float64Array [x0, y0, x1, y1, …] of a list of [x, y] points (for the wasm constructors). */
+export function flatten(points) {
+  const flat = new Float64Array(points.length * 2);
+  points.forEach(([x, y], i) => {
+    flat[2 * i] = x;
+    flat[2 * i + 1] = y;
+  });
+  return flat;
+}
+
+/** [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull). */
+export function boundsOf(points) {
+  let x0 = Infinity;
+  let y0 = Infinity;
+  let x1 = -Infinity;
+  let y1 = -Infinity;
+  for (const [x, y] of points) {
+    x0 = Math.min(x0, x);
+    y0 = Math.min(y0, y);
+    x1 = Math.max(x1, x);
+    y1 = Math.max(y1, y);
+  }
+  return [x0, y0, x1, y1];
+}
+
+/**
+ * The convex hull of some of the points — drawing support for the (strong) convex hull
+ * property, not a curve algorithm: Andrew's monotone chain. `indices` (default: all points) are
+ * indices into `points`; they are sorted by x (then y), the lower chain is built left to right
+ * and the upper chain right to left, popping the last vertex while it does not make a strict
+ * left turn (cross product ≤ 0, so collinear points are dropped). Returns the hull's vertex
+ * indices counter-clockwise from the leftmost point; one index when all points coincide, two
+ * when they are collinear. O(n log n) for the few points of a demo.
+ */
+export function convexHull(points, indices = points.map((_, i) => i)) {
+  const order = indices.slice().sort((a, b) => points[a][0] - points[b][0] || points[a][1] - points[b][1]);
+  const cross = (o, a, b) =>
+    (points[a][0] - points[o][0]) * (points[b][1] - points[o][1]) - (points[a][1] - points[o][1]) * (points[b][0] - points[o][0]);
+  const chain = (list) => {
+    const out = [];
+    for (const i of list) {
+      while (out.length >= 2 && cross(out[out.length - 2], out[out.length - 1], i) <= 0) out.pop();
+      out.push(i);
+    }
+    out.pop(); // the last vertex starts the other chain
+    return out;
+  };
+  const hull = chain(order).concat(chain(order.slice().reverse()));
+  if (hull.length === 0) return order.slice(0, 1); // all points equal (or a single point)
+  const same = (a, b) => points[a][0] === points[b][0] && points[a][1] === points[b][1];
+  return hull.length === 2 && same(hull[0], hull[1]) ? hull.slice(0, 1) : hull;
+}

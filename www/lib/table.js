@@ -1,0 +1,40 @@
+/**
+ * The tables under a figure (details slot): a visible title that labels the table, the table in
+ * a wrapper that scrolls sideways, and the "exact value, decimals underneath" cell used for
+ * fractions.
+ *
+ *   const { title, table, wrap } = titledTable("de-casteljau");
+ *   ctx.slots.details.append(title, wrap);
+ *   …
+ *   setText(title, t("deCasteljau.tableCaption", { t: "1/4" }));
+ */
+import { el, setText } from "./controls.js";
+
+let nextId = 0;
+
+/**
+ * A `<p class="sl-table-title">` and a `<table class="sl-table" data-table="name">` labelled by it
+ * (`aria-labelledby`, an id unique on the page), the table inside a `.sl-table-wrap`.
+ * `caption`: the title's text when it never changes; `children`: the table's first contents.
+ * Returns `{ title, table, wrap }`; append `title` and `wrap` where the table goes.
+ */
+export function titledTable(name, { caption, children = [] } = {}) {
+  nextId += 1;
+  const title = el("p", { class: "sl-table-title", id: `sl-table-${nextId}`, text: caption });
+  const table = el("table", { class: "sl-table", dataset: { table: name }, "aria-labelledby": title.id }, children);
+  return { title, table, wrap: el("div", { class: "sl-table-wrap" }, table) };
+}
+
+/** The two spans of a value cell: `exact` (a fraction, or the decimals) and `decimal` under it. */
+export function valueSpans() {
+  return { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) };
+}
+
+/**
+ * Fills `valueSpans()`: the exact text first, then "≈ decimals" underneath when they say
+ * something different (nothing underneath when `exactText` is already the decimals).
+ */
+export function setValueSpans(spans, exactText, decimalText) {
+  setText(spans.exact, exactText);
+  setText(spans.decimal, exactText === decimalText ? "" : `≈ ${decimalText}`);
+}
