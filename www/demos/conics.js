@@ -17,6 +17,7 @@ import { slider, button, group, el } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
 
 export const id = "conics";
 /** Prefix of this demo's keys in strings.js. */
@@ -62,15 +63,6 @@ export function validate(state) {
   checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
 }
 
-/** Flat Float64Array [x0, y0, x1, y1, x2, y2] of the state's points. */
-function flatten(points) {
-  const flat = new Float64Array(6);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
 
 /** A small number to print precision: "0", "3.3e-16" or 3 decimals. */
 function smallText(x) {
@@ -409,17 +401,3 @@ function weightsOf(w1) {
   return new Float64Array([1, w1, 1]);
 }
 
-/** [xmin, ymin, xmax, ymax] of the points (the arc lies in the control triangle). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
-}

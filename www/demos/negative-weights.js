@@ -17,6 +17,7 @@ import { slider, button, group, el } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
 
 export const id = "negative-weights";
 /** Prefix of this demo's keys in strings.js. */
@@ -84,15 +85,6 @@ export function validate(state) {
   checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
 }
 
-/** Flat Float64Array of the three points. */
-function flatten(points) {
-  const flat = new Float64Array(6);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
 
 /** The homogeneous points (wᵢxᵢ, wᵢyᵢ, wᵢ) with weights 1, w₁, 1: plain 3D coordinates. */
 function homogeneousOf(points, w1) {
@@ -615,17 +607,3 @@ function inTriangle(x, y, points) {
   return d0 >= eps && d1 >= eps && d2 >= eps;
 }
 
-/** [xmin, ymin, xmax, ymax] of the three points. */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
-}

@@ -18,6 +18,7 @@ import { slider, button, group, el } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten } from "../lib/geometry.js";
 
 export const id = "projective";
 /** Prefix of this demo's keys in strings.js. */
@@ -106,15 +107,6 @@ function homography(corners) {
   return new Float64Array([a / SIZE, b / SIZE, x0, d / SIZE, e / SIZE, y0, g / SIZE, h / SIZE, 1]);
 }
 
-/** Flat Float64Array of the state's points. */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
 
 function weightText(w) {
   return String(Number(w.toPrecision(WEIGHT_DIGITS)));

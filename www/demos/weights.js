@@ -18,6 +18,7 @@ import { slider, button, checkbox, group, el } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers, checkBoolean } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex } from "../lib/format.js";
 import { t } from "../lib/strings.js";
+import { flatten, boundsOf } from "../lib/geometry.js";
 
 export const id = "weights";
 /** Prefix of this demo's keys in strings.js. */
@@ -116,15 +117,6 @@ function kindOf(n) {
   return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
 }
 
-/** Flat Float64Array [x0, y0, x1, y1, …] of the state's points (for the wasm constructor). */
-function flatten(points) {
-  const flat = new Float64Array(points.length * 2);
-  points.forEach(([x, y], i) => {
-    flat[2 * i] = x;
-    flat[2 * i + 1] = y;
-  });
-  return flat;
-}
 
 /** A weight as the panels show it: up to 3 significant digits, no trailing zeros. */
 function weightText(w) {
@@ -849,17 +841,3 @@ function ringRadius(w) {
   return RING_PX * w ** RING_EXPONENT;
 }
 
-/** [xmin, ymin, xmax, ymax] of a list of points (the curve lies in their convex hull). */
-function boundsOf(points) {
-  let x0 = Infinity;
-  let y0 = Infinity;
-  let x1 = -Infinity;
-  let y1 = -Infinity;
-  for (const [x, y] of points) {
-    x0 = Math.min(x0, x);
-    y0 = Math.min(y0, y);
-    x1 = Math.max(x1, x);
-    y1 = Math.max(y1, y);
-  }
-  return [x0, y0, x1, y1];
-}
