@@ -53,6 +53,16 @@ const median = (xs) => {
 };
 
 /** Max |a[k·dim + c] − ref[k·stride·dim + c]| over the n items of a strided subset. */
+/** Evaluates a peer point by point: `point(u)` returns an indexable [x, y]; writes `n` points. */
+function pointByPoint(params, n, out, point) {
+  for (let k = 0; k < n; k++) {
+    const q = point(params[k]);
+    out[2 * k] = q[0];
+    out[2 * k + 1] = q[1];
+  }
+  return out;
+}
+
 function stridedDiff(out, ref, n, dim, stride) {
   let m = 0;
   for (let k = 0; k < n; k++) {
@@ -206,14 +216,7 @@ const fallbacks = [];
         },
         {
           lib: "verb-nurbs", method: "NurbsCurve.point(u) per point", n: pv.n,
-          run: () => {
-            for (let k = 0; k < pv.n; k++) {
-              const q = vc.point(pv.ts[k]);
-              pv.out[2 * k] = q[0];
-              pv.out[2 * k + 1] = q[1];
-            }
-            return pv.out;
-          },
+          run: () => pointByPoint(pv.ts, pv.n, pv.out, (u) => vc.point(u)),
           check: (o) => check(o, pv.n, pv.stride),
         },
         {
@@ -224,26 +227,12 @@ const fallbacks = [];
         },
         {
           lib: "nurbs", method: "evaluate(out, t) per point", n: pn.n,
-          run: () => {
-            for (let k = 0; k < pn.n; k++) {
-              nc.evaluate(tmp, pn.ts[k]);
-              pn.out[2 * k] = tmp[0];
-              pn.out[2 * k + 1] = tmp[1];
-            }
-            return pn.out;
-          },
+          run: () => pointByPoint(pn.ts, pn.n, pn.out, (u) => (nc.evaluate(tmp, u), tmp)),
           check: (o) => check(o, pn.n, pn.stride),
         },
         {
           lib: "rhino3dm", method: "NurbsCurve.pointAt(t) per point", n: pr.n,
-          run: () => {
-            for (let k = 0; k < pr.n; k++) {
-              const q = rc.pointAt(pr.ts[k]);
-              pr.out[2 * k] = q[0];
-              pr.out[2 * k + 1] = q[1];
-            }
-            return pr.out;
-          },
+          run: () => pointByPoint(pr.ts, pr.n, pr.out, (u) => rc.pointAt(u)),
           check: (o) => check(o, pr.n, pr.stride),
         },
       ],
@@ -313,38 +302,17 @@ for (const rational of [false, true]) {
         { lib: "js-baseline", method: "de Boor, span hint", n: N, run: () => base.deBoorSample(jsCurve, us, out), check },
         {
           lib: "verb-nurbs", method: "NurbsCurve.point(u) per point", n: pv.n,
-          run: () => {
-            for (let k = 0; k < pv.n; k++) {
-              const q = vc.point(pv.us[k]);
-              pv.out[2 * k] = q[0];
-              pv.out[2 * k + 1] = q[1];
-            }
-            return pv.out;
-          },
+          run: () => pointByPoint(pv.us, pv.n, pv.out, (u) => vc.point(u)),
           check: (o) => check(o, pv.n, pv.stride),
         },
         {
           lib: "nurbs", method: "evaluate(out, u) per point", n: pn.n,
-          run: () => {
-            for (let k = 0; k < pn.n; k++) {
-              nc.evaluate(tmp, pn.us[k]);
-              pn.out[2 * k] = tmp[0];
-              pn.out[2 * k + 1] = tmp[1];
-            }
-            return pn.out;
-          },
+          run: () => pointByPoint(pn.us, pn.n, pn.out, (u) => (nc.evaluate(tmp, u), tmp)),
           check: (o) => check(o, pn.n, pn.stride),
         },
         {
           lib: "rhino3dm", method: "NurbsCurve.pointAt(u) per point", n: pr.n,
-          run: () => {
-            for (let k = 0; k < pr.n; k++) {
-              const q = rc.pointAt(pr.us[k]);
-              pr.out[2 * k] = q[0];
-              pr.out[2 * k + 1] = q[1];
-            }
-            return pr.out;
-          },
+          run: () => pointByPoint(pr.us, pr.n, pr.out, (u) => rc.pointAt(u)),
           check: (o) => check(o, pr.n, pr.stride),
         },
       ],
