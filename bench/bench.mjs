@@ -52,6 +52,18 @@ const median = (xs) => {
   return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);
 };
 
+/**
+ * The zero-copy rows of a curve (absent from older builds): results written into a buffer the
+ * curve keeps in the wasm memory and returned as a view of it, as a redraw loop would use them.
+ */
+function views(curve, params, n, check) {
+  if (!curve.sampleUniformView) return [];
+  return [
+    { lib: "splinelab", method: "sampleView(params), view into wasm memory", n, run: () => curve.sampleView(params), check },
+    { lib: "splinelab", method: `sampleUniformView(${n}), view into wasm memory`, n, run: () => curve.sampleUniformView(n), check },
+  ];
+}
+
 /** Max |a[k·dim + c] − ref[k·stride·dim + c]| over the n items of a strided subset. */
 /** Evaluates a peer point by point: `point(u)` returns an indexable [x, y]; writes `n` points. */
 function pointByPoint(params, n, out, point) {
@@ -195,6 +207,7 @@ const fallbacks = [];
       contenders: [
         { lib: "splinelab", method: "sample(ts)", n: N, run: () => curve.sample(ts), check: (o) => ((ref = o), 0) },
         { lib: "splinelab", method: `sampleUniform(${N})`, n: N, run: () => curve.sampleUniform(N), check },
+        ...views(curve, ts, N, check),
         { lib: "js-baseline", method: "de Casteljau loop", n: N, run: () => base.bezierSample(cp, 2, ts, out), check },
         { lib: "js-baseline", method: "Bernstein form, unrolled cubic", n: N, run: () => base.cubicSample2d(cp, ts, out), check },
         {
@@ -299,6 +312,7 @@ for (const rational of [false, true]) {
       contenders: [
         { lib: "splinelab", method: "sample(us)", n: N, run: () => curve.sample(us), check: (o) => ((ref = o), 0) },
         { lib: "splinelab", method: `sampleUniform(${N})`, n: N, run: () => curve.sampleUniform(N), check },
+        ...views(curve, us, N, check),
         { lib: "js-baseline", method: "de Boor, span hint", n: N, run: () => base.deBoorSample(jsCurve, us, out), check },
         {
           lib: "verb-nurbs", method: "NurbsCurve.point(u) per point", n: pv.n,

@@ -558,10 +558,12 @@ fn dense_sampling_equals_pointwise_evaluation() {
     let mut out = vec![0.0; us.len() * 2];
     c.sample_into(&us, &mut out).unwrap();
     for (k, &u) in us.iter().enumerate() {
-        assert_eq!(
+        let e = c.evaluate(u).unwrap();
+        assert_close2(
             DVec2::new(out[2 * k], out[2 * k + 1]),
-            c.evaluate(u).unwrap(),
-            "u = {u} (unsorted input)"
+            e,
+            1e-13 * (1.0 + e.length()),
+            &format!("u = {u} (unsorted input)"),
         );
     }
     let curves = c.basis_curves(41).unwrap();
@@ -804,6 +806,24 @@ fn fast_dense_sampling_equals_the_pointwise_path_for_every_degree() {
                 &format!("case {case}, p = {p}, u = {u}"),
             );
             assert_close3(DVec3::from_slice(&uniform[3 * k..]), e, tol, "uniform");
+        }
+        // Mixed densities: long runs take the per-span power form, short ones the basis
+        // functions; every knot and both domain ends are sampled exactly too.
+        let mut mixed: Vec<f64> = c.knots().as_slice()[p..count + 1].to_vec();
+        mixed.extend((0..40).map(|_| rng.range(a, b)));
+        let dense_at = rng.range(a, b);
+        mixed.extend((0..30).map(|k| dense_at + (b - dense_at) * k as f64 / 30.0));
+        mixed.sort_by(f64::total_cmp);
+        let mut out = vec![0.0; mixed.len() * 3];
+        c.sample_into(&mixed, &mut out).unwrap();
+        for (k, &u) in mixed.iter().enumerate() {
+            let e = c.evaluate(u).unwrap();
+            assert_close3(
+                DVec3::from_slice(&out[3 * k..]),
+                e,
+                1e-12 * (1.0 + e.length()),
+                &format!("mixed: case {case}, p = {p}, u = {u}"),
+            );
         }
     }
 }

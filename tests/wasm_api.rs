@@ -219,3 +219,35 @@ fn rational_constructors_and_projective_maps() {
             .contains("weights must stay > 0")
     );
 }
+
+#[test]
+fn sample_views_see_the_same_numbers_without_a_copy() {
+    use splinelab::wasm::JsBSplineCurve;
+    let mut bezier = example();
+    let copy = bezier.sample_uniform(9).unwrap();
+    let view = bezier.sample_uniform_view(9).unwrap();
+    assert_eq!(view.to_vec(), copy);
+    // The view is the curve's buffer in the wasm memory, not a copy of it.
+    let memory = wasm_bindgen::memory().unchecked_into::<js_sys::WebAssembly::Memory>();
+    assert_eq!(JsValue::from(view.buffer()), memory.buffer());
+    // Bernstein form at t = 1/2 of (0,0) (2,2) (6,4) (8,2): (0 + 3·2 + 3·6 + 8)/8, (0 + 6 + 12 + 2)/8.
+    assert_eq!(bezier.sample_view(&[0.5]).unwrap().to_vec(), vec![4.0, 2.5]);
+    assert!(message(bezier.sample_view(&[1.5])).contains("1.5"));
+    assert!(message(bezier.sample_uniform_view(usize::MAX)).contains("count"));
+    // A failed call leaves the curve usable.
+    assert_eq!(
+        bezier.sample_uniform_view(2).unwrap().to_vec(),
+        vec![0.0, 0.0, 8.0, 2.0]
+    );
+
+    let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
+    let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
+    let mut c = JsBSplineCurve::new(&pts, 2, 2, &knots, None).unwrap();
+    let us: Vec<f64> = (0..=40).map(|k| k as f64 / 10.0).collect();
+    assert_eq!(c.sample_view(&us).unwrap().to_vec(), c.sample(&us).unwrap());
+    assert_eq!(
+        c.sample_uniform_view(41).unwrap().to_vec(),
+        c.sample_uniform(41).unwrap()
+    );
+    assert!(message(c.sample_view(&[5.0])).contains("outside the domain [0, 4]"));
+}

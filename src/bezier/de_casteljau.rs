@@ -127,6 +127,45 @@ pub fn power_coefficients<P: Point>(points: &[P]) -> Vec<P> {
         .collect()
 }
 
+/// [`power_coefficients`] for a fixed number of points `N` (degree `N − 1`), on the stack: the
+/// form the dense kernels evaluate.
+#[inline]
+pub fn power_coefficients_fixed<P: Point, const N: usize>(points: &[P; N]) -> [P; N] {
+    let mut out = [P::ZERO; N];
+    for (k, c) in out.iter_mut().enumerate() {
+        let mut sum = P::ZERO;
+        for (i, &q) in points.iter().enumerate().take(k + 1) {
+            let sign = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
+            sum = sum + q * (sign * binomial(k, i));
+        }
+        *c = sum * binomial(N - 1, k);
+    }
+    out
+}
+
+/// `Σ_k coeffs[k] s^k` by Horner's rule, unrolled for a fixed number of coefficients.
+#[inline(always)]
+pub fn horner_fixed<P: Point, const N: usize>(coeffs: &[P; N], s: f64) -> P {
+    let mut h = coeffs[N - 1];
+    for j in (0..N - 1).rev() {
+        h = h * s + coeffs[j];
+    }
+    h
+}
+
+/// The value and first derivative (with respect to `s`) of `Σ_k coeffs[k] s^k`, by Horner's
+/// rule run twice in one loop: `d ← d·s + h`, `h ← h·s + c_k`.
+#[inline(always)]
+pub fn horner_with_derivative_fixed<P: Point, const N: usize>(coeffs: &[P; N], s: f64) -> (P, P) {
+    let mut h = coeffs[N - 1];
+    let mut d = P::ZERO;
+    for j in (0..N - 1).rev() {
+        d = d * s + h;
+        h = h * s + coeffs[j];
+    }
+    (h, d)
+}
+
 /// `Σ_k coeffs[k] s^k` by Horner's rule.
 #[inline]
 pub fn horner<P: Point>(coeffs: &[P], s: f64) -> P {

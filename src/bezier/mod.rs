@@ -29,7 +29,8 @@ pub use composite::{
 };
 pub use de_casteljau::{
     bernstein, de_casteljau_point, de_casteljau_triangle, differences, elevate_points, horner,
-    power_coefficients, split_points, subsegment_points,
+    horner_fixed, horner_with_derivative_fixed, power_coefficients, power_coefficients_fixed,
+    split_points, subsegment_points,
 };
 pub use flatten::MAX_FLATTEN_SEGMENTS;
 pub use intersect::{LineIntersection, VisitedBox, MAX_INTERSECTION_DEPTH};
@@ -255,30 +256,35 @@ impl<C: Cartesian> BezierCurve<C> {
 
     /// Dense evaluation at local parameters: up to [`HORNER_MAX_DEGREE`] by Horner's rule on
     /// the power-basis form computed once (`n` multiply-adds per coordinate instead of
-    /// de Casteljau's `n(n+1)/2` lerps), above that by de Casteljau with one scratch buffer.
-    /// The ends `s = 0` and `s = 1` are the end control points exactly.
+    /// de Casteljau's `n(n+1)/2` lerps; on the Cartesian points for a polynomial curve, on the
+    /// homogeneous ones with one division for a rational curve), above that by de Casteljau
+    /// with one scratch buffer. The ends `s = 0` and `s = 1` are the end control points exactly.
     fn sample_local_into(&self, params: impl Iterator<Item = f64>, out: &mut [f64]) {
-        let (first, last) = (
-            self.homogeneous[0],
-            self.homogeneous[self.homogeneous.len() - 1],
-        );
-        if self.degree() <= HORNER_MAX_DEGREE {
-            let coeffs = power_coefficients(&self.homogeneous);
-            for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
-                let h = if s == 0.0 {
-                    first
-                } else if s == 1.0 {
-                    last
-                } else {
-                    horner(&coeffs, s)
-                };
-                self.project(h).write_to(o);
+        match self.degree() {
+            1 => self.sample_horner::<2>(params, out),
+            2 => self.sample_horner::<3>(params, out),
+            3 => self.sample_horner::<4>(params, out),
+            4 => self.sample_horner::<5>(params, out),
+            5 => self.sample_horner::<6>(params, out),
+            _ => {
+                let mut scratch = Vec::with_capacity(self.homogeneous.len());
+                for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
+                    self.evaluate_local(s, &mut scratch).write_to(o);
+                }
             }
+        }
+    }
+
+    /// The Horner kernel of [`Self::sample_local_into`] for `N = degree + 1` control points.
+    fn sample_horner<const N: usize>(&self, params: impl Iterator<Item = f64>, out: &mut [f64]) {
+        let mut h = [<C::Homogeneous as crate::geom::Point>::ZERO; N];
+        h.copy_from_slice(&self.homogeneous[..N]);
+        let ends = (self.project(h[0]), self.project(h[N - 1]));
+        if self.rational {
+            horner_into(&power_coefficients_fixed(&h), C::project, ends, params, out);
         } else {
-            let mut scratch = Vec::with_capacity(self.homogeneous.len());
-            for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
-                self.evaluate_local(s, &mut scratch).write_to(o);
-            }
+            let c = h.map(C::numerator);
+            horner_into(&power_coefficients_fixed(&c), |q| q, ends, params, out);
         }
     }
 
@@ -465,5 +471,28 @@ impl<C: Cartesian> BezierCurve<C> {
             }
         }
         count
+    }
+}
+
+/// Writes `finish(Σ_k coeffs[k] s^k)` for every `s` of `params` into `out` (`C::DIM` numbers
+/// each), with `s = 0` and `s = 1` giving `ends` exactly (the sum of the coefficients is the
+/// end point only up to rounding).
+#[inline(always)]
+fn horner_into<Q: crate::geom::Point, C: Cartesian, const N: usize>(
+    coeffs: &[Q; N],
+    finish: impl Fn(Q) -> C,
+    (first, last): (C, C),
+    params: impl Iterator<Item = f64>,
+    out: &mut [f64],
+) {
+    for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
+        let p = if s == 0.0 {
+            first
+        } else if s == 1.0 {
+            last
+        } else {
+            finish(horner_fixed(coeffs, s))
+        };
+        p.write_to(o);
     }
 }

@@ -218,7 +218,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         for &u in us {
             self.knots.check_parameter(u)?;
         }
-        self.sample_params_into(us.iter().copied(), out);
+        self.sample_params_into(us.len(), |i| us[i], out);
         Ok(())
     }
 
@@ -231,14 +231,14 @@ impl<C: Cartesian> BSplineCurve<C> {
         } else {
             0.0
         };
-        let params = (0..count).map(|i| {
+        let params = |i: usize| {
             if i + 1 == count {
                 b
             } else {
                 a + step * i as f64
             }
-        });
-        self.sample_params_into(params, out);
+        };
+        self.sample_params_into(count, params, out);
         Ok(())
     }
 
@@ -342,26 +342,37 @@ impl<C: Cartesian> BSplineCurve<C> {
         let mut scratch = BasisScratch::default();
         let mut homogeneous = vec![C::Homogeneous::ZERO; order + 1];
         let knots = self.knots.as_slice();
-        let mut s = p;
-        for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
-            s = self.knots.span_from(u, s);
-            for (k, h) in homogeneous.iter_mut().enumerate() {
-                *h = C::Homogeneous::ZERO;
-                if k > p {
-                    continue;
+        let mut general = |us: &[f64], out: &mut [f64]| {
+            let mut s = p;
+            for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
+                s = self.knots.span_from(u, s);
+                for (k, h) in homogeneous.iter_mut().enumerate() {
+                    *h = C::Homogeneous::ZERO;
+                    if k > p {
+                        continue;
+                    }
+                    let q = p - k;
+                    basis_functions(knots, s, u, q, &mut basis[..=q], &mut scratch, None);
+                    for (j, &b) in basis[..=q].iter().enumerate() {
+                        *h = *h + points[k][s - p + j] * b;
+                    }
                 }
-                let q = p - k;
-                basis_functions(knots, s, u, q, &mut basis[..=q], &mut scratch, None);
-                for (j, &b) in basis[..=q].iter().enumerate() {
-                    *h = *h + points[k][s - p + j] * b;
-                }
+                let d = if self.rational {
+                    rational_derivative::<C>(&homogeneous)
+                } else {
+                    C::numerator(homogeneous[order])
+                };
+                d.write_to(o);
             }
-            let d = if self.rational {
-                rational_derivative::<C>(&homogeneous)
-            } else {
-                C::numerator(homogeneous[order])
-            };
-            d.write_to(o);
+        };
+        let short = |_: usize, run: std::ops::Range<usize>, o: &mut [f64]| general(&us[run], o);
+        match (order, p) {
+            (1, 1) => self.first_derivatives_power_form::<2>(us, out, short),
+            (1, 2) => self.first_derivatives_power_form::<3>(us, out, short),
+            (1, 3) => self.first_derivatives_power_form::<4>(us, out, short),
+            (1, 4) => self.first_derivatives_power_form::<5>(us, out, short),
+            (1, 5) => self.first_derivatives_power_form::<6>(us, out, short),
+            _ => general(us, out),
         }
         Ok(())
     }

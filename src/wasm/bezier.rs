@@ -1,9 +1,11 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
+use super::{check_count, memory_view};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
 use glam::{DVec2, DVec3};
+use js_sys::Float64Array;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -65,6 +67,8 @@ fn build(points: &[f64], dim: usize, weights: Option<&[f64]>) -> Result<Curve, E
 #[derive(Clone)]
 pub struct JsBezierCurve {
     inner: Curve,
+    /// The buffer behind the `…View` methods' results.
+    view: Vec<f64>,
 }
 
 #[wasm_bindgen(js_class = BezierCurve)]
@@ -77,9 +81,7 @@ impl JsBezierCurve {
         dim: usize,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
-        Ok(JsBezierCurve {
-            inner: build(points, dim, weights.as_deref())?,
-        })
+        Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
     }
 
     /// `BezierCurve.withInterval(points, dim, a, b, weights?)`: the curve on t ∈ [a, b].
@@ -96,7 +98,7 @@ impl JsBezierCurve {
             Curve::D2(c) => Curve::D2(c.with_interval(a, b)?),
             Curve::D3(c) => Curve::D3(c.with_interval(a, b)?),
         };
-        Ok(JsBezierCurve { inner })
+        Ok(JsBezierCurve::wrap(inner))
     }
 
     /// `BezierCurve.fromPolynomial(coefficients, dim, a, b)`: the curve on [a, b] equal to
@@ -120,7 +122,7 @@ impl JsBezierCurve {
                 b,
             )?),
         };
-        Ok(JsBezierCurve { inner })
+        Ok(JsBezierCurve::wrap(inner))
     }
 
     /// Degree n (number of control points − 1).
@@ -172,17 +174,37 @@ impl JsBezierCurve {
     /// `count` points at equally spaced parameters over the whole interval, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
     pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
-        if count > bezier::MAX_SAMPLES {
-            return Err(Error::TooLarge {
-                what: "count",
-                value: count,
-                max: bezier::MAX_SAMPLES,
-            }
-            .into());
-        }
+        check_count(count)?;
         let mut out = vec![0.0; count * self.dim()];
         with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
         Ok(out)
+    }
+
+    /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
+    /// returned as a `Float64Array` view of it: no copy and no new array per call, for
+    /// redrawing many points every frame. The view is overwritten by the next `…View` call on
+    /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
+    /// `slice()` it to keep it.
+    #[wasm_bindgen(js_name = sampleUniformView)]
+    pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
+        check_count(count)?;
+        let mut out = std::mem::take(&mut self.view);
+        out.resize(count.saturating_mul(self.dim()), 0.0);
+        let done = with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out));
+        self.view = out;
+        done?;
+        memory_view(&self.view)
+    }
+
+    /// `sample(ts)` into this curve's view buffer (see `sampleUniformView`).
+    #[wasm_bindgen(js_name = sampleView)]
+    pub fn sample_view(&mut self, ts: &[f64]) -> Result<Float64Array, JsError> {
+        let mut out = std::mem::take(&mut self.view);
+        out.resize(ts.len().saturating_mul(self.dim()), 0.0);
+        let done = with_curve!(&self.inner, c => c.sample_into(ts, &mut out));
+        self.view = out;
+        done?;
+        memory_view(&self.view)
     }
 
     /// de Casteljau's triangle at t: every level concatenated, the control points first;
@@ -211,34 +233,32 @@ impl JsBezierCurve {
                 (Curve::D3(l), Curve::D3(r))
             }
         };
-        Ok(vec![JsBezierCurve { inner: l }, JsBezierCurve { inner: r }])
+        Ok(vec![JsBezierCurve::wrap(l), JsBezierCurve::wrap(r)])
     }
 
     /// The same curve with degree n + 1.
     pub fn elevate(&self) -> Result<JsBezierCurve, JsError> {
-        Ok(JsBezierCurve {
-            inner: map_curve!(&self.inner, c => c.elevate()?),
-        })
+        Ok(JsBezierCurve::wrap(
+            map_curve!(&self.inner, c => c.elevate()?),
+        ))
     }
 
     /// The same curve traced backwards (control points reversed).
     pub fn reversed(&self) -> JsBezierCurve {
-        JsBezierCurve {
-            inner: map_curve!(&self.inner, c => c.reversed()),
-        }
+        JsBezierCurve::wrap(map_curve!(&self.inner, c => c.reversed()))
     }
 
     /// The hodograph P'(t): a Bézier curve of degree n − 1 (polynomial curves only).
     pub fn hodograph(&self) -> Result<JsBezierCurve, JsError> {
-        Ok(JsBezierCurve {
-            inner: map_curve!(&self.inner, c => c.hodograph()?),
-        })
+        Ok(JsBezierCurve::wrap(
+            map_curve!(&self.inner, c => c.hodograph()?),
+        ))
     }
 
     /// A copy of this curve (a new wasm object; free it too).
     #[wasm_bindgen(js_name = clone)]
     pub fn clone_curve(&self) -> JsBezierCurve {
-        self.clone()
+        JsBezierCurve::wrap(self.inner.clone())
     }
 
     /// The control points, flat.
@@ -364,18 +384,21 @@ impl JsBezierCurve {
 }
 
 impl JsBezierCurve {
+    fn wrap(inner: Curve) -> Self {
+        JsBezierCurve {
+            inner,
+            view: Vec::new(),
+        }
+    }
+
     /// Wraps a core 2D curve.
     pub(crate) fn from_2d(c: BezierCurve<DVec2>) -> Self {
-        JsBezierCurve {
-            inner: Curve::D2(c),
-        }
+        JsBezierCurve::wrap(Curve::D2(c))
     }
 
     /// Wraps a core 3D curve.
     pub(crate) fn from_3d(c: BezierCurve<DVec3>) -> Self {
-        JsBezierCurve {
-            inner: Curve::D3(c),
-        }
+        JsBezierCurve::wrap(Curve::D3(c))
     }
 
     pub(crate) fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
@@ -538,7 +561,7 @@ pub fn join_bezier(
         }
         _ => return Err(dim_mismatch(left, right).into()),
     };
-    Ok(vec![JsBezierCurve { inner: l }, JsBezierCurve { inner: r }])
+    Ok(vec![JsBezierCurve::wrap(l), JsBezierCurve::wrap(r)])
 }
 
 fn dim_mismatch(left: &JsBezierCurve, right: &JsBezierCurve) -> Error {
@@ -650,7 +673,7 @@ impl JsCompositeBezier {
             Composite::D3(c) => c.pieces().get(i).cloned().map(Curve::D3),
         };
         inner
-            .map(|inner| JsBezierCurve { inner })
+            .map(JsBezierCurve::wrap)
             .ok_or_else(|| Error::IndexOutOfRange { index: i, count }.into())
     }
 

@@ -1,10 +1,12 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
+use super::{check_count, memory_view};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use glam::{DVec2, DVec3};
+use js_sys::Float64Array;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -38,6 +40,8 @@ macro_rules! map_curve {
 #[derive(Clone)]
 pub struct JsBSplineCurve {
     inner: Curve,
+    /// The buffer behind the `…View` methods' results.
+    view: Vec<f64>,
 }
 
 #[derive(Serialize)]
@@ -70,7 +74,7 @@ impl JsBSplineCurve {
             2 => Curve::D2(BSplineCurve::from_flat(points, degree, knots.to_vec(), w)?),
             _ => Curve::D3(BSplineCurve::from_flat(points, degree, knots.to_vec(), w)?),
         };
-        Ok(JsBSplineCurve { inner })
+        Ok(JsBSplineCurve::wrap(inner))
     }
 
     /// `BSplineCurve.closed(points, dim, degree, weights?)`: a closed curve through the cycle of
@@ -86,7 +90,7 @@ impl JsBSplineCurve {
             2 => Curve::D2(BSplineCurve::closed(points_from_flat(points)?, degree, w)?),
             _ => Curve::D3(BSplineCurve::closed(points_from_flat(points)?, degree, w)?),
         };
-        Ok(JsBSplineCurve { inner })
+        Ok(JsBSplineCurve::wrap(inner))
     }
 
     /// Degree p.
@@ -183,17 +187,37 @@ impl JsBSplineCurve {
     /// `count` points at equally spaced u over the domain, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
     pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
-        if count > crate::geom::MAX_SAMPLES {
-            return Err(Error::TooLarge {
-                what: "count",
-                value: count,
-                max: crate::geom::MAX_SAMPLES,
-            }
-            .into());
-        }
+        check_count(count)?;
         let mut out = vec![0.0; count * self.dim()];
         with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
         Ok(out)
+    }
+
+    /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
+    /// returned as a `Float64Array` view of it: no copy and no new array per call, for
+    /// redrawing many points every frame. The view is overwritten by the next `…View` call on
+    /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
+    /// `slice()` it to keep it.
+    #[wasm_bindgen(js_name = sampleUniformView)]
+    pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
+        check_count(count)?;
+        let mut out = std::mem::take(&mut self.view);
+        out.resize(count.saturating_mul(self.dim()), 0.0);
+        let done = with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out));
+        self.view = out;
+        done?;
+        memory_view(&self.view)
+    }
+
+    /// `sample(us)` into this curve's view buffer (see `sampleUniformView`).
+    #[wasm_bindgen(js_name = sampleView)]
+    pub fn sample_view(&mut self, us: &[f64]) -> Result<Float64Array, JsError> {
+        let mut out = std::mem::take(&mut self.view);
+        out.resize(us.len().saturating_mul(self.dim()), 0.0);
+        let done = with_curve!(&self.inner, c => c.sample_into(us, &mut out));
+        self.view = out;
+        done?;
+        memory_view(&self.view)
     }
 
     /// `N_{i,p}(u)` for i = 0..n.
@@ -243,16 +267,16 @@ impl JsBSplineCurve {
     #[wasm_bindgen(js_name = insertKnot)]
     pub fn insert_knot(&self, u: f64, times: Option<usize>) -> Result<JsBSplineCurve, JsError> {
         let times = times.unwrap_or(1);
-        Ok(JsBSplineCurve {
-            inner: map_curve!(&self.inner, c => c.insert_knot(u, times)?),
-        })
+        Ok(JsBSplineCurve::wrap(
+            map_curve!(&self.inner, c => c.insert_knot(u, times)?),
+        ))
     }
 
     /// A new curve with every knot of `us` inserted (knot refinement).
     pub fn refine(&self, us: &[f64]) -> Result<JsBSplineCurve, JsError> {
-        Ok(JsBSplineCurve {
-            inner: map_curve!(&self.inner, c => c.refine(us)?),
-        })
+        Ok(JsBSplineCurve::wrap(
+            map_curve!(&self.inner, c => c.refine(us)?),
+        ))
     }
 
     /// The Bézier segments, one per non-empty span, in span order, each on t ∈ [0, 1].
@@ -317,23 +341,26 @@ impl JsBSplineCurve {
     /// A copy of this curve (a new wasm object; free it too).
     #[wasm_bindgen(js_name = clone)]
     pub fn clone_curve(&self) -> JsBSplineCurve {
-        self.clone()
+        JsBSplineCurve::wrap(self.inner.clone())
     }
 }
 
 impl JsBSplineCurve {
+    fn wrap(inner: Curve) -> Self {
+        JsBSplineCurve {
+            inner,
+            view: Vec::new(),
+        }
+    }
+
     /// Wraps a core 2D curve.
     pub(crate) fn from_2d(c: BSplineCurve<DVec2>) -> Self {
-        JsBSplineCurve {
-            inner: Curve::D2(c),
-        }
+        JsBSplineCurve::wrap(Curve::D2(c))
     }
 
     /// Wraps a core 3D curve.
     pub(crate) fn from_3d(c: BSplineCurve<DVec3>) -> Self {
-        JsBSplineCurve {
-            inner: Curve::D3(c),
-        }
+        JsBSplineCurve::wrap(Curve::D3(c))
     }
 
     /// The 2D curve, or an error naming the operation.

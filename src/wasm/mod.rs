@@ -18,7 +18,40 @@ pub mod rational;
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 
+use crate::error::Error;
+use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+
+/// A `Float64Array` viewing `buffer` where it lies in the wasm memory (no copy). It stays
+/// valid while `buffer` is neither moved nor freed and the memory does not grow (growing
+/// detaches every view: its length becomes 0).
+pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory()
+        .dyn_into()
+        .map_err(|_| JsError::new("the wasm memory is not a WebAssembly.Memory"))?;
+    let offset = u32::try_from(buffer.as_ptr() as usize)
+        .map_err(|_| JsError::new("the buffer lies outside 32-bit wasm memory"))?;
+    let length = u32::try_from(buffer.len())
+        .map_err(|_| JsError::new("the buffer is too long for a Float64Array view"))?;
+    Ok(Float64Array::new_with_byte_offset_and_length(
+        &memory.buffer(),
+        offset,
+        length,
+    ))
+}
+
+/// Rejects a sample count above [`crate::geom::MAX_SAMPLES`].
+pub(crate) fn check_count(count: usize) -> Result<(), Error> {
+    if count > crate::geom::MAX_SAMPLES {
+        return Err(Error::TooLarge {
+            what: "count",
+            value: count,
+            max: crate::geom::MAX_SAMPLES,
+        });
+    }
+    Ok(())
+}
 
 /// The crate version, e.g. `"0.1.0"`.
 #[wasm_bindgen]
