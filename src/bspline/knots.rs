@@ -146,9 +146,11 @@ impl KnotVector {
             .unwrap_or(n)
     }
 
-    /// How many knots equal `u`.
+    /// How many knots equal `u` (two binary searches: the knots are sorted).
     pub fn multiplicity(&self, u: f64) -> usize {
-        self.knots.iter().filter(|&&k| k == u).count()
+        let first = self.knots.partition_point(|&k| k < u);
+        let end = self.knots.partition_point(|&k| k <= u);
+        end - first
     }
 
     /// The non-empty spans of the domain, in order: indices `k` in `p..=n` with `u_k < u_{k+1}`.
