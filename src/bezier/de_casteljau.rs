@@ -1,7 +1,8 @@
 //! de Casteljau's algorithm on any point type (Cartesian or homogeneous), Bernstein
 //! polynomials, subdivision and degree elevation (syllabus §2).
 
-use crate::geom::{binomial, Point};
+use crate::geom::{binomial, Params, Point};
+use std::ops::Range;
 
 /// The Bernstein polynomial `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`; 0 when `i > n`.
 ///
@@ -127,20 +128,116 @@ pub fn power_coefficients<P: Point>(points: &[P]) -> Vec<P> {
         .collect()
 }
 
-/// [`power_coefficients`] for a fixed number of points `N` (degree `N − 1`), on the stack: the
-/// form the dense kernels evaluate.
-#[inline]
-pub fn power_coefficients_fixed<P: Point, const N: usize>(points: &[P; N]) -> [P; N] {
-    let mut out = [P::ZERO; N];
-    for (k, c) in out.iter_mut().enumerate() {
-        let mut sum = P::ZERO;
-        for (i, &q) in points.iter().enumerate().take(k + 1) {
-            let sign = if (k - i) % 2 == 0 { 1.0 } else { -1.0 };
-            sum = sum + q * (sign * binomial(k, i));
+/// [`power_coefficients`] in place, by the forward-difference table: after pass `r`
+/// (`q_i ← q_i − q_{i−1}` for `i = m … r`) entry `k ≤ r` holds `Δ^k Q_0`, and
+/// `c_k = C(m, k) Δ^k Q_0`. No allocation: for the per-span set-up of dense kernels.
+pub fn to_power_form<P: Point>(points: &mut [P]) {
+    let m = points.len().saturating_sub(1);
+    for r in 1..=m {
+        for i in (r..=m).rev() {
+            points[i] = points[i] - points[i - 1];
         }
-        *c = sum * binomial(N - 1, k);
     }
-    out
+    for (k, c) in points.iter_mut().enumerate() {
+        *c = *c * binomial(m, k);
+    }
+}
+
+/// Highest degree the dense Horner kernel takes (power-form coefficients on the stack).
+pub const DENSE_MAX_DEGREE: usize = 5;
+
+/// A polynomial piece in power form, `Σ_{j≤degree} c_j s^j` in the local parameter
+/// `s = (u − start)·scale`: what the dense kernels evaluate.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PowerForm<P> {
+    /// `c_0 … c_degree` (the rest unused).
+    pub c: [P; DENSE_MAX_DEGREE + 1],
+    /// At most [`DENSE_MAX_DEGREE`].
+    pub degree: usize,
+    /// The parameter where `s = 0`.
+    pub start: f64,
+    /// `ds/du`.
+    pub scale: f64,
+}
+
+impl<P: Point> PowerForm<P> {
+    /// The same piece with `f` applied to each coefficient (e.g. dropping the weight).
+    pub fn map<Q: Point>(&self, f: impl Fn(P) -> Q) -> PowerForm<Q> {
+        PowerForm {
+            c: self.c.map(f),
+            degree: self.degree,
+            start: self.start,
+            scale: self.scale,
+        }
+    }
+}
+
+/// The dense kernel shared by Bézier and B-spline sampling: writes `finish(piece(u))` for the
+/// parameters `run` of `params` into `out` (`C::DIM` numbers each). `ends`, when given,
+/// replace the values at `s = 0` and `s = 1` (exact end points; the sum of the coefficients is
+/// the end only up to rounding). Horner's rule is a chain of dependent multiply-adds, so a loop
+/// over the runtime degree costs about what an unrolled one does, and one copy of the kernel
+/// serves every degree.
+pub(crate) fn horner_run<Q: Point, C: Point>(
+    piece: &PowerForm<Q>,
+    params: Params,
+    run: Range<usize>,
+    finish: impl Fn(Q) -> C + Copy,
+    ends: Option<(C, C)>,
+    out: &mut [f64],
+) {
+    match piece.degree {
+        1 => horner_run_fixed::<Q, C, 2>(piece, params, run, finish, ends, out),
+        2 => horner_run_fixed::<Q, C, 3>(piece, params, run, finish, ends, out),
+        3 => horner_run_fixed::<Q, C, 4>(piece, params, run, finish, ends, out),
+        4 => horner_run_fixed::<Q, C, 5>(piece, params, run, finish, ends, out),
+        _ => horner_run_fixed::<Q, C, 6>(piece, params, run, finish, ends, out),
+    }
+}
+
+/// [`horner_run`] for degree `N − 1`, unrolled.
+#[inline(never)]
+fn horner_run_fixed<Q: Point, C: Point, const N: usize>(
+    piece: &PowerForm<Q>,
+    params: Params,
+    run: Range<usize>,
+    finish: impl Fn(Q) -> C,
+    ends: Option<(C, C)>,
+    out: &mut [f64],
+) {
+    let mut c = [Q::ZERO; N];
+    c.copy_from_slice(&piece.c[..N]);
+    let (start, scale) = (piece.start, piece.scale);
+    let value = |s: f64| match ends {
+        Some((first, _)) if s == 0.0 => first,
+        Some((_, last)) if s == 1.0 => last,
+        _ => finish(horner_fixed(&c, s)),
+    };
+    let outs = out.chunks_exact_mut(C::DIM);
+    match params {
+        Params::Slice(us) => {
+            for (&u, o) in us[run].iter().zip(outs) {
+                value((u - start) * scale).write_to(o);
+            }
+        }
+        Params::Uniform {
+            start: u0,
+            step,
+            end,
+            count,
+        } => {
+            // s = (u0 + step·i − start)·scale, with the two products folded out of the loop.
+            let (s0, ds) = ((u0 - start) * scale, step * scale);
+            for (i, o) in run.zip(outs) {
+                let s = if i + 1 == count {
+                    (end - start) * scale
+                } else {
+                    s0 + ds * i as f64
+                };
+                value(s).write_to(o);
+            }
+        }
+    }
 }
 
 /// `Σ_k coeffs[k] s^k` by Horner's rule, unrolled for a fixed number of coefficients.

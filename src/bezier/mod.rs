@@ -29,14 +29,15 @@ pub use composite::{
 };
 pub use de_casteljau::{
     bernstein, de_casteljau_point, de_casteljau_triangle, differences, elevate_points, horner,
-    horner_fixed, horner_with_derivative_fixed, power_coefficients, power_coefficients_fixed,
-    split_points, subsegment_points,
+    horner_fixed, horner_with_derivative_fixed, power_coefficients, split_points,
+    subsegment_points, to_power_form,
 };
+pub(crate) use de_casteljau::{horner_run, PowerForm};
 pub use flatten::MAX_FLATTEN_SEGMENTS;
 pub use intersect::{LineIntersection, VisitedBox, MAX_INTERSECTION_DEPTH};
 
 use crate::error::{check_finite, Error, Result};
-use crate::geom::{check_all_finite, BoundingBox, Cartesian};
+use crate::geom::{check_all_finite, BoundingBox, Cartesian, Params};
 
 /// Highest degree accepted by the constructors (de Casteljau costs O(n²) per point and such
 /// degrees are of no practical use: the syllabus recommends piecewise curves above ~5).
@@ -46,7 +47,7 @@ pub use crate::geom::MAX_SAMPLES;
 
 /// Highest degree sampled by Horner's rule on the power basis; the power form's coefficients
 /// grow like `C(n, k) 2^k` and would lose digits to cancellation at high degrees.
-pub const HORNER_MAX_DEGREE: usize = 5;
+pub const HORNER_MAX_DEGREE: usize = de_casteljau::DENSE_MAX_DEGREE;
 use crate::geom::{check_out_len, check_weights};
 
 /// A polynomial or rational Bézier curve in 2D (`C = DVec2`) or 3D (`C = DVec3`).
@@ -234,7 +235,12 @@ impl<C: Cartesian> BezierCurve<C> {
             check_finite(|| format!("parameter {i}"), t)?;
             self.local_parameter(t)?;
         }
-        self.sample_local_into(ts.iter().map(|&t| self.to_local(t)), out);
+        if self.a == 0.0 && self.b == 1.0 {
+            self.sample_local_into(Params::Slice(ts), out);
+        } else {
+            let local: Vec<f64> = ts.iter().map(|&t| self.to_local(t)).collect();
+            self.sample_local_into(Params::Slice(&local), out);
+        }
         Ok(())
     }
 
@@ -242,15 +248,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// `out` (`count·DIM` values); `count = 1` gives the start point.
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), count, C::DIM)?;
-        let step = if count > 1 {
-            1.0 / (count - 1) as f64
-        } else {
-            0.0
-        };
-        self.sample_local_into(
-            (0..count).map(|k| if k + 1 == count { 1.0 } else { k as f64 * step }),
-            out,
-        );
+        self.sample_local_into(Params::uniform(0.0, 1.0, count), out);
         Ok(())
     }
 
@@ -259,32 +257,32 @@ impl<C: Cartesian> BezierCurve<C> {
     /// de Casteljau's `n(n+1)/2` lerps; on the Cartesian points for a polynomial curve, on the
     /// homogeneous ones with one division for a rational curve), above that by de Casteljau
     /// with one scratch buffer. The ends `s = 0` and `s = 1` are the end control points exactly.
-    fn sample_local_into(&self, params: impl Iterator<Item = f64>, out: &mut [f64]) {
-        match self.degree() {
-            1 => self.sample_horner::<2>(params, out),
-            2 => self.sample_horner::<3>(params, out),
-            3 => self.sample_horner::<4>(params, out),
-            4 => self.sample_horner::<5>(params, out),
-            5 => self.sample_horner::<6>(params, out),
-            _ => {
-                let mut scratch = Vec::with_capacity(self.homogeneous.len());
-                for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
-                    self.evaluate_local(s, &mut scratch).write_to(o);
-                }
+    fn sample_local_into(&self, params: Params, out: &mut [f64]) {
+        let n = self.degree();
+        if n > HORNER_MAX_DEGREE {
+            let mut scratch = Vec::with_capacity(self.homogeneous.len());
+            for (i, o) in (0..params.len()).zip(out.chunks_exact_mut(C::DIM)) {
+                self.evaluate_local(params.get(i), &mut scratch).write_to(o);
             }
+            return;
         }
-    }
-
-    /// The Horner kernel of [`Self::sample_local_into`] for `N = degree + 1` control points.
-    fn sample_horner<const N: usize>(&self, params: impl Iterator<Item = f64>, out: &mut [f64]) {
-        let mut h = [<C::Homogeneous as crate::geom::Point>::ZERO; N];
-        h.copy_from_slice(&self.homogeneous[..N]);
-        let ends = (self.project(h[0]), self.project(h[N - 1]));
+        let h = &self.homogeneous;
+        let ends = (self.project(h[0]), self.project(h[n]));
+        let mut c = [<C::Homogeneous as crate::geom::Point>::ZERO; HORNER_MAX_DEGREE + 1];
+        c[..=n].copy_from_slice(h);
+        to_power_form(&mut c[..=n]);
+        let piece = PowerForm {
+            c,
+            degree: n,
+            start: 0.0,
+            scale: 1.0,
+        };
+        let all = 0..params.len();
         if self.rational {
-            horner_into(&power_coefficients_fixed(&h), C::project, ends, params, out);
+            horner_run(&piece, params, all, C::project, Some(ends), out);
         } else {
-            let c = h.map(C::numerator);
-            horner_into(&power_coefficients_fixed(&c), |q| q, ends, params, out);
+            let piece = piece.map(C::numerator);
+            horner_run(&piece, params, all, |q| q, Some(ends), out);
         }
     }
 
@@ -471,28 +469,5 @@ impl<C: Cartesian> BezierCurve<C> {
             }
         }
         count
-    }
-}
-
-/// Writes `finish(Σ_k coeffs[k] s^k)` for every `s` of `params` into `out` (`C::DIM` numbers
-/// each), with `s = 0` and `s = 1` giving `ends` exactly (the sum of the coefficients is the
-/// end point only up to rounding).
-#[inline(always)]
-fn horner_into<Q: crate::geom::Point, C: Cartesian, const N: usize>(
-    coeffs: &[Q; N],
-    finish: impl Fn(Q) -> C,
-    (first, last): (C, C),
-    params: impl Iterator<Item = f64>,
-    out: &mut [f64],
-) {
-    for (s, o) in params.zip(out.chunks_exact_mut(C::DIM)) {
-        let p = if s == 0.0 {
-            first
-        } else if s == 1.0 {
-            last
-        } else {
-            finish(horner_fixed(coeffs, s))
-        };
-        p.write_to(o);
     }
 }

@@ -33,7 +33,7 @@ pub use matrix::uniform_segment_matrix;
 
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{
-    check_out_len, check_weights, rational_derivative, Cartesian, Point, MAX_DEGREE,
+    check_out_len, check_weights, rational_derivative, Cartesian, Params, Point, MAX_DEGREE,
     MAX_DERIVATIVE_ORDER,
 };
 
@@ -218,7 +218,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         for &u in us {
             self.knots.check_parameter(u)?;
         }
-        self.sample_params_into(us.len(), |i| us[i], out);
+        self.sample_params_into(Params::Slice(us), out);
         Ok(())
     }
 
@@ -226,19 +226,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), count, C::DIM)?;
         let (a, b) = self.domain();
-        let step = if count > 1 {
-            (b - a) / (count - 1) as f64
-        } else {
-            0.0
-        };
-        let params = |i: usize| {
-            if i + 1 == count {
-                b
-            } else {
-                a + step * i as f64
-            }
-        };
-        self.sample_params_into(count, params, out);
+        self.sample_params_into(Params::uniform(a, b, count), out);
         Ok(())
     }
 
@@ -365,14 +353,10 @@ impl<C: Cartesian> BSplineCurve<C> {
                 d.write_to(o);
             }
         };
-        let short = |_: usize, run: std::ops::Range<usize>, o: &mut [f64]| general(&us[run], o);
-        match (order, p) {
-            (1, 1) => self.first_derivatives_power_form::<2>(us, out, short),
-            (1, 2) => self.first_derivatives_power_form::<3>(us, out, short),
-            (1, 3) => self.first_derivatives_power_form::<4>(us, out, short),
-            (1, 4) => self.first_derivatives_power_form::<5>(us, out, short),
-            (1, 5) => self.first_derivatives_power_form::<6>(us, out, short),
-            _ => general(us, out),
+        if order == 1 {
+            self.first_derivatives_into(us, out, |run, o| general(&us[run], o));
+        } else {
+            general(us, out);
         }
         Ok(())
     }

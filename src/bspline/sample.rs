@@ -7,8 +7,8 @@
 //! degrees 1–5; other degrees take the general Cox–de Boor path.
 
 use super::{basis_functions, BSplineCurve, BasisScratch};
-use crate::bezier::{horner_fixed, horner_with_derivative_fixed, power_coefficients_fixed};
-use crate::geom::{Cartesian, Point};
+use crate::bezier::{horner_run, horner_with_derivative_fixed, to_power_form, PowerForm};
+use crate::geom::{Cartesian, Params, Point};
 use std::ops::Range;
 
 /// Points per run from which converting the span to the power form pays for itself: the
@@ -59,26 +59,29 @@ fn evaluate_fixed<H: Point, const N: usize>(
     h
 }
 
-/// The Bézier control points of the non-empty span `k` (`u_k < u_{k+1}`) of a B-spline of
-/// degree `p = N − 1`: `b_i = f(u_k, …, u_k, u_{k+1}, …, u_{k+1})` (`p − i` times `u_k`, `i`
-/// times `u_{k+1}`), each blossom value by de Boor's triangle with one argument per level
-/// (`α = (x_r − u_i)/(u_{i+p+1−r} − u_i)`, `i = k − p + j`; every denominator spans the
-/// non-empty span, so none is zero).
-#[inline]
-pub(crate) fn span_bezier_points<H: Point, const N: usize>(
+/// Highest degree with unrolled kernels.
+const MAX_FAST_DEGREE: usize = crate::bezier::HORNER_MAX_DEGREE;
+
+/// The power form of the non-empty span `k` (`u_k < u_{k+1}`) of a B-spline of degree `p`:
+/// writes `c_0 … c_p` into `out[..=p]` with `C(u) = Σ_j c_j s^j`, `s = (u − u_k)/(u_{k+1} − u_k)`.
+/// First the span's Bézier points `b_i = f(u_k, …, u_k, u_{k+1}, …, u_{k+1})` (`p − i` times
+/// `u_k`, `i` times `u_{k+1}`), each blossom value by de Boor's triangle with one argument per
+/// level (`α = (x_r − u_i)/(u_{i+p+1−r} − u_i)`, `i = k − p + j`; every denominator spans the
+/// non-empty span, so none is zero), then [`to_power_form`].
+pub(crate) fn span_power_form<H: Point>(
     knots: &[f64],
     points: &[H],
     k: usize,
-) -> [H; N] {
-    let p = N - 1;
+    p: usize,
+    out: &mut [H],
+) {
     let (a, b) = (knots[k], knots[k + 1]);
-    let mut bezier = [H::ZERO; N];
-    for (i, slot) in bezier.iter_mut().enumerate() {
-        let mut q = [H::ZERO; N];
-        q.copy_from_slice(&points[k - p..=k]);
-        for r in 1..N {
+    let mut q = [H::ZERO; MAX_FAST_DEGREE + 1];
+    for (i, slot) in out.iter_mut().take(p + 1).enumerate() {
+        q[..=p].copy_from_slice(&points[k - p..=k]);
+        for r in 1..=p {
             let x = if r <= p - i { a } else { b };
-            for j in (r..N).rev() {
+            for j in (r..=p).rev() {
                 let lo = knots[k - p + j];
                 let hi = knots[k + j - r + 1];
                 q[j] = q[j - 1].lerp_to(q[j], (x - lo) / (hi - lo));
@@ -86,30 +89,55 @@ pub(crate) fn span_bezier_points<H: Point, const N: usize>(
         }
         *slot = q[p];
     }
-    bezier
+    to_power_form(&mut out[..=p]);
+}
+
+/// Writes `d/du Σ_j c_j s^j`, `s = (u − a)·scale`, for the parameters `run` into `out`: value
+/// and derivative by one Horner loop, `dC/du = (dC/ds)·scale`, and for homogeneous
+/// coefficients the quotient rule `C' = (A' − w' C)/w`.
+#[inline(never)]
+fn derivative_run<C: Cartesian, const N: usize, const RATIONAL: bool>(
+    c: &[C::Homogeneous],
+    (a, scale): (f64, f64),
+    us: &[f64],
+    out: &mut [f64],
+) {
+    if RATIONAL {
+        let mut coeffs = [C::Homogeneous::ZERO; N];
+        coeffs.copy_from_slice(&c[..N]);
+        for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
+            let (h, d) = horner_with_derivative_fixed(&coeffs, (u - a) * scale);
+            let w = 1.0 / C::weight_of(h);
+            let point = C::numerator(h) * w;
+            ((C::numerator(d) - point * C::weight_of(d)) * (w * scale)).write_to(o);
+        }
+    } else {
+        let mut coeffs = [C::ZERO; N];
+        for (x, &h) in coeffs.iter_mut().zip(c) {
+            *x = C::numerator(h);
+        }
+        for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
+            let (_, d) = horner_with_derivative_fixed(&coeffs, (u - a) * scale);
+            (d * scale).write_to(o);
+        }
+    }
 }
 
 impl<C: Cartesian> BSplineCurve<C> {
-    /// Cuts the parameters `param(0) … param(count − 1)` (each already checked to lie in the
-    /// domain) into maximal runs of consecutive parameters in one span and calls `f(k, run)`
-    /// for each, `k` the span.
-    #[inline(always)]
-    fn for_each_run(
-        &self,
-        count: usize,
-        param: impl Fn(usize) -> f64,
-        mut f: impl FnMut(usize, Range<usize>),
-    ) {
+    /// Cuts `params` (each already checked to lie in the domain) into maximal runs of
+    /// consecutive parameters in one span and calls `f(k, run)` for each, `k` the span.
+    fn for_each_run(&self, params: Params, mut f: impl FnMut(usize, Range<usize>)) {
         let knots = self.knots.as_slice();
         let last = self.knots.last_span();
+        let count = params.len();
         let mut k = self.degree();
         let mut i = 0;
         while i < count {
-            k = self.knots.span_from(param(i), k);
+            k = self.knots.span_from(params.get(i), k);
             let (a, b) = (knots[k], knots[k + 1]);
             let mut end = i + 1;
             while end < count {
-                let u = param(end);
+                let u = params.get(end);
                 if u < a || u > b || (u == b && k != last) {
                     break;
                 }
@@ -120,28 +148,47 @@ impl<C: Cartesian> BSplineCurve<C> {
         }
     }
 
-    /// Writes `C(param(i))` for `i < count` (each checked to lie in the domain) into `out`,
-    /// `DIM` numbers per point.
-    pub(crate) fn sample_params_into(
-        &self,
-        count: usize,
-        param: impl Fn(usize) -> f64 + Copy,
-        out: &mut [f64],
-    ) {
-        match self.degree() {
-            1 => self.sample_fixed::<2>(count, param, out),
-            2 => self.sample_fixed::<3>(count, param, out),
-            3 => self.sample_fixed::<4>(count, param, out),
-            4 => self.sample_fixed::<5>(count, param, out),
-            5 => self.sample_fixed::<6>(count, param, out),
-            p => {
-                let mut basis = vec![0.0; p + 1];
-                let mut scratch = BasisScratch::default();
-                let knots = self.knots.as_slice();
-                self.for_each_run(count, param, |k, run| {
-                    let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
+    /// The power form of span `k` (see [`span_power_form`]), in `s = (u − u_k)/(u_{k+1} − u_k)`.
+    fn power_form(&self, k: usize) -> PowerForm<C::Homogeneous> {
+        let knots = self.knots.as_slice();
+        let mut c = [C::Homogeneous::ZERO; MAX_FAST_DEGREE + 1];
+        span_power_form(knots, &self.homogeneous, k, self.degree(), &mut c);
+        PowerForm {
+            c,
+            degree: self.degree(),
+            start: knots[k],
+            scale: 1.0 / (knots[k + 1] - knots[k]),
+        }
+    }
+
+    /// Writes `C(u)` for every `u` of `params` (each checked to lie in the domain) into `out`,
+    /// `DIM` numbers per point: the power form on runs of at least [`POWER_FORM_MIN_RUN`]
+    /// parameters in one span, the basis functions otherwise.
+    pub(crate) fn sample_params_into(&self, params: Params, out: &mut [f64]) {
+        let p = self.degree();
+        let knots = self.knots.as_slice();
+        let mut basis = vec![0.0; p + 1];
+        let mut scratch = BasisScratch::default();
+        self.for_each_run(params, |k, run| {
+            let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
+            if p <= MAX_FAST_DEGREE && run.len() >= POWER_FORM_MIN_RUN {
+                let piece = self.power_form(k);
+                if self.rational {
+                    horner_run(&piece, params, run, C::project, None, outs);
+                } else {
+                    horner_run(&piece.map(C::numerator), params, run, |q| q, None, outs);
+                }
+                return;
+            }
+            match p {
+                1 => self.basis_run::<2>(k, params, run, outs),
+                2 => self.basis_run::<3>(k, params, run, outs),
+                3 => self.basis_run::<4>(k, params, run, outs),
+                4 => self.basis_run::<5>(k, params, run, outs),
+                5 => self.basis_run::<6>(k, params, run, outs),
+                _ => {
                     for (i, o) in run.zip(outs.chunks_exact_mut(C::DIM)) {
-                        let u = param(i);
+                        let u = params.get(i);
                         basis_functions(knots, k, u, p, &mut basis, &mut scratch, None);
                         let mut h = C::Homogeneous::ZERO;
                         for (j, &b) in basis.iter().enumerate() {
@@ -149,95 +196,67 @@ impl<C: Cartesian> BSplineCurve<C> {
                         }
                         self.project(h).write_to(o);
                     }
-                });
-            }
-        }
-    }
-
-    /// [`Self::sample_params_into`] for degree `N − 1`: the power form on long runs, the basis
-    /// functions with per-span reciprocals on short ones.
-    fn sample_fixed<const N: usize>(
-        &self,
-        count: usize,
-        param: impl Fn(usize) -> f64 + Copy,
-        out: &mut [f64],
-    ) {
-        let knots = self.knots.as_slice();
-        let mut inv = [[0.0; N]; N];
-        self.for_each_run(count, param, |k, run| {
-            let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
-            if run.len() >= POWER_FORM_MIN_RUN {
-                let (a, b) = (knots[k], knots[k + 1]);
-                let scale = 1.0 / (b - a);
-                let local = |i: usize| (param(i) - a) * scale;
-                let bezier = span_bezier_points::<_, N>(knots, &self.homogeneous, k);
-                if self.rational {
-                    let c = power_coefficients_fixed(&bezier);
-                    for (i, o) in run.zip(outs.chunks_exact_mut(C::DIM)) {
-                        C::project(horner_fixed(&c, local(i))).write_to(o);
-                    }
-                } else {
-                    let c = power_coefficients_fixed(&bezier.map(C::numerator));
-                    for (i, o) in run.zip(outs.chunks_exact_mut(C::DIM)) {
-                        horner_fixed(&c, local(i)).write_to(o);
-                    }
-                }
-            } else {
-                span_reciprocals::<N>(knots, k, &mut inv);
-                for (i, o) in run.zip(outs.chunks_exact_mut(C::DIM)) {
-                    let h = evaluate_fixed::<C::Homogeneous, N>(
-                        knots,
-                        &self.homogeneous,
-                        k,
-                        param(i),
-                        &inv,
-                    );
-                    self.project(h).write_to(o);
                 }
             }
         });
     }
 
-    /// First derivatives `C'(u)` at `us` (checked) into `out`, for degree `N − 1`, on the runs
-    /// long enough for the power form: value and derivative by one Horner loop,
-    /// `dC/du = (dC/ds)/(u_{k+1} − u_k)`, and for a rational curve the quotient rule
-    /// `C' = (A' − w' C)/w`. Returns the runs it left to the caller (too short), in order.
-    pub(crate) fn first_derivatives_power_form<const N: usize>(
+    /// The points at `run` of `params`, all in span `k`, from the `N` non-zero basis functions
+    /// of degree `N − 1` with the span's reciprocals.
+    #[inline(never)]
+    fn basis_run<const N: usize>(
+        &self,
+        k: usize,
+        params: Params,
+        run: Range<usize>,
+        out: &mut [f64],
+    ) {
+        let knots = self.knots.as_slice();
+        let mut inv = [[0.0; N]; N];
+        span_reciprocals::<N>(knots, k, &mut inv);
+        for (i, o) in run.zip(out.chunks_exact_mut(C::DIM)) {
+            let h = evaluate_fixed::<C::Homogeneous, N>(
+                knots,
+                &self.homogeneous,
+                k,
+                params.get(i),
+                &inv,
+            );
+            self.project(h).write_to(o);
+        }
+    }
+
+    /// First derivatives `C'(u)` at `us` (checked) into `out` for degrees up to 5: the power
+    /// form on runs of at least [`POWER_FORM_MIN_RUN`] parameters in one span (see
+    /// [`derivative_run`]); `short(run, out)` computes the other runs.
+    pub(crate) fn first_derivatives_into(
         &self,
         us: &[f64],
         out: &mut [f64],
-        mut short: impl FnMut(usize, Range<usize>, &mut [f64]),
+        mut short: impl FnMut(Range<usize>, &mut [f64]),
     ) {
-        let knots = self.knots.as_slice();
-        self.for_each_run(
-            us.len(),
-            |i| us[i],
-            |k, run| {
-                let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
-                if run.len() < POWER_FORM_MIN_RUN {
-                    short(k, run, outs);
-                    return;
-                }
-                let (a, b) = (knots[k], knots[k + 1]);
-                let scale = 1.0 / (b - a);
-                let bezier = span_bezier_points::<_, N>(knots, &self.homogeneous, k);
-                let params = us[run].iter().zip(outs.chunks_exact_mut(C::DIM));
-                if self.rational {
-                    let c = power_coefficients_fixed(&bezier);
-                    for (&u, o) in params {
-                        let (h, d) = horner_with_derivative_fixed(&c, (u - a) * scale);
-                        let w = 1.0 / C::weight_of(h);
-                        let point = C::numerator(h) * w;
-                        ((C::numerator(d) - point * C::weight_of(d)) * (w * scale)).write_to(o);
-                    }
-                } else {
-                    let c = power_coefficients_fixed(&bezier.map(C::numerator));
-                    for (&u, o) in params {
-                        let (_, d) = horner_with_derivative_fixed(&c, (u - a) * scale);
-                        (d * scale).write_to(o);
-                    }
-                }
-            },
-        );
+        let p = self.degree();
+        self.for_each_run(Params::Slice(us), |k, run| {
+            let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
+            if p > MAX_FAST_DEGREE || run.len() < POWER_FORM_MIN_RUN {
+                short(run, outs);
+                return;
+            }
+            let piece = self.power_form(k);
+            let (c, local) = (&piece.c, (piece.start, piece.scale));
+            let us = &us[run];
+            match (p, self.rational) {
+                (1, true) => derivative_run::<C, 2, true>(c, local, us, outs),
+                (2, true) => derivative_run::<C, 3, true>(c, local, us, outs),
+                (3, true) => derivative_run::<C, 4, true>(c, local, us, outs),
+                (4, true) => derivative_run::<C, 5, true>(c, local, us, outs),
+                (_, true) => derivative_run::<C, 6, true>(c, local, us, outs),
+                (1, false) => derivative_run::<C, 2, false>(c, local, us, outs),
+                (2, false) => derivative_run::<C, 3, false>(c, local, us, outs),
+                (3, false) => derivative_run::<C, 4, false>(c, local, us, outs),
+                (4, false) => derivative_run::<C, 5, false>(c, local, us, outs),
+                (_, false) => derivative_run::<C, 6, false>(c, local, us, outs),
+            }
+        });
     }
 }
