@@ -955,3 +955,380 @@ fn dense_sampling_matches_de_casteljau_for_every_degree() {
         }
     }
 }
+
+// ---- arc length: the 2D fast path against the adaptive method and closed forms -------------
+
+/// The adaptive method at 100× the fast path's accuracy: the independent reference.
+fn adaptive_reference(c: &BezierCurve<DVec2>) -> f64 {
+    let cps = c.control_points();
+    let polygon: f64 = cps.windows(2).map(|w| (w[1] - w[0]).length()).sum();
+    c.arc_length_adaptive(Some(1e-15 * polygon.max(f64::MIN_POSITIVE)))
+        .unwrap()
+}
+
+/// Checks the fast path (`arc_length(None)`) against the adaptive reference, relatively.
+#[track_caller]
+fn check_against_adaptive(points: Vec<DVec2>, tol: f64, what: &str) -> f64 {
+    let c = BezierCurve::new(points, None).unwrap();
+    let (fast, reference) = (c.arc_length(None).unwrap(), adaptive_reference(&c));
+    let rel = if reference == 0.0 {
+        fast.abs()
+    } else {
+        (fast - reference).abs() / reference
+    };
+    assert!(
+        rel <= tol,
+        "{what}: fast {fast:e}, adaptive {reference:e}, relative difference {rel:e}"
+    );
+    rel
+}
+
+/// Complex product of points read as `x + iy`.
+fn cmul(a: DVec2, b: DVec2) -> DVec2 {
+    DVec2::new(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x)
+}
+
+/// The cubic through `p0` whose hodograph, read as a complex polynomial, is
+/// `z'(t) = a (t − r1)(t − r2)`: integrating, `P(t) = p0 + c0 t + c1 t²/2 + c2 t³/3` with
+/// `c2 = a`, `c1 = −a (r1 + r2)`, `c0 = a r1 r2`, and power → Bézier:
+/// `P1 = P0 + p1/3`, `P2 = P0 + 2p1/3 + p2/3`, `P3 = P0 + p1 + p2 + p3`.
+fn cubic_with_hodograph_roots(p0: DVec2, a: DVec2, r1: DVec2, r2: DVec2) -> Vec<DVec2> {
+    let (c2, c1, c0) = (a, -cmul(a, r1 + r2), cmul(a, cmul(r1, r2)));
+    let (p1, p2, p3) = (c0, c1 / 2.0, c2 / 3.0);
+    vec![
+        p0,
+        p0 + p1 / 3.0,
+        p0 + 2.0 * p1 / 3.0 + p2 / 3.0,
+        p0 + p1 + p2 + p3,
+    ]
+}
+
+#[test]
+fn arc_length_fast_path_matches_the_adaptive_method_on_random_curves() {
+    let mut rng = Rng::new(2024);
+    let mut worst: f64 = 0.0;
+    for i in 0..2000 {
+        worst = worst.max(check_against_adaptive(
+            random_curve(&mut rng, 3),
+            1e-13,
+            &format!("random cubic {i}"),
+        ));
+    }
+    for i in 0..300 {
+        let q = random_curve(&mut rng, 2);
+        worst = worst.max(check_against_adaptive(
+            q.clone(),
+            1e-13,
+            &format!("random quadratic {i}"),
+        ));
+        // The same quadratic degree-elevated to a cubic: the same length.
+        let elevated = vec![
+            q[0],
+            q[0] + (q[1] - q[0]) * (2.0 / 3.0),
+            q[2] + (q[1] - q[2]) * (2.0 / 3.0),
+            q[2],
+        ];
+        let (l2, l3) = (
+            BezierCurve::new(q, None).unwrap().arc_length(None).unwrap(),
+            BezierCurve::new(elevated, None)
+                .unwrap()
+                .arc_length(None)
+                .unwrap(),
+        );
+        assert_close(l3, l2, 1e-13 * l2, "quadratic as a cubic");
+    }
+    // Unit-square cubics, as in the benchmark: their hodograph roots are near [0, 1].
+    for i in 0..1000 {
+        let p: Vec<DVec2> = (0..4)
+            .map(|_| DVec2::new(rng.range(0.0, 1.0), rng.range(0.0, 1.0)))
+            .collect();
+        worst = worst.max(check_against_adaptive(
+            p,
+            1e-13,
+            &format!("unit-square cubic {i}"),
+        ));
+    }
+    println!("worst relative difference on random curves: {worst:e}");
+}
+
+#[test]
+fn arc_length_fast_path_on_cusps_near_cusps_and_degenerate_curves() {
+    let mut rng = Rng::new(77);
+    let mut worst: f64 = 0.0;
+    let mut check = |r1: DVec2, r2: DVec2, what: &str, rng: &mut Rng| {
+        for _ in 0..20 {
+            let a = rng.point2(3.0);
+            let p0 = rng.point2(5.0);
+            let pts = cubic_with_hodograph_roots(p0, a, r1, r2);
+            worst = worst.max(check_against_adaptive(pts, 1e-13, what));
+        }
+    };
+    for x in [0.0, 0.25, 1.0 / 3.0, 0.5, 0.61803398875, 0.9, 1.0] {
+        for other in [
+            DVec2::new(0.4, 0.3),
+            DVec2::new(2.0, -1.0),
+            DVec2::new(x, 0.0),
+        ] {
+            check(DVec2::new(x, 0.0), other, &format!("cusp at {x}"), &mut rng);
+            for eps in [1e-3, 1e-6, 1e-9, 1e-12] {
+                check(
+                    DVec2::new(x, eps),
+                    other,
+                    &format!("near-cusp at {x} + {eps}i"),
+                    &mut rng,
+                );
+            }
+        }
+    }
+    for x in [-1e-3, -1e-9, -1e-14, 1.0 + 1e-14, 1.0 + 1e-6, 1.1] {
+        for eps in [0.0, 1e-12, 1e-8, 1e-4] {
+            check(
+                DVec2::new(x, eps),
+                DVec2::new(0.5, 0.2),
+                &format!("root just outside at {x} + {eps}i"),
+                &mut rng,
+            );
+        }
+    }
+    for r in [
+        DVec2::new(0.5, 0.1),
+        DVec2::new(0.3, 1e-7),
+        DVec2::new(0.7, 0.0),
+    ] {
+        check(r, r, &format!("double root {r}"), &mut rng);
+        check(
+            r,
+            DVec2::new(r.x, -r.y),
+            &format!("conjugate pair {r}"),
+            &mut rng,
+        );
+    }
+    println!("worst relative difference on cusps and near-cusps: {worst:e}");
+
+    // Degenerate curves.
+    let p = DVec2::new(3.0, -2.0);
+    assert_eq!(
+        BezierCurve::new(vec![p; 4], None)
+            .unwrap()
+            .arc_length(None)
+            .unwrap(),
+        0.0
+    );
+    assert_eq!(
+        bezier::arc_lengths::<DVec2>(&[1.0, 2.0, 1.0, 2.0, 1.0, 2.0], 2, None).unwrap(),
+        vec![0.0]
+    );
+    // Collinear control points, the middle ones beyond the ends: the curve doubles back.
+    for _ in 0..50 {
+        let (o, d) = (rng.point2(5.0), rng.point2(1.0));
+        let s: Vec<f64> = (0..4).map(|_| rng.range(-2.0, 2.0)).collect();
+        check_against_adaptive(s.iter().map(|&s| o + d * s).collect(), 1e-13, "collinear");
+    }
+    // A line: the chord.
+    let line = BezierCurve::new(pts2(&[(1.0, 1.0), (4.0, 5.0)]), None).unwrap();
+    assert_close(line.arc_length(None).unwrap(), 5.0, 1e-15 * 5.0, "line");
+}
+
+#[test]
+fn arc_length_of_straight_cubics_with_stops_has_a_closed_form() {
+    // z' = a (t − r1)(t − r2) with a, r1, r2 real: a straight line traversed at speed
+    // |a| |(t − r1)(t − r2)|, stopping (and reversing) at r1 and r2 when they lie in [0, 1].
+    // ∫ |(t − r1)(t − r2)| dt by the antiderivative of t³/3 − (r1 + r2) t²/2 + r1 r2 t, piecewise
+    // between the sorted roots.
+    let exact = |a: f64, r1: f64, r2: f64| {
+        let f = |t: f64| t * t * t / 3.0 - (r1 + r2) * t * t / 2.0 + r1 * r2 * t;
+        let mut cuts = vec![0.0];
+        for r in [r1.min(r2), r1.max(r2)] {
+            if r > 0.0 && r < 1.0 {
+                cuts.push(r);
+            }
+        }
+        cuts.push(1.0);
+        a.abs()
+            * cuts
+                .windows(2)
+                .map(|w| (f(w[1]) - f(w[0])).abs())
+                .sum::<f64>()
+    };
+    for (r1, r2) in [
+        (0.3, 0.3),
+        (0.5, 0.5),
+        (0.0, 0.0),
+        (1.0, 1.0),
+        (0.2, 0.7),
+        (1.0 / 3.0, 2.0 / 3.0),
+        (0.0, 1.0),
+        (-0.5, 0.4),
+        (0.25, 1.5),
+    ] {
+        let a = DVec2::new(1.5, -2.0);
+        let pts = cubic_with_hodograph_roots(
+            DVec2::new(1.0, 1.0),
+            a,
+            DVec2::new(r1, 0.0),
+            DVec2::new(r2, 0.0),
+        );
+        let l = BezierCurve::new(pts, None)
+            .unwrap()
+            .arc_length(None)
+            .unwrap();
+        let e = exact(a.length(), r1, r2);
+        assert_close(l, e, 1e-13 * e, &format!("roots {r1}, {r2}"));
+    }
+}
+
+/// Closed form of the quadratic Bézier's length: the hodograph is `u t + v` with
+/// `u = 2(P0 − 2P1 + P2)`, `v = 2(P1 − P0)`; `|u t + v| = √A · √((t + B/2A)² + m)` with
+/// `A = u·u`, `B = 2 u·v`, `C = v·v`, `m = C/A − (B/2A)² ≥ 0`, and
+/// `∫ √(w² + m) dw = (w √(w² + m) + m asinh(w/√m))/2` (`w |w|/2` when `m = 0`).
+/// Also returns the size of the terms, for the conditioning of the difference.
+fn quadratic_length_closed_form(p: &[DVec2]) -> (f64, f64) {
+    let u = 2.0 * (p[0] - 2.0 * p[1] + p[2]);
+    let v = 2.0 * (p[1] - p[0]);
+    let (a, b, c) = (u.dot(u), 2.0 * u.dot(v), v.dot(v));
+    if a == 0.0 {
+        return (c.sqrt(), c.sqrt());
+    }
+    let shift = b / (2.0 * a);
+    let m = (c / a - shift * shift).max(0.0);
+    let g = |w: f64| {
+        if m == 0.0 {
+            0.5 * w * w.abs()
+        } else {
+            0.5 * (w * (w * w + m).sqrt() + m * (w / m.sqrt()).asinh())
+        }
+    };
+    let (g1, g0) = (g(1.0 + shift), g(shift));
+    (a.sqrt() * (g1 - g0), a.sqrt() * (g1.abs() + g0.abs()))
+}
+
+#[test]
+fn quadratic_arc_length_matches_the_closed_form() {
+    let parabola = pts2(&[(0.0, 0.0), (0.5, 0.0), (1.0, 1.0)]);
+    let (exact, _) = quadratic_length_closed_form(&parabola);
+    assert_close(
+        exact,
+        (2.0 * 5f64.sqrt() + 2f64.asinh()) / 4.0,
+        1e-15,
+        "the closed form itself",
+    );
+    let mut rng = Rng::new(5);
+    let mut well_conditioned = 0;
+    for i in 0..2000 {
+        let p = random_curve(&mut rng, 2);
+        let (exact, size) = quadratic_length_closed_form(&p);
+        let l = BezierCurve::new(p, None).unwrap().arc_length(None).unwrap();
+        // The closed form is a difference; its own rounding is ~1e-16 × the terms' size.
+        let tol = 1e-13 * exact + 4e-16 * size;
+        if size <= 10.0 * exact {
+            well_conditioned += 1;
+        }
+        assert_close(l, exact, tol, &format!("random quadratic {i}"));
+    }
+    assert!(well_conditioned > 1800, "{well_conditioned}");
+    // Near-cusps of quadratics: the control points almost collinear with P1 beyond the end.
+    for eps in [1e-3, 1e-6, 1e-9, 1e-12, 0.0] {
+        let p = pts2(&[(0.0, 0.0), (2.0, eps), (1.0, 0.0)]);
+        let (exact, size) = quadratic_length_closed_form(&p);
+        let l = BezierCurve::new(p, None).unwrap().arc_length(None).unwrap();
+        assert_close(
+            l,
+            exact,
+            1e-13 * exact + 4e-16 * size,
+            &format!("eps {eps}"),
+        );
+    }
+}
+
+fn p_flat(c: &BezierCurve<DVec2>) -> Vec<f64> {
+    c.control_points().iter().flat_map(|p| [p.x, p.y]).collect()
+}
+
+#[test]
+fn batched_arc_lengths_equal_the_single_ones_for_every_path() {
+    let mut rng = Rng::new(8);
+    for degree in 1..=5 {
+        let curves: Vec<BezierCurve<DVec2>> = (0..20)
+            .map(|_| BezierCurve::new(random_curve(&mut rng, degree), None).unwrap())
+            .collect();
+        let flat: Vec<f64> = curves.iter().flat_map(p_flat).collect();
+        for accuracy in [None, Some(1e-12), Some(1e-13), Some(0.5)] {
+            let batch = bezier::arc_lengths::<DVec2>(&flat, degree, accuracy).unwrap();
+            for (c, l) in curves.iter().zip(&batch) {
+                assert_eq!(*l, c.arc_length(accuracy).unwrap(), "degree {degree}");
+            }
+        }
+    }
+    let curves: Vec<Vec<DVec3>> = (0..10)
+        .map(|_| (0..4).map(|_| rng.point3(5.0)).collect())
+        .collect();
+    let flat: Vec<f64> = curves
+        .iter()
+        .flatten()
+        .flat_map(|p| [p.x, p.y, p.z])
+        .collect();
+    let batch = bezier::arc_lengths::<DVec3>(&flat, 3, None).unwrap();
+    for (c, l) in curves.iter().zip(&batch) {
+        assert_eq!(
+            *l,
+            BezierCurve::new(c.clone(), None)
+                .unwrap()
+                .arc_length(None)
+                .unwrap()
+        );
+    }
+    // A planar cubic in 3D (z = 0) takes the adaptive path and agrees with the 2D fast path.
+    let c2 = random_curve(&mut rng, 3);
+    let c3: Vec<DVec3> = c2.iter().map(|p| p.extend(0.0)).collect();
+    let (l2, l3) = (
+        BezierCurve::new(c2, None)
+            .unwrap()
+            .arc_length(None)
+            .unwrap(),
+        BezierCurve::new(c3, None)
+            .unwrap()
+            .arc_length(None)
+            .unwrap(),
+    );
+    assert_close(l2, l3, 1e-12 * l2, "planar 3D curve");
+}
+
+#[test]
+fn batched_arc_lengths_report_bad_input_as_before() {
+    let mut rng = Rng::new(9);
+    let good: Vec<f64> = (0..3)
+        .flat_map(|_| random_curve(&mut rng, 3))
+        .flat_map(|p| [p.x, p.y])
+        .collect();
+    for (bad, text) in [
+        (f64::NAN, "coordinate 5 is NaN"),
+        (f64::INFINITY, "coordinate 5 is inf"),
+    ] {
+        let mut flat = good.clone();
+        flat[8 + 5] = bad;
+        let err = bezier::arc_lengths::<DVec2>(&flat, 3, None).unwrap_err();
+        // The same error as building that curve (compared as text: NaN ≠ NaN).
+        assert!(matches!(err, Error::NotFinite { .. }));
+        assert_eq!(
+            message(err.clone()),
+            message(BezierCurve::<DVec2>::from_flat(&flat[8..16], None).unwrap_err())
+        );
+        assert!(message(err).contains(text));
+    }
+    assert!(
+        message(bezier::arc_lengths::<DVec2>(&good[..15], 3, None).unwrap_err())
+            .contains("15 coordinates do not split")
+    );
+    assert!(
+        message(bezier::arc_lengths::<DVec2>(&good, 0, None).unwrap_err()).contains("do not split")
+    );
+    assert!(
+        message(bezier::arc_lengths::<DVec2>(&[], 3, None).unwrap_err()).contains("do not split")
+    );
+    for accuracy in [0.0, -1.0, f64::NAN] {
+        assert!(matches!(
+            bezier::arc_lengths::<DVec2>(&good, 3, Some(accuracy)).unwrap_err(),
+            Error::InvalidTolerance { .. }
+        ));
+    }
+}

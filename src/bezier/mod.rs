@@ -23,7 +23,7 @@ mod derivative;
 mod flatten;
 mod intersect;
 
-pub use arc_length::arc_lengths;
+pub use arc_length::{arc_lengths, FAST_PATH_RELATIVE_ERROR, RULE_RHO};
 pub use composite::{
     check_continuity, from_polynomial, join, CompositeCurve, Continuity, JoinRule,
 };

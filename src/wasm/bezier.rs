@@ -444,7 +444,8 @@ fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
 }
 
 /// `arcLengths(points, dim, degree, accuracy?)`: the arc lengths of many Bézier curves of one
-/// degree given back to back (`(degree + 1)·dim` numbers each), in one call.
+/// degree given back to back (`(degree + 1)·dim` numbers each), in one call. 2D curves of degree
+/// ≤ 3 use singularity-aware Gauss–Legendre (relative error ≤ 1e-13), straight from the numbers.
 #[wasm_bindgen(js_name = arcLengths)]
 pub fn arc_lengths(
     points: &[f64],
