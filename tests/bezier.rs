@@ -1332,3 +1332,15 @@ fn batched_arc_lengths_report_bad_input_as_before() {
         ));
     }
 }
+
+#[test]
+fn arc_length_with_an_accuracy_below_rounding_still_returns() {
+    // 1e-16 absolute on a curve ~20 long cannot be met in floating point; the quadrature's
+    // work budget ends the refinement with an estimate as good as the default one.
+    let mut rng = Rng::new(61);
+    let pts: Vec<DVec2> = (0..6).map(|_| rng.point2(20.0)).collect();
+    let c = BezierCurve::new(pts, None).unwrap();
+    let tight = c.arc_length(Some(1e-16)).unwrap();
+    let default = c.arc_length(None).unwrap();
+    assert_close(tight, default, 1e-12 * default, "tight vs default accuracy");
+}

@@ -13,6 +13,11 @@ use std::sync::OnceLock;
 const GAUSS_NODES: usize = 16;
 /// Deepest bisection of the parameter interval in the adaptive quadrature.
 const MAX_QUADRATURE_DEPTH: u32 = 40;
+/// Most intervals the adaptive quadrature refines for one curve. An accuracy below what
+/// rounding allows would otherwise keep every interval halving to the depth cap (2^40 of
+/// them: a frozen page); past the budget the remaining intervals keep their two-half
+/// estimate.
+const MAX_QUADRATURE_INTERVALS: usize = 1 << 14;
 /// Default accuracy, relative to the control polygon's length (which bounds the arc length
 /// from above).
 pub const DEFAULT_RELATIVE_ACCURACY: f64 = 1e-13;
@@ -57,6 +62,8 @@ struct Speed<'a, C: Cartesian> {
     /// Polynomial curves: `P'(s) = Σ_k velocity[k] s^k`.
     velocity: Vec<C>,
     scratch: Vec<C::Homogeneous>,
+    /// Intervals the adaptive quadrature may still refine.
+    budget: usize,
 }
 
 impl<'a, C: Cartesian> Speed<'a, C> {
@@ -79,6 +86,7 @@ impl<'a, C: Cartesian> Speed<'a, C> {
             first,
             velocity,
             scratch: Vec::new(),
+            budget: MAX_QUADRATURE_INTERVALS,
         }
     }
 
@@ -112,9 +120,16 @@ impl<'a, C: Cartesian> Speed<'a, C> {
     fn adaptive(&mut self, lo: f64, hi: f64, whole: f64, accuracy: f64, depth: u32) -> f64 {
         let mid = 0.5 * (lo + hi);
         let (left, right) = (self.gauss(lo, mid), self.gauss(mid, hi));
-        if depth >= MAX_QUADRATURE_DEPTH || (left + right - whole).abs() <= accuracy {
+        // Halving cannot resolve differences at the rounding level of the interval's own
+        // integral; the budget is the last guard.
+        let floor = 16.0 * f64::EPSILON * (left + right);
+        if depth >= MAX_QUADRATURE_DEPTH
+            || self.budget == 0
+            || (left + right - whole).abs() <= accuracy.max(floor)
+        {
             return left + right;
         }
+        self.budget -= 1;
         self.adaptive(lo, mid, left, 0.5 * accuracy, depth + 1)
             + self.adaptive(mid, hi, right, 0.5 * accuracy, depth + 1)
     }
