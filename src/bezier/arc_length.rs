@@ -22,34 +22,33 @@ const MAX_QUADRATURE_INTERVALS: usize = 1 << 14;
 /// from above).
 pub const DEFAULT_RELATIVE_ACCURACY: f64 = 1e-13;
 
-/// Gauss–Legendre nodes and weights on `[-1, 1]`, computed once by Newton's method on the
-/// Legendre polynomial `P_N` (three-term recurrence).
+/// Node `i` (largest first) and its weight of the `n`-point Gauss–Legendre rule on `[-1, 1]`:
+/// Newton's method on the Legendre polynomial `P_n` (three-term recurrence) from the
+/// asymptotic guess `cos(π(i + 3/4)/(n + 1/2))`.
+fn legendre_node(n: usize, i: usize) -> (f64, f64) {
+    let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+    let mut dp = 1.0;
+    for _ in 0..100 {
+        let (mut p0, mut p1) = (1.0, x);
+        for k in 2..=n {
+            let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+            p0 = p1;
+            p1 = p2;
+        }
+        dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+        let dx = p1 / dp;
+        x -= dx;
+        if dx.abs() < 1e-16 {
+            break;
+        }
+    }
+    (x, 2.0 / ((1.0 - x * x) * dp * dp))
+}
+
+/// Gauss–Legendre nodes and weights on `[-1, 1]` for the adaptive method, computed once.
 fn gauss_legendre() -> &'static [(f64, f64); GAUSS_NODES] {
     static NODES: OnceLock<[(f64, f64); GAUSS_NODES]> = OnceLock::new();
-    NODES.get_or_init(|| {
-        let n = GAUSS_NODES;
-        let mut out = [(0.0, 0.0); GAUSS_NODES];
-        for (i, slot) in out.iter_mut().enumerate() {
-            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            let mut dp = 1.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, x);
-                for k in 2..=n {
-                    let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                let dx = p1 / dp;
-                x -= dx;
-                if dx.abs() < 1e-16 {
-                    break;
-                }
-            }
-            *slot = (x, 2.0 / ((1.0 - x * x) * dp * dp));
-        }
-        out
-    })
+    NODES.get_or_init(|| std::array::from_fn(|i| legendre_node(GAUSS_NODES, i)))
 }
 
 /// The speed `|P'(s)|` of a curve in its local parameter, with the hodograph's points computed
@@ -581,27 +580,7 @@ mod tests {
     /// Gauss–Legendre by Newton's method on `P_n` in f64 (as `gauss_legendre` above), sorted
     /// like the tables: positive nodes, largest first.
     fn newton(n: usize) -> Vec<(f64, f64)> {
-        (0..n / 2)
-            .map(|i| {
-                let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-                let mut dp = 1.0;
-                for _ in 0..100 {
-                    let (mut p0, mut p1) = (1.0, x);
-                    for k in 2..=n {
-                        let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
-                        p0 = p1;
-                        p1 = p2;
-                    }
-                    dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                    let dx = p1 / dp;
-                    x -= dx;
-                    if dx.abs() < 1e-16 {
-                        break;
-                    }
-                }
-                (x, 2.0 / ((1.0 - x * x) * dp * dp))
-            })
-            .collect()
+        (0..n / 2).map(|i| legendre_node(n, i)).collect()
     }
 
     #[test]

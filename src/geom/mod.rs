@@ -292,18 +292,9 @@ impl Params<'_> {
                     f(u);
                 }
             }
-            Params::Uniform {
-                start,
-                step,
-                end,
-                count,
-            } => {
+            Params::Uniform { .. } => {
                 for i in run {
-                    f(if i + 1 == count {
-                        end
-                    } else {
-                        start + step * i as f64
-                    });
+                    f(self.get(i));
                 }
             }
         }

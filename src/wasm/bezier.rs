@@ -1,6 +1,6 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
-use super::{check_count, memory_view};
+use super::{check_count, fill_view};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -188,23 +188,23 @@ impl JsBezierCurve {
     #[wasm_bindgen(js_name = sampleUniformView)]
     pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
         check_count(count)?;
-        let mut out = std::mem::take(&mut self.view);
-        out.resize(count.saturating_mul(self.dim()), 0.0);
-        let done = with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out));
-        self.view = out;
-        done?;
-        memory_view(&self.view)
+        let len = count.saturating_mul(self.dim());
+        fill_view(
+            &mut self.view,
+            len,
+            |out| with_curve!(&self.inner, c => c.sample_uniform_into(count, out)),
+        )
     }
 
     /// `sample(ts)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(&mut self, ts: &[f64]) -> Result<Float64Array, JsError> {
-        let mut out = std::mem::take(&mut self.view);
-        out.resize(ts.len().saturating_mul(self.dim()), 0.0);
-        let done = with_curve!(&self.inner, c => c.sample_into(ts, &mut out));
-        self.view = out;
-        done?;
-        memory_view(&self.view)
+        let len = ts.len().saturating_mul(self.dim());
+        fill_view(
+            &mut self.view,
+            len,
+            |out| with_curve!(&self.inner, c => c.sample_into(ts, out)),
+        )
     }
 
     /// de Casteljau's triangle at t: every level concatenated, the control points first;

@@ -1,7 +1,7 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
-use super::{check_count, memory_view};
+use super::{check_count, fill_view};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -201,23 +201,23 @@ impl JsBSplineCurve {
     #[wasm_bindgen(js_name = sampleUniformView)]
     pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
         check_count(count)?;
-        let mut out = std::mem::take(&mut self.view);
-        out.resize(count.saturating_mul(self.dim()), 0.0);
-        let done = with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out));
-        self.view = out;
-        done?;
-        memory_view(&self.view)
+        let len = count.saturating_mul(self.dim());
+        fill_view(
+            &mut self.view,
+            len,
+            |out| with_curve!(&self.inner, c => c.sample_uniform_into(count, out)),
+        )
     }
 
     /// `sample(us)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(&mut self, us: &[f64]) -> Result<Float64Array, JsError> {
-        let mut out = std::mem::take(&mut self.view);
-        out.resize(us.len().saturating_mul(self.dim()), 0.0);
-        let done = with_curve!(&self.inner, c => c.sample_into(us, &mut out));
-        self.view = out;
-        done?;
-        memory_view(&self.view)
+        let len = us.len().saturating_mul(self.dim());
+        fill_view(
+            &mut self.view,
+            len,
+            |out| with_curve!(&self.inner, c => c.sample_into(us, out)),
+        )
     }
 
     /// `N_{i,p}(u)` for i = 0..n.

@@ -41,6 +41,18 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
     ))
 }
 
+/// Resizes `buffer` to `len` numbers, lets `fill` write them and returns a view of it (see
+/// [`memory_view`]): the `…View` methods. On an error the buffer keeps its allocation.
+pub(crate) fn fill_view(
+    buffer: &mut Vec<f64>,
+    len: usize,
+    fill: impl FnOnce(&mut [f64]) -> Result<(), Error>,
+) -> Result<Float64Array, JsError> {
+    buffer.resize(len, 0.0);
+    fill(buffer)?;
+    memory_view(buffer)
+}
+
 /// Rejects a sample count above [`crate::geom::MAX_SAMPLES`].
 pub(crate) fn check_count(count: usize) -> Result<(), Error> {
     if count > crate::geom::MAX_SAMPLES {
