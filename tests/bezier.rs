@@ -948,6 +948,13 @@ fn dense_sampling_matches_de_casteljau_for_every_degree() {
                     &format!("degree {degree}, t = {t}"),
                 );
             }
+            let mut one = [0.0; 2];
+            c.sample_uniform_into(1, &mut one).unwrap();
+            assert_eq!(
+                DVec2::from_slice(&one),
+                c.evaluate(0.0).unwrap(),
+                "count = 1: the start"
+            );
             if !rational {
                 assert_eq!(DVec2::new(out[0], out[1]), pts[0], "exact start");
                 assert_eq!(DVec2::new(out[100], out[101]), pts[degree], "exact end");

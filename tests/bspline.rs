@@ -807,6 +807,17 @@ fn fast_dense_sampling_equals_the_pointwise_path_for_every_degree() {
             );
             assert_close3(DVec3::from_slice(&uniform[3 * k..]), e, tol, "uniform");
         }
+        // One sample is the start of the domain (as for Bézier curves); none writes nothing.
+        let mut one = [0.0; 3];
+        c.sample_uniform_into(1, &mut one).unwrap();
+        let start = c.evaluate(a).unwrap();
+        assert_close3(
+            DVec3::from_slice(&one),
+            start,
+            1e-12 * (1.0 + start.length()),
+            "count = 1",
+        );
+        c.sample_uniform_into(0, &mut []).unwrap();
         // Mixed densities: long runs take the per-span power form, short ones the basis
         // functions; every knot and both domain ends are sampled exactly too.
         let mut mixed: Vec<f64> = c.knots().as_slice()[p..count + 1].to_vec();

@@ -222,7 +222,8 @@ impl<C: Cartesian> BSplineCurve<C> {
         Ok(())
     }
 
-    /// Writes `count` points at equally spaced parameters over the domain (ends included).
+    /// Writes `count` points at equally spaced parameters over the domain (ends included;
+    /// `count = 1` gives the start point, as for Bézier curves).
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), count, C::DIM)?;
         let (a, b) = self.domain();
