@@ -948,6 +948,19 @@ fn dense_sampling_matches_de_casteljau_for_every_degree() {
                     &format!("degree {degree}, t = {t}"),
                 );
             }
+            // A uniform grid hits both ends exactly.
+            let mut grid = vec![0.0; 2 * 51];
+            c.sample_uniform_into(51, &mut grid).unwrap();
+            assert_eq!(
+                DVec2::from_slice(&grid),
+                c.evaluate(0.0).unwrap(),
+                "grid start"
+            );
+            assert_eq!(
+                DVec2::from_slice(&grid[100..]),
+                c.evaluate(1.0).unwrap(),
+                "grid end"
+            );
             let mut one = [0.0; 2];
             c.sample_uniform_into(1, &mut one).unwrap();
             assert_eq!(

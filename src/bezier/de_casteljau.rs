@@ -226,15 +226,25 @@ fn horner_run_fixed<Q: Point, C: Point, const N: usize>(
             end,
             count,
         } => {
-            // s = (u0 + step·i − start)·scale, with the two products folded out of the loop.
+            // s = (u0 + step·i − start)·scale, with the two products folded out of the loop;
+            // the grid's last value is exact, so the run's last point is done apart, and the
+            // loop in between is Horner's rule alone (s = 0 and s = 1 lie only at the ends).
             let (s0, ds) = ((u0 - start) * scale, step * scale);
-            for (i, o) in run.zip(outs) {
-                let s = if i + 1 == count {
-                    (end - start) * scale
-                } else {
-                    s0 + ds * i as f64
-                };
-                value(s).write_to(o);
+            let ends_here = run.end == count;
+            let inner = run.start..if ends_here { run.end - 1 } else { run.end };
+            let mut outs = outs;
+            for (i, o) in inner.zip(&mut outs) {
+                finish(horner_fixed(&c, s0 + ds * i as f64)).write_to(o);
+            }
+            if ends_here {
+                if let Some(o) = outs.next() {
+                    value((end - start) * scale).write_to(o);
+                }
+            }
+            if run.start == 0 && s0 == 0.0 {
+                if let (Some((first, _)), Some(o)) = (ends, out.get_mut(..C::DIM)) {
+                    first.write_to(o);
+                }
             }
         }
     }
