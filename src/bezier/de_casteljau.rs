@@ -186,12 +186,13 @@ pub(crate) fn horner_run<Q: Point, C: Point>(
     ends: Option<(C, C)>,
     out: &mut [f64],
 ) {
-    match piece.degree {
-        1 => horner_run_fixed::<Q, C, 2>(piece, params, run, finish, ends, out),
-        2 => horner_run_fixed::<Q, C, 3>(piece, params, run, finish, ends, out),
-        3 => horner_run_fixed::<Q, C, 4>(piece, params, run, finish, ends, out),
-        4 => horner_run_fixed::<Q, C, 5>(piece, params, run, finish, ends, out),
-        _ => horner_run_fixed::<Q, C, 6>(piece, params, run, finish, ends, out),
+    // Two unrolled lengths: degrees 1–3 as cubics and 4–5 as quintics, the unused leading
+    // coefficients zero (Horner's rule then performs exactly the operations of the shorter
+    // loop: 0·s + c = c), so the results are bit-identical and the wasm keeps two copies.
+    if piece.degree <= 3 {
+        horner_run_fixed::<Q, C, 4>(piece, params, run, finish, ends, out);
+    } else {
+        horner_run_fixed::<Q, C, 6>(piece, params, run, finish, ends, out);
     }
 }
 

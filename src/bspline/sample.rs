@@ -245,17 +245,13 @@ impl<C: Cartesian> BSplineCurve<C> {
             let piece = self.power_form(k);
             let (c, local) = (&piece.c, (piece.start, piece.scale));
             let us = &us[run];
-            match (p, self.rational) {
-                (1, true) => derivative_run::<C, 2, true>(c, local, us, outs),
-                (2, true) => derivative_run::<C, 3, true>(c, local, us, outs),
-                (3, true) => derivative_run::<C, 4, true>(c, local, us, outs),
-                (4, true) => derivative_run::<C, 5, true>(c, local, us, outs),
-                (_, true) => derivative_run::<C, 6, true>(c, local, us, outs),
-                (1, false) => derivative_run::<C, 2, false>(c, local, us, outs),
-                (2, false) => derivative_run::<C, 3, false>(c, local, us, outs),
-                (3, false) => derivative_run::<C, 4, false>(c, local, us, outs),
-                (4, false) => derivative_run::<C, 5, false>(c, local, us, outs),
-                (_, false) => derivative_run::<C, 6, false>(c, local, us, outs),
+            // Degrees 1–3 as cubics, 4–5 as quintics (zero leading coefficients; see
+            // `horner_run`).
+            match (p <= 3, self.rational) {
+                (true, true) => derivative_run::<C, 4, true>(c, local, us, outs),
+                (false, true) => derivative_run::<C, 6, true>(c, local, us, outs),
+                (true, false) => derivative_run::<C, 4, false>(c, local, us, outs),
+                (false, false) => derivative_run::<C, 6, false>(c, local, us, outs),
             }
         });
     }
