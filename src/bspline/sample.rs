@@ -3,8 +3,9 @@
 //! Bézier points by blossoming, then `Σ c_j s^j` in the local `s = (u − u_k)/(u_{k+1} − u_k)`
 //! — and costs `p` multiply-adds per coordinate per point by Horner's rule. A short run
 //! evaluates the `p + 1` non-zero basis functions with per-span reciprocals of the knot
-//! differences (no division per point but the homogeneous one). Both kernels are unrolled for
-//! degrees 1–5; other degrees take the general Cox–de Boor path.
+//! differences (no division per point but the homogeneous one). The basis kernel is unrolled
+//! for each degree 1–5, the Horner kernel for cubics and quintics (lower degrees with zero
+//! leading coefficients); other degrees take the general Cox–de Boor path.
 
 use super::{basis_functions, BSplineCurve, BasisScratch};
 use crate::bezier::{horner_run, horner_with_derivative_fixed, to_power_form, PowerForm};
@@ -13,7 +14,7 @@ use std::ops::Range;
 
 /// Points per run from which converting the span to the power form pays for itself: the
 /// conversion costs about as much as `p + 1` evaluations by basis functions.
-pub(crate) const POWER_FORM_MIN_RUN: usize = 8;
+const POWER_FORM_MIN_RUN: usize = 8;
 
 /// Reciprocals `1/(u_{k+r+1} − u_{k+1−j+r})` that the triangular scheme divides by on span `k`
 /// (`j = 1..N−1`, `r = 0..j`; 0 for a zero difference): they do not depend on `u`.
@@ -68,13 +69,7 @@ const MAX_FAST_DEGREE: usize = crate::bezier::HORNER_MAX_DEGREE;
 /// `u_k`, `i` times `u_{k+1}`), each blossom value by de Boor's triangle with one argument per
 /// level (`α = (x_r − u_i)/(u_{i+p+1−r} − u_i)`, `i = k − p + j`; every denominator spans the
 /// non-empty span, so none is zero), then [`to_power_form`].
-pub(crate) fn span_power_form<H: Point>(
-    knots: &[f64],
-    points: &[H],
-    k: usize,
-    p: usize,
-    out: &mut [H],
-) {
+fn span_power_form<H: Point>(knots: &[f64], points: &[H], k: usize, p: usize, out: &mut [H]) {
     let (a, b) = (knots[k], knots[k + 1]);
     let mut q = [H::ZERO; MAX_FAST_DEGREE + 1];
     for (i, slot) in out.iter_mut().take(p + 1).enumerate() {

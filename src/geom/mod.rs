@@ -282,24 +282,6 @@ impl Params<'_> {
         self.len() == 0
     }
 
-    /// Calls `f(value)` for the values `run`, in order (the source is matched once, not per
-    /// value).
-    #[inline(always)]
-    pub fn each(&self, run: std::ops::Range<usize>, mut f: impl FnMut(f64)) {
-        match *self {
-            Params::Slice(s) => {
-                for &u in &s[run] {
-                    f(u);
-                }
-            }
-            Params::Uniform { .. } => {
-                for i in run {
-                    f(self.get(i));
-                }
-            }
-        }
-    }
-
     /// Value `i` (`i < len()`).
     #[inline(always)]
     pub fn get(&self, i: usize) -> f64 {
