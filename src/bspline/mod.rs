@@ -326,12 +326,15 @@ impl<C: Cartesian> BSplineCurve<C> {
             out.fill(0.0);
             return Ok(());
         }
-        let points = self.derivative_points(order);
+        // The derivative control points serve the per-point path only: made on first use, so
+        // a first derivative sampled densely (every run in the power form) never builds them.
+        let mut points: Option<Vec<Vec<C::Homogeneous>>> = None;
         let mut basis = vec![0.0; p + 1];
         let mut scratch = BasisScratch::default();
         let mut homogeneous = vec![C::Homogeneous::ZERO; order + 1];
         let knots = self.knots.as_slice();
         let mut general = |us: &[f64], out: &mut [f64]| {
+            let points = points.get_or_insert_with(|| self.derivative_points(order));
             let mut s = p;
             for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
                 s = self.knots.span_from(u, s);
