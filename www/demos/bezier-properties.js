@@ -167,7 +167,7 @@ export function mount(container, initialState, ctx) {
       }
       dirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -194,7 +194,7 @@ export function mount(container, initialState, ctx) {
       showGroups();
       dirty = true;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   const badNumber = (text) => ctx.status(t("control.badNumber", { value: text }), "error");
@@ -202,7 +202,7 @@ export function mount(container, initialState, ctx) {
     work[field] = value;
     dirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   };
   const rotationSlider = slider({
     label: t("bezierProperties.rotation"),
@@ -282,10 +282,6 @@ export function mount(container, initialState, ctx) {
   let tableCells = [];
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Replaces the wasm curves after the number of points changed (the old ones are freed). */
   function rebuild() {
@@ -306,7 +302,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes control point i (the last one when none is selected); points of the line stay. */
@@ -317,7 +313,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ recompute (core calls)

@@ -191,7 +191,7 @@ export function mount(container, initialState, ctx) {
     degree: () => work.degree,
     continuity: () => continuity,
     move: (i, u) => moveKnot(i, u),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     raise: (i) => changeMultiplicity(i, raiseMultiplicity(work.knots, i, work.degree)),
     lower: (i) => changeMultiplicity(i, lowerMultiplicity(work.knots, i)),
     pick: (u, final) => setU(snapToKnot(u), final),
@@ -202,7 +202,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: the basis does not change
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
     select: (i) => i >= 0 && ruler.select(-1),
@@ -336,10 +336,6 @@ export function mount(container, initialState, ctx) {
   let triangleCells = []; // per level r, per j: td
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** A new wasm curve for a state (throws on invalid input). */
   function build(state) {
@@ -378,7 +374,7 @@ export function mount(container, initialState, ctx) {
       return;
     }
     ruler.select(result.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** The core's clamped uniform knot vector for the current points and degree. */
@@ -388,7 +384,7 @@ export function mount(container, initialState, ctx) {
 
   function resetKnots() {
     work.knots = clampedKnots();
-    if (rebuild()) commitWork();
+    if (rebuild()) ctx.commit(work);
   }
 
   function setDegree(p) {
@@ -407,7 +403,7 @@ export function mount(container, initialState, ctx) {
       return;
     }
     ruler.forgetPointer();
-    commitWork();
+    ctx.commit(work);
   }
 
   function setU(value, final) {
@@ -415,7 +411,7 @@ export function mount(container, initialState, ctx) {
     uSlider.set(value);
     uDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   /** Adds a point after handle i (at the end when none is selected); the knots become clamped uniform. */
@@ -427,7 +423,7 @@ export function mount(container, initialState, ctx) {
     rebuild();
     ruler.forgetPointer();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected); the knots become clamped uniform. */
@@ -440,7 +436,7 @@ export function mount(container, initialState, ctx) {
     rebuild();
     ruler.forgetPointer();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ core data

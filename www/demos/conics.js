@@ -63,7 +63,6 @@ export function validate(state) {
   checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
 }
 
-
 /** A small number to print precision: "0", "3.3e-16" or 3 decimals. */
 function smallText(x) {
   return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
@@ -139,7 +138,7 @@ export function mount(container, initialState, ctx) {
       parabola.setControlPoint(i, pointScratch);
       dirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   // ------------------------------------------------------------ side panel
@@ -180,9 +179,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
 
   // ------------------------------------------------------------ edits
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   function setW1(value, final) {
     work.w1 = value;
@@ -190,7 +186,7 @@ export function mount(container, initialState, ctx) {
     wSlider.set(value);
     dirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   /**

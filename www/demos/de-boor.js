@@ -198,7 +198,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -222,7 +222,7 @@ export function mount(container, initialState, ctx) {
   const player = new Player(view, {
     get: () => work.u,
     set: (value, final) => setU(value, final),
-    stopped: () => commitWork(),
+    stopped: () => ctx.commit(work),
     range: () => domainOf(work),
     stepBackTitle: t("deBoor.control.stepBack.title"),
     stepTitle: t("deBoor.control.stepForward.title"),
@@ -260,7 +260,7 @@ export function mount(container, initialState, ctx) {
     onChange: (on) => {
       work.construction = on;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   ctx.slots.controls.append(
@@ -288,14 +288,10 @@ export function mount(container, initialState, ctx) {
     uSlider.set(value);
     uDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /**
    * Replaces the wasm curve after the points, degree or knots changed; `next` holds the new
@@ -336,7 +332,7 @@ export function mount(container, initialState, ctx) {
     if (p === work.degree) return;
     if (rebuild({ points: work.points, degree: p, knots: clampedKnots(work.points, p) })) {
       ctx.status(t("deBoor.knotsReset"), "info");
-      commitWork();
+      ctx.commit(work);
     } else degreeSlider.set(work.degree);
   }
 
@@ -359,13 +355,13 @@ export function mount(container, initialState, ctx) {
       return;
     }
     if (values.every((v, i) => v === work.knots[i])) return;
-    if (rebuild({ points: work.points, degree: work.degree, knots: values })) commitWork();
+    if (rebuild({ points: work.points, degree: work.degree, knots: values })) ctx.commit(work);
   }
 
   function resetKnots() {
     const knots = clampedKnots(work.points, work.degree);
     if (knots.every((v, i) => v === work.knots[i])) return;
-    if (rebuild({ points: work.points, degree: work.degree, knots })) commitWork();
+    if (rebuild({ points: work.points, degree: work.degree, knots })) ctx.commit(work);
   }
 
   /** Adds a point after handle i (at the end when none is selected); knots become clamped uniform. */
@@ -375,7 +371,7 @@ export function mount(container, initialState, ctx) {
     if (!rebuild({ points: next.points, degree: work.degree, knots: clampedKnots(next.points, work.degree) })) return;
     handles.select(next.index);
     ctx.status(t("deBoor.knotsReset"), "info");
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected); the degree drops if it must. */
@@ -386,7 +382,7 @@ export function mount(container, initialState, ctx) {
     if (!rebuild({ points: next.points, degree: p, knots: clampedKnots(next.points, p) })) return;
     handles.select(next.index);
     ctx.status(t("deBoor.knotsReset"), "info");
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Slider range, degree and knot text follow the state's knots and degree. */

@@ -77,7 +77,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -97,7 +97,7 @@ export function mount(container, initialState, ctx) {
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => commitWork() });
+  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => ctx.commit(work) });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
   const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
   const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
@@ -108,7 +108,7 @@ export function mount(container, initialState, ctx) {
     onChange: (on) => {
       work.construction = on;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   ctx.slots.controls.append(
@@ -129,14 +129,10 @@ export function mount(container, initialState, ctx) {
     tSlider.set(value);
     tDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Replaces the wasm curve after the number of points changed (the old one is freed). */
   function rebuild() {
@@ -154,7 +150,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected). */
@@ -164,7 +160,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

@@ -140,7 +140,7 @@ export function mount(container, initialState, ctx) {
       }
       view.requestDraw();
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -160,7 +160,7 @@ export function mount(container, initialState, ctx) {
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
-  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => commitWork() });
+  const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => ctx.commit(work) });
   const readout = el("p", { class: "sl-readout", dataset: { info: "curvature" }, "aria-live": "polite" });
   const readoutNote = el("p", { class: "sl-note", dataset: { info: "radius" } });
   const lengthText = el("p", { class: "sl-note", dataset: { info: "arc-length" } });
@@ -191,14 +191,10 @@ export function mount(container, initialState, ctx) {
     tSlider.set(value);
     tDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Replaces the wasm curve after the number of points changed (the old one is freed). */
   function rebuild() {
@@ -216,7 +212,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes control point i (the last one when none is selected); the origin stays. */
@@ -227,7 +223,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ recompute (core calls)

@@ -122,7 +122,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   // ------------------------------------------------------------ side panel
@@ -153,7 +153,7 @@ export function mount(container, initialState, ctx) {
     onChange: (on) => {
       work.band = on;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   const presetButtons = PRESET_ORDER.map((key) =>
@@ -168,17 +168,13 @@ export function mount(container, initialState, ctx) {
   const formula = new FormulaPanel(ctx.slots.formula);
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   function setTolerance(value, final) {
     work.tolerance = value;
     toleranceSlider.set(value);
     toleranceDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   /** Moves the four points to a preset shape (in place: same number of points). */
@@ -192,7 +188,7 @@ export function mount(container, initialState, ctx) {
     });
     geometryDirty = true;
     view.requestDraw();
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

@@ -206,7 +206,7 @@ export function mount(container, initialState, ctx) {
       return HANDLE_LABELS[i];
     },
     move: (i, x, y) => movePoint(i, x, y),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     constraint: (i) => constraintOf(i),
   });
 
@@ -237,10 +237,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** True when P₃ and Q₀ are the same point (one handle on screen, one label). */
   function jointShared() {
@@ -357,7 +353,7 @@ export function mount(container, initialState, ctx) {
     }
     dirty = true;
     view.requestDraw();
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

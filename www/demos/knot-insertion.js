@@ -193,7 +193,7 @@ export function mount(container, initialState, ctx) {
       base.setControlPoint(i, xy); // in place: the original curve is not rebuilt
       geometryDirty = curvesStale = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   // Clicking (or tapping) the curve inserts the parameter of the nearest drawn sample. The
@@ -250,7 +250,7 @@ export function mount(container, initialState, ctx) {
       work.bezier = on;
       structureDirty = true;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   const countText = el("p", { class: "sl-readout", dataset: { info: "count" }, "aria-live": "polite" });
@@ -270,10 +270,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(knotsBefore, knotsAfter, alphaText, insertedText, tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** The domain [u_p, u_{n+1}] of the original knots (insertion never changes it). */
   function domain() {
@@ -291,7 +287,7 @@ export function mount(container, initialState, ctx) {
     uSlider.set(work.u);
     uDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   /** Replaces the derived curves after `work.inserted` changed; false (and a message) if refused. */
@@ -321,7 +317,7 @@ export function mount(container, initialState, ctx) {
       work.inserted.pop();
       return;
     }
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Inserts the midpoint of every non-empty span of the shown curve (one `refine` call). */
@@ -339,14 +335,14 @@ export function mount(container, initialState, ctx) {
       work.inserted.length = before;
       return;
     }
-    commitWork();
+    ctx.commit(work);
   }
 
   function clearInserted() {
     if (work.inserted.length === 0) return;
     work.inserted = [];
     rederive();
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ picking (nearest drawn sample)

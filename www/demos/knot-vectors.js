@@ -174,7 +174,7 @@ export function mount(container, initialState, ctx) {
       if (work.spacing !== "uniform") clampedKnotsDirty = true;
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -209,7 +209,7 @@ export function mount(container, initialState, ctx) {
         work[kind] = on;
         syncPanels();
         view.requestDraw();
-        commitWork();
+        ctx.commit(work);
       },
     }),
   );
@@ -245,10 +245,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(tableTitle, tableWrap);
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /**
    * Replaces all three curves for `next` (points, degree, spacing): builds first (the core may
@@ -276,13 +272,13 @@ export function mount(container, initialState, ctx) {
       return;
     }
     if (p === work.degree) return;
-    if (rebuild({ ...work, degree: p })) commitWork();
+    if (rebuild({ ...work, degree: p })) ctx.commit(work);
     else degreeSlider.set(work.degree);
   }
 
   function setSpacing(spacing) {
     if (spacing === work.spacing) return;
-    if (rebuild({ ...work, spacing })) commitWork();
+    if (rebuild({ ...work, spacing })) ctx.commit(work);
     else spacingRadios.set(work.spacing);
   }
 
@@ -292,7 +288,7 @@ export function mount(container, initialState, ctx) {
     if (!next) return ctx.status(t("knotVectors.maxPoints", { max: MAX_POINTS }), "error");
     if (!rebuild({ ...work, points: next.points })) return;
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected); the degree drops if it must. */
@@ -303,7 +299,7 @@ export function mount(container, initialState, ctx) {
     if (!rebuild({ ...work, points: next.points, degree })) return;
     degreeSlider.set(degree);
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

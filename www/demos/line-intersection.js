@@ -131,7 +131,7 @@ export function mount(container, initialState, ctx) {
       }
       geometryDirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   // ------------------------------------------------------------ side panel
@@ -164,10 +164,6 @@ export function mount(container, initialState, ctx) {
   let tableCells = null; // per intersection: { t, point } cells
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Depth shown: the state's depth, at most the deepest level the recursion reached. */
   function shownDepth() {
@@ -180,7 +176,7 @@ export function mount(container, initialState, ctx) {
     depthSlider.set(shownDepth());
     depthDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   function stepDepth(direction) {

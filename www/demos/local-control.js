@@ -156,7 +156,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
     // The point in hand is the one whose range is lit; it is recorded with the next change.
@@ -165,7 +165,7 @@ export function mount(container, initialState, ctx) {
       work.point = i;
       pointSlider.set(i);
       supportDirty = true;
-      ctx.preview(structuredClone(work));
+      ctx.preview(work);
       view.requestDraw();
     },
   });
@@ -227,10 +227,6 @@ export function mount(container, initialState, ctx) {
   let tableRows = []; // per i: { row, value, support }
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** The clamped domain [0, n − p + 1] of the current state. */
   function domainEnd() {
@@ -242,7 +238,7 @@ export function mount(container, initialState, ctx) {
     uSlider.set(work.u);
     uDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   function setPoint(i, final) {
@@ -250,7 +246,7 @@ export function mount(container, initialState, ctx) {
     pointSlider.set(work.point);
     supportDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   function setDegree(p) {
@@ -261,7 +257,7 @@ export function mount(container, initialState, ctx) {
     }
     work.degree = p;
     rebuild();
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Builds the wasm curve for the current points and degree (the old one is freed). */
@@ -294,7 +290,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected). */
@@ -304,7 +300,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ knot strip

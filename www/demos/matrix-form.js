@@ -131,7 +131,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -178,7 +178,7 @@ export function mount(container, initialState, ctx) {
     tSlider.set(work.t);
     segmentDirty = true;
     view.requestDraw();
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ side panel
@@ -210,7 +210,7 @@ export function mount(container, initialState, ctx) {
         segmentDirty = true;
         view.requestDraw();
       }
-      if (final) commitWork();
+      if (final) ctx.commit(work);
     },
     onError: (text) => ctx.status(t("matrixForm.segmentRange", { value: text, max: segmentCount(work) }), "error"),
   });
@@ -226,7 +226,7 @@ export function mount(container, initialState, ctx) {
       work.t = value;
       segmentDirty = true;
       view.requestDraw();
-      if (final) commitWork();
+      if (final) ctx.commit(work);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
@@ -261,10 +261,6 @@ export function mount(container, initialState, ctx) {
   let headerCells = []; // column heads: the points P_{i−1} … P_{i+p−1}
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /**
    * Replaces the curve for `next` (new points, degree or knot kind): built first (the core may
@@ -291,7 +287,7 @@ export function mount(container, initialState, ctx) {
       syncControls();
       return;
     }
-    if (rebuild(next)) commitWork();
+    if (rebuild(next)) ctx.commit(work);
     else syncControls();
   }
 
@@ -301,7 +297,7 @@ export function mount(container, initialState, ctx) {
     if (!next) return ctx.status(t("matrixForm.maxPoints", { max: MAX_POINTS }), "error");
     if (!rebuild({ ...structuredClone(work), points: next.points })) return;
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected); a cubic needs four points. */
@@ -311,7 +307,7 @@ export function mount(container, initialState, ctx) {
     if (!next) return ctx.status(t("matrixForm.minPoints", { min, p: work.degree }), "error");
     if (!rebuild({ ...structuredClone(work), points: next.points })) return;
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Radios and sliders show the state (segment range follows the number of points). */

@@ -148,7 +148,7 @@ export function mount(container, initialState, ctx) {
     degree: () => P,
     continuity: () => continuity,
     move: (i, u) => moveKnot(i, u),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     raise: (i) => changeMultiplicity(raiseMultiplicity(work.knots, i, P)),
     lower: (i) => changeMultiplicity(lowerMultiplicity(work.knots, i)),
     select: () => view.requestDraw(),
@@ -161,7 +161,7 @@ export function mount(container, initialState, ctx) {
       for (let c = 0; c < copies; c++) curve.setControlPoint(first + c, xy); // in place
       geometryDirty = true;
     }, (i) => (handleLabels[i] ??= pointName(i))),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     select: (i) => i >= 0 && ruler.select(-1),
   });
   ruler.source.handles = handles;
@@ -223,10 +223,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(notes.title, notes.wrap, knotsTitle, knotsTableWrap);
 
   // ------------------------------------------------------------ edits
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** A new wasm curve for a state (throws on invalid input). */
   function build(state) {
@@ -263,7 +259,7 @@ export function mount(container, initialState, ctx) {
       return;
     }
     ruler.select(result.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   function clampedKnots() {
@@ -274,7 +270,7 @@ export function mount(container, initialState, ctx) {
     work.knots = clampedKnots();
     if (rebuild()) {
       ruler.forgetPointer();
-      commitWork();
+      ctx.commit(work);
     }
   }
 
@@ -294,7 +290,7 @@ export function mount(container, initialState, ctx) {
     handleLabels = [];
     ruler.forgetPointer();
     ruler.select(-1);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ core data

@@ -85,7 +85,6 @@ export function validate(state) {
   checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
 }
 
-
 /** The homogeneous points (wᵢxᵢ, wᵢyᵢ, wᵢ) with weights 1, w₁, 1: plain 3D coordinates. */
 function homogeneousOf(points, w1) {
   const flat = new Float64Array(9);
@@ -159,7 +158,7 @@ export function mount(container, initialState, ctx) {
       setHomogeneousPoint(i);
       dirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   /** The window to fit: the triangle, P(1/2) and the projected curve near the triangle. */
@@ -226,9 +225,6 @@ export function mount(container, initialState, ctx) {
   const formula = new FormulaPanel(ctx.slots.formula);
 
   // ------------------------------------------------------------ edits
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Writes homogeneous point i of the current state into the 3D curve (in place). */
   function setHomogeneousPoint(i) {
@@ -274,7 +270,7 @@ export function mount(container, initialState, ctx) {
     syncStatus();
     dirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

@@ -170,7 +170,7 @@ export function mount(container, initialState, ctx) {
       }
       dirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
   });
 
   // ------------------------------------------------------------ side panel
@@ -235,9 +235,6 @@ export function mount(container, initialState, ctx) {
   ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
 
   // ------------------------------------------------------------ edits
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /**
    * A control changed: build the new curve from the core; on refusal (e.g. a zero sweep) show
@@ -259,7 +256,7 @@ export function mount(container, initialState, ctx) {
     work[field] = value;
     sliders[field]?.set(value);
     curveChanged();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   function setFull() {
@@ -271,7 +268,7 @@ export function mount(container, initialState, ctx) {
     sliders.start.set(0);
     sliders.sweep.set(ANGLE_MAX);
     curveChanged();
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Reads what stays fixed for a curve (control points at build, weights, knots, pieces). */

@@ -107,7 +107,6 @@ function homography(corners) {
   return new Float64Array([a / SIZE, b / SIZE, x0, d / SIZE, e / SIZE, y0, g / SIZE, h / SIZE, 1]);
 }
 
-
 function weightText(w) {
   return String(Number(w.toPrecision(WEIGHT_DIGITS)));
 }
@@ -163,7 +162,7 @@ export function mount(container, initialState, ctx) {
     },
     label: (i) => (handleLabels[i] ??= i < POINTS ? `P${subscript(i)}` : `Q${subscript(i - POINTS)}`),
     move: (i, x, y) => (i < POINTS ? movePoint(i, x, y) : moveCorner(i - POINTS, x, y)),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     polygon: false,
   });
 
@@ -197,9 +196,6 @@ export function mount(container, initialState, ctx) {
   const formula = new FormulaPanel(ctx.slots.formula);
 
   // ------------------------------------------------------------ edits
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Asks the core for the image under `m`; on refusal shows its message and returns null. */
   function tryMap(m) {
@@ -268,7 +264,7 @@ export function mount(container, initialState, ctx) {
     work.corners = corners;
     matrix = m;
     accept(next);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** The parallelogram spanned by Q₀, Q₁, Q₃ (an affine map: the contrast curve then coincides). */
@@ -284,7 +280,7 @@ export function mount(container, initialState, ctx) {
     weightSliders[i].set(w);
     const next = tryMap(matrix); // a positive factor per point: cannot fail, but ask the core
     if (next) accept(next);
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

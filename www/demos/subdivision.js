@@ -123,7 +123,7 @@ export function mount(container, initialState, ctx) {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
       geometryDirty = true;
     }, handleLabel),
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -167,7 +167,7 @@ export function mount(container, initialState, ctx) {
     onChange: (on) => {
       work.triangle = on;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
@@ -192,7 +192,7 @@ export function mount(container, initialState, ctx) {
     tSlider.set(value);
     tDirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   function setLevels(value, final) {
@@ -203,12 +203,7 @@ export function mount(container, initialState, ctx) {
       view.requestDraw();
     }
     levelsSlider.set(levels);
-    if (final) commitWork();
-  }
-
-  /** Records the shown state (panels follow at the next draw, after the core recomputed). */
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
+    if (final) ctx.commit(work);
   }
 
   /** Replaces the wasm curve after the number of points changed (the old one is freed). */
@@ -227,7 +222,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected). */
@@ -237,7 +232,7 @@ export function mount(container, initialState, ctx) {
     work.points = next.points;
     rebuild();
     handles.select(next.index);
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ core data

@@ -117,7 +117,6 @@ function kindOf(n) {
   return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
 }
 
-
 /** A weight as the panels show it: up to 3 significant digits, no trailing zeros. */
 function weightText(w) {
   return String(Number(w.toPrecision(WEIGHT_DIGITS)));
@@ -186,7 +185,7 @@ export function mount(container, initialState, ctx) {
       syncHomogeneousPoint(i);
       dirty = true;
     },
-    commit: (kind, i, merge) => commitWork(merge),
+    commit: (kind, i, merge) => ctx.commit(work, merge),
     add: (i) => addPoint(i),
     remove: (i) => removePoint(i),
   });
@@ -211,7 +210,7 @@ export function mount(container, initialState, ctx) {
     pointerUp() {
       if (ringDrag < 0) return;
       ringDrag = -1;
-      commitWork();
+      ctx.commit(work);
     },
     hover(x, y, pointerType) {
       return ringAt(x, y, pointerType) >= 0 ? "ew-resize" : null;
@@ -269,7 +268,7 @@ export function mount(container, initialState, ctx) {
       work.t = value;
       dirty = true;
       view.requestDraw();
-      if (final) commitWork();
+      if (final) ctx.commit(work);
     },
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
@@ -283,7 +282,7 @@ export function mount(container, initialState, ctx) {
     onChange: (on) => {
       work.homogeneous = on;
       view.requestDraw();
-      commitWork();
+      ctx.commit(work);
     },
   });
   const readout = el("p", { class: "sl-note", dataset: { info: "curve" }, "aria-live": "polite" });
@@ -326,9 +325,6 @@ export function mount(container, initialState, ctx) {
   let tableCells = []; // per point: { point, weight, homogeneous, share, distance }
 
   // ------------------------------------------------------------ edits
-  function commitWork(merge = null) {
-    ctx.commit(structuredClone(work), merge);
-  }
 
   /** Copies homogeneous control point i from the rational curve into the 3D polynomial curve. */
   function syncHomogeneousPoint(i) {
@@ -345,13 +341,13 @@ export function mount(container, initialState, ctx) {
     weightSliders[i]?.set(w);
     dirty = true;
     view.requestDraw();
-    if (final) commitWork();
+    if (final) ctx.commit(work);
   }
 
   /** Sets every weight to f(w) (one undo step). */
   function setAllWeights(f) {
     work.weights.forEach((w, i) => setWeight(i, f(w), false));
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Multiplies every weight by SCALE_FACTOR (or divides, when that would leave the range). */
@@ -402,7 +398,7 @@ export function mount(container, initialState, ctx) {
     work.weights.splice(at + 1, 0, 1);
     rebuild();
     handles.select(at + 1);
-    commitWork();
+    ctx.commit(work);
   }
 
   /** Removes handle i (the last one when none is selected). */
@@ -417,7 +413,7 @@ export function mount(container, initialState, ctx) {
     work.weights.splice(at, 1);
     rebuild();
     handles.select(Math.min(at, pts.length - 1));
-    commitWork();
+    ctx.commit(work);
   }
 
   // ------------------------------------------------------------ drawing

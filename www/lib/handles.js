@@ -47,7 +47,7 @@ export function roundToView(value, scale) {
  *       curve.setControlPoint(i, xy); // in place: no rebuild while dragging
  *       geometryDirty = true;
  *     }),
- *     commit: (kind, i, merge) => commitWork(merge),
+ *     commit: (kind, i, merge) => ctx.commit(work, merge),
  *   });
  */
 export function pointHandles(points, moved, label = null) {

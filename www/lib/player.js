@@ -11,7 +11,7 @@
  *   const player = new Player(view, {
  *     get: () => work.t,
  *     set: (value, final) => setT(value, final), // final: a finished change, commit it
- *     stopped: () => commitWork(),               // playback stopped: record where
+ *     stopped: () => ctx.commit(work),           // playback stopped: record where
  *   });
  *   group(null, tSlider.element, player.element);
  */

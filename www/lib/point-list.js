@@ -9,7 +9,7 @@
  *     work.points = next.points;
  *     rebuild();
  *     handles.select(next.index);
- *     commitWork();
+ *     ctx.commit(work);
  *   }
  */
 import { roundToView } from "./handles.js";

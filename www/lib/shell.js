@@ -280,13 +280,16 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
       figure.canvas.setAttribute("aria-describedby", helpId);
       return figure;
     },
-    /** A change in progress (drag, animation frame): shown, not recorded. */
+    /** A change in progress (drag, animation frame): shown, not recorded (copied, as `commit`). */
     preview(next) {
-      history.preview(withView(next));
+      history.preview(withView(structuredClone(next)));
     },
-    /** A finished change: recorded for undo and the URL. `merge` joins repeated key presses. */
+    /**
+     * A finished change: recorded for undo and the URL. `merge` joins repeated key presses.
+     * The shell keeps its own copy, so a demo hands over its working state as it is.
+     */
     commit(next, merge = null) {
-      if (history.commit(withView(next), merge)) {
+      if (history.commit(withView(structuredClone(next)), merge)) {
         refreshButtons();
         onCommit(history.current);
       }
