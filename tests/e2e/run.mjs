@@ -252,6 +252,24 @@ try {
       assert(Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6, `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`);
     });
 
+    await test(name("the Add point / Remove point buttons add and remove a handle"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const add = page.locator('[data-action="add-point"]');
+      if ((await add.count()) === 0) return; // a demo without an editable point list
+      const count = (await h.handles()).length;
+      const before = await h.snapshot();
+      await add.first().click();
+      await settle(page);
+      equal((await h.handles()).length, count + 1, "handles after Add point");
+      assert((await h.snapshot()) !== before, "canvas unchanged after Add point");
+      // The new point is selected: Remove point takes it away again.
+      await page.locator('[data-action="remove-point"]').first().click();
+      await settle(page);
+      equal((await h.handles()).length, count, "handles after Remove point");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+
     await test(name("the URL restores the same picture after reload"), async () => {
       h = await openDemo(page, base, demo.id);
       const [handle] = await h.handles();

@@ -12,13 +12,13 @@
  */
 import { Handles, pointHandles, placeLabelAway } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, setText } from "../lib/controls.js";
+import { slider, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -173,8 +173,8 @@ export function mount(container, initialState, ctx) {
       geometryDirty = true;
     }),
     commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
+    add: (i) => edits.add(i),
+    remove: (i) => edits.remove(i),
   });
 
   /** The canvas strip below the world window: [top, right, bottom, left] (scratch, no allocation). */
@@ -259,8 +259,7 @@ export function mount(container, initialState, ctx) {
   });
   const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => ctx.commit(work) });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => edits.remove(i), selected: () => handles.selected });
   const sumText = el("p", { class: "sl-note", dataset: { info: "sum" } });
   const peakText = el("p", { class: "sl-note", dataset: { info: "peak" }, "aria-live": "polite" });
   ctx.slots.controls.append(
@@ -296,25 +295,17 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Adds a point after handle i (at the end when none is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("bernstein.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes handle i (the last one when none is selected). */
-  function removePoint(i) {
-    const next = withPointRemoved(work.points, i, MIN_POINTS);
-    if (!next) return ctx.status(t("bernstein.minPoints", { min: MIN_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
+  const edits = pointListActions({
+    points: () => work.points,
+    setPoints: (points) => (work.points = points),
+    min: MIN_POINTS,
+    max: MAX_POINTS,
+    scale: () => view.scale,
+    rebuild,
+    select: (i) => handles.select(i),
+    commit: () => ctx.commit(work),
+    refuse: (kind, limit) => ctx.status(t(`bernstein.${kind}Points`, { [kind]: limit }), "error"),
+  });
 
   // ------------------------------------------------------------ core data
   /** Asks the core for the samples, the basis and the weights when something changed. */

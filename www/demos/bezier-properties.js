@@ -11,13 +11,13 @@
  */
 import { Handles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, radios, setText } from "../lib/controls.js";
+import { slider, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkChoice } from "../lib/validate.js";
 import { fmt, subscript, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
 
@@ -168,8 +168,8 @@ export function mount(container, initialState, ctx) {
       dirty = true;
     },
     commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
+    add: (i) => edits.add(i),
+    remove: (i) => removeControlPoint(i),
   });
 
   /** The points the figure should show whole ("Fit"): the control points, plus the line or the mapped points. */
@@ -253,8 +253,7 @@ export function mount(container, initialState, ctx) {
   const readout = el("p", { class: "sl-readout", dataset: { info: "property" }, "aria-live": "polite" });
   const note = el("p", { class: "sl-note" });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => removeControlPoint(i), selected: () => handles.selected });
   const groups = {
     affine: group(t("bezierProperties.affineLegend"), rotationSlider.element, scaleSlider.element, shearSlider.element),
     elevation: group(t("bezierProperties.elevationLegend"), elevationSlider.element),
@@ -295,26 +294,19 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Adds a point after handle i (at the end when none, or a point of the line, is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("bezierProperties.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes control point i (the last one when none is selected); points of the line stay. */
-  function removePoint(i) {
-    if (i >= work.points.length) return; // not a control point
-    const next = withPointRemoved(work.points, i, MIN_POINTS);
-    if (!next) return ctx.status(t("bezierProperties.minPoints", { min: MIN_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
+  const edits = pointListActions({
+    points: () => work.points,
+    setPoints: (points) => (work.points = points),
+    min: MIN_POINTS,
+    max: MAX_POINTS,
+    scale: () => view.scale,
+    rebuild,
+    select: (i) => handles.select(i),
+    commit: () => ctx.commit(work),
+    refuse: (kind, limit) => ctx.status(t(`bezierProperties.${kind}Points`, { [kind]: limit }), "error"),
+  });
+  /** Removes handle i when it is a control point (the line's points is not one). */
+  const removeControlPoint = (i) => i < work.points.length && edits.remove(i);
 
   // ------------------------------------------------------------ recompute (core calls)
   /** Asks the core for what the chosen property shows, when something changed. */

@@ -26,7 +26,7 @@ import { fmt, subscript, superscript, simpleFraction, fractionText, degreeName }
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { buildOrReport } from "../lib/wasm.js";
@@ -309,8 +309,7 @@ export function mount(container, initialState, ctx) {
   });
   const sumText = el("p", { class: "sl-readout", dataset: { info: "sum" } });
   const countText = el("p", { class: "sl-note", dataset: { info: "count" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
   const resetKnotsButton = button({ label: t("bsplineBasis.resetKnots"), title: t("bsplineBasis.resetKnots.title"), name: "reset-knots", onClick: () => resetKnots() });
   const rulerHelp = el("p", { class: "sl-note", text: t("bsplineBasis.rulerHelp") });
   ctx.slots.controls.append(

@@ -5,17 +5,17 @@
  * what the core returns (`deCasteljau(t)`, one `sampleUniform` per change), nothing is
  * allocated per frame in the draw path, and replaced wasm objects are freed. What several demos
  * need is in lib/ (see lib/README.md), not copied here: `Player` animates t, `pointHandles` and
- * `withPointAdded`/`withPointRemoved` handle the control points, `titledTable` the table,
+ * `pointListActions`/`pointButtons` add and remove control points, `titledTable` the table,
  * `pointsPath`/`flatPath` the polylines.
  */
 import { Handles, placeLabel as placeLabelAt, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
+import { slider, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
 import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -78,8 +78,8 @@ export function mount(container, initialState, ctx) {
       geometryDirty = true;
     }),
     commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
+    add: (i) => edits.add(i),
+    remove: (i) => edits.remove(i),
   });
 
   // ------------------------------------------------------------ side panel
@@ -99,8 +99,7 @@ export function mount(container, initialState, ctx) {
   });
   const player = new Player(view, { get: () => work.t, set: (value, final) => setT(value, final), stopped: () => ctx.commit(work) });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => edits.remove(i), selected: () => handles.selected });
   const constructionBox = checkbox({
     label: t("control.construction"),
     name: "construction",
@@ -143,25 +142,17 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Adds a point after handle i (at the end when none is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("deCasteljau.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes handle i (the last one when none is selected). */
-  function removePoint(i) {
-    const next = withPointRemoved(work.points, i, MIN_POINTS);
-    if (!next) return ctx.status(t("deCasteljau.minPoints", { min: MIN_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
+  const edits = pointListActions({
+    points: () => work.points,
+    setPoints: (points) => (work.points = points),
+    min: MIN_POINTS,
+    max: MAX_POINTS,
+    scale: () => view.scale,
+    rebuild,
+    select: (i) => handles.select(i),
+    commit: () => ctx.commit(work),
+    refuse: (kind, limit) => ctx.status(t(`deCasteljau.${kind}Points`, { [kind]: limit }), "error"),
+  });
 
   // ------------------------------------------------------------ drawing
   /** Asks the core for the triangle and the samples when something changed. */

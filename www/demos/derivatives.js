@@ -9,13 +9,13 @@
  */
 import { Handles, placeLabel } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, setText } from "../lib/controls.js";
+import { slider, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, exactFraction, fractionTex, allIntegers } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, arrow } from "../lib/draw.js";
@@ -141,8 +141,8 @@ export function mount(container, initialState, ctx) {
       view.requestDraw();
     },
     commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
+    add: (i) => edits.add(i),
+    remove: (i) => removeControlPoint(i),
   });
 
   // ------------------------------------------------------------ side panel
@@ -165,8 +165,7 @@ export function mount(container, initialState, ctx) {
   const readoutNote = el("p", { class: "sl-note", dataset: { info: "radius" } });
   const lengthText = el("p", { class: "sl-note", dataset: { info: "arc-length" } });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => removeControlPoint(i), selected: () => handles.selected });
   ctx.slots.controls.append(
     group(null, tSlider.element, player.element),
     group(t("derivatives.curvatureLegend"), readout, readoutNote, lengthText),
@@ -205,26 +204,19 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Adds a point after handle i (at the end when none, or the origin, is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("derivatives.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes control point i (the last one when none is selected); the origin stays. */
-  function removePoint(i) {
-    if (i >= work.points.length) return; // not a control point
-    const next = withPointRemoved(work.points, i, MIN_POINTS);
-    if (!next) return ctx.status(t("derivatives.minPoints", { min: MIN_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
+  const edits = pointListActions({
+    points: () => work.points,
+    setPoints: (points) => (work.points = points),
+    min: MIN_POINTS,
+    max: MAX_POINTS,
+    scale: () => view.scale,
+    rebuild,
+    select: (i) => handles.select(i),
+    commit: () => ctx.commit(work),
+    refuse: (kind, limit) => ctx.status(t(`derivatives.${kind}Points`, { [kind]: limit }), "error"),
+  });
+  /** Removes handle i when it is a control point (the origin is not one). */
+  const removeControlPoint = (i) => i < work.points.length && edits.remove(i);
 
   // ------------------------------------------------------------ recompute (core calls)
   function recompute() {

@@ -12,12 +12,12 @@
  */
 import { Handles, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, radios, setText } from "../lib/controls.js";
+import { slider, checkbox, group, el, radios, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean, checkChoice } from "../lib/validate.js";
 import { fmt, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { buildOrReport } from "../lib/wasm.js";
@@ -214,8 +214,7 @@ export function mount(container, initialState, ctx) {
     }),
   );
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
   ctx.slots.controls.append(
     group(null, degreeSlider.element),
     group(t("knotVectors.control.spacing"), spacingRadios.element),

@@ -16,13 +16,13 @@
  */
 import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, setText } from "../lib/controls.js";
+import { slider, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { CYCLE, WIDTH, RADIUS } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
 import { ParameterStrip } from "../lib/param-strip.js";
@@ -211,8 +211,7 @@ export function mount(container, initialState, ctx) {
   const spanText = el("p", { class: "sl-readout", dataset: { info: "span" }, "aria-live": "polite" });
   const hullText = el("p", { class: "sl-note", dataset: { info: "hull" } });
   const supportText = el("p", { class: "sl-note", dataset: { info: "support" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
   ctx.slots.controls.append(
     group(null, uSlider.element, spanText, hullText),
     group(null, pointSlider.element, supportText),

@@ -11,12 +11,12 @@
  */
 import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
+import { slider, checkbox, group, el, setText } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
 import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved } from "../lib/point-list.js";
+import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -124,8 +124,8 @@ export function mount(container, initialState, ctx) {
       geometryDirty = true;
     }, handleLabel),
     commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
+    add: (i) => edits.add(i),
+    remove: (i) => edits.remove(i),
   });
 
   // ------------------------------------------------------------ side panel
@@ -171,8 +171,7 @@ export function mount(container, initialState, ctx) {
     },
   });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => edits.remove(i), selected: () => handles.selected });
   ctx.slots.controls.append(
     group(null, tSlider.element, stepper.element, triangleBox.element),
     group(null, levelsSlider.element, levelsText),
@@ -215,25 +214,17 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  /** Adds a point after handle i (at the end when none is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("subdivision.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes handle i (the last one when none is selected). */
-  function removePoint(i) {
-    const next = withPointRemoved(work.points, i, MIN_POINTS);
-    if (!next) return ctx.status(t("subdivision.minPoints", { min: MIN_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
+  const edits = pointListActions({
+    points: () => work.points,
+    setPoints: (points) => (work.points = points),
+    min: MIN_POINTS,
+    max: MAX_POINTS,
+    scale: () => view.scale,
+    rebuild,
+    select: (i) => handles.select(i),
+    commit: () => ctx.commit(work),
+    refuse: (kind, limit) => ctx.status(t(`subdivision.${kind}Points`, { [kind]: limit }), "error"),
+  });
 
   // ------------------------------------------------------------ core data
   /** Asks the core for the samples, the split, the triangle and the levels when something changed. */

@@ -12,13 +12,14 @@
  * (`setControlPoint`, `setWeight`), one `sampleUniform` per change. The inset's oblique
  * projection of 3D onto the canvas is display code only (a fixed linear map, written below).
  */
-import { Handles, roundToView, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "../lib/handles.js";
+import { Handles, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
 import { slider, button, checkbox, group, el } from "../lib/controls.js";
 import { checkObject, checkPoints, checkNumber, checkNumbers, checkBoolean } from "../lib/validate.js";
 import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
+import { pointIndex, withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 
 export const id = "weights";
 /** Prefix of this demo's keys in strings.js. */
@@ -61,8 +62,6 @@ const RING_EXPONENT = 0.3;
 /** A press this close (CSS px) to a ring's circle grabs it (touch: the larger value). */
 const RING_HIT_PX = 5;
 const RING_HIT_TOUCH_PX = 9;
-/** A new point appended after the last goes this fraction of the last leg further on. */
-const APPEND_FRACTION = 0.5;
 /** Multiplier of the "scale all weights" button (only ratios matter: the curve stays). */
 const SCALE_FACTOR = 2;
 /** Distances below this are written in exponent form (rounding noise such as 2e-16). */
@@ -273,8 +272,7 @@ export function mount(container, initialState, ctx) {
     onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
   });
   const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => addPoint(handles.selected) });
-  const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => removePoint(handles.selected) });
+  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
   const homogeneousBox = checkbox({
     label: t("weights.showHomogeneous"),
     name: "homogeneous",
@@ -383,36 +381,24 @@ export function mount(container, initialState, ctx) {
 
   /** Adds a point (weight 1) after handle i (at the end when none is selected). */
   function addPoint(i) {
-    const pts = work.points;
-    if (pts.length >= MAX_POINTS) {
-      ctx.status(t("weights.maxPoints", { max: MAX_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    const a = pts[at];
-    const b = at + 1 < pts.length ? pts[at + 1] : null;
-    const prev = pts[at - 1] ?? a;
-    const x = b ? (a[0] + b[0]) / 2 : a[0] + (a[0] - prev[0]) * APPEND_FRACTION;
-    const y = b ? (a[1] + b[1]) / 2 : a[1] + (a[1] - prev[1]) * APPEND_FRACTION;
-    pts.splice(at + 1, 0, [roundToView(x, view.scale), roundToView(y, view.scale)]);
-    work.weights.splice(at + 1, 0, 1);
+    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
+    if (!next) return ctx.status(t("weights.maxPoints", { max: MAX_POINTS }), "error");
+    work.points = next.points;
+    work.weights.splice(next.index, 0, 1);
     rebuild();
-    handles.select(at + 1);
+    handles.select(next.index);
     ctx.commit(work);
   }
 
-  /** Removes handle i (the last one when none is selected). */
+  /** Removes handle i (the last one when none is selected) and its weight. */
   function removePoint(i) {
-    const pts = work.points;
-    if (pts.length <= MIN_POINTS) {
-      ctx.status(t("weights.minPoints", { min: MIN_POINTS }), "error");
-      return;
-    }
-    const at = i >= 0 && i < pts.length ? i : pts.length - 1;
-    pts.splice(at, 1);
+    const at = pointIndex(work.points, i);
+    const next = withPointRemoved(work.points, i, MIN_POINTS);
+    if (!next) return ctx.status(t("weights.minPoints", { min: MIN_POINTS }), "error");
+    work.points = next.points;
     work.weights.splice(at, 1);
     rebuild();
-    handles.select(Math.min(at, pts.length - 1));
+    handles.select(next.index);
     ctx.commit(work);
   }
 
