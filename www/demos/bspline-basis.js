@@ -25,7 +25,7 @@ import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/vali
 import { fmt, subscript, superscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
+import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
 import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -261,19 +261,8 @@ export function mount(container, initialState, ctx) {
   /** The basis function whose graph passes nearest (vertically) to canvas point (x, y), or -1. */
   function basisAt(x, y) {
     if (!basis) return -1;
-    const n = work.points.length - 1;
     const raw = Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
-    const k = Math.round(raw * (SAMPLES - 1));
-    let best = -1;
-    let bestDistance = PLOT_HOVER_PX;
-    for (let i = 0; i <= n; i++) {
-      const d = Math.abs(py(basis[i * SAMPLES + k]) - y);
-      if (d <= bestDistance) {
-        best = i;
-        bestDistance = d;
-      }
-    }
-    return best;
+    return nearestGraph(basis, work.points.length, SAMPLES, Math.round(raw * (SAMPLES - 1)), y, py, PLOT_HOVER_PX);
   }
 
   /** The highlighted basis function: plot hover, then table row, then the handle in hand, hovered or selected. */

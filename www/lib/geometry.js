@@ -56,3 +56,21 @@ export function convexHull(points, indices = points.map((_, i) => i)) {
   const same = (a, b) => points[a][0] === points[b][0] && points[a][1] === points[b][1];
   return hull.length === 2 && same(hull[0], hull[1]) ? hull.slice(0, 1) : hull;
 }
+
+/**
+ * Of `count` sampled functions stored function-major (`values[i·samples + k]`), the one whose
+ * graph passes nearest to canvas height `y` at sample `k` — within `maxDistance` px, else -1.
+ * `toY(value)` maps a function value to canvas y. For hovering a plot of basis functions.
+ */
+export function nearestGraph(values, count, samples, k, y, toY, maxDistance) {
+  let best = -1;
+  let bestDistance = maxDistance;
+  for (let i = 0; i < count; i++) {
+    const d = Math.abs(toY(values[i * samples + k]) - y);
+    if (d <= bestDistance) {
+      best = i;
+      bestDistance = d;
+    }
+  }
+  return best;
+}

@@ -63,6 +63,21 @@ export default [
     await settle(page);
     assert(!(await page.locator('[data-info="peak"]').textContent()).includes("P₁"), "highlight cleared on leave");
   }],
+  ["hovering a basis graph in the plot highlights its control point", async (page, h, _base, { assert, settle }) => {
+    // At t = 1/3 the cubic's B₁ = 4/9 stands ≥ 0.148 above the others: hover its graph there.
+    // Plot frame as in bernstein.js: margins 30/22/34/40 px, height max(40 %, min(150 px, 55 %)).
+    const box = await h.canvas().boundingBox();
+    const height = Math.max(Math.round(box.height * 0.4), Math.min(150, Math.round(box.height * 0.55)));
+    const y0 = box.height - 34;
+    const y1 = box.height - height + 30;
+    const x = box.x + 40 + (box.width - 40 - 22) / 3;
+    await page.mouse.move(x, box.y + y0 - (4 / 9) * (y0 - y1));
+    await settle(page);
+    const note = await page.locator('[data-info="peak"]').textContent();
+    assert(note.includes("P₁"), `peak note while hovering B₁: ${note}`);
+    await page.mouse.move(1, 1);
+    await settle(page);
+  }],
   ["clicking the plot at the tick 1/3 sets t = 1/3", async (page, h, _base, { assert, equal, settle }) => {
     // The plot strip: the bottom 40 % (≥ 150 px) of the canvas; frame 40 px from the left,
     // 22 px from the right, its t axis 34 px above the bottom (bernstein.js PLOT_* constants).
