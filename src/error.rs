@@ -122,6 +122,26 @@ pub enum Error {
     },
 }
 
+/// A number inside an error message, printed the way the caller's language prints it: in the wasm
+/// build by JavaScript's `String(x)` (`Infinity`, `1e-7`, `0.1`), natively by Rust's `{}`
+/// (`inf`, `0.0000001`, `0.1`). Every `f64` in a message goes through this, which also keeps
+/// Rust's float-printing code (~20 KB) out of the wasm.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        #[cfg(target_arch = "wasm32")]
+        {
+            f.write_str(&crate::wasm::number_text(self.0))
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            fmt::Display::fmt(&self.0, f)
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -132,7 +152,7 @@ impl fmt::Display for Error {
                 if *dim == 3 { ", z0" } else { "" }
             ),
             Error::NotFinite { what, value } => {
-                write!(f, "{what} is {value}; every number must be finite")
+                write!(f, "{what} is {}; every number must be finite", Num(*value))
             }
             Error::TooFewPoints { needed, got, what } => write!(
                 f,
@@ -145,14 +165,21 @@ impl fmt::Display for Error {
             ),
             Error::NonPositiveWeight { index, value } => write!(
                 f,
-                "weight {index} is {value}; weights must be > 0 (zero or negative weights can put poles on the curve)"
+                "weight {index} is {}; weights must be > 0 (zero or negative weights can put poles on the curve)",
+                Num(*value)
             ),
             Error::ParameterOutOfRange {
                 name,
                 value,
                 min,
                 max,
-            } => write!(f, "{name} = {value} is outside the domain [{min}, {max}]"),
+            } => write!(
+                f,
+                "{name} = {} is outside the domain [{}, {}]",
+                Num(*value),
+                Num(*min),
+                Num(*max)
+            ),
             Error::IndexOutOfRange { index, count } => write!(
                 f,
                 "control point index {index} is out of range: the curve has {count} points (0..={})",
@@ -163,10 +190,10 @@ impl fmt::Display for Error {
                 "a point needs {expected} coordinates, got {got}"
             ),
             Error::InvalidTolerance { value, reason } => {
-                write!(f, "tolerance {value} is not usable: {reason}")
+                write!(f, "tolerance {} is not usable: {reason}", Num(*value))
             }
             Error::InvalidInterval { a, b } => {
-                write!(f, "interval [{a}, {b}] is empty; it needs a < b")
+                write!(f, "interval [{}, {}] is empty; it needs a < b", Num(*a), Num(*b))
             }
             Error::UnknownOption {
                 name,

@@ -57,13 +57,28 @@ fn constructor_errors_name_the_bad_value() {
 }
 
 #[test]
+fn numbers_in_messages_print_as_javascript_prints_them() {
+    let c = example();
+    // Rust would print these as "-0.0000001", "100000000000000000000000" and "-inf".
+    assert_eq!(
+        message(c.evaluate(-1e-7)),
+        "t = -1e-7 is outside the domain [0, 1]"
+    );
+    assert_eq!(
+        message(c.evaluate(1e23)),
+        "t = 1e+23 is outside the domain [0, 1]"
+    );
+    assert!(message(c.evaluate(f64::NEG_INFINITY)).contains("t is -Infinity;"));
+}
+
+#[test]
 fn method_errors_are_thrown_not_trapped() {
     let mut c = example();
     assert_eq!(
         message(c.evaluate(1.5)),
         "t = 1.5 is outside the domain [0, 1]"
     );
-    assert!(message(c.derivative(f64::INFINITY, 1)).contains("t is inf"));
+    assert!(message(c.derivative(f64::INFINITY, 1)).contains("t is Infinity"));
     assert!(message(c.set_control_point(7, &[1.0, 1.0])).contains("index 7 is out of range"));
     assert_eq!(
         message(c.set_control_point(0, &[1.0, 1.0, 1.0])),

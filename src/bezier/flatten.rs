@@ -1,7 +1,7 @@
 //! Adaptive flattening: a polyline that provably stays within a tolerance of the curve.
 
 use super::{subsegment_points, BezierCurve};
-use crate::error::{check_tolerance, Error, Result};
+use crate::error::{check_tolerance, Error, Num, Result};
 use crate::geom::Cartesian;
 
 /// Most segments one call to [`BezierCurve::flatten`] may produce.
@@ -47,7 +47,9 @@ impl<C: Cartesian> BezierCurve<C> {
             return Err(Error::InvalidTolerance {
                 value: tolerance,
                 reason: format!(
-                    "it is below {MIN_RELATIVE_TOLERANCE:e} × the curve's size ({size}); rounding would dominate"
+                    "it is below {} × the curve's size ({}); rounding would dominate",
+                    Num(MIN_RELATIVE_TOLERANCE),
+                    Num(size)
                 ),
             });
         }

@@ -2,7 +2,7 @@
 //! visited kept for teaching.
 
 use super::{de_casteljau_point, split_points, BezierCurve};
-use crate::error::{check_finite, check_tolerance, Error, Result};
+use crate::error::{check_finite, check_tolerance, Error, Num, Result};
 use crate::geom::{BoundingBox, Cartesian};
 use glam::{DVec2, DVec3};
 
@@ -63,7 +63,8 @@ impl BezierCurve<DVec2> {
         let dir = (p1 - p0).try_normalize().ok_or_else(|| Error::Mismatch {
             message: format!(
                 "the line needs two different points, got ({}, {}) twice",
-                p0.x, p0.y
+                Num(p0.x),
+                Num(p0.y)
             ),
         })?;
         let signed = |p: DVec2| dir.perp_dot(p - p0);

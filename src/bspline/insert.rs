@@ -3,7 +3,7 @@
 
 use super::{BSplineCurve, KnotVector};
 use crate::bezier::BezierCurve;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, Error, Num, Result};
 use crate::geom::{Cartesian, Point};
 
 /// The continuity at one distinct interior knot: multiplicity `r` gives `C^{p−r}`
@@ -50,7 +50,8 @@ impl<C: Cartesian> BSplineCurve<C> {
         if s + times > p + 1 {
             return Err(Error::Mismatch {
                 message: format!(
-                    "inserting knot {u} {times} time(s) would give it multiplicity {}; a degree-{p} curve allows at most p+1 = {}",
+                    "inserting knot {} {times} time(s) would give it multiplicity {}; a degree-{p} curve allows at most p+1 = {}",
+                    Num(u),
                     s + times,
                     p + 1
                 ),
@@ -106,7 +107,7 @@ impl<C: Cartesian> BSplineCurve<C> {
                 return Err(Error::Mismatch {
                     message: format!(
                         "inserting knot {} {} time(s) would give it multiplicity {total}; a degree-{p} curve allows at most p+1 = {}",
-                        run[0],
+                        Num(run[0]),
                         run.len(),
                         p + 1
                     ),

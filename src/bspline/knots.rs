@@ -1,6 +1,6 @@
 //! Validated knot vectors, span search and multiplicity (syllabus §3).
 
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, Error, Num, Result};
 
 /// A non-decreasing knot vector `u_0..u_m` (`m = n + p + 1`) for degree `p` and `n + 1` control
 /// points, whose domain `[u_p, u_{n+1}]` is not empty and where no value repeats more than
@@ -37,9 +37,9 @@ impl KnotVector {
             return Err(Error::Mismatch {
                 message: format!(
                     "knots must not decrease: u_{i} = {} comes after u_{} = {}",
-                    knots[i],
+                    Num(knots[i]),
                     i - 1,
-                    knots[i - 1]
+                    Num(knots[i - 1])
                 ),
             });
         }
@@ -47,7 +47,9 @@ impl KnotVector {
         if a >= b {
             return Err(Error::Mismatch {
                 message: format!(
-                    "the domain [u_p, u_(n+1)] = [u_{degree}, u_{point_count}] = [{a}, {b}] is empty; it needs u_{degree} < u_{point_count}"
+                    "the domain [u_p, u_(n+1)] = [u_{degree}, u_{point_count}] = [{}, {}] is empty; it needs u_{degree} < u_{point_count}",
+                    Num(a),
+                    Num(b)
                 ),
             });
         }
@@ -62,7 +64,7 @@ impl KnotVector {
                 return Err(Error::Mismatch {
                     message: format!(
                         "knot {} appears {r} times (u_{i}..u_{j}); a degree-{degree} curve allows at most p+1 = {}",
-                        knots[i],
+                        Num(knots[i]),
                         degree + 1
                     ),
                 });

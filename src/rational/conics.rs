@@ -2,7 +2,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, Error, Num, Result};
 use crate::geom::Cartesian;
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
@@ -81,7 +81,9 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
     if (la - lb).abs() > 1e-9 * la.max(lb) {
         return Err(Error::Mismatch {
             message: format!(
-                "a circular arc needs an isosceles triangle: |P0P1| = {la} but |P1P2| = {lb}"
+                "a circular arc needs an isosceles triangle: |P0P1| = {} but |P1P2| = {}",
+                Num(la),
+                Num(lb)
             ),
         });
     }
@@ -120,7 +122,8 @@ pub fn ellipse_arc<C: Cartesian>(
     if sweep == 0.0 || sweep.abs() > full * (1.0 + 1e-12) {
         return Err(Error::Mismatch {
             message: format!(
-                "the sweep must be non-zero and at most one full turn (2π), got {sweep}"
+                "the sweep must be non-zero and at most one full turn (2π), got {}",
+                Num(sweep)
             ),
         });
     }

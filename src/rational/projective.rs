@@ -7,7 +7,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use glam::{DMat3, DVec2, DVec3};
 
 /// Maps homogeneous points by `m`, checking the new weights stay > 0 (a point sent to or
@@ -22,7 +22,7 @@ fn map_points(points: &[DVec3], m: &DMat3) -> Result<Vec<DVec2>> {
         return Err(Error::Mismatch {
             message: format!(
                 "the map sends control point {i} to weight {}; weights must stay > 0 (the point would cross the line at infinity)",
-                h.z
+                Num(h.z)
             ),
         });
     }

@@ -2,7 +2,7 @@
 
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
-use crate::error::Error;
+use crate::error::{Error, Num};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
 use wasm_bindgen::prelude::*;
@@ -133,7 +133,7 @@ fn check_radius(name: &'static str, r: f64) -> Result<(), Error> {
     crate::error::check_finite(|| name.into(), r)?;
     if r <= 0.0 {
         return Err(Error::Mismatch {
-            message: format!("{name} must be > 0, got {r}"),
+            message: format!("{name} must be > 0, got {}", Num(r)),
         });
     }
     Ok(())

@@ -4,6 +4,14 @@
 
 use splinelab::{DVec2, DVec3};
 
+/// How error messages print infinity: JavaScript's `String(Infinity)` in the wasm build, Rust's
+/// `{}` natively (see `splinelab::error` on numbers in messages).
+pub const INFINITY_TEXT: &str = if cfg!(target_arch = "wasm32") {
+    "Infinity"
+} else {
+    "inf"
+};
+
 /// Asserts `|a − b| <= tol`, printing both values and the difference.
 #[track_caller]
 pub fn assert_close(a: f64, b: f64, tol: f64, what: &str) {
