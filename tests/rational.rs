@@ -196,6 +196,16 @@ fn isosceles_triangles_give_circular_arcs() {
             "on the circle",
         );
     }
+    // A sharp angle at P1: θ = 2·atan(1e-6), so w1 = sin(θ/2) = 1e-6/√(1 + 1e-12). Through
+    // acos(cos θ) this lost five digits (cos θ = 1 − 2e-12).
+    let sharp = rational::circle_arc_from_triangle(
+        DVec2::new(1.0, 1e-6),
+        DVec2::ZERO,
+        DVec2::new(1.0, -1e-6),
+    )
+    .unwrap();
+    let expected = 1e-6 / (1.0 + 1e-12f64).sqrt();
+    assert_close(sharp.weights()[1], expected, 1e-9 * expected, "w1 of a sharp angle");
     assert!(rational::circle_arc_from_triangle(
         DVec2::ZERO,
         DVec2::new(1.0, 1.0),

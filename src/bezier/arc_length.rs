@@ -26,7 +26,7 @@ pub const DEFAULT_RELATIVE_ACCURACY: f64 = 1e-13;
 /// Newton's method on the Legendre polynomial `P_n` (three-term recurrence) from the
 /// asymptotic guess `cos(π(i + 3/4)/(n + 1/2))`.
 fn legendre_node(n: usize, i: usize) -> (f64, f64) {
-    let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+    let mut x = crate::geom::sin_cos(std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).1;
     let mut dp = 1.0;
     for _ in 0..100 {
         let (mut p0, mut p1) = (1.0, x);

@@ -174,7 +174,7 @@ impl BezierCurve<DVec2> {
             }
             run_start = run_end + 1;
         }
-        roots.sort_by(f64::total_cmp);
+        roots.sort_unstable_by(f64::total_cmp);
         // Merge results whose points are within tolerance of each other.
         let mut ts: Vec<f64> = Vec::with_capacity(roots.len());
         let mut last_point: Option<DVec2> = None;

@@ -99,7 +99,7 @@ impl<C: Cartesian> BSplineCurve<C> {
             same.wrap = 0;
             return Ok(same);
         }
-        x.sort_by(f64::total_cmp);
+        x.sort_unstable_by(f64::total_cmp);
         let p = self.degree();
         for run in x.chunk_by(|a, b| a == b) {
             let total = self.knots.multiplicity(run[0]) + run.len();

@@ -402,6 +402,20 @@ pub fn check_dim(dim: usize) -> Result<usize> {
     }
 }
 
+/// `(sin x, cos x)`. The wasm build asks JavaScript's `Math.sin` and `Math.cos` (V8 uses the
+/// same fdlibm algorithms as Rust's libm), which keeps a second copy of them (~7 KB with the
+/// argument reduction) out of the wasm; natively it is [`f64::sin_cos`].
+pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
+    #[cfg(target_arch = "wasm32")]
+    {
+        crate::wasm::js_sin_cos(x)
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        x.sin_cos()
+    }
+}
+
 /// Binomial coefficient `C(n, k)` as `f64` (exact for the degrees curves use).
 pub fn binomial(n: usize, k: usize) -> f64 {
     if k > n {

@@ -3,7 +3,7 @@
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
 use crate::error::{check_finite, Error, Num, Result};
-use crate::geom::Cartesian;
+use crate::geom::{sin_cos, Cartesian};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
@@ -87,9 +87,10 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
             ),
         });
     }
-    // Half the angle at P1: sin θ = |a × b| … computed from the unit vectors' half-angle.
-    let angle = a.angle_to(b).abs();
-    let w1 = (0.5 * angle).sin();
+    // The middle weight is sin(θ/2) for the angle θ at P1 (= cos of half the arc's sweep π − θ):
+    // half the chord between the unit vectors along the legs, |a/|a| − b/|b|| = 2 sin(θ/2),
+    // which stays accurate for small θ where acos(a·b/(|a||b|)) would not.
+    let w1 = 0.5 * (a / la - b / lb).length();
     BezierCurve::new(vec![p0, p1, p2], Some(&[1.0, w1, 1.0]))
 }
 
@@ -134,9 +135,11 @@ pub fn ellipse_arc<C: Cartesian>(
     }
     let pieces = ((sweep.abs() / MAX_ARC_PIECE) - 1e-9).ceil().max(1.0) as usize;
     let delta = sweep / pieces as f64;
-    let w_mid = (0.5 * delta).cos();
-    let at =
-        |theta: f64, scale: f64| center + (axis_x * theta.cos() + axis_y * theta.sin()) * scale;
+    let w_mid = sin_cos(0.5 * delta).1;
+    let at = |theta: f64, scale: f64| {
+        let (sin, cos) = sin_cos(theta);
+        center + (axis_x * cos + axis_y * sin) * scale
+    };
     let mut points = Vec::with_capacity(2 * pieces + 1);
     let mut weights = Vec::with_capacity(2 * pieces + 1);
     let mut knots = vec![0.0; 3];

@@ -49,10 +49,8 @@ pub fn ellipse(
     check_radius("ry", ry)?;
     let phi = rotation.unwrap_or(0.0);
     crate::error::check_finite(|| "rotation".into(), phi)?;
-    let (ex, ey) = (
-        DVec2::new(phi.cos(), phi.sin()),
-        DVec2::new(-phi.sin(), phi.cos()),
-    );
+    let (sin, cos) = crate::geom::sin_cos(phi);
+    let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
     let c = rational::ellipse_arc(
         DVec2::new(cx, cy),
         ex * rx,
