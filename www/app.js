@@ -11,11 +11,18 @@ import { parseHash, buildHash, decodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
 import { t } from "./lib/strings.js";
+import { currentTheme, onThemeChange } from "./lib/theme.js";
 
-/** Gallery thumbnails: CSS size of the rendered figure and its pixel density. */
+/**
+ * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
+ * THUMB_FIGURE_WIDTH × … CSS px (so labels keep the room they have in a demo, instead of
+ * crowding a small figure) scaled down to 2 image pixels per shown CSS pixel.
+ */
 const THUMB_WIDTH = 320;
 const THUMB_HEIGHT = 200;
-const THUMB_SCALE = 2;
+const THUMB_FIGURE_WIDTH = 480;
+const THUMB_FIGURE_HEIGHT = (THUMB_FIGURE_WIDTH * THUMB_HEIGHT) / THUMB_WIDTH;
+const THUMB_SCALE = (2 * THUMB_WIDTH) / THUMB_FIGURE_WIDTH;
 /** Syllabus sections, in gallery order. */
 const SECTIONS = [1, 2, 3, 4, 5, 6];
 
@@ -24,6 +31,7 @@ const appStatus = main.querySelector(".app-status");
 let controller = null; // the mounted demo (shell controller)
 let currentId = null;
 let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
+let stopThemeWatch = () => {}; // the gallery's colour-scheme listener
 
 function showAppStatus(message, kind = "info") {
   appStatus.textContent = message;
@@ -42,6 +50,8 @@ function shareUrl(id, state) {
 }
 
 function unmount() {
+  stopThemeWatch();
+  stopThemeWatch = () => {};
   controller?.destroy();
   controller = null;
   currentId = null;
@@ -58,24 +68,31 @@ async function showGallery(sl) {
   for (const section of SECTIONS) {
     const members = demos.filter((demo) => demo.section === section);
     if (!members.length) continue;
-    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((demo) => card(demo, sl))));
+    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((demo) => card(demo))));
   }
   main.append(page);
-}
-
-function card(demo, sl) {
-  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title: demo.title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT) });
   if (sl) {
     // Let the page paint first; thumbnails are a nicety.
-    requestAnimationFrame(() => {
-      try {
-        img.src = thumbnail(demo, sl);
-        img.classList.remove("placeholder");
-      } catch {
-        // leave the placeholder
-      }
-    });
+    requestAnimationFrame(() => drawThumbnails(page, sl));
+    stopThemeWatch = onThemeChange(() => drawThumbnails(page, sl));
   }
+}
+
+/** Draws the thumbnail of every card in the gallery (again, after a colour-scheme change). */
+function drawThumbnails(page, sl) {
+  for (const img of page.querySelectorAll("img.card-thumb")) {
+    const demo = findDemo(img.dataset.demo);
+    try {
+      img.src = thumbnail(demo, sl);
+      img.classList.remove("placeholder");
+    } catch {
+      // leave the placeholder (or the previous picture)
+    }
+  }
+}
+
+function card(demo) {
+  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title: demo.title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT), dataset: { demo: demo.id } });
   return el("li", {},
     el("a", { class: "card", href: buildHash(demo.id), dataset: { demo: demo.id } },
       img,
@@ -89,7 +106,7 @@ function thumbnail(demo, sl) {
   const holder = document.createElement("div");
   const temp = mountDemo(holder, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "embed", shareUrl: () => "" });
   try {
-    return figureToCanvas(temp.figure, THUMB_SCALE, THUMB_WIDTH, THUMB_HEIGHT).toDataURL("image/png");
+    return figureToCanvas(temp.figure, THUMB_SCALE, THUMB_FIGURE_WIDTH, THUMB_FIGURE_HEIGHT, currentTheme()).toDataURL("image/png");
   } finally {
     temp.destroy();
   }

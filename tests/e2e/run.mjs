@@ -202,6 +202,59 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("gallery thumbnails follow the colour scheme, also when it changes", async () => {
+    // Mean brightness (0–255) of the first thumbnail's top-left 8×8 image pixels (its
+    // background), once the thumbnails are drawn; null before.
+    const corner = () => {
+      const imgs = [...document.querySelectorAll("img.card-thumb")];
+      if (!imgs.length || !imgs.every((img) => img.complete && img.src.startsWith("data:"))) return null;
+      const c = document.createElement("canvas");
+      c.width = c.height = 8;
+      const g = c.getContext("2d");
+      g.drawImage(imgs[0], 0, 0, 8, 8, 0, 0, 8, 8);
+      const d = g.getImageData(0, 0, 8, 8).data;
+      let sum = 0;
+      for (let i = 0; i < d.length; i += 4) sum += (d[i] + d[i + 1] + d[i + 2]) / 3;
+      return sum / 64;
+    };
+    const waitFor = (test) => page.waitForFunction(`(${corner})() !== null && (${corner})() ${test}`, null, { timeout: 5000 }).catch(async () => {
+      throw new Error(`thumbnail background ${await page.evaluate(corner)}, expected ${test}`);
+    });
+    try {
+      await page.emulateMedia({ colorScheme: "light" });
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html`);
+      await waitFor("> 240");
+      await page.emulateMedia({ colorScheme: "dark" });
+      await waitFor("< 60");
+    } finally {
+      await page.emulateMedia({ colorScheme: null });
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("labels of points in the frame are kept inside it (canvas and SVG)", async () => {
+    const result = await page.evaluate(async () => {
+      const { SvgRecorder } = await import("./lib/draw.js");
+      const { LIGHT_THEME } = await import("./lib/theme.js");
+      const measure = document.createElement("canvas").getContext("2d");
+      const style = LIGHT_THEME.label;
+      const r = new SvgRecorder({ theme: LIGHT_THEME, measureContext: measure });
+      r.begin(200, 100, "#fff");
+      r.text("a long label", 190, 50, style, "left"); // would run off the right edge
+      r.text("top", 100, 1, style, "center", "bottom"); // would stand above the top edge
+      r.text("outside", 250, 50, style, "left"); // anchor outside: left alone
+      const width = r.measure("a long label", style);
+      const xs = [...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"/g)].map((m) => [Number(m[1]), Number(m[2])]);
+      return { width, xs, size: style.size };
+    });
+    const [[x0], [, y1], [x2]] = result.xs;
+    assert(x0 + result.width <= 200 && x0 >= 0, `right edge: label at ${x0}, width ${result.width}`);
+    assert(y1 - result.size >= 0, `top edge: baseline at ${y1}`);
+    equal(x2, 250, "a label of a point outside the frame stays put");
+  });
+
   for (const demo of registry) {
     const name = (what) => `${demo.id}: ${what}`;
     let h = demoHelpers(page);
@@ -368,6 +421,32 @@ try {
       });
     }
   }
+
+  await test("lecture mode draws text and strokes 1.6× larger, in the SVG export too, and toggles back", async () => {
+    const h = await openDemo(page, base, "de-casteljau");
+    const lecture = page.locator('[data-action="lecture"]').first();
+    // The font sizes and stroke widths of the SVG export (the drawing on the screen).
+    const sizes = async () => {
+      const svg = readFileSync(await (await h.download("export-svg")).path(), "utf8");
+      const fonts = [...svg.matchAll(/font-size="([\d.]+)"/g)].map((m) => Number(m[1]));
+      const strokes = [...svg.matchAll(/stroke-width="([\d.]+)"/g)].map((m) => Number(m[1]));
+      return { font: Math.max(...fonts), stroke: Math.max(...strokes) };
+    };
+    const normal = await sizes();
+    const before = await h.snapshot();
+    equal(await lecture.getAttribute("aria-pressed"), "false", "off at first");
+    await lecture.click();
+    equal(await lecture.getAttribute("aria-pressed"), "true", "pressed");
+    assert((await h.snapshot()) !== before, "the picture changes");
+    const large = await sizes();
+    assert(Math.abs(large.font / normal.font - 1.6) < 1e-9, `font ${normal.font} → ${large.font}`);
+    assert(Math.abs(large.stroke / normal.stroke - 1.6) < 1e-9, `stroke ${normal.stroke} → ${large.stroke}`);
+    await lecture.click();
+    equal(await lecture.getAttribute("aria-pressed"), "false", "released");
+    equal(await h.snapshot(), before, "the picture is as before");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
 
   await test("embed example: two independent demos in shadow roots", async () => {
     await page.goto(`${base}/embed-example.html`);

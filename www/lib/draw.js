@@ -27,6 +27,33 @@ const NO_DASH = Object.freeze([]);
 const SVG_BASELINE = { middle: "central", top: "hanging", bottom: "text-after-edge", alphabetic: "alphabetic" };
 const SVG_ANCHOR = { left: "start", center: "middle", right: "end" };
 
+/** Labels of anchors inside the frame keep this far from its edges (CSS px). */
+const LABEL_MARGIN = 2;
+/** Fraction of a label's width left of its anchor, per `align`. */
+const ALIGN_LEFT = { left: 0, center: 0.5, right: 1 };
+/** Fraction of a label's height (≈ its font size) above its anchor, per `baseline`. */
+const BASELINE_ABOVE = { top: 0, middle: 0.5, bottom: 1, alphabetic: 0.8 };
+
+/** The shift that moves [start, start + size] inside [LABEL_MARGIN, limit − LABEL_MARGIN]. */
+function shiftInside(start, size, limit) {
+  if (start < LABEL_MARGIN) return LABEL_MARGIN - start;
+  const over = start + size - (limit - LABEL_MARGIN);
+  return over > 0 ? -Math.min(over, start - LABEL_MARGIN) : 0;
+}
+
+/**
+ * Where to draw a label of `width` × `height` CSS px anchored at (x, y) so that the frame's
+ * edge never cuts it: a label whose anchor lies in the frame is moved inside (a label wider
+ * than the frame keeps its left end in). An anchor outside the frame keeps its label where it
+ * is, so no label stands at the edge for a point that is not shown.
+ */
+function labelPosition(x, y, width, height, align, baseline, frameWidth, frameHeight) {
+  if (!(x >= 0 && x <= frameWidth && y >= 0 && y <= frameHeight)) return [x, y];
+  const dx = shiftInside(x - width * (ALIGN_LEFT[align] ?? 0), width, frameWidth);
+  const dy = shiftInside(y - height * (BASELINE_ABOVE[baseline] ?? 0.5), height, frameHeight);
+  return [x + dx, y + dy];
+}
+
 /** The CSS font shorthand for a text style at a given scale. */
 function fontOf(style, scale) {
   return `${style.weight ?? "normal"} ${style.size * scale}px ${FONT_FAMILY}`;
@@ -113,13 +140,15 @@ export class CanvasRenderer {
   /**
    * Draws `string` at (x, y). `align` is "left" | "center" | "right", `baseline`
    * "middle" | "top" | "bottom" | "alphabetic". A halo in the background colour keeps the
-   * label readable where it crosses a line.
+   * label readable where it crosses a line; a label of a point in the frame is kept inside it
+   * (see `labelPosition`).
    */
   text(string, x, y, style, align = "left", baseline = "middle") {
     const c = this.context;
     c.font = this._font(style);
     c.textAlign = align;
     c.textBaseline = baseline;
+    [x, y] = labelPosition(x, y, c.measureText(string).width, style.size * this.scale, align, baseline, this.width, this.height);
     if (style.halo) {
       c.strokeStyle = style.halo;
       c.lineWidth = HALO_WIDTH * this.scale;
@@ -278,6 +307,7 @@ export class SvgRecorder {
   }
 
   text(string, x, y, style, align = "left", baseline = "middle") {
+    [x, y] = labelPosition(x, y, this.measure(string, style), style.size * this.scale, align, baseline, this.width, this.height);
     const attrs = [
       `x="${num(x)}"`,
       `y="${num(y)}"`,

@@ -16,13 +16,16 @@ export function figureToSvg(view) {
   return recorder.toString();
 }
 
-/** The figure of `view` on a new canvas at `scale` × its CSS size, white background. */
-export function figureToCanvas(view, scale = PNG_SCALE, width = view.width, height = view.height) {
+/**
+ * The figure of `view` on a new canvas at `scale` × its CSS size, in `theme` (exports keep the
+ * light theme's white background; gallery thumbnails follow the reader's).
+ */
+export function figureToCanvas(view, scale = PNG_SCALE, width = view.width, height = view.height, theme = LIGHT_THEME) {
   const canvas = document.createElement("canvas");
   canvas.width = Math.round(width * scale);
   canvas.height = Math.round(height * scale);
-  const renderer = new CanvasRenderer(canvas.getContext("2d"), { pixelRatio: scale, theme: LIGHT_THEME });
-  view.renderTo(renderer, width, height, LIGHT_THEME);
+  const renderer = new CanvasRenderer(canvas.getContext("2d"), { pixelRatio: scale, theme });
+  view.renderTo(renderer, width, height, theme);
   return canvas;
 }
 
