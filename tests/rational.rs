@@ -205,7 +205,12 @@ fn isosceles_triangles_give_circular_arcs() {
     )
     .unwrap();
     let expected = 1e-6 / (1.0 + 1e-12f64).sqrt();
-    assert_close(sharp.weights()[1], expected, 1e-9 * expected, "w1 of a sharp angle");
+    assert_close(
+        sharp.weights()[1],
+        expected,
+        1e-9 * expected,
+        "w1 of a sharp angle",
+    );
     assert!(rational::circle_arc_from_triangle(
         DVec2::ZERO,
         DVec2::new(1.0, 1.0),

@@ -1,6 +1,5 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
-use super::{check_count, fill_view};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -34,6 +33,23 @@ macro_rules! map_curve {
             Curve::D3($c) => Curve::D3($body),
         }
     };
+}
+
+impl super::Sampled for Curve {
+    fn dim(&self) -> usize {
+        match self {
+            Curve::D2(_) => 2,
+            Curve::D3(_) => 3,
+        }
+    }
+
+    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
+        with_curve!(self, c => c.sample_into(params, out))
+    }
+
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
+        with_curve!(self, c => c.sample_uniform_into(count, out))
+    }
 }
 
 /// Points as one flat array of `P::DIM` numbers each.
@@ -134,10 +150,7 @@ impl JsBezierCurve {
     /// Dimension: 2 or 3.
     #[wasm_bindgen(getter)]
     pub fn dim(&self) -> usize {
-        match self.inner {
-            Curve::D2(_) => 2,
-            Curve::D3(_) => 3,
-        }
+        super::Sampled::dim(&self.inner)
     }
 
     /// True when some weight differs from 1.
@@ -165,19 +178,13 @@ impl JsBezierCurve {
 
     /// Points at every t of `ts`, flat (ts.length·dim numbers), in one pass.
     pub fn sample(&self, ts: &[f64]) -> Result<Vec<f64>, JsError> {
-        let dim = self.dim();
-        let mut out = vec![0.0; ts.len().saturating_mul(dim)];
-        with_curve!(&self.inner, c => c.sample_into(ts, &mut out))?;
-        Ok(out)
+        super::sample(&self.inner, ts)
     }
 
     /// `count` points at equally spaced parameters over the whole interval, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
     pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
-        check_count(count)?;
-        let mut out = vec![0.0; count * self.dim()];
-        with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
-        Ok(out)
+        super::sample_uniform(&self.inner, count)
     }
 
     /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
@@ -187,24 +194,13 @@ impl JsBezierCurve {
     /// `slice()` it to keep it.
     #[wasm_bindgen(js_name = sampleUniformView)]
     pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
-        check_count(count)?;
-        let len = count.saturating_mul(self.dim());
-        fill_view(
-            &mut self.view,
-            len,
-            |out| with_curve!(&self.inner, c => c.sample_uniform_into(count, out)),
-        )
+        super::sample_uniform_view(&self.inner, &mut self.view, count)
     }
 
     /// `sample(ts)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(&mut self, ts: &[f64]) -> Result<Float64Array, JsError> {
-        let len = ts.len().saturating_mul(self.dim());
-        fill_view(
-            &mut self.view,
-            len,
-            |out| with_curve!(&self.inner, c => c.sample_into(ts, out)),
-        )
+        super::sample_view(&self.inner, &mut self.view, ts)
     }
 
     /// de Casteljau's triangle at t: every level concatenated, the control points first;

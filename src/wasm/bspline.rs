@@ -1,7 +1,6 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
-use super::{check_count, fill_view};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -33,6 +32,23 @@ macro_rules! map_curve {
             Curve::D3($c) => Curve::D3($body),
         }
     };
+}
+
+impl super::Sampled for Curve {
+    fn dim(&self) -> usize {
+        match self {
+            Curve::D2(_) => 2,
+            Curve::D3(_) => 3,
+        }
+    }
+
+    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
+        with_curve!(self, c => c.sample_into(params, out))
+    }
+
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
+        with_curve!(self, c => c.sample_uniform_into(count, out))
+    }
 }
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
@@ -102,10 +118,7 @@ impl JsBSplineCurve {
     /// Dimension: 2 or 3.
     #[wasm_bindgen(getter)]
     pub fn dim(&self) -> usize {
-        match self.inner {
-            Curve::D2(_) => 2,
-            Curve::D3(_) => 3,
-        }
+        super::Sampled::dim(&self.inner)
     }
 
     /// True when some weight differs from 1.
@@ -170,9 +183,7 @@ impl JsBSplineCurve {
 
     /// Points at every u of `us`, flat, walking the spans once for sorted input.
     pub fn sample(&self, us: &[f64]) -> Result<Vec<f64>, JsError> {
-        let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
-        with_curve!(&self.inner, c => c.sample_into(us, &mut out))?;
-        Ok(out)
+        super::sample(&self.inner, us)
     }
 
     /// The derivative of the given order at every u of `us`, flat (us.length·dim numbers), in
@@ -187,10 +198,7 @@ impl JsBSplineCurve {
     /// `count` points at equally spaced u over the domain, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
     pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
-        check_count(count)?;
-        let mut out = vec![0.0; count * self.dim()];
-        with_curve!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
-        Ok(out)
+        super::sample_uniform(&self.inner, count)
     }
 
     /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
@@ -200,24 +208,13 @@ impl JsBSplineCurve {
     /// `slice()` it to keep it.
     #[wasm_bindgen(js_name = sampleUniformView)]
     pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
-        check_count(count)?;
-        let len = count.saturating_mul(self.dim());
-        fill_view(
-            &mut self.view,
-            len,
-            |out| with_curve!(&self.inner, c => c.sample_uniform_into(count, out)),
-        )
+        super::sample_uniform_view(&self.inner, &mut self.view, count)
     }
 
     /// `sample(us)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(&mut self, us: &[f64]) -> Result<Float64Array, JsError> {
-        let len = us.len().saturating_mul(self.dim());
-        fill_view(
-            &mut self.view,
-            len,
-            |out| with_curve!(&self.inner, c => c.sample_into(us, out)),
-        )
+        super::sample_view(&self.inner, &mut self.view, us)
     }
 
     /// `N_{i,p}(u)` for i = 0..n.

@@ -41,15 +41,54 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
     ))
 }
 
-/// Resizes `buffer` to `len` numbers, lets `fill` write them and returns a view of it (see
-/// [`memory_view`]): the `…View` methods. On an error the buffer keeps its allocation.
-pub(crate) fn fill_view(
+/// A curve of either dimension behind a JS class, as the sampling methods see it: the shared
+/// bodies of `sample`, `sampleUniform`, `sampleView` and `sampleUniformView` of `BezierCurve`
+/// and `BSplineCurve`.
+pub(crate) trait Sampled {
+    /// 2 or 3.
+    fn dim(&self) -> usize;
+    /// The points at `params`, flat, into `out` (`params.len() · dim` numbers).
+    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error>;
+    /// `count` points at equally spaced parameters over the domain, flat, into `out`.
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error>;
+}
+
+/// `sample(params)`: a new array of `params.length · dim` numbers.
+pub(crate) fn sample(curve: &impl Sampled, params: &[f64]) -> Result<Vec<f64>, JsError> {
+    let mut out = vec![0.0; params.len().saturating_mul(curve.dim())];
+    curve.sample_into(params, &mut out)?;
+    Ok(out)
+}
+
+/// `sampleUniform(count)`: a new array of `count · dim` numbers.
+pub(crate) fn sample_uniform(curve: &impl Sampled, count: usize) -> Result<Vec<f64>, JsError> {
+    check_count(count)?;
+    let mut out = vec![0.0; count * curve.dim()];
+    curve.sample_uniform_into(count, &mut out)?;
+    Ok(out)
+}
+
+/// `sampleView(params)`: `sample(params)` written into `buffer` (the curve's own) and returned
+/// as a view of it (see [`memory_view`]). On an error the buffer keeps its allocation.
+pub(crate) fn sample_view(
+    curve: &impl Sampled,
     buffer: &mut Vec<f64>,
-    len: usize,
-    fill: impl FnOnce(&mut [f64]) -> Result<(), Error>,
+    params: &[f64],
 ) -> Result<Float64Array, JsError> {
-    buffer.resize(len, 0.0);
-    fill(buffer)?;
+    buffer.resize(params.len().saturating_mul(curve.dim()), 0.0);
+    curve.sample_into(params, buffer)?;
+    memory_view(buffer)
+}
+
+/// `sampleUniformView(count)`: `sampleUniform(count)` into `buffer`, as [`sample_view`].
+pub(crate) fn sample_uniform_view(
+    curve: &impl Sampled,
+    buffer: &mut Vec<f64>,
+    count: usize,
+) -> Result<Float64Array, JsError> {
+    check_count(count)?;
+    buffer.resize(count * curve.dim(), 0.0);
+    curve.sample_uniform_into(count, buffer)?;
     memory_view(buffer)
 }
 
