@@ -323,6 +323,33 @@ try {
       assert(problems.length === 0, problems.join("\n"));
     });
 
+    await test(name("Remove point stops at the minimum (button disabled, Delete refused with a message)"), async () => {
+      h = await openDemo(page, base, demo.id);
+      const remove = page.locator('[data-action="remove-point"]').first();
+      if ((await remove.count()) === 0) return; // a demo without an editable point list
+      for (let k = 0; k < 40 && !(await remove.isDisabled()); k++) {
+        await remove.click();
+        await settle(page);
+      }
+      assert(await remove.isDisabled(), "Remove point is disabled at the minimum");
+      const count = (await h.handles()).length;
+      assert(count >= 2, `${count} handles left`);
+      // The keyboard path is refused too, with a message naming the limit.
+      await h.canvas().focus();
+      await page.keyboard.press("Home");
+      await page.keyboard.press("Delete");
+      await settle(page);
+      equal((await h.handles()).length, count, "handles after Delete at the minimum");
+      equal(await h.statusKind(), "error", "status kind");
+      assert(/\d/.test(await h.status()), `the message names the limit: ${await h.status()}`);
+      // Still interactive: Add point works again.
+      await page.locator('[data-action="add-point"]').first().click();
+      await settle(page);
+      equal((await h.handles()).length, count + 1, "handles after Add point");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+
     await test(name("the URL restores the same picture after reload"), async () => {
       h = await openDemo(page, base, demo.id);
       const [handle] = await h.handles();

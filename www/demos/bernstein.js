@@ -284,17 +284,7 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  const edits = pointListActions({
-    points: () => work.points,
-    setPoints: (points) => (work.points = points),
-    min: MIN_POINTS,
-    max: MAX_POINTS,
-    scale: () => view.scale,
-    rebuild,
-    select: (i) => handles.select(i),
-    commit: () => ctx.commit(work),
-    refuse: (kind, limit) => ctx.status(t(`bernstein.${kind}Points`, { [kind]: limit }), "error"),
-  });
+  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "bernstein", rebuild });
 
   // ------------------------------------------------------------ core data
   /** Asks the core for the samples, the basis and the weights when something changed. */

@@ -294,17 +294,7 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  const edits = pointListActions({
-    points: () => work.points,
-    setPoints: (points) => (work.points = points),
-    min: MIN_POINTS,
-    max: MAX_POINTS,
-    scale: () => view.scale,
-    rebuild,
-    select: (i) => handles.select(i),
-    commit: () => ctx.commit(work),
-    refuse: (kind, limit) => ctx.status(t(`bezierProperties.${kind}Points`, { [kind]: limit }), "error"),
-  });
+  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "bezierProperties", rebuild });
   /** Removes handle i when it is a control point (the line's points is not one). */
   const removeControlPoint = (i) => i < work.points.length && edits.remove(i);
 

@@ -142,17 +142,7 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  const edits = pointListActions({
-    points: () => work.points,
-    setPoints: (points) => (work.points = points),
-    min: MIN_POINTS,
-    max: MAX_POINTS,
-    scale: () => view.scale,
-    rebuild,
-    select: (i) => handles.select(i),
-    commit: () => ctx.commit(work),
-    refuse: (kind, limit) => ctx.status(t(`deCasteljau.${kind}Points`, { [kind]: limit }), "error"),
-  });
+  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "deCasteljau", rebuild });
 
   // ------------------------------------------------------------ drawing
   /** Asks the core for the triangle and the samples when something changed. */

@@ -204,17 +204,7 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  const edits = pointListActions({
-    points: () => work.points,
-    setPoints: (points) => (work.points = points),
-    min: MIN_POINTS,
-    max: MAX_POINTS,
-    scale: () => view.scale,
-    rebuild,
-    select: (i) => handles.select(i),
-    commit: () => ctx.commit(work),
-    refuse: (kind, limit) => ctx.status(t(`derivatives.${kind}Points`, { [kind]: limit }), "error"),
-  });
+  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "derivatives", rebuild });
   /** Removes handle i when it is a control point (the origin is not one). */
   const removeControlPoint = (i) => i < work.points.length && edits.remove(i);
 

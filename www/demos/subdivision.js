@@ -214,17 +214,7 @@ export function mount(container, initialState, ctx) {
     view.requestDraw();
   }
 
-  const edits = pointListActions({
-    points: () => work.points,
-    setPoints: (points) => (work.points = points),
-    min: MIN_POINTS,
-    max: MAX_POINTS,
-    scale: () => view.scale,
-    rebuild,
-    select: (i) => handles.select(i),
-    commit: () => ctx.commit(work),
-    refuse: (kind, limit) => ctx.status(t(`subdivision.${kind}Points`, { [kind]: limit }), "error"),
-  });
+  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "subdivision", rebuild });
 
   // ------------------------------------------------------------ core data
   /** Asks the core for the samples, the split, the triangle and the levels when something changed. */

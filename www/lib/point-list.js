@@ -58,30 +58,31 @@ export function withPointRemoved(points, i, min) {
 }
 
 /**
- * The add / remove actions of a demo whose curve follows from its point list alone: the new
- * list from `withPointAdded` / `withPointRemoved` replaces the old one (`setPoints`), then
- * `rebuild()` makes the new wasm curve from it, `select(i)` selects the new (or neighbouring)
- * handle and `commit()` records the change. A full or minimal list calls
- * `refuse("max" | "min", limit)` instead (the demo says so in its status line). `points()` and
- * `scale()` (px per unit, for rounding) are read at the time of the action.
+ * The add / remove actions of a demo whose curve follows from its point list `work.points`
+ * alone: the new list from `withPointAdded` / `withPointRemoved` replaces the old one, then
+ * `rebuild()` makes the new wasm curve from it, the new (or neighbouring) handle is selected
+ * and `ctx.commit(work)` records the change. A full or minimal list reports the demo's string
+ * `<strings>.maxPoints` / `<strings>.minPoints` (with `{max}` / `{min}`) in the status line
+ * instead. New points are rounded to the view's scale at the time of the action.
  */
-export function pointListActions({ points, setPoints, min, max, scale, rebuild, select, commit, refuse }) {
+export function pointListActions({ ctx, work, view, handles, min, max, strings, rebuild }) {
   const apply = (next) => {
-    setPoints(next.points);
+    work.points = next.points;
     rebuild();
-    select(next.index);
-    commit();
+    handles.select(next.index);
+    ctx.commit(work);
   };
+  const refuse = (kind, limit) => ctx.status(t(`${strings}.${kind}Points`, { [kind]: limit }), "error");
   return {
     /** Adds a point after handle i (at the end when none is selected). */
     add(i) {
-      const next = withPointAdded(points(), i, max, scale());
+      const next = withPointAdded(work.points, i, max, view.scale);
       if (next) apply(next);
       else refuse("max", max);
     },
     /** Removes handle i (the last one when none is selected). */
     remove(i) {
-      const next = withPointRemoved(points(), i, min);
+      const next = withPointRemoved(work.points, i, min);
       if (next) apply(next);
       else refuse("min", min);
     },
