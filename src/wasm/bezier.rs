@@ -35,22 +35,7 @@ macro_rules! map_curve {
     };
 }
 
-impl super::Sampled for Curve {
-    fn dim(&self) -> usize {
-        match self {
-            Curve::D2(_) => 2,
-            Curve::D3(_) => 3,
-        }
-    }
-
-    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
-        with_curve!(self, c => c.sample_into(params, out))
-    }
-
-    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
-        with_curve!(self, c => c.sample_uniform_into(count, out))
-    }
-}
+impl_sampled_for_curve!();
 
 /// Points as one flat array of `P::DIM` numbers each.
 pub(crate) fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {

@@ -34,22 +34,7 @@ macro_rules! map_curve {
     };
 }
 
-impl super::Sampled for Curve {
-    fn dim(&self) -> usize {
-        match self {
-            Curve::D2(_) => 2,
-            Curve::D3(_) => 3,
-        }
-    }
-
-    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
-        with_curve!(self, c => c.sample_into(params, out))
-    }
-
-    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
-        with_curve!(self, c => c.sample_uniform_into(count, out))
-    }
-}
+impl_sampled_for_curve!();
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
 #[wasm_bindgen(js_name = BSplineCurve)]

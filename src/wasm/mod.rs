@@ -11,6 +11,29 @@
     clippy::indexing_slicing
 )]
 
+/// Implements [`Sampled`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in,
+/// through that module's `with_curve!`.
+macro_rules! impl_sampled_for_curve {
+    () => {
+        impl super::Sampled for Curve {
+            fn dim(&self) -> usize {
+                match self {
+                    Curve::D2(_) => 2,
+                    Curve::D3(_) => 3,
+                }
+            }
+
+            fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
+                with_curve!(self, c => c.sample_into(params, out))
+            }
+
+            fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
+                with_curve!(self, c => c.sample_uniform_into(count, out))
+            }
+        }
+    };
+}
+
 pub mod bezier;
 pub mod bspline;
 pub mod rational;
