@@ -113,6 +113,14 @@ pub enum Error {
         /// The cap.
         max: usize,
     },
+    /// A count, index, degree, order or dimension given from JavaScript is not a whole number
+    /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument).
+    NotWholeNumber {
+        /// What the number is ("count", "i", "degree 1").
+        what: String,
+        /// The value given.
+        value: f64,
+    },
     /// An operation needs a 2D curve.
     Needs2D {
         /// The operation.
@@ -204,6 +212,12 @@ impl fmt::Display for Error {
             Error::TooLarge { what, value, max } => {
                 write!(f, "{what} = {value} is too large; at most {max} is allowed")
             }
+            Error::NotWholeNumber { what, value } => write!(
+                f,
+                "{what} must be a whole number from 0 to {}, got {}",
+                u32::MAX,
+                Num(*value)
+            ),
             Error::Needs2D { operation, dim } => {
                 write!(f, "{operation} works on 2D curves; this curve has dim = {dim}")
             }

@@ -962,6 +962,8 @@ fn dense_sampling_matches_de_casteljau_for_every_degree() {
                 c.evaluate(1.0).unwrap(),
                 "grid end"
             );
+            // count = 0 writes nothing (the uniform loop once computed `count − 1` here).
+            c.sample_uniform_into(0, &mut []).unwrap();
             let mut one = [0.0; 2];
             c.sample_uniform_into(1, &mut one).unwrap();
             assert_eq!(

@@ -18,42 +18,42 @@ fn message<T>(r: Result<T, JsError>) -> String {
 }
 
 fn example() -> JsBezierCurve {
-    JsBezierCurve::new(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2, None).unwrap()
+    JsBezierCurve::new(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2.0, None).unwrap()
 }
 
 #[test]
 fn constructor_errors_name_the_bad_value() {
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0, 0.0], 2, None)),
+        message(JsBezierCurve::new(&[0.0, 0.0], 2.0, None)),
         "a Bézier curve needs at least 2 control points, got 1"
     );
-    assert!(message(JsBezierCurve::new(&[0.0, 0.0, 1.0], 2, None)).contains("coordinate count 3"));
+    assert!(message(JsBezierCurve::new(&[0.0, 0.0, 1.0], 2.0, None)).contains("coordinate count 3"));
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0; 8], 4, None)),
+        message(JsBezierCurve::new(&[0.0; 8], 4.0, None)),
         "dim must be 2 or 3, got 4"
     );
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0; 8], 1, None)),
+        message(JsBezierCurve::new(&[0.0; 8], 1.0, None)),
         "dim must be 2 or 3, got 1"
     );
     assert!(
-        message(JsBezierCurve::new(&[0.0, f64::NAN, 1.0, 1.0], 2, None))
+        message(JsBezierCurve::new(&[0.0, f64::NAN, 1.0, 1.0], 2.0, None))
             .contains("coordinate 1 is NaN")
     );
     assert!(message(JsBezierCurve::new(
         &[0.0, 0.0, 1.0, 1.0],
-        2,
+        2.0,
         Some(vec![1.0, 0.0])
     ))
     .contains("weight 1 is 0"));
     assert!(message(JsBezierCurve::new(
         &[0.0, 0.0, 1.0, 1.0],
-        2,
+        2.0,
         Some(vec![1.0])
     ))
     .contains("got 1"));
     // dim is checked before the coordinate count (the documented validation order).
-    assert!(message(JsBezierCurve::new(&[0.0; 5], 5, None)).starts_with("dim must be 2 or 3"));
+    assert!(message(JsBezierCurve::new(&[0.0; 5], 5.0, None)).starts_with("dim must be 2 or 3"));
 }
 
 #[test]
@@ -72,26 +72,57 @@ fn numbers_in_messages_print_as_javascript_prints_them() {
 }
 
 #[test]
+fn counts_indices_and_degrees_must_be_whole_numbers() {
+    // wasm-bindgen's usize would have made these 2, 4294967295, 0 and 0 without a word.
+    let mut c = example();
+    assert_eq!(
+        message(JsBezierCurve::new(&[0.0; 8], 2.5, None)),
+        "dim must be a whole number from 0 to 4294967295, got 2.5"
+    );
+    assert_eq!(
+        message(c.set_control_point(-1.0, &[1.0, 1.0])),
+        "i must be a whole number from 0 to 4294967295, got -1"
+    );
+    assert!(message(c.sample_uniform(f64::NAN)).contains("count must be a whole number"));
+    assert!(message(c.derivative(0.5, 1e10)).contains("got 10000000000"));
+    assert!(message(c.sample_uniform_view(f64::INFINITY)).contains("got Infinity"));
+    let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0];
+    assert!(message(splinelab::wasm::JsCompositeBezier::new(
+        &pts,
+        2.0,
+        &[1.0, 1.5],
+        None
+    ))
+    .contains("degree 1 must be a whole number"));
+    let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
+    let b = splinelab::wasm::JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
+    assert!(message(b.insert_knot(1.0, Some(0.5))).contains("times must be a whole number"));
+    // Whole numbers pass, −0 included.
+    assert_eq!(c.sample_uniform(-0.0).unwrap().len(), 0);
+    assert_eq!(c.derivative(0.5, 1.0).unwrap().len(), 2);
+}
+
+#[test]
 fn method_errors_are_thrown_not_trapped() {
     let mut c = example();
     assert_eq!(
         message(c.evaluate(1.5)),
         "t = 1.5 is outside the domain [0, 1]"
     );
-    assert!(message(c.derivative(f64::INFINITY, 1)).contains("t is Infinity"));
-    assert!(message(c.set_control_point(7, &[1.0, 1.0])).contains("index 7 is out of range"));
+    assert!(message(c.derivative(f64::INFINITY, 1.0)).contains("t is Infinity"));
+    assert!(message(c.set_control_point(7.0, &[1.0, 1.0])).contains("index 7 is out of range"));
     assert_eq!(
-        message(c.set_control_point(0, &[1.0, 1.0, 1.0])),
+        message(c.set_control_point(0.0, &[1.0, 1.0, 1.0])),
         "a point needs 2 coordinates, got 3"
     );
-    assert!(message(c.set_weight(0, 0.0)).contains("weight 0 is 0"));
+    assert!(message(c.set_weight(0.0, 0.0)).contains("weight 0 is 0"));
     assert!(message(c.sample(&[0.0, 2.0])).contains("t = 2"));
-    assert!(message(c.sample_uniform(usize::MAX)).contains("too large"));
+    assert!(message(c.sample_uniform(f64::from(u32::MAX))).contains("too large"));
     assert!(message(c.flatten(-1.0)).contains("tolerance -1"));
     assert!(message(c.split(-0.5)).contains("t = -0.5"));
-    assert!(message(wasm::bezier::bernstein(3, 4, 0.5)).contains("index 4"));
-    assert!(message(wasm::bezier::bernstein(3, 1, 1.5)).contains("t = 1.5"));
-    let c3 = JsBezierCurve::new(&[0.0; 6], 3, None).unwrap();
+    assert!(message(wasm::bezier::bernstein(3.0, 4.0, 0.5)).contains("index 4"));
+    assert!(message(wasm::bezier::bernstein(3.0, 1.0, 1.5)).contains("t = 1.5"));
+    let c3 = JsBezierCurve::new(&[0.0; 6], 3.0, None).unwrap();
     assert!(message(c3.intersect_line(0.0, 0.0, 1.0, 0.0, 1e-9)).contains("2D curves"));
     assert!(message(wasm::bezier::join_bezier(&example(), &c3, "C1", None)).contains("same dim"));
     assert!(message(wasm::bezier::join_bezier(
@@ -110,7 +141,7 @@ fn flat_layouts() {
     let c = example();
     assert_eq!(c.de_casteljau(0.25).unwrap().len(), 10 * 2);
     assert_eq!(c.de_casteljau_homogeneous(0.25).unwrap().len(), 10 * 3);
-    assert_eq!(c.sample_uniform(5).unwrap().len(), 10);
+    assert_eq!(c.sample_uniform(5.0).unwrap().len(), 10);
     assert_eq!(c.domain(), vec![0.0, 1.0]);
     assert_eq!(c.weights(), vec![1.0; 4]);
     assert_eq!(c.bounding_box().len(), 4);
@@ -123,7 +154,7 @@ fn flat_layouts() {
         halves[0].control_points()[6..],
         halves[1].control_points()[..2]
     );
-    let basis = wasm::bezier::bernstein_basis(3, 5).unwrap();
+    let basis = wasm::bezier::bernstein_basis(3.0, 5.0).unwrap();
     assert_eq!(basis.len(), 4 * 5);
     assert_eq!((basis[0], basis[4], basis[19]), (1.0, 0.0, 1.0));
 }
@@ -132,21 +163,22 @@ fn flat_layouts() {
 fn composite_checks_its_layout() {
     use splinelab::wasm::JsCompositeBezier;
     let pts = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0, 0.0, 3.0, -1.0, 4.0, 0.0];
-    let c = JsCompositeBezier::new(&pts, 2, &[2, 2], None).unwrap();
+    let c = JsCompositeBezier::new(&pts, 2.0, &[2.0, 2.0], None).unwrap();
     assert_eq!(c.domain(), vec![0.0, 2.0]);
     assert_eq!(c.evaluate(2.0).unwrap(), vec![4.0, 0.0]);
     assert!(
-        message(JsCompositeBezier::new(&pts, 2, &[2, 3], None)).contains("need 7 control points")
+        message(JsCompositeBezier::new(&pts, 2.0, &[2.0, 3.0], None))
+            .contains("need 7 control points")
     );
     assert!(message(JsCompositeBezier::new(
         &pts,
-        2,
-        &[2, 2],
+        2.0,
+        &[2.0, 2.0],
         Some(vec![0.0, 1.0])
     ))
     .contains("3 breakpoints"));
-    assert!(message(JsCompositeBezier::new(&pts, 2, &[0, 5], None)).contains("degree >= 1"));
-    assert!(message(c.piece(2)).contains("index 2"));
+    assert!(message(JsCompositeBezier::new(&pts, 2.0, &[0.0, 5.0], None)).contains("degree >= 1"));
+    assert!(message(c.piece(2.0)).contains("index 2"));
 }
 
 #[test]
@@ -154,35 +186,34 @@ fn bspline_boundary() {
     use splinelab::wasm::{bspline as b, JsBSplineCurve};
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let c = JsBSplineCurve::new(&pts, 2, 2, &knots, None).unwrap();
+    let c = JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
     assert_eq!(c.domain(), vec![0.0, 4.0]);
     assert_eq!(c.de_boor(1.5).unwrap().len(), 6 * 2);
     assert_eq!(c.basis(1.5).unwrap().len(), 6);
     assert_eq!(c.to_bezier().unwrap().len(), 4);
     assert_eq!(c.insert_knot(1.5, None).unwrap().knots().len(), 10);
     assert_eq!(
-        c.segment_matrix(3, None).unwrap(),
+        c.segment_matrix(3.0, None).unwrap(),
         vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]
     );
     assert_eq!(
-        message(JsBSplineCurve::new(&pts, 4, 2, &knots, None)),
+        message(JsBSplineCurve::new(&pts, 4.0, 2.0, &knots, None)),
         "dim must be 2 or 3, got 4"
     );
-    assert!(message(JsBSplineCurve::new(&pts, 2, 2, &knots[..8], None)).contains("n+p+2"));
-    assert!(message(JsBSplineCurve::new(&pts, 2, 0, &knots, None))
+    assert!(message(JsBSplineCurve::new(&pts, 2.0, 2.0, &knots[..8], None)).contains("n+p+2"));
+    assert!(message(JsBSplineCurve::new(&pts, 2.0, 0.0, &knots, None))
         .contains("degree must be at least 1"));
-    assert!(
-        message(JsBSplineCurve::new(&pts, 2, 6, &knots, None)).contains("degree 6 needs at least")
-    );
+    assert!(message(JsBSplineCurve::new(&pts, 2.0, 6.0, &knots, None))
+        .contains("degree 6 needs at least"));
     assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
-    assert!(message(c.insert_knot(0.0, Some(1))).contains("multiplicity 4"));
-    assert!(message(c.segment_matrix(0, None)).contains("span 0"));
-    assert!(message(b::knot_vector(&pts, 2, 2, "open")).contains("\"open\""));
-    assert!(message(b::parameterize(&[0.0, 0.0, 0.0, 0.0], 2, "chord")).contains("coincide"));
-    assert!(message(b::phantom_points(&pts, 2, 2)).contains("even"));
-    assert!(message(b::uniform_segment_matrix(0)).contains("degree must be"));
+    assert!(message(c.insert_knot(0.0, Some(1.0))).contains("multiplicity 4"));
+    assert!(message(c.segment_matrix(0.0, None)).contains("span 0"));
+    assert!(message(b::knot_vector(&pts, 2.0, 2.0, "open")).contains("\"open\""));
+    assert!(message(b::parameterize(&[0.0, 0.0, 0.0, 0.0], 2.0, "chord")).contains("coincide"));
+    assert!(message(b::phantom_points(&pts, 2.0, 2.0)).contains("even"));
+    assert!(message(b::uniform_segment_matrix(0.0)).contains("degree must be"));
     assert_eq!(
-        b::knot_vector(&pts, 2, 2, "clamped").unwrap(),
+        b::knot_vector(&pts, 2.0, 2.0, "clamped").unwrap(),
         vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]
     );
 }
@@ -215,7 +246,7 @@ fn rational_constructors_and_projective_maps() {
     assert!(message(r::circular_arc_bezier(&[0.0, 0.0, 1.0, 1.0])).contains("3 control points"));
     assert_eq!(r::conic_kind(1.0, 2.0, 1.0).unwrap(), "hyperbola");
     assert!(message(r::conic_kind(1.0, -2.0, 1.0)).contains("weight 1 is -2"));
-    let bez = JsBezierCurve::new(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2, None).unwrap();
+    let bez = JsBezierCurve::new(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2.0, None).unwrap();
     assert!(message(bez.projective_map(&[1.0; 8])).contains("9 numbers"));
     assert!(
         message(bez.projective_map(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0]))
@@ -239,8 +270,8 @@ fn rational_constructors_and_projective_maps() {
 fn sample_views_see_the_same_numbers_without_a_copy() {
     use splinelab::wasm::JsBSplineCurve;
     let mut bezier = example();
-    let copy = bezier.sample_uniform(9).unwrap();
-    let view = bezier.sample_uniform_view(9).unwrap();
+    let copy = bezier.sample_uniform(9.0).unwrap();
+    let view = bezier.sample_uniform_view(9.0).unwrap();
     assert_eq!(view.to_vec(), copy);
     // The view is the curve's buffer in the wasm memory, not a copy of it.
     let memory = wasm_bindgen::memory().unchecked_into::<js_sys::WebAssembly::Memory>();
@@ -248,21 +279,21 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
     // Bernstein form at t = 1/2 of (0,0) (2,2) (6,4) (8,2): (0 + 3·2 + 3·6 + 8)/8, (0 + 6 + 12 + 2)/8.
     assert_eq!(bezier.sample_view(&[0.5]).unwrap().to_vec(), vec![4.0, 2.5]);
     assert!(message(bezier.sample_view(&[1.5])).contains("1.5"));
-    assert!(message(bezier.sample_uniform_view(usize::MAX)).contains("count"));
+    assert!(message(bezier.sample_uniform_view(f64::from(u32::MAX))).contains("count"));
     // A failed call leaves the curve usable.
     assert_eq!(
-        bezier.sample_uniform_view(2).unwrap().to_vec(),
+        bezier.sample_uniform_view(2.0).unwrap().to_vec(),
         vec![0.0, 0.0, 8.0, 2.0]
     );
 
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let mut c = JsBSplineCurve::new(&pts, 2, 2, &knots, None).unwrap();
+    let mut c = JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
     let us: Vec<f64> = (0..=40).map(|k| k as f64 / 10.0).collect();
     assert_eq!(c.sample_view(&us).unwrap().to_vec(), c.sample(&us).unwrap());
     assert_eq!(
-        c.sample_uniform_view(41).unwrap().to_vec(),
-        c.sample_uniform(41).unwrap()
+        c.sample_uniform_view(41.0).unwrap().to_vec(),
+        c.sample_uniform(41.0).unwrap()
     );
     assert!(message(c.sample_view(&[5.0])).contains("outside the domain [0, 4]"));
 }

@@ -185,6 +185,10 @@ pub(crate) fn horner_run<Q: Point, C: Point>(
     ends: Option<(C, C)>,
     out: &mut [f64],
 ) {
+    if run.is_empty() {
+        // `sampleUniform(0)`: nothing to write (the uniform loop below assumes a last point).
+        return;
+    }
     // Two unrolled lengths: degrees 1–3 as cubics and 4–5 as quintics, the unused leading
     // coefficients zero (Horner's rule then performs exactly the operations of the shorter
     // loop: 0·s + c = c), so the results are bit-identical and the wasm keeps two copies.

@@ -1,5 +1,6 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
+use super::whole;
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -79,9 +80,10 @@ impl JsBezierCurve {
     #[wasm_bindgen(constructor)]
     pub fn new(
         points: &[f64],
-        dim: usize,
+        dim: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
+        let dim = whole("dim", dim)?;
         Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
     }
 
@@ -89,11 +91,12 @@ impl JsBezierCurve {
     #[wasm_bindgen(js_name = withInterval)]
     pub fn with_interval(
         points: &[f64],
-        dim: usize,
+        dim: f64,
         a: f64,
         b: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
+        let dim = whole("dim", dim)?;
         let curve = build(points, dim, weights.as_deref())?;
         let inner = match curve {
             Curve::D2(c) => Curve::D2(c.with_interval(a, b)?),
@@ -107,10 +110,11 @@ impl JsBezierCurve {
     #[wasm_bindgen(js_name = fromPolynomial)]
     pub fn from_polynomial(
         coefficients: &[f64],
-        dim: usize,
+        dim: f64,
         a: f64,
         b: f64,
     ) -> Result<JsBezierCurve, JsError> {
+        let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
             2 => Curve::D2(bezier::from_polynomial(
                 &crate::geom::points_from_flat::<DVec2>(coefficients)?,
@@ -157,7 +161,8 @@ impl JsBezierCurve {
 
     /// The derivative of the given order at t (order 0 = the point; above the degree of a
     /// polynomial curve, the zero vector).
-    pub fn derivative(&self, t: f64, order: usize) -> Result<Vec<f64>, JsError> {
+    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
+        let order = whole("order", order)?;
         Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
     }
 
@@ -168,7 +173,8 @@ impl JsBezierCurve {
 
     /// `count` points at equally spaced parameters over the whole interval, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
+    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
+        let count = whole("count", count)?;
         super::sample_uniform(&self.inner, count)
     }
 
@@ -178,7 +184,8 @@ impl JsBezierCurve {
     /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
     /// `slice()` it to keep it.
     #[wasm_bindgen(js_name = sampleUniformView)]
-    pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
+    pub fn sample_uniform_view(&mut self, count: f64) -> Result<Float64Array, JsError> {
+        let count = whole("count", count)?;
         super::sample_uniform_view(&self.inner, &mut self.view, count)
     }
 
@@ -261,14 +268,16 @@ impl JsBezierCurve {
 
     /// Moves control point i in place (the drag path); `point` has dim numbers.
     #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(&mut self, i: usize, point: &[f64]) -> Result<(), JsError> {
+    pub fn set_control_point(&mut self, i: f64, point: &[f64]) -> Result<(), JsError> {
+        let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
         Ok(())
     }
 
     /// Sets weight i (> 0) in place.
     #[wasm_bindgen(js_name = setWeight)]
-    pub fn set_weight(&mut self, i: usize, w: f64) -> Result<(), JsError> {
+    pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
+        let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
         Ok(())
     }
@@ -392,7 +401,9 @@ impl JsBezierCurve {
 
 /// `bernstein(n, i, t)`: `B_i^n(t) = C(n,i) t^i (1−t)^(n−i)` for `0 <= i <= n`, t ∈ [0, 1].
 #[wasm_bindgen]
-pub fn bernstein(n: usize, i: usize, t: f64) -> Result<f64, JsError> {
+pub fn bernstein(n: f64, i: f64, t: f64) -> Result<f64, JsError> {
+    let n = whole("n", n)?;
+    let i = whole("i", i)?;
     check_bernstein_args(n, i)?;
     check_finite(|| "t".into(), t)?;
     if !(0.0..=1.0).contains(&t) {
@@ -430,10 +441,12 @@ fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
 #[wasm_bindgen(js_name = arcLengths)]
 pub fn arc_lengths(
     points: &[f64],
-    dim: usize,
-    degree: usize,
+    dim: f64,
+    degree: f64,
     accuracy: Option<f64>,
 ) -> Result<Vec<f64>, JsError> {
+    let dim = whole("dim", dim)?;
+    let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {
         2 => bezier::arc_lengths::<DVec2>(points, degree, accuracy)?,
         _ => bezier::arc_lengths::<DVec3>(points, degree, accuracy)?,
@@ -443,7 +456,9 @@ pub fn arc_lengths(
 /// `bernsteinBasis(n, count)`: every `B_i^n` at `count` equally spaced t in [0, 1], i-major:
 /// value `k` of function `i` at index `i·count + k` ((n+1)·count numbers, for plotting).
 #[wasm_bindgen(js_name = bernsteinBasis)]
-pub fn bernstein_basis(n: usize, count: usize) -> Result<Vec<f64>, JsError> {
+pub fn bernstein_basis(n: f64, count: f64) -> Result<Vec<f64>, JsError> {
+    let n = whole("n", n)?;
+    let count = whole("count", count)?;
     check_bernstein_args(n, 0)?;
     if count > bezier::MAX_SAMPLES / (n + 1) {
         return Err(Error::TooLarge {
@@ -614,11 +629,16 @@ impl JsCompositeBezier {
     #[wasm_bindgen(constructor)]
     pub fn new(
         points: &[f64],
-        dim: usize,
-        degrees: &[u32],
+        dim: f64,
+        degrees: &[f64],
         breaks: Option<Vec<f64>>,
     ) -> Result<JsCompositeBezier, JsError> {
-        let degrees: Vec<usize> = degrees.iter().map(|&d| d as usize).collect();
+        let dim = whole("dim", dim)?;
+        let degrees = degrees
+            .iter()
+            .enumerate()
+            .map(|(i, &d)| whole(&format!("degree {i}"), d))
+            .collect::<Result<Vec<usize>, JsError>>()?;
         if let Some(&d) = degrees.iter().find(|&&d| d == 0) {
             return Err(Error::TooFewPoints {
                 needed: 2,
@@ -648,7 +668,8 @@ impl JsCompositeBezier {
     }
 
     /// Piece i as a `BezierCurve` on its own interval (a copy).
-    pub fn piece(&self, i: usize) -> Result<JsBezierCurve, JsError> {
+    pub fn piece(&self, i: f64) -> Result<JsBezierCurve, JsError> {
+        let i = whole("i", i)?;
         let count = self.piece_count();
         let inner = match &self.inner {
             Composite::D2(c) => c.pieces().get(i).cloned().map(Curve::D2),
@@ -665,7 +686,8 @@ impl JsCompositeBezier {
     }
 
     /// The derivative of the given order at t (the right piece's at a joint).
-    pub fn derivative(&self, t: f64, order: usize) -> Result<Vec<f64>, JsError> {
+    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
+        let order = whole("order", order)?;
         Ok(with_composite!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
     }
 

@@ -1,6 +1,7 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
+use super::whole;
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -65,11 +66,13 @@ impl JsBSplineCurve {
     #[wasm_bindgen(constructor)]
     pub fn new(
         points: &[f64],
-        dim: usize,
-        degree: usize,
+        dim: f64,
+        degree: f64,
         knots: &[f64],
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
+        let dim = whole("dim", dim)?;
+        let degree = whole("degree", degree)?;
         let w = weights.as_deref();
         let inner = match check_dim(dim)? {
             2 => Curve::D2(BSplineCurve::from_flat(points, degree, knots.to_vec(), w)?),
@@ -82,10 +85,12 @@ impl JsBSplineCurve {
     /// points (the first p repeated at the end, uniform knots), joined with C^(p−1).
     pub fn closed(
         points: &[f64],
-        dim: usize,
-        degree: usize,
+        dim: f64,
+        degree: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
+        let dim = whole("dim", dim)?;
+        let degree = whole("degree", degree)?;
         let w = weights.as_deref();
         let inner = match check_dim(dim)? {
             2 => Curve::D2(BSplineCurve::closed(points_from_flat(points)?, degree, w)?),
@@ -162,7 +167,8 @@ impl JsBSplineCurve {
     }
 
     /// The derivative of the given order at u (zero above the degree of a polynomial curve).
-    pub fn derivative(&self, u: f64, order: usize) -> Result<Vec<f64>, JsError> {
+    pub fn derivative(&self, u: f64, order: f64) -> Result<Vec<f64>, JsError> {
+        let order = whole("order", order)?;
         Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(u, order)?])))
     }
 
@@ -174,7 +180,8 @@ impl JsBSplineCurve {
     /// The derivative of the given order at every u of `us`, flat (us.length·dim numbers), in
     /// one pass: the batched form of `derivative(u, order)`.
     #[wasm_bindgen(js_name = sampleDerivatives)]
-    pub fn sample_derivatives(&self, us: &[f64], order: usize) -> Result<Vec<f64>, JsError> {
+    pub fn sample_derivatives(&self, us: &[f64], order: f64) -> Result<Vec<f64>, JsError> {
+        let order = whole("order", order)?;
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
         Ok(out)
@@ -182,7 +189,8 @@ impl JsBSplineCurve {
 
     /// `count` points at equally spaced u over the domain, ends included.
     #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: usize) -> Result<Vec<f64>, JsError> {
+    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
+        let count = whole("count", count)?;
         super::sample_uniform(&self.inner, count)
     }
 
@@ -192,7 +200,8 @@ impl JsBSplineCurve {
     /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
     /// `slice()` it to keep it.
     #[wasm_bindgen(js_name = sampleUniformView)]
-    pub fn sample_uniform_view(&mut self, count: usize) -> Result<Float64Array, JsError> {
+    pub fn sample_uniform_view(&mut self, count: f64) -> Result<Float64Array, JsError> {
+        let count = whole("count", count)?;
         super::sample_uniform_view(&self.inner, &mut self.view, count)
     }
 
@@ -210,14 +219,16 @@ impl JsBSplineCurve {
     /// Every basis function at `count` equally spaced u over the domain, i-major:
     /// `N_{i,p}(u_j)` at index `i·count + j`.
     #[wasm_bindgen(js_name = basisCurves)]
-    pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>, JsError> {
+    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, JsError> {
+        let count = whole("count", count)?;
         Ok(with_curve!(&self.inner, c => c.basis_curves(count))?)
     }
 
     /// Derivatives of every basis function at u: row d = 0..=order holds `N^{(d)}_{i,p}(u)`,
     /// i = 0..n, rows concatenated.
     #[wasm_bindgen(js_name = basisDerivatives)]
-    pub fn basis_derivatives(&self, u: f64, order: usize) -> Result<Vec<f64>, JsError> {
+    pub fn basis_derivatives(&self, u: f64, order: f64) -> Result<Vec<f64>, JsError> {
+        let order = whole("order", order)?;
         Ok(with_curve!(&self.inner, c => c.basis_derivatives_at(u, order))?)
     }
 
@@ -247,7 +258,8 @@ impl JsBSplineCurve {
 
     /// A new curve with knot u inserted `times` times (default 1): same shape, more points.
     #[wasm_bindgen(js_name = insertKnot)]
-    pub fn insert_knot(&self, u: f64, times: Option<usize>) -> Result<JsBSplineCurve, JsError> {
+    pub fn insert_knot(&self, u: f64, times: Option<f64>) -> Result<JsBSplineCurve, JsError> {
+        let times = times.map(|v| whole("times", v)).transpose()?;
         let times = times.unwrap_or(1);
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.insert_knot(u, times)?),
@@ -296,21 +308,24 @@ impl JsBSplineCurve {
     /// The segment matrix of span k, row-major (p+1)×(p+1): `[x^p … 1] M [P_{k−p} … P_k]`, in
     /// the local t ∈ [0, 1] when `local` (default) or in the global u.
     #[wasm_bindgen(js_name = segmentMatrix)]
-    pub fn segment_matrix(&self, k: usize, local: Option<bool>) -> Result<Vec<f64>, JsError> {
+    pub fn segment_matrix(&self, k: f64, local: Option<bool>) -> Result<Vec<f64>, JsError> {
+        let k = whole("k", k)?;
         let m = with_curve!(&self.inner, c => c.segment_matrix(k, local.unwrap_or(true)))?;
         Ok(m.concat())
     }
 
     /// Moves control point i in place (a closed curve's repeated copy follows).
     #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(&mut self, i: usize, point: &[f64]) -> Result<(), JsError> {
+    pub fn set_control_point(&mut self, i: f64, point: &[f64]) -> Result<(), JsError> {
+        let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
         Ok(())
     }
 
     /// Sets weight i (> 0) in place.
     #[wasm_bindgen(js_name = setWeight)]
-    pub fn set_weight(&mut self, i: usize, w: f64) -> Result<(), JsError> {
+    pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
+        let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
         Ok(())
     }
@@ -361,12 +376,9 @@ fn flat_points<C: Cartesian>(points: &[f64]) -> Result<Vec<C>, Error> {
 /// `knotVector(points, dim, degree, kind)`: kind "uniform" | "clamped" | "chord" | "centripetal"
 /// (the Greek notes' formulas in our convention, n + p + 2 knots).
 #[wasm_bindgen(js_name = knotVector)]
-pub fn knot_vector(
-    points: &[f64],
-    dim: usize,
-    degree: usize,
-    kind: &str,
-) -> Result<Vec<f64>, JsError> {
+pub fn knot_vector(points: &[f64], dim: f64, degree: f64, kind: &str) -> Result<Vec<f64>, JsError> {
+    let dim = whole("dim", dim)?;
+    let degree = whole("degree", degree)?;
     let kind = KnotKind::parse(kind)?;
     Ok(match check_dim(dim)? {
         2 => bspline::knot_vector(&flat_points::<DVec2>(points)?, degree, kind)?,
@@ -377,7 +389,8 @@ pub fn knot_vector(
 /// `parameterize(points, dim, kind)`: cumulative parameters from 0; kind "uniform" | "chord" |
 /// "centripetal".
 #[wasm_bindgen]
-pub fn parameterize(points: &[f64], dim: usize, kind: &str) -> Result<Vec<f64>, JsError> {
+pub fn parameterize(points: &[f64], dim: f64, kind: &str) -> Result<Vec<f64>, JsError> {
+    let dim = whole("dim", dim)?;
     let kind = Parameterization::parse(kind)?;
     Ok(match check_dim(dim)? {
         2 => bspline::parameterize(&flat_points::<DVec2>(points)?, kind)?,
@@ -388,7 +401,9 @@ pub fn parameterize(points: &[f64], dim: usize, kind: &str) -> Result<Vec<f64>, 
 /// `phantomPoints(points, dim, degree)`: the points with `(p − 1)/2` reflected phantom points at
 /// each end, so a uniform B-spline of odd degree p passes through the first and last point.
 #[wasm_bindgen(js_name = phantomPoints)]
-pub fn phantom_points(points: &[f64], dim: usize, degree: usize) -> Result<Vec<f64>, JsError> {
+pub fn phantom_points(points: &[f64], dim: f64, degree: f64) -> Result<Vec<f64>, JsError> {
+    let dim = whole("dim", dim)?;
+    let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {
         2 => flatten_points(&bspline::phantom_points(
             &flat_points::<DVec2>(points)?,
@@ -404,7 +419,8 @@ pub fn phantom_points(points: &[f64], dim: usize, degree: usize) -> Result<Vec<f
 /// `uniformSegmentMatrix(p)`: the matrix of every interior segment of a uniform B-spline of
 /// degree p (row-major, (p+1)², highest power first), e.g. 1/6·[[−1,3,−3,1],…] for p = 3.
 #[wasm_bindgen(js_name = uniformSegmentMatrix)]
-pub fn uniform_segment_matrix(p: usize) -> Result<Vec<f64>, JsError> {
+pub fn uniform_segment_matrix(p: f64) -> Result<Vec<f64>, JsError> {
+    let p = whole("p", p)?;
     if p == 0 || p > crate::geom::MAX_DEGREE {
         return Err(Error::Mismatch {
             message: format!("degree must be 1..={}, got {p}", crate::geom::MAX_DEGREE),

@@ -115,6 +115,23 @@ pub(crate) fn sample_uniform_view(
     memory_view(buffer)
 }
 
+/// A whole number ≥ 0 from JavaScript: a count, index, degree, order or dimension. The API
+/// takes these as `f64` and converts them here, because wasm-bindgen's own conversion to
+/// `usize` (`>>> 0`) would silently turn 2.5 into 2, −1 into 4294967295 and NaN or a missing
+/// argument into 0.
+#[inline(never)]
+pub(crate) fn whole(what: &str, value: f64) -> Result<usize, JsError> {
+    if (0.0..=f64::from(u32::MAX)).contains(&value) && value.fract() == 0.0 {
+        Ok(value as usize)
+    } else {
+        Err(Error::NotWholeNumber {
+            what: what.into(),
+            value,
+        }
+        .into())
+    }
+}
+
 /// Rejects a sample count above [`crate::geom::MAX_SAMPLES`].
 pub(crate) fn check_count(count: usize) -> Result<(), Error> {
     if count > crate::geom::MAX_SAMPLES {
