@@ -21,6 +21,7 @@ import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
 import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
+import { BasisPlotPointer, drawGraph } from "../lib/basis-plot.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bernstein";
@@ -120,8 +121,6 @@ export function mount(container, initialState, ctx) {
   let markerLabel = ""; // "t = 1/4", rebuilt when t changes
 
   // What is highlighted: a basis curve under the pointer in the plot, a table row, or a handle.
-  let plotHover = -1;
-  let rowHover = -1;
   let shownHighlight = -2; // the highlight the panels show (-2: not yet synced)
 
   // ------------------------------------------------------------ figure
@@ -131,40 +130,12 @@ export function mount(container, initialState, ctx) {
 
   // The plot claims its frame before the handles see the pointer (a handle hidden under the
   // plot cannot be grabbed there; pan to reach it): press or drag there to set t.
-  let draggingT = false;
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      if (!inPlot(x, y)) return false;
-      player.stop();
-      draggingT = true;
-      plotHover = basisAt(x, y);
-      setT(tAtPixel(x), false);
-      return true;
-    },
-    pointerMove(event, x) {
-      if (draggingT) setT(tAtPixel(x), false);
-    },
-    pointerUp(event, x) {
-      if (!draggingT) return;
-      draggingT = false;
-      setT(tAtPixel(x), true);
-    },
-    hover(x, y) {
-      const inside = inPlot(x, y);
-      const i = inside ? basisAt(x, y) : -1;
-      if (inside) handles.leave(); // the pointer left the handles' area
-      if (i !== plotHover) {
-        plotHover = i;
-        view.requestDraw();
-      }
-      return inside ? "col-resize" : null;
-    },
-    leave() {
-      if (plotHover >= 0) {
-        plotHover = -1;
-        view.requestDraw();
-      }
-    },
+  const plotPointer = new BasisPlotPointer(view, {
+    inPlot,
+    graphAt: basisAt,
+    pick: (x, final) => setT(tAtPixel(x), final),
+    press: () => player.stop(),
+    enter: () => handles.leave(),
   });
 
   const handles = new Handles(view, {
@@ -222,14 +193,6 @@ export function mount(container, initialState, ctx) {
     return nearestGraph(basis, work.points.length, SAMPLES, Math.round(raw * (SAMPLES - 1)), y, py, PLOT_HOVER_PX);
   }
 
-  /** The highlighted basis function: plot hover, then table row, then the handle in hand, hovered or selected. */
-  function highlighted() {
-    if (plotHover >= 0) return plotHover;
-    if (rowHover >= 0) return rowHover;
-    if (handles.dragging >= 0) return handles.dragging;
-    if (handles.hovered >= 0) return handles.hovered;
-    return handles.selected;
-  }
 
   // ------------------------------------------------------------ side panel
   const tSlider = slider({
@@ -317,7 +280,7 @@ export function mount(container, initialState, ctx) {
       changed = true;
     }
     geometryDirty = tDirty = false;
-    const hi = highlighted();
+    const hi = plotPointer.highlighted(handles);
     if (changed || hi !== shownHighlight) {
       shownHighlight = hi;
       syncPanels(hi);
@@ -427,8 +390,9 @@ export function mount(container, initialState, ctx) {
     r.text(t("bernstein.axisT"), plot.x1 + (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "left", "middle");
 
     // The basis functions, from the core's table (highlighted one last, on top).
-    for (let i = 0; i <= n; i++) if (i !== hi) drawBasis(r, i, theme.basisStroke[i % cycle]);
-    if (hi >= 0) drawBasis(r, hi, theme.basisHover[hi % cycle]);
+    const sampleX = (k) => px(k / (SAMPLES - 1));
+    for (let i = 0; i <= n; i++) if (i !== hi) drawGraph(r, basis, i, SAMPLES, sampleX, py, theme.basisStroke[i % cycle]);
+    if (hi >= 0) drawGraph(r, basis, hi, SAMPLES, sampleX, py, theme.basisHover[hi % cycle]);
 
     // Names at the peaks (B_0 at the left end, B_n at the right end).
     if (n <= NAME_LABELS_MAX_DEGREE) {
@@ -462,19 +426,6 @@ export function mount(container, initialState, ctx) {
     for (let i = 0; i <= n; i++) r.point(mx, py(values[i]), theme.basisPoint[i % cycle]);
     const markerAlign = work.t < 0.1 ? "left" : work.t > 0.9 ? "right" : "center";
     r.text(markerLabel, mx, plot.y1 - 4 * r.scale, theme.labelPoint, markerAlign, "bottom");
-  }
-
-  /** One basis function's graph from the core's samples. */
-  function drawBasis(r, i, style) {
-    const offset = i * SAMPLES;
-    r.beginPath();
-    for (let k = 0; k < SAMPLES; k++) {
-      const x = px(k / (SAMPLES - 1));
-      const y = py(basis[offset + k]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-    r.paint(style);
   }
 
   /** Cached label strings, keyed by (n, i). */
@@ -611,8 +562,8 @@ export function mount(container, initialState, ctx) {
         el("td", { dataset: { cell: "value" } }, cells.value, cells.valueDecimal),
         el("td", { dataset: { cell: "mirror" } }, cells.mirror, cells.mirrorDecimal),
         el("td", { dataset: { cell: "peak" }, text: t("bernstein.peakCell", { t: tickLabel(n, i), value: peakValue ? fractionText(peakValue) : fmt(peakValues[i]) }) }));
-      const enter = () => setRowHover(i);
-      const leave = () => setRowHover(-1);
+      const enter = () => plotPointer.setRowHover(i);
+      const leave = () => plotPointer.setRowHover(-1);
       row.addEventListener("pointerenter", enter);
       row.addEventListener("pointerleave", leave);
       row.addEventListener("focus", enter);
@@ -630,12 +581,6 @@ export function mount(container, initialState, ctx) {
     table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
   }
 
-  function setRowHover(i) {
-    if (rowHover === i) return;
-    rowHover = i;
-    view.requestDraw();
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -649,8 +594,7 @@ export function mount(container, initialState, ctx) {
       work = structuredClone(state);
       handles.forgetPointer();
       if (handles.selected >= work.points.length) handles.select(-1);
-      plotHover = rowHover = -1;
-      draggingT = false;
+      plotPointer.reset();
       tSlider.set(work.t);
       geometryDirty = tDirty = true;
       view.requestDraw();

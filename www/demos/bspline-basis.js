@@ -28,6 +28,7 @@ import { t } from "../lib/strings.js";
 import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
 import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
 import { titledTable } from "../lib/table.js";
+import { BasisPlotPointer, drawGraph } from "../lib/basis-plot.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { buildOrReport } from "../lib/wasm.js";
 
@@ -140,8 +141,6 @@ export function mount(container, initialState, ctx) {
   let markerLabel = ""; // "u = 2.5", rebuilt when u changes
 
   // What is highlighted: a basis curve under the pointer in the plot, a table row, or a handle.
-  let plotHover = -1;
-  let rowHover = -1;
   let shownHighlight = -2; // the highlight the panels show (-2: not yet synced)
 
   // ------------------------------------------------------------ figure
@@ -150,39 +149,11 @@ export function mount(container, initialState, ctx) {
   ctx.slots.figure.style.aspectRatio = "1 / 1";
 
   // The plot claims its frame before the handles see the pointer: press or drag there to set u.
-  let draggingU = false;
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      if (!inPlot(x, y)) return false;
-      draggingU = true;
-      plotHover = basisAt(x, y);
-      setU(uAtPixel(x), false);
-      return true;
-    },
-    pointerMove(event, x) {
-      if (draggingU) setU(uAtPixel(x), false);
-    },
-    pointerUp(event, x) {
-      if (!draggingU) return;
-      draggingU = false;
-      setU(uAtPixel(x), true);
-    },
-    hover(x, y) {
-      const inside = inPlot(x, y);
-      const i = inside ? basisAt(x, y) : -1;
-      if (inside) handles.leave();
-      if (i !== plotHover) {
-        plotHover = i;
-        view.requestDraw();
-      }
-      return inside ? "col-resize" : null;
-    },
-    leave() {
-      if (plotHover >= 0) {
-        plotHover = -1;
-        view.requestDraw();
-      }
-    },
+  const plotPointer = new BasisPlotPointer(view, {
+    inPlot,
+    graphAt: basisAt,
+    pick: (x, final) => setU(uAtPixel(x), final),
+    enter: () => handles.leave(),
   });
 
   // The knot ruler, before the handles: its band is its own.
@@ -265,14 +236,6 @@ export function mount(container, initialState, ctx) {
     return nearestGraph(basis, work.points.length, SAMPLES, Math.round(raw * (SAMPLES - 1)), y, py, PLOT_HOVER_PX);
   }
 
-  /** The highlighted basis function: plot hover, then table row, then the handle in hand, hovered or selected. */
-  function highlighted() {
-    if (plotHover >= 0) return plotHover;
-    if (rowHover >= 0) return rowHover;
-    if (handles.dragging >= 0) return handles.dragging;
-    if (handles.hovered >= 0) return handles.hovered;
-    return handles.selected;
-  }
 
   // ------------------------------------------------------------ side panel
   const degreeRadios = radios({
@@ -460,7 +423,7 @@ export function mount(container, initialState, ctx) {
       changed = true;
     }
     knotsDirty = geometryDirty = uDirty = false;
-    const hi = highlighted();
+    const hi = plotPointer.highlighted(handles);
     if (changed || hi !== shownHighlight) {
       shownHighlight = hi;
       syncPanels(hi);
@@ -559,8 +522,9 @@ export function mount(container, initialState, ctx) {
     r.text(t("bsplineBasis.axisU"), plot.x1 + (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "left", "middle");
 
     // The basis functions, from the core's table (highlighted one last, on top).
-    for (let i = 0; i <= n; i++) if (i !== hi) drawBasis(r, i, theme.basisStroke[i % cycle]);
-    if (hi >= 0) drawBasis(r, hi, theme.basisHover[hi % cycle]);
+    const sampleX = (k) => ruler.px(sampleU(k));
+    for (let i = 0; i <= n; i++) if (i !== hi) drawGraph(r, basis, i, SAMPLES, sampleX, py, theme.basisStroke[i % cycle]);
+    if (hi >= 0) drawGraph(r, basis, hi, SAMPLES, sampleX, py, theme.basisHover[hi % cycle]);
 
     // Names at the peaks.
     if (n + 1 <= NAME_LABELS_MAX) {
@@ -591,19 +555,6 @@ export function mount(container, initialState, ctx) {
     r.lineTo(mx, ly + 5 * r.scale);
     r.paint(theme.marker);
     r.point(mx, ly, theme.pointOnCurve);
-  }
-
-  /** One basis function's graph from the core's samples. */
-  function drawBasis(r, i, style) {
-    const offset = i * SAMPLES;
-    r.beginPath();
-    for (let k = 0; k < SAMPLES; k++) {
-      const x = ruler.px(sampleU(k));
-      const y = py(basis[offset + k]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-    r.paint(style);
   }
 
   /** "N₃,₂" (cached per degree and index). */
@@ -727,8 +678,8 @@ export function mount(container, initialState, ctx) {
         el("th", { scope: "row" }, swatch, t("bsplineBasis.rowName", { name: basisName(p, i), point: `P${subscript(i)}` })),
         el("td", { dataset: { cell: "support" } }, cells.support),
         el("td", { dataset: { cell: "value" } }, cells.value, cells.exact));
-      const enter = () => setRowHover(i);
-      const leave = () => setRowHover(-1);
+      const enter = () => plotPointer.setRowHover(i);
+      const leave = () => plotPointer.setRowHover(-1);
       row.addEventListener("pointerenter", enter);
       row.addEventListener("pointerleave", leave);
       row.addEventListener("focus", enter);
@@ -770,12 +721,6 @@ export function mount(container, initialState, ctx) {
     triangleTable.replaceChildren(el("thead", {}, el("tr", {}, head)), el("tbody", {}, rows));
   }
 
-  function setRowHover(i) {
-    if (rowHover === i) return;
-    rowHover = i;
-    view.requestDraw();
-  }
-
   recompute();
 
   // ------------------------------------------------------------ contract
@@ -790,8 +735,7 @@ export function mount(container, initialState, ctx) {
       ruler.forgetPointer();
       if (handles.selected >= work.points.length) handles.select(-1);
       if (ruler.selected >= work.knots.length) ruler.select(-1);
-      plotHover = rowHover = -1;
-      draggingU = false;
+      plotPointer.reset();
       degreeRadios.set(String(work.degree));
       knotsDirty = geometryDirty = uDirty = true;
       view.requestDraw();

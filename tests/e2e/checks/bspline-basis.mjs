@@ -87,6 +87,14 @@ export default [
     label = await h.canvas().getAttribute("aria-label");
     assert(label.includes("knots [0, 0, 0, 1, 3, 3, 4, 4, 4]") && label.includes("3: C⁰"), `after the double click: ${label}`);
   }],
+  ["pressing the plot above knot u₃ = 1 sets u = 1 (snapped to the knot)", async (page, h, _base, { equal, settle }) => {
+    // The plot band lies right above the knot ruler, its u axis aligned with the ruler's.
+    const knot = (await knots(page, h))[3];
+    await page.mouse.click(knot.x + 3, knot.y - 70); // within the snapping distance of the knot
+    await settle(page);
+    equal(await page.locator('[data-control="u"] .sl-value').inputValue(), "1.000", "u box");
+    equal(await value(page, 1), "0.500", "N₁,₂(1) = u(4 − 3u)/2");
+  }],
   ["hovering a table row highlights the support", async (page, h, _base, { assert, settle }) => {
     await page.locator('[data-table="basis"] tr[data-index="2"]').hover();
     await settle(page);

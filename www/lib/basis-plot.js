@@ -1,0 +1,102 @@
+/**
+ * What the basis-function demos (Bernstein basis, B-spline basis) share about the plot of the
+ * basis functions under their curve: the pointer in the plot (press or drag sets the parameter,
+ * hover highlights the graph under it), which function is highlighted (the plot's hover, then a
+ * table row's, then the handle in hand, hovered or selected) and one graph drawn from the
+ * core's i-major samples. The plot's layout stays with each demo (Bernstein's runs over
+ * t ∈ [0, 1], the B-spline's over the knot ruler's domain).
+ */
+
+/** The pointer in a basis plot and the highlight it and the legend table set. */
+export class BasisPlotPointer {
+  /**
+   * Registers the plot's interactor on `view`; create it before the handles, so the plot claims
+   * a press inside its frame first.
+   * @param {object} view the figure
+   * @param {{ inPlot(x, y): boolean, graphAt(x, y): number, pick(x, final): void,
+   *   press?(): void, enter?(): void }} options `graphAt` is the function whose graph passes
+   *   near (x, y) or -1; `pick(x, final)` sets the parameter under x; `press()` runs before a
+   *   press in the plot (stop a player), `enter()` when the pointer hovers the plot (the handles
+   *   forget their hover).
+   */
+  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {} }) {
+    this.view = view;
+    /** The function under the pointer in the plot, or -1. */
+    this.plotHover = -1;
+    /** The function of the hovered legend row, or -1. */
+    this.rowHover = -1;
+    this.dragging = false;
+    view.addInteractor({
+      pointerDown: (event, x, y) => {
+        if (!inPlot(x, y)) return false;
+        press();
+        this.dragging = true;
+        this.plotHover = graphAt(x, y);
+        pick(x, false);
+        return true;
+      },
+      pointerMove: (event, x) => {
+        if (this.dragging) pick(x, false);
+      },
+      pointerUp: (event, x) => {
+        if (!this.dragging) return;
+        this.dragging = false;
+        pick(x, true);
+      },
+      hover: (x, y) => {
+        const inside = inPlot(x, y);
+        const i = inside ? graphAt(x, y) : -1;
+        if (inside) enter();
+        if (i !== this.plotHover) {
+          this.plotHover = i;
+          view.requestDraw();
+        }
+        return inside ? "col-resize" : null;
+      },
+      leave: () => {
+        if (this.plotHover >= 0) {
+          this.plotHover = -1;
+          view.requestDraw();
+        }
+      },
+    });
+  }
+
+  /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */
+  highlighted(handles) {
+    if (this.plotHover >= 0) return this.plotHover;
+    if (this.rowHover >= 0) return this.rowHover;
+    if (handles.dragging >= 0) return handles.dragging;
+    if (handles.hovered >= 0) return handles.hovered;
+    return handles.selected;
+  }
+
+  /** Highlights function i from its legend row (-1 when the pointer leaves the row). */
+  setRowHover(i) {
+    if (this.rowHover === i) return;
+    this.rowHover = i;
+    this.view.requestDraw();
+  }
+
+  /** Forgets the hover and any press in progress (a new state arrived from outside). */
+  reset() {
+    this.plotHover = this.rowHover = -1;
+    this.dragging = false;
+  }
+}
+
+/**
+ * Paths and paints graph `i` of i-major samples `values` (`count` per function): sample k at
+ * canvas (`x(k)`, `y(values[i·count + k])`).
+ */
+export function drawGraph(r, values, i, count, x, y, style) {
+  const offset = i * count;
+  r.beginPath();
+  for (let k = 0; k < count; k++) {
+    const px = x(k);
+    const py = y(values[offset + k]);
+    if (k === 0) r.moveTo(px, py);
+    else r.lineTo(px, py);
+  }
+  r.paint(style);
+}
