@@ -113,6 +113,13 @@ pub enum Error {
         /// The cap.
         max: usize,
     },
+    /// A required argument from JavaScript is `null` or `undefined`.
+    MissingArgument {
+        /// The argument's name ("points", "knots").
+        name: &'static str,
+        /// What it must be ("an array of numbers").
+        expected: &'static str,
+    },
     /// A count, index, degree, order or dimension given from JavaScript is not a whole number
     /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument).
     NotWholeNumber {
@@ -211,6 +218,9 @@ impl fmt::Display for Error {
             Error::Mismatch { message } => f.write_str(message),
             Error::TooLarge { what, value, max } => {
                 write!(f, "{what} = {value} is too large; at most {max} is allowed")
+            }
+            Error::MissingArgument { name, expected } => {
+                write!(f, "{name} is missing (null or undefined); it must be {expected}")
             }
             Error::NotWholeNumber { what, value } => write!(
                 f,

@@ -17,43 +17,55 @@ fn message<T>(r: Result<T, JsError>) -> String {
     }
 }
 
+/// An array argument as the API takes it (`Option`, so that JS `null` gets a clear error).
+fn arr(values: &[f64]) -> Option<Vec<f64>> {
+    Some(values.to_vec())
+}
+
 fn example() -> JsBezierCurve {
-    JsBezierCurve::new(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2.0, None).unwrap()
+    JsBezierCurve::new(arr(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0]), 2.0, None).unwrap()
 }
 
 #[test]
 fn constructor_errors_name_the_bad_value() {
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0, 0.0], 2.0, None)),
+        message(JsBezierCurve::new(arr(&[0.0, 0.0]), 2.0, None)),
         "a Bézier curve needs at least 2 control points, got 1"
     );
-    assert!(message(JsBezierCurve::new(&[0.0, 0.0, 1.0], 2.0, None)).contains("coordinate count 3"));
+    assert!(
+        message(JsBezierCurve::new(arr(&[0.0, 0.0, 1.0]), 2.0, None))
+            .contains("coordinate count 3")
+    );
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0; 8], 4.0, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 4.0, None)),
         "dim must be 2 or 3, got 4"
     );
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0; 8], 1.0, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 1.0, None)),
         "dim must be 2 or 3, got 1"
     );
-    assert!(
-        message(JsBezierCurve::new(&[0.0, f64::NAN, 1.0, 1.0], 2.0, None))
-            .contains("coordinate 1 is NaN")
-    );
     assert!(message(JsBezierCurve::new(
-        &[0.0, 0.0, 1.0, 1.0],
+        arr(&[0.0, f64::NAN, 1.0, 1.0]),
+        2.0,
+        None
+    ))
+    .contains("coordinate 1 is NaN"));
+    assert!(message(JsBezierCurve::new(
+        arr(&[0.0, 0.0, 1.0, 1.0]),
         2.0,
         Some(vec![1.0, 0.0])
     ))
     .contains("weight 1 is 0"));
     assert!(message(JsBezierCurve::new(
-        &[0.0, 0.0, 1.0, 1.0],
+        arr(&[0.0, 0.0, 1.0, 1.0]),
         2.0,
         Some(vec![1.0])
     ))
     .contains("got 1"));
     // dim is checked before the coordinate count (the documented validation order).
-    assert!(message(JsBezierCurve::new(&[0.0; 5], 5.0, None)).starts_with("dim must be 2 or 3"));
+    assert!(
+        message(JsBezierCurve::new(arr(&[0.0; 5]), 5.0, None)).starts_with("dim must be 2 or 3")
+    );
 }
 
 #[test]
@@ -76,11 +88,11 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
     // wasm-bindgen's usize would have made these 2, 4294967295, 0 and 0 without a word.
     let mut c = example();
     assert_eq!(
-        message(JsBezierCurve::new(&[0.0; 8], 2.5, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 2.5, None)),
         "dim must be a whole number from 0 to 4294967295, got 2.5"
     );
     assert_eq!(
-        message(c.set_control_point(-1.0, &[1.0, 1.0])),
+        message(c.set_control_point(-1.0, arr(&[1.0, 1.0]))),
         "i must be a whole number from 0 to 4294967295, got -1"
     );
     assert!(message(c.sample_uniform(f64::NAN)).contains("count must be a whole number"));
@@ -88,18 +100,50 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
     assert!(message(c.sample_uniform_view(f64::INFINITY)).contains("got Infinity"));
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0];
     assert!(message(splinelab::wasm::JsCompositeBezier::new(
-        &pts,
+        arr(&pts),
         2.0,
-        &[1.0, 1.5],
+        arr(&[1.0, 1.5]),
         None
     ))
     .contains("degree 1 must be a whole number"));
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
-    let b = splinelab::wasm::JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
+    let b = splinelab::wasm::JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
     assert!(message(b.insert_knot(1.0, Some(0.5))).contains("times must be a whole number"));
     // Whole numbers pass, −0 included.
     assert_eq!(c.sample_uniform(-0.0).unwrap().len(), 0);
     assert_eq!(c.derivative(0.5, 1.0).unwrap().len(), 2);
+}
+
+#[test]
+fn missing_arrays_and_strings_are_named() {
+    // JS null or undefined arrive as None: a clear Error instead of a TypeError in the glue.
+    assert_eq!(
+        message(JsBezierCurve::new(None, 2.0, None)),
+        "points is missing (null or undefined); it must be an array of numbers (Float64Array or number[])"
+    );
+    let mut c = example();
+    assert!(message(c.sample(None)).starts_with("ts is missing"));
+    assert!(message(c.set_control_point(0.0, None)).starts_with("point is missing"));
+    let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0];
+    assert!(message(splinelab::wasm::JsBSplineCurve::new(
+        arr(&pts),
+        2.0,
+        2.0,
+        None,
+        None
+    ))
+    .starts_with("knots is missing"));
+    assert_eq!(
+        message(splinelab::wasm::bspline::knot_vector(
+            arr(&pts),
+            2.0,
+            2.0,
+            None
+        )),
+        "kind is missing (null or undefined); it must be a string"
+    );
+    // The curve is unharmed.
+    assert_eq!(c.sample(arr(&[1.0])).unwrap(), vec![8.0, 2.0]);
 }
 
 #[test]
@@ -110,25 +154,31 @@ fn method_errors_are_thrown_not_trapped() {
         "t = 1.5 is outside the domain [0, 1]"
     );
     assert!(message(c.derivative(f64::INFINITY, 1.0)).contains("t is Infinity"));
-    assert!(message(c.set_control_point(7.0, &[1.0, 1.0])).contains("index 7 is out of range"));
+    assert!(message(c.set_control_point(7.0, arr(&[1.0, 1.0]))).contains("index 7 is out of range"));
     assert_eq!(
-        message(c.set_control_point(0.0, &[1.0, 1.0, 1.0])),
+        message(c.set_control_point(0.0, arr(&[1.0, 1.0, 1.0]))),
         "a point needs 2 coordinates, got 3"
     );
     assert!(message(c.set_weight(0.0, 0.0)).contains("weight 0 is 0"));
-    assert!(message(c.sample(&[0.0, 2.0])).contains("t = 2"));
+    assert!(message(c.sample(arr(&[0.0, 2.0]))).contains("t = 2"));
     assert!(message(c.sample_uniform(f64::from(u32::MAX))).contains("too large"));
     assert!(message(c.flatten(-1.0)).contains("tolerance -1"));
     assert!(message(c.split(-0.5)).contains("t = -0.5"));
     assert!(message(wasm::bezier::bernstein(3.0, 4.0, 0.5)).contains("index 4"));
     assert!(message(wasm::bezier::bernstein(3.0, 1.0, 1.5)).contains("t = 1.5"));
-    let c3 = JsBezierCurve::new(&[0.0; 6], 3.0, None).unwrap();
+    let c3 = JsBezierCurve::new(arr(&[0.0; 6]), 3.0, None).unwrap();
     assert!(message(c3.intersect_line(0.0, 0.0, 1.0, 0.0, 1e-9)).contains("2D curves"));
-    assert!(message(wasm::bezier::join_bezier(&example(), &c3, "C1", None)).contains("same dim"));
+    assert!(message(wasm::bezier::join_bezier(
+        &example(),
+        &c3,
+        Some("C1".into()),
+        None
+    ))
+    .contains("same dim"));
     assert!(message(wasm::bezier::join_bezier(
         &example(),
         &example(),
-        "C9",
+        Some("C9".into()),
         None
     ))
     .contains("\"C9\""));
@@ -163,21 +213,30 @@ fn flat_layouts() {
 fn composite_checks_its_layout() {
     use splinelab::wasm::JsCompositeBezier;
     let pts = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0, 0.0, 3.0, -1.0, 4.0, 0.0];
-    let c = JsCompositeBezier::new(&pts, 2.0, &[2.0, 2.0], None).unwrap();
+    let c = JsCompositeBezier::new(arr(&pts), 2.0, arr(&[2.0, 2.0]), None).unwrap();
     assert_eq!(c.domain(), vec![0.0, 2.0]);
     assert_eq!(c.evaluate(2.0).unwrap(), vec![4.0, 0.0]);
-    assert!(
-        message(JsCompositeBezier::new(&pts, 2.0, &[2.0, 3.0], None))
-            .contains("need 7 control points")
-    );
     assert!(message(JsCompositeBezier::new(
-        &pts,
+        arr(&pts),
         2.0,
-        &[2.0, 2.0],
+        arr(&[2.0, 3.0]),
+        None
+    ))
+    .contains("need 7 control points"));
+    assert!(message(JsCompositeBezier::new(
+        arr(&pts),
+        2.0,
+        arr(&[2.0, 2.0]),
         Some(vec![0.0, 1.0])
     ))
     .contains("3 breakpoints"));
-    assert!(message(JsCompositeBezier::new(&pts, 2.0, &[0.0, 5.0], None)).contains("degree >= 1"));
+    assert!(message(JsCompositeBezier::new(
+        arr(&pts),
+        2.0,
+        arr(&[0.0, 5.0]),
+        None
+    ))
+    .contains("degree >= 1"));
     assert!(message(c.piece(2.0)).contains("index 2"));
 }
 
@@ -186,7 +245,7 @@ fn bspline_boundary() {
     use splinelab::wasm::{bspline as b, JsBSplineCurve};
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let c = JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
+    let c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
     assert_eq!(c.domain(), vec![0.0, 4.0]);
     assert_eq!(c.de_boor(1.5).unwrap().len(), 6 * 2);
     assert_eq!(c.basis(1.5).unwrap().len(), 6);
@@ -197,23 +256,39 @@ fn bspline_boundary() {
         vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]
     );
     assert_eq!(
-        message(JsBSplineCurve::new(&pts, 4.0, 2.0, &knots, None)),
+        message(JsBSplineCurve::new(arr(&pts), 4.0, 2.0, arr(&knots), None)),
         "dim must be 2 or 3, got 4"
     );
-    assert!(message(JsBSplineCurve::new(&pts, 2.0, 2.0, &knots[..8], None)).contains("n+p+2"));
-    assert!(message(JsBSplineCurve::new(&pts, 2.0, 0.0, &knots, None))
-        .contains("degree must be at least 1"));
-    assert!(message(JsBSplineCurve::new(&pts, 2.0, 6.0, &knots, None))
-        .contains("degree 6 needs at least"));
+    assert!(message(JsBSplineCurve::new(
+        arr(&pts),
+        2.0,
+        2.0,
+        arr(&knots[..8]),
+        None
+    ))
+    .contains("n+p+2"));
+    assert!(
+        message(JsBSplineCurve::new(arr(&pts), 2.0, 0.0, arr(&knots), None))
+            .contains("degree must be at least 1")
+    );
+    assert!(
+        message(JsBSplineCurve::new(arr(&pts), 2.0, 6.0, arr(&knots), None))
+            .contains("degree 6 needs at least")
+    );
     assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
     assert!(message(c.insert_knot(0.0, Some(1.0))).contains("multiplicity 4"));
     assert!(message(c.segment_matrix(0.0, None)).contains("span 0"));
-    assert!(message(b::knot_vector(&pts, 2.0, 2.0, "open")).contains("\"open\""));
-    assert!(message(b::parameterize(&[0.0, 0.0, 0.0, 0.0], 2.0, "chord")).contains("coincide"));
-    assert!(message(b::phantom_points(&pts, 2.0, 2.0)).contains("even"));
+    assert!(message(b::knot_vector(arr(&pts), 2.0, 2.0, Some("open".into()))).contains("\"open\""));
+    assert!(message(b::parameterize(
+        arr(&[0.0, 0.0, 0.0, 0.0]),
+        2.0,
+        Some("chord".into())
+    ))
+    .contains("coincide"));
+    assert!(message(b::phantom_points(arr(&pts), 2.0, 2.0)).contains("even"));
     assert!(message(b::uniform_segment_matrix(0.0)).contains("degree must be"));
     assert_eq!(
-        b::knot_vector(&pts, 2.0, 2.0, "clamped").unwrap(),
+        b::knot_vector(arr(&pts), 2.0, 2.0, Some("clamped".into())).unwrap(),
         vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]
     );
 }
@@ -229,31 +304,41 @@ fn rational_constructors_and_projective_maps() {
     assert!(message(r::circular_arc(0.0, 0.0, 1.0, 0.0, 0.0)).contains("sweep"));
     assert!(message(r::ellipse(0.0, 0.0, 1.0, f64::NAN, None)).contains("ry is NaN"));
     assert!(message(r::ellipse_arc(
-        &[0.0, 0.0],
-        &[1.0, 0.0, 0.0],
-        &[0.0, 1.0],
+        arr(&[0.0, 0.0]),
+        arr(&[1.0, 0.0, 0.0]),
+        arr(&[0.0, 1.0]),
         0.0,
         1.0
     ))
     .contains("same length"));
     assert_eq!(
-        r::ellipse_arc(&[0.0; 3], &[1.0, 0.0, 0.0], &[0.0, 0.0, 1.0], 0.0, 1.0)
-            .unwrap()
-            .dim(),
+        r::ellipse_arc(
+            arr(&[0.0; 3]),
+            arr(&[1.0, 0.0, 0.0]),
+            arr(&[0.0, 0.0, 1.0]),
+            0.0,
+            1.0
+        )
+        .unwrap()
+        .dim(),
         3
     );
-    assert!(message(r::circular_arc_bezier(&[0.0, 0.0, 1.0, 1.0, 3.0, 0.0])).contains("isosceles"));
-    assert!(message(r::circular_arc_bezier(&[0.0, 0.0, 1.0, 1.0])).contains("3 control points"));
+    assert!(
+        message(r::circular_arc_bezier(arr(&[0.0, 0.0, 1.0, 1.0, 3.0, 0.0]))).contains("isosceles")
+    );
+    assert!(
+        message(r::circular_arc_bezier(arr(&[0.0, 0.0, 1.0, 1.0]))).contains("3 control points")
+    );
     assert_eq!(r::conic_kind(1.0, 2.0, 1.0).unwrap(), "hyperbola");
     assert!(message(r::conic_kind(1.0, -2.0, 1.0)).contains("weight 1 is -2"));
-    let bez = JsBezierCurve::new(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2.0, None).unwrap();
-    assert!(message(bez.projective_map(&[1.0; 8])).contains("9 numbers"));
+    let bez = JsBezierCurve::new(arr(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0]), 2.0, None).unwrap();
+    assert!(message(bez.projective_map(arr(&[1.0; 8]))).contains("9 numbers"));
     assert!(
-        message(bez.projective_map(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0]))
+        message(bez.projective_map(arr(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0])))
             .contains("singular")
     );
     let shifted = bez
-        .projective_map(&[1.0, 0.0, 5.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+        .projective_map(arr(&[1.0, 0.0, 5.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]))
         .unwrap();
     assert_eq!(
         shifted.evaluate(0.5).unwrap(),
@@ -261,7 +346,7 @@ fn rational_constructors_and_projective_maps() {
         "row-major: translation in the last column"
     );
     assert!(
-        message(c.projective_map(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.5]))
+        message(c.projective_map(arr(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.5])))
             .contains("weights must stay > 0")
     );
 }
@@ -277,8 +362,11 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
     let memory = wasm_bindgen::memory().unchecked_into::<js_sys::WebAssembly::Memory>();
     assert_eq!(JsValue::from(view.buffer()), memory.buffer());
     // Bernstein form at t = 1/2 of (0,0) (2,2) (6,4) (8,2): (0 + 3·2 + 3·6 + 8)/8, (0 + 6 + 12 + 2)/8.
-    assert_eq!(bezier.sample_view(&[0.5]).unwrap().to_vec(), vec![4.0, 2.5]);
-    assert!(message(bezier.sample_view(&[1.5])).contains("1.5"));
+    assert_eq!(
+        bezier.sample_view(arr(&[0.5])).unwrap().to_vec(),
+        vec![4.0, 2.5]
+    );
+    assert!(message(bezier.sample_view(arr(&[1.5]))).contains("1.5"));
     assert!(message(bezier.sample_uniform_view(f64::from(u32::MAX))).contains("count"));
     // A failed call leaves the curve usable.
     assert_eq!(
@@ -288,12 +376,15 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
 
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let mut c = JsBSplineCurve::new(&pts, 2.0, 2.0, &knots, None).unwrap();
+    let mut c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
     let us: Vec<f64> = (0..=40).map(|k| k as f64 / 10.0).collect();
-    assert_eq!(c.sample_view(&us).unwrap().to_vec(), c.sample(&us).unwrap());
+    assert_eq!(
+        c.sample_view(arr(&us)).unwrap().to_vec(),
+        c.sample(arr(&us)).unwrap()
+    );
     assert_eq!(
         c.sample_uniform_view(41.0).unwrap().to_vec(),
         c.sample_uniform(41.0).unwrap()
     );
-    assert!(message(c.sample_view(&[5.0])).contains("outside the domain [0, 4]"));
+    assert!(message(c.sample_view(arr(&[5.0]))).contains("outside the domain [0, 4]"));
 }

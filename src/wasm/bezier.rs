@@ -1,6 +1,6 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
-use super::whole;
+use super::{required, whole, NUMBERS, STRING};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -79,10 +79,12 @@ impl JsBezierCurve {
     /// `dim` 2 or 3, optional weights (> 0, one per point) for a rational curve, on t ∈ [0, 1].
     #[wasm_bindgen(constructor)]
     pub fn new(
-        points: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
         dim: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
+        let points = required("points", points, NUMBERS)?;
+        let points = points.as_slice();
         let dim = whole("dim", dim)?;
         Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
     }
@@ -90,12 +92,14 @@ impl JsBezierCurve {
     /// `BezierCurve.withInterval(points, dim, a, b, weights?)`: the curve on t ∈ [a, b].
     #[wasm_bindgen(js_name = withInterval)]
     pub fn with_interval(
-        points: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
         dim: f64,
         a: f64,
         b: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
+        let points = required("points", points, NUMBERS)?;
+        let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let curve = build(points, dim, weights.as_deref())?;
         let inner = match curve {
@@ -109,11 +113,15 @@ impl JsBezierCurve {
     /// `Σ c_k t^k`; `coefficients` holds `c_0, c_1, …` as flat points of `dim` coordinates.
     #[wasm_bindgen(js_name = fromPolynomial)]
     pub fn from_polynomial(
-        coefficients: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] coefficients: Option<
+            Vec<f64>,
+        >,
         dim: f64,
         a: f64,
         b: f64,
     ) -> Result<JsBezierCurve, JsError> {
+        let coefficients = required("coefficients", coefficients, NUMBERS)?;
+        let coefficients = coefficients.as_slice();
         let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
             2 => Curve::D2(bezier::from_polynomial(
@@ -167,7 +175,12 @@ impl JsBezierCurve {
     }
 
     /// Points at every t of `ts`, flat (ts.length·dim numbers), in one pass.
-    pub fn sample(&self, ts: &[f64]) -> Result<Vec<f64>, JsError> {
+    pub fn sample(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+    ) -> Result<Vec<f64>, JsError> {
+        let ts = required("ts", ts, NUMBERS)?;
+        let ts = ts.as_slice();
         super::sample(&self.inner, ts)
     }
 
@@ -191,7 +204,12 @@ impl JsBezierCurve {
 
     /// `sample(ts)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
-    pub fn sample_view(&mut self, ts: &[f64]) -> Result<Float64Array, JsError> {
+    pub fn sample_view(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+    ) -> Result<Float64Array, JsError> {
+        let ts = required("ts", ts, NUMBERS)?;
+        let ts = ts.as_slice();
         super::sample_view(&self.inner, &mut self.view, ts)
     }
 
@@ -268,7 +286,13 @@ impl JsBezierCurve {
 
     /// Moves control point i in place (the drag path); `point` has dim numbers.
     #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(&mut self, i: f64, point: &[f64]) -> Result<(), JsError> {
+    pub fn set_control_point(
+        &mut self,
+        i: f64,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
+    ) -> Result<(), JsError> {
+        let point = required("point", point, NUMBERS)?;
+        let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
         Ok(())
@@ -440,11 +464,13 @@ fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
 /// ≤ 3 use singularity-aware Gauss–Legendre (relative error ≤ 1e-13), straight from the numbers.
 #[wasm_bindgen(js_name = arcLengths)]
 pub fn arc_lengths(
-    points: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
     dim: f64,
     degree: f64,
     accuracy: Option<f64>,
 ) -> Result<Vec<f64>, JsError> {
+    let points = required("points", points, NUMBERS)?;
+    let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {
@@ -531,9 +557,11 @@ pub fn joint_continuity(
 pub fn join_bezier(
     left: &JsBezierCurve,
     right: &JsBezierCurve,
-    rule: &str,
+    #[wasm_bindgen(unchecked_param_type = "string")] rule: Option<String>,
     adjust: Option<String>,
 ) -> Result<Vec<JsBezierCurve>, JsError> {
+    let rule = required("rule", rule, STRING)?;
+    let rule = rule.as_str();
     let rule = JoinRule::parse(rule)?;
     let adjust_right = match adjust.as_deref().unwrap_or("right") {
         "right" => true,
@@ -628,11 +656,15 @@ impl JsCompositeBezier {
     /// See the class documentation.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        points: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
         dim: f64,
-        degrees: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] degrees: Option<Vec<f64>>,
         breaks: Option<Vec<f64>>,
     ) -> Result<JsCompositeBezier, JsError> {
+        let points = required("points", points, NUMBERS)?;
+        let points = points.as_slice();
+        let degrees = required("degrees", degrees, NUMBERS)?;
+        let degrees = degrees.as_slice();
         let dim = whole("dim", dim)?;
         let degrees = degrees
             .iter()
@@ -692,7 +724,12 @@ impl JsCompositeBezier {
     }
 
     /// Points at every t of `ts`, flat.
-    pub fn sample(&self, ts: &[f64]) -> Result<Vec<f64>, JsError> {
+    pub fn sample(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+    ) -> Result<Vec<f64>, JsError> {
+        let ts = required("ts", ts, NUMBERS)?;
+        let ts = ts.as_slice();
         Ok(with_composite!(&self.inner, c => {
             let mut out = Vec::with_capacity(ts.len().saturating_mul(3));
             for &t in ts {

@@ -1,7 +1,7 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
-use super::whole;
+use super::{required, whole, NUMBERS, STRING};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -65,12 +65,16 @@ impl JsBSplineCurve {
     /// non-decreasing knots, optional weights (> 0) for a NURBS.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        points: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
         dim: f64,
         degree: f64,
-        knots: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] knots: Option<Vec<f64>>,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
+        let points = required("points", points, NUMBERS)?;
+        let points = points.as_slice();
+        let knots = required("knots", knots, NUMBERS)?;
+        let knots = knots.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
         let w = weights.as_deref();
@@ -84,11 +88,13 @@ impl JsBSplineCurve {
     /// `BSplineCurve.closed(points, dim, degree, weights?)`: a closed curve through the cycle of
     /// points (the first p repeated at the end, uniform knots), joined with C^(p−1).
     pub fn closed(
-        points: &[f64],
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
         dim: f64,
         degree: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
+        let points = required("points", points, NUMBERS)?;
+        let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
         let w = weights.as_deref();
@@ -173,14 +179,25 @@ impl JsBSplineCurve {
     }
 
     /// Points at every u of `us`, flat, walking the spans once for sorted input.
-    pub fn sample(&self, us: &[f64]) -> Result<Vec<f64>, JsError> {
+    pub fn sample(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+    ) -> Result<Vec<f64>, JsError> {
+        let us = required("us", us, NUMBERS)?;
+        let us = us.as_slice();
         super::sample(&self.inner, us)
     }
 
     /// The derivative of the given order at every u of `us`, flat (us.length·dim numbers), in
     /// one pass: the batched form of `derivative(u, order)`.
     #[wasm_bindgen(js_name = sampleDerivatives)]
-    pub fn sample_derivatives(&self, us: &[f64], order: f64) -> Result<Vec<f64>, JsError> {
+    pub fn sample_derivatives(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+        order: f64,
+    ) -> Result<Vec<f64>, JsError> {
+        let us = required("us", us, NUMBERS)?;
+        let us = us.as_slice();
         let order = whole("order", order)?;
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
@@ -207,7 +224,12 @@ impl JsBSplineCurve {
 
     /// `sample(us)` into this curve's view buffer (see `sampleUniformView`).
     #[wasm_bindgen(js_name = sampleView)]
-    pub fn sample_view(&mut self, us: &[f64]) -> Result<Float64Array, JsError> {
+    pub fn sample_view(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+    ) -> Result<Float64Array, JsError> {
+        let us = required("us", us, NUMBERS)?;
+        let us = us.as_slice();
         super::sample_view(&self.inner, &mut self.view, us)
     }
 
@@ -267,7 +289,12 @@ impl JsBSplineCurve {
     }
 
     /// A new curve with every knot of `us` inserted (knot refinement).
-    pub fn refine(&self, us: &[f64]) -> Result<JsBSplineCurve, JsError> {
+    pub fn refine(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+    ) -> Result<JsBSplineCurve, JsError> {
+        let us = required("us", us, NUMBERS)?;
+        let us = us.as_slice();
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.refine(us)?),
         ))
@@ -316,7 +343,13 @@ impl JsBSplineCurve {
 
     /// Moves control point i in place (a closed curve's repeated copy follows).
     #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(&mut self, i: f64, point: &[f64]) -> Result<(), JsError> {
+    pub fn set_control_point(
+        &mut self,
+        i: f64,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
+    ) -> Result<(), JsError> {
+        let point = required("point", point, NUMBERS)?;
+        let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
         Ok(())
@@ -376,7 +409,16 @@ fn flat_points<C: Cartesian>(points: &[f64]) -> Result<Vec<C>, Error> {
 /// `knotVector(points, dim, degree, kind)`: kind "uniform" | "clamped" | "chord" | "centripetal"
 /// (the Greek notes' formulas in our convention, n + p + 2 knots).
 #[wasm_bindgen(js_name = knotVector)]
-pub fn knot_vector(points: &[f64], dim: f64, degree: f64, kind: &str) -> Result<Vec<f64>, JsError> {
+pub fn knot_vector(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    dim: f64,
+    degree: f64,
+    #[wasm_bindgen(unchecked_param_type = "string")] kind: Option<String>,
+) -> Result<Vec<f64>, JsError> {
+    let points = required("points", points, NUMBERS)?;
+    let points = points.as_slice();
+    let kind = required("kind", kind, STRING)?;
+    let kind = kind.as_str();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     let kind = KnotKind::parse(kind)?;
@@ -389,7 +431,15 @@ pub fn knot_vector(points: &[f64], dim: f64, degree: f64, kind: &str) -> Result<
 /// `parameterize(points, dim, kind)`: cumulative parameters from 0; kind "uniform" | "chord" |
 /// "centripetal".
 #[wasm_bindgen]
-pub fn parameterize(points: &[f64], dim: f64, kind: &str) -> Result<Vec<f64>, JsError> {
+pub fn parameterize(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    dim: f64,
+    #[wasm_bindgen(unchecked_param_type = "string")] kind: Option<String>,
+) -> Result<Vec<f64>, JsError> {
+    let points = required("points", points, NUMBERS)?;
+    let points = points.as_slice();
+    let kind = required("kind", kind, STRING)?;
+    let kind = kind.as_str();
     let dim = whole("dim", dim)?;
     let kind = Parameterization::parse(kind)?;
     Ok(match check_dim(dim)? {
@@ -401,7 +451,13 @@ pub fn parameterize(points: &[f64], dim: f64, kind: &str) -> Result<Vec<f64>, Js
 /// `phantomPoints(points, dim, degree)`: the points with `(p − 1)/2` reflected phantom points at
 /// each end, so a uniform B-spline of odd degree p passes through the first and last point.
 #[wasm_bindgen(js_name = phantomPoints)]
-pub fn phantom_points(points: &[f64], dim: f64, degree: f64) -> Result<Vec<f64>, JsError> {
+pub fn phantom_points(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    dim: f64,
+    degree: f64,
+) -> Result<Vec<f64>, JsError> {
+    let points = required("points", points, NUMBERS)?;
+    let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {

@@ -115,6 +115,23 @@ pub(crate) fn sample_uniform_view(
     memory_view(buffer)
 }
 
+/// What an array argument must be, for [`required`].
+pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
+/// What a string argument must be, for [`required`].
+pub(crate) const STRING: &str = "a string";
+
+/// A required argument: the API takes arrays and strings as `Option`s so that `null` or
+/// `undefined` arrive here and get a message naming the argument (wasm-bindgen's glue for a
+/// plain `&[f64]` would fail on them with a `TypeError` that names none).
+#[inline(never)]
+pub(crate) fn required<T>(
+    name: &'static str,
+    value: Option<T>,
+    expected: &'static str,
+) -> Result<T, JsError> {
+    value.ok_or_else(|| Error::MissingArgument { name, expected }.into())
+}
+
 /// A whole number ≥ 0 from JavaScript: a count, index, degree, order or dimension. The API
 /// takes these as `f64` and converts them here, because wasm-bindgen's own conversion to
 /// `usize` (`>>> 0`) would silently turn 2.5 into 2, −1 into 4294967295 and NaN or a missing

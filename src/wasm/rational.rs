@@ -2,6 +2,7 @@
 
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
+use super::{required, NUMBERS};
 use crate::error::{Error, Num};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
@@ -65,12 +66,18 @@ pub fn ellipse(
 /// from start to start + sweep, in 2D or 3D (the length of `center`), as an exact NURBS.
 #[wasm_bindgen(js_name = ellipseArc)]
 pub fn ellipse_arc(
-    center: &[f64],
-    axis_x: &[f64],
-    axis_y: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] center: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_x: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_y: Option<Vec<f64>>,
     start: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
+    let center = required("center", center, NUMBERS)?;
+    let center = center.as_slice();
+    let axis_x = required("axisX", axis_x, NUMBERS)?;
+    let axis_x = axis_x.as_slice();
+    let axis_y = required("axisY", axis_y, NUMBERS)?;
+    let axis_y = axis_y.as_slice();
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
         return Err(Error::Mismatch {
             message: format!(
@@ -104,7 +111,11 @@ pub fn ellipse_arc(
 /// triangle `[x0, y0, x1, y1, x2, y2]` (`|P0P1| = |P1P2|`) with weights 1, sin θ, 1 (θ half the
 /// angle at P1): an exact circular arc.
 #[wasm_bindgen(js_name = circularArcBezier)]
-pub fn circular_arc_bezier(points: &[f64]) -> Result<JsBezierCurve, JsError> {
+pub fn circular_arc_bezier(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+) -> Result<JsBezierCurve, JsError> {
+    let points = required("points", points, NUMBERS)?;
+    let points = points.as_slice();
     let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
     match pts.as_slice() {
         [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
@@ -154,7 +165,12 @@ impl JsBezierCurve {
     /// `projectiveMap(matrix)`: the image under the projective map given as 9 numbers row by
     /// row, acting on homogeneous (x, y, 1) (2D curves); a rational curve with new weights.
     #[wasm_bindgen(js_name = projectiveMap)]
-    pub fn projective_map(&self, m: &[f64]) -> Result<JsBezierCurve, JsError> {
+    pub fn projective_map(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
+    ) -> Result<JsBezierCurve, JsError> {
+        let m = required("m", m, NUMBERS)?;
+        let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
             self.curve_2d("projectiveMap")?,
@@ -167,7 +183,12 @@ impl JsBezierCurve {
 impl JsBSplineCurve {
     /// `projectiveMap(matrix)`: as `BezierCurve.projectiveMap`, same knots.
     #[wasm_bindgen(js_name = projectiveMap)]
-    pub fn projective_map(&self, m: &[f64]) -> Result<JsBSplineCurve, JsError> {
+    pub fn projective_map(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
+    ) -> Result<JsBSplineCurve, JsError> {
+        let m = required("m", m, NUMBERS)?;
+        let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(
             self.curve_2d("projectiveMap")?,
