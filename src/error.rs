@@ -113,12 +113,15 @@ pub enum Error {
         /// The cap.
         max: usize,
     },
-    /// A required argument from JavaScript is `null` or `undefined`.
-    MissingArgument {
-        /// The argument's name ("points", "knots").
+    /// An argument from JavaScript has the wrong type: `null` or `undefined` for an array, a
+    /// number for a string.
+    ArgumentType {
+        /// The argument's name ("points", "kind").
         name: &'static str,
-        /// What it must be ("an array of numbers").
+        /// What it must be ("a string").
         expected: &'static str,
+        /// What it is ("null or undefined", "number").
+        got: String,
     },
     /// A count, index, degree, order or dimension given from JavaScript is not a whole number
     /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument).
@@ -219,9 +222,11 @@ impl fmt::Display for Error {
             Error::TooLarge { what, value, max } => {
                 write!(f, "{what} = {value} is too large; at most {max} is allowed")
             }
-            Error::MissingArgument { name, expected } => {
-                write!(f, "{name} is missing (null or undefined); it must be {expected}")
-            }
+            Error::ArgumentType {
+                name,
+                expected,
+                got,
+            } => write!(f, "{name} must be {expected}, got {got}"),
             Error::NotWholeNumber { what, value } => write!(
                 f,
                 "{what} must be a whole number from 0 to {}, got {}",

@@ -115,15 +115,16 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
 }
 
 #[test]
-fn missing_arrays_and_strings_are_named() {
-    // JS null or undefined arrive as None: a clear Error instead of a TypeError in the glue.
+fn missing_arrays_and_wrong_strings_are_named() {
+    // JS null or undefined arrays arrive as None, strings as any JsValue: a clear Error instead
+    // of a TypeError in the glue (or, for a number passed as a string, a read out of bounds).
     assert_eq!(
         message(JsBezierCurve::new(None, 2.0, None)),
-        "points is missing (null or undefined); it must be an array of numbers (Float64Array or number[])"
+        "points must be an array of numbers (Float64Array or number[]), got null or undefined"
     );
     let mut c = example();
-    assert!(message(c.sample(None)).starts_with("ts is missing"));
-    assert!(message(c.set_control_point(0.0, None)).starts_with("point is missing"));
+    assert!(message(c.sample(None)).starts_with("ts must be an array of numbers"));
+    assert!(message(c.set_control_point(0.0, None)).starts_with("point must be"));
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0];
     assert!(message(splinelab::wasm::JsBSplineCurve::new(
         arr(&pts),
@@ -132,16 +133,49 @@ fn missing_arrays_and_strings_are_named() {
         None,
         None
     ))
-    .starts_with("knots is missing"));
-    assert_eq!(
+    .starts_with("knots must be an array of numbers"));
+    let kind = |value: JsValue| {
         message(splinelab::wasm::bspline::knot_vector(
             arr(&pts),
             2.0,
             2.0,
-            None
-        )),
-        "kind is missing (null or undefined); it must be a string"
+            value,
+        ))
+    };
+    assert_eq!(kind(JsValue::NULL), "kind must be a string, got null");
+    assert_eq!(
+        kind(JsValue::UNDEFINED),
+        "kind must be a string, got undefined"
     );
+    assert_eq!(
+        kind(JsValue::from(1.5)),
+        "kind must be a string, got number"
+    );
+    assert_eq!(
+        kind(js_sys::Object::new().into()),
+        "kind must be a string, got object"
+    );
+    assert!(message(splinelab::wasm::bspline::parameterize(
+        arr(&pts),
+        2.0,
+        JsValue::from(7)
+    ))
+    .contains("got number"));
+    // An optional string: undefined takes the default, a number is refused.
+    let joined = wasm::bezier::join_bezier(
+        &example(),
+        &example(),
+        JsValue::from("C1"),
+        JsValue::UNDEFINED,
+    );
+    assert!(joined.is_ok());
+    assert!(message(wasm::bezier::join_bezier(
+        &example(),
+        &example(),
+        JsValue::from("C1"),
+        JsValue::from(2)
+    ))
+    .contains("adjust must be a string, got number"));
     // The curve is unharmed.
     assert_eq!(c.sample(arr(&[1.0])).unwrap(), vec![8.0, 2.0]);
 }
@@ -171,15 +205,15 @@ fn method_errors_are_thrown_not_trapped() {
     assert!(message(wasm::bezier::join_bezier(
         &example(),
         &c3,
-        Some("C1".into()),
-        None
+        JsValue::from("C1"),
+        JsValue::UNDEFINED
     ))
     .contains("same dim"));
     assert!(message(wasm::bezier::join_bezier(
         &example(),
         &example(),
-        Some("C9".into()),
-        None
+        JsValue::from("C9"),
+        JsValue::UNDEFINED
     ))
     .contains("\"C9\""));
     // After all that the curve still works.
@@ -278,17 +312,19 @@ fn bspline_boundary() {
     assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
     assert!(message(c.insert_knot(0.0, Some(1.0))).contains("multiplicity 4"));
     assert!(message(c.segment_matrix(0.0, None)).contains("span 0"));
-    assert!(message(b::knot_vector(arr(&pts), 2.0, 2.0, Some("open".into()))).contains("\"open\""));
+    assert!(
+        message(b::knot_vector(arr(&pts), 2.0, 2.0, JsValue::from("open"))).contains("\"open\"")
+    );
     assert!(message(b::parameterize(
         arr(&[0.0, 0.0, 0.0, 0.0]),
         2.0,
-        Some("chord".into())
+        JsValue::from("chord")
     ))
     .contains("coincide"));
     assert!(message(b::phantom_points(arr(&pts), 2.0, 2.0)).contains("even"));
     assert!(message(b::uniform_segment_matrix(0.0)).contains("degree must be"));
     assert_eq!(
-        b::knot_vector(arr(&pts), 2.0, 2.0, Some("clamped".into())).unwrap(),
+        b::knot_vector(arr(&pts), 2.0, 2.0, JsValue::from("clamped")).unwrap(),
         vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]
     );
 }

@@ -1,6 +1,6 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
-use super::{required, whole, NUMBERS, STRING};
+use super::{required, string_arg, whole};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -83,7 +83,7 @@ impl JsBezierCurve {
         dim: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
-        let points = required("points", points, NUMBERS)?;
+        let points = required("points", points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
@@ -98,7 +98,7 @@ impl JsBezierCurve {
         b: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
-        let points = required("points", points, NUMBERS)?;
+        let points = required("points", points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let curve = build(points, dim, weights.as_deref())?;
@@ -120,7 +120,7 @@ impl JsBezierCurve {
         a: f64,
         b: f64,
     ) -> Result<JsBezierCurve, JsError> {
-        let coefficients = required("coefficients", coefficients, NUMBERS)?;
+        let coefficients = required("coefficients", coefficients)?;
         let coefficients = coefficients.as_slice();
         let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
@@ -179,7 +179,7 @@ impl JsBezierCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = required("ts", ts, NUMBERS)?;
+        let ts = required("ts", ts)?;
         let ts = ts.as_slice();
         super::sample(&self.inner, ts)
     }
@@ -208,7 +208,7 @@ impl JsBezierCurve {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
     ) -> Result<Float64Array, JsError> {
-        let ts = required("ts", ts, NUMBERS)?;
+        let ts = required("ts", ts)?;
         let ts = ts.as_slice();
         super::sample_view(&self.inner, &mut self.view, ts)
     }
@@ -291,7 +291,7 @@ impl JsBezierCurve {
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
     ) -> Result<(), JsError> {
-        let point = required("point", point, NUMBERS)?;
+        let point = required("point", point)?;
         let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
@@ -469,7 +469,7 @@ pub fn arc_lengths(
     degree: f64,
     accuracy: Option<f64>,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points, NUMBERS)?;
+    let points = required("points", points)?;
     let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
@@ -557,13 +557,13 @@ pub fn joint_continuity(
 pub fn join_bezier(
     left: &JsBezierCurve,
     right: &JsBezierCurve,
-    #[wasm_bindgen(unchecked_param_type = "string")] rule: Option<String>,
-    adjust: Option<String>,
+    #[wasm_bindgen(unchecked_param_type = "string")] rule: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "string")] adjust: JsValue,
 ) -> Result<Vec<JsBezierCurve>, JsError> {
-    let rule = required("rule", rule, STRING)?;
+    let rule = string_arg("rule", &rule, None)?;
     let rule = rule.as_str();
     let rule = JoinRule::parse(rule)?;
-    let adjust_right = match adjust.as_deref().unwrap_or("right") {
+    let adjust_right = match string_arg("adjust", &adjust, Some("right"))?.as_str() {
         "right" => true,
         "left" => false,
         other => {
@@ -661,9 +661,9 @@ impl JsCompositeBezier {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] degrees: Option<Vec<f64>>,
         breaks: Option<Vec<f64>>,
     ) -> Result<JsCompositeBezier, JsError> {
-        let points = required("points", points, NUMBERS)?;
+        let points = required("points", points)?;
         let points = points.as_slice();
-        let degrees = required("degrees", degrees, NUMBERS)?;
+        let degrees = required("degrees", degrees)?;
         let degrees = degrees.as_slice();
         let dim = whole("dim", dim)?;
         let degrees = degrees
@@ -728,7 +728,7 @@ impl JsCompositeBezier {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = required("ts", ts, NUMBERS)?;
+        let ts = required("ts", ts)?;
         let ts = ts.as_slice();
         Ok(with_composite!(&self.inner, c => {
             let mut out = Vec::with_capacity(ts.len().saturating_mul(3));

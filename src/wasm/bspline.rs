@@ -1,7 +1,7 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
-use super::{required, whole, NUMBERS, STRING};
+use super::{required, string_arg, whole};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -71,9 +71,9 @@ impl JsBSplineCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] knots: Option<Vec<f64>>,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
-        let points = required("points", points, NUMBERS)?;
+        let points = required("points", points)?;
         let points = points.as_slice();
-        let knots = required("knots", knots, NUMBERS)?;
+        let knots = required("knots", knots)?;
         let knots = knots.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
@@ -93,7 +93,7 @@ impl JsBSplineCurve {
         degree: f64,
         weights: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
-        let points = required("points", points, NUMBERS)?;
+        let points = required("points", points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
@@ -183,7 +183,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
     ) -> Result<Vec<f64>, JsError> {
-        let us = required("us", us, NUMBERS)?;
+        let us = required("us", us)?;
         let us = us.as_slice();
         super::sample(&self.inner, us)
     }
@@ -196,7 +196,7 @@ impl JsBSplineCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
         order: f64,
     ) -> Result<Vec<f64>, JsError> {
-        let us = required("us", us, NUMBERS)?;
+        let us = required("us", us)?;
         let us = us.as_slice();
         let order = whole("order", order)?;
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
@@ -228,7 +228,7 @@ impl JsBSplineCurve {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
     ) -> Result<Float64Array, JsError> {
-        let us = required("us", us, NUMBERS)?;
+        let us = required("us", us)?;
         let us = us.as_slice();
         super::sample_view(&self.inner, &mut self.view, us)
     }
@@ -293,7 +293,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
-        let us = required("us", us, NUMBERS)?;
+        let us = required("us", us)?;
         let us = us.as_slice();
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.refine(us)?),
@@ -348,7 +348,7 @@ impl JsBSplineCurve {
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
     ) -> Result<(), JsError> {
-        let point = required("point", point, NUMBERS)?;
+        let point = required("point", point)?;
         let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
@@ -413,11 +413,11 @@ pub fn knot_vector(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
     dim: f64,
     degree: f64,
-    #[wasm_bindgen(unchecked_param_type = "string")] kind: Option<String>,
+    #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points, NUMBERS)?;
+    let points = required("points", points)?;
     let points = points.as_slice();
-    let kind = required("kind", kind, STRING)?;
+    let kind = string_arg("kind", &kind, None)?;
     let kind = kind.as_str();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
@@ -434,11 +434,11 @@ pub fn knot_vector(
 pub fn parameterize(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
     dim: f64,
-    #[wasm_bindgen(unchecked_param_type = "string")] kind: Option<String>,
+    #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points, NUMBERS)?;
+    let points = required("points", points)?;
     let points = points.as_slice();
-    let kind = required("kind", kind, STRING)?;
+    let kind = string_arg("kind", &kind, None)?;
     let kind = kind.as_str();
     let dim = whole("dim", dim)?;
     let kind = Parameterization::parse(kind)?;
@@ -456,7 +456,7 @@ pub fn phantom_points(
     dim: f64,
     degree: f64,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points, NUMBERS)?;
+    let points = required("points", points)?;
     let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;

@@ -117,19 +117,47 @@ pub(crate) fn sample_uniform_view(
 
 /// What an array argument must be, for [`required`].
 pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
-/// What a string argument must be, for [`required`].
-pub(crate) const STRING: &str = "a string";
 
-/// A required argument: the API takes arrays and strings as `Option`s so that `null` or
-/// `undefined` arrive here and get a message naming the argument (wasm-bindgen's glue for a
-/// plain `&[f64]` would fail on them with a `TypeError` that names none).
+/// A required array argument: the API takes arrays as `Option`s so that `null` or `undefined`
+/// arrive here and get a message naming the argument (wasm-bindgen's glue for a plain
+/// `&[f64]` would fail on them with a `TypeError` that names none).
 #[inline(never)]
-pub(crate) fn required<T>(
+pub(crate) fn required(name: &'static str, value: Option<Vec<f64>>) -> Result<Vec<f64>, JsError> {
+    value.ok_or_else(|| {
+        Error::ArgumentType {
+            name,
+            expected: NUMBERS,
+            got: "null or undefined".into(),
+        }
+        .into()
+    })
+}
+
+/// A string argument, taken as a `JsValue`: wasm-bindgen's glue for a `&str` fails on a
+/// non-string with a `TypeError` naming nothing, and on some (a number, `{}`) it even reads
+/// out of bounds of the wasm memory. `null` or `undefined` give `default` when there is one.
+#[inline(never)]
+pub(crate) fn string_arg(
     name: &'static str,
-    value: Option<T>,
-    expected: &'static str,
-) -> Result<T, JsError> {
-    value.ok_or_else(|| Error::MissingArgument { name, expected }.into())
+    value: &JsValue,
+    default: Option<&'static str>,
+) -> Result<String, JsError> {
+    if let Some(s) = value.as_string() {
+        return Ok(s);
+    }
+    match default {
+        Some(d) if value.is_undefined() || value.is_null() => Ok(d.into()),
+        _ => Err(Error::ArgumentType {
+            name,
+            expected: "a string",
+            got: if value.is_null() {
+                "null".into()
+            } else {
+                value.js_typeof().as_string().unwrap_or_default()
+            },
+        }
+        .into()),
+    }
 }
 
 /// A whole number ≥ 0 from JavaScript: a count, index, degree, order or dimension. The API

@@ -2,7 +2,7 @@
 
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
-use super::{required, NUMBERS};
+use super::required;
 use crate::error::{Error, Num};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
@@ -72,11 +72,11 @@ pub fn ellipse_arc(
     start: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
-    let center = required("center", center, NUMBERS)?;
+    let center = required("center", center)?;
     let center = center.as_slice();
-    let axis_x = required("axisX", axis_x, NUMBERS)?;
+    let axis_x = required("axisX", axis_x)?;
     let axis_x = axis_x.as_slice();
-    let axis_y = required("axisY", axis_y, NUMBERS)?;
+    let axis_y = required("axisY", axis_y)?;
     let axis_y = axis_y.as_slice();
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
         return Err(Error::Mismatch {
@@ -114,7 +114,7 @@ pub fn ellipse_arc(
 pub fn circular_arc_bezier(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
 ) -> Result<JsBezierCurve, JsError> {
-    let points = required("points", points, NUMBERS)?;
+    let points = required("points", points)?;
     let points = points.as_slice();
     let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
     match pts.as_slice() {
@@ -169,7 +169,7 @@ impl JsBezierCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
     ) -> Result<JsBezierCurve, JsError> {
-        let m = required("m", m, NUMBERS)?;
+        let m = required("m", m)?;
         let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
@@ -187,7 +187,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
     ) -> Result<JsBSplineCurve, JsError> {
-        let m = required("m", m, NUMBERS)?;
+        let m = required("m", m)?;
         let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(

@@ -13,6 +13,7 @@ import { join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
+import { fuzzApi } from "./api-fuzz.mjs";
 
 const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
 const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run", "--enable-unsafe-swiftshader"];
@@ -448,6 +449,19 @@ try {
       });
     }
   }
+
+  await test("the JS API throws an Error on random arguments, never traps (3 seeds × 700 rounds)", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html`);
+    for (const seedValue of [1, 2, 3]) {
+      const result = await page.evaluate(fuzzApi, { seedValue, iterations: 700 });
+      assert(result.bad.length === 0, `seed ${seedValue}:\n${result.bad.join("\n")}`);
+      assert(result.calls > 3000 && result.errors > 1000, `seed ${seedValue}: ${result.calls} calls, ${result.errors} errors`);
+      equal(result.alive, "0.5,0.5", "the module works afterwards");
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
 
   await test("lecture mode draws text and strokes 1.6× larger, in the SVG export too, and toggles back", async () => {
     const h = await openDemo(page, base, "de-casteljau");
