@@ -17,54 +17,67 @@ fn message<T>(r: Result<T, JsError>) -> String {
     }
 }
 
-/// An array argument as the API takes it (`Option`, so that JS `null` gets a clear error).
-fn arr(values: &[f64]) -> Option<Vec<f64>> {
-    Some(values.to_vec())
+/// An array argument as the API takes it (a `JsValue`, so that JS `null` or a number gets a
+/// clear error).
+fn arr(values: &[f64]) -> JsValue {
+    js_sys::Float64Array::from(values).into()
 }
 
 fn example() -> JsBezierCurve {
-    JsBezierCurve::new(arr(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0]), 2.0, None).unwrap()
+    JsBezierCurve::new(
+        arr(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0]),
+        2.0,
+        JsValue::UNDEFINED,
+    )
+    .unwrap()
 }
 
 #[test]
 fn constructor_errors_name_the_bad_value() {
     assert_eq!(
-        message(JsBezierCurve::new(arr(&[0.0, 0.0]), 2.0, None)),
+        message(JsBezierCurve::new(
+            arr(&[0.0, 0.0]),
+            2.0,
+            JsValue::UNDEFINED
+        )),
         "a Bézier curve needs at least 2 control points, got 1"
     );
-    assert!(
-        message(JsBezierCurve::new(arr(&[0.0, 0.0, 1.0]), 2.0, None))
-            .contains("coordinate count 3")
-    );
+    assert!(message(JsBezierCurve::new(
+        arr(&[0.0, 0.0, 1.0]),
+        2.0,
+        JsValue::UNDEFINED
+    ))
+    .contains("coordinate count 3"));
     assert_eq!(
-        message(JsBezierCurve::new(arr(&[0.0; 8]), 4.0, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 4.0, JsValue::UNDEFINED)),
         "dim must be 2 or 3, got 4"
     );
     assert_eq!(
-        message(JsBezierCurve::new(arr(&[0.0; 8]), 1.0, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 1.0, JsValue::UNDEFINED)),
         "dim must be 2 or 3, got 1"
     );
     assert!(message(JsBezierCurve::new(
         arr(&[0.0, f64::NAN, 1.0, 1.0]),
         2.0,
-        None
+        JsValue::UNDEFINED
     ))
     .contains("coordinate 1 is NaN"));
     assert!(message(JsBezierCurve::new(
         arr(&[0.0, 0.0, 1.0, 1.0]),
         2.0,
-        Some(vec![1.0, 0.0])
+        arr(&[1.0, 0.0])
     ))
     .contains("weight 1 is 0"));
     assert!(message(JsBezierCurve::new(
         arr(&[0.0, 0.0, 1.0, 1.0]),
         2.0,
-        Some(vec![1.0])
+        arr(&[1.0])
     ))
     .contains("got 1"));
     // dim is checked before the coordinate count (the documented validation order).
     assert!(
-        message(JsBezierCurve::new(arr(&[0.0; 5]), 5.0, None)).starts_with("dim must be 2 or 3")
+        message(JsBezierCurve::new(arr(&[0.0; 5]), 5.0, JsValue::UNDEFINED))
+            .starts_with("dim must be 2 or 3")
     );
 }
 
@@ -88,7 +101,7 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
     // wasm-bindgen's usize would have made these 2, 4294967295, 0 and 0 without a word.
     let mut c = example();
     assert_eq!(
-        message(JsBezierCurve::new(arr(&[0.0; 8]), 2.5, None)),
+        message(JsBezierCurve::new(arr(&[0.0; 8]), 2.5, JsValue::UNDEFINED)),
         "dim must be a whole number from 0 to 4294967295, got 2.5"
     );
     assert_eq!(
@@ -103,11 +116,13 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
         arr(&pts),
         2.0,
         arr(&[1.0, 1.5]),
-        None
+        JsValue::UNDEFINED
     ))
     .contains("degree 1 must be a whole number"));
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
-    let b = splinelab::wasm::JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
+    let b =
+        splinelab::wasm::JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), JsValue::UNDEFINED)
+            .unwrap();
     assert!(message(b.insert_knot(1.0, Some(0.5))).contains("times must be a whole number"));
     // Whole numbers pass, −0 included.
     assert_eq!(c.sample_uniform(-0.0).unwrap().len(), 0);
@@ -115,25 +130,41 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
 }
 
 #[test]
-fn missing_arrays_and_wrong_strings_are_named() {
-    // JS null or undefined arrays arrive as None, strings as any JsValue: a clear Error instead
-    // of a TypeError in the glue (or, for a number passed as a string, a read out of bounds).
+fn arrays_and_strings_of_the_wrong_type_are_named() {
+    // Arrays and strings arrive as JsValues: null, undefined, a number or an object get a clear
+    // Error naming the argument instead of a TypeError in the glue, a number read as an empty
+    // array, or (a number passed as a string) a read out of bounds of the wasm memory.
     assert_eq!(
-        message(JsBezierCurve::new(None, 2.0, None)),
-        "points must be an array of numbers (Float64Array or number[]), got null or undefined"
+        message(JsBezierCurve::new(JsValue::NULL, 2.0, JsValue::UNDEFINED)),
+        "points must be an array of numbers (Float64Array or number[]), got null"
     );
     let mut c = example();
-    assert!(message(c.sample(None)).starts_with("ts must be an array of numbers"));
-    assert!(message(c.set_control_point(0.0, None)).starts_with("point must be"));
+    assert!(message(c.sample(JsValue::UNDEFINED)).ends_with("got undefined"));
+    assert!(message(c.sample(JsValue::from(3))).ends_with("got number"));
+    assert!(
+        message(c.set_control_point(0.0, js_sys::Object::new().into())).ends_with("got object")
+    );
+    assert!(message(c.sample(JsValue::from("0.5"))).starts_with("ts must be an array"));
+    // A plain array and other typed arrays are read as numbers.
+    let plain: JsValue = js_sys::Array::of2(&JsValue::from(0.0), &JsValue::from(1.0)).into();
+    assert_eq!(c.sample(plain).unwrap(), vec![0.0, 0.0, 8.0, 2.0]);
+    let float32: JsValue = js_sys::Float32Array::from(&[0.5f32][..]).into();
+    assert_eq!(c.sample(float32).unwrap(), vec![4.0, 2.5]);
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0];
     assert!(message(splinelab::wasm::JsBSplineCurve::new(
         arr(&pts),
         2.0,
         2.0,
-        None,
-        None
+        JsValue::from(4),
+        JsValue::UNDEFINED
     ))
     .starts_with("knots must be an array of numbers"));
+    // An optional array: null and undefined mean none, a number is refused.
+    assert!(JsBezierCurve::new(arr(&pts), 2.0, JsValue::NULL).is_ok());
+    assert!(
+        message(JsBezierCurve::new(arr(&pts), 2.0, JsValue::from(1)))
+            .starts_with("weights must be an array")
+    );
     let kind = |value: JsValue| {
         message(splinelab::wasm::bspline::knot_vector(
             arr(&pts),
@@ -200,7 +231,7 @@ fn method_errors_are_thrown_not_trapped() {
     assert!(message(c.split(-0.5)).contains("t = -0.5"));
     assert!(message(wasm::bezier::bernstein(3.0, 4.0, 0.5)).contains("index 4"));
     assert!(message(wasm::bezier::bernstein(3.0, 1.0, 1.5)).contains("t = 1.5"));
-    let c3 = JsBezierCurve::new(arr(&[0.0; 6]), 3.0, None).unwrap();
+    let c3 = JsBezierCurve::new(arr(&[0.0; 6]), 3.0, JsValue::UNDEFINED).unwrap();
     assert!(message(c3.intersect_line(0.0, 0.0, 1.0, 0.0, 1e-9)).contains("2D curves"));
     assert!(message(wasm::bezier::join_bezier(
         &example(),
@@ -247,28 +278,28 @@ fn flat_layouts() {
 fn composite_checks_its_layout() {
     use splinelab::wasm::JsCompositeBezier;
     let pts = [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0, 0.0, 3.0, -1.0, 4.0, 0.0];
-    let c = JsCompositeBezier::new(arr(&pts), 2.0, arr(&[2.0, 2.0]), None).unwrap();
+    let c = JsCompositeBezier::new(arr(&pts), 2.0, arr(&[2.0, 2.0]), JsValue::UNDEFINED).unwrap();
     assert_eq!(c.domain(), vec![0.0, 2.0]);
     assert_eq!(c.evaluate(2.0).unwrap(), vec![4.0, 0.0]);
     assert!(message(JsCompositeBezier::new(
         arr(&pts),
         2.0,
         arr(&[2.0, 3.0]),
-        None
+        JsValue::UNDEFINED
     ))
     .contains("need 7 control points"));
     assert!(message(JsCompositeBezier::new(
         arr(&pts),
         2.0,
         arr(&[2.0, 2.0]),
-        Some(vec![0.0, 1.0])
+        arr(&[0.0, 1.0])
     ))
     .contains("3 breakpoints"));
     assert!(message(JsCompositeBezier::new(
         arr(&pts),
         2.0,
         arr(&[0.0, 5.0]),
-        None
+        JsValue::UNDEFINED
     ))
     .contains("degree >= 1"));
     assert!(message(c.piece(2.0)).contains("index 2"));
@@ -279,7 +310,7 @@ fn bspline_boundary() {
     use splinelab::wasm::{bspline as b, JsBSplineCurve};
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
+    let c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), JsValue::UNDEFINED).unwrap();
     assert_eq!(c.domain(), vec![0.0, 4.0]);
     assert_eq!(c.de_boor(1.5).unwrap().len(), 6 * 2);
     assert_eq!(c.basis(1.5).unwrap().len(), 6);
@@ -290,7 +321,13 @@ fn bspline_boundary() {
         vec![0.5, -1.0, 0.5, -1.0, 1.0, 0.0, 0.5, 0.5, 0.0]
     );
     assert_eq!(
-        message(JsBSplineCurve::new(arr(&pts), 4.0, 2.0, arr(&knots), None)),
+        message(JsBSplineCurve::new(
+            arr(&pts),
+            4.0,
+            2.0,
+            arr(&knots),
+            JsValue::UNDEFINED
+        )),
         "dim must be 2 or 3, got 4"
     );
     assert!(message(JsBSplineCurve::new(
@@ -298,17 +335,25 @@ fn bspline_boundary() {
         2.0,
         2.0,
         arr(&knots[..8]),
-        None
+        JsValue::UNDEFINED
     ))
     .contains("n+p+2"));
-    assert!(
-        message(JsBSplineCurve::new(arr(&pts), 2.0, 0.0, arr(&knots), None))
-            .contains("degree must be at least 1")
-    );
-    assert!(
-        message(JsBSplineCurve::new(arr(&pts), 2.0, 6.0, arr(&knots), None))
-            .contains("degree 6 needs at least")
-    );
+    assert!(message(JsBSplineCurve::new(
+        arr(&pts),
+        2.0,
+        0.0,
+        arr(&knots),
+        JsValue::UNDEFINED
+    ))
+    .contains("degree must be at least 1"));
+    assert!(message(JsBSplineCurve::new(
+        arr(&pts),
+        2.0,
+        6.0,
+        arr(&knots),
+        JsValue::UNDEFINED
+    ))
+    .contains("degree 6 needs at least"));
     assert!(message(c.evaluate(-1.0)).contains("u = -1 is outside the domain [0, 4]"));
     assert!(message(c.insert_knot(0.0, Some(1.0))).contains("multiplicity 4"));
     assert!(message(c.segment_matrix(0.0, None)).contains("span 0"));
@@ -367,7 +412,12 @@ fn rational_constructors_and_projective_maps() {
     );
     assert_eq!(r::conic_kind(1.0, 2.0, 1.0).unwrap(), "hyperbola");
     assert!(message(r::conic_kind(1.0, -2.0, 1.0)).contains("weight 1 is -2"));
-    let bez = JsBezierCurve::new(arr(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0]), 2.0, None).unwrap();
+    let bez = JsBezierCurve::new(
+        arr(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0]),
+        2.0,
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
     assert!(message(bez.projective_map(arr(&[1.0; 8]))).contains("9 numbers"));
     assert!(
         message(bez.projective_map(arr(&[1.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0])))
@@ -412,7 +462,7 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
 
     let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
-    let mut c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), None).unwrap();
+    let mut c = JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), JsValue::UNDEFINED).unwrap();
     let us: Vec<f64> = (0..=40).map(|k| k as f64 / 10.0).collect();
     assert_eq!(
         c.sample_view(arr(&us)).unwrap().to_vec(),

@@ -1,6 +1,6 @@
 //! `BezierCurve` and the Bernstein / joining helpers for JavaScript.
 
-use super::{required, string_arg, whole};
+use super::{numbers, optional_numbers, string_arg, whole};
 use crate::bezier::{self, BezierCurve, Continuity, JoinRule};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
@@ -79,11 +79,12 @@ impl JsBezierCurve {
     /// `dim` 2 or 3, optional weights (> 0, one per point) for a rational curve, on t ∈ [0, 1].
     #[wasm_bindgen(constructor)]
     pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
-        weights: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
-        let points = required("points", points)?;
+        let weights = optional_numbers("weights", &weights)?;
+        let points = numbers("points", &points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
@@ -92,13 +93,14 @@ impl JsBezierCurve {
     /// `BezierCurve.withInterval(points, dim, a, b, weights?)`: the curve on t ∈ [a, b].
     #[wasm_bindgen(js_name = withInterval)]
     pub fn with_interval(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
         a: f64,
         b: f64,
-        weights: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
-        let points = required("points", points)?;
+        let weights = optional_numbers("weights", &weights)?;
+        let points = numbers("points", &points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let curve = build(points, dim, weights.as_deref())?;
@@ -113,14 +115,12 @@ impl JsBezierCurve {
     /// `Σ c_k t^k`; `coefficients` holds `c_0, c_1, …` as flat points of `dim` coordinates.
     #[wasm_bindgen(js_name = fromPolynomial)]
     pub fn from_polynomial(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] coefficients: Option<
-            Vec<f64>,
-        >,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] coefficients: JsValue,
         dim: f64,
         a: f64,
         b: f64,
     ) -> Result<JsBezierCurve, JsError> {
-        let coefficients = required("coefficients", coefficients)?;
+        let coefficients = numbers("coefficients", &coefficients)?;
         let coefficients = coefficients.as_slice();
         let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
@@ -177,9 +177,9 @@ impl JsBezierCurve {
     /// Points at every t of `ts`, flat (ts.length·dim numbers), in one pass.
     pub fn sample(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = required("ts", ts)?;
+        let ts = numbers("ts", &ts)?;
         let ts = ts.as_slice();
         super::sample(&self.inner, ts)
     }
@@ -206,9 +206,9 @@ impl JsBezierCurve {
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(
         &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Float64Array, JsError> {
-        let ts = required("ts", ts)?;
+        let ts = numbers("ts", &ts)?;
         let ts = ts.as_slice();
         super::sample_view(&self.inner, &mut self.view, ts)
     }
@@ -289,9 +289,9 @@ impl JsBezierCurve {
     pub fn set_control_point(
         &mut self,
         i: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
     ) -> Result<(), JsError> {
-        let point = required("point", point)?;
+        let point = numbers("point", &point)?;
         let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
@@ -464,12 +464,12 @@ fn check_bernstein_args(n: usize, i: usize) -> Result<(), Error> {
 /// ≤ 3 use singularity-aware Gauss–Legendre (relative error ≤ 1e-13), straight from the numbers.
 #[wasm_bindgen(js_name = arcLengths)]
 pub fn arc_lengths(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
     accuracy: Option<f64>,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points)?;
+    let points = numbers("points", &points)?;
     let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
@@ -656,14 +656,15 @@ impl JsCompositeBezier {
     /// See the class documentation.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] degrees: Option<Vec<f64>>,
-        breaks: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] degrees: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] breaks: JsValue,
     ) -> Result<JsCompositeBezier, JsError> {
-        let points = required("points", points)?;
+        let breaks = optional_numbers("breaks", &breaks)?;
+        let points = numbers("points", &points)?;
         let points = points.as_slice();
-        let degrees = required("degrees", degrees)?;
+        let degrees = numbers("degrees", &degrees)?;
         let degrees = degrees.as_slice();
         let dim = whole("dim", dim)?;
         let degrees = degrees
@@ -726,9 +727,9 @@ impl JsCompositeBezier {
     /// Points at every t of `ts`, flat.
     pub fn sample(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = required("ts", ts)?;
+        let ts = numbers("ts", &ts)?;
         let ts = ts.as_slice();
         Ok(with_composite!(&self.inner, c => {
             let mut out = Vec::with_capacity(ts.len().saturating_mul(3));

@@ -1,7 +1,7 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
 use super::bezier::{flatten_points, point_from, JsBezierCurve};
-use super::{required, string_arg, whole};
+use super::{numbers, optional_numbers, string_arg, whole};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -65,15 +65,16 @@ impl JsBSplineCurve {
     /// non-decreasing knots, optional weights (> 0) for a NURBS.
     #[wasm_bindgen(constructor)]
     pub fn new(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
         degree: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] knots: Option<Vec<f64>>,
-        weights: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] knots: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let points = required("points", points)?;
+        let weights = optional_numbers("weights", &weights)?;
+        let points = numbers("points", &points)?;
         let points = points.as_slice();
-        let knots = required("knots", knots)?;
+        let knots = numbers("knots", &knots)?;
         let knots = knots.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
@@ -88,12 +89,13 @@ impl JsBSplineCurve {
     /// `BSplineCurve.closed(points, dim, degree, weights?)`: a closed curve through the cycle of
     /// points (the first p repeated at the end, uniform knots), joined with C^(p−1).
     pub fn closed(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
         degree: f64,
-        weights: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let points = required("points", points)?;
+        let weights = optional_numbers("weights", &weights)?;
+        let points = numbers("points", &points)?;
         let points = points.as_slice();
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
@@ -181,9 +183,9 @@ impl JsBSplineCurve {
     /// Points at every u of `us`, flat, walking the spans once for sorted input.
     pub fn sample(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let us = required("us", us)?;
+        let us = numbers("us", &us)?;
         let us = us.as_slice();
         super::sample(&self.inner, us)
     }
@@ -193,10 +195,10 @@ impl JsBSplineCurve {
     #[wasm_bindgen(js_name = sampleDerivatives)]
     pub fn sample_derivatives(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
         order: f64,
     ) -> Result<Vec<f64>, JsError> {
-        let us = required("us", us)?;
+        let us = numbers("us", &us)?;
         let us = us.as_slice();
         let order = whole("order", order)?;
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
@@ -226,9 +228,9 @@ impl JsBSplineCurve {
     #[wasm_bindgen(js_name = sampleView)]
     pub fn sample_view(
         &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<Float64Array, JsError> {
-        let us = required("us", us)?;
+        let us = numbers("us", &us)?;
         let us = us.as_slice();
         super::sample_view(&self.inner, &mut self.view, us)
     }
@@ -291,9 +293,9 @@ impl JsBSplineCurve {
     /// A new curve with every knot of `us` inserted (knot refinement).
     pub fn refine(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let us = required("us", us)?;
+        let us = numbers("us", &us)?;
         let us = us.as_slice();
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.refine(us)?),
@@ -346,9 +348,9 @@ impl JsBSplineCurve {
     pub fn set_control_point(
         &mut self,
         i: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
     ) -> Result<(), JsError> {
-        let point = required("point", point)?;
+        let point = numbers("point", &point)?;
         let point = point.as_slice();
         let i = whole("i", i)?;
         with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
@@ -410,12 +412,12 @@ fn flat_points<C: Cartesian>(points: &[f64]) -> Result<Vec<C>, Error> {
 /// (the Greek notes' formulas in our convention, n + p + 2 knots).
 #[wasm_bindgen(js_name = knotVector)]
 pub fn knot_vector(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
     #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points)?;
+    let points = numbers("points", &points)?;
     let points = points.as_slice();
     let kind = string_arg("kind", &kind, None)?;
     let kind = kind.as_str();
@@ -432,11 +434,11 @@ pub fn knot_vector(
 /// "centripetal".
 #[wasm_bindgen]
 pub fn parameterize(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points)?;
+    let points = numbers("points", &points)?;
     let points = points.as_slice();
     let kind = string_arg("kind", &kind, None)?;
     let kind = kind.as_str();
@@ -452,11 +454,11 @@ pub fn parameterize(
 /// each end, so a uniform B-spline of odd degree p passes through the first and last point.
 #[wasm_bindgen(js_name = phantomPoints)]
 pub fn phantom_points(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
 ) -> Result<Vec<f64>, JsError> {
-    let points = required("points", points)?;
+    let points = numbers("points", &points)?;
     let points = points.as_slice();
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;

@@ -118,19 +118,47 @@ pub(crate) fn sample_uniform_view(
 /// What an array argument must be, for [`required`].
 pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
 
-/// A required array argument: the API takes arrays as `Option`s so that `null` or `undefined`
-/// arrive here and get a message naming the argument (wasm-bindgen's glue for a plain
-/// `&[f64]` would fail on them with a `TypeError` that names none).
+/// An array-of-numbers argument, taken as a `JsValue`: a `Float64Array` is copied once, a plain
+/// array or another typed array is converted (`new Float64Array(value)`, as the glue for a
+/// `&[f64]` would). Anything else — `null`, `undefined`, a number, a string, an object — is an
+/// error naming the argument: the glue would have failed with a `TypeError` naming nothing, or
+/// silently read a number or object as an empty array (which, repeated, even crashed Node 20).
 #[inline(never)]
-pub(crate) fn required(name: &'static str, value: Option<Vec<f64>>) -> Result<Vec<f64>, JsError> {
-    value.ok_or_else(|| {
-        Error::ArgumentType {
-            name,
-            expected: NUMBERS,
-            got: "null or undefined".into(),
-        }
-        .into()
-    })
+pub(crate) fn numbers(name: &'static str, value: &JsValue) -> Result<Vec<f64>, JsError> {
+    if let Some(array) = value.dyn_ref::<Float64Array>() {
+        return Ok(array.to_vec());
+    }
+    if js_sys::Array::is_array(value) || js_sys::ArrayBuffer::is_view(value) {
+        return Ok(Float64Array::new(value).to_vec());
+    }
+    Err(Error::ArgumentType {
+        name,
+        expected: NUMBERS,
+        got: type_name(value),
+    }
+    .into())
+}
+
+/// An optional array-of-numbers argument: `null` or `undefined` give `None`, anything else is
+/// read by [`numbers`].
+pub(crate) fn optional_numbers(
+    name: &'static str,
+    value: &JsValue,
+) -> Result<Option<Vec<f64>>, JsError> {
+    if value.is_undefined() || value.is_null() {
+        Ok(None)
+    } else {
+        numbers(name, value).map(Some)
+    }
+}
+
+/// `typeof value`, with `null` told apart (for messages).
+fn type_name(value: &JsValue) -> String {
+    if value.is_null() {
+        "null".into()
+    } else {
+        value.js_typeof().as_string().unwrap_or_default()
+    }
 }
 
 /// A string argument, taken as a `JsValue`: wasm-bindgen's glue for a `&str` fails on a
@@ -150,11 +178,7 @@ pub(crate) fn string_arg(
         _ => Err(Error::ArgumentType {
             name,
             expected: "a string",
-            got: if value.is_null() {
-                "null".into()
-            } else {
-                value.js_typeof().as_string().unwrap_or_default()
-            },
+            got: type_name(value),
         }
         .into()),
     }

@@ -2,7 +2,7 @@
 
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
-use super::required;
+use super::numbers;
 use crate::error::{Error, Num};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
@@ -66,17 +66,17 @@ pub fn ellipse(
 /// from start to start + sweep, in 2D or 3D (the length of `center`), as an exact NURBS.
 #[wasm_bindgen(js_name = ellipseArc)]
 pub fn ellipse_arc(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] center: Option<Vec<f64>>,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_x: Option<Vec<f64>>,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_y: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] center: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_x: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_y: JsValue,
     start: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
-    let center = required("center", center)?;
+    let center = numbers("center", &center)?;
     let center = center.as_slice();
-    let axis_x = required("axisX", axis_x)?;
+    let axis_x = numbers("axisX", &axis_x)?;
     let axis_x = axis_x.as_slice();
-    let axis_y = required("axisY", axis_y)?;
+    let axis_y = numbers("axisY", &axis_y)?;
     let axis_y = axis_y.as_slice();
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
         return Err(Error::Mismatch {
@@ -112,9 +112,9 @@ pub fn ellipse_arc(
 /// angle at P1): an exact circular arc.
 #[wasm_bindgen(js_name = circularArcBezier)]
 pub fn circular_arc_bezier(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: Option<Vec<f64>>,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
 ) -> Result<JsBezierCurve, JsError> {
-    let points = required("points", points)?;
+    let points = numbers("points", &points)?;
     let points = points.as_slice();
     let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
     match pts.as_slice() {
@@ -167,9 +167,9 @@ impl JsBezierCurve {
     #[wasm_bindgen(js_name = projectiveMap)]
     pub fn projective_map(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
-        let m = required("m", m)?;
+        let m = numbers("m", &m)?;
         let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
@@ -185,9 +185,9 @@ impl JsBSplineCurve {
     #[wasm_bindgen(js_name = projectiveMap)]
     pub fn projective_map(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: Option<Vec<f64>>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let m = required("m", m)?;
+        let m = numbers("m", &m)?;
         let m = m.as_slice();
         let m = matrix(m)?;
         Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(
