@@ -115,7 +115,7 @@ pub(crate) fn sample_uniform_view(
     memory_view(buffer)
 }
 
-/// What an array argument must be, for [`required`].
+/// What an array argument must be, for [`numbers`].
 pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
 
 /// An array-of-numbers argument, taken as a `JsValue`: a `Float64Array` is copied once, a plain
