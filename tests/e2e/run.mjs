@@ -14,6 +14,7 @@ import { fileURLToPath } from "node:url";
 import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
 import { fuzzApi } from "./api-fuzz.mjs";
+import { fuzzStates } from "./state-fuzz.mjs";
 
 const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
 const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run", "--enable-unsafe-swiftshader"];
@@ -459,6 +460,17 @@ try {
       assert(result.calls > 3000 && result.errors > 1000, `seed ${seedValue}: ${result.calls} calls, ${result.errors} errors`);
       equal(result.alive, "0.5,0.5", "the module works afterwards");
     }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("random states from links and files are refused with an Error or mount cleanly (20 demos × 60)", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html`);
+    const result = await page.evaluate(fuzzStates, { seedValue: 7, rounds: 60 });
+    assert(result.bad.length === 0, result.bad.join("\n"));
+    assert(result.accepted > 100 && result.refused > 100, `accepted ${result.accepted}, refused ${result.refused}`);
+    await settle(page);
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
