@@ -6,6 +6,7 @@ mod common;
 
 use common::*;
 use splinelab::bezier::{self, bernstein, BezierCurve, Continuity, JoinRule};
+use splinelab::geom::Cartesian;
 use splinelab::{DVec2, DVec3, Error};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 #[cfg(target_arch = "wasm32")]
@@ -888,22 +889,31 @@ fn composite_curves_use_the_global_parameter_and_report_each_joint() {
     assert!(c.evaluate(3.5).unwrap_err().to_string().contains("[0, 3]"));
 }
 
+/// `arc_lengths` of `curves` given back to back equals `arc_length` of each, bit for bit.
+fn assert_batch_is_single<C: Cartesian>(
+    curves: &[BezierCurve<C>],
+    degree: usize,
+    accuracy: Option<f64>,
+) {
+    let mut flat = vec![0.0; curves.len() * (degree + 1) * C::DIM];
+    let points = curves.iter().flat_map(|c| c.control_points());
+    for (p, o) in points.zip(flat.chunks_exact_mut(C::DIM)) {
+        p.write_to(o);
+    }
+    let batch = bezier::arc_lengths::<C>(&flat, degree, accuracy).unwrap();
+    for (c, l) in curves.iter().zip(&batch) {
+        assert_eq!(*l, c.arc_length(accuracy).unwrap(), "degree {degree}");
+    }
+}
+
 #[test]
 fn batched_arc_lengths_equal_the_single_ones() {
     let mut rng = Rng::new(41);
-    let curves: Vec<Vec<DVec2>> = (0..30).map(|_| random_curve(&mut rng, 3)).collect();
-    let flat: Vec<f64> = curves.iter().flatten().flat_map(|p| [p.x, p.y]).collect();
-    let batch = bezier::arc_lengths::<DVec2>(&flat, 3, None).unwrap();
-    for (c, l) in curves.iter().zip(&batch) {
-        assert_eq!(
-            *l,
-            BezierCurve::new(c.clone(), None)
-                .unwrap()
-                .arc_length(None)
-                .unwrap()
-        );
-    }
-    assert!(bezier::arc_lengths::<DVec2>(&flat[..7], 3, None)
+    let curves: Vec<BezierCurve<DVec2>> = (0..30)
+        .map(|_| BezierCurve::new(random_curve(&mut rng, 3), None).unwrap())
+        .collect();
+    assert_batch_is_single(&curves, 3, None);
+    assert!(bezier::arc_lengths::<DVec2>(&[0.0; 7], 3, None)
         .unwrap_err()
         .to_string()
         .contains("do not split"));
@@ -1263,10 +1273,6 @@ fn quadratic_arc_length_matches_the_closed_form() {
     }
 }
 
-fn p_flat(c: &BezierCurve<DVec2>) -> Vec<f64> {
-    c.control_points().iter().flat_map(|p| [p.x, p.y]).collect()
-}
-
 #[test]
 fn batched_arc_lengths_equal_the_single_ones_for_every_path() {
     let mut rng = Rng::new(8);
@@ -1274,32 +1280,14 @@ fn batched_arc_lengths_equal_the_single_ones_for_every_path() {
         let curves: Vec<BezierCurve<DVec2>> = (0..20)
             .map(|_| BezierCurve::new(random_curve(&mut rng, degree), None).unwrap())
             .collect();
-        let flat: Vec<f64> = curves.iter().flat_map(p_flat).collect();
         for accuracy in [None, Some(1e-12), Some(1e-13), Some(0.5)] {
-            let batch = bezier::arc_lengths::<DVec2>(&flat, degree, accuracy).unwrap();
-            for (c, l) in curves.iter().zip(&batch) {
-                assert_eq!(*l, c.arc_length(accuracy).unwrap(), "degree {degree}");
-            }
+            assert_batch_is_single(&curves, degree, accuracy);
         }
     }
-    let curves: Vec<Vec<DVec3>> = (0..10)
-        .map(|_| (0..4).map(|_| rng.point3(5.0)).collect())
+    let curves: Vec<BezierCurve<DVec3>> = (0..10)
+        .map(|_| BezierCurve::new((0..4).map(|_| rng.point3(5.0)).collect(), None).unwrap())
         .collect();
-    let flat: Vec<f64> = curves
-        .iter()
-        .flatten()
-        .flat_map(|p| [p.x, p.y, p.z])
-        .collect();
-    let batch = bezier::arc_lengths::<DVec3>(&flat, 3, None).unwrap();
-    for (c, l) in curves.iter().zip(&batch) {
-        assert_eq!(
-            *l,
-            BezierCurve::new(c.clone(), None)
-                .unwrap()
-                .arc_length(None)
-                .unwrap()
-        );
-    }
+    assert_batch_is_single(&curves, 3, None);
     // A planar cubic in 3D (z = 0) takes the adaptive path and agrees with the 2D fast path.
     let c2 = random_curve(&mut rng, 3);
     let c3: Vec<DVec3> = c2.iter().map(|p| p.extend(0.0)).collect();

@@ -36,7 +36,7 @@ macro_rules! map_curve {
     };
 }
 
-impl_sampled_for_curve!();
+impl_class_curve!();
 
 /// Points as one flat array of `P::DIM` numbers each.
 pub(crate) fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
@@ -84,8 +84,7 @@ impl JsBezierCurve {
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
         let weights = optional_numbers("weights", &weights)?;
-        let points = numbers("points", &points)?;
-        let points = points.as_slice();
+        let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
         Ok(JsBezierCurve::wrap(build(points, dim, weights.as_deref())?))
     }
@@ -100,8 +99,7 @@ impl JsBezierCurve {
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
         let weights = optional_numbers("weights", &weights)?;
-        let points = numbers("points", &points)?;
-        let points = points.as_slice();
+        let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
         let curve = build(points, dim, weights.as_deref())?;
         let inner = match curve {
@@ -120,8 +118,7 @@ impl JsBezierCurve {
         a: f64,
         b: f64,
     ) -> Result<JsBezierCurve, JsError> {
-        let coefficients = numbers("coefficients", &coefficients)?;
-        let coefficients = coefficients.as_slice();
+        let coefficients = &*numbers("coefficients", &coefficients)?;
         let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
             2 => Curve::D2(bezier::from_polynomial(
@@ -147,7 +144,7 @@ impl JsBezierCurve {
     /// Dimension: 2 or 3.
     #[wasm_bindgen(getter)]
     pub fn dim(&self) -> usize {
-        super::Sampled::dim(&self.inner)
+        super::ClassCurve::dim(&self.inner)
     }
 
     /// True when some weight differs from 1.
@@ -179,8 +176,7 @@ impl JsBezierCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = numbers("ts", &ts)?;
-        let ts = ts.as_slice();
+        let ts = &*numbers("ts", &ts)?;
         super::sample(&self.inner, ts)
     }
 
@@ -208,8 +204,7 @@ impl JsBezierCurve {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Float64Array, JsError> {
-        let ts = numbers("ts", &ts)?;
-        let ts = ts.as_slice();
+        let ts = &*numbers("ts", &ts)?;
         super::sample_view(&self.inner, &mut self.view, ts)
     }
 
@@ -291,19 +286,13 @@ impl JsBezierCurve {
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
     ) -> Result<(), JsError> {
-        let point = numbers("point", &point)?;
-        let point = point.as_slice();
-        let i = whole("i", i)?;
-        with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
-        Ok(())
+        super::set_control_point(&mut self.inner, i, &point)
     }
 
     /// Sets weight i (> 0) in place.
     #[wasm_bindgen(js_name = setWeight)]
     pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
-        let i = whole("i", i)?;
-        with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
-        Ok(())
+        super::set_weight(&mut self.inner, i, w)
     }
 
     /// Polyline vertices (flat, both ends included) within `tolerance` of the curve.
@@ -469,8 +458,7 @@ pub fn arc_lengths(
     degree: f64,
     accuracy: Option<f64>,
 ) -> Result<Vec<f64>, JsError> {
-    let points = numbers("points", &points)?;
-    let points = points.as_slice();
+    let points = &*numbers("points", &points)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {
@@ -560,8 +548,7 @@ pub fn join_bezier(
     #[wasm_bindgen(unchecked_param_type = "string")] rule: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "string")] adjust: JsValue,
 ) -> Result<Vec<JsBezierCurve>, JsError> {
-    let rule = string_arg("rule", &rule, None)?;
-    let rule = rule.as_str();
+    let rule = &*string_arg("rule", &rule, None)?;
     let rule = JoinRule::parse(rule)?;
     let adjust_right = match string_arg("adjust", &adjust, Some("right"))?.as_str() {
         "right" => true,
@@ -662,10 +649,8 @@ impl JsCompositeBezier {
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] breaks: JsValue,
     ) -> Result<JsCompositeBezier, JsError> {
         let breaks = optional_numbers("breaks", &breaks)?;
-        let points = numbers("points", &points)?;
-        let points = points.as_slice();
-        let degrees = numbers("degrees", &degrees)?;
-        let degrees = degrees.as_slice();
+        let points = &*numbers("points", &points)?;
+        let degrees = &*numbers("degrees", &degrees)?;
         let dim = whole("dim", dim)?;
         let degrees = degrees
             .iter()
@@ -729,8 +714,7 @@ impl JsCompositeBezier {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let ts = numbers("ts", &ts)?;
-        let ts = ts.as_slice();
+        let ts = &*numbers("ts", &ts)?;
         Ok(with_composite!(&self.inner, c => {
             let mut out = Vec::with_capacity(ts.len().saturating_mul(3));
             for &t in ts {

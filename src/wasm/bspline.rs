@@ -1,6 +1,6 @@
 //! `BSplineCurve`, `knotVector` and `parameterize` for JavaScript.
 
-use super::bezier::{flatten_points, point_from, JsBezierCurve};
+use super::bezier::{flatten_points, JsBezierCurve};
 use super::{numbers, optional_numbers, string_arg, whole};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
@@ -35,7 +35,7 @@ macro_rules! map_curve {
     };
 }
 
-impl_sampled_for_curve!();
+impl_class_curve!();
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
 #[wasm_bindgen(js_name = BSplineCurve)]
@@ -72,10 +72,8 @@ impl JsBSplineCurve {
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
         let weights = optional_numbers("weights", &weights)?;
-        let points = numbers("points", &points)?;
-        let points = points.as_slice();
-        let knots = numbers("knots", &knots)?;
-        let knots = knots.as_slice();
+        let points = &*numbers("points", &points)?;
+        let knots = &*numbers("knots", &knots)?;
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
         let w = weights.as_deref();
@@ -95,8 +93,7 @@ impl JsBSplineCurve {
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
         let weights = optional_numbers("weights", &weights)?;
-        let points = numbers("points", &points)?;
-        let points = points.as_slice();
+        let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
         let degree = whole("degree", degree)?;
         let w = weights.as_deref();
@@ -116,7 +113,7 @@ impl JsBSplineCurve {
     /// Dimension: 2 or 3.
     #[wasm_bindgen(getter)]
     pub fn dim(&self) -> usize {
-        super::Sampled::dim(&self.inner)
+        super::ClassCurve::dim(&self.inner)
     }
 
     /// True when some weight differs from 1.
@@ -185,8 +182,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<Vec<f64>, JsError> {
-        let us = numbers("us", &us)?;
-        let us = us.as_slice();
+        let us = &*numbers("us", &us)?;
         super::sample(&self.inner, us)
     }
 
@@ -198,8 +194,7 @@ impl JsBSplineCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
         order: f64,
     ) -> Result<Vec<f64>, JsError> {
-        let us = numbers("us", &us)?;
-        let us = us.as_slice();
+        let us = &*numbers("us", &us)?;
         let order = whole("order", order)?;
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
@@ -230,8 +225,7 @@ impl JsBSplineCurve {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<Float64Array, JsError> {
-        let us = numbers("us", &us)?;
-        let us = us.as_slice();
+        let us = &*numbers("us", &us)?;
         super::sample_view(&self.inner, &mut self.view, us)
     }
 
@@ -295,8 +289,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let us = numbers("us", &us)?;
-        let us = us.as_slice();
+        let us = &*numbers("us", &us)?;
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.refine(us)?),
         ))
@@ -350,19 +343,13 @@ impl JsBSplineCurve {
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
     ) -> Result<(), JsError> {
-        let point = numbers("point", &point)?;
-        let point = point.as_slice();
-        let i = whole("i", i)?;
-        with_curve!(&mut self.inner, c => c.set_control_point(i, point_from(point)?))?;
-        Ok(())
+        super::set_control_point(&mut self.inner, i, &point)
     }
 
     /// Sets weight i (> 0) in place.
     #[wasm_bindgen(js_name = setWeight)]
     pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
-        let i = whole("i", i)?;
-        with_curve!(&mut self.inner, c => c.set_weight(i, w))?;
-        Ok(())
+        super::set_weight(&mut self.inner, i, w)
     }
 
     /// Curvature at u: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity at a cusp.
@@ -417,10 +404,8 @@ pub fn knot_vector(
     degree: f64,
     #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = numbers("points", &points)?;
-    let points = points.as_slice();
-    let kind = string_arg("kind", &kind, None)?;
-    let kind = kind.as_str();
+    let points = &*numbers("points", &points)?;
+    let kind = &*string_arg("kind", &kind, None)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     let kind = KnotKind::parse(kind)?;
@@ -438,10 +423,8 @@ pub fn parameterize(
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
-    let points = numbers("points", &points)?;
-    let points = points.as_slice();
-    let kind = string_arg("kind", &kind, None)?;
-    let kind = kind.as_str();
+    let points = &*numbers("points", &points)?;
+    let kind = &*string_arg("kind", &kind, None)?;
     let dim = whole("dim", dim)?;
     let kind = Parameterization::parse(kind)?;
     Ok(match check_dim(dim)? {
@@ -458,8 +441,7 @@ pub fn phantom_points(
     dim: f64,
     degree: f64,
 ) -> Result<Vec<f64>, JsError> {
-    let points = numbers("points", &points)?;
-    let points = points.as_slice();
+    let points = &*numbers("points", &points)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     Ok(match check_dim(dim)? {

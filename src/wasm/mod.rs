@@ -11,11 +11,11 @@
     clippy::indexing_slicing
 )]
 
-/// Implements [`Sampled`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in,
+/// Implements [`ClassCurve`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in,
 /// through that module's `with_curve!`.
-macro_rules! impl_sampled_for_curve {
+macro_rules! impl_class_curve {
     () => {
-        impl super::Sampled for Curve {
+        impl super::ClassCurve for Curve {
             fn dim(&self) -> usize {
                 match self {
                     Curve::D2(_) => 2,
@@ -29,6 +29,14 @@ macro_rules! impl_sampled_for_curve {
 
             fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
                 with_curve!(self, c => c.sample_uniform_into(count, out))
+            }
+
+            fn set_control_point(&mut self, i: usize, coords: &[f64]) -> Result<(), Error> {
+                with_curve!(self, c => c.set_control_point(i, $crate::wasm::bezier::point_from(coords)?))
+            }
+
+            fn set_weight(&mut self, i: usize, w: f64) -> Result<(), Error> {
+                with_curve!(self, c => c.set_weight(i, w))
             }
         }
     };
@@ -64,27 +72,47 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
     ))
 }
 
-/// A curve of either dimension behind a JS class, as the sampling methods see it: the shared
-/// bodies of `sample`, `sampleUniform`, `sampleView` and `sampleUniformView` of `BezierCurve`
-/// and `BSplineCurve`.
-pub(crate) trait Sampled {
+/// A curve of either dimension behind a JS class: what the method bodies shared by
+/// `BezierCurve` and `BSplineCurve` need (sampling and the in-place edits of a drag).
+pub(crate) trait ClassCurve {
     /// 2 or 3.
     fn dim(&self) -> usize;
     /// The points at `params`, flat, into `out` (`params.len() · dim` numbers).
     fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error>;
     /// `count` points at equally spaced parameters over the domain, flat, into `out`.
     fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error>;
+    /// Moves control point i to the point with coordinates `coords` (dim numbers), in place.
+    fn set_control_point(&mut self, i: usize, coords: &[f64]) -> Result<(), Error>;
+    /// Sets weight i (> 0) in place.
+    fn set_weight(&mut self, i: usize, w: f64) -> Result<(), Error>;
+}
+
+/// `setControlPoint(i, point)`: the drag path, in place.
+pub(crate) fn set_control_point(
+    curve: &mut impl ClassCurve,
+    i: f64,
+    point: &JsValue,
+) -> Result<(), JsError> {
+    let point = numbers("point", point)?;
+    curve.set_control_point(whole("i", i)?, &point)?;
+    Ok(())
+}
+
+/// `setWeight(i, w)`, in place.
+pub(crate) fn set_weight(curve: &mut impl ClassCurve, i: f64, w: f64) -> Result<(), JsError> {
+    curve.set_weight(whole("i", i)?, w)?;
+    Ok(())
 }
 
 /// `sample(params)`: a new array of `params.length · dim` numbers.
-pub(crate) fn sample(curve: &impl Sampled, params: &[f64]) -> Result<Vec<f64>, JsError> {
+pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>, JsError> {
     let mut out = vec![0.0; params.len().saturating_mul(curve.dim())];
     curve.sample_into(params, &mut out)?;
     Ok(out)
 }
 
 /// `sampleUniform(count)`: a new array of `count · dim` numbers.
-pub(crate) fn sample_uniform(curve: &impl Sampled, count: usize) -> Result<Vec<f64>, JsError> {
+pub(crate) fn sample_uniform(curve: &impl ClassCurve, count: usize) -> Result<Vec<f64>, JsError> {
     check_count(count)?;
     let mut out = vec![0.0; count * curve.dim()];
     curve.sample_uniform_into(count, &mut out)?;
@@ -94,7 +122,7 @@ pub(crate) fn sample_uniform(curve: &impl Sampled, count: usize) -> Result<Vec<f
 /// `sampleView(params)`: `sample(params)` written into `buffer` (the curve's own) and returned
 /// as a view of it (see [`memory_view`]). On an error the buffer keeps its allocation.
 pub(crate) fn sample_view(
-    curve: &impl Sampled,
+    curve: &impl ClassCurve,
     buffer: &mut Vec<f64>,
     params: &[f64],
 ) -> Result<Float64Array, JsError> {
@@ -105,7 +133,7 @@ pub(crate) fn sample_view(
 
 /// `sampleUniformView(count)`: `sampleUniform(count)` into `buffer`, as [`sample_view`].
 pub(crate) fn sample_uniform_view(
-    curve: &impl Sampled,
+    curve: &impl ClassCurve,
     buffer: &mut Vec<f64>,
     count: usize,
 ) -> Result<Float64Array, JsError> {

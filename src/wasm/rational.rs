@@ -72,12 +72,9 @@ pub fn ellipse_arc(
     start: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
-    let center = numbers("center", &center)?;
-    let center = center.as_slice();
-    let axis_x = numbers("axisX", &axis_x)?;
-    let axis_x = axis_x.as_slice();
-    let axis_y = numbers("axisY", &axis_y)?;
-    let axis_y = axis_y.as_slice();
+    let center = &*numbers("center", &center)?;
+    let axis_x = &*numbers("axisX", &axis_x)?;
+    let axis_y = &*numbers("axisY", &axis_y)?;
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
         return Err(Error::Mismatch {
             message: format!(
@@ -114,8 +111,7 @@ pub fn ellipse_arc(
 pub fn circular_arc_bezier(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
 ) -> Result<JsBezierCurve, JsError> {
-    let points = numbers("points", &points)?;
-    let points = points.as_slice();
+    let points = &*numbers("points", &points)?;
     let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
     match pts.as_slice() {
         [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
@@ -169,9 +165,7 @@ impl JsBezierCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
     ) -> Result<JsBezierCurve, JsError> {
-        let m = numbers("m", &m)?;
-        let m = m.as_slice();
-        let m = matrix(m)?;
+        let m = matrix(&numbers("m", &m)?)?;
         Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
             self.curve_2d("projectiveMap")?,
             &m,
@@ -187,9 +181,7 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
     ) -> Result<JsBSplineCurve, JsError> {
-        let m = numbers("m", &m)?;
-        let m = m.as_slice();
-        let m = matrix(m)?;
+        let m = matrix(&numbers("m", &m)?)?;
         Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(
             self.curve_2d("projectiveMap")?,
             &m,

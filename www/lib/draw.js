@@ -41,17 +41,29 @@ function shiftInside(start, size, limit) {
   return over > 0 ? -Math.min(over, start - LABEL_MARGIN) : 0;
 }
 
+/** Scratch result of `keepLabelInside` (drawing allocates nothing per label). */
+const labelAt = [0, 0];
+
 /**
- * Where to draw a label of `width` × `height` CSS px anchored at (x, y) so that the frame's
- * edge never cuts it: a label whose anchor lies in the frame is moved inside (a label wider
- * than the frame keeps its left end in). An anchor outside the frame keeps its label where it
- * is, so no label stands at the edge for a point that is not shown.
+ * Where renderer `r` draws `string` anchored at (x, y) so that the frame's edge never cuts it:
+ * a label whose anchor lies in the frame is moved inside (a label wider than the frame keeps
+ * its left end in). An anchor outside the frame keeps its label where it is, so no label stands
+ * at the edge for a point that is not shown. Only labels near an edge are measured: no glyph is
+ * wider than 1 em, so one farther than `length` em from the sides cannot cross them.
+ * Returns a scratch `[x, y]`, overwritten by the next call.
  */
-function labelPosition(x, y, width, height, align, baseline, frameWidth, frameHeight) {
-  if (!(x >= 0 && x <= frameWidth && y >= 0 && y <= frameHeight)) return [x, y];
-  const dx = shiftInside(x - width * (ALIGN_LEFT[align] ?? 0), width, frameWidth);
-  const dy = shiftInside(y - height * (BASELINE_ABOVE[baseline] ?? 0.5), height, frameHeight);
-  return [x + dx, y + dy];
+function keepLabelInside(r, string, style, x, y, align, baseline) {
+  labelAt[0] = x;
+  labelAt[1] = y;
+  const { width: frameWidth, height: frameHeight } = r;
+  if (!(x >= 0 && x <= frameWidth && y >= 0 && y <= frameHeight)) return labelAt;
+  const height = style.size * r.scale;
+  const reach = string.length * height + LABEL_MARGIN;
+  if (x >= reach && x <= frameWidth - reach && y >= height + LABEL_MARGIN && y <= frameHeight - height - LABEL_MARGIN) return labelAt;
+  const width = r.measure(string, style);
+  labelAt[0] += shiftInside(x - width * (ALIGN_LEFT[align] ?? 0), width, frameWidth);
+  labelAt[1] += shiftInside(y - height * (BASELINE_ABOVE[baseline] ?? 0.5), height, frameHeight);
+  return labelAt;
 }
 
 /** The CSS font shorthand for a text style at a given scale. */
@@ -141,14 +153,14 @@ export class CanvasRenderer {
    * Draws `string` at (x, y). `align` is "left" | "center" | "right", `baseline`
    * "middle" | "top" | "bottom" | "alphabetic". A halo in the background colour keeps the
    * label readable where it crosses a line; a label of a point in the frame is kept inside it
-   * (see `labelPosition`).
+   * (see `keepLabelInside`).
    */
   text(string, x, y, style, align = "left", baseline = "middle") {
     const c = this.context;
     c.font = this._font(style);
     c.textAlign = align;
     c.textBaseline = baseline;
-    [x, y] = labelPosition(x, y, c.measureText(string).width, style.size * this.scale, align, baseline, this.width, this.height);
+    [x, y] = keepLabelInside(this, string, style, x, y, align, baseline);
     if (style.halo) {
       c.strokeStyle = style.halo;
       c.lineWidth = HALO_WIDTH * this.scale;
@@ -307,7 +319,7 @@ export class SvgRecorder {
   }
 
   text(string, x, y, style, align = "left", baseline = "middle") {
-    [x, y] = labelPosition(x, y, this.measure(string, style), style.size * this.scale, align, baseline, this.width, this.height);
+    [x, y] = keepLabelInside(this, string, style, x, y, align, baseline);
     const attrs = [
       `x="${num(x)}"`,
       `y="${num(y)}"`,
