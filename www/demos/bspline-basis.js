@@ -526,6 +526,14 @@ export function mount(container, initialState, ctx) {
     for (let i = 0; i <= n; i++) if (i !== hi) drawGraph(r, basis, i, SAMPLES, sampleX, py, theme.basisStroke[i % cycle]);
     if (hi >= 0) drawGraph(r, basis, hi, SAMPLES, sampleX, py, theme.basisHover[hi % cycle]);
 
+    // The marker at u, under the names (their halo keeps them readable where it crosses), with
+    // the values N_{i,p}(u) as dots on top.
+    const mx = ruler.px(work.u);
+    r.beginPath();
+    r.moveTo(mx, plot.top + 18 * r.scale);
+    r.lineTo(mx, plot.y0);
+    r.paint(theme.marker);
+
     // Names at the peaks.
     if (n + 1 <= NAME_LABELS_MAX) {
       for (let i = 0; i <= n; i++) {
@@ -537,12 +545,6 @@ export function mount(container, initialState, ctx) {
       }
     }
 
-    // The marker at u, with the values N_{i,p}(u) as dots.
-    const mx = ruler.px(work.u);
-    r.beginPath();
-    r.moveTo(mx, plot.top + 18 * r.scale);
-    r.lineTo(mx, plot.y0);
-    r.paint(theme.marker);
     for (let i = 0; i <= n; i++) if (values[i] > 0) r.point(mx, py(values[i]), theme.basisPoint[i % cycle]);
     const markerAlign = mx < plot.x0 + 40 * r.scale ? "left" : mx > plot.x1 - 40 * r.scale ? "right" : "center";
     r.text(markerLabel, mx, plot.top + 2 * r.scale, theme.labelPoint, markerAlign, "top");

@@ -70,6 +70,8 @@ const SHOWN_DIGITS = 3;
 const BAND_ALPHA = 0.6;
 /** Position of the segment count drawn in the figure's corner, CSS px from the top left. */
 const COUNT_LABEL_INSET = 12;
+/** Height of the band kept free for the count above the world window, CSS px at scale 1. */
+const COUNT_BAND_PX = 34;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -116,7 +118,16 @@ export function mount(container, initialState, ctx) {
   const bandStyle = { stroke: "", strokeAlpha: BAND_ALPHA, width: 1, join: "round", cap: "round" };
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points) });
+  // The View may ask for its insets while it is being built, before `view` is assigned.
+  let viewReady = false;
+  const insetScratch = [0, 0, 0, 0];
+  /** The count's band above the world window, taller in lecture mode (no allocation). */
+  const insets = () => {
+    insetScratch[0] = COUNT_BAND_PX * (viewReady ? view.renderer.scale : 1);
+    return insetScratch;
+  };
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
+  viewReady = true;
   const handles = new Handles(view, {
     ...pointHandles(() => work.points, (i, xy) => {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging

@@ -462,14 +462,12 @@ export function mount(container, initialState, ctx) {
     }));
 
     const row = (k) => `${fmt(m[3 * k])} & ${fmt(m[3 * k + 1])} & ${fmt(m[3 * k + 2])}`;
-    const products = [];
-    for (let i = 0; i < POINTS; i++) {
-      const [x, y] = work.points[i];
-      products.push(`${weightText(work.weights[i])}\\,(${fmt(m[6])}\\cdot ${fmt(x)} + ${fmt(m[7])}\\cdot ${fmt(y)} + 1)`);
-    }
+    // One worked product (for P₀) keeps the line inside the panel; the next line lists them all.
+    const [x0, y0] = work.points[0];
+    const product0 = `${weightText(work.weights[0])}\\,(${fmt(m[6])}\\cdot ${fmt(x0)} + ${fmt(m[7])}\\cdot ${fmt(y0)} + 1) = ${mw[0]}`;
     formula.set([
       `H = \\begin{pmatrix} ${row(0)} \\\\ ${row(1)} \\\\ ${row(2)} \\end{pmatrix},\\qquad (w_iP_i,\\ w_i) \\;\\mapsto\\; H\\,(w_ix_i,\\ w_iy_i,\\ w_i)^{\\mathsf T} = (w'_iP'_i,\\ w'_i)`,
-      `w'_i = w_i\\,(h_{31}x_i + h_{32}y_i + h_{33}):\\quad ${products.slice(0, 2).join(",\\ ")},\\ \\dots`,
+      `w'_i = w_i\\,(h_{31}x_i + h_{32}y_i + h_{33}):\\qquad w'_0 = ${product0}`,
       `(w'_0, \\dots, w'_{${POINTS - 1}}) = (${mw.join(",\\ ")})\\quad\\text{(affine map: } h_{31} = h_{32} = 0 \\text{, weights unchanged)}`,
       `\\max_t \\lVert (a) - (b) \\rVert = ${texNumber(gapAB)} \\quad\\text{(invariant)},\\qquad \\max \\operatorname{dist}\\big((c), (a)\\big) = ${texNumber(gapAC)} \\quad\\text{(weights ignored)}`,
     ]);

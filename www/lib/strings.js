@@ -219,7 +219,7 @@ const EN = {
   "flattening.formula.whole": "whole curve:",
   "flattening.formula.flat": "flat: one segment",
   "flattening.formula.split": "split",
-  "flattening.formula.until": "pieces are split until the test holds for each, then drawn as their chords:",
+  "flattening.formula.until": "split until each piece passes, then draw the chords:",
   "flattening.formula.segments": "segments",
   "flattening.whatYouSee":
     "The blue cubic is drawn as the orange polyline that the library returns for the tolerance ε: every point of the curve lies within ε of it, so the curve never leaves the grey band of width 2ε. The test is the one of the Greek notes (section 2 of the syllabus, “adaptive drawing”): a piece is flat enough when its inner control points are within ε of the chord P₀P₃; otherwise the piece is cut shorter and tested again (the library halves or doubles each piece's parameter step until the test brackets, so it needs few segments). Where the curve bends the pieces are short, where it is nearly straight one long chord suffices, and halving ε multiplies the number of segments by about √2.",
@@ -853,7 +853,7 @@ const EN = {
   "projective.notPositive": "field “weights”: {name} = {value} is refused; weights must be > 0",
   "projective.weightRange": "field “weights”: {name} must be between {min} and {max}, got {value}",
   "projective.degenerate": "field “corners”: the four corners do not define a perspective map (three of them on a line?)",
-  "projective.weightsLegend": "Weights of the original curve (log scale)",
+  "projective.weightsLegend": "Original weights (log scale)",
   "projective.weightLabel": "Weight {name} of {point}",
   "projective.weightInput": "Weight {name} (a number between 0.1 and 10)",
   "projective.badWeight": "weight {name} = “{value}” refused: a weight must be > 0 (here between {min} and {max})",
