@@ -5,7 +5,7 @@
  * validated and, if bad, reported while the last good picture stays.
  */
 import { demos, findDemo } from "./demos/index.js";
-import { loadWasm } from "./lib/wasm.js";
+import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { parseHash, buildHash, decodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
@@ -183,7 +183,7 @@ async function start() {
     sl = await loadWasm();
     showAppStatus("");
   } catch (err) {
-    showAppStatus(t("app.wasmFailed", { message: err.message }), "error");
+    showAppStatus(loadFailureMessage(err), "error");
   }
   await route(sl);
   window.addEventListener("hashchange", () => {

@@ -7,7 +7,7 @@
  * an attribute later updates the figure. `view="xmin ymin xmax ymax"` fixes the window.
  */
 import { findDemo } from "./demos/index.js";
-import { loadWasm } from "./lib/wasm.js";
+import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { stateFromAttributes } from "./lib/attributes.js";
 import { buildHash } from "./lib/state.js";
@@ -71,7 +71,7 @@ class SplineLabElement extends HTMLElement {
     try {
       sl = await loadWasm();
     } catch (err) {
-      return this._fail(t("app.wasmFailed", { message: err.message }));
+      return this._fail(loadFailureMessage(err));
     }
     if (!this.isConnected) return;
     let state = validateState(demo, structuredClone(demo.defaultState));

@@ -529,6 +529,33 @@ try {
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
+
+  await test("a browser without WebAssembly SIMD is told so, on the page and in embeds", async () => {
+    // The package is built with SIMD128; an old browser's WebAssembly.validate refuses the probe.
+    const old = await context.newPage();
+    const oldErrors = watchErrors(old);
+    try {
+      await old.addInitScript(() => {
+        WebAssembly.validate = () => false;
+      });
+      const noSimd = /needs WebAssembly SIMD \(Chrome or Edge 91, Firefox 89, Safari 16\.4/;
+      await old.goto(`${base}/index.html#demo=de-casteljau`);
+      await old.waitForFunction(() => document.querySelector(".app-status")?.dataset.kind === "error");
+      const status = await old.locator(".app-status").textContent();
+      assert(noSimd.test(status), `app status: ${status}`);
+      assert(!status.includes("make build"), `no build advice for a browser that is too old: ${status}`);
+      await old.goto(`${base}/embed-example.html`);
+      await old.locator("spline-lab#worked .sl-embed-error").waitFor();
+      const embedText = await old.locator("spline-lab#worked .sl-embed-error").textContent();
+      assert(noSimd.test(embedText), `embed: ${embedText}`);
+      const wasmLoads = await old.evaluate(() => performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length);
+      equal(wasmLoads, 0, "the wasm is not fetched");
+      const problems = oldErrors.take().filter((p) => !p.includes("Failed to load resource"));
+      assert(problems.length === 0, problems.join("\n"));
+    } finally {
+      await old.close();
+    }
+  });
 } catch (err) {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);

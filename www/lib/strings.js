@@ -13,6 +13,7 @@ const EN = {
   "app.tagline": "Parametric curves you can drag: every algorithm of the course as a live figure.",
   "app.backToGallery": "← All demos",
   "app.loading": "Loading the curve library…",
+  "app.noSimd": "This browser cannot run the curve library: it needs WebAssembly SIMD (Chrome or Edge 91, Firefox 89, Safari 16.4 or newer).",
   "app.wasmFailed": "The curve library could not be loaded ({message}). Run `make build`, then reload.",
   "app.unknownDemo": "There is no demo called “{id}”. Showing the gallery.",
   "app.footer": "All computation runs in your browser (Rust compiled to WebAssembly).",

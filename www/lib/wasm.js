@@ -10,9 +10,22 @@ const PACKAGE_URL = new URL("../pkg/splinelab.js", import.meta.url);
 
 let loading = null;
 
+/**
+ * The smallest module using a SIMD128 instruction (`() -> v128`: `i32.const 0`,
+ * `i8x16.splat`, `i8x16.popcnt`). The package is built with SIMD128 (.cargo/config.toml), which
+ * browsers run since Chrome 91, Firefox 89 and Safari 16.4; an older one cannot compile it.
+ */
+const SIMD_PROBE = new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11]);
+
+/** Set on the Error `loadWasm` rejects with when the browser has no WebAssembly SIMD. */
+export const NO_SIMD = "no-simd";
+
 /** Resolves to the initialised package namespace (`sl.BezierCurve`, `sl.bernstein`, …). */
 export function loadWasm() {
   loading ??= (async () => {
+    if (typeof WebAssembly !== "object" || !WebAssembly.validate(SIMD_PROBE)) {
+      throw Object.assign(new Error(t("app.noSimd")), { code: NO_SIMD });
+    }
     const module = await import(PACKAGE_URL.href);
     await module.default(); // wasm-bindgen init: fetches splinelab_bg.wasm next to splinelab.js
     return module;
@@ -21,6 +34,11 @@ export function loadWasm() {
     throw err;
   });
   return loading;
+}
+
+/** What to tell the reader when `loadWasm` failed with `err`. */
+export function loadFailureMessage(err) {
+  return err?.code === NO_SIMD ? err.message : t("app.wasmFailed", { message: err?.message ?? String(err) });
 }
 
 /**
