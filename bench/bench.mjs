@@ -747,7 +747,7 @@ const dragLines = (label, d) => {
   if (!d) return;
   if (d.error) return lines.push(`    ${label}: failed: ${d.error}`);
   for (const c of d.contenders) {
-    lines.push(`    ${pad(label, 9)} ${pad(c.lib, 12)} ${pad(c.method, 58)} median ${c.medianMs.toFixed(2)} ms, p95 ${c.p95Ms.toFixed(2)} ms, max ${c.maxMs.toFixed(2)} ms`);
+    lines.push(`    ${pad(label, 9)} ${pad(c.lib, 12)} ${pad(c.method, 70)} median ${c.medianMs.toFixed(2)} ms, p95 ${c.p95Ms.toFixed(2)} ms, max ${c.maxMs.toFixed(2)} ms`);
   }
   lines.push(`    ${pad(label, 9)} agreement after the last frame: points ${fmtDiff(d.agreement.pointMaxDiff)}, basis ${fmtDiff(d.agreement.basisMaxDiff)}`);
 };

@@ -3,9 +3,9 @@
 //
 // A frame = move control point i (setControlPoint), resample the curve at 4000 equally spaced u,
 // and the basis strip: 200 u equally spaced over the support [u_i, u_{i+p+1}] of the dragged
-// point's basis function, every basis function at each (splinelab: basis(u), which returns all
-// n + 1 values; the baseline computes the p + 1 non-zero ones). A second splinelab variant draws
-// the strip with one basisCurves(200) call (all 1000 functions over the whole domain).
+// point's basis function, every basis function at each. splinelab draws the strip three ways:
+// span(u) + basisNonZero(u) (the p + 1 non-zero values, as the baseline computes them), basis(u)
+// (all n + 1 values), and one basisCurves(200) call (all 1000 functions over the whole domain).
 import { bspline, uniformParams } from "./inputs.mjs";
 import { basisStrip, deBoorSample, prepareBSpline } from "./baseline.mjs";
 
@@ -39,6 +39,17 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
     slPoints = curve.sampleUniform(DRAG.samples);
     for (let s = 0; s < DRAG.strip; s++) slStrip[s] = curve.basis(stripUs[s]);
   };
+  const curve3 = new sl.BSplineCurve(input.points, 2, p, knots, input.weights);
+  const nonZeroStrip = [];
+  const nonZeroSpans = new Int32Array(DRAG.strip);
+  const splinelabNonZero = (f) => {
+    curve3.setControlPoint(i, position(f));
+    curve3.sampleUniform(DRAG.samples);
+    for (let s = 0; s < DRAG.strip; s++) {
+      nonZeroSpans[s] = curve3.span(stripUs[s]);
+      nonZeroStrip[s] = curve3.basisNonZero(stripUs[s]);
+    }
+  };
   const splinelabCurves = (f) => {
     curve2.setControlPoint(i, position(f));
     curve2.sampleUniform(DRAG.samples);
@@ -61,6 +72,7 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
   };
 
   const contenders = [
+    { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + 200× span(u), basisNonZero(u)", run: splinelabNonZero, times: [] },
     { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + 200× basis(u)", run: splinelab, times: [] },
     { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + basisCurves(200)", run: splinelabCurves, times: [] },
     { lib: "js-baseline", method: "in-place point + de Boor ×4000 + 200× A2.2 basis", run: baseline, times: [] },
@@ -83,10 +95,14 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
     for (let j = 0; j <= p; j++) {
       const v = slStrip[s][baseSpans[s] - p + j];
       basisDiff = Math.max(basisDiff, Math.abs(v - baseStrip[s * (p + 1) + j]));
+      // The sparse call: the same span (else Infinity) and the same p + 1 values.
+      const sparse = Math.abs(nonZeroStrip[s][j] - baseStrip[s * (p + 1) + j]);
+      basisDiff = Math.max(basisDiff, nonZeroSpans[s] === baseSpans[s] ? sparse : Infinity);
     }
   }
   curve.free();
   curve2.free();
+  curve3.free();
   return {
     contenders: contenders.map(({ lib, method, times }) => ({ lib, method, ...stats(times) })),
     agreement: { pointMaxDiff: pointDiff, basisMaxDiff: basisDiff },

@@ -67,6 +67,34 @@ fn croatian_example_basis_matches_the_corrected_polynomials() {
 }
 
 #[test]
+fn non_zero_basis_is_the_span_and_its_p_plus_1_polynomials() {
+    let c = croatian();
+    // The span of u in U = [0,0,0,1,2,3,4,4,4]: floor(u) + 2, and the last span (k = 5) at u = 4.
+    for (u, span) in [
+        (0.0, 2),
+        (0.5, 2),
+        (1.0, 3),
+        (2.5, 4),
+        (3.0, 5),
+        (3.99, 5),
+        (4.0, 5),
+    ] {
+        let (k, values) = c.basis_non_zero(u).unwrap();
+        assert_eq!(k, span, "span of {u}");
+        assert_eq!(values.len(), 3, "p + 1 values at {u}");
+        for (j, &v) in values.iter().enumerate() {
+            let i = k - 2 + j;
+            assert_close(v, croatian_basis(i, u), 1e-14, &format!("N_{i},2({u})"));
+        }
+    }
+    // The syllabus' worked values at u = 5/2: 1/8, 3/4, 1/8 for N_2, N_3, N_4.
+    let (_, values) = c.basis_non_zero(2.5).unwrap();
+    assert_eq!(values, vec![0.125, 0.75, 0.125]);
+    let err = c.basis_non_zero(4.5).unwrap_err().to_string();
+    assert!(err.contains("4.5") && err.contains("[0, 4]"), "{err}");
+}
+
+#[test]
 fn segment_matrices_match_the_notes() {
     let c = croatian();
     // Global form on [1, 2]: columns N_{1,2}, N_{2,2}, N_{3,2} = (2−u)²/2, (−2u²+6u−3)/2, (u−1)²/2.

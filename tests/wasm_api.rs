@@ -314,6 +314,11 @@ fn bspline_boundary() {
     assert_eq!(c.domain(), vec![0.0, 4.0]);
     assert_eq!(c.de_boor(1.5).unwrap().len(), 6 * 2);
     assert_eq!(c.basis(1.5).unwrap().len(), 6);
+    assert_eq!(c.span(1.5).unwrap(), 3);
+    assert_eq!(c.span(4.0).unwrap(), 5);
+    assert_eq!(c.basis_non_zero(2.5).unwrap(), vec![0.125, 0.75, 0.125]);
+    assert!(message(c.span(f64::NAN)).contains("NaN"));
+    assert!(message(c.basis_non_zero(-1.0)).contains("-1"));
     assert_eq!(c.to_bezier().unwrap().len(), 4);
     assert_eq!(c.insert_knot(1.5, None).unwrap().knots().len(), 10);
     assert_eq!(

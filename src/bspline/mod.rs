@@ -367,6 +367,19 @@ impl<C: Cartesian> BSplineCurve<C> {
 
     /// `N_{i,p}(u)` for every `i = 0..=n` (zero outside the span's `p + 1`).
     pub fn basis(&self, u: f64) -> Result<Vec<f64>> {
+        let (k, local) = self.basis_non_zero(u)?;
+        let p = self.degree();
+        let mut all = vec![0.0; self.homogeneous.len()];
+        if let Some(slot) = all.get_mut(k - p..=k) {
+            slot.copy_from_slice(&local);
+        }
+        Ok(all)
+    }
+
+    /// The span `k` of `u` (`u_k ≤ u < u_{k+1}`, a non-empty span; `u = b` is in the last one)
+    /// and the `p + 1` basis functions that can be non-zero there, `N_{k−p,p}(u) … N_{k,p}(u)`
+    /// (NURBS Book A2.1 and A2.2; they sum to 1). O(p²) whatever the number of points.
+    pub fn basis_non_zero(&self, u: f64) -> Result<(usize, Vec<f64>)> {
         let u = self.knots.check_parameter(u)?;
         let p = self.degree();
         let k = self.knots.span(u);
@@ -380,9 +393,7 @@ impl<C: Cartesian> BSplineCurve<C> {
             &mut BasisScratch::default(),
             None,
         );
-        let mut all = vec![0.0; self.homogeneous.len()];
-        all[k - p..=k].copy_from_slice(&local);
-        Ok(all)
+        Ok((k, local))
     }
 
     /// The triangular table of the Cox–de Boor recurrence at `u`: level `r = 0..=p` holds

@@ -144,7 +144,8 @@ impl JsBSplineCurve {
         with_curve!(&self.inner, c => c.knots().spans().map(|k| k as u32).collect())
     }
 
-    /// The span index k of u.
+    /// The span index k of u: `u_k ≤ u < u_{k+1}` with `u_k < u_{k+1}` (u at the end of the
+    /// domain is in the last non-empty span); `basisNonZero(u)` holds `N_{k−p,p} … N_{k,p}`.
     pub fn span(&self, u: f64) -> Result<usize, JsError> {
         Ok(with_curve!(&self.inner, c => c.span(u))?)
     }
@@ -232,6 +233,13 @@ impl JsBSplineCurve {
     /// `N_{i,p}(u)` for i = 0..n.
     pub fn basis(&self, u: f64) -> Result<Vec<f64>, JsError> {
         Ok(with_curve!(&self.inner, c => c.basis(u))?)
+    }
+
+    /// The p + 1 basis functions that can be non-zero at u, `N_{k−p,p}(u) … N_{k,p}(u)` with
+    /// `k = span(u)`: what `basis(u)` holds at indices k − p … k, without the n − p zeros.
+    #[wasm_bindgen(js_name = basisNonZero)]
+    pub fn basis_non_zero(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => c.basis_non_zero(u))?.1)
     }
 
     /// Every basis function at `count` equally spaced u over the domain, i-major:
