@@ -17,9 +17,11 @@ pub mod bspline;
 pub mod error;
 pub mod geom;
 pub mod rational;
+pub mod surface;
 pub mod wasm;
 
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;
 pub use error::{Error, Result};
 pub use glam::{DVec2, DVec3, DVec4};
+pub use surface::BSplineSurface;

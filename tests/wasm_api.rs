@@ -479,3 +479,69 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
     );
     assert!(message(c.sample_view(arr(&[5.0]))).contains("outside the domain [0, 4]"));
 }
+
+#[test]
+fn bspline_surface_from_js() {
+    use splinelab::wasm::JsBSplineSurface;
+    // A bilinear patch over the unit square with z = x·y (degree 1 × 1: S(u, v) = (u, v, uv)).
+    let points = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    let knots = || arr(&[0.0, 0.0, 1.0, 1.0]);
+    let mut s = JsBSplineSurface::new(
+        arr(&points),
+        2.0,
+        2.0,
+        1.0,
+        1.0,
+        knots(),
+        knots(),
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
+    assert_eq!(
+        (s.rows(), s.cols(), s.degree_u(), s.degree_v(), s.rational()),
+        (2, 2, 1, 1, false)
+    );
+    assert_eq!(s.domain_v(), vec![0.0, 1.0]);
+    assert_eq!(s.control_points(), points.to_vec());
+    assert_eq!(s.evaluate(0.5, 0.25).unwrap(), vec![0.5, 0.25, 0.125]);
+    assert_eq!(
+        s.derivative(0.5, 0.25, 1.0, 1.0).unwrap(),
+        vec![0.0, 0.0, 1.0]
+    );
+    let grid = s
+        .sample_grid(arr(&[0.0, 0.5]), arr(&[0.25, 1.0, 0.5]))
+        .unwrap();
+    assert_eq!(grid.len(), 2 * 3 * 3);
+    assert_eq!(grid[3 * 3..3 * 4].to_vec(), vec![0.5, 0.25, 0.125]);
+    let view = s
+        .sample_grid_view(arr(&[0.0, 0.5]), arr(&[0.25, 1.0, 0.5]))
+        .unwrap();
+    assert_eq!(view.to_vec(), grid);
+    // Arguments are checked like every other call's.
+    assert!(message(s.derivative(0.5, 0.5, 1.5, 0.0)).contains("du must be a whole number"));
+    assert!(message(s.evaluate(0.5, -1.0)).contains("v = -1"));
+    assert!(message(s.sample_grid(JsValue::NULL, arr(&[0.5])))
+        .contains("us must be an array of numbers"));
+    assert!(message(JsBSplineSurface::new(
+        arr(&points),
+        2.0,
+        2.5,
+        1.0,
+        1.0,
+        knots(),
+        knots(),
+        JsValue::UNDEFINED
+    ))
+    .contains("cols must be a whole number"));
+    assert!(message(JsBSplineSurface::new(
+        arr(&points),
+        2.0,
+        2.0,
+        1.0,
+        1.0,
+        knots(),
+        arr(&[0.0, 1.0]),
+        JsValue::UNDEFINED
+    ))
+    .starts_with("knotsV: "));
+}

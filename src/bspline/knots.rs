@@ -96,11 +96,17 @@ impl KnotVector {
 
     /// Checks `u` lies in the domain (naming the range otherwise).
     pub fn check_parameter(&self, u: f64) -> Result<f64> {
-        check_finite(|| "u".into(), u)?;
+        self.check_named("u", u)
+    }
+
+    /// As [`KnotVector::check_parameter`], the parameter called `name` in the error (`"v"` for a
+    /// surface's second direction).
+    pub fn check_named(&self, name: &'static str, u: f64) -> Result<f64> {
+        check_finite(|| name.into(), u)?;
         let (a, b) = self.domain();
         if u < a || u > b {
             return Err(Error::ParameterOutOfRange {
-                name: "u",
+                name,
                 value: u,
                 min: a,
                 max: b,

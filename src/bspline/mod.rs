@@ -16,7 +16,7 @@
 //! assert_eq!(c.evaluate(0.25).unwrap(), DVec2::new(29.0 / 16.0, 23.0 / 16.0));
 //! ```
 
-mod basis;
+pub(crate) mod basis;
 mod construct;
 mod de_boor;
 mod insert;
@@ -555,7 +555,7 @@ impl<C: Cartesian> BSplineCurve<C> {
 }
 
 /// Checks the degree against the number of points: `1 <= p <= n` and `p <= MAX_DEGREE`.
-fn check_degree(degree: usize, points: usize) -> Result<()> {
+pub(crate) fn check_degree(degree: usize, points: usize) -> Result<()> {
     if degree == 0 {
         return Err(Error::Mismatch {
             message: "degree must be at least 1, got 0".into(),

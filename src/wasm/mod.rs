@@ -45,9 +45,11 @@ macro_rules! impl_class_curve {
 pub mod bezier;
 pub mod bspline;
 pub mod rational;
+pub mod surface;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
+pub use surface::JsBSplineSurface;
 
 use crate::error::Error;
 use js_sys::Float64Array;

@@ -1,0 +1,447 @@
+//! Tensor-product B-spline and NURBS surfaces (syllabus §5):
+//!
+//! `S(u, v) = Σ_i Σ_j N_{i,p}(u) N_{j,q}(v) w_ij P_ij / Σ_i Σ_j N_{i,p}(u) N_{j,q}(v) w_ij`
+//!
+//! over the control net `P_ij` (`i = 0..rows−1` along u, `j = 0..cols−1` along v) with knot
+//! vectors `U` (degree `p`) and `V` (degree `q`), evaluated on homogeneous points
+//! `(w P, w)` with one division at the end, on the domain `[u_p, u_rows] × [v_q, v_cols]`.
+//! Points are 3D and stored row-major: point `(i, j)` is number `i·cols + j`.
+
+use crate::bspline::basis::{basis_derivatives, basis_functions, BasisScratch};
+use crate::bspline::{check_degree, KnotVector};
+use crate::error::{Error, Result};
+use crate::geom::{check_all_finite, check_weights, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
+use glam::{DVec3, DVec4};
+
+/// A polynomial or rational (NURBS) tensor-product B-spline surface in 3D.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineSurface {
+    /// Homogeneous control net `(w·x, w·y, w·z, w)`, row-major.
+    net: Vec<DVec4>,
+    rows: usize,
+    cols: usize,
+    rational: bool,
+    knots_u: KnotVector,
+    knots_v: KnotVector,
+}
+
+/// Prefixes the message of a knot-vector error with the argument it concerns.
+fn in_argument(name: &str, err: Error) -> Error {
+    Error::Mismatch {
+        message: format!("{name}: {err}"),
+    }
+}
+
+impl BSplineSurface {
+    /// A surface from flat coordinates `[x00, y00, z00, x01, …]` (row-major, `rows·cols·3`
+    /// numbers), degrees `p` (along u, the rows) and `q` (along v, the columns), knot vectors of
+    /// `rows + p + 1` and `cols + q + 1` values, and optional weights (`rows·cols`, all > 0).
+    ///
+    /// # Errors
+    /// In this order: the coordinate count, a non-finite coordinate, a degree of 0 or one that
+    /// needs more rows or columns than given, the knot vectors (as [`KnotVector::new`], the
+    /// message prefixed with `knotsU` or `knotsV`), then the weights.
+    #[allow(clippy::too_many_arguments)]
+    pub fn from_flat(
+        coords: &[f64],
+        rows: usize,
+        cols: usize,
+        degree_u: usize,
+        degree_v: usize,
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        weights: Option<&[f64]>,
+    ) -> Result<Self> {
+        let count =
+            rows.checked_mul(cols)
+                .filter(|&c| c <= MAX_SAMPLES)
+                .ok_or(Error::TooLarge {
+                    what: "rows·cols",
+                    value: rows.saturating_mul(cols),
+                    max: MAX_SAMPLES,
+                })?;
+        if coords.len() != 3 * count {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "points must hold rows·cols·3 = {rows}·{cols}·3 = {} coordinates, got {}",
+                    3 * count,
+                    coords.len()
+                ),
+            });
+        }
+        check_all_finite(coords, "coordinate")?;
+        check_degree(degree_u, rows).map_err(|e| in_argument("degreeU (rows along u)", e))?;
+        check_degree(degree_v, cols).map_err(|e| in_argument("degreeV (columns along v)", e))?;
+        let knots_u =
+            KnotVector::new(knots_u, degree_u, rows).map_err(|e| in_argument("knotsU", e))?;
+        let knots_v =
+            KnotVector::new(knots_v, degree_v, cols).map_err(|e| in_argument("knotsV", e))?;
+        if let Some(w) = weights {
+            check_weights(w, count)?;
+        }
+        let net = coords
+            .chunks_exact(3)
+            .enumerate()
+            .map(|(k, c)| {
+                let w = weights.and_then(|w| w.get(k)).copied().unwrap_or(1.0);
+                DVec4::new(w * c[0], w * c[1], w * c[2], w)
+            })
+            .collect();
+        Ok(BSplineSurface {
+            net,
+            rows,
+            cols,
+            rational: weights.is_some_and(|w| w.iter().any(|&wi| wi != 1.0)),
+            knots_u,
+            knots_v,
+        })
+    }
+
+    /// Number of rows of the net (control points along u), `n + 1`.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of columns of the net (control points along v), `m + 1`.
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// Degree `p` along u.
+    pub fn degree_u(&self) -> usize {
+        self.knots_u.degree()
+    }
+
+    /// Degree `q` along v.
+    pub fn degree_v(&self) -> usize {
+        self.knots_v.degree()
+    }
+
+    /// Whether some weight differs from 1.
+    pub fn is_rational(&self) -> bool {
+        self.rational
+    }
+
+    /// The knot vector along u.
+    pub fn knots_u(&self) -> &KnotVector {
+        &self.knots_u
+    }
+
+    /// The knot vector along v.
+    pub fn knots_v(&self) -> &KnotVector {
+        &self.knots_v
+    }
+
+    /// The control points, row-major.
+    pub fn control_points(&self) -> Vec<DVec3> {
+        self.net.iter().map(|h| h.truncate() / h.w).collect()
+    }
+
+    /// The weights, row-major (all 1 for a polynomial surface).
+    pub fn weights(&self) -> Vec<f64> {
+        self.net.iter().map(|h| h.w).collect()
+    }
+
+    /// `(u, v)` checked against the domain; the error names `u` or `v` and the range.
+    fn check_uv(&self, u: f64, v: f64) -> Result<(f64, f64)> {
+        Ok((
+            self.knots_u.check_named("u", u)?,
+            self.knots_v.check_named("v", v)?,
+        ))
+    }
+
+    /// The homogeneous point `Σ Σ N_{i,p}(u) N_{j,q}(v) (w P)_ij` from the non-zero basis
+    /// functions of the spans of `u` and `v` only: `(p + 1)(q + 1)` terms.
+    fn homogeneous_at(&self, u: f64, v: f64) -> DVec4 {
+        let (p, q) = (self.degree_u(), self.degree_v());
+        let (ku, kv) = (self.knots_u.span(u), self.knots_v.span(v));
+        let mut scratch = BasisScratch::default();
+        let (mut nu, mut nv) = (vec![0.0; p + 1], vec![0.0; q + 1]);
+        basis_functions(
+            self.knots_u.as_slice(),
+            ku,
+            u,
+            p,
+            &mut nu,
+            &mut scratch,
+            None,
+        );
+        basis_functions(
+            self.knots_v.as_slice(),
+            kv,
+            v,
+            q,
+            &mut nv,
+            &mut scratch,
+            None,
+        );
+        let mut sum = DVec4::ZERO;
+        for (a, &na) in nu.iter().enumerate() {
+            let row = (ku - p + a) * self.cols + kv - q;
+            let Some(points) = self.net.get(row..row + q + 1) else {
+                continue;
+            };
+            sum += na
+                * points
+                    .iter()
+                    .zip(&nv)
+                    .fold(DVec4::ZERO, |acc, (&h, &nb)| acc + nb * h);
+        }
+        sum
+    }
+
+    /// The point `S(u, v)`.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] or [`Error::ParameterOutOfRange`] for `u` or `v`.
+    pub fn evaluate(&self, u: f64, v: f64) -> Result<DVec3> {
+        let (u, v) = self.check_uv(u, v)?;
+        let h = self.homogeneous_at(u, v);
+        Ok(h.truncate() / h.w)
+    }
+
+    /// All partial derivatives `∂^{k+l} S / ∂u^k ∂v^l` with `k + l ≤ order`, as `skl[k][l]`:
+    /// NURBS Book A3.6 on the homogeneous net (derivatives of the `p + 1` and `q + 1`
+    /// non-zero basis functions, A2.3), then A4.4 for the quotient:
+    /// `S_kl = (A_kl − Σ_{j=1..l} C(l,j) w_0j S_{k,l−j} − Σ_{i=1..k} C(k,i) w_i0 S_{k−i,l}
+    ///          − Σ_{i=1..k} C(k,i) Σ_{j=1..l} C(l,j) w_ij S_{k−i,l−j}) / w`.
+    fn derivatives(&self, u: f64, v: f64, order: usize) -> Vec<Vec<DVec3>> {
+        let (p, q) = (self.degree_u(), self.degree_v());
+        let (ku, kv) = (self.knots_u.span(u), self.knots_v.span(v));
+        let nu = basis_derivatives(self.knots_u.as_slice(), ku, u, p, order.min(p));
+        let nv = basis_derivatives(self.knots_v.as_slice(), kv, v, q, order.min(q));
+        // Homogeneous derivatives A_kl (and w_kl in .w); zero beyond the degrees.
+        let mut h = vec![vec![DVec4::ZERO; order + 1]; order + 1];
+        let mut temp = vec![DVec4::ZERO; q + 1];
+        for (k, nuk) in nu.iter().enumerate() {
+            for (s, t) in temp.iter_mut().enumerate() {
+                *t = nuk.iter().enumerate().fold(DVec4::ZERO, |acc, (r, &n)| {
+                    acc + n * self
+                        .net
+                        .get((ku - p + r) * self.cols + kv - q + s)
+                        .copied()
+                        .unwrap_or(DVec4::ZERO)
+                });
+            }
+            for (l, nvl) in nv.iter().enumerate().take(order + 1 - k) {
+                h[k][l] = nvl
+                    .iter()
+                    .zip(&temp)
+                    .fold(DVec4::ZERO, |acc, (&n, &t)| acc + n * t);
+            }
+        }
+        if !self.rational {
+            // w ≡ 1: the homogeneous derivatives are the derivatives (exactly zero above the
+            // degrees, where the quotient rule would leave rounding noise).
+            return h
+                .iter()
+                .map(|row| row.iter().map(|a| a.truncate()).collect())
+                .collect();
+        }
+        let binomial = |n: usize, r: usize| -> f64 {
+            (1..=r).fold(1.0, |acc, i| acc * (n + 1 - i) as f64 / i as f64)
+        };
+        let w0 = h[0][0].w;
+        let mut s = vec![vec![DVec3::ZERO; order + 1]; order + 1];
+        for k in 0..=order {
+            for l in 0..=order - k {
+                let mut value = h[k][l].truncate();
+                for j in 1..=l {
+                    value -= binomial(l, j) * h[0][j].w * s[k][l - j];
+                }
+                for i in 1..=k {
+                    value -= binomial(k, i) * h[i][0].w * s[k - i][l];
+                    let mut inner = DVec3::ZERO;
+                    for j in 1..=l {
+                        inner += binomial(l, j) * h[i][j].w * s[k - i][l - j];
+                    }
+                    value -= binomial(k, i) * inner;
+                }
+                s[k][l] = value / w0;
+            }
+        }
+        s
+    }
+
+    /// The partial derivative `∂^{du+dv} S / ∂u^du ∂v^dv` at `(u, v)` (`S` itself for 0, 0).
+    /// Orders above the degree give the zero vector on a polynomial surface.
+    ///
+    /// # Errors
+    /// A bad `u` or `v`, and [`Error::TooLarge`] for `du + dv` above
+    /// [`MAX_DERIVATIVE_ORDER`].
+    pub fn derivative(&self, u: f64, v: f64, du: usize, dv: usize) -> Result<DVec3> {
+        let (u, v) = self.check_uv(u, v)?;
+        let order = du.saturating_add(dv);
+        if order > MAX_DERIVATIVE_ORDER {
+            return Err(Error::TooLarge {
+                what: "derivative order du + dv",
+                value: order,
+                max: MAX_DERIVATIVE_ORDER,
+            });
+        }
+        let s = self.derivatives(u, v, order);
+        Ok(s.get(du)
+            .and_then(|row| row.get(dv))
+            .copied()
+            .unwrap_or(DVec3::ZERO))
+    }
+
+    /// The unit normal `(S_u × S_v) / |S_u × S_v|` at `(u, v)`.
+    ///
+    /// Where one partial derivative vanishes — an edge collapsed to a point (a pole, the apex
+    /// of a cone) or a degenerate corner — the normal is the limit from inside the domain: if
+    /// `S_v = 0` along the line `u = const`, then `S_v(u + ε, v) ≈ ε S_uv` and the normal is
+    /// `±S_u × S_uv` (the sign of `ε` that stays in the domain); likewise `±S_uv × S_v` where
+    /// `S_u = 0`.
+    ///
+    /// # Errors
+    /// A bad `u` or `v`, and [`Error::Mismatch`] where even the limit gives no direction: both
+    /// partial derivatives vanish, or they are parallel (a fold).
+    pub fn normal(&self, u: f64, v: f64) -> Result<DVec3> {
+        let (u, v) = self.check_uv(u, v)?;
+        let s = self.derivatives(u, v, 2);
+        let (su, sv, suv) = (s[1][0], s[0][1], s[1][1]);
+        // "Vanishes": rounding of a sum of equal points, far below the other derivative.
+        let tiny = 1e-10 * su.length().max(sv.length());
+        let inward = |at_end: bool| if at_end { -1.0 } else { 1.0 };
+        let (a, b) = if sv.length() <= tiny {
+            (inward(u >= self.knots_u.domain().1) * su, suv)
+        } else if su.length() <= tiny {
+            (inward(v >= self.knots_v.domain().1) * suv, sv)
+        } else {
+            (su, sv)
+        };
+        let cross = a.cross(b);
+        if cross.length() <= 1e-12 * a.length() * b.length() {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
+                    crate::error::Num(u),
+                    crate::error::Num(v)
+                ),
+            });
+        }
+        Ok(cross / cross.length())
+    }
+
+    /// `S(u_a, v_b)` for every `u_a` of `us` and `v_b` of `vs`, u-major (point `a·len(vs) + b`,
+    /// 3 numbers each), into `out` (resized).
+    ///
+    /// The basis along v is computed once per `v_b`; each `u_a` then collapses the u
+    /// direction into one homogeneous curve of `cols` points (`p + 1` rows blended), which is
+    /// evaluated at every `v_b` with `q + 1` terms: per point `4(q + 1)` multiply-adds and one
+    /// division. The same sums as [`BSplineSurface::evaluate`], grouped differently.
+    ///
+    /// # Errors
+    /// A bad value in `us` or `vs` (named by index), and [`Error::TooLarge`] for more than
+    /// [`MAX_SAMPLES`] points.
+    pub fn sample_grid_into(&self, us: &[f64], vs: &[f64], out: &mut Vec<f64>) -> Result<()> {
+        let points = us
+            .len()
+            .checked_mul(vs.len())
+            .filter(|&n| n <= MAX_SAMPLES)
+            .ok_or(Error::TooLarge {
+                what: "grid points us.length·vs.length",
+                value: us.len().saturating_mul(vs.len()),
+                max: MAX_SAMPLES,
+            })?;
+        for (i, &u) in us.iter().enumerate() {
+            self.knots_u
+                .check_named("u", u)
+                .map_err(|e| in_argument(&format!("us[{i}]"), e))?;
+        }
+        for (j, &v) in vs.iter().enumerate() {
+            self.knots_v
+                .check_named("v", v)
+                .map_err(|e| in_argument(&format!("vs[{j}]"), e))?;
+        }
+        out.clear();
+        out.resize(3 * points, 0.0);
+        let (p, q) = (self.degree_u(), self.degree_v());
+        let mut scratch = BasisScratch::default();
+        // The v basis, once: the first column of each span and its q + 1 values.
+        let mut first = Vec::with_capacity(vs.len());
+        let mut table = vec![0.0; vs.len() * (q + 1)];
+        let mut k = q;
+        for (&v, values) in vs.iter().zip(table.chunks_exact_mut(q + 1)) {
+            k = self.knots_v.span_from(v, k);
+            basis_functions(self.knots_v.as_slice(), k, v, q, values, &mut scratch, None);
+            first.push(k - q);
+        }
+        let mut nu = vec![0.0; p + 1];
+        let mut row = vec![DVec4::ZERO; self.cols];
+        let mut ku = p;
+        for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(3 * vs.len().max(1))) {
+            ku = self.knots_u.span_from(u, ku);
+            basis_functions(
+                self.knots_u.as_slice(),
+                ku,
+                u,
+                p,
+                &mut nu,
+                &mut scratch,
+                None,
+            );
+            row.fill(DVec4::ZERO);
+            for (a, &na) in nu.iter().enumerate() {
+                let start = (ku - p + a) * self.cols;
+                if let Some(net_row) = self.net.get(start..start + self.cols) {
+                    for (r, &h) in row.iter_mut().zip(net_row) {
+                        *r += na * h;
+                    }
+                }
+            }
+            // Degrees 1–5 get a kernel whose inner loop the compiler unrolls.
+            match q + 1 {
+                2 => grid_row::<2>(&row, &first, &table, out_row),
+                3 => grid_row::<3>(&row, &first, &table, out_row),
+                4 => grid_row::<4>(&row, &first, &table, out_row),
+                5 => grid_row::<5>(&row, &first, &table, out_row),
+                6 => grid_row::<6>(&row, &first, &table, out_row),
+                _ => grid_row_any(q + 1, &row, &first, &table, out_row),
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One row of a grid: the homogeneous curve `row` (the u direction collapsed) at every v, from
+/// the first column `first[b]` of each v's span and its `Q1 = q + 1` basis values in `table`,
+/// projected into `out` (3 numbers per v).
+#[inline]
+fn grid_row<const Q1: usize>(row: &[DVec4], first: &[usize], table: &[f64], out: &mut [f64]) {
+    for ((&j0, values), xyz) in first
+        .iter()
+        .zip(table.chunks_exact(Q1))
+        .zip(out.chunks_exact_mut(3))
+    {
+        let (Some(points), Ok(values)) = (row.get(j0..j0 + Q1), <&[f64; Q1]>::try_from(values))
+        else {
+            continue;
+        };
+        let mut h = DVec4::ZERO;
+        for b in 0..Q1 {
+            h += values[b] * points[b];
+        }
+        let inv = 1.0 / h.w;
+        xyz.copy_from_slice(&[h.x * inv, h.y * inv, h.z * inv]);
+    }
+}
+
+/// [`grid_row`] for any `q + 1`.
+fn grid_row_any(q1: usize, row: &[DVec4], first: &[usize], table: &[f64], out: &mut [f64]) {
+    for ((&j0, values), xyz) in first
+        .iter()
+        .zip(table.chunks_exact(q1))
+        .zip(out.chunks_exact_mut(3))
+    {
+        let h = row
+            .get(j0..j0 + q1)
+            .unwrap_or(&[])
+            .iter()
+            .zip(values)
+            .fold(DVec4::ZERO, |acc, (&c, &n)| acc + n * c);
+        let inv = 1.0 / h.w;
+        xyz.copy_from_slice(&[h.x * inv, h.y * inv, h.z * inv]);
+    }
+}

@@ -1,0 +1,415 @@
+//! Tensor-product B-spline and NURBS surfaces against independent expectations: linear
+//! precision (a net on the Greville abscissae reproduces a plane exactly), the NURBS cylinder
+//! (every point at radius r exactly, normals radial), separable nets whose surface factors into
+//! two curves already checked against scipy (points and every partial derivative), the grid
+//! fast path against point evaluation, and the validation messages. Runs natively and in Node.
+
+mod common;
+
+use common::*;
+use splinelab::{BSplineCurve, BSplineSurface, DVec2, DVec3};
+use std::f64::consts::FRAC_1_SQRT_2;
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+/// Greville abscissae `(u_{i+1} + … + u_{i+p})/p` of a knot vector.
+fn greville(knots: &[f64], p: usize) -> Vec<f64> {
+    (0..knots.len() - p - 1)
+        .map(|i| knots[i + 1..=i + p].iter().sum::<f64>() / p as f64)
+        .collect()
+}
+
+/// Flat row-major coordinates of `f(i, j)` on a rows × cols net.
+fn net(rows: usize, cols: usize, f: impl Fn(usize, usize) -> DVec3) -> Vec<f64> {
+    (0..rows)
+        .flat_map(|i| (0..cols).map(move |j| (i, j)))
+        .flat_map(|(i, j)| f(i, j).to_array())
+        .collect()
+}
+
+#[test]
+fn a_net_on_the_greville_abscissae_reproduces_a_plane() {
+    // Non-uniform knots, degrees 3 × 2: S(u, v) = (u, v, 2u − 3v + 1) exactly.
+    let ku = vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.5, 1.2, 2.0, 2.0, 2.0, 2.0];
+    let kv = vec![1.0, 1.0, 1.0, 1.5, 3.0, 3.0, 3.0];
+    let (gu, gv) = (greville(&ku, 3), greville(&kv, 2));
+    let plane = |u: f64, v: f64| DVec3::new(u, v, 2.0 * u - 3.0 * v + 1.0);
+    let coords = net(gu.len(), gv.len(), |i, j| plane(gu[i], gv[j]));
+    let s = BSplineSurface::from_flat(&coords, gu.len(), gv.len(), 3, 2, ku, kv, None).unwrap();
+    assert_eq!((s.rows(), s.cols()), (7, 4));
+    for a in 0..=10 {
+        for b in 0..=10 {
+            let (u, v) = (0.2 * a as f64, 1.0 + 0.2 * b as f64);
+            assert_close3(
+                s.evaluate(u, v).unwrap(),
+                plane(u, v),
+                1e-14,
+                &format!("S({u}, {v})"),
+            );
+            assert_close3(
+                s.derivative(u, v, 1, 0).unwrap(),
+                DVec3::new(1.0, 0.0, 2.0),
+                1e-13,
+                "S_u",
+            );
+            assert_close3(
+                s.derivative(u, v, 0, 1).unwrap(),
+                DVec3::new(0.0, 1.0, -3.0),
+                1e-13,
+                "S_v",
+            );
+            assert_close3(
+                s.derivative(u, v, 1, 1).unwrap(),
+                DVec3::ZERO,
+                1e-12,
+                "S_uv",
+            );
+            assert_close3(
+                s.derivative(u, v, 4, 0).unwrap(),
+                DVec3::ZERO,
+                0.0,
+                "above the degree",
+            );
+            // The plane's unit normal: (1, 0, 2) × (0, 1, −3) = (−2, 3, 1)/√14.
+            let n = DVec3::new(-2.0, 3.0, 1.0) / 14f64.sqrt();
+            assert_close3(s.normal(u, v).unwrap(), n, 1e-14, "normal");
+        }
+    }
+}
+
+/// The NURBS cylinder of radius `r` and height `h`: the 9-point circle (knots
+/// `0,0,0,¼,¼,½,½,¾,¾,1,1,1`, corner weights √2/2) along u, a degree-1 segment along v.
+fn cylinder(r: f64, h: f64) -> BSplineSurface {
+    let circle = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let coords = net(9, 2, |i, j| {
+        DVec3::new(r * circle[i].0, r * circle[i].1, h * j as f64)
+    });
+    let weights: Vec<f64> = (0..18)
+        .map(|k| if (k / 2) % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
+        .collect();
+    let ku = vec![
+        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+    ];
+    BSplineSurface::from_flat(
+        &coords,
+        9,
+        2,
+        2,
+        1,
+        ku,
+        vec![0.0, 0.0, 1.0, 1.0],
+        Some(&weights),
+    )
+    .unwrap()
+}
+
+#[test]
+fn the_nurbs_cylinder_is_round_and_its_normals_radial() {
+    let (r, h) = (2.5, 4.0);
+    let s = cylinder(r, h);
+    assert!(s.is_rational());
+    for a in 0..=40 {
+        for b in 0..=4 {
+            let (u, v) = (a as f64 / 40.0, b as f64 / 4.0);
+            let p = s.evaluate(u, v).unwrap();
+            assert_close(
+                p.truncate().length(),
+                r,
+                1e-14 * r,
+                &format!("radius at ({u}, {v})"),
+            );
+            assert_close(p.z, h * v, 1e-14, "height is linear in v");
+            // Counter-clockwise in u, upward in v: S_u × S_v points outward.
+            let n = s.normal(u, v).unwrap();
+            assert_close3(
+                n,
+                (p.truncate() / r).extend(0.0),
+                1e-13,
+                &format!("normal at ({u}, {v})"),
+            );
+        }
+    }
+    // The quarter points of the circle are control points.
+    assert_close3(
+        s.evaluate(0.25, 0.5).unwrap(),
+        DVec3::new(0.0, r, 2.0),
+        1e-15,
+        "S(1/4, 1/2)",
+    );
+}
+
+#[test]
+fn a_separable_net_factors_into_two_curves_with_all_their_derivatives() {
+    // P_ij = (x_i, y_j, a_i·b_j), w_ij = α_i·β_j: S(u, v) = (X(u), Y(v), A(u)·B(v)) where
+    // (X, A) is the NURBS curve through (x_i, a_i) with weights α_i and (Y, B) the one through
+    // (y_j, b_j) with weights β_j (Σ_j N_j β_j y_j/Σ_j N_j β_j does not depend on u).
+    let mut rng = Rng::new(7);
+    let (rows, cols, p, q) = (6, 5, 3, 2);
+    let ku = vec![0.0, 0.0, 0.0, 0.0, 0.4, 0.7, 1.0, 1.0, 1.0, 1.0];
+    let kv = vec![-1.0, -1.0, -1.0, 0.5, 0.5, 2.0, 2.0, 2.0];
+    let cu: Vec<DVec2> = (0..rows).map(|_| rng.point2(3.0)).collect();
+    let cv: Vec<DVec2> = (0..cols).map(|_| rng.point2(3.0)).collect();
+    let alpha: Vec<f64> = (0..rows).map(|_| rng.range(0.5, 2.0)).collect();
+    let beta: Vec<f64> = (0..cols).map(|_| rng.range(0.5, 2.0)).collect();
+    let coords = net(rows, cols, |i, j| {
+        DVec3::new(cu[i].x, cv[j].x, cu[i].y * cv[j].y)
+    });
+    let weights: Vec<f64> = (0..rows)
+        .flat_map(|i| beta.iter().map(|b| alpha[i] * b).collect::<Vec<_>>())
+        .collect();
+    let s = BSplineSurface::from_flat(
+        &coords,
+        rows,
+        cols,
+        p,
+        q,
+        ku.clone(),
+        kv.clone(),
+        Some(&weights),
+    )
+    .unwrap();
+    let curve_u = BSplineCurve::new(cu, p, ku, Some(&alpha)).unwrap();
+    let curve_v = BSplineCurve::new(cv, q, kv, Some(&beta)).unwrap();
+    for a in 0..=12 {
+        for b in 0..=12 {
+            let (u, v) = (a as f64 / 12.0, -1.0 + 3.0 * b as f64 / 12.0);
+            for du in 0..=3 {
+                for dv in 0..=3 - du {
+                    let (x, y) = (
+                        curve_u.derivative(u, du).unwrap(),
+                        curve_v.derivative(v, dv).unwrap(),
+                    );
+                    let expected = DVec3::new(
+                        if dv == 0 { x.x } else { 0.0 },
+                        if du == 0 { y.x } else { 0.0 },
+                        x.y * y.y,
+                    );
+                    let got = s.derivative(u, v, du, dv).unwrap();
+                    let tol = 1e-11 * (1.0 + expected.length());
+                    assert_close3(
+                        got,
+                        expected,
+                        tol,
+                        &format!("∂^({du},{dv}) S at ({u}, {v})"),
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_grid_fast_path_equals_point_evaluation() {
+    // Unsorted and repeated parameters, the ends of the domain, a knot of multiplicity 2.
+    let s = cylinder(1.0, 2.0);
+    let us = [0.0, 1.0, 0.25, 0.6, 0.6, 0.999, 0.5, 0.1];
+    let vs = [1.0, 0.0, 0.3, 0.7];
+    let mut out = vec![7.0; 3];
+    s.sample_grid_into(&us, &vs, &mut out).unwrap();
+    assert_eq!(out.len(), us.len() * vs.len() * 3);
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            let k = 3 * (a * vs.len() + b);
+            let got = DVec3::new(out[k], out[k + 1], out[k + 2]);
+            assert_close3(
+                got,
+                s.evaluate(u, v).unwrap(),
+                1e-15,
+                &format!("grid point ({u}, {v})"),
+            );
+        }
+    }
+    s.sample_grid_into(&[], &vs, &mut out).unwrap();
+    assert!(out.is_empty());
+
+    // Every degree along v (the unrolled kernels for q = 1..5 and the general loop), random
+    // rational nets on non-uniform knots.
+    let mut rng = Rng::new(11);
+    for q in 1..=7 {
+        let (rows, cols, p) = (5, q + 3, 2);
+        let mut clamped = |n: usize, d: usize| -> Vec<f64> {
+            let mut k = vec![0.0; d + 1];
+            let mut t = 0.0;
+            for _ in 0..n - d - 1 {
+                t += rng.range(0.5, 1.5);
+                k.push(t);
+            }
+            t += rng.range(0.5, 1.5);
+            k.extend(std::iter::repeat_n(t, d + 1));
+            k
+        };
+        let (ku, kv) = (clamped(rows, p), clamped(cols, q));
+        let coords: Vec<f64> = (0..rows * cols)
+            .flat_map(|_| rng.point3(2.0).to_array())
+            .collect();
+        let weights: Vec<f64> = (0..rows * cols).map(|_| rng.range(0.5, 2.0)).collect();
+        let (bu, bv) = (ku[ku.len() - 1], kv[kv.len() - 1]);
+        let s =
+            BSplineSurface::from_flat(&coords, rows, cols, p, q, ku, kv, Some(&weights)).unwrap();
+        let us: Vec<f64> = (0..=9).map(|a| bu * a as f64 / 9.0).collect();
+        let vs: Vec<f64> = (0..=13).map(|b| bv * b as f64 / 13.0).collect();
+        s.sample_grid_into(&us, &vs, &mut out).unwrap();
+        for (a, &u) in us.iter().enumerate() {
+            for (b, &v) in vs.iter().enumerate() {
+                let k = 3 * (a * vs.len() + b);
+                let got = DVec3::new(out[k], out[k + 1], out[k + 2]);
+                assert_close3(
+                    got,
+                    s.evaluate(u, v).unwrap(),
+                    1e-14,
+                    &format!("q = {q}, grid point ({u}, {v})"),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_surfaces_and_parameters_are_refused_with_a_message() {
+    let ku = || vec![0.0, 0.0, 1.0, 1.0];
+    let flat = net(2, 2, |i, j| DVec3::new(i as f64, j as f64, 0.0));
+    let make = |coords: &[f64], rows, cols, p, q, ku: Vec<f64>, kv: Vec<f64>, w: Option<&[f64]>| {
+        BSplineSurface::from_flat(coords, rows, cols, p, q, ku, kv, w)
+            .unwrap_err()
+            .to_string()
+    };
+    let e = make(&flat[..11], 2, 2, 1, 1, ku(), ku(), None);
+    assert!(
+        e.contains("rows·cols·3 = 2·2·3 = 12") && e.contains("got 11"),
+        "{e}"
+    );
+    let mut nan = flat.clone();
+    nan[4] = f64::NAN;
+    assert!(make(&nan, 2, 2, 1, 1, ku(), ku(), None).contains("coordinate 4"));
+    let e = make(&flat, 2, 2, 2, 1, ku(), ku(), None);
+    assert!(e.contains("degreeU") && e.contains("p+1 = 3"), "{e}");
+    let e = make(&flat, 2, 2, 1, 1, ku(), vec![0.0, 0.0, 1.0], None);
+    assert!(e.starts_with("knotsV: ") && e.contains("got 3"), "{e}");
+    let e = make(&flat, 2, 2, 1, 1, vec![0.0, 1.0, 0.5, 1.0], ku(), None);
+    assert!(
+        e.starts_with("knotsU: ") && e.contains("must not decrease"),
+        "{e}"
+    );
+    let e = make(&flat, 2, 2, 1, 1, ku(), ku(), Some(&[1.0, 1.0, 0.0, 1.0]));
+    assert!(e.contains("weight") && e.contains('2'), "{e}");
+    let e = make(&flat, usize::MAX, 2, 1, 1, ku(), ku(), None);
+    assert!(e.contains("rows·cols"), "{e}");
+
+    let s = BSplineSurface::from_flat(&flat, 2, 2, 1, 1, ku(), ku(), None).unwrap();
+    let e = s.evaluate(0.5, 1.5).unwrap_err().to_string();
+    assert!(e.contains("v = 1.5") && e.contains("[0, 1]"), "{e}");
+    assert!(s
+        .evaluate(f64::NAN, 0.5)
+        .unwrap_err()
+        .to_string()
+        .contains('u'));
+    assert!(s
+        .derivative(0.5, 0.5, 20, 20)
+        .unwrap_err()
+        .to_string()
+        .contains("40"));
+    let e = s
+        .sample_grid_into(&[0.5], &[0.2, 2.0], &mut Vec::new())
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("vs[1]: ") && e.contains("v = 2"), "{e}");
+    // No direction at all: every control point the same.
+    let point = net(2, 2, |_, _| DVec3::ONE);
+    let s = BSplineSurface::from_flat(&point, 2, 2, 1, 1, ku(), ku(), None).unwrap();
+    let e = s.normal(0.0, 0.5).unwrap_err().to_string();
+    assert!(e.contains("no normal at (u, v) = (0, 0.5)"), "{e}");
+}
+
+#[test]
+fn normals_at_collapsed_edges_are_the_limits_from_inside() {
+    let ku = || vec![0.0, 0.0, 1.0, 1.0];
+    // A planar fan: row 0 (u = 0) collapsed to the apex, so S_v = 0 there; every normal of a
+    // plane is the plane's, (0, 0, 1) here (S_u points away from the apex, S_v along +y).
+    let fan = net(2, 2, |i, j| {
+        if i == 0 {
+            DVec3::ZERO
+        } else {
+            DVec3::new(1.0, j as f64 - 0.5, 0.0)
+        }
+    });
+    let s = BSplineSurface::from_flat(&fan, 2, 2, 1, 1, ku(), ku(), None).unwrap();
+    for v in [0.0, 0.3, 1.0] {
+        assert_close3(
+            s.normal(0.0, v).unwrap(),
+            DVec3::Z,
+            1e-15,
+            &format!("fan apex, v = {v}"),
+        );
+        assert_close3(s.normal(0.5, v).unwrap(), DVec3::Z, 1e-15, "fan inside");
+    }
+    // The same fan with the apex at the far end (u = 1), and one collapsed at v = 1: the limits
+    // keep the orientation of the inside.
+    let flipped = net(2, 2, |i, j| {
+        if i == 1 {
+            DVec3::ZERO
+        } else {
+            DVec3::new(1.0, j as f64 - 0.5, 0.0)
+        }
+    });
+    let s = BSplineSurface::from_flat(&flipped, 2, 2, 1, 1, ku(), ku(), None).unwrap();
+    let inside = s.normal(0.5, 0.5).unwrap();
+    assert_close3(s.normal(1.0, 0.5).unwrap(), inside, 1e-15, "apex at u = 1");
+    let columns = net(2, 2, |i, j| {
+        if j == 1 {
+            DVec3::ZERO
+        } else {
+            DVec3::new(i as f64 - 0.5, 1.0, 0.0)
+        }
+    });
+    let s = BSplineSurface::from_flat(&columns, 2, 2, 1, 1, ku(), ku(), None).unwrap();
+    let inside = s.normal(0.5, 0.5).unwrap();
+    assert_close3(s.normal(0.3, 1.0).unwrap(), inside, 1e-15, "apex at v = 1");
+    // A cone over the NURBS circle, apex in row 0: the normal at the apex along each ruling is
+    // the limit of the normals approaching it.
+    let circle = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let cone = net(2, 9, |i, j| {
+        if i == 0 {
+            DVec3::new(0.0, 0.0, 2.0)
+        } else {
+            DVec3::new(circle[j].0, circle[j].1, 0.0)
+        }
+    });
+    let weights: Vec<f64> = (0..18)
+        .map(|k| if (k % 9) % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
+        .collect();
+    let kv = vec![
+        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+    ];
+    let s = BSplineSurface::from_flat(&cone, 2, 9, 1, 2, ku(), kv, Some(&weights)).unwrap();
+    for v in [0.0, 0.1, 0.25, 0.6] {
+        let apex = s.normal(0.0, v).unwrap();
+        assert_close3(
+            apex,
+            s.normal(1e-7, v).unwrap(),
+            1e-6,
+            &format!("cone apex, v = {v}"),
+        );
+        // The cone z = 2(1 − r): every normal makes the angle with z whose cosine is 1/√5.
+        assert_close(apex.z.abs(), 1.0 / 5f64.sqrt(), 1e-14, "cone opening");
+    }
+}
