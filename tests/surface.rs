@@ -413,3 +413,247 @@ fn normals_at_collapsed_edges_are_the_limits_from_inside() {
         assert_close(apex.z.abs(), 1.0 / 5f64.sqrt(), 1e-14, "cone opening");
     }
 }
+
+/// `B_i^n(t)` from its definition.
+fn bernstein(n: usize, i: usize, t: f64) -> f64 {
+    let c = (1..=i).fold(1.0, |acc, k| acc * (n + 1 - k) as f64 / k as f64);
+    c * t.powi(i as i32) * (1.0 - t).powi((n - i) as i32)
+}
+
+/// A random rational Bézier patch of `rows × cols` points and its defining double sum.
+fn bezier_patch(
+    rng: &mut Rng,
+    rows: usize,
+    cols: usize,
+) -> (BSplineSurface, impl Fn(f64, f64) -> DVec3) {
+    let points: Vec<DVec3> = (0..rows * cols).map(|_| rng.point3(2.0)).collect();
+    let weights: Vec<f64> = (0..rows * cols).map(|_| rng.range(0.5, 2.0)).collect();
+    let coords: Vec<f64> = points.iter().flat_map(|p| p.to_array()).collect();
+    let s = BSplineSurface::bezier(&coords, rows, cols, Some(&weights)).unwrap();
+    let sum = move |u: f64, v: f64| {
+        let (mut num, mut den) = (DVec3::ZERO, 0.0);
+        for i in 0..rows {
+            for j in 0..cols {
+                let b =
+                    bernstein(rows - 1, i, u) * bernstein(cols - 1, j, v) * weights[i * cols + j];
+                num += b * points[i * cols + j];
+                den += b;
+            }
+        }
+        num / den
+    };
+    (s, sum)
+}
+
+#[test]
+fn a_bezier_patch_is_the_bernstein_double_sum_and_splits_into_four() {
+    let mut rng = Rng::new(3);
+    let (s, sum) = bezier_patch(&mut rng, 4, 3);
+    assert_eq!((s.degree_u(), s.degree_v()), (3, 2));
+    for a in 0..=8 {
+        for b in 0..=8 {
+            let (u, v) = (a as f64 / 8.0, b as f64 / 8.0);
+            assert_close3(
+                s.evaluate(u, v).unwrap(),
+                sum(u, v),
+                1e-14,
+                &format!("P({u}, {v})"),
+            );
+        }
+    }
+    // The four pieces of a split at (0.3, 0.6), each on [0, 1]², reparametrise the quarters.
+    let (u0, v0) = (0.3, 0.6);
+    let pieces = s.split_bezier(u0, v0).unwrap();
+    let maps: [(f64, f64, f64, f64); 4] = [
+        (0.0, u0, 0.0, v0),
+        (0.0, u0, v0, 1.0),
+        (u0, 1.0, 0.0, v0),
+        (u0, 1.0, v0, 1.0),
+    ];
+    for (piece, (ua, ub, va, vb)) in pieces.iter().zip(maps) {
+        assert_eq!((piece.rows(), piece.cols()), (4, 3));
+        for (x, y) in [(0.0, 0.0), (0.5, 0.25), (1.0, 0.7), (0.2, 1.0)] {
+            let whole = sum(ua + x * (ub - ua), va + y * (vb - va));
+            assert_close3(
+                piece.evaluate(x, y).unwrap(),
+                whole,
+                1e-14,
+                &format!("piece [{ua}, {ub}]×[{va}, {vb}] at ({x}, {y})"),
+            );
+        }
+    }
+    let e = BSplineSurface::bezier(&[0.0; 6], 1, 2, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("at least 2 rows and 2 columns") && e.contains("1 × 2"),
+        "{e}"
+    );
+    assert!(s
+        .split_bezier(0.5, 1.5)
+        .unwrap_err()
+        .to_string()
+        .contains("v = 1.5"));
+}
+
+#[test]
+fn knot_insertion_adds_a_row_or_a_column_and_keeps_the_shape() {
+    let mut rng = Rng::new(5);
+    let (s, sum) = bezier_patch(&mut rng, 4, 4);
+    let refined = s
+        .insert_knot_u(0.4, 2)
+        .unwrap()
+        .insert_knot_v(0.7, 1)
+        .unwrap();
+    assert_eq!((refined.rows(), refined.cols()), (6, 5));
+    assert_eq!(
+        refined.knots_u().as_slice(),
+        &[0.0, 0.0, 0.0, 0.0, 0.4, 0.4, 1.0, 1.0, 1.0, 1.0]
+    );
+    assert_eq!(
+        refined.knots_v().as_slice(),
+        &[0.0, 0.0, 0.0, 0.0, 0.7, 1.0, 1.0, 1.0, 1.0]
+    );
+    for a in 0..=10 {
+        for b in 0..=10 {
+            let (u, v) = (a as f64 / 10.0, b as f64 / 10.0);
+            assert_close3(
+                refined.evaluate(u, v).unwrap(),
+                sum(u, v),
+                1e-13,
+                &format!("S({u}, {v}) after insertion"),
+            );
+        }
+    }
+    let e = refined.insert_knot_u(0.4, 3).unwrap_err().to_string();
+    assert!(e.contains("u = 0.4") && e.contains("multiplicity 5"), "{e}");
+    assert!(s
+        .insert_knot_v(-0.1, 1)
+        .unwrap_err()
+        .to_string()
+        .contains("v = -0.1"));
+    // A polynomial surface keeps weights of exactly 1.
+    let plane = net(3, 3, |i, j| DVec3::new(i as f64, j as f64, 0.0));
+    let p = BSplineSurface::bezier(&plane, 3, 3, None)
+        .unwrap()
+        .insert_knot_u(0.37, 1)
+        .unwrap();
+    assert!(!p.is_rational() && p.weights().iter().all(|&w| w == 1.0));
+}
+
+#[test]
+fn tessellation_is_the_grid_with_normals_and_outward_triangles() {
+    let s = cylinder(1.0, 2.0);
+    let (nu, nv) = (8, 3);
+    let mesh = s.tessellate(nu, nv).unwrap();
+    assert_eq!(mesh.positions.len(), 3 * (nu + 1) * (nv + 1));
+    assert_eq!(mesh.normals.len(), mesh.positions.len());
+    assert_eq!(mesh.indices.len(), 6 * nu * nv);
+    let at = |v: &[f32], k: u32| {
+        DVec3::new(
+            v[3 * k as usize] as f64,
+            v[3 * k as usize + 1] as f64,
+            v[3 * k as usize + 2] as f64,
+        )
+    };
+    for a in 0..=nu {
+        for b in 0..=nv {
+            let k = (a * (nv + 1) + b) as u32;
+            let (u, v) = (a as f64 / nu as f64, b as f64 / nv as f64);
+            assert_close3(
+                at(&mesh.positions, k),
+                s.evaluate(u, v).unwrap(),
+                1e-6,
+                "vertex",
+            );
+            assert_close3(
+                at(&mesh.normals, k),
+                s.normal(u, v).unwrap(),
+                1e-6,
+                "vertex normal",
+            );
+        }
+    }
+    // Every triangle faces the way its vertices' normals point (outward on the cylinder).
+    for t in mesh.indices.chunks_exact(3) {
+        let [p0, p1, p2] = [
+            at(&mesh.positions, t[0]),
+            at(&mesh.positions, t[1]),
+            at(&mesh.positions, t[2]),
+        ];
+        let face = (p1 - p0).cross(p2 - p0);
+        assert!(
+            face.dot(at(&mesh.normals, t[0])) > 0.0,
+            "triangle {t:?} faces inward"
+        );
+    }
+    assert!(s
+        .tessellate(0, 4)
+        .unwrap_err()
+        .to_string()
+        .contains("nu = 0"));
+    // A corner where both partial derivatives vanish (P00 = P01 = P10 on a biquadratic): no
+    // limit either, so the vertex gets the mean of its triangles' normals, close to its
+    // neighbours'.
+    let corner = net(3, 3, |i, j| match (i, j) {
+        (0, 0) | (0, 1) | (1, 0) => DVec3::ZERO,
+        _ => DVec3::new(i as f64, j as f64, 0.1 * (i * j) as f64),
+    });
+    let s = BSplineSurface::bezier(&corner, 3, 3, None).unwrap();
+    assert!(s.normal(0.0, 0.0).is_err());
+    let mesh = s.tessellate(16, 16).unwrap();
+    let n0 = at(&mesh.normals, 0);
+    assert_close(n0.length(), 1.0, 1e-6, "fallback normal is a unit vector");
+    assert!(
+        n0.dot(at(&mesh.normals, 17 + 1)) > 0.9,
+        "fallback normal {n0} agrees with the neighbours'"
+    );
+}
+
+#[test]
+fn edits_in_place_equal_a_rebuilt_surface() {
+    let mut rng = Rng::new(9);
+    let coords: Vec<f64> = (0..4 * 3)
+        .flat_map(|_| rng.point3(1.0).to_array())
+        .collect();
+    let weights: Vec<f64> = (0..12).map(|_| rng.range(0.5, 2.0)).collect();
+    let knots_u = vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
+    let knots_v = vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    let build = |c: &[f64], w: &[f64]| {
+        BSplineSurface::from_flat(c, 4, 3, 2, 2, knots_u.clone(), knots_v.clone(), Some(w)).unwrap()
+    };
+    let mut s = build(&coords, &weights);
+    let moved = DVec3::new(0.3, -0.2, 1.5);
+    s.set_control_point(2, 1, moved).unwrap();
+    s.set_weight(0, 2, 3.0).unwrap();
+    let (mut c2, mut w2) = (coords.clone(), weights.clone());
+    c2[3 * (2 * 3 + 1)..3 * (2 * 3 + 1) + 3].copy_from_slice(&moved.to_array());
+    w2[2] = 3.0;
+    let rebuilt = build(&c2, &w2);
+    for (u, v) in [(0.0, 0.0), (0.3, 0.8), (0.5, 0.5), (1.0, 0.2)] {
+        assert_close3(
+            s.evaluate(u, v).unwrap(),
+            rebuilt.evaluate(u, v).unwrap(),
+            1e-14,
+            &format!("S({u}, {v})"),
+        );
+    }
+    let e = s
+        .set_control_point(4, 0, DVec3::ZERO)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("(4, 0) is out of range") && e.contains("4 × 3"),
+        "{e}"
+    );
+    assert!(s
+        .set_weight(1, 1, 0.0)
+        .unwrap_err()
+        .to_string()
+        .contains("> 0"));
+    assert!(s
+        .set_control_point(0, 0, DVec3::new(f64::NAN, 0.0, 0.0))
+        .unwrap_err()
+        .to_string()
+        .contains("coordinate 0"));
+}

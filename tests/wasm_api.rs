@@ -545,3 +545,55 @@ fn bspline_surface_from_js() {
     ))
     .starts_with("knotsV: "));
 }
+
+#[test]
+fn bezier_surfaces_and_meshes_from_js() {
+    use splinelab::wasm::{JsBSplineSurface, JsBezierSurface};
+    let points = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    let patch = JsBezierSurface::new(arr(&points), 2.0, 2.0, JsValue::UNDEFINED).unwrap();
+    assert_eq!((patch.degree_u(), patch.degree_v()), (1, 1));
+    assert_eq!(patch.evaluate(0.5, 0.25).unwrap(), vec![0.5, 0.25, 0.125]);
+    let pieces = patch.split(0.5, 0.5).unwrap();
+    assert_eq!(pieces.len(), 4);
+    assert_eq!(pieces[3].evaluate(0.0, 0.0).unwrap(), vec![0.5, 0.5, 0.25]);
+    let mesh = patch.tessellate(2.0, 3.0).unwrap();
+    let get = |key: &str| js_sys::Reflect::get(&mesh, &key.into()).unwrap();
+    let positions = get("positions").dyn_into::<js_sys::Float32Array>().unwrap();
+    let normals = get("normals").dyn_into::<js_sys::Float32Array>().unwrap();
+    let indices = get("indices").dyn_into::<js_sys::Uint32Array>().unwrap();
+    assert_eq!(
+        (positions.length(), normals.length(), indices.length()),
+        (36, 36, 36)
+    );
+    assert_eq!(indices.to_vec()[..6], [0, 4, 5, 0, 5, 1]);
+    assert!(message(patch.tessellate(2.0, f64::NAN)).contains("nv must be a whole number"));
+    assert!(message(JsBezierSurface::new(
+        arr(&points),
+        1.0,
+        4.0,
+        JsValue::UNDEFINED
+    ))
+    .contains("at least 2 rows"));
+
+    let knots = || arr(&[0.0, 0.0, 1.0, 1.0]);
+    let s = JsBSplineSurface::new(
+        arr(&points),
+        2.0,
+        2.0,
+        1.0,
+        1.0,
+        knots(),
+        knots(),
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
+    let refined = s
+        .insert_knot_u(0.5, None)
+        .unwrap()
+        .insert_knot_v(0.25, Some(1.0))
+        .unwrap();
+    assert_eq!((refined.rows(), refined.cols()), (3, 3));
+    assert_eq!(refined.knots_v(), vec![0.0, 0.0, 0.25, 1.0, 1.0]);
+    assert_eq!(refined.evaluate(0.5, 0.25).unwrap(), vec![0.5, 0.25, 0.125]);
+    assert!(message(s.insert_knot_u(0.5, Some(3.0))).contains("multiplicity 3"));
+}

@@ -16,7 +16,7 @@
 //! assert_eq!(c.evaluate(0.25).unwrap(), DVec2::new(29.0 / 16.0, 23.0 / 16.0));
 //! ```
 
-pub(crate) mod basis;
+mod basis;
 mod construct;
 mod de_boor;
 mod insert;
@@ -27,7 +27,7 @@ mod sample;
 pub use basis::{basis_derivatives, basis_functions, BasisScratch};
 pub use construct::{knot_vector, parameterize, phantom_points, KnotKind, Parameterization};
 pub use de_boor::de_boor_triangle;
-pub use insert::KnotContinuity;
+pub use insert::{boehm_insert, KnotContinuity};
 pub use knots::KnotVector;
 pub use matrix::uniform_segment_matrix;
 

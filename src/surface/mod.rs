@@ -1,15 +1,18 @@
-//! Tensor-product B-spline and NURBS surfaces (syllabus §5):
+//! Tensor-product Bézier, B-spline and NURBS surfaces (syllabus §6):
 //!
 //! `S(u, v) = Σ_i Σ_j N_{i,p}(u) N_{j,q}(v) w_ij P_ij / Σ_i Σ_j N_{i,p}(u) N_{j,q}(v) w_ij`
 //!
 //! over the control net `P_ij` (`i = 0..rows−1` along u, `j = 0..cols−1` along v) with knot
 //! vectors `U` (degree `p`) and `V` (degree `q`), evaluated on homogeneous points
 //! `(w P, w)` with one division at the end, on the domain `[u_p, u_rows] × [v_q, v_cols]`.
-//! Points are 3D and stored row-major: point `(i, j)` is number `i·cols + j`.
+//! Points are 3D and stored row-major: point `(i, j)` is number `i·cols + j`. A Bézier patch
+//! `ΣΣ B_i^m(u) B_j^n(v) P_ij` is the case of one span, knots `0 … 0 1 … 1`
+//! ([`BSplineSurface::bezier`]).
 
-use crate::bspline::basis::{basis_derivatives, basis_functions, BasisScratch};
+use crate::bezier::split_points;
+use crate::bspline::{basis_derivatives, basis_functions, boehm_insert, BasisScratch};
 use crate::bspline::{check_degree, KnotVector};
-use crate::error::{Error, Result};
+use crate::error::{Error, Num, Result};
 use crate::geom::{check_all_finite, check_weights, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
@@ -97,6 +100,45 @@ impl BSplineSurface {
         })
     }
 
+    /// The tensor-product Bézier patch `P(u, v) = Σ Σ B_i^m(u) B_j^n(v) P_ij` (rational with
+    /// weights) of a `rows × cols` net: degrees `m = rows − 1`, `n = cols − 1`, on `[0, 1]²` —
+    /// the B-spline surface with knots `0 … 0 1 … 1` (`rows` and `cols` of each).
+    ///
+    /// # Errors
+    /// As [`BSplineSurface::from_flat`]; fewer than 2 rows or columns is a degree of 0.
+    pub fn bezier(
+        coords: &[f64],
+        rows: usize,
+        cols: usize,
+        weights: Option<&[f64]>,
+    ) -> Result<Self> {
+        if rows.checked_mul(cols).and_then(|c| c.checked_mul(3)) == Some(coords.len())
+            && (rows < 2 || cols < 2)
+        {
+            check_all_finite(coords, "coordinate")?;
+            return Err(Error::Mismatch {
+                message: format!("a Bézier patch needs at least 2 rows and 2 columns (degree ≥ 1 each way), got {rows} × {cols}"),
+            });
+        }
+        // Bounded by the coordinate count, which from_flat checks first.
+        let clamped = |count: usize| -> Vec<f64> {
+            let count = count.min(coords.len() + 1);
+            (0..2 * count)
+                .map(|i| if i < count { 0.0 } else { 1.0 })
+                .collect()
+        };
+        Self::from_flat(
+            coords,
+            rows,
+            cols,
+            rows.saturating_sub(1),
+            cols.saturating_sub(1),
+            clamped(rows),
+            clamped(cols),
+            weights,
+        )
+    }
+
     /// Number of rows of the net (control points along u), `n + 1`.
     pub fn rows(&self) -> usize {
         self.rows
@@ -140,6 +182,54 @@ impl BSplineSurface {
     /// The weights, row-major (all 1 for a polynomial surface).
     pub fn weights(&self) -> Vec<f64> {
         self.net.iter().map(|h| h.w).collect()
+    }
+
+    /// The flat index of control point `(i, j)`, checked.
+    fn index(&self, i: usize, j: usize) -> Result<usize> {
+        if i >= self.rows || j >= self.cols {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "control point (i, j) = ({i}, {j}) is out of range: the net has {} × {} points (i in 0..={}, j in 0..={})",
+                    self.rows,
+                    self.cols,
+                    self.rows - 1,
+                    self.cols - 1
+                ),
+            });
+        }
+        Ok(i * self.cols + j)
+    }
+
+    /// Moves control point `(i, j)` to `p` in place, keeping its weight: the drag path.
+    ///
+    /// # Errors
+    /// An index out of range, a coordinate that is not finite.
+    pub fn set_control_point(&mut self, i: usize, j: usize, p: DVec3) -> Result<()> {
+        let k = self.index(i, j)?;
+        for (c, value) in p.to_array().into_iter().enumerate() {
+            crate::error::check_finite(|| format!("coordinate {c} of the new point"), value)?;
+        }
+        if let Some(h) = self.net.get_mut(k) {
+            *h = (p * h.w).extend(h.w);
+        }
+        Ok(())
+    }
+
+    /// Sets the weight of control point `(i, j)` in place, keeping the point.
+    ///
+    /// # Errors
+    /// An index out of range, [`Error::NotFinite`], [`Error::NonPositiveWeight`].
+    pub fn set_weight(&mut self, i: usize, j: usize, w: f64) -> Result<()> {
+        let k = self.index(i, j)?;
+        crate::error::check_finite(|| format!("weight ({i}, {j})"), w)?;
+        if w <= 0.0 {
+            return Err(Error::NonPositiveWeight { index: k, value: w });
+        }
+        if let Some(h) = self.net.get_mut(k) {
+            *h = (h.truncate() / h.w * w).extend(w);
+        }
+        self.rational = self.net.iter().any(|h| h.w != 1.0);
+        Ok(())
     }
 
     /// `(u, v)` checked against the domain; the error names `u` or `v` and the range.
@@ -316,12 +406,246 @@ impl BSplineSurface {
             return Err(Error::Mismatch {
                 message: format!(
                     "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
-                    crate::error::Num(u),
-                    crate::error::Num(v)
+                    Num(u),
+                    Num(v)
                 ),
             });
         }
         Ok(cross / cross.length())
+    }
+
+    /// The same surface with u and v swapped (rows become columns): `S'(v, u) = S(u, v)`.
+    fn transposed(&self) -> Self {
+        let net = (0..self.cols)
+            .flat_map(|j| (0..self.rows).map(move |i| (i, j)))
+            .map(|(i, j)| {
+                self.net
+                    .get(i * self.cols + j)
+                    .copied()
+                    .unwrap_or(DVec4::ZERO)
+            })
+            .collect();
+        BSplineSurface {
+            net,
+            rows: self.cols,
+            cols: self.rows,
+            rational: self.rational,
+            knots_u: self.knots_v.clone(),
+            knots_v: self.knots_u.clone(),
+        }
+    }
+
+    /// Inserts `value` `times` times into the v knots: Boehm's algorithm on every row of the
+    /// net (each row is a B-spline curve in v). `name` is the parameter's name in errors.
+    fn insert_along_v(&self, name: &'static str, value: f64, times: usize) -> Result<Self> {
+        let v = self.knots_v.check_named(name, value)?;
+        let q = self.degree_v();
+        let s = self.knots_v.multiplicity(v);
+        if s + times > q + 1 {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "inserting knot {name} = {} {times} time(s) would give it multiplicity {}; degree {q} allows at most {}",
+                    Num(v),
+                    s + times,
+                    q + 1
+                ),
+            });
+        }
+        let mut rows: Vec<Vec<DVec4>> = self
+            .net
+            .chunks_exact(self.cols)
+            .map(<[DVec4]>::to_vec)
+            .collect();
+        let mut knots = self.knots_v.clone();
+        for _ in 0..times {
+            let k = knots.span(v);
+            for row in &mut rows {
+                *row = boehm_insert(row, knots.as_slice(), q, k, v);
+            }
+            let cols = rows.first().map_or(0, Vec::len);
+            knots = KnotVector::new(knots.with_inserted(v, 1), q, cols)?;
+        }
+        let cols = knots.point_count();
+        let mut net: Vec<DVec4> = rows.concat();
+        if !self.rational {
+            // Keep polynomial weights exactly 1 ((1 − α)·1 + α·1 may round).
+            for h in &mut net {
+                h.w = 1.0;
+            }
+        }
+        Ok(BSplineSurface {
+            net,
+            rows: self.rows,
+            cols,
+            rational: self.rational,
+            knots_u: self.knots_u.clone(),
+            knots_v: knots,
+        })
+    }
+
+    /// The same surface with the knot `u` inserted `times` times: a new row of control points
+    /// per insertion (Boehm's algorithm on every column); the shape does not change.
+    ///
+    /// # Errors
+    /// A bad `u`; [`Error::Mismatch`] when its multiplicity would exceed `p + 1`.
+    pub fn insert_knot_u(&self, u: f64, times: usize) -> Result<Self> {
+        Ok(self
+            .transposed()
+            .insert_along_v("u", u, times)?
+            .transposed())
+    }
+
+    /// The same surface with the knot `v` inserted `times` times: a new column per insertion
+    /// (Boehm's algorithm on every row).
+    ///
+    /// # Errors
+    /// As [`BSplineSurface::insert_knot_u`].
+    pub fn insert_knot_v(&self, v: f64, times: usize) -> Result<Self> {
+        self.insert_along_v("v", v, times)
+    }
+
+    /// A Bézier patch (as made by [`BSplineSurface::bezier`]) split at `(u0, v0)` into four
+    /// patches, each on `[0, 1]²`: `[u ≤ u0 & v ≤ v0, u ≤ u0 & v ≥ v0, u ≥ u0 & v ≤ v0,
+    /// u ≥ u0 & v ≥ v0]`. De Casteljau at `v0` on every row, then at `u0` on every column of
+    /// both halves (the syllabus' subdivision into four patches).
+    ///
+    /// # Errors
+    /// A `u0` or `v0` outside `[0, 1]` or not finite.
+    pub fn split_bezier(&self, u0: f64, v0: f64) -> Result<[Self; 4]> {
+        let (u0, v0) = self.check_uv(u0, v0)?;
+        let split_v = |surface: &Self| -> (Self, Self) {
+            let (mut left, mut right) = (
+                Vec::with_capacity(surface.net.len()),
+                Vec::with_capacity(surface.net.len()),
+            );
+            for row in surface.net.chunks_exact(surface.cols) {
+                let (l, r) = split_points(row, v0);
+                left.extend(l);
+                right.extend(r);
+            }
+            (
+                BSplineSurface {
+                    net: left,
+                    ..surface.clone()
+                },
+                BSplineSurface {
+                    net: right,
+                    ..surface.clone()
+                },
+            )
+        };
+        let split_u = |surface: &Self| -> (Self, Self) {
+            let t = surface.transposed();
+            let (mut left, mut right) = (Vec::new(), Vec::new());
+            for column in t.net.chunks_exact(t.cols) {
+                let (l, r) = split_points(column, u0);
+                left.extend(l);
+                right.extend(r);
+            }
+            (
+                BSplineSurface {
+                    net: left,
+                    ..t.clone()
+                }
+                .transposed(),
+                BSplineSurface { net: right, ..t }.transposed(),
+            )
+        };
+        let (low_v, high_v) = split_v(self);
+        let ((a, c), (b, d)) = (split_u(&low_v), split_u(&high_v));
+        Ok([a, b, c, d])
+    }
+
+    /// A triangle mesh of the whole surface: `(nu + 1)(nv + 1)` vertices at equally spaced
+    /// parameters (`nu` × `nv` quads, like three.js' `ParametricGeometry`), vertex `a·(nv + 1) + b`
+    /// at `(u_a, v_b)`, unit normals from [`BSplineSurface::normal`] (where even its limit
+    /// gives none, the mean of the adjacent triangles' normals), and two triangles per quad,
+    /// counter-clockwise seen from the side the normals point to.
+    ///
+    /// # Errors
+    /// [`Error::Mismatch`] for `nu` or `nv` of 0, [`Error::TooLarge`] above [`MAX_SAMPLES`]
+    /// vertices.
+    pub fn tessellate(&self, nu: usize, nv: usize) -> Result<Mesh> {
+        if nu == 0 || nv == 0 {
+            return Err(Error::Mismatch {
+                message: format!(
+                    "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
+                ),
+            });
+        }
+        let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
+        cu.checked_mul(cv)
+            .filter(|&n| n <= MAX_SAMPLES)
+            .ok_or(Error::TooLarge {
+                what: "tessellation vertices (nu + 1)(nv + 1)",
+                value: cu.saturating_mul(cv),
+                max: MAX_SAMPLES,
+            })?;
+        let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
+            (0..=n)
+                .map(|i| {
+                    if i == n {
+                        b
+                    } else {
+                        a + (b - a) * i as f64 / n as f64
+                    }
+                })
+                .collect()
+        };
+        let (us, vs) = (
+            grid(self.knots_u.domain(), nu),
+            grid(self.knots_v.domain(), nv),
+        );
+        let mut points = Vec::new();
+        self.sample_grid_into(&us, &vs, &mut points)?;
+        let mut indices = Vec::with_capacity(6 * nu * nv);
+        for a in 0..nu {
+            for b in 0..nv {
+                let v00 = (a * cv + b) as u32;
+                let v10 = v00 + cv as u32;
+                indices.extend_from_slice(&[v00, v10, v10 + 1, v00, v10 + 1, v00 + 1]);
+            }
+        }
+        let mut normals = Vec::with_capacity(points.len());
+        let mut missing = Vec::new();
+        for &u in &us {
+            for &v in &vs {
+                let n = self.normal(u, v).unwrap_or_else(|_| {
+                    missing.push(normals.len() / 3);
+                    DVec3::ZERO
+                });
+                normals.extend(n.to_array());
+            }
+        }
+        if !missing.is_empty() {
+            // Where even the limit gives no normal: the sum of the adjacent triangles'
+            // (area-weighted) normals, one pass over the triangles.
+            let vertex = |k: usize| {
+                points
+                    .get(3 * k..3 * k + 3)
+                    .map_or(DVec3::ZERO, DVec3::from_slice)
+            };
+            let mut sums = vec![DVec3::ZERO; cu * cv];
+            for t in indices.chunks_exact(3) {
+                let [i, j, k] = [t[0] as usize, t[1] as usize, t[2] as usize];
+                let face = (vertex(j) - vertex(i)).cross(vertex(k) - vertex(i));
+                for m in [i, j, k] {
+                    if let Some(sum) = sums.get_mut(m) {
+                        *sum += face;
+                    }
+                }
+            }
+            for k in missing {
+                if let (Some(n), Some(sum)) = (normals.get_mut(3 * k..3 * k + 3), sums.get(k)) {
+                    n.copy_from_slice(&sum.normalize_or_zero().to_array());
+                }
+            }
+        }
+        Ok(Mesh {
+            positions: points.iter().map(|&x| x as f32).collect(),
+            normals: normals.iter().map(|&x| x as f32).collect(),
+            indices,
+        })
     }
 
     /// `S(u_a, v_b)` for every `u_a` of `us` and `v_b` of `vs`, u-major (point `a·len(vs) + b`,
@@ -403,6 +727,17 @@ impl BSplineSurface {
         }
         Ok(())
     }
+}
+
+/// A triangle mesh ready for WebGL: see [`BSplineSurface::tessellate`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions, xyz.
+    pub positions: Vec<f32>,
+    /// Unit vertex normals, xyz.
+    pub normals: Vec<f32>,
+    /// Three vertex indices per triangle.
+    pub indices: Vec<u32>,
 }
 
 /// One row of a grid: the homogeneous curve `row` (the u direction collapsed) at every v, from

@@ -49,7 +49,7 @@ pub mod surface;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
-pub use surface::JsBSplineSurface;
+pub use surface::{JsBSplineSurface, JsBezierSurface};
 
 use crate::error::Error;
 use js_sys::Float64Array;

@@ -21,7 +21,7 @@ export async function fuzzApi({ seedValue, iterations }) {
   const strs = ["uniform", "clamped", "chord", "centripetal", "C0", "C1", "G1", "C2", "left", "right", "open", ""];
   /** A random valid-looking curve (its construction may still be refused: that is fine). */
   function make() {
-    const kind = pick(["bez", "bez", "bsp", "bsp", "comp", "surf"]);
+    const kind = pick(["bez", "bez", "bsp", "bsp", "comp", "surf", "bezsurf"]);
     const dim = pick([2, 2, 3]);
     const weights = (count) => (rnd() < 0.3 ? arr(count).map((x) => Math.abs(x) + 0.1) : undefined);
     if (kind === "bez") {
@@ -33,6 +33,10 @@ export async function fuzzApi({ seedValue, iterations }) {
       const n = p + Math.floor(rnd() * 6);
       const clamped = Float64Array.from({ length: n + p + 2 }, (_, i) => Math.min(Math.max(i - p, 0), n + 1 - p));
       return new mod.BSplineCurve(arr((n + 1) * dim), dim, p, rnd() < 0.5 ? sorted(n + p + 2) : clamped, weights(n + 1));
+    }
+    if (kind === "bezsurf") {
+      const [rows, cols] = [1 + Math.floor(rnd() * 5), 1 + Math.floor(rnd() * 5)];
+      return new mod.BezierSurface(arr(rows * cols * 3), rows, cols, weights(rows * cols));
     }
     if (kind === "surf") {
       const [p, q] = [1 + Math.floor(rnd() * 3), 1 + Math.floor(rnd() * 6)];
