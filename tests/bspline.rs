@@ -9,7 +9,6 @@ use common::*;
 use splinelab::bezier::{self, BezierCurve};
 use splinelab::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use splinelab::{DVec2, DVec3};
-use std::f64::consts::FRAC_1_SQRT_2;
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -541,22 +540,9 @@ fn phantom_points_make_a_uniform_cubic_pass_through_the_ends() {
 
 #[test]
 fn nurbs_circle_has_radius_exactly_one() {
-    let s = FRAC_1_SQRT_2;
-    let pts = pts2(&[
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ]);
-    let w = [1.0, s, 1.0, s, 1.0, s, 1.0, s, 1.0];
-    let knots = vec![
-        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
-    ];
+    let pts = pts2(&CIRCLE_POINTS);
+    let w: Vec<f64> = (0..9).map(circle_weight).collect();
+    let knots = CIRCLE_KNOTS.to_vec();
     let c = BSplineCurve::new(pts, 2, knots, Some(&w)).unwrap();
     let mut out = vec![0.0; 2 * 1001];
     c.sample_uniform_into(1001, &mut out).unwrap();

@@ -8,7 +8,6 @@ mod common;
 
 use common::*;
 use splinelab::{BSplineCurve, BSplineSurface, DVec2, DVec3};
-use std::f64::consts::FRAC_1_SQRT_2;
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -80,26 +79,11 @@ fn a_net_on_the_greville_abscissae_reproduces_a_plane() {
 /// The NURBS cylinder of radius `r` and height `h`: the 9-point circle (knots
 /// `0,0,0,¼,¼,½,½,¾,¾,1,1,1`, corner weights √2/2) along u, a degree-1 segment along v.
 fn cylinder(r: f64, h: f64) -> BSplineSurface {
-    let circle = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
     let coords = net(9, 2, |i, j| {
-        DVec3::new(r * circle[i].0, r * circle[i].1, h * j as f64)
+        DVec3::new(r * CIRCLE_POINTS[i].0, r * CIRCLE_POINTS[i].1, h * j as f64)
     });
-    let weights: Vec<f64> = (0..18)
-        .map(|k| if (k / 2) % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
-        .collect();
-    let ku = vec![
-        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
-    ];
+    let weights: Vec<f64> = (0..18).map(|k| circle_weight(k / 2)).collect();
+    let ku = CIRCLE_KNOTS.to_vec();
     BSplineSurface::from_flat(
         &coords,
         9,
@@ -208,6 +192,30 @@ fn a_separable_net_factors_into_two_curves_with_all_their_derivatives() {
     }
 }
 
+/// `out` (from `sample_grid_into(us, vs)`) holds `S(u_a, v_b)` at point `a·len(vs) + b`.
+fn assert_grid_is_points(
+    s: &BSplineSurface,
+    us: &[f64],
+    vs: &[f64],
+    out: &[f64],
+    tol: f64,
+    what: &str,
+) {
+    assert_eq!(out.len(), us.len() * vs.len() * 3, "{what}: grid size");
+    for (a, &u) in us.iter().enumerate() {
+        for (b, &v) in vs.iter().enumerate() {
+            let k = 3 * (a * vs.len() + b);
+            let got = DVec3::new(out[k], out[k + 1], out[k + 2]);
+            assert_close3(
+                got,
+                s.evaluate(u, v).unwrap(),
+                tol,
+                &format!("{what} grid point ({u}, {v})"),
+            );
+        }
+    }
+}
+
 #[test]
 fn the_grid_fast_path_equals_point_evaluation() {
     // Unsorted and repeated parameters, the ends of the domain, a knot of multiplicity 2.
@@ -217,18 +225,7 @@ fn the_grid_fast_path_equals_point_evaluation() {
     let mut out = vec![7.0; 3];
     s.sample_grid_into(&us, &vs, &mut out).unwrap();
     assert_eq!(out.len(), us.len() * vs.len() * 3);
-    for (a, &u) in us.iter().enumerate() {
-        for (b, &v) in vs.iter().enumerate() {
-            let k = 3 * (a * vs.len() + b);
-            let got = DVec3::new(out[k], out[k + 1], out[k + 2]);
-            assert_close3(
-                got,
-                s.evaluate(u, v).unwrap(),
-                1e-15,
-                &format!("grid point ({u}, {v})"),
-            );
-        }
-    }
+    assert_grid_is_points(&s, &us, &vs, &out, 1e-15, "");
     s.sample_grid_into(&[], &vs, &mut out).unwrap();
     assert!(out.is_empty());
 
@@ -259,18 +256,7 @@ fn the_grid_fast_path_equals_point_evaluation() {
         let us: Vec<f64> = (0..=9).map(|a| bu * a as f64 / 9.0).collect();
         let vs: Vec<f64> = (0..=13).map(|b| bv * b as f64 / 13.0).collect();
         s.sample_grid_into(&us, &vs, &mut out).unwrap();
-        for (a, &u) in us.iter().enumerate() {
-            for (b, &v) in vs.iter().enumerate() {
-                let k = 3 * (a * vs.len() + b);
-                let got = DVec3::new(out[k], out[k + 1], out[k + 2]);
-                assert_close3(
-                    got,
-                    s.evaluate(u, v).unwrap(),
-                    1e-14,
-                    &format!("q = {q}, grid point ({u}, {v})"),
-                );
-            }
-        }
+        assert_grid_is_points(&s, &us, &vs, &out, 1e-14, &format!("q = {q}"));
     }
 }
 
@@ -330,18 +316,23 @@ fn bad_surfaces_and_parameters_are_refused_with_a_message() {
     assert!(e.contains("no normal at (u, v) = (0, 0.5)"), "{e}");
 }
 
+/// A planar fan in z = 0 with the row `apex` (0 or 1) of a 2 × 2 net collapsed to the origin.
+fn fan_net(apex: usize) -> Vec<f64> {
+    net(2, 2, |i, j| {
+        if i == apex {
+            DVec3::ZERO
+        } else {
+            DVec3::new(1.0, j as f64 - 0.5, 0.0)
+        }
+    })
+}
+
 #[test]
 fn normals_at_collapsed_edges_are_the_limits_from_inside() {
     let ku = || vec![0.0, 0.0, 1.0, 1.0];
     // A planar fan: row 0 (u = 0) collapsed to the apex, so S_v = 0 there; every normal of a
     // plane is the plane's, (0, 0, 1) here (S_u points away from the apex, S_v along +y).
-    let fan = net(2, 2, |i, j| {
-        if i == 0 {
-            DVec3::ZERO
-        } else {
-            DVec3::new(1.0, j as f64 - 0.5, 0.0)
-        }
-    });
+    let fan = fan_net(0);
     let s = BSplineSurface::from_flat(&fan, 2, 2, 1, 1, ku(), ku(), None).unwrap();
     for v in [0.0, 0.3, 1.0] {
         assert_close3(
@@ -354,13 +345,7 @@ fn normals_at_collapsed_edges_are_the_limits_from_inside() {
     }
     // The same fan with the apex at the far end (u = 1), and one collapsed at v = 1: the limits
     // keep the orientation of the inside.
-    let flipped = net(2, 2, |i, j| {
-        if i == 1 {
-            DVec3::ZERO
-        } else {
-            DVec3::new(1.0, j as f64 - 0.5, 0.0)
-        }
-    });
+    let flipped = fan_net(1);
     let s = BSplineSurface::from_flat(&flipped, 2, 2, 1, 1, ku(), ku(), None).unwrap();
     let inside = s.normal(0.5, 0.5).unwrap();
     assert_close3(s.normal(1.0, 0.5).unwrap(), inside, 1e-15, "apex at u = 1");
@@ -376,30 +361,15 @@ fn normals_at_collapsed_edges_are_the_limits_from_inside() {
     assert_close3(s.normal(0.3, 1.0).unwrap(), inside, 1e-15, "apex at v = 1");
     // A cone over the NURBS circle, apex in row 0: the normal at the apex along each ruling is
     // the limit of the normals approaching it.
-    let circle = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
     let cone = net(2, 9, |i, j| {
         if i == 0 {
             DVec3::new(0.0, 0.0, 2.0)
         } else {
-            DVec3::new(circle[j].0, circle[j].1, 0.0)
+            DVec3::new(CIRCLE_POINTS[j].0, CIRCLE_POINTS[j].1, 0.0)
         }
     });
-    let weights: Vec<f64> = (0..18)
-        .map(|k| if (k % 9) % 2 == 1 { FRAC_1_SQRT_2 } else { 1.0 })
-        .collect();
-    let kv = vec![
-        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
-    ];
+    let weights: Vec<f64> = (0..18).map(|k| circle_weight(k % 9)).collect();
+    let kv = CIRCLE_KNOTS.to_vec();
     let s = BSplineSurface::from_flat(&cone, 2, 9, 1, 2, ku(), kv, Some(&weights)).unwrap();
     for v in [0.0, 0.1, 0.25, 0.6] {
         let apex = s.normal(0.0, v).unwrap();

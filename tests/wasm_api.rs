@@ -480,14 +480,14 @@ fn sample_views_see_the_same_numbers_without_a_copy() {
     assert!(message(c.sample_view(arr(&[5.0]))).contains("outside the domain [0, 4]"));
 }
 
-#[test]
-fn bspline_surface_from_js() {
-    use splinelab::wasm::JsBSplineSurface;
-    // A bilinear patch over the unit square with z = x·y (degree 1 × 1: S(u, v) = (u, v, uv)).
-    let points = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+/// A bilinear patch over the unit square with z = x·y (degree 1 × 1: S(u, v) = (u, v, uv)).
+const BILINEAR: [f64; 12] = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+
+/// [`BILINEAR`] as a degree-1 × 1 `BSplineSurface` on knots 0 0 1 1 both ways.
+fn bilinear_bspline() -> splinelab::wasm::JsBSplineSurface {
     let knots = || arr(&[0.0, 0.0, 1.0, 1.0]);
-    let mut s = JsBSplineSurface::new(
-        arr(&points),
+    splinelab::wasm::JsBSplineSurface::new(
+        arr(&BILINEAR),
         2.0,
         2.0,
         1.0,
@@ -496,7 +496,15 @@ fn bspline_surface_from_js() {
         knots(),
         JsValue::UNDEFINED,
     )
-    .unwrap();
+    .unwrap()
+}
+
+#[test]
+fn bspline_surface_from_js() {
+    use splinelab::wasm::JsBSplineSurface;
+    let points = BILINEAR;
+    let knots = || arr(&[0.0, 0.0, 1.0, 1.0]);
+    let mut s = bilinear_bspline();
     assert_eq!(
         (s.rows(), s.cols(), s.degree_u(), s.degree_v(), s.rational()),
         (2, 2, 1, 1, false)
@@ -548,8 +556,8 @@ fn bspline_surface_from_js() {
 
 #[test]
 fn bezier_surfaces_and_meshes_from_js() {
-    use splinelab::wasm::{JsBSplineSurface, JsBezierSurface};
-    let points = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+    use splinelab::wasm::JsBezierSurface;
+    let points = BILINEAR;
     let patch = JsBezierSurface::new(arr(&points), 2.0, 2.0, JsValue::UNDEFINED).unwrap();
     assert_eq!((patch.degree_u(), patch.degree_v()), (1, 1));
     assert_eq!(patch.evaluate(0.5, 0.25).unwrap(), vec![0.5, 0.25, 0.125]);
@@ -575,18 +583,7 @@ fn bezier_surfaces_and_meshes_from_js() {
     ))
     .contains("at least 2 rows"));
 
-    let knots = || arr(&[0.0, 0.0, 1.0, 1.0]);
-    let s = JsBSplineSurface::new(
-        arr(&points),
-        2.0,
-        2.0,
-        1.0,
-        1.0,
-        knots(),
-        knots(),
-        JsValue::UNDEFINED,
-    )
-    .unwrap();
+    let s = bilinear_bspline();
     let refined = s
         .insert_knot_u(0.5, None)
         .unwrap()

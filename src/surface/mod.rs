@@ -55,14 +55,7 @@ impl BSplineSurface {
         knots_v: Vec<f64>,
         weights: Option<&[f64]>,
     ) -> Result<Self> {
-        let count =
-            rows.checked_mul(cols)
-                .filter(|&c| c <= MAX_SAMPLES)
-                .ok_or(Error::TooLarge {
-                    what: "rows·cols",
-                    value: rows.saturating_mul(cols),
-                    max: MAX_SAMPLES,
-                })?;
+        let count = checked_count("rows·cols", rows, cols)?;
         if coords.len() != 3 * count {
             return Err(Error::Mismatch {
                 message: format!(
@@ -247,24 +240,8 @@ impl BSplineSurface {
         let (ku, kv) = (self.knots_u.span(u), self.knots_v.span(v));
         let mut scratch = BasisScratch::default();
         let (mut nu, mut nv) = (vec![0.0; p + 1], vec![0.0; q + 1]);
-        basis_functions(
-            self.knots_u.as_slice(),
-            ku,
-            u,
-            p,
-            &mut nu,
-            &mut scratch,
-            None,
-        );
-        basis_functions(
-            self.knots_v.as_slice(),
-            kv,
-            v,
-            q,
-            &mut nv,
-            &mut scratch,
-            None,
-        );
+        basis(&self.knots_u, ku, u, &mut nu, &mut scratch);
+        basis(&self.knots_v, kv, v, &mut nv, &mut scratch);
         let mut sum = DVec4::ZERO;
         for (a, &na) in nu.iter().enumerate() {
             let row = (ku - p + a) * self.cols + kv - q;
@@ -513,47 +490,37 @@ impl BSplineSurface {
     /// A `u0` or `v0` outside `[0, 1]` or not finite.
     pub fn split_bezier(&self, u0: f64, v0: f64) -> Result<[Self; 4]> {
         let (u0, v0) = self.check_uv(u0, v0)?;
-        let split_v = |surface: &Self| -> (Self, Self) {
-            let (mut left, mut right) = (
-                Vec::with_capacity(surface.net.len()),
-                Vec::with_capacity(surface.net.len()),
-            );
-            for row in surface.net.chunks_exact(surface.cols) {
-                let (l, r) = split_points(row, v0);
-                left.extend(l);
-                right.extend(r);
-            }
-            (
-                BSplineSurface {
-                    net: left,
-                    ..surface.clone()
-                },
-                BSplineSurface {
-                    net: right,
-                    ..surface.clone()
-                },
-            )
-        };
         let split_u = |surface: &Self| -> (Self, Self) {
-            let t = surface.transposed();
-            let (mut left, mut right) = (Vec::new(), Vec::new());
-            for column in t.net.chunks_exact(t.cols) {
-                let (l, r) = split_points(column, u0);
-                left.extend(l);
-                right.extend(r);
-            }
-            (
-                BSplineSurface {
-                    net: left,
-                    ..t.clone()
-                }
-                .transposed(),
-                BSplineSurface { net: right, ..t }.transposed(),
-            )
+            let (low, high) = surface.transposed().split_rows(u0);
+            (low.transposed(), high.transposed())
         };
-        let (low_v, high_v) = split_v(self);
+        let (low_v, high_v) = self.split_rows(v0);
         let ((a, c), (b, d)) = (split_u(&low_v), split_u(&high_v));
         Ok([a, b, c, d])
+    }
+
+    /// A Bézier patch split at `v0` (de Casteljau on every row): the nets of `v ≤ v0` and
+    /// `v ≥ v0`, each on `[0, 1]` in v.
+    fn split_rows(&self, v0: f64) -> (Self, Self) {
+        let (mut low, mut high) = (
+            Vec::with_capacity(self.net.len()),
+            Vec::with_capacity(self.net.len()),
+        );
+        for row in self.net.chunks_exact(self.cols) {
+            let (l, h) = split_points(row, v0);
+            low.extend(l);
+            high.extend(h);
+        }
+        (
+            BSplineSurface {
+                net: low,
+                ..self.clone()
+            },
+            BSplineSurface {
+                net: high,
+                ..self.clone()
+            },
+        )
     }
 
     /// A triangle mesh of the whole surface: `(nu + 1)(nv + 1)` vertices at equally spaced
@@ -574,13 +541,7 @@ impl BSplineSurface {
             });
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
-        cu.checked_mul(cv)
-            .filter(|&n| n <= MAX_SAMPLES)
-            .ok_or(Error::TooLarge {
-                what: "tessellation vertices (nu + 1)(nv + 1)",
-                value: cu.saturating_mul(cv),
-                max: MAX_SAMPLES,
-            })?;
+        checked_count("tessellation vertices (nu + 1)(nv + 1)", cu, cv)?;
         let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
             (0..=n)
                 .map(|i| {
@@ -660,15 +621,7 @@ impl BSplineSurface {
     /// A bad value in `us` or `vs` (named by index), and [`Error::TooLarge`] for more than
     /// [`MAX_SAMPLES`] points.
     pub fn sample_grid_into(&self, us: &[f64], vs: &[f64], out: &mut Vec<f64>) -> Result<()> {
-        let points = us
-            .len()
-            .checked_mul(vs.len())
-            .filter(|&n| n <= MAX_SAMPLES)
-            .ok_or(Error::TooLarge {
-                what: "grid points us.length·vs.length",
-                value: us.len().saturating_mul(vs.len()),
-                max: MAX_SAMPLES,
-            })?;
+        let points = checked_count("grid points us.length·vs.length", us.len(), vs.len())?;
         for (i, &u) in us.iter().enumerate() {
             self.knots_u
                 .check_named("u", u)
@@ -689,7 +642,7 @@ impl BSplineSurface {
         let mut k = q;
         for (&v, values) in vs.iter().zip(table.chunks_exact_mut(q + 1)) {
             k = self.knots_v.span_from(v, k);
-            basis_functions(self.knots_v.as_slice(), k, v, q, values, &mut scratch, None);
+            basis(&self.knots_v, k, v, values, &mut scratch);
             first.push(k - q);
         }
         let mut nu = vec![0.0; p + 1];
@@ -697,15 +650,7 @@ impl BSplineSurface {
         let mut ku = p;
         for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(3 * vs.len().max(1))) {
             ku = self.knots_u.span_from(u, ku);
-            basis_functions(
-                self.knots_u.as_slice(),
-                ku,
-                u,
-                p,
-                &mut nu,
-                &mut scratch,
-                None,
-            );
+            basis(&self.knots_u, ku, u, &mut nu, &mut scratch);
             row.fill(DVec4::ZERO);
             for (a, &na) in nu.iter().enumerate() {
                 let start = (ku - p + a) * self.cols;
@@ -727,6 +672,22 @@ impl BSplineSurface {
         }
         Ok(())
     }
+}
+
+/// `a · b`, the size of a net, grid or mesh, checked against [`MAX_SAMPLES`] (`what` names it).
+fn checked_count(what: &'static str, a: usize, b: usize) -> Result<usize> {
+    a.checked_mul(b)
+        .filter(|&n| n <= MAX_SAMPLES)
+        .ok_or(Error::TooLarge {
+            what,
+            value: a.saturating_mul(b),
+            max: MAX_SAMPLES,
+        })
+}
+
+/// The `p + 1` basis functions of `knots` that can be non-zero at `t` in span `k`, into `out`.
+fn basis(knots: &KnotVector, k: usize, t: f64, out: &mut [f64], scratch: &mut BasisScratch) {
+    basis_functions(knots.as_slice(), k, t, knots.degree(), out, scratch, None);
 }
 
 /// A triangle mesh ready for WebGL: see [`BSplineSurface::tessellate`].

@@ -111,3 +111,30 @@ pub fn distance_to_polyline(p: DVec2, vertices: &[DVec2]) -> f64 {
 pub fn pts2(xy: &[(f64, f64)]) -> Vec<DVec2> {
     xy.iter().map(|&(x, y)| DVec2::new(x, y)).collect()
 }
+
+/// The 9-point NURBS unit circle (NURBS Book ex. 7.1): control points on the square's corners
+/// and edge midpoints, corner weights √2/2, knots `0,0,0,¼,¼,½,½,¾,¾,1,1,1`, degree 2.
+pub const CIRCLE_POINTS: [(f64, f64); 9] = [
+    (1.0, 0.0),
+    (1.0, 1.0),
+    (0.0, 1.0),
+    (-1.0, 1.0),
+    (-1.0, 0.0),
+    (-1.0, -1.0),
+    (0.0, -1.0),
+    (1.0, -1.0),
+    (1.0, 0.0),
+];
+/// Knots of [`CIRCLE_POINTS`].
+pub const CIRCLE_KNOTS: [f64; 12] = [
+    0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+];
+
+/// Weight `i` of [`CIRCLE_POINTS`]: √2/2 at the corners (odd `i`), 1 elsewhere.
+pub fn circle_weight(i: usize) -> f64 {
+    if i % 2 == 1 {
+        std::f64::consts::FRAC_1_SQRT_2
+    } else {
+        1.0
+    }
+}
