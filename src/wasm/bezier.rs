@@ -524,7 +524,7 @@ impl From<Continuity> for ContinuityJs {
 /// `jointContinuity(left, right, tolerance = 1e-9)`: `{ c, g }`, the largest k with C^k and
 /// G^k at the joint of left's end and right's start (−1: the pieces do not meet; Infinity:
 /// one polynomial). G is checked up to 2.
-#[wasm_bindgen(js_name = jointContinuity)]
+#[wasm_bindgen(js_name = jointContinuity, unchecked_return_type = "{ c: number; g: number }")]
 pub fn joint_continuity(
     left: &JsBezierCurve,
     right: &JsBezierCurve,
@@ -725,6 +725,7 @@ impl JsCompositeBezier {
     }
 
     /// `[{ c, g }, …]`: the continuity at each joint (see `jointContinuity`).
+    #[wasm_bindgen(unchecked_return_type = "{ c: number; g: number }[]")]
     pub fn continuity(&self, tolerance: Option<f64>) -> Result<JsValue, JsError> {
         let ks = with_composite!(&self.inner, c => c.continuity(tolerance.unwrap_or(DEFAULT_CONTINUITY_TOLERANCE))?);
         let out: Vec<ContinuityJs> = ks.into_iter().map(ContinuityJs::from).collect();

@@ -260,7 +260,7 @@ impl JsBSplineCurve {
 
     /// The Cox–de Boor triangle at u: `{ span: k, levels }` where `levels[r]` holds
     /// `N_{k−r,r}(u) … N_{k,r}(u)`.
-    #[wasm_bindgen(js_name = basisTable)]
+    #[wasm_bindgen(js_name = basisTable, unchecked_return_type = "{ span: number; levels: number[][] }")]
     pub fn basis_table(&self, u: f64) -> Result<JsValue, JsError> {
         let (span, levels) = with_curve!(&self.inner, c => c.basis_table(u))?;
         Ok(serde_wasm_bindgen::to_value(&BasisTableJs {
@@ -322,7 +322,7 @@ impl JsBSplineCurve {
 
     /// `[{ knot, multiplicity, continuity }]` for each distinct interior knot: C^(p − r)
     /// (continuity −1 where the curve may break).
-    #[wasm_bindgen(js_name = knotContinuity)]
+    #[wasm_bindgen(js_name = knotContinuity, unchecked_return_type = "{ knot: number; multiplicity: number; continuity: number }[]")]
     pub fn knot_continuity(&self) -> Result<JsValue, JsError> {
         let list: Vec<KnotContinuityJs> = with_curve!(&self.inner, c => c.knot_continuity())
             .into_iter()

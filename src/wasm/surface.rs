@@ -305,6 +305,7 @@ macro_rules! surface_methods {
             /// Uint32Array }` with (nu + 1)(nv + 1) vertices at equally spaced (u, v) over the domain
             /// (vertex a·(nv + 1) + b), unit normals, and 2·nu·nv triangles counter-clockwise seen from
             /// the side the normals point to.
+            #[wasm_bindgen(unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; indices: Uint32Array }")]
             pub fn tessellate(&self, nu: f64, nv: f64) -> Result<JsValue, JsError> {
                 let mesh = self.inner.tessellate(whole("nu", nu)?, whole("nv", nv)?)?;
                 mesh_to_js(&mesh)

@@ -193,6 +193,17 @@ try {
     assert(missing.length === 0, `keys missing from strings.js:\n${missing.join("\n")}`);
   });
 
+  await test("the TypeScript declarations type every public parameter and result (no `any`)", async () => {
+    // The package's .d.ts as a JS developer's editor reads it; the raw wasm exports after
+    // `InitInput` are wasm-bindgen's own.
+    const dts = readFileSync(join(ROOT, "www/pkg/splinelab.d.ts"), "utf8");
+    const publicPart = dts.slice(0, dts.indexOf("export type InitInput"));
+    const code = publicPart.split("\n").filter((line) => !/^\s*(\/\*\*|\*)/.test(line));
+    const loose = code.filter((line) => /\bany\b/.test(line));
+    assert(publicPart.includes("class BSplineSurface") && publicPart.includes("basisNonZero(u: number): Float64Array"), "declarations of this build");
+    assert(loose.length === 0, `untyped declarations:\n${loose.join("\n")}`);
+  });
+
   await test("gallery lists every demo with a thumbnail and a #demo= link", async () => {
     await page.locator(".card").first().waitFor();
     for (const demo of registry) {
