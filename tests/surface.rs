@@ -562,6 +562,23 @@ fn tessellation_is_the_grid_with_normals_and_outward_triangles() {
         .unwrap_err()
         .to_string()
         .contains("nu = 0"));
+    let e = s.tessellate(3000, 3000).unwrap_err().to_string();
+    assert!(
+        e.contains("tessellation vertices") && e.contains("9006001"),
+        "{e}"
+    );
+    // A collapsed edge in a mesh: the apex vertices take the limit normal, the plane's.
+    let knots = || vec![0.0, 0.0, 1.0, 1.0];
+    let fan = BSplineSurface::from_flat(&fan_net(0), 2, 2, 1, 1, knots(), knots(), None).unwrap();
+    let fan_mesh = fan.tessellate(4, 4).unwrap();
+    for k in 0..25 {
+        assert_close3(
+            at(&fan_mesh.normals, k),
+            DVec3::Z,
+            1e-7,
+            &format!("fan mesh normal {k}"),
+        );
+    }
     // A corner where both partial derivatives vanish (P00 = P01 = P10 on a biquadratic): no
     // limit either, so the vertex gets the mean of its triangles' normals, close to its
     // neighbours'.

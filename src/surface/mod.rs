@@ -16,6 +16,10 @@ use crate::error::{Error, Num, Result};
 use crate::geom::{check_all_finite, check_weights, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
+/// Most vertices one [`BSplineSurface::tessellate`] call makes (about 2048 × 2048): with the
+/// triangles, ~50 bytes each in the result.
+pub const MAX_MESH_VERTICES: usize = 1 << 22;
+
 /// A polynomial or rational (NURBS) tensor-product B-spline surface in 3D.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineSurface {
@@ -55,7 +59,7 @@ impl BSplineSurface {
         knots_v: Vec<f64>,
         weights: Option<&[f64]>,
     ) -> Result<Self> {
-        let count = checked_count("rows·cols", rows, cols)?;
+        let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
         if coords.len() != 3 * count {
             return Err(Error::Mismatch {
                 message: format!(
@@ -530,8 +534,8 @@ impl BSplineSurface {
     /// counter-clockwise seen from the side the normals point to.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] for `nu` or `nv` of 0, [`Error::TooLarge`] above [`MAX_SAMPLES`]
-    /// vertices.
+    /// [`Error::Mismatch`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
+    /// [`MAX_MESH_VERTICES`] vertices.
     pub fn tessellate(&self, nu: usize, nv: usize) -> Result<Mesh> {
         if nu == 0 || nv == 0 {
             return Err(Error::Mismatch {
@@ -541,7 +545,12 @@ impl BSplineSurface {
             });
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
-        checked_count("tessellation vertices (nu + 1)(nv + 1)", cu, cv)?;
+        checked_count(
+            "tessellation vertices (nu + 1)(nv + 1)",
+            cu,
+            cv,
+            MAX_MESH_VERTICES,
+        )?;
         let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
             (0..=n)
                 .map(|i| {
@@ -557,25 +566,13 @@ impl BSplineSurface {
             grid(self.knots_u.domain(), nu),
             grid(self.knots_v.domain(), nv),
         );
-        let mut points = Vec::new();
-        self.sample_grid_into(&us, &vs, &mut points)?;
+        let (points, mut normals, missing) = self.grid_with_normals(&us, &vs);
         let mut indices = Vec::with_capacity(6 * nu * nv);
         for a in 0..nu {
             for b in 0..nv {
                 let v00 = (a * cv + b) as u32;
                 let v10 = v00 + cv as u32;
                 indices.extend_from_slice(&[v00, v10, v10 + 1, v00, v10 + 1, v00 + 1]);
-            }
-        }
-        let mut normals = Vec::with_capacity(points.len());
-        let mut missing = Vec::new();
-        for &u in &us {
-            for &v in &vs {
-                let n = self.normal(u, v).unwrap_or_else(|_| {
-                    missing.push(normals.len() / 3);
-                    DVec3::ZERO
-                });
-                normals.extend(n.to_array());
             }
         }
         if !missing.is_empty() {
@@ -609,6 +606,95 @@ impl BSplineSurface {
         })
     }
 
+    /// Points and unit normals on the grid `us × vs` (parameters in the domain), u-major, flat,
+    /// and the vertices where even [`BSplineSurface::normal`]'s limit gives no normal (their
+    /// normal is left zero). As [`BSplineSurface::sample_grid_into`], with the first
+    /// derivatives of the basis tabulated too: each u collapses the rows into the homogeneous
+    /// curves `A(u, ·)` and `A_u(u, ·)`, and each v gives `A`, `A_u`, `A_v` with `q + 1` terms;
+    /// then `S = A/w`, `S_u = (A_u − w_u S)/w`, `S_v = (A_v − w_v S)/w`. Where `S_u × S_v`
+    /// degenerates, `normal` (with its limits) is asked instead.
+    fn grid_with_normals(&self, us: &[f64], vs: &[f64]) -> (Vec<f64>, Vec<f64>, Vec<usize>) {
+        let (p, q) = (self.degree_u(), self.degree_v());
+        // The v basis and its derivative, once per v: the first column, then the q + 1 values
+        // and the q + 1 derivatives.
+        let (mut first, mut values, mut slopes) =
+            (Vec::with_capacity(vs.len()), Vec::new(), Vec::new());
+        let mut k = q;
+        for &v in vs {
+            k = self.knots_v.span_from(v, k);
+            let d = basis_derivatives(self.knots_v.as_slice(), k, v, q, 1);
+            first.push(k - q);
+            values.extend_from_slice(d.first().map_or(&[][..], |r| &r[..]));
+            slopes.extend_from_slice(d.get(1).map_or(&[][..], |r| &r[..]));
+        }
+        let len = 3 * us.len() * vs.len();
+        let (mut points, mut normals) = (Vec::with_capacity(len), Vec::with_capacity(len));
+        let mut missing = Vec::new();
+        let (mut row, mut row_u) = (vec![DVec4::ZERO; self.cols], vec![DVec4::ZERO; self.cols]);
+        let mut ku = p;
+        for &u in us {
+            ku = self.knots_u.span_from(u, ku);
+            let d = basis_derivatives(self.knots_u.as_slice(), ku, u, p, 1);
+            let (nu, dnu) = (
+                d.first().map_or(&[][..], |r| &r[..]),
+                d.get(1).map_or(&[][..], |r| &r[..]),
+            );
+            row.fill(DVec4::ZERO);
+            row_u.fill(DVec4::ZERO);
+            for (a, (&n, &dn)) in nu.iter().zip(dnu).enumerate() {
+                let start = (ku - p + a) * self.cols;
+                let Some(net_row) = self.net.get(start..start + self.cols) else {
+                    continue;
+                };
+                for ((r, ru), &h) in row.iter_mut().zip(row_u.iter_mut()).zip(net_row) {
+                    *r += n * h;
+                    *ru += dn * h;
+                }
+            }
+            for (((&v, &j0), nv), dnv) in vs
+                .iter()
+                .zip(&first)
+                .zip(values.chunks_exact(q + 1))
+                .zip(slopes.chunks_exact(q + 1))
+            {
+                let (Some(c), Some(cu)) = (row.get(j0..j0 + q + 1), row_u.get(j0..j0 + q + 1))
+                else {
+                    continue;
+                };
+                let (mut a, mut a_u, mut a_v) = (DVec4::ZERO, DVec4::ZERO, DVec4::ZERO);
+                for b in 0..c.len().min(cu.len()).min(nv.len()).min(dnv.len()) {
+                    a += nv[b] * c[b];
+                    a_u += nv[b] * cu[b];
+                    a_v += dnv[b] * c[b];
+                }
+                let inv_w = 1.0 / a.w;
+                let point = a.truncate() * inv_w;
+                let su = (a_u.truncate() - a_u.w * point) * inv_w;
+                let sv = (a_v.truncate() - a_v.w * point) * inv_w;
+                let cross = su.cross(sv);
+                // normal()'s tests, squared: neither derivative vanishes (relative 1e-10), and
+                // they are not parallel (relative 1e-12).
+                let (lu, lv, lc) = (
+                    su.length_squared(),
+                    sv.length_squared(),
+                    cross.length_squared(),
+                );
+                let tiny = 1e-20 * lu.max(lv);
+                let normal = if lu > tiny && lv > tiny && lc > 1e-24 * lu * lv {
+                    cross * (1.0 / lc.sqrt())
+                } else {
+                    self.normal(u, v).unwrap_or_else(|_| {
+                        missing.push(points.len() / 3);
+                        DVec3::ZERO
+                    })
+                };
+                points.extend(point.to_array());
+                normals.extend(normal.to_array());
+            }
+        }
+        (points, normals, missing)
+    }
+
     /// `S(u_a, v_b)` for every `u_a` of `us` and `v_b` of `vs`, u-major (point `a·len(vs) + b`,
     /// 3 numbers each), into `out` (resized).
     ///
@@ -621,7 +707,12 @@ impl BSplineSurface {
     /// A bad value in `us` or `vs` (named by index), and [`Error::TooLarge`] for more than
     /// [`MAX_SAMPLES`] points.
     pub fn sample_grid_into(&self, us: &[f64], vs: &[f64], out: &mut Vec<f64>) -> Result<()> {
-        let points = checked_count("grid points us.length·vs.length", us.len(), vs.len())?;
+        let points = checked_count(
+            "grid points us.length·vs.length",
+            us.len(),
+            vs.len(),
+            MAX_SAMPLES,
+        )?;
         for (i, &u) in us.iter().enumerate() {
             self.knots_u
                 .check_named("u", u)
@@ -674,14 +765,14 @@ impl BSplineSurface {
     }
 }
 
-/// `a · b`, the size of a net, grid or mesh, checked against [`MAX_SAMPLES`] (`what` names it).
-fn checked_count(what: &'static str, a: usize, b: usize) -> Result<usize> {
+/// `a · b`, the size of a net, grid or mesh, checked against `max` (`what` names it).
+fn checked_count(what: &'static str, a: usize, b: usize, max: usize) -> Result<usize> {
     a.checked_mul(b)
-        .filter(|&n| n <= MAX_SAMPLES)
+        .filter(|&n| n <= max)
         .ok_or(Error::TooLarge {
             what,
             value: a.saturating_mul(b),
-            max: MAX_SAMPLES,
+            max,
         })
 }
 
