@@ -512,6 +512,35 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("formula lines shrink to fit the panel in lecture mode (every demo, 1280 px wide)", async () => {
+    // At 1.6× type 16 of the 20 demos had lines running out of the panel; each line now
+    // shrinks until it fits (never below MIN_FIT_SCALE), and a line that fits keeps its size.
+    const overflowing = [];
+    for (const { id } of registry) {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html#demo=${id}`);
+      await page.locator(".sl-formula .katex").first().waitFor({ state: "attached" });
+      const measure = () => page.evaluate(() => [...document.querySelectorAll(".sl-formula-line")].map((l) => ({ client: l.clientWidth, scroll: l.scrollWidth, size: l.style.fontSize })));
+      // At normal size every line fits at 1280 px: none is shrunk.
+      const normal = await measure();
+      assert(normal.every((l) => l.size === "" && l.scroll <= l.client + 1), `${id}: normal-size lines ${JSON.stringify(normal)}`);
+      await page.locator('[data-action="lecture"]').first().click();
+      await settle(page);
+      await settle(page);
+      for (const [i, l] of (await measure()).entries()) {
+        if (l.scroll > l.client + 1 && l.size !== "0.6em") overflowing.push(`${id} line ${i}: ${l.scroll} px in ${l.client} px at ${l.size || "full size"}`);
+      }
+      if (id === "projective") {
+        // Back to normal size: the panel refits (its type size changed) and nothing stays shrunk.
+        await page.locator('[data-action="lecture"]').first().click();
+        await page.waitForFunction(() => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.style.fontSize === ""), null, { timeout: 3000 });
+      }
+    }
+    assert(overflowing.length === 0, overflowing.join("\n"));
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("embed example: two independent demos in shadow roots", async () => {
     await page.goto(`${base}/embed-example.html`);
     const a = demoHelpers(page, "spline-lab#worked ");

@@ -32,6 +32,12 @@ export function ensureKatexStyles(root) {
   if (root && root !== document) add(root);
 }
 
+/**
+ * Smallest scale a line is shrunk to so it fits the panel's width (lecture mode's 1.6× type at
+ * this scale is about the normal size); a line still too wide scrolls sideways.
+ */
+export const MIN_FIT_SCALE = 0.6;
+
 export class FormulaPanel {
   /** @param {HTMLElement} element the panel; its content is owned by this object. */
   constructor(element) {
@@ -41,6 +47,16 @@ export class FormulaPanel {
     this._tex = [];
     this._katex = null;
     this._destroyed = false;
+    // Refit every line when the panel's width or type size changes (a resize, lecture mode),
+    // in the next frame so the refit never re-enters the observer's own notification.
+    this._fitKey = "";
+    this._observer = new ResizeObserver(() => {
+      const key = `${this.element.clientWidth} ${getComputedStyle(this.element).fontSize}`;
+      if (key === this._fitKey) return;
+      this._fitKey = key;
+      requestAnimationFrame(() => this._fit(this._lines));
+    });
+    this._observer.observe(this.element);
     loadKatex()
       .then((katex) => {
         if (this._destroyed) return;
@@ -69,10 +85,12 @@ export class FormulaPanel {
       this._lines.pop().remove();
       this._tex.pop();
     }
+    const changed = [];
     lines.forEach((tex, i) => {
       if (!all && this._tex[i] === tex) return;
       this._tex[i] = tex;
       const div = this._lines[i];
+      changed.push(div);
       if (this._katex) {
         try {
           this._katex.render(tex, div, { displayMode: true, throwOnError: false, output: "htmlAndMathml" });
@@ -83,10 +101,27 @@ export class FormulaPanel {
       }
       div.textContent = tex;
     });
+    this._fit(changed);
+  }
+
+  /**
+   * Shrinks each of `lines` that is wider than the panel until it fits (type scale
+   * `clientWidth / scrollWidth`, at least MIN_FIT_SCALE); a line that fits keeps the panel's size.
+   */
+  _fit(lines) {
+    for (const div of lines) {
+      div.style.fontSize = "";
+      const { clientWidth, scrollWidth } = div;
+      if (clientWidth > 0 && scrollWidth > clientWidth + 1) {
+        const scale = Math.max(MIN_FIT_SCALE, Math.floor((1000 * clientWidth) / scrollWidth) / 1000);
+        div.style.fontSize = `${scale}em`;
+      }
+    }
   }
 
   destroy() {
     this._destroyed = true;
+    this._observer.disconnect();
     this.element.textContent = "";
   }
 }
