@@ -29,12 +29,18 @@ export function figureToCanvas(view, scale = PNG_SCALE, width = view.width, heig
   return canvas;
 }
 
-/** The figure of `view` as a PNG Blob at `scale`. */
+/**
+ * The figure of `view` as a PNG Blob at `scale`. Encoded at once with `toDataURL`: Chromium's
+ * `toBlob` waits for idle time and, on a busy page, for its 5-second fallback (measured: 1 export
+ * in 5 took 6.7 s instead of 1.1 s in the browser tests), and the download would then start
+ * long after the click.
+ */
 export function figureToPng(view, scale = PNG_SCALE) {
-  const canvas = figureToCanvas(view, scale);
-  return new Promise((resolve, reject) => {
-    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error("PNG encoding failed"))), "image/png");
-  });
+  const url = figureToCanvas(view, scale).toDataURL("image/png");
+  const base64 = atob(url.slice(url.indexOf(",") + 1));
+  const bytes = new Uint8Array(base64.length);
+  for (let i = 0; i < base64.length; i++) bytes[i] = base64.charCodeAt(i);
+  return Promise.resolve(new Blob([bytes], { type: "image/png" }));
 }
 
 /** Offers `blob` as a download named `filename`. */
