@@ -12,8 +12,8 @@
 use crate::bezier::split_points;
 use crate::bspline::{basis_derivatives, basis_functions, boehm_insert, BasisScratch};
 use crate::bspline::{check_degree, KnotVector};
-use crate::error::{Error, Num, Result};
-use crate::geom::{check_all_finite, check_weights, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
+use crate::error::{check_finite, Error, Num, Result};
+use crate::geom::{check_all_finite, check_weights, Params, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
 /// Most vertices one [`BSplineSurface::tessellate`] call makes (about 2048 × 2048): with the
@@ -204,7 +204,7 @@ impl BSplineSurface {
     pub fn set_control_point(&mut self, i: usize, j: usize, p: DVec3) -> Result<()> {
         let k = self.index(i, j)?;
         for (c, value) in p.to_array().into_iter().enumerate() {
-            crate::error::check_finite(|| format!("coordinate {c} of the new point"), value)?;
+            check_finite(|| format!("coordinate {c} of the new point"), value)?;
         }
         if let Some(h) = self.net.get_mut(k) {
             *h = (p * h.w).extend(h.w);
@@ -218,7 +218,7 @@ impl BSplineSurface {
     /// An index out of range, [`Error::NotFinite`], [`Error::NonPositiveWeight`].
     pub fn set_weight(&mut self, i: usize, j: usize, w: f64) -> Result<()> {
         let k = self.index(i, j)?;
-        crate::error::check_finite(|| format!("weight ({i}, {j})"), w)?;
+        check_finite(|| format!("weight ({i}, {j})"), w)?;
         if w <= 0.0 {
             return Err(Error::NonPositiveWeight { index: k, value: w });
         }
@@ -552,15 +552,8 @@ impl BSplineSurface {
             MAX_MESH_VERTICES,
         )?;
         let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
-            (0..=n)
-                .map(|i| {
-                    if i == n {
-                        b
-                    } else {
-                        a + (b - a) * i as f64 / n as f64
-                    }
-                })
-                .collect()
+            let params = Params::uniform(a, b, n + 1);
+            (0..params.len()).map(|i| params.get(i)).collect()
         };
         let (us, vs) = (
             grid(self.knots_u.domain(), nu),
@@ -639,18 +632,8 @@ impl BSplineSurface {
                 d.first().map_or(&[][..], |r| &r[..]),
                 d.get(1).map_or(&[][..], |r| &r[..]),
             );
-            row.fill(DVec4::ZERO);
-            row_u.fill(DVec4::ZERO);
-            for (a, (&n, &dn)) in nu.iter().zip(dnu).enumerate() {
-                let start = (ku - p + a) * self.cols;
-                let Some(net_row) = self.net.get(start..start + self.cols) else {
-                    continue;
-                };
-                for ((r, ru), &h) in row.iter_mut().zip(row_u.iter_mut()).zip(net_row) {
-                    *r += n * h;
-                    *ru += dn * h;
-                }
-            }
+            self.collapse_rows(ku, nu, &mut row);
+            self.collapse_rows(ku, dnu, &mut row_u);
             for (((&v, &j0), nv), dnv) in vs
                 .iter()
                 .zip(&first)
@@ -693,6 +676,19 @@ impl BSplineSurface {
             }
         }
         (points, normals, missing)
+    }
+
+    /// The u direction collapsed at one u of span `ku`: `row[j] = Σ_a weights[a] (wP)_{ku−p+a, j}`
+    /// over the `p + 1` rows of the span (with the basis values `N_{ku−p+a,p}(u)`, the
+    /// homogeneous curve `A(u, ·)`; with their derivatives, `A_u(u, ·)`).
+    fn collapse_rows(&self, ku: usize, weights: &[f64], row: &mut [DVec4]) {
+        row.fill(DVec4::ZERO);
+        let first = ku - self.degree_u();
+        for (net_row, &n) in self.net.chunks_exact(self.cols).skip(first).zip(weights) {
+            for (r, &h) in row.iter_mut().zip(net_row) {
+                *r += n * h;
+            }
+        }
     }
 
     /// `S(u_a, v_b)` for every `u_a` of `us` and `v_b` of `vs`, u-major (point `a·len(vs) + b`,
@@ -742,15 +738,7 @@ impl BSplineSurface {
         for (&u, out_row) in us.iter().zip(out.chunks_exact_mut(3 * vs.len().max(1))) {
             ku = self.knots_u.span_from(u, ku);
             basis(&self.knots_u, ku, u, &mut nu, &mut scratch);
-            row.fill(DVec4::ZERO);
-            for (a, &na) in nu.iter().enumerate() {
-                let start = (ku - p + a) * self.cols;
-                if let Some(net_row) = self.net.get(start..start + self.cols) {
-                    for (r, &h) in row.iter_mut().zip(net_row) {
-                        *r += na * h;
-                    }
-                }
-            }
+            self.collapse_rows(ku, &nu, &mut row);
             // Degrees 1–5 get a kernel whose inner loop the compiler unrolls.
             match q + 1 {
                 2 => grid_row::<2>(&row, &first, &table, out_row),

@@ -18,6 +18,7 @@ import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "conics";
 /** Prefix of this demo's keys in strings.js. */
@@ -53,8 +54,8 @@ const FLAT_COS = 1e-9;
 const DEGREES = 180 / Math.PI;
 /** Radius errors below this are written in exponent form. */
 const SMALL = 1e-3;
-/** The band at the top (CSS px) kept for the conic's name and the key: [top, right, bottom, left]. */
-const LEGEND_INSETS = Object.freeze([52, 0, 0, 0]);
+/** Height of the band at the top kept for the conic's name and the key, CSS px at text scale 1. */
+const LEGEND_PX = 52;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -121,7 +122,7 @@ export function mount(container, initialState, ctx) {
   let kindLabel = "";
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: () => LEGEND_INSETS });
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(LEGEND_PX, 0, 0, 0) });
   const handles = new Handles(view, {
     count: () => 3,
     get: (i, out) => {

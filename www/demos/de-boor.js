@@ -18,6 +18,7 @@ import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { buildOrReport } from "../lib/wasm.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "de-boor";
 /** Prefix of this demo's keys in strings.js. */
@@ -153,19 +154,10 @@ export function mount(container, initialState, ctx) {
   let knotsKey = ""; // the knot vector the strip arrays were built for
 
   // ------------------------------------------------------------ figure
-  // The View may ask for its insets while it is being built, before `view` is assigned.
-  let viewReady = false;
-  const textScale = () => (viewReady ? view.renderer.scale : 1);
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-  viewReady = true;
+  // The knot strip below the world window.
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(0, 0, STRIP_PX, 0) });
   // A taller figure than the default 16:10: the curve and the knot strip share it.
   ctx.slots.figure.style.aspectRatio = "4 / 3";
-  const insetScratch = [0, 0, STRIP_PX, 0];
-  /** The knot strip below the world window: [top, right, bottom, left] (no allocation). */
-  function insets() {
-    insetScratch[2] = STRIP_PX * textScale(); // taller in lecture mode
-    return insetScratch;
-  }
 
   // The knot strip claims the pointer before the handles: press or drag there to set u.
   let draggingU = false;

@@ -17,6 +17,7 @@ import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath } from "../lib/draw.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "flattening";
 /** Prefix of this demo's keys in strings.js. */
@@ -118,16 +119,8 @@ export function mount(container, initialState, ctx) {
   const bandStyle = { stroke: "", strokeAlpha: BAND_ALPHA, width: 1, join: "round", cap: "round" };
 
   // ------------------------------------------------------------ figure
-  // The View may ask for its insets while it is being built, before `view` is assigned.
-  let viewReady = false;
-  const insetScratch = [0, 0, 0, 0];
-  /** The count's band above the world window, taller in lecture mode (no allocation). */
-  const insets = () => {
-    insetScratch[0] = COUNT_BAND_PX * (viewReady ? view.renderer.scale : 1);
-    return insetScratch;
-  };
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-  viewReady = true;
+  // The count's band above the world window.
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(COUNT_BAND_PX, 0, 0, 0) });
   const handles = new Handles(view, {
     ...pointHandles(() => work.points, (i, xy) => {
       curve.setControlPoint(i, xy); // in place: no rebuild while dragging

@@ -27,6 +27,7 @@ import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
 import { ParameterStrip } from "../lib/param-strip.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "knot-insertion";
 /** Prefix of this demo's keys in strings.js. */
@@ -157,7 +158,6 @@ export function mount(container, initialState, ctx) {
   let distinct = []; // distinct knot values of the current curve
   let knotLabels = []; // their labels ("0 ×3")
   const insertedSet = new Set(); // inserted values (strip ticks)
-  const insetScratch = [0, 0, 0, 0];
   const qLabels = []; // "Q₀" …
   let uLabel = "";
   let hoverIndex = -1; // the sample under the pointer (click inserts its u)
@@ -166,14 +166,8 @@ export function mount(container, initialState, ctx) {
   let stylesTheme = null;
 
   // ------------------------------------------------------------ figure
-  let view = null;
-  view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-
-  /** The canvas strip below the world window, [top, right, bottom, left] (scratch, no allocation). */
-  function insets() {
-    insetScratch[2] = STRIP_PX * (view ? view.renderer.scale : 1);
-    return insetScratch;
-  }
+  // The canvas strip below the world window.
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(0, 0, STRIP_PX, 0) });
 
   // The knot strip claims the pointer before the handles: press or drag there to set u.
   const strip = new ParameterStrip(view, {

@@ -125,17 +125,13 @@ export function mount(container, initialState, ctx) {
   const legendWidths = new Float64Array(KINDS.length); // label widths, CSS px at scale 1
   const legendAt = new Float64Array(2 * KINDS.length); // laid-out swatch starts (x, y), CSS px
   const insetScratch = [0, 0, 0, 0];
-  // The View may ask for its insets while it is being built, before `view` is assigned.
-  let viewReady = false;
-  const textScale = () => (viewReady ? view.renderer.scale : 1);
   const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-  viewReady = true;
   // A taller figure than the default 16:10: the legend takes a strip at the top.
   ctx.slots.figure.style.aspectRatio = "3 / 2";
 
   /** The legend's strip above the world window: [top, right, bottom, left] (no allocation). */
-  function insets(width) {
-    insetScratch[0] = layoutLegend(width, textScale());
+  function insets(width, height, scale) {
+    insetScratch[0] = layoutLegend(width, scale);
     return insetScratch;
   }
 

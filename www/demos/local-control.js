@@ -26,6 +26,7 @@ import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-lis
 import { titledTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
 import { ParameterStrip } from "../lib/param-strip.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "local-control";
 /** Prefix of this demo's keys in strings.js. */
@@ -121,21 +122,14 @@ export function mount(container, initialState, ctx) {
   let point = null; // curve.evaluate(u)
   let activeHull = []; // hull vertex indices of P_{k−p} … P_k
   let wholeHull = []; // hull vertex indices of all points
-  const insetScratch = [0, 0, 0, 0];
   let knotLabels = []; // "0 ×4" … per distinct knot
   let uLabel = "";
   let knotStyles = null; // per theme: { dot, tick }
   let knotStylesTheme = null;
 
   // ------------------------------------------------------------ figure
-  let view = null;
-  view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-
-  /** The canvas strip below the world window, [top, right, bottom, left] (scratch, no allocation). */
-  function insets() {
-    insetScratch[2] = STRIP_PX * (view ? view.renderer.scale : 1);
-    return insetScratch;
-  }
+  // The canvas strip below the world window.
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(0, 0, STRIP_PX, 0) });
 
   const uRange = [0, 1]; // the strip's [a, b], reused (no allocation per frame)
   // The knot strip claims the pointer before the handles: press or drag there to set u.

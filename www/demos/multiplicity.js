@@ -167,8 +167,8 @@ export function mount(container, initialState, ctx) {
   ruler.source.handles = handles;
 
   /** The ruler's band below the world window: [top, right, bottom, left] (scratch). */
-  function insets() {
-    insetScratch[2] = ruler.height(view.renderer.scale);
+  function insets(width, height, scale) {
+    insetScratch[2] = ruler.height(scale);
     return insetScratch;
   }
 

@@ -19,6 +19,7 @@ import { checkObject, checkPoints, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
+import { scaledInsets } from "../lib/view.js";
 
 export const id = "projective";
 /** Prefix of this demo's keys in strings.js. */
@@ -58,8 +59,8 @@ const GRID = 4;
 const DENOMINATOR_EPSILON = 1e-12;
 /** Small distances are written in exponent form. */
 const SMALL = 1e-3;
-/** The band at the top (CSS px) kept for the three-line key: [top, right, bottom, left]. */
-const LEGEND_INSETS = Object.freeze([70, 0, 0, 0]);
+/** Height of the band at the top kept for the three-line key, CSS px at text scale 1. */
+const LEGEND_PX = 70;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -152,7 +153,7 @@ export function mount(container, initialState, ctx) {
   const sourceLabels = ["S₀", "S₁", "S₂", "S₃"];
 
   // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work), insets: () => LEGEND_INSETS });
+  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work), insets: scaledInsets(LEGEND_PX, 0, 0, 0) });
   const handles = new Handles(view, {
     count: () => POINTS + 4,
     get: (i, out) => {

@@ -109,14 +109,17 @@ export class FormulaPanel {
    * `clientWidth / scrollWidth`, at least MIN_FIT_SCALE); a line that fits keeps the panel's size.
    */
   _fit(lines) {
-    for (const div of lines) {
-      div.style.fontSize = "";
-      const { clientWidth, scrollWidth } = div;
+    // Writes, then reads, then writes: one layout for all the lines, not one per line (the
+    // lines change while a point is dragged).
+    for (const div of lines) div.style.fontSize = "";
+    const widths = lines.map((div) => [div.clientWidth, div.scrollWidth]);
+    lines.forEach((div, i) => {
+      const [clientWidth, scrollWidth] = widths[i];
       if (clientWidth > 0 && scrollWidth > clientWidth + 1) {
         const scale = Math.max(MIN_FIT_SCALE, Math.floor((1000 * clientWidth) / scrollWidth) / 1000);
         div.style.fontSize = `${scale}em`;
       }
-    }
+    });
   }
 
   destroy() {

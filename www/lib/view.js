@@ -31,6 +31,20 @@ const WINDOW_DIGITS = 6;
 /** No canvas area reserved outside the world window (see the `insets` option). */
 const NO_INSETS = Object.freeze([0, 0, 0, 0]);
 
+/**
+ * The `insets` option for fixed bands of `[top, right, bottom, left]` CSS px at text scale 1
+ * (a caption above the figure, a strip below it) that grow with the text in lecture mode.
+ * Returns one scratch array (no allocation per layout).
+ */
+export function scaledInsets(top, right, bottom, left) {
+  const base = [top, right, bottom, left];
+  const scratch = [0, 0, 0, 0];
+  return (width, height, scale) => {
+    for (let i = 0; i < 4; i++) scratch[i] = base[i] * scale;
+    return scratch;
+  };
+}
+
 /** Rounds to `WINDOW_DIGITS` significant digits. */
 function roundWindowValue(value) {
   return Number(value.toPrecision(WINDOW_DIGITS));
@@ -46,10 +60,11 @@ export class View {
    * @param {string} [options.label] accessible name of the figure.
    * @param {boolean} [options.wheelNeedsModifier] true in embeds: plain wheel scrolls the page,
    *   Ctrl/⌘ + wheel (and trackpad pinch) zooms.
-   * @param {(width: number, height: number) => number[]} [options.insets] CSS px of the canvas
-   *   kept free of the world window, `[top, right, bottom, left]`, for a canvas of width ×
-   *   height (e.g. a plot drawn in screen space below the figure); the window is shown whole
-   *   and centred in the rest. Default: none.
+   * @param {(width: number, height: number, scale: number) => number[]} [options.insets] CSS px
+   *   of the canvas kept free of the world window, `[top, right, bottom, left]`, for a canvas
+   *   of width × height at text/stroke scale `scale` (1.6 in lecture mode: a strip of labels
+   *   grows with it), e.g. a plot drawn in screen space below the figure; the window is shown
+   *   whole and centred in the rest. Default: none.
    */
   constructor(host, { draw, bounds = null, onWindowChange = null, label = "", wheelNeedsModifier = false, insets = null }) {
     this.host = host;
@@ -151,7 +166,7 @@ export class View {
 
   /** Computes the transform for a canvas of w × h CSS px. */
   _layout(w, h) {
-    const [top, right, bottom, left] = this.insets?.(w || 1, h || 1) ?? NO_INSETS;
+    const [top, right, bottom, left] = this.insets?.(w || 1, h || 1, this.renderer?.scale ?? 1) ?? NO_INSETS;
     const width = Math.max(1, (w || 1) - left - right);
     const height = Math.max(1, (h || 1) - top - bottom);
     this._scale = Math.min(width / (2 * this._hw), height / (2 * this._hh));
