@@ -1,4 +1,4 @@
-// Browser tests of the playground in real Chromium (playwright-core, one browser, pages reused).
+// Browser tests of the playground in real Chromium (playwright-core; the demos shared among two browsers, pages reused).
 // Table-driven over the demo registry (www/demos/index.js): every demo gets the generic checks
 // (loads cleanly, drag and keyboard change the picture, the link restores it, exports parse,
 // import round-trips, bad links and files are reported without killing the page), then its own
@@ -21,6 +21,9 @@ const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-backgrou
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
 const TEST_TIMEOUT_MS = 30_000;
+/** Browsers the demos' suites are shared among (E2E_WORKERS, default 2): the tests mostly wait
+ * for frames and downloads, so two browsers on two cores finish in about 60 % of the time. */
+const WORKERS = Math.max(1, Math.floor(Number(process.env.E2E_WORKERS ?? 2)) || 1);
 /** Pixels a handle is dragged in the drag test. */
 const DRAG_PX = { x: 40, y: -30 };
 /** Playback runs this long (ms) in the play test. */
@@ -160,14 +163,245 @@ async function demoChecks(id) {
   }
 }
 
+// ------------------------------------------------------------------ one demo's suite
+
+/** Every test of one demo, in order, on one worker's page: the generic checks, then its own. */
+async function demoSuite({ page, errors }, demo) {
+  const name = (what) => `${demo.id}: ${what}`;
+  let h = demoHelpers(page);
+
+  await test(name("opens from the gallery without console errors"), async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html`);
+    await page.locator(`a.card[data-demo="${demo.id}"]`).click();
+    await h.ready();
+    assert((await h.canvas().getAttribute("role")) === "img", "canvas role=img");
+    assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
+    const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
+    assert(Math.abs(size.w - size.cw * size.ratio) <= 1, `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`);
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test(name("dragging a handle changes the picture"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const before = await h.snapshot();
+    const [first, second] = await h.handles();
+    const handle = second ?? first;
+    assert(handle, "the demo has handles");
+    await h.drag(handle, DRAG_PX.x, DRAG_PX.y);
+    const after = await h.snapshot();
+    assert(before !== after, "canvas unchanged after drag");
+    const moved = (await h.handles())[second ? 1 : 0];
+    assert(Math.abs(moved.x - handle.x - DRAG_PX.x) < 1.5 && Math.abs(moved.y - handle.y - DRAG_PX.y) < 1.5, `handle at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + drag`);
+    // Undo puts the handle back; Escape clears the selection: the first picture again.
+    await page.keyboard.press("Control+z");
+    await page.keyboard.press("Escape");
+    await page.mouse.move(1, 1);
+    equal(JSON.stringify((await h.handles())[second ? 1 : 0]), JSON.stringify(handle), "handle after undo");
+    equal(await h.snapshot(), before, "snapshot after undo");
+  });
+
+  await test(name("keyboard nudge changes the picture"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const before = await h.snapshot();
+    const start = (await h.handles())[0];
+    await h.canvas().focus();
+    await page.keyboard.press("Home");
+    await page.keyboard.press("ArrowRight");
+    await page.keyboard.press("Shift+ArrowUp");
+    const after = await h.snapshot();
+    assert(before !== after, "canvas unchanged after arrow keys");
+    const moved = (await h.handles())[0];
+    assert(Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6, `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`);
+  });
+
+  await test(name("the Add point / Remove point buttons add and remove a handle"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const add = page.locator('[data-action="add-point"]');
+    if ((await add.count()) === 0) return; // a demo without an editable point list
+    const count = (await h.handles()).length;
+    const before = await h.snapshot();
+    await add.first().click();
+    await settle(page);
+    equal((await h.handles()).length, count + 1, "handles after Add point");
+    assert((await h.snapshot()) !== before, "canvas unchanged after Add point");
+    // The new point is selected: Remove point takes it away again.
+    await page.locator('[data-action="remove-point"]').first().click();
+    await settle(page);
+    equal((await h.handles()).length, count, "handles after Remove point");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test(name("Remove point stops at the minimum (button disabled, Delete refused with a message)"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const remove = page.locator('[data-action="remove-point"]').first();
+    if ((await remove.count()) === 0) return; // a demo without an editable point list
+    for (let k = 0; k < 40 && !(await remove.isDisabled()); k++) {
+      await remove.click();
+      await settle(page);
+    }
+    assert(await remove.isDisabled(), "Remove point is disabled at the minimum");
+    const count = (await h.handles()).length;
+    assert(count >= 2, `${count} handles left`);
+    // The keyboard path is refused too, with a message naming the limit.
+    await h.canvas().focus();
+    await page.keyboard.press("Home");
+    await page.keyboard.press("Delete");
+    await settle(page);
+    equal((await h.handles()).length, count, "handles after Delete at the minimum");
+    equal(await h.statusKind(), "error", "status kind");
+    assert(/\d/.test(await h.status()), `the message names the limit: ${await h.status()}`);
+    // Still interactive: Add point works again.
+    await page.locator('[data-action="add-point"]').first().click();
+    await settle(page);
+    equal((await h.handles()).length, count + 1, "handles after Add point");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test(name("the URL restores the same picture after reload"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const [handle] = await h.handles();
+    await h.drag(handle, -25, 35);
+    // Pan on empty space too: the view is part of the picture.
+    const box = await h.canvas().boundingBox();
+    await h.drag({ x: box.x + 12, y: box.y + box.height - 12 }, 30, -20);
+    await page.keyboard.press("Escape"); // the selection is not part of the state
+    const before = await h.snapshot();
+    const url = page.url();
+    assert(/#demo=[\w-]+&s=[\w-]+$/.test(url), `URL ${url}`);
+    await page.reload();
+    await h.ready();
+    equal(page.url(), url, "URL after reload");
+    equal(await h.snapshot(), before, "snapshot after reload");
+  });
+
+  await test(name("SVG export parses and has paths and labels"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const file = await h.download("export-svg");
+    equal(file.suggestedFilename(), `${demo.id}.svg`, "file name");
+    const text = readFileSync(await file.path(), "utf8");
+    const parsed = await page.evaluate((svg) => {
+      const doc = new DOMParser().parseFromString(svg, "image/svg+xml");
+      return { error: doc.querySelector("parsererror")?.textContent ?? null, root: doc.documentElement.nodeName, paths: doc.querySelectorAll("path").length, texts: doc.querySelectorAll("text").length };
+    }, text);
+    equal(parsed.error, null, "parser error");
+    equal(parsed.root, "svg", "root element");
+    assert(parsed.paths > 3, `only ${parsed.paths} paths`);
+    assert(parsed.texts > 0, "no text labels");
+  });
+
+  await test(name("PNG export is a PNG at 2x"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const file = await h.download("export-png");
+    const bytes = readFileSync(await file.path());
+    assert(bytes.subarray(0, 8).equals(PNG_SIGNATURE), "PNG signature");
+    const cssWidth = await h.canvas().evaluate((c) => c.clientWidth);
+    equal(bytes.readUInt32BE(16), cssWidth * 2, "PNG width = 2 × CSS width");
+  });
+
+  await test(name("JSON export round-trips through import"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const [handle] = await h.handles();
+    await h.drag(handle, 20, 20);
+    const exported = await h.snapshot();
+    const file = await h.download("export-json");
+    const text = readFileSync(await file.path(), "utf8");
+    const data = JSON.parse(text);
+    equal(data.version, 1, "version");
+    equal(data.demo, demo.id, "demo");
+    await page.locator('[data-action="reset"]').click();
+    assert((await h.snapshot()) !== exported, "reset changed the picture");
+    await h.importText(`${demo.id}.json`, text);
+    equal(await h.snapshot(), exported, "snapshot after import");
+    assert((await h.status()).includes(`${demo.id}.json`), "import confirmed in the status area");
+  });
+
+  await test(name("a malformed link shows a message and the page lives"), async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html#demo=${demo.id}&s=%%%not-base64!!`);
+    h = demoHelpers(page);
+    await h.ready();
+    equal(await h.statusKind(), "error", "status kind");
+    assert((await h.status()).length > 10, "a message is shown");
+    // A bad hash edited into a working page keeps the last good picture.
+    const good = await h.snapshot();
+    await page.evaluate(() => (location.hash = "#demo=" + new URLSearchParams(location.hash.slice(1)).get("demo") + "&s=eyJwb2ludHMiOjN9"));
+    await page.waitForFunction(() => document.querySelector(".sl-status")?.textContent.includes("points"));
+    equal(await h.snapshot(), good, "picture kept");
+    const problems = errors.take().filter((e) => !e.includes("404"));
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test(name("a malformed JSON import shows a message and keeps the picture"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const good = await h.snapshot();
+    await h.importText("broken.json", "{ this is not json");
+    equal(await h.statusKind(), "error", "status kind");
+    assert((await h.status()).includes("broken.json"), "message names the file");
+    await h.importText("wrong.json", JSON.stringify({ version: 1, demo: demo.id, state: { points: "nope" } }));
+    assert((await h.status()).includes("points"), `message names the field: ${await h.status()}`);
+    equal(await h.snapshot(), good, "picture kept");
+    // Still interactive.
+    const [handle] = await h.handles();
+    await h.drag(handle, 15, 0);
+    assert((await h.snapshot()) !== good, "still draggable");
+  });
+
+  await test(name("formula lines shrink to fit the panel in lecture mode (1280 px wide)"), async () => {
+    // At 1.6× type 16 of the 20 demos had lines running out of the panel; each line now
+    // shrinks until it fits (never below MIN_FIT_SCALE), and a line that fits keeps its size.
+    await openDemo(page, base, demo.id);
+    const measure = () => page.evaluate(() => [...document.querySelectorAll(".sl-formula-line")].map((l) => ({ client: l.clientWidth, scroll: l.scrollWidth, size: l.style.fontSize })));
+    // At normal size every line fits at 1280 px: none is shrunk.
+    const normal = await measure();
+    assert(normal.every((l) => l.size === "" && l.scroll <= l.client + 1), `normal-size lines ${JSON.stringify(normal)}`);
+    await page.locator('[data-action="lecture"]').first().click();
+    // The refit follows the panel's resize (ResizeObserver), a frame or more after the click.
+    const fits = () => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.scrollWidth <= l.clientWidth + 1 || l.style.fontSize === "0.6em");
+    if (!(await page.waitForFunction(fits, null, { timeout: 3000 }).then(() => true, () => false))) {
+      const lines = (await measure()).map((l, i) => `line ${i}: ${l.scroll} px in ${l.client} px at ${l.size || "full size"}`);
+      throw new Error(`lines still overflow in lecture mode:\n${lines.join("\n")}`);
+    }
+    // Back to normal size: the panel refits (its type size changed) and nothing stays shrunk.
+    await page.locator('[data-action="lecture"]').first().click();
+    await page.waitForFunction(() => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.style.fontSize === ""), null, { timeout: 3000 });
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  for (const [what, body] of await demoChecks(demo.id)) {
+    await test(name(what), async () => {
+      h = await openDemo(page, base, demo.id);
+      await body(page, h, base, { assert, equal, settle, openDemo, PLAY_MS });
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+  }
+}
+
 // ------------------------------------------------------------------ run
+
+/** A browser of its own (profile, context, page and its error watch) for a share of the demos. */
+async function launchWorker() {
+  const profile = mkdtempSync(join(tmpdir(), "splinelab-e2e-"));
+  const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: ARGS, viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
+  const page = context.pages()[0] ?? (await context.newPage());
+  return { profile, context, page, errors: watchErrors(page) };
+}
+
+async function closeWorker({ profile, context }) {
+  await context.close();
+  rmSync(profile, { recursive: true, force: true });
+}
 
 const server = await startServer(0);
 const base = `http://127.0.0.1:${server.address().port}`;
-const profile = mkdtempSync(join(tmpdir(), "splinelab-e2e-"));
-const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: ARGS, viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
-const page = context.pages()[0] ?? (await context.newPage());
-const errors = watchErrors(page);
+const main = await launchWorker();
+const { context, page, errors } = main;
+const extraWorkers = [];
 
 try {
   // The registry, as the page sees it.
@@ -268,199 +502,15 @@ try {
     equal(x2, 250, "a label of a point outside the frame stays put");
   });
 
-  for (const demo of registry) {
-    const name = (what) => `${demo.id}: ${what}`;
-    let h = demoHelpers(page);
-
-    await test(name("opens from the gallery without console errors"), async () => {
-      await page.goto("about:blank");
-      await page.goto(`${base}/index.html`);
-      await page.locator(`a.card[data-demo="${demo.id}"]`).click();
-      await h.ready();
-      assert((await h.canvas().getAttribute("role")) === "img", "canvas role=img");
-      assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
-      const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
-      assert(Math.abs(size.w - size.cw * size.ratio) <= 1, `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`);
-      const problems = errors.take();
-      assert(problems.length === 0, problems.join("\n"));
-    });
-
-    await test(name("dragging a handle changes the picture"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const before = await h.snapshot();
-      const [first, second] = await h.handles();
-      const handle = second ?? first;
-      assert(handle, "the demo has handles");
-      await h.drag(handle, DRAG_PX.x, DRAG_PX.y);
-      const after = await h.snapshot();
-      assert(before !== after, "canvas unchanged after drag");
-      const moved = (await h.handles())[second ? 1 : 0];
-      assert(Math.abs(moved.x - handle.x - DRAG_PX.x) < 1.5 && Math.abs(moved.y - handle.y - DRAG_PX.y) < 1.5, `handle at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + drag`);
-      // Undo puts the handle back; Escape clears the selection: the first picture again.
-      await page.keyboard.press("Control+z");
-      await page.keyboard.press("Escape");
-      await page.mouse.move(1, 1);
-      equal(JSON.stringify((await h.handles())[second ? 1 : 0]), JSON.stringify(handle), "handle after undo");
-      equal(await h.snapshot(), before, "snapshot after undo");
-    });
-
-    await test(name("keyboard nudge changes the picture"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const before = await h.snapshot();
-      const start = (await h.handles())[0];
-      await h.canvas().focus();
-      await page.keyboard.press("Home");
-      await page.keyboard.press("ArrowRight");
-      await page.keyboard.press("Shift+ArrowUp");
-      const after = await h.snapshot();
-      assert(before !== after, "canvas unchanged after arrow keys");
-      const moved = (await h.handles())[0];
-      assert(Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6, `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`);
-    });
-
-    await test(name("the Add point / Remove point buttons add and remove a handle"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const add = page.locator('[data-action="add-point"]');
-      if ((await add.count()) === 0) return; // a demo without an editable point list
-      const count = (await h.handles()).length;
-      const before = await h.snapshot();
-      await add.first().click();
-      await settle(page);
-      equal((await h.handles()).length, count + 1, "handles after Add point");
-      assert((await h.snapshot()) !== before, "canvas unchanged after Add point");
-      // The new point is selected: Remove point takes it away again.
-      await page.locator('[data-action="remove-point"]').first().click();
-      await settle(page);
-      equal((await h.handles()).length, count, "handles after Remove point");
-      const problems = errors.take();
-      assert(problems.length === 0, problems.join("\n"));
-    });
-
-    await test(name("Remove point stops at the minimum (button disabled, Delete refused with a message)"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const remove = page.locator('[data-action="remove-point"]').first();
-      if ((await remove.count()) === 0) return; // a demo without an editable point list
-      for (let k = 0; k < 40 && !(await remove.isDisabled()); k++) {
-        await remove.click();
-        await settle(page);
-      }
-      assert(await remove.isDisabled(), "Remove point is disabled at the minimum");
-      const count = (await h.handles()).length;
-      assert(count >= 2, `${count} handles left`);
-      // The keyboard path is refused too, with a message naming the limit.
-      await h.canvas().focus();
-      await page.keyboard.press("Home");
-      await page.keyboard.press("Delete");
-      await settle(page);
-      equal((await h.handles()).length, count, "handles after Delete at the minimum");
-      equal(await h.statusKind(), "error", "status kind");
-      assert(/\d/.test(await h.status()), `the message names the limit: ${await h.status()}`);
-      // Still interactive: Add point works again.
-      await page.locator('[data-action="add-point"]').first().click();
-      await settle(page);
-      equal((await h.handles()).length, count + 1, "handles after Add point");
-      const problems = errors.take();
-      assert(problems.length === 0, problems.join("\n"));
-    });
-
-    await test(name("the URL restores the same picture after reload"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const [handle] = await h.handles();
-      await h.drag(handle, -25, 35);
-      // Pan on empty space too: the view is part of the picture.
-      const box = await h.canvas().boundingBox();
-      await h.drag({ x: box.x + 12, y: box.y + box.height - 12 }, 30, -20);
-      await page.keyboard.press("Escape"); // the selection is not part of the state
-      const before = await h.snapshot();
-      const url = page.url();
-      assert(/#demo=[\w-]+&s=[\w-]+$/.test(url), `URL ${url}`);
-      await page.reload();
-      await h.ready();
-      equal(page.url(), url, "URL after reload");
-      equal(await h.snapshot(), before, "snapshot after reload");
-    });
-
-    await test(name("SVG export parses and has paths and labels"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const file = await h.download("export-svg");
-      equal(file.suggestedFilename(), `${demo.id}.svg`, "file name");
-      const text = readFileSync(await file.path(), "utf8");
-      const parsed = await page.evaluate((svg) => {
-        const doc = new DOMParser().parseFromString(svg, "image/svg+xml");
-        return { error: doc.querySelector("parsererror")?.textContent ?? null, root: doc.documentElement.nodeName, paths: doc.querySelectorAll("path").length, texts: doc.querySelectorAll("text").length };
-      }, text);
-      equal(parsed.error, null, "parser error");
-      equal(parsed.root, "svg", "root element");
-      assert(parsed.paths > 3, `only ${parsed.paths} paths`);
-      assert(parsed.texts > 0, "no text labels");
-    });
-
-    await test(name("PNG export is a PNG at 2x"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const file = await h.download("export-png");
-      const bytes = readFileSync(await file.path());
-      assert(bytes.subarray(0, 8).equals(PNG_SIGNATURE), "PNG signature");
-      const cssWidth = await h.canvas().evaluate((c) => c.clientWidth);
-      equal(bytes.readUInt32BE(16), cssWidth * 2, "PNG width = 2 × CSS width");
-    });
-
-    await test(name("JSON export round-trips through import"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const [handle] = await h.handles();
-      await h.drag(handle, 20, 20);
-      const exported = await h.snapshot();
-      const file = await h.download("export-json");
-      const text = readFileSync(await file.path(), "utf8");
-      const data = JSON.parse(text);
-      equal(data.version, 1, "version");
-      equal(data.demo, demo.id, "demo");
-      await page.locator('[data-action="reset"]').click();
-      assert((await h.snapshot()) !== exported, "reset changed the picture");
-      await h.importText(`${demo.id}.json`, text);
-      equal(await h.snapshot(), exported, "snapshot after import");
-      assert((await h.status()).includes(`${demo.id}.json`), "import confirmed in the status area");
-    });
-
-    await test(name("a malformed link shows a message and the page lives"), async () => {
-      await page.goto("about:blank");
-      await page.goto(`${base}/index.html#demo=${demo.id}&s=%%%not-base64!!`);
-      h = demoHelpers(page);
-      await h.ready();
-      equal(await h.statusKind(), "error", "status kind");
-      assert((await h.status()).length > 10, "a message is shown");
-      // A bad hash edited into a working page keeps the last good picture.
-      const good = await h.snapshot();
-      await page.evaluate(() => (location.hash = "#demo=" + new URLSearchParams(location.hash.slice(1)).get("demo") + "&s=eyJwb2ludHMiOjN9"));
-      await page.waitForFunction(() => document.querySelector(".sl-status")?.textContent.includes("points"));
-      equal(await h.snapshot(), good, "picture kept");
-      const problems = errors.take().filter((e) => !e.includes("404"));
-      assert(problems.length === 0, problems.join("\n"));
-    });
-
-    await test(name("a malformed JSON import shows a message and keeps the picture"), async () => {
-      h = await openDemo(page, base, demo.id);
-      const good = await h.snapshot();
-      await h.importText("broken.json", "{ this is not json");
-      equal(await h.statusKind(), "error", "status kind");
-      assert((await h.status()).includes("broken.json"), "message names the file");
-      await h.importText("wrong.json", JSON.stringify({ version: 1, demo: demo.id, state: { points: "nope" } }));
-      assert((await h.status()).includes("points"), `message names the field: ${await h.status()}`);
-      equal(await h.snapshot(), good, "picture kept");
-      // Still interactive.
-      const [handle] = await h.handles();
-      await h.drag(handle, 15, 0);
-      assert((await h.snapshot()) !== good, "still draggable");
-    });
-
-    for (const [what, body] of await demoChecks(demo.id)) {
-      await test(name(what), async () => {
-        h = await openDemo(page, base, demo.id);
-        await body(page, h, base, { assert, equal, settle, openDemo, PLAY_MS });
-        const problems = errors.take();
-        assert(problems.length === 0, problems.join("\n"));
-      });
-    }
-  }
+  // The demos' suites, shared out among the workers (each its own browser): a demo's tests run
+  // in order on one page, and the demos run side by side.
+  const queue = [...registry];
+  const workers = [main];
+  for (let w = 1; w < WORKERS; w++) workers.push(await launchWorker());
+  extraWorkers.push(...workers.slice(1));
+  await Promise.all(workers.map(async (worker) => {
+    for (let demo = queue.shift(); demo; demo = queue.shift()) await demoSuite(worker, demo);
+  }));
 
   await test("the JS API throws an Error on random arguments, never traps (3 seeds × 700 rounds)", async () => {
     await page.goto("about:blank");
@@ -508,35 +558,6 @@ try {
     await lecture.click();
     equal(await lecture.getAttribute("aria-pressed"), "false", "released");
     equal(await h.snapshot(), before, "the picture is as before");
-    const problems = errors.take();
-    assert(problems.length === 0, problems.join("\n"));
-  });
-
-  await test("formula lines shrink to fit the panel in lecture mode (every demo, 1280 px wide)", async () => {
-    // At 1.6× type 16 of the 20 demos had lines running out of the panel; each line now
-    // shrinks until it fits (never below MIN_FIT_SCALE), and a line that fits keeps its size.
-    const overflowing = [];
-    for (const { id } of registry) {
-      await page.goto("about:blank");
-      await page.goto(`${base}/index.html#demo=${id}`);
-      await page.locator(".sl-formula .katex").first().waitFor({ state: "attached" });
-      const measure = () => page.evaluate(() => [...document.querySelectorAll(".sl-formula-line")].map((l) => ({ client: l.clientWidth, scroll: l.scrollWidth, size: l.style.fontSize })));
-      // At normal size every line fits at 1280 px: none is shrunk.
-      const normal = await measure();
-      assert(normal.every((l) => l.size === "" && l.scroll <= l.client + 1), `${id}: normal-size lines ${JSON.stringify(normal)}`);
-      await page.locator('[data-action="lecture"]').first().click();
-      await settle(page);
-      await settle(page);
-      for (const [i, l] of (await measure()).entries()) {
-        if (l.scroll > l.client + 1 && l.size !== "0.6em") overflowing.push(`${id} line ${i}: ${l.scroll} px in ${l.client} px at ${l.size || "full size"}`);
-      }
-      if (id === "projective") {
-        // Back to normal size: the panel refits (its type size changed) and nothing stays shrunk.
-        await page.locator('[data-action="lecture"]').first().click();
-        await page.waitForFunction(() => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.style.fontSize === ""), null, { timeout: 3000 });
-      }
-    }
-    assert(overflowing.length === 0, overflowing.join("\n"));
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
@@ -600,9 +621,8 @@ try {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);
 } finally {
-  await context.close();
+  await Promise.all([main, ...extraWorkers].map(closeWorker));
   server.close();
-  rmSync(profile, { recursive: true, force: true });
 }
 
 console.log(`e2e: ${passed} passed, ${failed} failed`);
