@@ -502,6 +502,29 @@ try {
     equal(x2, 250, "a label of a point outside the frame stays put");
   });
 
+  await test("long canvas captions wrap to the frame's width (phones), short ones stay one line", async () => {
+    const result = await page.evaluate(async () => {
+      const { SvgRecorder, drawCaption } = await import("./lib/draw.js");
+      const { LIGHT_THEME } = await import("./lib/theme.js");
+      const style = LIGHT_THEME.labelSmall;
+      const r = new SvgRecorder({ theme: LIGHT_THEME, measureContext: document.createElement("canvas").getContext("2d") });
+      r.begin(200, 300, "#fff");
+      const sentence = "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length";
+      const lines = drawCaption(r, sentence, 10, 290, style, 180, "bottom");
+      const short = drawCaption(r, "C¹ at the joint", 10, 10, style, 180, "top");
+      const texts = [...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"[^>]*>([^<]*)<\/text>/g)].map((m) => ({ y: Number(m[2]), text: m[3], width: r.measure(m[3], style) }));
+      return { lines, short, texts, whole: r.measure(sentence, style) };
+    });
+    assert(result.whole > 180, `the sentence is wider than the frame (${result.whole} px)`);
+    equal(result.short, 1, "a caption that fits is one line");
+    assert(result.lines >= 2, `${result.lines} lines`);
+    const wrapped = result.texts.slice(0, result.lines);
+    assert(wrapped.every((l) => l.width <= 180), `line widths ${wrapped.map((l) => l.width.toFixed(1)).join(", ")}`);
+    equal(wrapped.map((l) => l.text).join(" "), "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length", "the words, in order");
+    equal(wrapped[wrapped.length - 1].y, 290, "the last line sits on the anchor (baseline bottom)");
+    assert(wrapped.every((l, i) => i === 0 || l.y > wrapped[i - 1].y), "lines go down the frame");
+  });
+
   // The demos' suites, shared out among the workers (each its own browser): a demo's tests run
   // in order on one page, and the demos run side by side.
   const queue = [...registry];

@@ -18,7 +18,7 @@ import { flatten } from "../lib/geometry.js";
 import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
-import { flatPath, arrow } from "../lib/draw.js";
+import { flatPath, arrow, drawCaption } from "../lib/draw.js";
 
 export const id = "derivatives";
 /** Prefix of this demo's keys in strings.js. */
@@ -386,8 +386,8 @@ export function mount(container, initialState, ctx) {
     if (speed > 0) placeLabel(r, POINT_LABEL, px, py, d1[1] / speed, d1[0] / speed, theme.pointOnCurve.radius * r.scale, theme.labelPoint);
 
     const margin = TEXT_MARGIN_PX * r.scale;
-    r.text(scaleCaption, margin, v.height - margin, theme.labelSmall, "left", "bottom");
-    if (caption) r.text(caption, margin, margin, theme.labelBold, "left", "top");
+    drawCaption(r, scaleCaption, margin, v.height - margin, theme.labelSmall, v.width - 2 * margin, "bottom");
+    if (caption) drawCaption(r, caption, margin, margin, theme.labelBold, v.width - 2 * margin, "top");
   }
 
   /** "3(P₁−P₀)" for hodograph control point i (cached strings). */

@@ -16,7 +16,7 @@ import { HUES, WIDTH, RADIUS, FONT_SIZE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
-import { pointsPath, flatPath, arrow } from "../lib/draw.js";
+import { pointsPath, flatPath, arrow, drawCaption } from "../lib/draw.js";
 
 export const id = "joining";
 /** Prefix of this demo's keys in strings.js. */
@@ -450,7 +450,7 @@ export function mount(container, initialState, ctx) {
     // The checker's verdict, top left; what the arrows are, bottom left.
     const margin = TEXT_MARGIN_PX * r.scale;
     r.text(verdictText, margin, margin, theme.labelBold, "left", "top");
-    r.text(ARROW_CAPTION, margin, v.height - margin, theme.labelSmall, "left", "bottom");
+    drawCaption(r, ARROW_CAPTION, margin, v.height - margin, theme.labelSmall, v.width - 2 * margin, "bottom");
   }
 
   /**

@@ -18,6 +18,7 @@ import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
 import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
+import { drawCaption } from "../lib/draw.js";
 
 export const id = "negative-weights";
 /** Prefix of this demo's keys in strings.js. */
@@ -333,7 +334,7 @@ export function mount(container, initialState, ctx) {
 
     // The caption first: marks drawn later stay on top of its halo.
     const s = r.scale;
-    r.text(t(samples ? "negativeWeights.figureAccepted" : "negativeWeights.figureRefused"), 12 * s, 16 * s, samples ? theme.labelSmall : theme.labelBold, "left", "middle");
+    drawCaption(r, t(samples ? "negativeWeights.figureAccepted" : "negativeWeights.figureRefused"), 12 * s, 16 * s, samples ? theme.labelSmall : theme.labelBold, r.width - 24 * s, "middle");
 
     exitCount = 0;
     if (samples) {

@@ -411,3 +411,37 @@ export function arrow(r, x0, y0, x1, y1, style) {
   r.lineTo(x1 - head * (ux * c + uy * s), y1 - head * (uy * c - ux * s));
   r.paint(style);
 }
+
+/** Line spacing of wrapped captions, in font sizes. */
+const CAPTION_LINE_HEIGHT = 1.25;
+
+/**
+ * Draws a sentence with renderer `r` left-aligned at (x, y), broken at spaces into lines no
+ * wider than `maxWidth` CSS px (a word wider than that keeps a line of its own), so a caption
+ * written for a desktop canvas still reads whole on a phone. `baseline` is each line's; the
+ * lines stack downwards from y, or upwards with "bottom" (the last line then sits at y).
+ * A caption that fits is one `r.text` call and allocates nothing. Returns the line count.
+ */
+export function drawCaption(r, string, x, y, style, maxWidth, baseline = "top") {
+  if (!string) return 0;
+  if (r.measure(string, style) <= maxWidth) {
+    r.text(string, x, y, style, "left", baseline);
+    return 1;
+  }
+  const lines = [];
+  let line = "";
+  for (const word of string.split(" ")) {
+    const candidate = line ? `${line} ${word}` : word;
+    if (line && r.measure(candidate, style) > maxWidth) {
+      lines.push(line);
+      line = word;
+    } else {
+      line = candidate;
+    }
+  }
+  lines.push(line);
+  const step = CAPTION_LINE_HEIGHT * style.size * r.scale;
+  const top = baseline === "bottom" ? y - (lines.length - 1) * step : y;
+  lines.forEach((text, i) => r.text(text, x, top + i * step, style, "left", baseline));
+  return lines.length;
+}
