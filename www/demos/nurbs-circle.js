@@ -42,6 +42,8 @@ export const LENGTH_MAX = 10;
 const LENGTH_STEP = 0.01;
 export const ANGLE_MAX = 360;
 const ANGLE_STEP = 1;
+/** Where the radius label sits along the radius, from the centre (fraction of its length). */
+const RADIUS_LABEL_AT = 0.6;
 /** Samples of the curve: drawn, and measured against the exact circle (ellipse). */
 const SAMPLES = 2000;
 /** Weights this close to √2/2 or 1 are written as such. */
@@ -353,7 +355,8 @@ export function mount(container, initialState, ctx) {
     r.moveTo(cx, cy);
     r.lineTo(v.sx(samples[0]), v.sy(samples[1]));
     r.paint(theme.helper);
-    r.text(radiusLabel, (cx + v.sx(samples[0])) / 2, (cy + v.sy(samples[1])) / 2 - 6 * r.scale, theme.labelSmall, "center", "bottom");
+    // Its label 60 % of the way out: clear of the centre's own label on a small circle too.
+    r.text(radiusLabel, cx + RADIUS_LABEL_AT * (v.sx(samples[0]) - cx), cy + RADIUS_LABEL_AT * (v.sy(samples[1]) - cy) - 6 * r.scale, theme.labelSmall, "center", "bottom");
 
     // The curve.
     r.beginPath();
@@ -383,8 +386,20 @@ export function mount(container, initialState, ctx) {
       dx /= length;
       dy /= length;
       const gap = 10 * r.scale;
-      const align = dx > 0.35 ? "left" : dx < -0.35 ? "right" : "center";
-      r.text(weightLabels[i], x + dx * gap, y + dy * gap + dy * 7 * r.scale, theme.labelSmall, align, "middle");
+      let align = dx > 0.35 ? "left" : dx < -0.35 ? "right" : "center";
+      let tx = x + dx * gap;
+      let ty = y + dy * gap + dy * 7 * r.scale;
+      if (align !== "center") {
+        // No room beside the point (a narrow canvas): above or below it (below on the x axis,
+        // clear of the radius label) instead of pushed back over the point by the frame's edge.
+        const width = r.measure(weightLabels[i], theme.labelSmall);
+        if (align === "left" ? tx + width > v.width : tx - width < 0) {
+          align = "center";
+          tx = x;
+          ty = y + (dy < 0 ? -1 : 1) * (gap + 7 * r.scale);
+        }
+      }
+      r.text(weightLabels[i], tx, ty, theme.labelSmall, align, "middle");
     }
 
     handles.draw(r, v);
