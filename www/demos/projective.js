@@ -61,6 +61,10 @@ const DENOMINATOR_EPSILON = 1e-12;
 const SMALL = 1e-3;
 /** Height of the band at the top kept for the three-line key, CSS px at text scale 1. */
 const LEGEND_PX = 70;
+/** Canvases narrower than this (CSS px at text scale 1, a phone) leave out the weight labels
+ * and the contrast curve's name: both figures shrink ~3× and the labels would cover them; the
+ * key names the curves and the panel lists the mapped weights. */
+const NARROW_CANVAS_PX = 560;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -374,6 +378,7 @@ export function mount(container, initialState, ctx) {
     strokeSamples(r, v, image, theme.curve);
     for (let k = 0; k < SAMPLES; k += DOT_EVERY) r.point(v.sx(pointwise[2 * k]), v.sy(pointwise[2 * k + 1]), theme.levelPoint[0]);
     // Mapped control points, labelled with their new weights on the side away from the polygon's middle.
+    const labelled = v.width >= NARROW_CANVAS_PX * s;
     let mx = 0;
     for (let i = 0; i < POINTS; i++) mx += mappedControls[2 * i] / POINTS;
     for (let i = 0; i < POINTS; i++) {
@@ -381,11 +386,11 @@ export function mount(container, initialState, ctx) {
       const y = v.sy(mappedControls[2 * i + 1]);
       r.point(x, y, theme.comparePoint[0]);
       const left = mappedControls[2 * i] < mx;
-      r.text(mappedLabels[i], x + (left ? -8 : 8) * s, y, theme.labelSmall, left ? "right" : "left", "middle");
+      if (labelled) r.text(mappedLabels[i], x + (left ? -8 : 8) * s, y, theme.labelSmall, left ? "right" : "left", "middle");
     }
     // The contrast curve's name at its middle sample.
     const mid = SAMPLES >> 1;
-    r.text(t("projective.naiveLabel"), v.sx(naiveSamples[2 * mid]) + 10 * s, v.sy(naiveSamples[2 * mid + 1]), theme.labelSmall, "left", "middle");
+    if (labelled) r.text(t("projective.naiveLabel"), v.sx(naiveSamples[2 * mid]) + 10 * s, v.sy(naiveSamples[2 * mid + 1]), theme.labelSmall, "left", "middle");
 
     handles.draw(r, v);
     drawLegend(r, theme);
