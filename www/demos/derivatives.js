@@ -52,6 +52,12 @@ const NORMAL_PX = 36;
  * control polygon (κ ≈ 0: "straight here").
  */
 const STRAIGHT_RADIUS_FACTOR = 1e3;
+/** Canvases narrower than this (CSS px at text scale 1, a phone) leave out the labels of the
+ * hodograph's control points (the table lists them) and wrap its caption to its box: at that
+ * size the labels covered each other and the curve. */
+const NARROW_CANVAS_PX = 560;
+/** Narrowest the hodograph's caption wraps to (CSS px at text scale 1). */
+const HODOGRAPH_CAPTION_MIN_PX = 160;
 /** Margin of the caption texts from the canvas edges and from the hodograph's box (CSS px). */
 const TEXT_MARGIN_PX = 12;
 
@@ -291,7 +297,10 @@ export function mount(container, initialState, ctx) {
     r.moveTo(v.sx(ox), v.sy(oy + hy0 - pad));
     r.lineTo(v.sx(ox), v.sy(oy + hy1 + pad));
     r.paint(theme.helper);
-    r.text(hodographCaption, v.sx(ox + hx0 - pad), v.sy(oy + hy1 + pad) - TEXT_MARGIN_PX * r.scale, theme.labelSmall, "left", "bottom");
+    const narrow = v.width < NARROW_CANVAS_PX * r.scale;
+    const boxLeft = v.sx(ox + hx0 - pad);
+    const captionWidth = narrow ? Math.max(v.sx(ox + hx1 + pad) - boxLeft, HODOGRAPH_CAPTION_MIN_PX * r.scale) : Infinity;
+    drawCaption(r, hodographCaption, boxLeft, v.sy(oy + hy1 + pad) - TEXT_MARGIN_PX * r.scale, theme.labelSmall, captionWidth, "bottom");
 
     r.beginPath();
     for (let k = 0; k < hodographPoints.length; k += 2) {
@@ -326,7 +335,7 @@ export function mount(container, initialState, ctx) {
         dx /= length;
         dy /= length;
       }
-      placeLabel(r, hodographLabel(i, n), x, y, dx, dy, HODOGRAPH_POINT_STYLE.radius * r.scale, theme.labelSmall);
+      if (!narrow) placeLabel(r, hodographLabel(i, n), x, y, dx, dy, HODOGRAPH_POINT_STYLE.radius * r.scale, theme.labelSmall);
     }
     const hpx = v.sx(ox + s * hodographPoint[0]);
     const hpy = v.sy(oy + s * hodographPoint[1]);
