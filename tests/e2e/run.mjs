@@ -614,6 +614,29 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("on a phone-width canvas, derivatives and projective leave out the labels their tables repeat", async () => {
+    // The SVG export draws what the canvas shows, at its size.
+    const labels = async (id, pattern) => {
+      const h = await openDemo(page, base, id);
+      const svg = readFileSync(await (await h.download("export-svg")).path(), "utf8");
+      return [...svg.matchAll(/<text[^>]*>([^<]*)<\/text>/g)].filter((m) => pattern.test(m[1])).length;
+    };
+    const cases = [["derivatives", /^3\(P/], ["projective", /^w′/]];
+    const desktop = [];
+    for (const [id, pattern] of cases) desktop.push(await labels(id, pattern));
+    await page.setViewportSize({ width: 390, height: 844 });
+    try {
+      for (const [k, [id, pattern]] of cases.entries()) {
+        assert(desktop[k] >= 3, `${id}: ${desktop[k]} labels at 1280 px`);
+        equal(await labels(id, pattern), 0, `${id}: labels at 390 px`);
+      }
+    } finally {
+      await page.setViewportSize(VIEWPORT);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("a browser without WebAssembly SIMD is told so, on the page and in embeds", async () => {
     // The package is built with SIMD128; an old browser's WebAssembly.validate refuses the probe.
     const old = await context.newPage();

@@ -19,6 +19,7 @@ import { pointListActions, pointButtons } from "../lib/point-list.js";
 import { Player } from "../lib/player.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, arrow, drawCaption } from "../lib/draw.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 
 export const id = "derivatives";
 /** Prefix of this demo's keys in strings.js. */
@@ -52,10 +53,6 @@ const NORMAL_PX = 36;
  * control polygon (κ ≈ 0: "straight here").
  */
 const STRAIGHT_RADIUS_FACTOR = 1e3;
-/** Canvases narrower than this (CSS px at text scale 1, a phone) leave out the labels of the
- * hodograph's control points (the table lists them) and wrap its caption to its box: at that
- * size the labels covered each other and the curve. */
-const NARROW_CANVAS_PX = 560;
 /** Narrowest the hodograph's caption wraps to (CSS px at text scale 1). */
 const HODOGRAPH_CAPTION_MIN_PX = 160;
 /** Margin of the caption texts from the canvas edges and from the hodograph's box (CSS px). */
@@ -297,6 +294,7 @@ export function mount(container, initialState, ctx) {
     r.moveTo(v.sx(ox), v.sy(oy + hy0 - pad));
     r.lineTo(v.sx(ox), v.sy(oy + hy1 + pad));
     r.paint(theme.helper);
+    // On a phone: no labels on its control points (the table lists them), the caption wrapped.
     const narrow = v.width < NARROW_CANVAS_PX * r.scale;
     const boxLeft = v.sx(ox + hx0 - pad);
     const captionWidth = narrow ? Math.max(v.sx(ox + hx1 + pad) - boxLeft, HODOGRAPH_CAPTION_MIN_PX * r.scale) : Infinity;

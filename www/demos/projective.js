@@ -19,7 +19,7 @@ import { checkObject, checkPoints, checkNumbers } from "../lib/validate.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
-import { scaledInsets } from "../lib/view.js";
+import { scaledInsets, NARROW_CANVAS_PX } from "../lib/view.js";
 
 export const id = "projective";
 /** Prefix of this demo's keys in strings.js. */
@@ -61,10 +61,6 @@ const DENOMINATOR_EPSILON = 1e-12;
 const SMALL = 1e-3;
 /** Height of the band at the top kept for the three-line key, CSS px at text scale 1. */
 const LEGEND_PX = 70;
-/** Canvases narrower than this (CSS px at text scale 1, a phone) leave out the weight labels
- * and the contrast curve's name: both figures shrink ~3× and the labels would cover them; the
- * key names the curves and the panel lists the mapped weights. */
-const NARROW_CANVAS_PX = 560;
 
 /** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
 export function validate(state) {
@@ -377,7 +373,8 @@ export function mount(container, initialState, ctx) {
     strokeSamples(r, v, naiveSamples, theme.compareCurve[1]);
     strokeSamples(r, v, image, theme.curve);
     for (let k = 0; k < SAMPLES; k += DOT_EVERY) r.point(v.sx(pointwise[2 * k]), v.sy(pointwise[2 * k + 1]), theme.levelPoint[0]);
-    // Mapped control points, labelled with their new weights on the side away from the polygon's middle.
+    // Mapped control points, labelled with their new weights on the side away from the polygon's
+    // middle; not on a phone (the key names the dashed curve, the panel lists the weights).
     const labelled = v.width >= NARROW_CANVAS_PX * s;
     let mx = 0;
     for (let i = 0; i < POINTS; i++) mx += mappedControls[2 * i] / POINTS;

@@ -32,6 +32,12 @@ const WINDOW_DIGITS = 6;
 const NO_INSETS = Object.freeze([0, 0, 0, 0]);
 
 /**
+ * Canvases narrower than this (CSS px at text scale 1: a phone) leave out secondary labels that
+ * the demo's table or panel repeats; at that size a figure shrinks ~3× and they would cover it.
+ */
+export const NARROW_CANVAS_PX = 560;
+
+/**
  * The `insets` option for fixed bands of `[top, right, bottom, left]` CSS px at text scale 1
  * (a caption above the figure, a strip below it) that grow with the text in lecture mode.
  * Returns one scratch array (no allocation per layout).
