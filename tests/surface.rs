@@ -415,22 +415,33 @@ fn bezier_patch(
     (s, sum)
 }
 
+/// `s(u, v)` against `sum(u, v)` on the `(steps + 1)²` grid of [0, 1]².
+fn assert_is_the_sum(
+    s: &BSplineSurface,
+    sum: &impl Fn(f64, f64) -> DVec3,
+    steps: usize,
+    tol: f64,
+    what: &str,
+) {
+    for a in 0..=steps {
+        for b in 0..=steps {
+            let (u, v) = (a as f64 / steps as f64, b as f64 / steps as f64);
+            assert_close3(
+                s.evaluate(u, v).unwrap(),
+                sum(u, v),
+                tol,
+                &format!("{what} at ({u}, {v})"),
+            );
+        }
+    }
+}
+
 #[test]
 fn a_bezier_patch_is_the_bernstein_double_sum_and_splits_into_four() {
     let mut rng = Rng::new(3);
     let (s, sum) = bezier_patch(&mut rng, 4, 3);
     assert_eq!((s.degree_u(), s.degree_v()), (3, 2));
-    for a in 0..=8 {
-        for b in 0..=8 {
-            let (u, v) = (a as f64 / 8.0, b as f64 / 8.0);
-            assert_close3(
-                s.evaluate(u, v).unwrap(),
-                sum(u, v),
-                1e-14,
-                &format!("P({u}, {v})"),
-            );
-        }
-    }
+    assert_is_the_sum(&s, &sum, 8, 1e-14, "P");
     // The four pieces of a split at (0.3, 0.6), each on [0, 1]², reparametrise the quarters.
     let (u0, v0) = (0.3, 0.6);
     let pieces = s.split_bezier(u0, v0).unwrap();
@@ -484,17 +495,7 @@ fn knot_insertion_adds_a_row_or_a_column_and_keeps_the_shape() {
         refined.knots_v().as_slice(),
         &[0.0, 0.0, 0.0, 0.0, 0.7, 1.0, 1.0, 1.0, 1.0]
     );
-    for a in 0..=10 {
-        for b in 0..=10 {
-            let (u, v) = (a as f64 / 10.0, b as f64 / 10.0);
-            assert_close3(
-                refined.evaluate(u, v).unwrap(),
-                sum(u, v),
-                1e-13,
-                &format!("S({u}, {v}) after insertion"),
-            );
-        }
-    }
+    assert_is_the_sum(&refined, &sum, 10, 1e-13, "S after insertion");
     let e = refined.insert_knot_u(0.4, 3).unwrap_err().to_string();
     assert!(e.contains("u = 0.4") && e.contains("multiplicity 5"), "{e}");
     assert!(s

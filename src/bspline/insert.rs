@@ -18,6 +18,30 @@ pub struct KnotContinuity {
     pub continuity: i32,
 }
 
+/// Inserting a knot `times` times where it already has multiplicity `s`: at most `p + 1` in all
+/// (the curve breaks there), so more is [`Error::Mismatch`]. `name` is the parameter's name in
+/// the message (`None` for a curve, `"u"` or `"v"` for a surface).
+pub(crate) fn check_insertion(
+    name: Option<&str>,
+    knot: f64,
+    s: usize,
+    times: usize,
+    p: usize,
+) -> Result<()> {
+    if s + times <= p + 1 {
+        return Ok(());
+    }
+    Err(Error::Mismatch {
+        message: format!(
+            "inserting knot {}{} {times} time(s) would give it multiplicity {}; degree {p} allows at most p+1 = {}",
+            name.map(|n| format!("{n} = ")).unwrap_or_default(),
+            Num(knot),
+            s + times,
+            p + 1
+        ),
+    })
+}
+
 /// One Boehm insertion of `u` (in span `k` of `knots`, degree `p`) into `points`:
 /// `Q_i = P_i` for `i <= k − p`; `Q_i = (1 − α_i) P_{i−1} + α_i P_i` with
 /// `α_i = (u − u_i)/(u_{i+p} − u_i)` for `k − p + 1 <= i <= k`; `Q_i = P_{i−1}` for `i >= k + 1`.
@@ -46,17 +70,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self> {
         let u = self.knots.check_parameter(u)?;
         let p = self.degree();
-        let s = self.knots.multiplicity(u);
-        if s + times > p + 1 {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "inserting knot {} {times} time(s) would give it multiplicity {}; a degree-{p} curve allows at most p+1 = {}",
-                    Num(u),
-                    s + times,
-                    p + 1
-                ),
-            });
-        }
+        check_insertion(None, u, self.knots.multiplicity(u), times, p)?;
         let mut points = self.homogeneous.clone();
         let mut knots = self.knots.clone();
         for _ in 0..times {
@@ -102,17 +116,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         x.sort_unstable_by(f64::total_cmp);
         let p = self.degree();
         for run in x.chunk_by(|a, b| a == b) {
-            let total = self.knots.multiplicity(run[0]) + run.len();
-            if total > p + 1 {
-                return Err(Error::Mismatch {
-                    message: format!(
-                        "inserting knot {} {} time(s) would give it multiplicity {total}; a degree-{p} curve allows at most p+1 = {}",
-                        Num(run[0]),
-                        run.len(),
-                        p + 1
-                    ),
-                });
-            }
+            check_insertion(None, run[0], self.knots.multiplicity(run[0]), run.len(), p)?;
         }
         let u = self.knots.as_slice();
         let pw = &self.homogeneous;

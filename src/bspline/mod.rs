@@ -27,6 +27,7 @@ mod sample;
 pub use basis::{basis_derivatives, basis_functions, BasisScratch};
 pub use construct::{knot_vector, parameterize, phantom_points, KnotKind, Parameterization};
 pub use de_boor::de_boor_triangle;
+pub(crate) use insert::check_insertion;
 pub use insert::{boehm_insert, KnotContinuity};
 pub use knots::KnotVector;
 pub use matrix::uniform_segment_matrix;

@@ -11,7 +11,7 @@
 
 use crate::bezier::split_points;
 use crate::bspline::{basis_derivatives, basis_functions, boehm_insert, BasisScratch};
-use crate::bspline::{check_degree, KnotVector};
+use crate::bspline::{check_degree, check_insertion, KnotVector};
 use crate::error::{check_finite, Error, Num, Result};
 use crate::geom::{check_all_finite, check_weights, Params, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
@@ -421,17 +421,7 @@ impl BSplineSurface {
     fn insert_along_v(&self, name: &'static str, value: f64, times: usize) -> Result<Self> {
         let v = self.knots_v.check_named(name, value)?;
         let q = self.degree_v();
-        let s = self.knots_v.multiplicity(v);
-        if s + times > q + 1 {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "inserting knot {name} = {} {times} time(s) would give it multiplicity {}; degree {q} allows at most {}",
-                    Num(v),
-                    s + times,
-                    q + 1
-                ),
-            });
-        }
+        check_insertion(Some(name), v, self.knots_v.multiplicity(v), times, q)?;
         let mut rows: Vec<Vec<DVec4>> = self
             .net
             .chunks_exact(self.cols)
