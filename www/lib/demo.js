@@ -11,7 +11,7 @@
  * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state), insets?, handles?: { field, label?(i), constraint?(i) } }`: the View and its handles on a list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -75,8 +75,9 @@ export function mountDeclared(demo, initialState, ctx) {
   const figureSpec = demo.figure;
   const view = ctx.createFigure({
     draw: (r, v) => demo.draw(r, v, work, data),
-    bounds: () => figureSpec.bounds(work),
-    insets: figureSpec.insets,
+    bounds: () => figureSpec.bounds(work, data),
+    label: "",
+    insets: figureSpec.insets ? (w, h, scale) => figureSpec.insets(w, h, scale, work, data) : null,
   });
 
   /** What controls, handles and tools get: the state, its setter and the shell's services. */
