@@ -406,7 +406,52 @@ const extraWorkers = [];
 try {
   // The registry, as the page sees it.
   await page.goto(`${base}/index.html`);
-  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => ({ id: d.id, title: d.title, section: d.section })));
+  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map(({ id, section, strings }) => ({ id, section, strings })));
+
+  await test("registry: every manifest entry loads its module, which agrees on id, section and strings", async () => {
+    const problems = await page.evaluate(async () => {
+      const { demos, findDemo, loadDemo } = await import("./demos/index.js");
+      const found = [];
+      for (const entry of demos) {
+        const demo = await loadDemo(entry.id);
+        if (demo !== (await loadDemo(entry.id))) found.push(`${entry.id}: loadDemo is not memoised`);
+        if (findDemo(entry.id) !== entry) found.push(`${entry.id}: findDemo`);
+        for (const field of ["id", "section", "strings"]) {
+          if (demo[field] !== entry[field]) found.push(`${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`);
+        }
+        for (const name of ["defaultState", "validate", "mount"]) if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
+      }
+      const refused = await loadDemo("no-such-demo").then(() => "loaded", (err) => err.message);
+      if (!refused.includes("no-such-demo")) found.push(`an unknown id: ${refused}`);
+      if (findDemo("no-such-demo") !== undefined) found.push("findDemo of an unknown id");
+      return found;
+    });
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("an embed of one demo requests no other demo module", async () => {
+    // A course page with one <spline-lab>, served beside embed.js; every request is watched.
+    const pageUrl = `${base}/one-embed-test.html`;
+    const modules = [];
+    const watch = (request) => {
+      const path = new URL(request.url()).pathname;
+      if (/^\/demos\/[^/]+\.js$/.test(path)) modules.push(path);
+    };
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) => route.fulfill({ contentType: "text/html", body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="one" demo="de-casteljau" points="0,0 2,2 6,4 8,2" t="0.25"></spline-lab></body></html>' }));
+    page.on("request", watch);
+    try {
+      await page.goto(pageUrl);
+      await demoHelpers(page, "spline-lab#one ").ready();
+      equal((await demoHelpers(page, "spline-lab#one ").handles()).length, 4, "the embed's handles");
+    } finally {
+      page.off("request", watch);
+      await page.unroute(pageUrl);
+    }
+    equal(JSON.stringify([...new Set(modules)].sort()), JSON.stringify(["/demos/de-casteljau.js", "/demos/index.js"]), "demo modules requested");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
 
   await test("strings: every key the UI asks for exists in English", async () => {
     // Literal keys t("…") anywhere in www/, plus the keys the shell builds from each demo's prefix.
@@ -438,12 +483,38 @@ try {
     assert(loose.length === 0, `untyped declarations:\n${loose.join("\n")}`);
   });
 
-  await test("gallery lists every demo with a thumbnail and a #demo= link", async () => {
-    await page.locator(".card").first().waitFor();
-    for (const demo of registry) {
-      const card = page.locator(`a.card[href="#demo=${demo.id}"]`);
-      equal(await card.count(), 1, `card for ${demo.id}`);
-      await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), demo.id);
+  await test("gallery lists every demo with its title, summary, a #demo= link and a thumbnail drawn near the viewport", async () => {
+    // A fresh gallery, its requests watched: demo modules are imported only for cards near the viewport.
+    const modules = new Set();
+    const watch = (request) => {
+      const path = new URL(request.url()).pathname;
+      if (/^\/demos\/[^/]+\.js$/.test(path) && !path.endsWith("/index.js")) modules.add(path);
+    };
+    page.on("request", watch);
+    try {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html`);
+      await page.locator(".card").first().waitFor();
+      await page.waitForFunction(() => document.querySelector("a.card img")?.src.startsWith("data:image/png"));
+      await settle(page);
+      const early = modules.size;
+      assert(early > 0 && early < registry.length, `${early} of ${registry.length} demo modules imported before scrolling`);
+      const words = await page.evaluate(async () => {
+        const { t } = await import("./lib/strings.js");
+        const { demos } = await import("./demos/index.js");
+        return demos.map((d) => [d.id, t(`${d.strings}.title`), t(`${d.strings}.summary`)]);
+      });
+      for (const [id, title, summary] of words) {
+        const card = page.locator(`a.card[href="#demo=${id}"]`);
+        equal(await card.count(), 1, `card for ${id}`);
+        equal(await card.locator(".card-title").textContent(), title, `${id} title`);
+        equal(await card.locator(".card-line").textContent(), summary, `${id} summary`);
+        await card.scrollIntoViewIfNeeded();
+        await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), id);
+      }
+      equal(modules.size, registry.length, "every module imported once its card was near the viewport");
+    } finally {
+      page.off("request", watch);
     }
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
@@ -451,14 +522,14 @@ try {
 
   await test("gallery thumbnails follow the colour scheme, also when it changes", async () => {
     // Mean brightness (0–255) of the first thumbnail's top-left 8×8 image pixels (its
-    // background), once the thumbnails are drawn; null before.
+    // background), once it is drawn; null before.
     const corner = () => {
-      const imgs = [...document.querySelectorAll("img.card-thumb")];
-      if (!imgs.length || !imgs.every((img) => img.complete && img.src.startsWith("data:"))) return null;
+      const img = document.querySelector("img.card-thumb");
+      if (!img || !img.complete || !img.src.startsWith("data:")) return null;
       const c = document.createElement("canvas");
       c.width = c.height = 8;
       const g = c.getContext("2d");
-      g.drawImage(imgs[0], 0, 0, 8, 8, 0, 0, 8, 8);
+      g.drawImage(img, 0, 0, 8, 8, 0, 0, 8, 8);
       const d = g.getImageData(0, 0, 8, 8).data;
       let sum = 0;
       for (let i = 0; i < d.length; i += 4) sum += (d[i] + d[i + 1] + d[i + 2]) / 3;

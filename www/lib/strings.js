@@ -88,6 +88,7 @@ const EN = {
   "error.version": "unsupported file version {version} (this page reads version {expected})",
   "error.wrongDemo": "the file is for the demo “{found}”, not “{expected}”",
   "error.attribute": "attribute “{name}”: {message}",
+  "error.unknownDemo": "there is no demo called “{id}”",
 
   // Shared controls
   "control.t": "Parameter t",
