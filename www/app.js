@@ -64,7 +64,7 @@ function unmount() {
 // ------------------------------------------------------------------ gallery
 async function showGallery(sl) {
   unmount();
-  document.title = `${t("app.name")} — ${t("gallery.heading")}`;
+  document.title = t("app.galleryTitle", { app: t("app.name"), heading: t("gallery.heading") });
   const page = el("div", { class: "gallery" },
     el("h1", { text: t("gallery.heading") }),
     el("p", { class: "gallery-intro", text: t("app.tagline") }));
@@ -145,7 +145,7 @@ function thumbnail(demo, sl) {
 function showDemo(entry, demo, encoded, sl) {
   unmount();
   currentId = demo.id;
-  document.title = `${t(`${entry.strings}.title`)} — ${t("app.name")}`;
+  document.title = t("app.demoTitle", { title: t(`${entry.strings}.title`), app: t("app.name") });
   let state = validateState(demo, structuredClone(demo.defaultState));
   let linkError = null;
   if (encoded) {

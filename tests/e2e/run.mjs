@@ -465,11 +465,33 @@ try {
     const missing = [];
     const strings = await import("../../www/lib/strings.js");
     for (const file of listJs(join(ROOT, "www"))) {
-      for (const [, key] of readFileSync(file, "utf8").matchAll(/\bt\("([\w.]+)"/g)) {
-        if (!strings.has(key)) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
+      for (const [, fn, key] of readFileSync(file, "utf8").matchAll(/\b(tp?)\("([\w.]+)"/g)) {
+        if (!strings.has(key) && !(fn === "tp" && strings.has(`${key}.other`))) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
       }
     }
     assert(missing.length === 0, `keys missing from strings.js:\n${missing.join("\n")}`);
+  });
+
+  await test("strings: tp() picks the plural form by Intl.PluralRules of the active language", async () => {
+    const { addLocale, setLocale, locale, tp, t, formatNumber } = await import("../../www/lib/strings.js");
+    // A made-up key in English and in Croatian (one: 1, 21, …; few: 2–4, 22–24, …; other: the rest).
+    addLocale("en", { "test.apples.one": "{count} apple", "test.apples.other": "{count} apples" });
+    addLocale("hr", { "test.apples.one": "{count} jabuka", "test.apples.few": "{count} jabuke", "test.apples.other": "{count} jabuka", "test.only.other": "samo {count}" });
+    try {
+      equal(tp("test.apples", 1), "1 apple", "en one");
+      equal(tp("test.apples", 0), "0 apples", "en zero is other");
+      equal(tp("test.apples", 3, { count: formatNumber(3) }), "3 apples", "en other, formatted count");
+      equal(tp("test.missing", 2, { n: 2 }), "test.missing", "no forms: the key itself, as t() does");
+      setLocale("hr");
+      equal(locale(), "hr", "active language");
+      equal([1, 3, 5, 21, 22].map((n) => tp("test.apples", n)).join(", "), "1 jabuka, 3 jabuke, 5 jabuka, 21 jabuka, 22 jabuke", "hr forms");
+      equal(tp("test.only", 3), "samo 3", "a missing category falls back to .other");
+      equal(formatNumber(1.8125), "1,813", "hr decimal comma, 3 decimals");
+      equal(t("gallery.heading"), "Demos, by syllabus section", "a key the table lacks falls back to English");
+    } finally {
+      setLocale("en");
+    }
+    equal(formatNumber(-0.0001), "0", "no minus zero");
   });
 
   await test("the TypeScript declarations type every public parameter and result (no `any`)", async () => {
