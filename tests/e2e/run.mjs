@@ -175,7 +175,9 @@ async function demoSuite({ page, errors }, demo) {
     await page.goto(`${base}/index.html`);
     await page.locator(`a.card[data-demo="${demo.id}"]`).click();
     await h.ready();
-    assert((await h.canvas().getAttribute("role")) === "img", "canvas role=img");
+    // Every demo has keyboard handles: an interactive figure, not a picture.
+    equal(await h.canvas().getAttribute("role"), "application", "canvas role");
+    assert((await h.canvas().getAttribute("aria-roledescription"))?.length > 3, "canvas has an aria-roledescription");
     assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
     const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
     assert(Math.abs(size.w - size.cw * size.ratio) <= 1, `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`);
@@ -674,6 +676,46 @@ try {
     await lecture.click();
     equal(await lecture.getAttribute("aria-pressed"), "false", "released");
     equal(await h.snapshot(), before, "the picture is as before");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("a11y: Tab selects a handle and an arrow nudge is announced in the polite live region", async () => {
+    const h = await openDemo(page, base, "de-casteljau");
+    const canvas = h.canvas();
+    equal(await canvas.getAttribute("role"), "application", "canvas role");
+    equal(await canvas.getAttribute("aria-roledescription"), "interactive figure", "role description");
+    const live = page.locator(".sl-figure .sl-announcer");
+    equal(await live.count(), 1, "one live region");
+    equal(await live.getAttribute("aria-live"), "polite", "aria-live");
+    // Tab from the top of the page until the figure has focus (keyboard focus selects P₀).
+    await page.evaluate(() => document.activeElement?.blur());
+    let focused = false;
+    for (let k = 0; k < 40 && !focused; k++) {
+      await page.keyboard.press("Tab");
+      focused = await canvas.evaluate((c) => document.activeElement === c);
+    }
+    assert(focused, "Tab reaches the figure");
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "announced on selection");
+    await page.keyboard.press("Tab");
+    equal(await live.textContent(), "P₁ selected, (2, 2)", "Tab selects the next handle");
+    // Dragging frames announce nothing; the committed nudge does, with the new coordinates.
+    await page.keyboard.press("Shift+ArrowRight");
+    const moved = await live.textContent();
+    const [, x] = moved.match(/^P₁ moved to \((\d+(?:\.\d+)?), 2\)$/) ?? [];
+    assert(Number(x) > 2, `announced after the nudge: ${moved}`);
+    const state = await page.evaluate(() => JSON.parse(atob(new URLSearchParams(location.hash.slice(1)).get("s").replace(/-/g, "+").replace(/_/g, "/"))));
+    equal(Number(x), Number(state.points[1][0].toFixed(3)), "the announced x is the committed one");
+    // A drag is announced once, when it ends.
+    const [p0] = await h.handles();
+    await page.mouse.move(p0.x, p0.y);
+    await page.mouse.down();
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "pointer down selects");
+    await page.mouse.move(p0.x + 20, p0.y);
+    await settle(page);
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "nothing said while dragging");
+    await page.mouse.up();
+    assert(/^P₀ moved to \(\d/.test(await live.textContent()), `after the drag: ${await live.textContent()}`);
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });

@@ -65,6 +65,11 @@ const EN = {
   "shell.figureHelp": "Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Drag empty space to pan; wheel or pinch to zoom.",
   "shell.openInPlayground": "Open in the playground",
 
+  // Handles (figure accessibility: role description, live-region announcements)
+  "handles.roleDescription": "interactive figure",
+  "handles.selected": "{label} selected, ({x}, {y})",
+  "handles.moved": "{label} moved to ({x}, {y})",
+
   // Status messages
   "status.linkCopied": "Link copied to the clipboard.",
   "status.linkShown": "Copy this link: {url}",
