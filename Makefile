@@ -2,7 +2,9 @@
 #   make serve        build the wasm package and serve www/ on http://127.0.0.1:$(PORT)
 #   make test         native + doc tests, wasm-bindgen-test suites in Node, browser tests
 #   make test-native  the fast loop: core tests and doctests only
-#   make lint         rustfmt check and clippy with warnings denied
+#   make lint         rustfmt check, clippy with warnings denied, and lint-js
+#   make lint-js      Biome (biome.json): the JS formatting and lint check, writes nothing
+#   make format       Biome formats the JS and applies its safe fixes (writes)
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
 #   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
 SHELL := /bin/bash
@@ -14,8 +16,11 @@ WB_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/ {getline; gsub(/version = 
 WB_STAMP := $(TOOLS)/wasm-bindgen-$(WB_VERSION).stamp
 WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
+BIOME := node_modules/.bin/biome
+# The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
+JS_DIRS := www tests/e2e scripts bench
 
-.PHONY: all build serve test test-native test-wasm test-e2e lint screenshots bench clean tools rust-target npm-deps chromium
+.PHONY: all build serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -66,10 +71,16 @@ test-wasm: tools
 test-e2e: build chromium
 	node tests/e2e/run.mjs
 
-lint:
+lint: lint-js
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	cargo clippy --lib --target $(WASM_TARGET) -- -D warnings
+
+lint-js: npm-deps
+	$(BIOME) check $(JS_DIRS)
+
+format: npm-deps
+	$(BIOME) check --write $(JS_DIRS)
 
 screenshots: build chromium
 	node scripts/screenshots.mjs

@@ -38,7 +38,15 @@ for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, P
     await page.goto(`${base}/index.html`);
     const ids = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => d.id));
     if (viewport !== PHONE) {
-      await page.waitForFunction(() => [...document.querySelectorAll(".card img")].every((img) => img.src.startsWith("data:")));
+      // Thumbnails are drawn when their card comes near the viewport: pass every card by.
+      for (const card of await page.locator(".card").all()) {
+        await card.scrollIntoViewIfNeeded();
+        await card.locator("img").evaluate((img) => new Promise((resolve) => {
+          const check = () => (img.src.startsWith("data:") ? resolve() : requestAnimationFrame(check));
+          check();
+        }));
+      }
+      await page.evaluate(() => window.scrollTo(0, 0));
       await page.screenshot({ path: `${OUT}gallery-${suffix}.png`, fullPage: true });
       written.push(`gallery-${suffix}.png`);
     }

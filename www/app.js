@@ -4,7 +4,7 @@
  * (history.replaceState, so the back button is not flooded); a pasted or edited link is
  * validated and, if bad, reported while the last good picture stays.
  */
-import { demos, findDemo } from "./demos/index.js";
+import { demos, findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { parseHash, buildHash, decodeState } from "./lib/state.js";
@@ -25,13 +25,16 @@ const THUMB_FIGURE_HEIGHT = (THUMB_FIGURE_WIDTH * THUMB_HEIGHT) / THUMB_WIDTH;
 const THUMB_SCALE = (2 * THUMB_WIDTH) / THUMB_FIGURE_WIDTH;
 /** Syllabus sections, in gallery order. */
 const SECTIONS = [1, 2, 3, 4, 5, 6];
+/** A card's demo module is loaded and its thumbnail drawn when the card is this near the viewport. */
+const THUMB_MARGIN = "300px";
 
 const main = document.getElementById("main");
 const appStatus = main.querySelector(".app-status");
 let controller = null; // the mounted demo (shell controller)
 let currentId = null;
 let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
-let stopThemeWatch = () => {}; // the gallery's colour-scheme listener
+let stopThemeWatch = () => {}; // the gallery's colour-scheme listener and thumbnail observer
+let routeCount = 0; // bumped by every route(): a demo that finished loading late is not shown
 
 function showAppStatus(message, kind = "info") {
   appStatus.textContent = message;
@@ -61,47 +64,72 @@ function unmount() {
 // ------------------------------------------------------------------ gallery
 async function showGallery(sl) {
   unmount();
-  document.title = `${t("app.name")} — ${t("gallery.heading")}`;
+  document.title = t("app.galleryTitle", { app: t("app.name"), heading: t("gallery.heading") });
   const page = el("div", { class: "gallery" },
     el("h1", { text: t("gallery.heading") }),
     el("p", { class: "gallery-intro", text: t("app.tagline") }));
   for (const section of SECTIONS) {
-    const members = demos.filter((demo) => demo.section === section);
+    const members = demos.filter((entry) => entry.section === section);
     if (!members.length) continue;
-    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((demo) => card(demo))));
+    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((entry) => card(entry))));
   }
   main.append(page);
-  if (sl) {
-    // Let the page paint first; thumbnails are a nicety.
-    requestAnimationFrame(() => drawThumbnails(page, sl));
-    stopThemeWatch = onThemeChange(() => drawThumbnails(page, sl));
-  }
+  if (sl) stopThemeWatch = watchThumbnails(page, sl);
 }
 
-/** Draws the thumbnail of every card in the gallery (again, after a colour-scheme change). */
-function drawThumbnails(page, sl) {
-  for (const img of page.querySelectorAll("img.card-thumb")) {
-    const demo = findDemo(img.dataset.demo);
+/**
+ * Thumbnails are a nicety drawn lazily: a card's demo module is imported when the card comes
+ * near the viewport, then its default state is drawn into the card's image. A colour-scheme
+ * change redraws the cards already drawn. Returns the function that stops both watches.
+ */
+function watchThumbnails(page, sl) {
+  const shown = new Set(); // images whose card has come near the viewport
+  let stopped = false;
+  const draw = async (img) => {
+    let demo;
+    try {
+      demo = await loadDemo(img.dataset.demo);
+    } catch {
+      return; // leave the placeholder; opening the demo reports the failure
+    }
+    if (stopped) return;
     try {
       img.src = thumbnail(demo, sl);
       img.classList.remove("placeholder");
     } catch {
       // leave the placeholder (or the previous picture)
     }
-  }
+  };
+  const observer = new IntersectionObserver((entries) => {
+    for (const entry of entries) {
+      if (!entry.isIntersecting || shown.has(entry.target)) continue;
+      shown.add(entry.target);
+      observer.unobserve(entry.target);
+      draw(entry.target);
+    }
+  }, { rootMargin: THUMB_MARGIN });
+  for (const img of page.querySelectorAll("img.card-thumb")) observer.observe(img);
+  const stopTheme = onThemeChange(() => shown.forEach(draw));
+  return () => {
+    stopped = true;
+    observer.disconnect();
+    stopTheme();
+  };
 }
 
-function card(demo) {
-  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title: demo.title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT), dataset: { demo: demo.id } });
+/** A gallery card: the words come from the manifest's string keys, the picture comes later. */
+function card(entry) {
+  const title = t(`${entry.strings}.title`);
+  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT), dataset: { demo: entry.id } });
   return el("li", {},
-    el("a", { class: "card", href: buildHash(demo.id), dataset: { demo: demo.id } },
+    el("a", { class: "card", href: buildHash(entry.id), dataset: { demo: entry.id } },
       img,
       el("span", { class: "card-body" },
-        el("span", { class: "card-title", text: demo.title }),
-        el("span", { class: "card-line", text: demo.summary }))));
+        el("span", { class: "card-title", text: title }),
+        el("span", { class: "card-line", text: t(`${entry.strings}.summary`) }))));
 }
 
-/** A PNG data URL of the demo's default state, rendered off-screen through the normal mount. */
+/** A PNG data URL of the demo module's default state, rendered off-screen through the normal mount. */
 function thumbnail(demo, sl) {
   const holder = document.createElement("div");
   const temp = mountDemo(holder, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "embed", shareUrl: () => "" });
@@ -113,10 +141,11 @@ function thumbnail(demo, sl) {
 }
 
 // ------------------------------------------------------------------ demo view
-function showDemo(demo, encoded, sl) {
+/** Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any. */
+function showDemo(entry, demo, encoded, sl) {
   unmount();
   currentId = demo.id;
-  document.title = `${demo.title} — ${t("app.name")}`;
+  document.title = t("app.demoTitle", { title: t(`${entry.strings}.title`), app: t("app.name") });
   let state = validateState(demo, structuredClone(demo.defaultState));
   let linkError = null;
   if (encoded) {
@@ -150,15 +179,24 @@ function showDemo(demo, encoded, sl) {
 
 // ------------------------------------------------------------------ routing
 async function route(sl) {
+  const routed = ++routeCount;
   const { demo: id, s } = parseHash(location.hash);
   if (!id) return showGallery(sl);
-  const demo = findDemo(id);
-  if (!demo) {
+  const entry = findDemo(id);
+  if (!entry) {
     await showGallery(sl);
     showAppStatus(t("app.unknownDemo", { id }), "error");
     return;
   }
   if (!sl) return showGallery(sl);
+  let demo;
+  try {
+    demo = await loadDemo(id);
+  } catch (err) {
+    if (routed === routeCount) showAppStatus(err.message, "error");
+    return;
+  }
+  if (routed !== routeCount) return; // another link was followed while this module loaded
   if (controller && currentId === id) {
     // Same demo, new link: validate and apply (no state: the starting picture); a bad one
     // keeps the current picture.
@@ -170,7 +208,7 @@ async function route(sl) {
     writeHash(id, controller.state);
     return;
   }
-  showDemo(demo, s, sl);
+  showDemo(entry, demo, s, sl);
   main.focus({ preventScroll: true });
   window.scrollTo(0, 0);
 }

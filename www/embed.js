@@ -3,10 +3,10 @@
  * page. Load this file as a module (`<script type="module" src=".../embed.js">`); put as many
  * elements on the page as you like. Each lives in its own shadow root (the page's CSS does not
  * leak in), the wasm package is loaded once per page, and a demo starts only when it comes
- * near the viewport. Attributes are the demo's state fields (see lib/attributes.js); changing
+ * near the viewport, and then loads only its own demo module. Attributes are the demo's state fields (see lib/attributes.js); changing
  * an attribute later updates the figure. `view="xmin ymin xmax ymax"` fixes the window.
  */
-import { findDemo } from "./demos/index.js";
+import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { stateFromAttributes } from "./lib/attributes.js";
@@ -63,17 +63,23 @@ class SplineLabElement extends HTMLElement {
     }
   }
 
-  /** Loads the wasm (shared by the page) and mounts the demo. */
+  /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
-    const demo = findDemo(this.getAttribute("demo") ?? "");
-    if (!demo) return this._fail(t("app.unknownDemo", { id: this.getAttribute("demo") ?? "" }));
+    const id = this.getAttribute("demo") ?? "";
+    if (!findDemo(id)) return this._fail(t("app.unknownDemo", { id }));
     let sl;
+    let demo;
     try {
       sl = await loadWasm();
     } catch (err) {
       return this._fail(loadFailureMessage(err));
     }
-    if (!this.isConnected) return;
+    try {
+      demo = await loadDemo(id);
+    } catch (err) {
+      return this._fail(err.message);
+    }
+    if (!this.isConnected || this._controller) return;
     let state = validateState(demo, structuredClone(demo.defaultState));
     let problem = null;
     try {

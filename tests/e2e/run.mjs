@@ -175,7 +175,9 @@ async function demoSuite({ page, errors }, demo) {
     await page.goto(`${base}/index.html`);
     await page.locator(`a.card[data-demo="${demo.id}"]`).click();
     await h.ready();
-    assert((await h.canvas().getAttribute("role")) === "img", "canvas role=img");
+    // Every demo has keyboard handles: an interactive figure, not a picture.
+    equal(await h.canvas().getAttribute("role"), "application", "canvas role");
+    assert((await h.canvas().getAttribute("aria-roledescription"))?.length > 3, "canvas has an aria-roledescription");
     assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
     const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
     assert(Math.abs(size.w - size.cw * size.ratio) <= 1, `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`);
@@ -406,7 +408,52 @@ const extraWorkers = [];
 try {
   // The registry, as the page sees it.
   await page.goto(`${base}/index.html`);
-  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => ({ id: d.id, title: d.title, section: d.section })));
+  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map(({ id, section, strings }) => ({ id, section, strings })));
+
+  await test("registry: every manifest entry loads its module, which agrees on id, section and strings", async () => {
+    const problems = await page.evaluate(async () => {
+      const { demos, findDemo, loadDemo } = await import("./demos/index.js");
+      const found = [];
+      for (const entry of demos) {
+        const demo = await loadDemo(entry.id);
+        if (demo !== (await loadDemo(entry.id))) found.push(`${entry.id}: loadDemo is not memoised`);
+        if (findDemo(entry.id) !== entry) found.push(`${entry.id}: findDemo`);
+        for (const field of ["id", "section", "strings"]) {
+          if (demo[field] !== entry[field]) found.push(`${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`);
+        }
+        for (const name of ["defaultState", "validate", "mount"]) if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
+      }
+      const refused = await loadDemo("no-such-demo").then(() => "loaded", (err) => err.message);
+      if (!refused.includes("no-such-demo")) found.push(`an unknown id: ${refused}`);
+      if (findDemo("no-such-demo") !== undefined) found.push("findDemo of an unknown id");
+      return found;
+    });
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("an embed of one demo requests no other demo module", async () => {
+    // A course page with one <spline-lab>, served beside embed.js; every request is watched.
+    const pageUrl = `${base}/one-embed-test.html`;
+    const modules = [];
+    const watch = (request) => {
+      const path = new URL(request.url()).pathname;
+      if (/^\/demos\/[^/]+\.js$/.test(path)) modules.push(path);
+    };
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) => route.fulfill({ contentType: "text/html", body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="one" demo="de-casteljau" points="0,0 2,2 6,4 8,2" t="0.25"></spline-lab></body></html>' }));
+    page.on("request", watch);
+    try {
+      await page.goto(pageUrl);
+      await demoHelpers(page, "spline-lab#one ").ready();
+      equal((await demoHelpers(page, "spline-lab#one ").handles()).length, 4, "the embed's handles");
+    } finally {
+      page.off("request", watch);
+      await page.unroute(pageUrl);
+    }
+    equal(JSON.stringify([...new Set(modules)].sort()), JSON.stringify(["/demos/de-casteljau.js", "/demos/index.js"]), "demo modules requested");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
 
   await test("strings: every key the UI asks for exists in English", async () => {
     // Literal keys t("…") anywhere in www/, plus the keys the shell builds from each demo's prefix.
@@ -420,11 +467,33 @@ try {
     const missing = [];
     const strings = await import("../../www/lib/strings.js");
     for (const file of listJs(join(ROOT, "www"))) {
-      for (const [, key] of readFileSync(file, "utf8").matchAll(/\bt\("([\w.]+)"/g)) {
-        if (!strings.has(key)) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
+      for (const [, fn, key] of readFileSync(file, "utf8").matchAll(/\b(tp?)\("([\w.]+)"/g)) {
+        if (!strings.has(key) && !(fn === "tp" && strings.has(`${key}.other`))) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
       }
     }
     assert(missing.length === 0, `keys missing from strings.js:\n${missing.join("\n")}`);
+  });
+
+  await test("strings: tp() picks the plural form by Intl.PluralRules of the active language", async () => {
+    const { addLocale, setLocale, locale, tp, t, formatNumber } = await import("../../www/lib/strings.js");
+    // A made-up key in English and in Croatian (one: 1, 21, …; few: 2–4, 22–24, …; other: the rest).
+    addLocale("en", { "test.apples.one": "{count} apple", "test.apples.other": "{count} apples" });
+    addLocale("hr", { "test.apples.one": "{count} jabuka", "test.apples.few": "{count} jabuke", "test.apples.other": "{count} jabuka", "test.only.other": "samo {count}" });
+    try {
+      equal(tp("test.apples", 1), "1 apple", "en one");
+      equal(tp("test.apples", 0), "0 apples", "en zero is other");
+      equal(tp("test.apples", 3, { count: formatNumber(3) }), "3 apples", "en other, formatted count");
+      equal(tp("test.missing", 2, { n: 2 }), "test.missing", "no forms: the key itself, as t() does");
+      setLocale("hr");
+      equal(locale(), "hr", "active language");
+      equal([1, 3, 5, 21, 22].map((n) => tp("test.apples", n)).join(", "), "1 jabuka, 3 jabuke, 5 jabuka, 21 jabuka, 22 jabuke", "hr forms");
+      equal(tp("test.only", 3), "samo 3", "a missing category falls back to .other");
+      equal(formatNumber(1.8125), "1,813", "hr decimal comma, 3 decimals");
+      equal(t("gallery.heading"), "Demos, by syllabus section", "a key the table lacks falls back to English");
+    } finally {
+      setLocale("en");
+    }
+    equal(formatNumber(-0.0001), "0", "no minus zero");
   });
 
   await test("the TypeScript declarations type every public parameter and result (no `any`)", async () => {
@@ -438,12 +507,38 @@ try {
     assert(loose.length === 0, `untyped declarations:\n${loose.join("\n")}`);
   });
 
-  await test("gallery lists every demo with a thumbnail and a #demo= link", async () => {
-    await page.locator(".card").first().waitFor();
-    for (const demo of registry) {
-      const card = page.locator(`a.card[href="#demo=${demo.id}"]`);
-      equal(await card.count(), 1, `card for ${demo.id}`);
-      await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), demo.id);
+  await test("gallery lists every demo with its title, summary, a #demo= link and a thumbnail drawn near the viewport", async () => {
+    // A fresh gallery, its requests watched: demo modules are imported only for cards near the viewport.
+    const modules = new Set();
+    const watch = (request) => {
+      const path = new URL(request.url()).pathname;
+      if (/^\/demos\/[^/]+\.js$/.test(path) && !path.endsWith("/index.js")) modules.add(path);
+    };
+    page.on("request", watch);
+    try {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html`);
+      await page.locator(".card").first().waitFor();
+      await page.waitForFunction(() => document.querySelector("a.card img")?.src.startsWith("data:image/png"));
+      await settle(page);
+      const early = modules.size;
+      assert(early > 0 && early < registry.length, `${early} of ${registry.length} demo modules imported before scrolling`);
+      const words = await page.evaluate(async () => {
+        const { t } = await import("./lib/strings.js");
+        const { demos } = await import("./demos/index.js");
+        return demos.map((d) => [d.id, t(`${d.strings}.title`), t(`${d.strings}.summary`)]);
+      });
+      for (const [id, title, summary] of words) {
+        const card = page.locator(`a.card[href="#demo=${id}"]`);
+        equal(await card.count(), 1, `card for ${id}`);
+        equal(await card.locator(".card-title").textContent(), title, `${id} title`);
+        equal(await card.locator(".card-line").textContent(), summary, `${id} summary`);
+        await card.scrollIntoViewIfNeeded();
+        await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), id);
+      }
+      equal(modules.size, registry.length, "every module imported once its card was near the viewport");
+    } finally {
+      page.off("request", watch);
     }
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
@@ -451,14 +546,14 @@ try {
 
   await test("gallery thumbnails follow the colour scheme, also when it changes", async () => {
     // Mean brightness (0–255) of the first thumbnail's top-left 8×8 image pixels (its
-    // background), once the thumbnails are drawn; null before.
+    // background), once it is drawn; null before.
     const corner = () => {
-      const imgs = [...document.querySelectorAll("img.card-thumb")];
-      if (!imgs.length || !imgs.every((img) => img.complete && img.src.startsWith("data:"))) return null;
+      const img = document.querySelector("img.card-thumb");
+      if (!img || !img.complete || !img.src.startsWith("data:")) return null;
       const c = document.createElement("canvas");
       c.width = c.height = 8;
       const g = c.getContext("2d");
-      g.drawImage(imgs[0], 0, 0, 8, 8, 0, 0, 8, 8);
+      g.drawImage(img, 0, 0, 8, 8, 0, 0, 8, 8);
       const d = g.getImageData(0, 0, 8, 8).data;
       let sum = 0;
       for (let i = 0; i < d.length; i += 4) sum += (d[i] + d[i + 1] + d[i + 2]) / 3;
@@ -581,6 +676,46 @@ try {
     await lecture.click();
     equal(await lecture.getAttribute("aria-pressed"), "false", "released");
     equal(await h.snapshot(), before, "the picture is as before");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("a11y: Tab selects a handle and an arrow nudge is announced in the polite live region", async () => {
+    const h = await openDemo(page, base, "de-casteljau");
+    const canvas = h.canvas();
+    equal(await canvas.getAttribute("role"), "application", "canvas role");
+    equal(await canvas.getAttribute("aria-roledescription"), "interactive figure", "role description");
+    const live = page.locator(".sl-figure .sl-announcer");
+    equal(await live.count(), 1, "one live region");
+    equal(await live.getAttribute("aria-live"), "polite", "aria-live");
+    // Tab from the top of the page until the figure has focus (keyboard focus selects P₀).
+    await page.evaluate(() => document.activeElement?.blur());
+    let focused = false;
+    for (let k = 0; k < 40 && !focused; k++) {
+      await page.keyboard.press("Tab");
+      focused = await canvas.evaluate((c) => document.activeElement === c);
+    }
+    assert(focused, "Tab reaches the figure");
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "announced on selection");
+    await page.keyboard.press("Tab");
+    equal(await live.textContent(), "P₁ selected, (2, 2)", "Tab selects the next handle");
+    // Dragging frames announce nothing; the committed nudge does, with the new coordinates.
+    await page.keyboard.press("Shift+ArrowRight");
+    const moved = await live.textContent();
+    const [, x] = moved.match(/^P₁ moved to \((\d+(?:\.\d+)?), 2\)$/) ?? [];
+    assert(Number(x) > 2, `announced after the nudge: ${moved}`);
+    const state = await page.evaluate(() => JSON.parse(atob(new URLSearchParams(location.hash.slice(1)).get("s").replace(/-/g, "+").replace(/_/g, "/"))));
+    equal(Number(x), Number(state.points[1][0].toFixed(3)), "the announced x is the committed one");
+    // A drag is announced once, when it ends.
+    const [p0] = await h.handles();
+    await page.mouse.move(p0.x, p0.y);
+    await page.mouse.down();
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "pointer down selects");
+    await page.mouse.move(p0.x + 20, p0.y);
+    await settle(page);
+    equal(await live.textContent(), "P₀ selected, (0, 0)", "nothing said while dragging");
+    await page.mouse.up();
+    assert(/^P₀ moved to \(\d/.test(await live.textContent()), `after the drag: ${await live.textContent()}`);
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });

@@ -6,7 +6,7 @@
 
 /** `rounds` mutated states per demo; returns the counts and the first bad cases. */
 export async function fuzzStates({ seedValue, rounds }) {
-  const { demos } = await import("./demos/index.js");
+  const { demos, loadDemo } = await import("./demos/index.js");
   const { validateState, mountDemo } = await import("./lib/shell.js");
   const { loadWasm } = await import("./lib/wasm.js");
   const sl = await loadWasm();
@@ -32,7 +32,8 @@ export async function fuzzStates({ seedValue, rounds }) {
   }
   const bad = [];
   let accepted = 0, refused = 0;
-  for (const demo of demos) {
+  for (const entry of demos) {
+    const demo = await loadDemo(entry.id);
     for (let k = 0; k < rounds; k++) {
       const candidate = mutate(structuredClone(demo.defaultState));
       let state;

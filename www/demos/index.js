@@ -1,33 +1,63 @@
 /**
- * The demo registry: every demo module, in gallery order. The gallery, the playground, the
- * `<spline-lab>` element and the browser tests all find demos here (see lib/README.md for the
- * module contract). To add a demo: write `www/demos/<id>.js`, import it below, add it to the list.
+ * The demo registry: a small manifest of every demo, in gallery order. The gallery, the
+ * playground, the `<spline-lab>` element and the browser tests all find demos here (see
+ * lib/README.md for the module contract). Nothing here imports a demo module: `loadDemo(id)`
+ * fetches one when it is shown, so an embed of one demo loads only that demo.
+ *
+ * Each entry: `id` (the URL id and the module's file name), `section` (syllabus section, the
+ * gallery grouping), `strings` (the prefix of the demo's keys in lib/strings.js: the gallery
+ * shows `t(`${strings}.title`)` and `.summary` without loading the module) and `load()` (the
+ * module's dynamic import). To add a demo: write `www/demos/<id>.js` and add its entry below;
+ * the browser tests check that the entry agrees with the module's own `id`, `section` and
+ * `strings`.
  */
-import * as deCasteljau from "./de-casteljau.js";
-import * as bernstein from "./bernstein.js";
-import * as subdivision from "./subdivision.js";
-import * as flattening from "./flattening.js";
-import * as lineIntersection from "./line-intersection.js";
-import * as joining from "./joining.js";
-import * as bezierProperties from "./bezier-properties.js";
-import * as derivatives from "./derivatives.js";
-import * as bsplineBasis from "./bspline-basis.js";
-import * as deBoor from "./de-boor.js";
-import * as knotVectors from "./knot-vectors.js";
-import * as localControl from "./local-control.js";
-import * as knotInsertion from "./knot-insertion.js";
-import * as multiplicity from "./multiplicity.js";
-import * as matrixForm from "./matrix-form.js";
-import * as weights from "./weights.js";
-import * as conics from "./conics.js";
-import * as nurbsCircle from "./nurbs-circle.js";
-import * as projective from "./projective.js";
-import * as negativeWeights from "./negative-weights.js";
+import { t } from "../lib/strings.js";
 
 /** All demos, in the order the gallery shows them within their section. */
-export const demos = [deCasteljau, bernstein, subdivision, flattening, lineIntersection, joining, bezierProperties, derivatives, bsplineBasis, deBoor, knotVectors, localControl, knotInsertion, multiplicity, matrixForm, weights, conics, nurbsCircle, projective, negativeWeights];
+export const demos = Object.freeze([
+  { id: "de-casteljau", section: 2, strings: "deCasteljau", load: () => import("./de-casteljau.js") },
+  { id: "bernstein", section: 2, strings: "bernstein", load: () => import("./bernstein.js") },
+  { id: "subdivision", section: 2, strings: "subdivision", load: () => import("./subdivision.js") },
+  { id: "flattening", section: 2, strings: "flattening", load: () => import("./flattening.js") },
+  { id: "line-intersection", section: 2, strings: "lineIntersection", load: () => import("./line-intersection.js") },
+  { id: "joining", section: 2, strings: "joining", load: () => import("./joining.js") },
+  { id: "bezier-properties", section: 2, strings: "bezierProperties", load: () => import("./bezier-properties.js") },
+  { id: "derivatives", section: 2, strings: "derivatives", load: () => import("./derivatives.js") },
+  { id: "bspline-basis", section: 3, strings: "bsplineBasis", load: () => import("./bspline-basis.js") },
+  { id: "de-boor", section: 3, strings: "deBoor", load: () => import("./de-boor.js") },
+  { id: "knot-vectors", section: 3, strings: "knotVectors", load: () => import("./knot-vectors.js") },
+  { id: "local-control", section: 3, strings: "localControl", load: () => import("./local-control.js") },
+  { id: "knot-insertion", section: 3, strings: "knotInsertion", load: () => import("./knot-insertion.js") },
+  { id: "multiplicity", section: 3, strings: "multiplicity", load: () => import("./multiplicity.js") },
+  { id: "matrix-form", section: 3, strings: "matrixForm", load: () => import("./matrix-form.js") },
+  { id: "weights", section: 4, strings: "weights", load: () => import("./weights.js") },
+  { id: "conics", section: 4, strings: "conics", load: () => import("./conics.js") },
+  { id: "nurbs-circle", section: 4, strings: "nurbsCircle", load: () => import("./nurbs-circle.js") },
+  { id: "projective", section: 4, strings: "projective", load: () => import("./projective.js") },
+  { id: "negative-weights", section: 4, strings: "negativeWeights", load: () => import("./negative-weights.js") },
+].map(Object.freeze));
 
-/** The demo with this id, or undefined. */
+/** The manifest entry of demo `id`, or undefined (no module is loaded). */
 export function findDemo(id) {
   return demos.find((demo) => demo.id === id);
+}
+
+/** Promises of the modules asked for so far, by id (each module is imported once). */
+const loading = new Map();
+
+/**
+ * The module of demo `id` (memoised: every caller gets the same promise). Rejects with an
+ * `Error` for an id that is not in the manifest, or when the module fails to load; a failed
+ * load is forgotten, so a later call tries again.
+ */
+export function loadDemo(id) {
+  const entry = findDemo(id);
+  if (!entry) return Promise.reject(new Error(t("error.unknownDemo", { id })));
+  let promise = loading.get(id);
+  if (!promise) {
+    promise = entry.load();
+    promise.catch(() => loading.delete(id));
+    loading.set(id, promise);
+  }
+  return promise;
 }

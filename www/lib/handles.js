@@ -9,8 +9,14 @@
  * The handles own no data: the demo answers `count()`, `get(i, out)` and `label(i)` and is
  * told `move(i, x, y)` (a preview, during a drag) and `commit(kind, i)` (the change is final:
  * add it to the undo history).
+ *
+ * Accessibility (style.md): a figure with handles is an interactive figure — the canvas becomes
+ * `role="application"` with an `aria-roledescription` — and a polite live region beside it says
+ * what happened when it is final: "P₂ selected, (6, 4)" when a handle is selected, "P₂ moved to
+ * (6.5, 4)" when a drag ends or a nudge is committed; never during a drag.
  */
 import { subscript } from "./format.js";
+import { formatNumber, t } from "./strings.js";
 
 /** Hit radius around a handle centre, in CSS px, for mouse/pen and for touch (ui.md). */
 export const HIT_RADIUS_MOUSE = 10;
@@ -105,6 +111,17 @@ export class Handles {
     this._hasPending = false;
     this._lastNudge = { index: -1, time: 0, group: 0 };
     this._published = NaN;
+    this._dragStart = new Float64Array(2); // where the dragged handle was at pointer down
+
+    // An interactive figure, and the live region that announces selections and moves.
+    const canvas = view.canvas;
+    canvas.setAttribute("role", "application");
+    canvas.setAttribute("aria-roledescription", t("handles.roleDescription"));
+    this.announcer = document.createElement("div");
+    this.announcer.className = "sl-announcer";
+    this.announcer.setAttribute("aria-live", "polite");
+    this.announcer.setAttribute("aria-atomic", "true");
+    view.host.append(this.announcer);
 
     view.addInteractor(this);
     view.beforeFrame(() => this._flush());
@@ -121,7 +138,14 @@ export class Handles {
     if (next === this.selected) return;
     this.selected = next;
     this.source.select?.(next);
+    if (next >= 0) this._announce("handles.selected", next);
     this.view.requestDraw();
+  }
+
+  /** Says in the live region, politely, `key` ("{label} … ({x}, {y})") for handle i where it is now. */
+  _announce(key, i) {
+    this.source.get(i, this._q);
+    this.announcer.textContent = t(key, { label: this.source.label(i), x: formatNumber(this._q[0]), y: formatNumber(this._q[1]) });
   }
 
   /** Index of the handle under canvas point (x, y), or -1. */
@@ -150,6 +174,8 @@ export class Handles {
     this.source.get(i, this._p);
     this._grab[0] = this._p[0] - this.view.wx(x);
     this._grab[1] = this._p[1] - this.view.wy(y);
+    this._dragStart[0] = this._p[0];
+    this._dragStart[1] = this._p[1];
     this.dragging = i;
     this.select(i);
     this.view.canvas.focus({ preventScroll: true });
@@ -174,6 +200,10 @@ export class Handles {
     this.dragging = -1;
     this.view.canvas.style.cursor = this.hitTest(x, y, event.pointerType) >= 0 ? "grab" : "";
     this.source.commit("drag", i, null);
+    if (i < this.source.count()) {
+      this.source.get(i, this._p);
+      if (this._p[0] !== this._dragStart[0] || this._p[1] !== this._dragStart[1]) this._announce("handles.moved", i);
+    }
     this.view.requestDraw();
   }
 
@@ -299,6 +329,7 @@ export class Handles {
     this._lastNudge.index = i;
     this._lastNudge.time = now;
     this.source.commit("key", i, `nudge-${this._lastNudge.group}`);
+    if (i < this.source.count()) this._announce("handles.moved", i);
     this.view.requestDraw();
   }
 
@@ -403,10 +434,14 @@ export class Handles {
     this._sum[1] += ay / len;
   }
 
-  /** Removes the listeners (the view removes its own). */
+  /** Removes the listeners and the live region (the view removes its own); the figure is a picture again. */
   destroy() {
-    this.view.canvas.removeEventListener("keydown", this._onKey);
-    this.view.canvas.removeEventListener("focus", this._onFocus);
+    const canvas = this.view.canvas;
+    canvas.removeEventListener("keydown", this._onKey);
+    canvas.removeEventListener("focus", this._onFocus);
+    canvas.setAttribute("role", "img");
+    canvas.removeAttribute("aria-roledescription");
+    this.announcer.remove();
   }
 }
 

@@ -14,7 +14,7 @@
  */
 import { roundToView } from "./handles.js";
 import { button } from "./controls.js";
-import { t } from "./strings.js";
+import { t, tp } from "./strings.js";
 
 /** A point appended after the last goes this fraction of the last leg further on. */
 export const APPEND_FRACTION = 0.5;
@@ -72,7 +72,7 @@ export function pointListActions({ ctx, work, view, handles, min, max, strings, 
     handles.select(next.index);
     ctx.commit(work);
   };
-  const refuse = (kind, limit) => ctx.status(t(`${strings}.${kind}Points`, { [kind]: limit }), "error");
+  const refuse = (kind, limit) => ctx.status(tp(`${strings}.${kind}Points`, limit, { [kind]: limit }), "error");
   return {
     /** Adds a point after handle i (at the end when none is selected). */
     add(i) {

@@ -5,11 +5,18 @@
  *
  * `{name}` in a string is replaced by `params.name`. A missing key falls back to English, and a
  * key missing in English too is shown as itself (visible in the page, easy to spot).
+ *
+ * Plurals: `tp(key, count, params)` picks `<key>.<category>` by `Intl.PluralRules` of the
+ * active language (English has `.one` and `.other`; others add `.few`, `.many`, …), falling back
+ * to `<key>.other`, then to `key` itself; `{count}` is the count. Numbers in sentences go through
+ * `formatNumber` (`Intl.NumberFormat` of the active language).
  */
 
 const EN = {
   // Application and gallery
   "app.name": "splinelab",
+  "app.galleryTitle": "{app} — {heading}",
+  "app.demoTitle": "{title} — {app}",
   "app.tagline": "Parametric curves you can drag: every algorithm of the course as a live figure.",
   "app.backToGallery": "← All demos",
   "app.loading": "Loading the curve library…",
@@ -58,6 +65,11 @@ const EN = {
   "shell.figureHelp": "Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Drag empty space to pan; wheel or pinch to zoom.",
   "shell.openInPlayground": "Open in the playground",
 
+  // Handles (figure accessibility: role description, live-region announcements)
+  "handles.roleDescription": "interactive figure",
+  "handles.selected": "{label} selected, ({x}, {y})",
+  "handles.moved": "{label} moved to ({x}, {y})",
+
   // Status messages
   "status.linkCopied": "Link copied to the clipboard.",
   "status.linkShown": "Copy this link: {url}",
@@ -70,6 +82,7 @@ const EN = {
   "status.nothingToRedo": "Nothing to redo.",
 
   // Validation and encoding (messages name the bad field)
+  "format.quoted": "“{value}”",
   "error.notObject": "the state must be a JSON object",
   "error.unknownField": "unknown field “{field}”",
   "error.missingField": "field “{field}” is missing",
@@ -88,6 +101,7 @@ const EN = {
   "error.version": "unsupported file version {version} (this page reads version {expected})",
   "error.wrongDemo": "the file is for the demo “{found}”, not “{expected}”",
   "error.attribute": "attribute “{name}”: {message}",
+  "error.unknownDemo": "there is no demo called “{id}”",
 
   // Shared controls
   "control.t": "Parameter t",
@@ -915,18 +929,30 @@ const EN = {
 
 const locales = { en: EN };
 let active = EN;
-/** The active language's code (for Intl). */
-let locale = "en";
+let activeCode = "en";
+/** `Intl` objects of the active language, made when first needed (then reused). */
+let pluralRules = null;
+const numberFormats = new Map();
 
-/** Adds (or extends) the string table of a language. */
+/** Adds (or extends, also while it is active) the string table of a language. */
 export function addLocale(code, table) {
-  locales[code] = { ...(locales[code] ?? {}), ...table };
+  Object.assign((locales[code] ??= {}), table);
 }
 
-/** Makes `code` the active language (falls back to English for missing keys). */
+/**
+ * Makes `code` (a BCP 47 tag such as "el" or "hr") the active language for `t`, `tp` and
+ * `formatNumber`; keys it lacks fall back to English. A code without a table is English.
+ */
 export function setLocale(code) {
-  active = locales[code] ?? EN;
-  locale = locales[code] ? code : "en";
+  activeCode = code in locales ? code : "en";
+  active = locales[activeCode];
+  pluralRules = null;
+  numberFormats.clear();
+}
+
+/** The active language's code ("en" unless `setLocale` chose another). */
+export function locale() {
+  return activeCode;
 }
 
 /** The string for `key` with `{name}` placeholders replaced from `params`. */
@@ -936,25 +962,42 @@ export function t(key, params) {
   return template.replace(/\{(\w+)\}/g, (whole, name) => (name in params ? String(params[name]) : whole));
 }
 
+/**
+ * The plural form of `key` for `count`: `<key>.one`, `<key>.other` (or `.zero`, `.two`, `.few`,
+ * `.many` where the language has them), chosen by `Intl.PluralRules` of the active language, with
+ * `{count}` and the other `params` filled in. Falls back to `<key>.other`, then to `key`:
+ *
+ *   "flattening.segments.one": "{count} segment",  "flattening.segments.other": "{count} segments"
+ *   tp("flattening.segments", 1)  // "1 segment";  tp("flattening.segments", 12) // "12 segments"
+ *
+ * `{count}` shows `params.count` when given (a formatted number), else `count` as it is.
+ */
+export function tp(key, count, params) {
+  pluralRules ??= new Intl.PluralRules(activeCode);
+  const all = { count, ...params };
+  const exact = `${key}.${pluralRules.select(count)}`;
+  if (has(exact)) return t(exact, all);
+  return t(has(`${key}.other`) ? `${key}.other` : key, all);
+}
+
+/**
+ * `value` written in the active language (`Intl.NumberFormat`, e.g. "1.81", "1,81" in Greek);
+ * `options` as for `Intl.NumberFormat` (default: up to 3 decimals, no grouping, no "−0"). The formats are
+ * cached per options object, so pass a constant.
+ */
+export function formatNumber(value, options = NUMBER_OPTIONS) {
+  let format = numberFormats.get(options);
+  if (!format) {
+    format = new Intl.NumberFormat(activeCode, options);
+    numberFormats.set(options, format);
+  }
+  return format.format(value);
+}
+
+/** Default `formatNumber` options: coordinates and parameters (ui.md: 3 decimals). */
+const NUMBER_OPTIONS = Object.freeze({ maximumFractionDigits: 3, useGrouping: false, signDisplay: "negative" });
+
 /** True when a key exists (used for optional demo texts such as a third "Try this"). */
 export function has(key) {
   return key in active || key in EN;
-}
-
-/** Plural rules per locale, made once. */
-const pluralRules = new Map();
-
-/**
- * The plural form of `key` for `count` (`Intl.PluralRules` of the current locale): the key
- * `<key>.<category>` ("one", "few", "other" …), else `<key>.other`; `{count}` is filled in with
- * the other `params`. `tp("flattening.segments", 7)` → "7 segments".
- */
-export function tp(key, count, params = {}) {
-  let rules = pluralRules.get(locale);
-  if (!rules) {
-    rules = new Intl.PluralRules(locale);
-    pluralRules.set(locale, rules);
-  }
-  const exact = `${key}.${rules.select(count)}`;
-  return t(has(exact) ? exact : `${key}.other`, { count, ...params });
 }

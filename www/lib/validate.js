@@ -8,7 +8,7 @@ import { t } from "./strings.js";
 
 /** Shows a value in an error message without flooding it. */
 function show(value) {
-  const text = typeof value === "string" ? `“${value}”` : typeof value === "number" ? String(value) : JSON.stringify(value);
+  const text = typeof value === "string" ? t("format.quoted", { value }) : typeof value === "number" ? String(value) : JSON.stringify(value);
   return text === undefined ? String(value) : text.length > 40 ? `${text.slice(0, 37)}…` : text;
 }
 
