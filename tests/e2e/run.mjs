@@ -421,7 +421,9 @@ try {
         for (const field of ["id", "section", "strings"]) {
           if (demo[field] !== entry[field]) found.push(`${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`);
         }
-        for (const name of ["defaultState", "validate", "mount"]) if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
+        // The declarative contract (lib/demo.js): state, fields, model and drawing.
+        const exports = "mount" in demo ? ["defaultState", "validate", "mount"] : ["defaultState", "fields", "derive", "draw"];
+        for (const name of exports) if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
       }
       const refused = await loadDemo("no-such-demo").then(() => "loaded", (err) => err.message);
       if (!refused.includes("no-such-demo")) found.push(`an unknown id: ${refused}`);
