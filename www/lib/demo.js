@@ -11,7 +11,7 @@
  * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`; `extra: [{ field, label }]` adds one handle per field holding a single `[x, y]` point (label: a strings.js key), after the list's |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -128,6 +128,23 @@ export function mountDeclared(demo, initialState, ctx) {
     freeModel(old);
   }
 
+  /** The handles of the point list, then one per `extra` field (a single point moved as a whole). */
+  function withExtraPoints(list, listed, extra) {
+    const point = (i) => work[extra[i - listed()].field];
+    return {
+      count: () => listed() + extra.length,
+      get: (i, out) => (i < listed() ? list.get(i, out) : out.set(point(i))),
+      label: (i) => (i < listed() ? list.label(i) : t(extra[i - listed()].label)),
+      move(i, x, y) {
+        if (i < listed()) return list.move(i, x, y);
+        const name = extra[i - listed()].field;
+        work[name][0] = x;
+        work[name][1] = y;
+        markChanged(name);
+      },
+    };
+  }
+
   const touches = (deps) => changed === null || deps.some((field) => changed.has(field));
 
   /** Brings the model, the cells, the controls and the panels up to date (once per frame). */
@@ -162,12 +179,15 @@ export function mountDeclared(demo, initialState, ctx) {
           view.requestDraw();
         }
       : () => markChanged(handleSpec.field);
+    const list = pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null);
+    const extra = handleSpec.extra ?? [];
+    const listed = () => work[handleSpec.field].length;
     ui.handles = new Handles(view, {
-      ...pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null),
+      ...(extra.length ? withExtraPoints(list, listed, extra) : list),
       constraint: handleSpec.constraint,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
-      remove: (i) => ui.pointList?.remove(i),
+      remove: (i) => i < listed() && ui.pointList?.remove(i),
     });
     data.handles = ui.handles;
   }
