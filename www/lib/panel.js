@@ -166,21 +166,42 @@ export function pointButtons(field, { min, max, prefix }) {
 }
 
 /**
- * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
- * `kind` "note" (default) or "readout" (the larger figure of merit); `live` makes it a polite
- * live region; `dataset(state, data)` → `{ key: text }` sets data attributes beside the text
- * (a number for tests and scripts).
+ * A line of text computed from the state and data (`text(state, data)`), `data-info=name` (none
+ * when `name` is null); `kind` "note" (default) or "readout" (the larger figure of merit); `live`
+ * makes it a polite live region; `dataset(state, data)` → `{ key: text }` sets data attributes
+ * beside the text (numbers for tests and scripts), removing those it no longer returns.
  */
 export function readout(name, text, { kind = "note", live = false, dataset = null } = {}) {
   return {
     build(ui) {
       const className = kind === "readout" ? "sl-readout" : "sl-note";
-      const node = el("p", { class: className, dataset: { info: name }, "aria-live": live ? "polite" : null });
+      const node = el("p", { class: className, dataset: name ? { info: name } : null, "aria-live": live ? "polite" : null });
+      let keys = [];
       return {
         element: node,
         sync(state, data) {
           setText(node, text(state, data, ui));
-          if (dataset) Object.assign(node.dataset, dataset(state, data));
+          if (!dataset) return;
+          const values = dataset(state, data);
+          for (const key of keys) if (!(key in values)) delete node.dataset[key];
+          Object.assign(node.dataset, values);
+          keys = Object.keys(values);
+        },
+      };
+    },
+  };
+}
+
+/** A control shown only while `when(state)` holds (e.g. the settings of the chosen option). */
+export function shownWhen(when, item) {
+  return {
+    build(ui) {
+      const part = item.build(ui);
+      return {
+        ...part,
+        sync(state, data) {
+          part.element.hidden = !when(state);
+          part.sync?.(state, data);
         },
       };
     },
