@@ -8,7 +8,7 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `inPlace: { field: (model, state) => void }` likewise for a field not in `from` (a weight slider: `setWeight`) |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
  * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`; `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the list's on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
@@ -117,6 +117,7 @@ export function mountDeclared(demo, initialState, ctx) {
   function markChanged(field) {
     if (changed) changed.add(field);
     if (derive.from.includes(field)) modelStale = true;
+    else derive.inPlace?.[field]?.(model, work);
     view.requestDraw();
   }
 
