@@ -336,7 +336,7 @@ export const controls = [
     readout("property", (s, d) => PROPERTY[s.property].readout(s, d), {
       kind: "readout",
       live: true,
-      dataset: (s, d) => PROPERTY[s.property].data(s, d),
+      data: (s, d) => PROPERTY[s.property].data(s, d),
     }),
     readout(null, (s) => t(`bezierProperties.note.${s.property}`)),
   ),

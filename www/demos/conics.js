@@ -204,19 +204,19 @@ export const controls = [
     readout("kind", (s, d) => kindLabel(d.conic, "conics.readoutCircle"), {
       kind: "readout",
       live: true,
-      dataset: (s, d) => ({ kind: d.conic.kind, circle: String(d.conic.circular) }),
+      data: (s, d) => ({ kind: d.conic.kind, circle: String(d.conic.circular) }),
     }),
     readout("shape", (s, d) => shapeText(s.w1, d.conic.kind), {
-      dataset: (s) => ({ factor: String(s.w1 * s.w1) }),
+      data: (s) => ({ factor: String(s.w1 * s.w1) }),
     }),
   ),
   group(
     "conics.circleLegend",
     readout("triangle", (s, d) => triangleText(d.conic.triangle), {
-      dataset: (s, d) => ({ sin: String(d.conic.triangle.sin) }),
+      data: (s, d) => ({ sin: String(d.conic.triangle.sin) }),
     }),
     readout("circle", (s, d) => circleText(d.conic), {
-      dataset: (s, d) => ({
+      data: (s, d) => ({
         radiusError: Number.isNaN(d.conic.radiusError) ? "" : String(d.conic.radiusError),
         circle: String(d.conic.circular),
       }),

@@ -150,7 +150,7 @@ export const controls = [
     readout("curvature", (s, d) => t("derivatives.readout", { kappa: d.at.kappaText }), {
       kind: "readout",
       live: true,
-      dataset: (s, d) => ({ kappa: d.at.kappaText }),
+      data: (s, d) => ({ kappa: d.at.kappaText }),
     }),
     readout("radius", (s, d) => radiusNote(d.at)),
     readout("arc-length", (s, d) => t("derivatives.length", { length: fmt(d.whole.arcLength) })),
