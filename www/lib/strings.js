@@ -845,6 +845,12 @@ const EN = {
   "nurbsCircle.tableCaption": "The {count} control points and their weights",
   "nurbsCircle.column.point": "Pᵢ",
   "nurbsCircle.column.weight": "wᵢ",
+  "nurbsCircle.formula.circle": "circle",
+  "nurbsCircle.formula.here": "here",
+  "nurbsCircle.formula.pieces.one": "piece of",
+  "nurbsCircle.formula.pieces.other": "pieces of",
+  "nurbsCircle.formula.middleWeights": "middle weights",
+  "nurbsCircle.formula.samples": "samples",
 
   // Demo: projective (strings of www/demos/projective.js; keys start with the demo's `strings` prefix)
   "projective.title": "Projective invariance",
