@@ -1,41 +1,29 @@
 /**
  * Demo (syllabus §4): conic sections as rational quadratic Bézier curves. Three draggable
- * points and the middle weight w₁ (w₀ = w₂ = 1): the core names the conic (`conicKind`), an
- * ellipse arc below w₁ = 1, a parabola at 1, a hyperbola above. With an isosceles control
- * triangle and w₁ = sin θ (θ half the angle at P₁) the arc is circular: the demo then draws the
- * whole circle (`circle` from the core) and measures every sample's distance from its centre.
- * "Make circular" asks the core for that weight (`circularArcBezier`).
- *
- * As in the reference demo: the curve is updated in place (`setControlPoint`, `setWeight`),
- * one `sampleUniform` per change, nothing allocated in the draw path, replaced objects freed.
- * The triangle's angle and the circle's centre are read off the three points (display and
- * measurement, not a curve algorithm).
+ * points and the middle weight w₁ (w₀ = w₂ = 1): the core names the conic (`conicKind`) by the
+ * shape factor k = w₁² / (w₀w₂): an ellipse arc below 1, a parabola at 1, a hyperbola above.
+ * With an isosceles control triangle and w₁ = sin θ (θ half the angle at P₁) the arc is
+ * circular: the demo then draws the whole circle (`circle` from the core) and measures every
+ * sample's distance from its centre. "Make circular" asks the core for that weight
+ * (`circularArcBezier`). The triangle's angle and the circle's centre are read off the three
+ * points (display and measurement, not a curve algorithm).
  */
-import { Handles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
+import { field } from "../lib/validate.js";
+import { slider, readout, actions, group } from "../lib/panel.js";
 import { fmt } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
+import { drawLegend } from "../lib/legend.js";
 import { scaledInsets } from "../lib/view.js";
+import { el } from "../lib/controls.js";
+import { titledTable } from "../lib/table.js";
 
 export const id = "conics";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "conics";
-export const title = t("conics.title");
-export const summary = t("conics.summary");
 /** Syllabus section. */
 export const section = 4;
-
-/**
- * An isosceles triangle (|P₀P₁| = |P₁P₂| = √13) with w₁ = 1/2: an ellipse arc, a little flatter
- * than the circle it becomes at w₁ = sin θ = 2/√13 ≈ 0.555.
- */
-export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 3], [4, 0]].map(Object.freeze)),
-  w1: 0.5,
-});
 
 /** Range of w₁ (a logarithmic slider). */
 export const W1_MIN = 0.05;
@@ -44,7 +32,7 @@ export const W1_MAX = 5;
 const W1_LOG_STEP = 0.002;
 /** Points sampled along the curve (one `sampleUniform` per change). */
 const CURVE_SAMPLES = 256;
-/** Points sampled along the reference circle, and for the radius measurement. */
+/** Points sampled along the reference circle. */
 const CIRCLE_SAMPLES = 181;
 /** Relative tolerance for |P₀P₁| = |P₁P₂| and for w₁ = sin θ (a circle is exact or it is not). */
 const CIRCLE_TOLERANCE = 1e-9;
@@ -56,23 +44,45 @@ const DEGREES = 180 / Math.PI;
 const SMALL = 1e-3;
 /** Height of the band at the top kept for the conic's name and the key, CSS px at text scale 1. */
 const LEGEND_PX = 52;
-
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "w1"]);
-  checkPoints(state, "points", { min: 3, max: 3 });
-  checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
-}
-
-/** A small number to print precision: "0", "3.3e-16" or 3 decimals. */
-function smallText(x) {
-  return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
-}
+/** The key under the conic's name: the parabola drawn for comparison. */
+const KEY = Object.freeze([Object.freeze({ style: (theme) => theme.compareCurve[2], label: "conics.legendParabola" })]);
+const KINDS = Object.freeze(["ellipse", "parabola", "hyperbola"]);
 
 /**
- * The control triangle's measures: legs |P₁P₀|, |P₁P₂|, half the angle at P₁, and when the legs
- * are equal the circle tangent to both legs at P₀ and P₂ (centre on the bisector at |P₁P₀|/cos θ
- * from P₁, radius |P₁P₀|·tan θ).
+ * An isosceles triangle (|P₀P₁| = |P₁P₂| = √13) with w₁ = 1/2: an ellipse arc, a little flatter
+ * than the circle it becomes at w₁ = sin θ = 2/√13 ≈ 0.555.
+ */
+export const defaultState = Object.freeze({
+  points: Object.freeze([[0, 0], [2, 3], [4, 0]].map(Object.freeze)),
+  w1: 0.5,
+});
+
+export const fields = {
+  points: field.points({ min: 3, max: 3 }),
+  w1: field.number({ min: W1_MIN, max: W1_MAX }),
+};
+
+/** The weights (1, w₁, 1). */
+const weightsOf = (w1) => new Float64Array([1, w1, 1]);
+
+/** The conic and, for comparison, the parabola (w₁ = 1) of the same points; w₁ is set in place. */
+export const derive = {
+  from: ["points"],
+  build: (s, sl) => ({
+    curve: new sl.BezierCurve(flatten(s.points), 2, weightsOf(s.w1)),
+    parabola: new sl.BezierCurve(flatten(s.points), 2),
+  }),
+  moved(m, i, xy) {
+    m.curve.setControlPoint(i, xy);
+    m.parabola.setControlPoint(i, xy);
+  },
+  inPlace: { w1: (m, s) => m.curve.setWeight(1, s.w1) },
+};
+
+/**
+ * The control triangle's measures: legs |P₁P₀|, |P₁P₂|, half the angle θ at P₁, and when the
+ * legs are equal the circle tangent to both legs at P₀ and P₂ (centre on the bisector at
+ * |P₁P₀|/cos θ from P₁, radius |P₁P₀|·tan θ).
  */
 function triangleOf(points) {
   const [[x0, y0], [x1, y1], [x2, y2]] = points;
@@ -97,304 +107,245 @@ function triangleOf(points) {
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * The conic's kind from the core, the triangle, whether the arc is circular, and for an
+ * isosceles triangle the largest | |P(t) − O| − R | over the samples; the whole circle's
+ * samples (from the core's `circle`) when it is circular.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  let work = structuredClone(initialState);
-  let curve = new sl.BezierCurve(flatten(work.points), 2, weightsOf(work.w1));
-  let parabola = new sl.BezierCurve(flatten(work.points), 2); // w₁ = 1, for comparison
-  let circle = null; // sl.circle(centre, radius) when the arc is circular
-
-  // Derived data, recomputed when the points or w₁ changed.
-  let samples = null;
-  let parabolaSamples = null;
+function conicOf(s, d) {
+  const samples = d.samples;
+  const triangle = triangleOf(s.points);
+  const circular = !!triangle.centre && Math.abs(s.w1 - triangle.sin) <= CIRCLE_TOLERANCE;
+  let radiusError = NaN;
   let circleSamples = null;
-  let shoulder = null; // P(1/2)
-  let kind = "";
-  let triangle = null;
-  let circular = false;
-  let radiusError = NaN; // max | |P(t) − O| − R | over the samples, when isosceles
-  let dirty = true;
-  const pointScratch = new Float64Array(2);
-  const handleLabels = ["P₀", "P₁", "P₂"];
-  let kindLabel = "";
-
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(LEGEND_PX, 0, 0, 0) });
-  const handles = new Handles(view, {
-    count: () => 3,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
-    },
-    label: (i) => handleLabels[i],
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
-      parabola.setControlPoint(i, pointScratch);
-      dirty = true;
-    },
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-  });
-
-  // ------------------------------------------------------------ side panel
-  const wSlider = slider({
-    label: t("conics.w1"),
-    inputLabel: t("conics.w1.input"),
-    name: "w1",
-    min: W1_MIN,
-    max: W1_MAX,
-    step: W1_LOG_STEP,
-    log: true,
-    value: work.w1,
-    onChange: (value, final) => setW1(value, final),
-    badNumber: (text) => t("conics.badWeight", { value: text, min: W1_MIN, max: W1_MAX }),
-    onError: (message) => ctx.status(message, "error"),
-  });
-  const kindText = el("p", { class: "sl-readout", dataset: { info: "kind" }, "aria-live": "polite" });
-  const shapeText = el("p", { class: "sl-note", dataset: { info: "shape" } });
-  const triangleText = el("p", { class: "sl-note", dataset: { info: "triangle" } });
-  const circleText = el("p", { class: "sl-note", dataset: { info: "circle" } });
-  const circleButton = button({ label: t("conics.makeCircular"), title: t("conics.makeCircular.title"), name: "make-circular", onClick: () => makeCircular() });
-  ctx.slots.controls.append(
-    group(null, wSlider.element, kindText, shapeText),
-    group(t("conics.circleLegend"), triangleText, circleText, el("div", { class: "sl-button-row" }, circleButton)),
-  );
-
-  // ------------------------------------------------------------ formula and table of cases
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-conics-${Math.random().toString(36).slice(2, 8)}`, text: t("conics.tableCaption") });
-  const caseCells = {};
-  const caseRows = ["ellipse", "parabola", "hyperbola"].map((name) => {
-    caseCells[name] = el("td", { dataset: { kind: name }, text: t(`conics.kind.${name}`) });
-    return el("tr", {}, caseCells[name], el("td", { text: t(`conics.rule.${name}`) }));
-  });
-  const table = el("table", { class: "sl-table", dataset: { table: "conics" }, "aria-labelledby": tableTitle.id },
-    el("thead", {}, el("tr", {}, el("th", { scope: "col", text: t("conics.column.kind") }), el("th", { scope: "col", text: t("conics.column.rule") }))),
-    el("tbody", {}, caseRows));
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
-
-  // ------------------------------------------------------------ edits
-
-  function setW1(value, final) {
-    work.w1 = value;
-    curve.setWeight(1, value);
-    wSlider.set(value);
-    dirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
+  if (triangle.centre) {
+    const [cx, cy] = triangle.centre;
+    radiusError = 0;
+    for (let k = 0; k < CURVE_SAMPLES; k++) {
+      const distance = Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy);
+      radiusError = Math.max(radiusError, Math.abs(distance - triangle.radius));
+    }
+    if (circular) {
+      const circle = d.sl.circle(cx, cy, triangle.radius);
+      circleSamples = circle.sampleUniform(CIRCLE_SAMPLES);
+      circle.free();
+    }
   }
+  const kind = d.sl.conicKind(1, s.w1, 1);
+  return { kind, shoulder: d.curve.evaluate(0.5), triangle, circular, radiusError, circleSamples };
+}
 
-  /**
-   * Makes the arc circular: P₂ slides along the ray P₁P₂ until |P₁P₂| = |P₁P₀| (the triangle
-   * becomes isosceles), then the core's `circularArcBezier` gives w₁ = sin θ.
-   */
-  function makeCircular() {
-    const [p0, p1, p2] = work.points;
-    const a = Math.hypot(p0[0] - p1[0], p0[1] - p1[1]);
-    const b = Math.hypot(p2[0] - p1[0], p2[1] - p1[1]);
-    const q = b > 0 && a !== b ? [p1[0] + ((p2[0] - p1[0]) * a) / b, p1[1] + ((p2[1] - p1[1]) * a) / b] : [p2[0], p2[1]];
-    let w;
-    try {
-      const arc = sl.circularArcBezier(flatten([p0, p1, q]));
-      w = arc.weights()[1];
-      arc.free();
-    } catch (err) {
-      ctx.status(t("conics.notCircular", { message: err.message }), "error");
-      return;
-    }
-    if (w < W1_MIN) {
-      ctx.status(t("conics.tooFlat", { w: fmt(w), min: W1_MIN }), "error");
-      return;
-    }
-    work.points[2] = q;
-    pointScratch[0] = q[0];
-    pointScratch[1] = q[1];
-    curve.setControlPoint(2, pointScratch);
-    parabola.setControlPoint(2, pointScratch);
-    setW1(w, true);
-    ctx.status(t("conics.madeCircular", { w: fmt(w) }), "info");
+export const compute = {
+  samples: [["points", "w1"], (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
+  parabolaSamples: [["points"], (s, d) => d.parabola.sampleUniform(CURVE_SAMPLES)],
+  conic: [["points", "w1"], conicOf],
+};
+
+/** A small number to print precision: "0", "3.3e-16" or 3 decimals. */
+function smallText(x) {
+  return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
+}
+const relationOf = (kind) => (kind === "ellipse" ? "<" : kind === "parabola" ? "=" : ">");
+
+/** "w₁ = 0.500; shape factor k = w₁²/(w₀w₂) = 0.250 < 1". */
+const shapeText = (w1, kind) => t("conics.shape", { w: fmt(w1), k: fmt(w1 * w1), relation: relationOf(kind) });
+
+/**
+ * Makes the arc circular: P₂ slides along the ray P₁P₂ until |P₁P₂| = |P₁P₀| (the triangle
+ * becomes isosceles), then the core's `circularArcBezier` gives w₁ = sin θ.
+ */
+function makeCircular(ui) {
+  const [p0, p1, p2] = ui.state.points;
+  const a = Math.hypot(p0[0] - p1[0], p0[1] - p1[1]);
+  const b = Math.hypot(p2[0] - p1[0], p2[1] - p1[1]);
+  const q = b > 0 && a !== b ? [p1[0] + ((p2[0] - p1[0]) * a) / b, p1[1] + ((p2[1] - p1[1]) * a) / b] : [p2[0], p2[1]];
+  let w;
+  try {
+    const arc = ui.sl.circularArcBezier(flatten([p0, p1, q]));
+    w = arc.weights()[1];
+    arc.free();
+  } catch (err) {
+    ui.status(t("conics.notCircular", { message: err.message }), "error");
+    return;
   }
-
-  // ------------------------------------------------------------ drawing
-  function recompute() {
-    if (!dirty) return;
-    dirty = false;
-    samples = curve.sampleUniform(CURVE_SAMPLES);
-    parabolaSamples = parabola.sampleUniform(CURVE_SAMPLES);
-    shoulder = curve.evaluate(0.5);
-    kind = sl.conicKind(1, work.w1, 1);
-    triangle = triangleOf(work.points);
-    circular = !!triangle.centre && Math.abs(work.w1 - triangle.sin) <= CIRCLE_TOLERANCE;
-    // Measurement against the circle tangent to both legs (only an isosceles triangle has one).
-    radiusError = NaN;
-    circle?.free();
-    circle = null;
-    circleSamples = null;
-    if (triangle.centre) {
-      const [cx, cy] = triangle.centre;
-      radiusError = 0;
-      for (let k = 0; k < CURVE_SAMPLES; k++) {
-        radiusError = Math.max(radiusError, Math.abs(Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy) - triangle.radius));
-      }
-      if (circular) {
-        circle = sl.circle(cx, cy, triangle.radius);
-        circleSamples = circle.sampleUniform(CIRCLE_SAMPLES);
-      }
-    }
-    kindLabel = circular ? t("conics.figureCircle", { kind: t(`conics.kind.${kind}`) }) : t(`conics.kind.${kind}`);
-    syncPanels();
+  if (w < W1_MIN) {
+    ui.status(t("conics.tooFlat", { w: fmt(w), min: W1_MIN }), "error");
+    return;
   }
+  ui.replace({ ...ui.state, points: [p0, p1, q], w1: w });
+  ui.status(t("conics.madeCircular", { w: fmt(w) }), "info");
+}
 
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
+/** "|P₀P₁| = 3.606, |P₁P₂| = 3.606 (isosceles); angle at P₁ = 67.38°, sin θ = 0.555". */
+function triangleText(tri) {
+  if (!Number.isFinite(tri.theta)) return t("conics.triangleDegenerate");
+  const angle = fmt(2 * tri.theta * DEGREES, 2);
+  const key = tri.isosceles ? "conics.triangleIsosceles" : "conics.triangle";
+  return t(key, { a: fmt(tri.a), b: fmt(tri.b), angle, sin: fmt(tri.sin) });
+}
 
-    // The whole circle (dashed) and its centre, when the arc is circular.
-    if (circleSamples) {
-      strokeSamples(r, v, circleSamples, CIRCLE_SAMPLES, theme.helper);
-      const ox = v.sx(triangle.centre[0]);
-      const oy = v.sy(triangle.centre[1]);
-      r.point(ox, oy, theme.comparePoint[0]);
-      r.text(t("conics.centre"), ox + 8 * r.scale, oy, theme.labelSmall, "left", "middle");
-    }
+/** Whether the arc is circular, with the measured error, or what it lacks. */
+function circleText({ circular, triangle: tri, radiusError }) {
+  if (circular) return t("conics.circleYes", { error: smallText(radiusError), r: fmt(tri.radius) });
+  if (tri.centre) return t("conics.circleNo", { sin: fmt(tri.sin), error: smallText(radiusError) });
+  return t("conics.circleNeedsIsosceles");
+}
 
-    // Control triangle, the chord P₀P₂ and the line from its midpoint M to P₁ (the shoulder lies on it).
-    r.beginPath();
-    r.moveTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
-    r.lineTo(v.sx(pts[1][0]), v.sy(pts[1][1]));
-    r.lineTo(v.sx(pts[2][0]), v.sy(pts[2][1]));
-    r.paint(theme.polygon);
-    const mx = v.sx((pts[0][0] + pts[2][0]) / 2);
-    const my = v.sy((pts[0][1] + pts[2][1]) / 2);
-    r.beginPath();
-    r.moveTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
-    r.lineTo(v.sx(pts[2][0]), v.sy(pts[2][1]));
-    r.moveTo(mx, my);
-    r.lineTo(v.sx(pts[1][0]), v.sy(pts[1][1]));
+export const controls = [
+  group(
+    null,
+    slider("w1", {
+      label: "conics.w1",
+      min: W1_MIN,
+      max: W1_MAX,
+      step: W1_LOG_STEP,
+      log: true,
+      error: "conics.badWeight",
+    }),
+    readout("kind", (s, d) => kindLabel(d.conic, "conics.readoutCircle"), {
+      kind: "readout",
+      live: true,
+      data: (s, d) => ({ kind: d.conic.kind, circle: String(d.conic.circular) }),
+    }),
+    readout("shape", (s, d) => shapeText(s.w1, d.conic.kind), {
+      data: (s) => ({ factor: String(s.w1 * s.w1) }),
+    }),
+  ),
+  group(
+    "conics.circleLegend",
+    readout("triangle", (s, d) => triangleText(d.conic.triangle), {
+      data: (s, d) => ({ sin: String(d.conic.triangle.sin) }),
+    }),
+    readout("circle", (s, d) => circleText(d.conic), {
+      data: (s, d) => ({
+        radiusError: Number.isNaN(d.conic.radiusError) ? "" : String(d.conic.radiusError),
+        circle: String(d.conic.circular),
+      }),
+    }),
+    actions([
+      { name: "make-circular", label: "conics.makeCircular", title: "conics.makeCircular.title", run: makeCircular },
+    ]),
+  ),
+];
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  insets: scaledInsets(LEGEND_PX, 0, 0, 0),
+  handles: { field: "points" },
+};
+
+/** The conic's name, with "circle!" (`circleKey`) when the arc is circular. */
+function kindLabel(conic, circleKey) {
+  const name = t(`conics.kind.${conic.kind}`);
+  return conic.circular ? t(circleKey, { kind: name }) : name;
+}
+
+/**
+ * The whole circle (when circular), the control triangle with the chord P₀P₂ and the line from
+ * its midpoint M to P₁ (the shoulder P(1/2) lies on it), the parabola, the conic, the shoulder;
+ * the conic's name and the key in the band at the top.
+ */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const pts = s.points;
+  const { triangle, circleSamples, shoulder } = d.conic;
+  if (circleSamples) {
+    flatPath(r, v, circleSamples, 0, CIRCLE_SAMPLES);
     r.paint(theme.helper);
-    r.point(mx, my, theme.comparePoint[2]);
-    r.text(t("conics.midpoint"), mx, my + 8 * r.scale, theme.labelSmall, "center", "top");
-
-    // The parabola (w₁ = 1) for comparison, then the conic.
-    strokeSamples(r, v, parabolaSamples, CURVE_SAMPLES, theme.compareCurve[2]);
-    strokeSamples(r, v, samples, CURVE_SAMPLES, theme.curve);
-
-    handles.draw(r, v);
-    const sx = v.sx(shoulder[0]);
-    const sy = v.sy(shoulder[1]);
-    r.point(sx, sy, theme.pointOnCurve);
-    r.text(t("conics.shoulder"), sx + 9 * r.scale, sy, theme.labelPoint, "left", "bottom");
-
-    // The kind, large, top left; the legend under it.
-    const s = r.scale;
-    r.text(kindLabel, 12 * s, 18 * s, theme.labelBold, "left", "middle");
-    r.beginPath();
-    r.moveTo(12 * s, 42 * s);
-    r.lineTo(38 * s, 42 * s);
-    r.paint(theme.compareCurve[2]);
-    r.text(t("conics.legendParabola"), 44 * s, 42 * s, theme.labelSmall, "left", "middle");
+    const ox = v.sx(triangle.centre[0]);
+    const oy = v.sy(triangle.centre[1]);
+    r.point(ox, oy, theme.comparePoint[0]);
+    r.text(t("conics.centre"), ox + 8 * r.scale, oy, theme.labelSmall, "left", "middle");
   }
 
-  function strokeSamples(r, v, flat, count, style) {
-    r.beginPath();
-    for (let k = 0; k < count; k++) {
-      const x = v.sx(flat[2 * k]);
-      const y = v.sy(flat[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-    r.paint(style);
-  }
+  pointsPath(r, v, pts);
+  r.paint(theme.polygon);
+  const mx = v.sx((pts[0][0] + pts[2][0]) / 2);
+  const my = v.sy((pts[0][1] + pts[2][1]) / 2);
+  r.beginPath();
+  r.moveTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
+  r.lineTo(v.sx(pts[2][0]), v.sy(pts[2][1]));
+  r.moveTo(mx, my);
+  r.lineTo(v.sx(pts[1][0]), v.sy(pts[1][1]));
+  r.paint(theme.helper);
+  r.point(mx, my, theme.comparePoint[2]);
+  r.text(t("conics.midpoint"), mx, my + 8 * r.scale, theme.labelSmall, "center", "top");
 
-  // ------------------------------------------------------------ panels
-  function syncPanels() {
-    const w1 = work.w1;
-    const factor = w1 * w1; // w₁² / (w₀ w₂) with w₀ = w₂ = 1
-    const kindName = t(`conics.kind.${kind}`);
-    kindText.textContent = circular ? t("conics.readoutCircle", { kind: kindName }) : kindName;
-    kindText.dataset.kind = kind;
-    kindText.dataset.circle = String(circular);
-    const relation = kind === "ellipse" ? "<" : kind === "parabola" ? "=" : ">";
-    shapeText.textContent = t("conics.shape", { w: fmt(w1), k: fmt(factor), relation });
-    shapeText.dataset.factor = String(factor);
-    for (const name of Object.keys(caseCells)) caseCells[name].classList.toggle("sl-highlight", name === kind);
+  flatPath(r, v, d.parabolaSamples, 0, CURVE_SAMPLES);
+  r.paint(theme.compareCurve[2]);
+  flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
+  r.paint(theme.curve);
 
-    const tri = triangle;
-    const angle = Number.isFinite(tri.theta) ? fmt(2 * tri.theta * DEGREES, 2) : "—";
-    triangleText.textContent = Number.isFinite(tri.theta)
-      ? t(tri.isosceles ? "conics.triangleIsosceles" : "conics.triangle", { a: fmt(tri.a), b: fmt(tri.b), angle, sin: fmt(tri.sin) })
-      : t("conics.triangleDegenerate");
-    triangleText.dataset.sin = String(tri.sin);
-    if (circular) circleText.textContent = t("conics.circleYes", { error: smallText(radiusError), r: fmt(tri.radius) });
-    else if (tri.centre) circleText.textContent = t("conics.circleNo", { sin: fmt(tri.sin), error: smallText(radiusError) });
-    else circleText.textContent = t("conics.circleNeedsIsosceles");
-    circleText.dataset.radiusError = Number.isNaN(radiusError) ? "" : String(radiusError);
-    circleText.dataset.circle = String(circular);
+  d.handles.draw(r, v);
+  const sx = v.sx(shoulder[0]);
+  const sy = v.sy(shoulder[1]);
+  r.point(sx, sy, theme.pointOnCurve);
+  r.text(t("conics.shoulder"), sx + 9 * r.scale, sy, theme.labelPoint, "left", "bottom");
 
-    const [p0, p1, p2] = work.points;
-    view.setLabel(t("conics.aria", {
-      kind: t(`conics.article.${kind}`),
-      p0: `(${fmt(p0[0], 2)}, ${fmt(p0[1], 2)})`,
-      p1: `(${fmt(p1[0], 2)}, ${fmt(p1[1], 2)})`,
-      p2: `(${fmt(p2[0], 2)}, ${fmt(p2[1], 2)})`,
-      w: fmt(w1),
-      k: fmt(factor),
-      circle: circular ? t("conics.ariaCircle", { r: fmt(tri.radius, 2), x: fmt(tri.centre[0], 2), y: fmt(tri.centre[1], 2) }) : "",
-      sx: fmt(shoulder[0], 2),
-      sy: fmt(shoulder[1], 2),
-    }));
+  r.text(kindLabel(d.conic, "conics.figureCircle"), 12 * r.scale, 18 * r.scale, theme.labelBold, "left", "middle");
+  drawLegend(r, KEY, 12, 42);
+}
 
-    const kindTex = `\\text{${kindName}}`;
-    const circleLine = `\\text{circular arc} \\iff |P_0P_1| = |P_1P_2| \\text{ and } w_1 = \\sin\\theta,\\quad \\theta = \\tfrac12\\angle P_0P_1P_2`;
-    const circleNumbers = Number.isFinite(tri.theta)
-      ? `|P_0P_1| = ${fmt(tri.a)},\\ |P_1P_2| = ${fmt(tri.b)},\\ \\theta = ${fmt(tri.theta * DEGREES, 2)}^\\circ,\\ \\sin\\theta = ${fmt(tri.sin)}\\quad ${circular ? "\\Rightarrow\\ \\text{circle!}" : `(w_1 = ${fmt(w1)})`}`
-      : `|P_0P_1| = ${fmt(tri.a)},\\ |P_1P_2| = ${fmt(tri.b)}`;
-    formula.set([
-      `P(t) = \\frac{(1-t)^2\\,w_0P_0 + 2t(1-t)\\,w_1P_1 + t^2\\,w_2P_2}{(1-t)^2\\,w_0 + 2t(1-t)\\,w_1 + t^2\\,w_2},\\qquad w_0 = w_2 = 1,\\ w_1 = ${fmt(w1)}`,
-      `k = \\frac{w_1^2}{w_0\\,w_2} = ${fmt(factor)} ${relation} 1 \\;\\Rightarrow\\; ${kindTex}\\qquad (k < 1 \\text{ ellipse},\\ k = 1 \\text{ parabola},\\ k > 1 \\text{ hyperbola})`,
-      circleLine,
-      circleNumbers,
-      `P(\\tfrac12) = \\frac{M + w_1P_1}{1 + w_1} = (${fmt(shoulder[0])},\\ ${fmt(shoulder[1])}),\\quad M = \\tfrac12(P_0 + P_2)`,
-    ]);
-  }
+/** The rational quadratic, the shape factor and its verdict, the circle condition, the shoulder. */
+export function formula(s, d) {
+  const { kind, triangle: tri, circular, shoulder } = d.conic;
+  const w1 = fmt(s.w1);
+  const text = (key) => `\\text{${t(key)}}`;
+  const legs = `|P_0P_1| = ${fmt(tri.a)},\\ |P_1P_2| = ${fmt(tri.b)}`;
+  const circleNumbers = Number.isFinite(tri.theta)
+    ? `${legs},\\ \\theta = ${fmt(tri.theta * DEGREES, 2)}^\\circ,\\ \\sin\\theta = ${fmt(tri.sin)}\\quad ` +
+      (circular ? `\\Rightarrow\\ ${text("conics.formula.circle")}` : `(w_1 = ${w1})`)
+    : legs;
+  return [
+    `P(t) = \\frac{(1-t)^2\\,w_0P_0 + 2t(1-t)\\,w_1P_1 + t^2\\,w_2P_2}{(1-t)^2\\,w_0 + 2t(1-t)\\,w_1 + t^2\\,w_2},` +
+      `\\qquad w_0 = w_2 = 1,\\ w_1 = ${w1}`,
+    `k = \\frac{w_1^2}{w_0\\,w_2} = ${fmt(s.w1 * s.w1)} ${relationOf(kind)} 1 \\;\\Rightarrow\\; ` +
+      text(`conics.kind.${kind}`) +
+      `\\qquad (k < 1 \\text{ ${t("conics.kind.ellipse")}},\\ k = 1 \\text{ ${t("conics.kind.parabola")}},\\ ` +
+      `k > 1 \\text{ ${t("conics.kind.hyperbola")}})`,
+    `${text("conics.formula.circularArc")} \\iff |P_0P_1| = |P_1P_2| \\text{ ${t("conics.formula.and")} } ` +
+      `w_1 = \\sin\\theta,\\quad \\theta = \\tfrac12\\angle P_0P_1P_2`,
+    circleNumbers,
+    `P(\\tfrac12) = \\frac{M + w_1P_1}{1 + w_1} = (${fmt(shoulder[0])},\\ ${fmt(shoulder[1])}),\\quad ` +
+      `M = \\tfrac12(P_0 + P_2)`,
+  ];
+}
 
-  recompute();
+/** "Rational quadratic Bézier curve with P₀ = …, weights 1, 0.500, 1: an arc of an ellipse …". */
+export function label(s, d) {
+  const { kind, triangle: tri, circular, shoulder } = d.conic;
+  const point = (p) => `(${fmt(p[0], 2)}, ${fmt(p[1], 2)})`;
+  const [p0, p1, p2] = s.points;
+  return t("conics.aria", {
+    kind: t(`conics.article.${kind}`),
+    p0: point(p0),
+    p1: point(p1),
+    p2: point(p2),
+    w: fmt(s.w1),
+    k: fmt(s.w1 * s.w1),
+    circle: circular
+      ? t("conics.ariaCircle", { r: fmt(tri.radius, 2), x: fmt(tri.centre[0], 2), y: fmt(tri.centre[1], 2) })
+      : "",
+    sx: fmt(shoulder[0], 2),
+    sy: fmt(shoulder[1], 2),
+  });
+}
 
-  // ------------------------------------------------------------ contract
+/** The table of the three cases, the current one highlighted. */
+export function setup(ui) {
+  const cells = {};
+  const rows = KINDS.map((name) => {
+    cells[name] = el("td", { dataset: { kind: name }, text: t(`conics.kind.${name}`) });
+    return el("tr", {}, cells[name], el("td", { text: t(`conics.rule.${name}`) }));
+  });
+  const head = el("tr", {}, ["kind", "rule"].map((c) => el("th", { scope: "col", text: t(`conics.column.${c}`) })));
+  const { title, wrap } = titledTable("conics", {
+    caption: t("conics.tableCaption"),
+    children: [el("thead", {}, head), el("tbody", {}, rows)],
+  });
+  ui.ctx.slots.details.append(title, wrap);
   return {
-    update(state) {
-      const nextCurve = new sl.BezierCurve(flatten(state.points), 2, weightsOf(state.w1)); // throws first
-      const nextParabola = new sl.BezierCurve(flatten(state.points), 2);
-      curve.free();
-      parabola.free();
-      curve = nextCurve;
-      parabola = nextParabola;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      wSlider.set(work.w1);
-      dirty = true;
-      view.requestDraw();
-      recompute();
-    },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-      parabola.free();
-      circle?.free();
+    update(s, d) {
+      for (const name of KINDS) cells[name].classList.toggle("sl-highlight", name === d.conic.kind);
     },
   };
 }
-
-/** The weights (1, w₁, 1). */
-function weightsOf(w1) {
-  return new Float64Array([1, w1, 1]);
-}
-

@@ -1,40 +1,27 @@
 /**
- * Demo (syllabus §4): exact circles, arcs and ellipses as NURBS. The core builds them
- * (`circle`, `circularArc`, `ellipse`, `ellipseArc`): degree 2, the sweep cut into pieces of at
- * most 90°, middle weights cos(Δ/2). The figure shows the control polygon with every weight, the
- * pieces' joints on the curve, and the demo measures how round the result is: the largest
- * | |C(u) − c| − r | over 2000 samples, which reads 0 or a few 1e-16 (rounding).
+ * Demo (syllabus §4): exact circles, arcs and ellipses as NURBS,
+ * C(u) = Σ N_{i,2}(u) w_i P_i / Σ N_{i,2}(u) w_i. The core builds them (`circle`, `circularArc`,
+ * `ellipse`, `ellipseArc`): degree 2, the sweep cut into pieces of at most 90°, middle weights
+ * cos(Δ/2). The figure shows the control polygon with every weight, the pieces' joints on the
+ * curve, and the demo measures how round the result is: the largest | |C(u) − c| − r | over
+ * 2000 samples, which reads 0 or a few 1e-16 (rounding).
  *
  * Dragging the centre translates the control points in place (`setControlPoint`); the sliders
- * build a new curve from the core (the old one is freed). The measurement is the only number
- * the demo computes itself.
+ * build a new curve from the core. The measurement is the only number the demo computes itself.
  */
-import { Handles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
+import { checkNumber, field } from "../lib/validate.js";
+import { slider, checkbox, readout, actions, group, shownWhen } from "../lib/panel.js";
 import { fmt, subscript, simpleFraction, fractionText, fractionTex } from "../lib/format.js";
-import { t } from "../lib/strings.js";
+import { t, tp } from "../lib/strings.js";
+import { flatPath } from "../lib/draw.js";
+import { el, setText } from "../lib/controls.js";
+import { titledTable } from "../lib/table.js";
 
 export const id = "nurbs-circle";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "nurbsCircle";
-export const title = t("nurbsCircle.title");
-export const summary = t("nurbsCircle.summary");
 /** Syllabus section. */
 export const section = 4;
-
-/** The full circle of radius 2 about the origin: the 9-point NURBS of the syllabus. */
-export const defaultState = Object.freeze({
-  points: Object.freeze([Object.freeze([0, 0])]),
-  radius: 2,
-  start: 0,
-  sweep: 360,
-  ellipse: false,
-  rx: 3,
-  ry: 2,
-  rotation: 0,
-});
 
 /** Ranges of the sliders (lengths in model units, angles in degrees). */
 export const LENGTH_MIN = 0.1;
@@ -55,456 +42,395 @@ const SMALL = 1e-3;
 const LABEL_ROOM = 1.6;
 /** Radius of the rings that mark the pieces' joints on the curve, CSS px. */
 const JOINT_RING_PX = 8;
+/** Gap between a control point and its weight label, and the label's extra drop (CSS px). */
+const WEIGHT_LABEL_GAP_PX = 10;
+const WEIGHT_LABEL_DROP_PX = 7;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "radius", "start", "sweep", "ellipse", "rx", "ry", "rotation"]);
-  checkPoints(state, "points", { min: 1, max: 1 });
-  for (const field of ["radius", "rx", "ry"]) {
-    checkNumber(state, field);
-    if (state[field] <= 0) throw new Error(t("nurbsCircle.notPositive", { field, value: state[field] }));
-    checkNumber(state, field, { min: LENGTH_MIN, max: LENGTH_MAX });
-  }
-  checkNumber(state, "start", { min: -ANGLE_MAX, max: ANGLE_MAX });
-  checkNumber(state, "sweep", { min: -ANGLE_MAX, max: ANGLE_MAX });
-  if (state.sweep === 0) throw new Error(t("nurbsCircle.zeroSweep"));
-  checkBoolean(state, "ellipse");
-  checkNumber(state, "rotation", { min: -ANGLE_MAX, max: ANGLE_MAX });
+/** The full circle of radius 2 about the origin: the 9-point NURBS of the syllabus. */
+export const defaultState = Object.freeze({
+  points: Object.freeze([Object.freeze([0, 0])]),
+  radius: 2,
+  start: 0,
+  sweep: 360,
+  ellipse: false,
+  rx: 3,
+  ry: 2,
+  rotation: 0,
+});
+
+/** A length in [LENGTH_MIN, LENGTH_MAX], refused first when it is not > 0. */
+function length(state, name) {
+  checkNumber(state, name);
+  if (state[name] <= 0) throw new Error(t("nurbsCircle.notPositive", { field: name, value: state[name] }));
+  checkNumber(state, name, { min: LENGTH_MIN, max: LENGTH_MAX });
+}
+const angle = field.number({ min: -ANGLE_MAX, max: ANGLE_MAX });
+
+export const fields = {
+  points: field.points({ min: 1, max: 1 }),
+  radius: length,
+  rx: length,
+  ry: length,
+  start: angle,
+  sweep: angle,
+  ellipse: field.boolean(),
+  rotation: angle,
+};
+
+/** An arc needs a sweep. */
+export function check(s) {
+  if (s.sweep === 0) throw new Error(t("nurbsCircle.zeroSweep"));
 }
 
 /** True when the state asks for the whole closed curve starting at angle 0. */
-function isFull(state) {
-  return state.start === 0 && state.sweep === ANGLE_MAX;
+function isFull(s) {
+  return s.start === 0 && s.sweep === ANGLE_MAX;
 }
 
 /** The NURBS of a state, from the core's constructors (throws their message on bad input). */
-function buildCurve(sl, state) {
-  const [cx, cy] = state.points[0];
-  const start = state.start * RADIANS;
-  const sweep = state.sweep * RADIANS;
-  if (!state.ellipse) {
-    return isFull(state) ? sl.circle(cx, cy, state.radius) : sl.circularArc(cx, cy, state.radius, start, sweep);
-  }
-  const rotation = state.rotation * RADIANS;
-  if (isFull(state)) return sl.ellipse(cx, cy, state.rx, state.ry, rotation);
+function buildCurve(sl, s) {
+  const [cx, cy] = s.points[0];
+  const start = s.start * RADIANS;
+  const sweep = s.sweep * RADIANS;
+  if (!s.ellipse) return isFull(s) ? sl.circle(cx, cy, s.radius) : sl.circularArc(cx, cy, s.radius, start, sweep);
+  const rotation = s.rotation * RADIANS;
+  if (isFull(s)) return sl.ellipse(cx, cy, s.rx, s.ry, rotation);
   const c = Math.cos(rotation);
-  const s = Math.sin(rotation);
-  const axisX = new Float64Array([state.rx * c, state.rx * s]);
-  const axisY = new Float64Array([-state.ry * s, state.ry * c]);
+  const sin = Math.sin(rotation);
+  const axisX = new Float64Array([s.rx * c, s.rx * sin]);
+  const axisY = new Float64Array([-s.ry * sin, s.ry * c]);
   return sl.ellipseArc(new Float64Array([cx, cy]), axisX, axisY, start, sweep);
 }
 
-/** "1", "√2/2" or three decimals. */
-function weightText(w) {
+/** "1", "√2/2" or three decimals (`tex`: TeX). */
+function weightText(w, tex = false) {
   if (Math.abs(w - 1) <= EXACT_WEIGHT) return "1";
-  if (Math.abs(w - Math.SQRT1_2) <= EXACT_WEIGHT) return "√2/2";
+  if (Math.abs(w - Math.SQRT1_2) <= EXACT_WEIGHT) return tex ? "\\tfrac{\\sqrt2}{2}" : "√2/2";
   return fmt(w);
 }
 
-function weightTex(w) {
-  if (Math.abs(w - 1) <= EXACT_WEIGHT) return "1";
-  if (Math.abs(w - Math.SQRT1_2) <= EXACT_WEIGHT) return "\\tfrac{\\sqrt2}{2}";
-  return fmt(w);
-}
-
-/** A knot as a fraction when it is one (1/4), else three decimals. */
-function knotText(u) {
+/** A knot as a fraction when it is one (1/4), else three decimals (`tex`: TeX). */
+function knotText(u, tex = false) {
   const f = simpleFraction(u);
-  return f ? fractionText(f) : fmt(u);
+  if (!f) return fmt(u);
+  return tex ? fractionTex(f) : fractionText(f);
 }
 
-function knotTex(u) {
-  const f = simpleFraction(u);
-  return f ? fractionTex(f) : fmt(u);
-}
-
-/** A measured error to print precision: "0", "3.3e-16", or 3 decimals when large. */
-function errorText(x) {
-  return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
-}
-
-/**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
- */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  let work = structuredClone(initialState);
-  let curve = buildCurve(sl, work);
-
-  // Per curve (rebuilt with it): control points at build time and the centre they were built about.
-  let base = null;
-  const builtAt = new Float64Array(2);
-  let weights = null;
-  let knots = null;
-  let pieces = 0;
-  // Per change.
-  let samples = null;
-  let controls = null;
-  let joints = null; // the curve at its distinct knots (the pieces' ends)
-  let jointParams = null;
-  let error = 0;
-  let dirty = true;
-  const pointScratch = new Float64Array(2);
-  const weightLabels = []; // "w = √2/2" per control point
-  let centreLabel = "";
-  let radiusLabel = "";
-
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work) });
-  const handles = new Handles(view, {
-    count: () => 1,
-    get: (i, out) => {
-      out[0] = work.points[0][0];
-      out[1] = work.points[0][1];
-    },
-    label: () => centreLabel,
-    move: (i, x, y) => {
-      work.points[0][0] = x;
-      work.points[0][1] = y;
-      // A translation: every control point moves by the same vector, in place.
-      const dx = x - builtAt[0];
-      const dy = y - builtAt[1];
-      for (let k = 0; k < base.length / 2; k++) {
-        pointScratch[0] = base[2 * k] + dx;
-        pointScratch[1] = base[2 * k + 1] + dy;
-        curve.setControlPoint(k, pointScratch);
-      }
-      dirty = true;
-    },
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-  });
-
-  // ------------------------------------------------------------ side panel
-  const lengthSlider = (field) => slider({
-    label: t(`nurbsCircle.${field}`),
-    inputLabel: t(`nurbsCircle.${field}.input`),
-    name: field,
-    min: LENGTH_MIN,
-    max: LENGTH_MAX,
-    step: LENGTH_STEP,
-    value: work[field],
-    onChange: (value, final) => change(field, value, final),
-    badNumber: (text) => t("nurbsCircle.badLength", { field, value: text, min: LENGTH_MIN, max: LENGTH_MAX }),
-    onError: (message) => ctx.status(message, "error"),
-  });
-  const angleSlider = (field) => slider({
-    label: t(`nurbsCircle.${field}`),
-    inputLabel: t(`nurbsCircle.${field}.input`),
-    name: field,
-    min: -ANGLE_MAX,
-    max: ANGLE_MAX,
-    step: ANGLE_STEP,
-    value: work[field],
-    format: (v) => String(Number(v.toFixed(2))),
-    onChange: (value, final) => change(field, value, final),
-    badNumber: (text) => t("nurbsCircle.badAngle", { field, value: text, max: ANGLE_MAX }),
-    onError: (message) => ctx.status(message, "error"),
-  });
-  const sliders = {
-    radius: lengthSlider("radius"),
-    rx: lengthSlider("rx"),
-    ry: lengthSlider("ry"),
-    rotation: angleSlider("rotation"),
-    start: angleSlider("start"),
-    sweep: angleSlider("sweep"),
-  };
-  const ellipseBox = checkbox({
-    label: t("nurbsCircle.ellipseMode"),
-    name: "ellipse",
-    checked: work.ellipse,
-    onChange: (on) => change("ellipse", on, true),
-  });
-  const circleGroup = group(t("nurbsCircle.circleLegend"), sliders.radius.element);
-  const ellipseGroup = group(t("nurbsCircle.ellipseLegend"), sliders.rx.element, sliders.ry.element, sliders.rotation.element);
-  const fullButton = button({ label: t("nurbsCircle.full"), title: t("nurbsCircle.full.title"), name: "full", onClick: () => setFull() });
-  const countText = el("p", { class: "sl-note", dataset: { info: "count" } });
-  const knotsText = el("p", { class: "sl-note", dataset: { info: "knots" } });
-  const errorReadout = el("p", { class: "sl-readout", dataset: { info: "error" }, "aria-live": "polite" });
-  const errorNote = el("p", { class: "sl-note" });
-  ctx.slots.controls.append(
-    group(null, ellipseBox.element),
-    circleGroup,
-    ellipseGroup,
-    group(t("nurbsCircle.arcLegend"), sliders.start.element, sliders.sweep.element, el("div", { class: "sl-button-row" }, fullButton)),
-    group(t("nurbsCircle.resultLegend"), errorReadout, errorNote, countText, knotsText),
-  );
-
-  // ------------------------------------------------------------ formula and table
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const tableTitle = el("p", { class: "sl-table-title", id: `sl-nurbs-circle-${Math.random().toString(36).slice(2, 8)}` });
-  const table = el("table", { class: "sl-table", dataset: { table: "nurbs-circle" }, "aria-labelledby": tableTitle.id });
-  ctx.slots.details.append(tableTitle, el("div", { class: "sl-table-wrap" }, table));
-
-  // ------------------------------------------------------------ edits
-
-  /**
-   * A control changed: build the new curve from the core; on refusal (e.g. a zero sweep) show
-   * the core's message and keep the last good curve.
-   */
-  function change(field, value, final) {
-    const next = { ...work, [field]: value };
-    let nextCurve;
-    try {
-      if (field === "sweep" && value === 0) throw new Error(t("nurbsCircle.zeroSweep"));
-      nextCurve = buildCurve(sl, next);
-    } catch (err) {
-      ctx.status(t("nurbsCircle.refused", { message: err.message }), "error");
-      if (final) sliders[field]?.set(work[field]);
-      return;
-    }
-    curve.free();
-    curve = nextCurve;
-    work[field] = value;
-    sliders[field]?.set(value);
-    curveChanged();
-    if (final) ctx.commit(work);
-  }
-
-  function setFull() {
-    const nextCurve = buildCurve(sl, { ...work, start: 0, sweep: ANGLE_MAX });
-    curve.free();
-    curve = nextCurve;
-    work.start = 0;
-    work.sweep = ANGLE_MAX;
-    sliders.start.set(0);
-    sliders.sweep.set(ANGLE_MAX);
-    curveChanged();
-    ctx.commit(work);
-  }
-
-  /** Reads what stays fixed for a curve (control points at build, weights, knots, pieces). */
-  function curveChanged() {
-    base = curve.controlPoints();
-    builtAt[0] = work.points[0][0];
-    builtAt[1] = work.points[0][1];
-    weights = curve.weights();
-    knots = curve.knots();
-    pieces = curve.spans().length;
-    const distinct = [];
-    for (const u of knots) if (distinct.length === 0 || u !== distinct[distinct.length - 1]) distinct.push(u);
-    jointParams = new Float64Array(distinct);
-    weightLabels.length = 0;
-    const last = base.length - 2;
-    const closed = Math.abs(base[0] - base[last]) <= EXACT_WEIGHT && Math.abs(base[1] - base[last + 1]) <= EXACT_WEIGHT;
-    for (let i = 0; i < weights.length; i++) {
-      const name = i === 0 && closed ? `P₀ = P${subscript(weights.length - 1)}` : `P${subscript(i)}`;
-      weightLabels.push(`${name}: w = ${weightText(weights[i])}`);
-    }
-    circleGroup.hidden = work.ellipse;
-    ellipseGroup.hidden = !work.ellipse;
-    dirty = true;
-    view.requestDraw();
-  }
-
-  // ------------------------------------------------------------ drawing
-  function recompute() {
-    if (!dirty) return;
-    dirty = false;
-    samples = curve.sampleUniform(SAMPLES);
-    controls = curve.controlPoints();
-    joints = curve.sample(jointParams);
-    error = measure();
-    centreLabel = t("nurbsCircle.centreLabel");
-    radiusLabel = work.ellipse ? t("nurbsCircle.axesLabel", { rx: fmt(work.rx), ry: fmt(work.ry) }) : t("nurbsCircle.radiusLabel", { r: fmt(work.radius) });
-    syncPanels();
-  }
-
-  /**
-   * The measurement: circle, max | |C(u) − c| − r |; ellipse, max | (x′/rx)² + (y′/ry)² − 1 |
-   * in the ellipse's own axes (x′, y′), over the samples.
-   */
-  function measure() {
-    const [cx, cy] = work.points[0];
-    let worst = 0;
-    if (!work.ellipse) {
-      for (let k = 0; k < SAMPLES; k++) {
-        worst = Math.max(worst, Math.abs(Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy) - work.radius));
-      }
-      return worst;
-    }
-    const c = Math.cos(work.rotation * RADIANS);
-    const s = Math.sin(work.rotation * RADIANS);
-    for (let k = 0; k < SAMPLES; k++) {
-      const dx = samples[2 * k] - cx;
-      const dy = samples[2 * k + 1] - cy;
-      const x = (dx * c + dy * s) / work.rx;
-      const y = (-dx * s + dy * c) / work.ry;
-      worst = Math.max(worst, Math.abs(x * x + y * y - 1));
-    }
-    return worst;
-  }
-
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const count = controls.length / 2;
-    const cx = v.sx(work.points[0][0]);
-    const cy = v.sy(work.points[0][1]);
-
-    // Control polygon.
-    r.beginPath();
-    for (let i = 0; i < count; i++) {
-      if (i === 0) r.moveTo(v.sx(controls[0]), v.sy(controls[1]));
-      else r.lineTo(v.sx(controls[2 * i]), v.sy(controls[2 * i + 1]));
-    }
-    r.paint(theme.polygon);
-
-    // Radius (or the first semi-axis) from the centre to the start of the curve.
-    r.beginPath();
-    r.moveTo(cx, cy);
-    r.lineTo(v.sx(samples[0]), v.sy(samples[1]));
-    r.paint(theme.helper);
-    // Its label 60 % of the way out: clear of the centre's own label on a small circle too.
-    r.text(radiusLabel, cx + RADIUS_LABEL_AT * (v.sx(samples[0]) - cx), cy + RADIUS_LABEL_AT * (v.sy(samples[1]) - cy) - 6 * r.scale, theme.labelSmall, "center", "bottom");
-
-    // The curve.
-    r.beginPath();
-    for (let k = 0; k < SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-    r.paint(theme.curve);
-
-    // The pieces' joints (the curve at each distinct knot), as rings around the curve.
-    r.beginPath();
-    for (let j = 0; j < jointParams.length; j++) r.circle(v.sx(joints[2 * j]), v.sy(joints[2 * j + 1]), JOINT_RING_PX * r.scale);
-    r.paint(theme.levelStroke[1]);
-
-    // Control points with their weights, labelled outward from the centre (a repeated end point once).
-    for (let i = 0; i < count; i++) {
-      const x = v.sx(controls[2 * i]);
-      const y = v.sy(controls[2 * i + 1]);
-      const repeat = i === count - 1 && Math.abs(x - v.sx(controls[0])) < 0.5 && Math.abs(y - v.sy(controls[1])) < 0.5;
-      r.point(x, y, theme.basisPoint[i % theme.basisPoint.length]);
-      if (repeat) continue;
-      let dx = x - cx;
-      let dy = y - cy;
-      const length = Math.hypot(dx, dy) || 1;
-      dx /= length;
-      dy /= length;
-      const gap = 10 * r.scale;
-      let align = dx > 0.35 ? "left" : dx < -0.35 ? "right" : "center";
-      let tx = x + dx * gap;
-      let ty = y + dy * gap + dy * 7 * r.scale;
-      if (align !== "center") {
-        // No room beside the point (a narrow canvas): above or below it (below on the x axis,
-        // clear of the radius label) instead of pushed back over the point by the frame's edge.
-        const width = r.measure(weightLabels[i], theme.labelSmall);
-        if (align === "left" ? tx + width > v.width : tx - width < 0) {
-          align = "center";
-          tx = x;
-          ty = y + (dy < 0 ? -1 : 1) * (gap + 7 * r.scale);
-        }
-      }
-      r.text(weightLabels[i], tx, ty, theme.labelSmall, align, "middle");
-    }
-
-    handles.draw(r, v);
-  }
-
-  // ------------------------------------------------------------ panels
-  function syncPanels() {
-    const count = controls.length / 2;
-    const knotList = Array.from(knots, knotText).join(", ");
-    const weightList = Array.from(weights, weightText).join(", ");
-    const errorString = errorText(error);
-    errorReadout.textContent = t(work.ellipse ? "nurbsCircle.errorEllipse" : "nurbsCircle.errorCircle", { error: errorString });
-    errorReadout.dataset.error = String(error);
-    errorNote.textContent = t(work.ellipse ? "nurbsCircle.errorEllipseNote" : "nurbsCircle.errorCircleNote", { samples: SAMPLES });
-    countText.textContent = t("nurbsCircle.count", { count, pieces });
-    countText.dataset.points = String(count);
-    countText.dataset.pieces = String(pieces);
-    knotsText.textContent = t("nurbsCircle.knots", { knots: knotList });
-    knotsText.dataset.knots = Array.from(knots, knotText).join(" ");
-
-    const [x, y] = work.points[0];
-    const shape = work.ellipse
-      ? t("nurbsCircle.ariaEllipse", { rx: fmt(work.rx, 2), ry: fmt(work.ry, 2), rotation: fmt(work.rotation, 1) })
-      : t("nurbsCircle.ariaCircle", { r: fmt(work.radius, 2) });
-    view.setLabel(t("nurbsCircle.aria", {
-      shape,
-      x: fmt(x, 2),
-      y: fmt(y, 2),
-      arc: isFull(work) ? t("nurbsCircle.ariaFull") : t("nurbsCircle.ariaArc", { start: fmt(work.start, 1), sweep: fmt(work.sweep, 1) }),
-      count,
-      weights: weightList,
-      knots: knotList,
-      pieces,
-      error: errorString,
-    }));
-
-    // Formula panel: the NURBS, the textbook circle, this curve's numbers, the measurement.
-    const delta = Math.abs(work.sweep) / pieces;
-    const middle = Math.cos((delta / 2) * RADIANS);
-    formula.set([
-      `C(u) = \\frac{\\sum_{i} N_{i,2}(u)\\,w_i\\,P_i}{\\sum_{i} N_{i,2}(u)\\,w_i}`,
-      `\\text{circle: } P_i = c + r\\,\\{(1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1), (0,-1), (1,-1), (1,0)\\}`,
-      `w_i = 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1,\\qquad U = \\{0,0,0,\\tfrac14,\\tfrac14,\\tfrac12,\\tfrac12,\\tfrac34,\\tfrac34,1,1,1\\}`,
-      `\\text{here: } ${pieces} \\text{ piece${pieces === 1 ? "" : "s"} of } \\Delta = \\tfrac{${fmt(Math.abs(work.sweep), 0)}^\\circ}{${pieces}} = ${fmt(delta, 2)}^\\circ \\le 90^\\circ,\\ \\text{middle weights } \\cos\\tfrac{\\Delta}{2} = ${weightTex(middle)},\\ U = \\{${Array.from(knots, knotTex).join(", ")}\\}`,
-      work.ellipse
-        ? `\\max_u \\left| \\left(\\tfrac{x'(u)}{r_x}\\right)^2 + \\left(\\tfrac{y'(u)}{r_y}\\right)^2 - 1 \\right| = ${errorTex(error)}\\quad (${SAMPLES} \\text{ samples})`
-        : `\\max_u \\big|\\, \\lVert C(u) - c \\rVert - r \\,\\big| = ${errorTex(error)}\\quad (${SAMPLES} \\text{ samples})`,
-    ]);
-
-    // Table: the control points and weights.
-    setText(tableTitle, t("nurbsCircle.tableCaption", { count }));
-    const rows = [];
-    for (let i = 0; i < count; i++) {
-      rows.push(el("tr", { dataset: { index: String(i) } },
-        el("th", { scope: "row", text: `P${subscript(i)}` }),
-        el("td", { text: `(${fmt(controls[2 * i])}, ${fmt(controls[2 * i + 1])})` }),
-        el("td", { dataset: { column: "weight" }, text: weightText(weights[i]) })));
-    }
-    table.replaceChildren(
-      el("thead", {}, el("tr", {}, el("th", { scope: "col", text: "i" }), el("th", { scope: "col", text: t("nurbsCircle.column.point") }), el("th", { scope: "col", text: t("nurbsCircle.column.weight") }))),
-      el("tbody", {}, rows));
-  }
-
-  function setText(node, text) {
-    if (node.textContent !== text) node.textContent = text;
-  }
-
-  curveChanged();
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    update(state) {
-      const next = buildCurve(sl, state); // throws before anything changes
-      curve.free();
-      curve = next;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      for (const [field, s] of Object.entries(sliders)) s.set(work[field]);
-      ellipseBox.set(work.ellipse);
-      curveChanged();
-      recompute();
-    },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-    },
-  };
-}
-
-/** TeX of a measured error: 0 or m × 10^e. */
-function errorTex(x) {
+/** A measured error to print precision: "0", "3.3e-16" (TeX: 3.3 × 10^{−16}), or 3 decimals. */
+function errorText(x, tex = false) {
   if (x === 0) return "0";
   if (x >= SMALL) return fmt(x);
+  if (!tex) return x.toExponential(1);
   const [m, e] = x.toExponential(1).split("e");
   return `${m} \\times 10^{${Number(e)}}`;
 }
 
 /**
- * The whole circle or ellipse's box (arcs lie inside it), wider by LABEL_ROOM so the weight
- * labels beside the corner control points stay in the window.
+ * The curve, and what stays fixed for it: the control points it was built with and the centre
+ * they were built about (a dragged centre translates them), weights, knots, pieces, the
+ * parameters of the joints (distinct knots) and the weight labels ("P₁: w = √2/2").
  */
-function boundsOf(state) {
-  const [cx, cy] = state.points[0];
-  const r = state.ellipse ? Math.max(state.rx, state.ry) : state.radius;
-  return [cx - r * LABEL_ROOM, cy - r, cx + r * LABEL_ROOM, cy + r];
+export const derive = {
+  from: ["radius", "start", "sweep", "ellipse", "rx", "ry", "rotation"],
+  build(s, sl) {
+    const curve = buildCurve(sl, s);
+    const base = curve.controlPoints();
+    const weights = curve.weights();
+    const knots = curve.knots();
+    const distinct = [];
+    for (const u of knots) if (distinct.length === 0 || u !== distinct[distinct.length - 1]) distinct.push(u);
+    const last = base.length - 2;
+    const closed = Math.abs(base[0] - base[last]) <= EXACT_WEIGHT && Math.abs(base[1] - base[last + 1]) <= EXACT_WEIGHT;
+    const weightLabels = Array.from(weights, (w, i) => {
+      const name = i === 0 && closed ? `P₀ = P${subscript(weights.length - 1)}` : `P${subscript(i)}`;
+      return `${name}: w = ${weightText(w)}`;
+    });
+    return {
+      curve,
+      base,
+      builtAt: [...s.points[0]],
+      weights,
+      knots,
+      pieces: curve.spans().length,
+      jointParams: new Float64Array(distinct),
+      weightLabels,
+    };
+  },
+  /** A translation: every control point moves by the centre's displacement, in place. */
+  moved(m, i, xy) {
+    const dx = xy[0] - m.builtAt[0];
+    const dy = xy[1] - m.builtAt[1];
+    for (let k = 0; k < m.base.length / 2; k++) {
+      scratch[0] = m.base[2 * k] + dx;
+      scratch[1] = m.base[2 * k + 1] + dy;
+      m.curve.setControlPoint(k, scratch);
+    }
+  },
+};
+const scratch = new Float64Array(2);
+
+/**
+ * The measurement: circle, max | |C(u) − c| − r |; ellipse, max | (x′/rx)² + (y′/ry)² − 1 |
+ * in the ellipse's own axes (x′, y′), over the samples.
+ */
+function measure(s, samples) {
+  const [cx, cy] = s.points[0];
+  let worst = 0;
+  if (!s.ellipse) {
+    for (let k = 0; k < SAMPLES; k++) {
+      worst = Math.max(worst, Math.abs(Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy) - s.radius));
+    }
+    return worst;
+  }
+  const c = Math.cos(s.rotation * RADIANS);
+  const sin = Math.sin(s.rotation * RADIANS);
+  for (let k = 0; k < SAMPLES; k++) {
+    const dx = samples[2 * k] - cx;
+    const dy = samples[2 * k + 1] - cy;
+    const x = (dx * c + dy * sin) / s.rx;
+    const y = (-dx * sin + dy * c) / s.ry;
+    worst = Math.max(worst, Math.abs(x * x + y * y - 1));
+  }
+  return worst;
+}
+
+/** "r = 2.000" or "rx = 3.000, ry = 2.000", beside the radius. */
+function radiusLabel(s) {
+  if (s.ellipse) return t("nurbsCircle.axesLabel", { rx: fmt(s.rx), ry: fmt(s.ry) });
+  return t("nurbsCircle.radiusLabel", { r: fmt(s.radius) });
+}
+
+const ALL = ["points", ...derive.from];
+/** What the core returns after any change: samples, control points, the joints; the measurement. */
+export const compute = {
+  samples: [ALL, (s, d) => d.curve.sampleUniform(SAMPLES)],
+  controls: [ALL, (s, d) => d.curve.controlPoints()],
+  joints: [ALL, (s, d) => d.curve.sample(d.jointParams)],
+  error: [ALL, (s, d) => measure(s, d.samples)],
+  radiusLabel: [["radius", "ellipse", "rx", "ry"], radiusLabel],
+};
+
+const lengthSlider = (name) =>
+  slider(name, {
+    label: `nurbsCircle.${name}`,
+    min: LENGTH_MIN,
+    max: LENGTH_MAX,
+    step: LENGTH_STEP,
+    error: "nurbsCircle.badLength",
+  });
+const angleSlider = (name, refuse) =>
+  slider(name, {
+    label: `nurbsCircle.${name}`,
+    min: -ANGLE_MAX,
+    max: ANGLE_MAX,
+    step: ANGLE_STEP,
+    format: (v) => String(Number(v.toFixed(2))),
+    error: "nurbsCircle.badAngle",
+    refuse,
+  });
+/** A zero sweep is refused before it reaches the core (the last good curve stays). */
+const refuseZero = (v) => (v === 0 ? t("nurbsCircle.refused", { message: t("nurbsCircle.zeroSweep") }) : null);
+const counted = (s, d) => d.controls.length / 2;
+/** The readout of the measurement: "nurbsCircle.errorCircle" or "…errorEllipse" (and its `Note`). */
+const errorKey = (s) => (s.ellipse ? "nurbsCircle.errorEllipse" : "nurbsCircle.errorCircle");
+
+export const controls = [
+  group(null, checkbox("ellipse", { label: "nurbsCircle.ellipseMode" })),
+  shownWhen((s) => !s.ellipse, group("nurbsCircle.circleLegend", lengthSlider("radius"))),
+  shownWhen(
+    (s) => s.ellipse,
+    group("nurbsCircle.ellipseLegend", lengthSlider("rx"), lengthSlider("ry"), angleSlider("rotation")),
+  ),
+  group(
+    "nurbsCircle.arcLegend",
+    angleSlider("start"),
+    angleSlider("sweep", refuseZero),
+    actions([
+      {
+        name: "full",
+        label: "nurbsCircle.full",
+        title: "nurbsCircle.full.title",
+        run: (ui) => ui.replace({ ...ui.state, start: 0, sweep: ANGLE_MAX }),
+      },
+    ]),
+  ),
+  group(
+    "nurbsCircle.resultLegend",
+    readout("error", (s, d) => t(errorKey(s), { error: errorText(d.error) }), {
+      kind: "readout",
+      live: true,
+      data: (s, d) => ({ error: String(d.error) }),
+    }),
+    readout(null, (s) => t(`${errorKey(s)}Note`, { samples: SAMPLES })),
+    readout("count", (s, d) => t("nurbsCircle.count", { count: counted(s, d), pieces: d.pieces }), {
+      data: (s, d) => ({ points: String(counted(s, d)), pieces: String(d.pieces) }),
+    }),
+    readout("knots", (s, d) => t("nurbsCircle.knots", { knots: Array.from(d.knots, (u) => knotText(u)).join(", ") }), {
+      data: (s, d) => ({ knots: Array.from(d.knots, (u) => knotText(u)).join(" ") }),
+    }),
+  ),
+];
+
+export const figure = {
+  /**
+   * The whole circle or ellipse's box (arcs lie inside it), wider by LABEL_ROOM so the weight
+   * labels beside the corner control points stay in the window.
+   */
+  bounds(s) {
+    const [cx, cy] = s.points[0];
+    const r = s.ellipse ? Math.max(s.rx, s.ry) : s.radius;
+    return [cx - r * LABEL_ROOM, cy - r, cx + r * LABEL_ROOM, cy + r];
+  },
+  handles: { field: "points", label: () => t("nurbsCircle.centreLabel") },
+};
+
+/**
+ * The weight labels of the control points, outward from the centre (a repeated end point once);
+ * where there is no room beside a point (a narrow canvas), above or below it instead (below on
+ * the x axis, clear of the radius label) rather than pushed back over it by the frame's edge.
+ */
+function drawWeights(r, v, s, d) {
+  const theme = r.theme;
+  const controls = d.controls;
+  const count = controls.length / 2;
+  const cx = v.sx(s.points[0][0]);
+  const cy = v.sy(s.points[0][1]);
+  const gap = WEIGHT_LABEL_GAP_PX * r.scale;
+  const drop = WEIGHT_LABEL_DROP_PX * r.scale;
+  for (let i = 0; i < count; i++) {
+    const x = v.sx(controls[2 * i]);
+    const y = v.sy(controls[2 * i + 1]);
+    const repeat = i === count - 1 && Math.abs(x - v.sx(controls[0])) < 0.5 && Math.abs(y - v.sy(controls[1])) < 0.5;
+    r.point(x, y, theme.basisPoint[i % theme.basisPoint.length]);
+    if (repeat) continue;
+    const length = Math.hypot(x - cx, y - cy) || 1;
+    const dx = (x - cx) / length;
+    const dy = (y - cy) / length;
+    let align = dx > 0.35 ? "left" : dx < -0.35 ? "right" : "center";
+    let tx = x + dx * gap;
+    let ty = y + dy * gap + dy * drop;
+    if (align !== "center") {
+      const width = r.measure(d.weightLabels[i], theme.labelSmall);
+      if (align === "left" ? tx + width > v.width : tx - width < 0) {
+        align = "center";
+        tx = x;
+        ty = y + (dy < 0 ? -1 : 1) * (gap + drop);
+      }
+    }
+    r.text(d.weightLabels[i], tx, ty, theme.labelSmall, align, "middle");
+  }
+}
+
+/** The control polygon, the radius to the curve's start, the curve, the joints, the weights. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const { controls, samples } = d;
+  flatPath(r, v, controls);
+  r.paint(theme.polygon);
+
+  const cx = v.sx(s.points[0][0]);
+  const cy = v.sy(s.points[0][1]);
+  const ex = v.sx(samples[0]);
+  const ey = v.sy(samples[1]);
+  r.beginPath();
+  r.moveTo(cx, cy);
+  r.lineTo(ex, ey);
+  r.paint(theme.helper);
+  // Its label 60 % of the way out: clear of the centre's own label on a small circle too.
+  const lx = cx + RADIUS_LABEL_AT * (ex - cx);
+  const ly = cy + RADIUS_LABEL_AT * (ey - cy) - 6 * r.scale;
+  r.text(d.radiusLabel, lx, ly, theme.labelSmall, "center", "bottom");
+
+  flatPath(r, v, samples, 0, SAMPLES);
+  r.paint(theme.curve);
+
+  // The pieces' joints (the curve at each distinct knot), as rings around the curve.
+  r.beginPath();
+  for (let j = 0; j < d.jointParams.length; j++) {
+    r.circle(v.sx(d.joints[2 * j]), v.sy(d.joints[2 * j + 1]), JOINT_RING_PX * r.scale);
+  }
+  r.paint(theme.levelStroke[1]);
+
+  drawWeights(r, v, s, d);
+  d.handles.draw(r, v);
+}
+
+/** The NURBS, the textbook circle, this curve's pieces, weights and knots, the measurement. */
+export function formula(s, d) {
+  const { pieces } = d;
+  const delta = Math.abs(s.sweep) / pieces;
+  const middle = Math.cos((delta / 2) * RADIANS);
+  const samples = `(${SAMPLES} \\text{ ${t("nurbsCircle.formula.samples")}})`;
+  const error = errorText(d.error, true);
+  return [
+    `C(u) = \\frac{\\sum_{i} N_{i,2}(u)\\,w_i\\,P_i}{\\sum_{i} N_{i,2}(u)\\,w_i}`,
+    `\\text{${t("nurbsCircle.formula.circle")}: } P_i = c + r\\,\\{(1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1), ` +
+      `(0,-1), (1,-1), (1,0)\\}`,
+    `w_i = 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1,\\qquad ` +
+      `U = \\{0,0,0,\\tfrac14,\\tfrac14,\\tfrac12,\\tfrac12,\\tfrac34,\\tfrac34,1,1,1\\}`,
+    `\\text{${t("nurbsCircle.formula.here")}: } ${pieces} \\text{ ${tp("nurbsCircle.formula.pieces", pieces)} } ` +
+      `\\Delta = \\tfrac{${fmt(Math.abs(s.sweep), 0)}^\\circ}{${pieces}} = ${fmt(delta, 2)}^\\circ \\le 90^\\circ,\\ ` +
+      `\\text{${t("nurbsCircle.formula.middleWeights")} } \\cos\\tfrac{\\Delta}{2} = ${weightText(middle, true)},\\ ` +
+      `U = \\{${Array.from(d.knots, (u) => knotText(u, true)).join(", ")}\\}`,
+    s.ellipse
+      ? `\\max_u \\left| \\left(\\tfrac{x'(u)}{r_x}\\right)^2 + \\left(\\tfrac{y'(u)}{r_y}\\right)^2 - 1 \\right| = ` +
+        `${error}\\quad ${samples}`
+      : `\\max_u \\big|\\, \\lVert C(u) - c \\rVert - r \\,\\big| = ${error}\\quad ${samples}`,
+  ];
+}
+
+/** "NURBS circle of radius 2.00 about (0.00, 0.00), the whole curve: degree 2, 9 control points …". */
+export function label(s, d) {
+  const [x, y] = s.points[0];
+  const shape = s.ellipse
+    ? t("nurbsCircle.ariaEllipse", { rx: fmt(s.rx, 2), ry: fmt(s.ry, 2), rotation: fmt(s.rotation, 1) })
+    : t("nurbsCircle.ariaCircle", { r: fmt(s.radius, 2) });
+  const arc = isFull(s)
+    ? t("nurbsCircle.ariaFull")
+    : t("nurbsCircle.ariaArc", { start: fmt(s.start, 1), sweep: fmt(s.sweep, 1) });
+  return t("nurbsCircle.aria", {
+    shape,
+    x: fmt(x, 2),
+    y: fmt(y, 2),
+    arc,
+    count: counted(s, d),
+    weights: Array.from(d.weights, (w) => weightText(w)).join(", "),
+    knots: Array.from(d.knots, (u) => knotText(u)).join(", "),
+    pieces: d.pieces,
+    error: errorText(d.error),
+  });
+}
+
+/** The table of the control points and their weights. */
+export function setup(ui) {
+  const { title, table, wrap } = titledTable("nurbs-circle");
+  ui.ctx.slots.details.append(title, wrap);
+  const columns = ["i", t("nurbsCircle.column.point"), t("nurbsCircle.column.weight")];
+  const head = el("thead", {}, el("tr", {}, columns.map((text) => el("th", { scope: "col", text }))));
+  let cells = [];
+
+  function build(count) {
+    cells = [];
+    const rows = [];
+    for (let i = 0; i < count; i++) {
+      const point = el("td");
+      const weight = el("td", { dataset: { column: "weight" } });
+      cells.push([point, weight]);
+      const name = el("th", { scope: "row", text: `P${subscript(i)}` });
+      rows.push(el("tr", { dataset: { index: String(i) } }, name, point, weight));
+    }
+    table.replaceChildren(head, el("tbody", {}, rows));
+  }
+
+  return {
+    update(s, d) {
+      const count = counted(s, d);
+      setText(title, t("nurbsCircle.tableCaption", { count }));
+      if (cells.length !== count) build(count);
+      for (let i = 0; i < count; i++) {
+        setText(cells[i][0], `(${fmt(d.controls[2 * i])}, ${fmt(d.controls[2 * i + 1])})`);
+        setText(cells[i][1], weightText(d.weights[i]));
+      }
+    },
+  };
 }

@@ -8,10 +8,10 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `inPlace: { field: (model, state) => void }` likewise for a field not in `from` (a weight slider: `setWeight`) |
  * | `compute` | `{ name: [[fields], (state, data, ui) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`; `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the list's on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -117,6 +117,7 @@ export function mountDeclared(demo, initialState, ctx) {
   function markChanged(field) {
     if (changed) changed.add(field);
     if (derive.from.includes(field)) modelStale = true;
+    else derive.inPlace?.[field]?.(model, work);
     view.requestDraw();
   }
 
@@ -126,6 +127,38 @@ export function mountDeclared(demo, initialState, ctx) {
     for (const key of Object.keys(old)) delete data[key];
     Object.assign(data, model);
     freeModel(old);
+  }
+
+  /**
+   * The handles of the point list, then the `extra` points shown (`when(state)`, default always):
+   * `state[field]` (a single point) or `state[field][index]`; `accept(state, x, y)` may refuse a move.
+   */
+  function withExtraPoints(list, listed, extra) {
+    const shown = (e) => !e.when || e.when(work);
+    const entry = (i) => {
+      let k = i - listed();
+      for (const e of extra) if (shown(e) && k-- === 0) return e;
+      return null;
+    };
+    const point = (e) => (e.index === undefined ? work[e.field] : work[e.field][e.index]);
+    return {
+      count() {
+        let n = listed();
+        for (const e of extra) if (shown(e)) n++;
+        return n;
+      },
+      get: (i, out) => (i < listed() ? list.get(i, out) : out.set(point(entry(i)))),
+      label: (i) => (i < listed() ? list.label(i) : t(entry(i).label)),
+      move(i, x, y) {
+        if (i < listed()) return list.move(i, x, y);
+        const e = entry(i);
+        if (e.accept && !e.accept(work, x, y)) return;
+        const p = point(e);
+        p[0] = x;
+        p[1] = y;
+        markChanged(e.field);
+      },
+    };
   }
 
   const touches = (deps) => changed === null || deps.some((field) => changed.has(field));
@@ -145,6 +178,7 @@ export function mountDeclared(demo, initialState, ctx) {
     for (const [name, [deps, run]] of cells) {
       if (touches(deps)) data[name] = run(work, data, ui);
     }
+    if (ui.handles && ui.handles.selected >= ui.handles.source.count()) ui.handles.select(-1);
     for (const control of built) control.sync?.(work, data);
     if (demo.formula) formula.set(demo.formula(work, data));
     if (demo.label) view.setLabel(demo.label(work, data));
@@ -162,12 +196,15 @@ export function mountDeclared(demo, initialState, ctx) {
           view.requestDraw();
         }
       : () => markChanged(handleSpec.field);
+    const list = pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null);
+    const extraPoints = handleSpec.extra ?? [];
+    const listed = () => work[handleSpec.field].length;
     ui.handles = new Handles(view, {
-      ...pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null),
+      ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
       constraint: handleSpec.constraint,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
-      remove: (i) => ui.pointList?.remove(i),
+      remove: (i) => i < listed() && ui.pointList?.remove(i),
     });
     data.handles = ui.handles;
   }

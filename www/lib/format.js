@@ -124,3 +124,9 @@ export function exactNumbers(parameter, inputs) {
     },
   };
 }
+
+/** A number as short text: an integer (within 1e-9) without decimals, else `DECIMALS` decimals. */
+export function shortNumber(v) {
+  const r = Math.round(v);
+  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
+}

@@ -31,7 +31,12 @@ function fragment(...nodes) {
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
  * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
- * @param {string} [o.error] key of the message for typed text that is out of range.
+ * @param {string} [o.error] key of the message for typed text that is out of range (given
+ *   `value`, `min`, `max` and `field`).
+ * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
+ *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
+ * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
+ *   take the value (then it is reported and the slider shows the field again), else null.
  */
 export function slider(field, o) {
   return {
@@ -51,13 +56,21 @@ export function slider(field, o) {
         format: o.format,
         value: ui.state[field],
         onChange: (value, final) => {
+          if (o.onRelease && !final) return;
           player?.stop();
           const typed = control.typing();
-          ui.set(field, o.round ? o.round(value, typed) : value, final);
+          const next = o.round ? o.round(value, typed) : value;
+          const refusal = o.refuse?.(next, ui.state);
+          if (refusal) {
+            ui.status(refusal, "error");
+            control.set(ui.state[field]);
+            return;
+          }
+          ui.set(field, next, final);
         },
         onError: (text) => {
           const [a, b] = range();
-          ui.status(t(o.error ?? "control.badNumber", { value: text, min: a, max: b }), "error");
+          ui.status(t(o.error ?? "control.badNumber", { value: text, min: a, max: b, field }), "error");
         },
       });
       if (o.player) {
@@ -166,14 +179,44 @@ export function pointButtons(field, { min, max, prefix }) {
 }
 
 /**
- * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
- * `kind` "note" (default) or "readout" (the larger figure of merit).
+ * A line of text computed from the state and data (`text(state, data)`), `data-info=name` (none
+ * when `name` is null); `kind` "note" (default) or "readout" (the larger figure of merit); `live`
+ * makes it a polite live region; `data(state, values)` → `{ key: text }` sets data attributes
+ * beside the text (numbers for tests and scripts), removing those it no longer returns.
  */
-export function readout(name, text, { kind = "note" } = {}) {
+export function readout(name, text, { kind = "note", live = false, data = null } = {}) {
   return {
     build(ui) {
-      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } });
-      return { element: node, sync: (state, data) => setText(node, text(state, data, ui)) };
+      const className = kind === "readout" ? "sl-readout" : "sl-note";
+      const node = el("p", { class: className, dataset: name ? { info: name } : null, "aria-live": live ? "polite" : null });
+      let keys = [];
+      return {
+        element: node,
+        sync(state, values) {
+          setText(node, text(state, values, ui));
+          if (!data) return;
+          const attributes = data(state, values);
+          for (const key of keys) if (!(key in attributes)) delete node.dataset[key];
+          Object.assign(node.dataset, attributes);
+          keys = Object.keys(attributes);
+        },
+      };
+    },
+  };
+}
+
+/** A control shown only while `when(state)` holds (e.g. the settings of the chosen option). */
+export function shownWhen(when, item) {
+  return {
+    build(ui) {
+      const part = item.build(ui);
+      return {
+        ...part,
+        sync(state, data) {
+          part.element.hidden = !when(state);
+          part.sync?.(state, data);
+        },
+      };
     },
   };
 }

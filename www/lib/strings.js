@@ -797,6 +797,9 @@ const EN = {
   "conics.midpoint": "M",
   "conics.shoulder": "P(1/2)",
   "conics.legendParabola": "w₁ = 1 (parabola)",
+  "conics.formula.circularArc": "circular arc",
+  "conics.formula.and": "and",
+  "conics.formula.circle": "circle!",
   "conics.shape": "w₁ = {w}; shape factor k = w₁²/(w₀w₂) = {k} {relation} 1",
   "conics.triangle": "|P₀P₁| = {a}, |P₁P₂| = {b} (not isosceles); angle at P₁ = {angle}°, sin θ = {sin}",
   "conics.triangleIsosceles": "|P₀P₁| = |P₁P₂| = {a} (isosceles); angle at P₁ = {angle}°, sin θ = {sin}",
@@ -856,6 +859,12 @@ const EN = {
   "nurbsCircle.tableCaption": "The {count} control points and their weights",
   "nurbsCircle.column.point": "Pᵢ",
   "nurbsCircle.column.weight": "wᵢ",
+  "nurbsCircle.formula.circle": "circle",
+  "nurbsCircle.formula.here": "here",
+  "nurbsCircle.formula.pieces.one": "piece of",
+  "nurbsCircle.formula.pieces.other": "pieces of",
+  "nurbsCircle.formula.middleWeights": "middle weights",
+  "nurbsCircle.formula.samples": "samples",
 
   // Demo: projective (strings of www/demos/projective.js; keys start with the demo's `strings` prefix)
   "projective.title": "Projective invariance",
