@@ -82,6 +82,7 @@ const EN = {
   "error.count": "field “{field}” must have between {min} and {max} entries, got {count}",
   "error.pointShape": "field “{field}”: point {index} must be a pair [x, y]",
   "error.pointFinite": "field “{field}”: point {index} has a coordinate that is not a finite number",
+  "error.knots": "field “{field}”: {message}",
   "error.window": "field “view” must be four finite numbers [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax",
   "error.badEncoding": "the state in the link is not valid (damaged or cut off)",
   "error.badJson": "not valid JSON: {message}",
