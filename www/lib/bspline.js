@@ -17,7 +17,8 @@ import { t } from "./strings.js";
 export function bsplineCurve(sl, { points, degree, knots, weights = undefined }) {
   const flat = flatten(points);
   const u = Float64Array.from(knots);
-  return weights ? new sl.BSplineCurve(flat, 2, degree, u, Float64Array.from(weights)) : new sl.BSplineCurve(flat, 2, degree, u);
+  if (!weights) return new sl.BSplineCurve(flat, 2, degree, u);
+  return new sl.BSplineCurve(flat, 2, degree, u, Float64Array.from(weights));
 }
 
 /**
@@ -99,7 +100,8 @@ export function parameterField({ error, knots = "knots", degree = STATE_DEGREE }
  * false. The parameter field `param` (if the state has it) moves into the new domain when it
  * fell outside (an end knot dragged). `final` commits (undo step, URL), `merge` joins nudges.
  */
-export function setKnots(ui, knots, final = true, { field = "knots", param = "u", count = STATE_COUNT, degree = STATE_DEGREE, merge = null } = {}) {
+export function setKnots(ui, knots, final = true, options = {}) {
+  const { field = "knots", param = "u", count = STATE_COUNT, degree = STATE_DEGREE, merge = null } = options;
   const message = knotsRefusal(count(ui.state), degree(ui.state), knots);
   if (message) {
     ui.status(t("status.rejected", { message }), "error");

@@ -644,8 +644,6 @@ const EN = {
   "multiplicity.repeatReadout": "{points}: at u{k} = {u} measured {measured}",
   "multiplicity.repeatEnd": "{points}: too close to an end of the curve for an interior knot",
   "multiplicity.repeatHint": "Repeating a point adds control points, so the knots become clamped uniform again.",
-  "multiplicity.knotCount": "field “knots”: {count} control points (repeats included) of a cubic need {need} knots, got {got}",
-  "multiplicity.knotOrder": "field “knots” must be non-decreasing, but u{i} = {a} > u{j} = {b}",
   "multiplicity.notesCaption": "The Croatian notes' table for cubics (the current cases highlighted)",
   "multiplicity.notesBreak": "break (separate pieces)",
   "multiplicity.colMultiplicity": "Multiplicity",
