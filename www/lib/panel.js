@@ -31,7 +31,11 @@ function fragment(...nodes) {
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
  * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
- * @param {string} [o.error] key of the message for typed text that is out of range.
+ * @param {string | ((text: string, state) => string)} [o.error] key of the message for typed
+ *   text that is out of range (given `{ value, min, max }`), or the message itself.
+ * @param {(ui, value: number, final: boolean) => void} [o.set] instead of `ui.set(field, value,
+ *   final)`, for a change that implies others or may be refused (e.g. through `ui.replace`);
+ *   after a final change the slider shows the field's value again.
  */
 export function slider(field, o) {
   return {
@@ -53,11 +57,15 @@ export function slider(field, o) {
         onChange: (value, final) => {
           player?.stop();
           const typed = control.typing();
-          ui.set(field, o.round ? o.round(value, typed) : value, final);
+          const kept = o.round ? o.round(value, typed) : value;
+          if (!o.set) return ui.set(field, kept, final);
+          o.set(ui, kept, final);
+          if (final) control.set(ui.state[field]);
         },
         onError: (text) => {
           const [a, b] = range();
-          ui.status(t(o.error ?? "control.badNumber", { value: text, min: a, max: b }), "error");
+          const message = typeof o.error === "function" ? o.error(text, ui.state) : t(o.error ?? "control.badNumber", { value: text, min: a, max: b });
+          ui.status(message, "error");
         },
       });
       if (o.player) {
@@ -102,16 +110,21 @@ export function checkbox(field, { label, name = field }) {
 
 /**
  * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
- * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels.
+ * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels. `set(ui,
+ * value)` as for `slider` (then the buttons show the field's value again).
  */
-export function choice(field, { options, name = field }) {
+export function choice(field, { options, name = field, set = null }) {
   return {
     build(ui) {
       const control = radios({
         options: options.map((option) => ({ value: option.value, label: t(option.label) })),
         value: ui.state[field],
         name,
-        onChange: (value) => ui.set(field, value),
+        onChange: (value) => {
+          if (!set) return ui.set(field, value);
+          set(ui, value);
+          control.set(ui.state[field]);
+        },
       });
       return { element: control.element, sync: (state) => control.set(state[field]) };
     },
@@ -122,13 +135,15 @@ export function choice(field, { options, name = field }) {
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
  * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits.
+ * the limits. `adjust(state) → state` fixes what follows from the new list (a lower degree,
+ * clamped knots) before the model is built.
  */
-export function pointButtons(field, { min, max, prefix }) {
+export function pointButtons(field, { min, max, prefix, adjust = null }) {
   return {
     build(ui) {
       const apply = (next) => {
-        const state = { ...ui.state, [field]: next.points };
+        let state = { ...ui.state, [field]: next.points };
+        if (adjust) state = adjust(state, ui);
         try {
           ui.replace(state);
         } catch (err) {
