@@ -17,6 +17,7 @@ import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { el, setText } from "../lib/controls.js";
+import { replaceOrReport } from "../lib/wasm.js";
 
 export const id = "knot-vectors";
 /** Prefix of this demo's keys in strings.js. */
@@ -113,20 +114,11 @@ export const compute = {
   })],
 };
 
-/** Replaces the state with `patch` applied, the curves rebuilt first; a refusal goes to the status line. */
-function replace(ui, patch) {
-  try {
-    ui.replace({ ...ui.state, ...patch });
-  } catch (err) {
-    ui.status(t("status.rejected", { message: err.message }), "error");
-  }
-}
-
 /** Degree p (on release): 1 … min(MAX_DEGREE, n). */
 function setDegree(ui, p) {
   const max = Math.min(MAX_DEGREE, ui.state.points.length - 1);
   if (p < 1 || p > max) return ui.status(t("knotVectors.degreeRange", { value: p, max }), "error");
-  if (p !== ui.state.degree) replace(ui, { degree: p });
+  if (p !== ui.state.degree) replaceOrReport(ui, { ...ui.state, degree: p });
 }
 
 const showBox = (kind) => checkbox(kind, { label: `knotVectors.show.${kind}`, name: `show-${kind}` });
@@ -143,7 +135,7 @@ export const controls = [
   })),
   group("knotVectors.control.spacing", choice("spacing", {
     options: SPACINGS.map((value) => ({ value, label: `knotVectors.spacing.${value}` })),
-    set: (ui, spacing) => spacing !== ui.state.spacing && replace(ui, { spacing }),
+    set: (ui, spacing) => spacing !== ui.state.spacing && replaceOrReport(ui, { ...ui.state, spacing }),
   })),
   group("knotVectors.control.show", ...KINDS.map(showBox)),
   group(

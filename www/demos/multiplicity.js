@@ -26,6 +26,7 @@ import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { pointsPath } from "../lib/draw.js";
+import { replaceOrReport } from "../lib/wasm.js";
 
 export const id = "multiplicity";
 /** Prefix of this demo's keys in strings.js. */
@@ -246,15 +247,11 @@ const repeatChoice = {
         const j = ui.handles.selected >= 0 ? ui.handles.selected : s.repeatPoint;
         if (Number(value) === s.repeatTimes && j === s.repeatPoint) return;
         const next = { ...s, repeatPoint: j, repeatTimes: Number(value) };
-        try {
-          ui.replace({ ...next, knots: uniformKnots(ui, next) });
-        } catch (err) {
-          ui.status(t("status.rejected", { message: err.message }), "error");
-          control.set(String(s.repeatTimes));
-          return;
+        if (replaceOrReport(ui, { ...next, knots: uniformKnots(ui, next) })) {
+          ui.data.ruler.forgetPointer();
+          ui.data.ruler.select(-1);
         }
-        ui.data.ruler.forgetPointer();
-        ui.data.ruler.select(-1);
+        control.set(String(ui.state.repeatTimes));
       },
     });
     control.element.classList.add("sl-button-row");
