@@ -26,7 +26,8 @@ function fragment(...nodes) {
  *   (default `<label>.input`).
  * @param {number} [o.min] @param {number} [o.max] fixed range, or `o.range(state, data) → [a, b]`
  *   (e.g. a B-spline's domain, re-read after every change).
- * @param {number} o.step slider resolution (log10 units for `log`).
+ * @param {number | ((a: number, b: number) => number)} o.step slider resolution (log10 units for
+ *   `log`), or a function of the range (e.g. a thousandth of a B-spline's domain).
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
@@ -43,6 +44,7 @@ export function slider(field, o) {
       const fixed = o.range ? null : [o.min, o.max];
       const range = () => fixed ?? o.range(ui.state, ui.data);
       const [min, max] = range();
+      const stepOf = (a, b) => (typeof o.step === "function" ? o.step(a, b) : o.step);
       let player = null;
       const control = sliderElement({
         label: t(o.label),
@@ -50,7 +52,7 @@ export function slider(field, o) {
         name: o.name ?? field,
         min,
         max,
-        step: o.step,
+        step: stepOf(min, max),
         log: o.log,
         format: o.format,
         value: ui.state[field],
@@ -85,7 +87,7 @@ export function slider(field, o) {
           if (!fixed) {
             const [a, b] = range();
             if (a !== shownRange[0] || b !== shownRange[1]) {
-              control.setRange(a, b);
+              control.setRange(a, b, typeof o.step === "function" ? o.step(a, b) : null);
               shownRange = [a, b];
             }
           }
@@ -135,10 +137,12 @@ export function choice(field, { options, name = field, set = null }) {
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
  * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits. `adjust(state) → state` fixes what follows from the new list (a lower degree,
- * clamped knots) before the model is built.
+ * the limits (`min` may be a function of the state: a B-spline needs p + 1 points; the messages
+ * also get the state's fields, e.g. `{degree}`). `adjust(state, ui) → state` fixes what follows
+ * from the new list (a lower degree, clamped knots) before the model is built. `more`: further
+ * buttons in the same row, as `actions` takes them.
  */
-export function pointButtons(field, { min, max, prefix, adjust = null }) {
+export function pointButtons(field, { min, max, prefix, adjust = null, more = [] }) {
   return {
     build(ui) {
       const apply = (next) => {
@@ -152,7 +156,8 @@ export function pointButtons(field, { min, max, prefix, adjust = null }) {
         }
         ui.handles?.select(next.index);
       };
-      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { [kind]: limit }), "error");
+      const lowest = () => (typeof min === "function" ? min(ui.state) : min);
+      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { ...ui.state, [kind]: limit }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
@@ -160,20 +165,21 @@ export function pointButtons(field, { min, max, prefix, adjust = null }) {
           else refuse("max", max);
         },
         remove(i) {
-          const next = withPointRemoved(ui.state[field], i, min);
+          const next = withPointRemoved(ui.state[field], i, lowest());
           if (next) apply(next);
-          else refuse("min", min);
+          else refuse("min", lowest());
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
       const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => ui.pointList.add(selected()) });
       const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
+      const others = more.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       return {
-        element: el("div", { class: "sl-button-row" }, addButton, removeButton),
+        element: el("div", { class: "sl-button-row" }, addButton, removeButton, ...others),
         sync(state) {
           const count = state[field].length;
           addButton.disabled = count >= max;
-          removeButton.disabled = count <= min;
+          removeButton.disabled = count <= lowest();
         },
       };
     },
