@@ -256,7 +256,8 @@ export function draw(r, v, s, d) {
   const hi = highlighted(s, d);
   const cycle = theme.basisStroke.length;
   const knots = s.knots;
-  const [u0, u1] = d.domain;
+  const u0 = d.domain[0];
+  const u1 = d.domain[1];
   const sampleU = (k) => u0 + (k / (SAMPLES - 1)) * (u1 - u0);
 
   // ---- the curve area (world window, above the plot)

@@ -327,7 +327,8 @@ export const figure = {
 function jumps(s, d, k) {
   for (const joint of d.joints) {
     if (joint.c >= 0) continue;
-    const [a, b] = domainOf(s.knots, P);
+    const a = s.knots[P];
+    const b = s.knots[s.knots.length - P - 1];
     const u = a + (k / (CURVE_SAMPLES - 1)) * (b - a);
     const u0 = a + ((k - 1) / (CURVE_SAMPLES - 1)) * (b - a);
     if (u0 < joint.knot && u >= joint.knot) return true;
@@ -360,13 +361,14 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
   if (studied?.joint) {
     const jt = studied.joint;
-    const [lx, ly, rx, ry] = [v.sx(jt.left[0]), v.sy(jt.left[1]), v.sx(jt.right[0]), v.sy(jt.right[1])];
+    const rx = v.sx(jt.right[0]);
+    const ry = v.sy(jt.right[1]);
     if (jt.c < 0) {
       r.beginPath();
-      r.moveTo(lx, ly);
+      r.moveTo(v.sx(jt.left[0]), v.sy(jt.left[1]));
       r.lineTo(rx, ry);
       r.paint(theme.helper);
-      r.point(lx, ly, theme.pointOnCurve);
+      r.point(v.sx(jt.left[0]), v.sy(jt.left[1]), theme.pointOnCurve);
     }
     r.point(rx, ry, theme.pointOnCurve);
     r.text(studied.label, rx, ry + 12 * r.scale, theme.labelPoint, "center", "top");
