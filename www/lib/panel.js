@@ -26,17 +26,21 @@ function fragment(...nodes) {
  *   (default `<label>.input`).
  * @param {number} [o.min] @param {number} [o.max] fixed range, or `o.range(state, data) → [a, b]`
  *   (e.g. a B-spline's domain, re-read after every change).
- * @param {number} o.step slider resolution (log10 units for `log`).
+ * @param {number | ((a: number, b: number) => number)} o.step slider resolution (log10 units for
+ *   `log`), or a function of the range (e.g. a thousandth of a B-spline's domain).
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
  * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
- * @param {string} [o.error] key of the message for typed text that is out of range (given
- *   `value`, `min`, `max` and `field`).
+ * @param {string | ((text: string, state) => string)} [o.error] key of the message for typed
+ *   text that is out of range (given `{ value, min, max, field }`), or the message itself.
  * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
  *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
  * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
  *   take the value (then it is reported and the slider shows the field again), else null.
+ * @param {(ui, value: number, final: boolean) => void} [o.set] instead of `ui.set(field, value,
+ *   final)`, for a change that implies others or may be refused (e.g. through `ui.replace`);
+ *   after a final change the slider shows the field's value again.
  */
 export function slider(field, o) {
   return {
@@ -44,6 +48,7 @@ export function slider(field, o) {
       const fixed = o.range ? null : [o.min, o.max];
       const range = () => fixed ?? o.range(ui.state, ui.data);
       const [min, max] = range();
+      const stepOf = (a, b) => (typeof o.step === "function" ? o.step(a, b) : o.step);
       let player = null;
       const control = sliderElement({
         label: t(o.label),
@@ -51,7 +56,7 @@ export function slider(field, o) {
         name: o.name ?? field,
         min,
         max,
-        step: o.step,
+        step: stepOf(min, max),
         log: o.log,
         format: o.format,
         value: ui.state[field],
@@ -66,11 +71,14 @@ export function slider(field, o) {
             control.set(ui.state[field]);
             return;
           }
-          ui.set(field, next, final);
+          if (!o.set) return ui.set(field, next, final);
+          o.set(ui, next, final);
+          if (final) control.set(ui.state[field]);
         },
         onError: (text) => {
           const [a, b] = range();
-          ui.status(t(o.error ?? "control.badNumber", { value: text, min: a, max: b, field }), "error");
+          const message = typeof o.error === "function" ? o.error(text, ui.state) : t(o.error ?? "control.badNumber", { value: text, min: a, max: b, field });
+          ui.status(message, "error");
         },
       });
       if (o.player) {
@@ -90,7 +98,7 @@ export function slider(field, o) {
           if (!fixed) {
             const [a, b] = range();
             if (a !== shownRange[0] || b !== shownRange[1]) {
-              control.setRange(a, b);
+              control.setRange(a, b, typeof o.step === "function" ? o.step(a, b) : null);
               shownRange = [a, b];
             }
           }
@@ -115,16 +123,21 @@ export function checkbox(field, { label, name = field }) {
 
 /**
  * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
- * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels.
+ * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels. `set(ui,
+ * value)` as for `slider` (then the buttons show the field's value again).
  */
-export function choice(field, { options, name = field }) {
+export function choice(field, { options, name = field, set = null }) {
   return {
     build(ui) {
       const control = radios({
         options: options.map((option) => ({ value: option.value, label: t(option.label) })),
         value: ui.state[field],
         name,
-        onChange: (value) => ui.set(field, value),
+        onChange: (value) => {
+          if (!set) return ui.set(field, value);
+          set(ui, value);
+          control.set(ui.state[field]);
+        },
       });
       return { element: control.element, sync: (state) => control.set(state[field]) };
     },
@@ -135,13 +148,17 @@ export function choice(field, { options, name = field }) {
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
  * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits.
+ * the limits (`min` may be a function of the state: a B-spline needs p + 1 points; the messages
+ * also get the state's fields, e.g. `{degree}`). `adjust(state, ui) → state` fixes what follows
+ * from the new list (a lower degree, clamped knots) before the model is built. `more`: further
+ * buttons in the same row, as `actions` takes them.
  */
-export function pointButtons(field, { min, max, prefix }) {
+export function pointButtons(field, { min, max, prefix, adjust = null, more = [] }) {
   return {
     build(ui) {
       const apply = (next) => {
-        const state = { ...ui.state, [field]: next.points };
+        let state = { ...ui.state, [field]: next.points };
+        if (adjust) state = adjust(state, ui);
         try {
           ui.replace(state);
         } catch (err) {
@@ -150,7 +167,8 @@ export function pointButtons(field, { min, max, prefix }) {
         }
         ui.handles?.select(next.index);
       };
-      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { [kind]: limit }), "error");
+      const lowest = () => (typeof min === "function" ? min(ui.state) : min);
+      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { ...ui.state, [kind]: limit }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
@@ -158,20 +176,21 @@ export function pointButtons(field, { min, max, prefix }) {
           else refuse("max", max);
         },
         remove(i) {
-          const next = withPointRemoved(ui.state[field], i, min);
+          const next = withPointRemoved(ui.state[field], i, lowest());
           if (next) apply(next);
-          else refuse("min", min);
+          else refuse("min", lowest());
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
       const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => ui.pointList.add(selected()) });
       const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
+      const others = more.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       return {
-        element: el("div", { class: "sl-button-row" }, addButton, removeButton),
+        element: el("div", { class: "sl-button-row" }, addButton, removeButton, ...others),
         sync(state) {
           const count = state[field].length;
           addButton.disabled = count >= max;
-          removeButton.disabled = count <= min;
+          removeButton.disabled = count <= lowest();
         },
       };
     },
@@ -222,15 +241,23 @@ export function shownWhen(when, item) {
 }
 
 /**
- * A row of buttons, `[{ name, label, title?, run(ui) }]` (`data-action=name`); `title` (legend
- * key) makes it a titled group.
+ * A row of buttons, `[{ name, label, title?, run(ui), disabled?(state, data) }]`
+ * (`data-action=name`); `title` (legend key) makes it a titled group. `disabled` is re-read
+ * after every change.
  */
 export function actions(list, { title = null } = {}) {
   return {
     build(ui) {
       const buttons = list.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       const row = el("div", { class: "sl-button-row" }, buttons);
-      return { element: title ? fieldset(t(title), row) : row };
+      return {
+        element: title ? fieldset(t(title), row) : row,
+        sync(state, data) {
+          list.forEach((a, k) => {
+            if (a.disabled) buttons[k].disabled = Boolean(a.disabled(state, data));
+          });
+        },
+      };
     },
   };
 }
