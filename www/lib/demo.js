@@ -8,10 +8,10 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider) |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), polygon? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement) |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -25,7 +25,7 @@
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
 import { FormulaPanel } from "./formula.js";
-import { Handles, pointHandles } from "./handles.js";
+import { Handles, pointHandles, pointListsHandles } from "./handles.js";
 import { t } from "./strings.js";
 
 /** True for a module written to this contract (rather than an old-style `mount`). */
@@ -96,6 +96,21 @@ export function mountDeclared(demo, initialState, ctx) {
       markChanged(field);
       if (final) ctx.commit(work, merge);
     },
+    /**
+     * Sets `state.weights[i]`: in place through `derive.weighted` when the demo has it (no
+     * rebuild while a weight slider is dragged), else like `set`.
+     */
+    setWeight(i, w, final = true) {
+      work.weights[i] = w;
+      if (derive.weighted) {
+        derive.weighted(model, i, w, work, ui);
+        if (changed) changed.add("weights");
+        view.requestDraw();
+      } else {
+        markChanged("weights");
+      }
+      if (final) ctx.commit(work);
+    },
     /** Marks a field changed after mutating it in place (a dragged point). */
     touch: markChanged,
     /** Records the working state as it is now. */
@@ -157,13 +172,28 @@ export function mountDeclared(demo, initialState, ctx) {
   if (handleSpec) {
     const moved = derive.moved
       ? (i, xy) => {
-          derive.moved(model, i, xy, work);
+          derive.moved(model, i, xy, work, ui);
           if (changed) changed.add(handleSpec.field);
           view.requestDraw();
         }
       : () => markChanged(handleSpec.field);
+    const lists = handleSpec.fields;
+    const source = lists
+      ? pointListsHandles(
+          lists.length,
+          (k) => work[lists[k]],
+          (i, xy, k) => {
+            if (derive.moved(model, i, xy, work, ui) === false) return false;
+            if (changed) changed.add(lists[k]);
+            view.requestDraw();
+            return true;
+          },
+          handleSpec.label,
+        )
+      : pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null);
     ui.handles = new Handles(view, {
-      ...pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null),
+      ...source,
+      polygon: handleSpec.polygon,
       constraint: handleSpec.constraint,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),

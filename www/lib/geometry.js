@@ -74,3 +74,22 @@ export function nearestGraph(values, count, samples, k, y, toY, maxDistance) {
   }
   return best;
 }
+
+/**
+ * Distance from (x, y) to the polyline through the flat points `flat` [x0, y0, x1, y1, …]: the
+ * least distance to one of its segments, each the clamped projection of the point onto it.
+ * A measurement between two sampled curves that does not depend on their parametrisations.
+ */
+export function distanceToPolyline(x, y, flat) {
+  let best = Infinity;
+  for (let k = 0; k + 3 < flat.length; k += 2) {
+    const ax = flat[k];
+    const ay = flat[k + 1];
+    const dx = flat[k + 2] - ax;
+    const dy = flat[k + 3] - ay;
+    const length2 = dx * dx + dy * dy;
+    const s = length2 > 0 ? Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / length2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - s * dx, y - ay - s * dy));
+  }
+  return best;
+}

@@ -167,13 +167,21 @@ export function pointButtons(field, { min, max, prefix }) {
 
 /**
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
- * `kind` "note" (default) or "readout" (the larger figure of merit).
+ * `kind` "note" (default) or "readout" (the larger figure of merit); `live` makes it a polite
+ * live region; `dataset(state, data)` → `{ key: string }` adds data attributes (exact numbers
+ * for tests, e.g. `data-gap-ab`).
  */
-export function readout(name, text, { kind = "note" } = {}) {
+export function readout(name, text, { kind = "note", live = false, dataset = null } = {}) {
   return {
     build(ui) {
-      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } });
-      return { element: node, sync: (state, data) => setText(node, text(state, data, ui)) };
+      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name }, "aria-live": live ? "polite" : undefined });
+      return {
+        element: node,
+        sync(state, data) {
+          setText(node, text(state, data, ui));
+          if (dataset) Object.assign(node.dataset, dataset(state, data));
+        },
+      };
     },
   };
 }

@@ -871,6 +871,10 @@ const EN = {
   "projective.mappedWeights": "Mapped weights w′ᵢ: {weights}",
   "projective.affineMap": "an affine map",
   "projective.perspectiveMap": "a perspective map",
+  "projective.tex.affine": "(affine map: ",
+  "projective.tex.unchanged": ", weights unchanged)",
+  "projective.tex.invariant": "(invariant)",
+  "projective.tex.ignored": "(weights ignored)",
   "projective.aria": "A cubic Bézier curve in the square [0, 4]² and its image under {kind} sending the square's corners to {corners}: the mapped curve has weights {weights}; the original samples mapped one by one lie on it (largest gap {ab}); the mapped points with the old weights give a different curve (up to {ac} away)",
 
   // Demo: negative-weights (strings of www/demos/negative-weights.js; keys start with the demo's `strings` prefix)
