@@ -11,7 +11,7 @@
  * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider) |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), polygon? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement) |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), polygon? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement) |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -177,6 +177,7 @@ export function mountDeclared(demo, initialState, ctx) {
           view.requestDraw();
         }
       : () => markChanged(handleSpec.field);
+    const label = (i) => handleSpec.label(i, work, data);
     const lists = handleSpec.fields;
     const source = lists
       ? pointListsHandles(
@@ -188,9 +189,9 @@ export function mountDeclared(demo, initialState, ctx) {
             view.requestDraw();
             return true;
           },
-          handleSpec.label,
+          label,
         )
-      : pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null);
+      : pointHandles(() => work[handleSpec.field], moved, handleSpec.label ? label : null);
     ui.handles = new Handles(view, {
       ...source,
       polygon: handleSpec.polygon,

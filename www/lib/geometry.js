@@ -14,8 +14,11 @@ export function flatten(points) {
   return flat;
 }
 
-/** [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull). */
-export function boundsOf(points) {
+/**
+ * [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull),
+ * written into `out` when given (no allocation while drawing).
+ */
+export function boundsOf(points, out = null) {
   let x0 = Infinity;
   let y0 = Infinity;
   let x1 = -Infinity;
@@ -26,7 +29,12 @@ export function boundsOf(points) {
     x1 = Math.max(x1, x);
     y1 = Math.max(y1, y);
   }
-  return [x0, y0, x1, y1];
+  if (!out) return [x0, y0, x1, y1];
+  out[0] = x0;
+  out[1] = y0;
+  out[2] = x1;
+  out[3] = y1;
+  return out;
 }
 
 /**

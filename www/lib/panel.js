@@ -8,7 +8,7 @@
  */
 import { slider as sliderElement, checkbox as checkboxElement, radios, button, group as fieldset, el, setText } from "./controls.js";
 import { Player } from "./player.js";
-import { withPointAdded, withPointRemoved } from "./point-list.js";
+import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -122,13 +122,24 @@ export function choice(field, { options, name = field }) {
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
  * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits.
+ * the limits. `companions: { weights: 1 }` names lists with one entry per point (a rational
+ * curve's weights): a new point gets the value given, a removed point takes its entry along.
  */
-export function pointButtons(field, { min, max, prefix }) {
+export function pointButtons(field, { min, max, prefix, companions = {} }) {
   return {
     build(ui) {
-      const apply = (next) => {
-        const state = { ...ui.state, [field]: next.points };
+      /** Copies of the companion lists with their value inserted at `at` (`insert`), or entry `at` removed. */
+      const alongside = (at, insert) => {
+        const lists = {};
+        for (const [name, value] of Object.entries(companions)) {
+          lists[name] = ui.state[name].slice();
+          if (insert) lists[name].splice(at, 0, value);
+          else lists[name].splice(at, 1);
+        }
+        return lists;
+      };
+      const apply = (next, lists = {}) => {
+        const state = { ...ui.state, ...lists, [field]: next.points };
         try {
           ui.replace(state);
         } catch (err) {
@@ -141,12 +152,12 @@ export function pointButtons(field, { min, max, prefix }) {
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
-          if (next) apply(next);
+          if (next) apply(next, alongside(next.index, true));
           else refuse("max", max);
         },
         remove(i) {
           const next = withPointRemoved(ui.state[field], i, min);
-          if (next) apply(next);
+          if (next) apply(next, alongside(pointIndex(ui.state[field], i), false));
           else refuse("min", min);
         },
       };
@@ -187,13 +198,13 @@ export function readout(name, text, { kind = "note", live = false, dataset = nul
 }
 
 /**
- * A row of buttons, `[{ name, label, title?, run(ui) }]` (`data-action=name`); `title` (legend
- * key) makes it a titled group.
+ * A row of buttons, `[{ name, label, params?, title?, run(ui) }]` (`data-action=name`; `params`
+ * fill the label's placeholders); `title` (legend key) makes it a titled group.
  */
 export function actions(list, { title = null } = {}) {
   return {
     build(ui) {
-      const buttons = list.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
+      const buttons = list.map((a) => button({ label: t(a.label, a.params), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       const row = el("div", { class: "sl-button-row" }, buttons);
       return { element: title ? fieldset(t(title), row) : row };
     },

@@ -746,6 +746,8 @@ const EN = {
   "weights.column.homogeneous": "Pᵢʷ = (wᵢxᵢ, wᵢyᵢ, wᵢ)",
   "weights.column.share": "share at t",
   "weights.column.distance": "|P(t) − Pᵢ|",
+  "weights.tex.ratios": "only ratios matter: ",
+  "weights.tex.same": " gives the same curve",
   "weights.aria": "Rational {kind} Bézier curve with weights ({weights}) and, dotted, the polynomial curve with all weights 1; at t = {t} the point P(t) = ({x}, {y}) (all weights 1: ({gx}, {gy})), {distance} from the heaviest point {heaviest}; inset: the homogeneous control points, their polynomial curve in (wx, wy, w) and rays from the origin projecting it onto the plane w = 1",
 
   // Demo: conics (strings of www/demos/conics.js; keys start with the demo's `strings` prefix)
