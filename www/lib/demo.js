@@ -8,7 +8,7 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider) |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
  * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), polygon? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement) |
@@ -131,7 +131,9 @@ export function mountDeclared(demo, initialState, ctx) {
 
   function markChanged(field) {
     if (changed) changed.add(field);
-    if (derive.from.includes(field)) modelStale = true;
+    const inPlace = derive.inPlace?.[field];
+    if (inPlace && !modelStale) inPlace(model, work, ui);
+    else if (derive.from.includes(field)) modelStale = true;
     view.requestDraw();
   }
 

@@ -101,3 +101,20 @@ export function distanceToPolyline(x, y, flat) {
   }
   return best;
 }
+
+/**
+ * True when (x, y) lies in the triangle of the three [x, y] `points`, edges included — drawing
+ * support for the convex hull property of a quadratic. Each edge's cross product with the point
+ * has the sign of the triangle's area when the point is on its inner side; `tolerance` (relative
+ * to the area) lets points on an edge count as inside despite rounding.
+ */
+export function inTriangle(x, y, points, tolerance) {
+  const [[x0, y0], [x1, y1], [x2, y2]] = points;
+  const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+  const scale = Math.abs(area) || 1;
+  const d0 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) * Math.sign(area || 1);
+  const d1 = ((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1)) * Math.sign(area || 1);
+  const d2 = ((x0 - x2) * (y - y2) - (x - x2) * (y0 - y2)) * Math.sign(area || 1);
+  const eps = -tolerance * scale;
+  return d0 >= eps && d1 >= eps && d2 >= eps;
+}
