@@ -3,12 +3,11 @@
  * 1, w₁, 1 where the slider lets w₁ pass through zero:
  *   P(t) = ((1−t)² P₀ + 2t(1−t) w₁P₁ + t² P₂) / w(t),   w(t) = 1 − 2(1 − w₁) t(1 − t).
  * For w₁ > 0 the curve is the core's `BezierCurve`. For w₁ ≤ 0 the constructor throws, and the
- * demo shows its exact message; it then draws what the curve *would* be: the homogeneous curve
- * is an ordinary polynomial curve in (wx, wy, w) space — a 3D `BezierCurve` on the points
- * (wᵢxᵢ, wᵢyᵢ, wᵢ), which the core accepts as plain coordinates — sampled by the core and
- * divided by w here (the central projection, display only). Where w(t) changes sign the point
- * runs off to infinity (a pole): the drawn path breaks there, and the plot underneath shows
- * w(t) crossing zero.
+ * demo shows its exact message; it then draws what the curve *would* be from the core's
+ * teaching function `rationalPoles` (weights of any sign, no curve object): the homogeneous
+ * samples (wx, wy, w), divided by w here (the central projection, display only), the t where
+ * w(t) is zero, and the direction in which P(t) runs off to infinity there (a pole): the drawn
+ * path breaks, and the plot underneath shows w(t) crossing zero at the core's roots.
  */
 import { field } from "../lib/validate.js";
 import { slider, readout, actions, group } from "../lib/panel.js";
@@ -42,13 +41,11 @@ const W1_STEP = 0.01;
 const PRESETS = Object.freeze([1, -0.5, -1.5]);
 /** The fitted window holds the triangle, P(1/2) and the curve within this many triangle sizes of its middle. */
 const FIT_REACH = 1.2;
-/** Samples: the real curve, and the homogeneous curve (dense: the projection races near a pole). */
+/** Samples: the real curve, and the homogeneous samples (dense: the projection races near a pole). */
 const CURVE_SAMPLES = 256;
 const HOM_SAMPLES = 1201;
-/** |w| below this counts as zero (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
+/** |w| below this counts as zero when projecting (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
 const ZERO_W = 1e-12;
-/** At most this many poles are recorded (a quadratic has two at most). */
-const MAX_POLES = 4;
 /** At most this many "to infinity" marks are drawn where the path leaves the figure. */
 const MAX_EXITS = 8;
 /** A sample this far (model units, relative to the triangle) outside the hull counts as outside. */
@@ -77,94 +74,64 @@ export const fields = {
   w1: field.number({ min: W1_MIN, max: W1_MAX }),
 };
 
-/** The homogeneous point i, (wᵢxᵢ, wᵢyᵢ, wᵢ) with weights 1, w₁, 1, written into `out` at 3·`at`. */
-function homogeneousPoint(s, i, out, at = 0) {
-  const w = i === 1 ? s.w1 : 1;
-  out[3 * at] = w * s.points[i][0];
-  out[3 * at + 1] = w * s.points[i][1];
-  out[3 * at + 2] = w;
-  return out;
-}
+/** The weights 1, w₁, 1. */
+const weightsOf = (s) => new Float64Array([1, s.w1, 1]);
 
 /**
  * The library's verdict on weights 1, w₁, 1: with w₁ > 0 its curve (made, or updated in place);
  * otherwise the constructor's refusal, word for word (the last accepted curve is kept).
  */
 function askLibrary(library, s, sl) {
-  const weights = new Float64Array([1, s.w1, 1]);
   if (s.w1 > 0) {
     library.refusal = "";
     if (library.curve) library.curve.setWeight(1, s.w1);
-    else library.curve = new sl.BezierCurve(flatten(s.points), 2, weights);
+    else library.curve = new sl.BezierCurve(flatten(s.points), 2, weightsOf(s));
     return;
   }
   try {
-    new sl.BezierCurve(flatten(s.points), 2, weights).free(); // never gets here
+    new sl.BezierCurve(flatten(s.points), 2, weightsOf(s)).free(); // never gets here
     library.refusal = "";
   } catch (err) {
     library.refusal = err.message;
   }
 }
 
-const homScratch = new Float64Array(3);
-
 /**
- * The 3D polynomial curve on the homogeneous points (always valid), and what the library says
- * (`library.curve` while it accepts). A dragged point or w₁ updates both in place.
+ * What the library says (`library.curve` while it accepts the weights, else its refusal); a
+ * dragged point or w₁ updates it in place.
  */
 export const derive = {
   from: ["points"],
   build(s, sl) {
-    const points = new Float64Array(9);
-    for (let i = 0; i < 3; i++) homogeneousPoint(s, i, points, i);
-    const homogeneous = new sl.BezierCurve(points, 3);
+    sl.rationalPoles(flatten(s.points), 2, weightsOf(s), 2); // throws first on a bad state
     const library = { curve: null, refusal: "", free: () => library.curve?.free() };
     askLibrary(library, s, sl);
-    return { homogeneous, library };
+    return { library };
   },
-  moved(m, i, xy, s) {
-    m.library.curve?.setControlPoint(i, xy);
-    m.homogeneous.setControlPoint(i, homogeneousPoint(s, i, homScratch));
-  },
-  inPlace: {
-    w1(m, s, ui) {
-      m.homogeneous.setControlPoint(1, homogeneousPoint(s, 1, homScratch));
-      askLibrary(m.library, s, ui.sl);
-    },
-  },
+  moved: (m, i, xy) => m.library.curve?.setControlPoint(i, xy),
+  inPlace: { w1: (m, s, ui) => askLibrary(m.library, s, ui.sl) },
 };
-
-/**
- * Where w(t) vanishes, from the core's homogeneous samples: a sample with |w| ≤ ZERO_W, or a
- * sign change between two samples (t interpolated linearly); and the range of w. (JS until the
- * core gives the zeros of w(t) itself; this is the one place to swap.)
- */
-function polesFromSamples(hom) {
-  const poles = new Float64Array(MAX_POLES);
-  let count = 0;
-  let minW = Infinity;
-  let maxW = -Infinity;
-  for (let k = 0; k < HOM_SAMPLES; k++) {
-    const w = hom[3 * k + 2];
-    minW = Math.min(minW, w);
-    maxW = Math.max(maxW, w);
-    if (k === HOM_SAMPLES - 1 || count >= MAX_POLES) continue;
-    const next = hom[3 * k + 5];
-    const tk = k / (HOM_SAMPLES - 1);
-    if (Math.abs(w) <= ZERO_W) {
-      if (k === 0 || Math.abs(hom[3 * k - 1]) > ZERO_W) poles[count++] = tk;
-    } else if (Math.abs(next) > ZERO_W && (w > 0) !== (next > 0)) {
-      poles[count++] = tk + w / (w - next) / (HOM_SAMPLES - 1);
-    }
-  }
-  return { ts: poles.subarray(0, count), count, minW, maxW };
-}
 
 /** What is drawn and said: the samples, the poles, P(1/2), whether the curve leaves its hull. */
 export const compute = {
-  hom: [["points", "w1"], (s, d) => d.homogeneous.sampleUniform(HOM_SAMPLES)],
+  /** The core's teaching data: homogeneous samples, the roots of w(t), the pole directions. */
+  teaching: [["points", "w1"], (s, d) => d.sl.rationalPoles(flatten(s.points), 2, weightsOf(s), HOM_SAMPLES)],
+  hom: [["points", "w1"], (s, d) => d.teaching.samples],
   samples: [["points", "w1"], (s, d) => (d.library.refusal ? null : d.library.curve.sampleUniform(CURVE_SAMPLES))],
-  poles: [["points", "w1"], (s, d) => polesFromSamples(d.hom)],
+  /** The roots, and the range of the sampled w(t) (the plot's scale). */
+  poles: [
+    ["points", "w1"],
+    (s, d) => {
+      const { roots, directions } = d.teaching;
+      let minW = Infinity;
+      let maxW = -Infinity;
+      for (let k = 0; k < HOM_SAMPLES; k++) {
+        minW = Math.min(minW, d.hom[3 * k + 2]);
+        maxW = Math.max(maxW, d.hom[3 * k + 2]);
+      }
+      return { ts: roots, directions, count: roots.length, minW, maxW };
+    },
+  ],
   poleLabels: [
     ["points", "w1"],
     (s, d) => Array.from(d.poles.ts, (p) => t("negativeWeights.poleLabel", { t: fmt(p) })),
@@ -240,6 +207,7 @@ export const controls = [
       dataset: (s, d) => ({
         poles: String(d.poles.count),
         poleTs: Array.from(d.poles.ts).join(","),
+        poleDirections: Array.from(d.poles.directions).join(","),
         minW: String(d.poles.minW),
       }),
     }),
