@@ -186,6 +186,10 @@ export function mountDeclared(demo, initialState, ctx) {
           lists.length,
           (k) => work[lists[k]],
           (i, xy, k) => {
+            if (!derive.moved) {
+              markChanged(lists[k]);
+              return true;
+            }
             if (derive.moved(model, i, xy, work, ui) === false) return false;
             if (changed) changed.add(lists[k]);
             view.requestDraw();
