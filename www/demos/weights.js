@@ -20,7 +20,7 @@ import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { drawKey } from "../lib/key.js";
-import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "../lib/handles.js";
+import { weightRings, drawWeightRings } from "../lib/weight-rings.js";
 import { el, setText } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
 import { drawHomogeneousInset, insetOnRight, insetSize } from "../lib/homogeneous-inset.js";
@@ -56,12 +56,6 @@ export const CURVE_SAMPLES = 256;
 export const RAY_TS = Object.freeze([0, 0.25, 0.5, 0.75, 1]);
 /** Slider resolution for t. */
 const T_SLIDER_STEP = 0.001;
-/** Weight ring: radius RING_PX·w^RING_EXPONENT (CSS px), so w = 1 is a 16 px ring, w = 10 about 32 px. */
-const RING_PX = 16;
-const RING_EXPONENT = 0.3;
-/** A press this close (CSS px) to a ring's circle grabs it (touch: the larger value). */
-const RING_HIT_PX = 5;
-const RING_HIT_TOUCH_PX = 9;
 /** Multiplier of the "scale all weights" button (only ratios matter: the curve stays). */
 const SCALE_FACTOR = 2;
 /** Distances below this are written in exponent form (rounding noise such as 2e-16). */
@@ -258,16 +252,9 @@ const KEY = Object.freeze([
 export function draw(r, v, s, d) {
   const theme = r.theme;
   const pts = s.points;
-  const n = pts.length - 1;
-  const cycle = theme.basisRing.length;
   pointsPath(r, v, pts);
   r.paint(theme.polygon);
-  // Weight rings: radius grows with wᵢ (RING_PX at w = 1).
-  for (let i = 0; i <= n; i++) {
-    r.beginPath();
-    r.circle(v.sx(pts[i][0]), v.sy(pts[i][1]), ringRadius(s.weights[i]) * r.scale);
-    r.paint(theme.basisStroke[i % cycle]);
-  }
+  drawWeightRings(r, v, pts, s.weights);
   // The polynomial ghost (all weights 1), then the rational curve on top.
   flatPath(r, v, d.ghostSamples, 0, CURVE_SAMPLES);
   r.paint(theme.compareCurve[2]);
@@ -346,7 +333,7 @@ export function label(s, d) {
 /** The taller figure, the weight rings as a pointer tool, and the table (one row per point). */
 export function setup(ui) {
   ui.ctx.slots.figure.classList.add("sl-figure-tall");
-  ringTool(ui);
+  weightRings(ui, { min: WEIGHT_MIN, max: WEIGHT_MAX });
   const { title, table, wrap } = titledTable("weights");
   ui.ctx.slots.details.append(title, wrap);
   const columns = ["point", "weight", "homogeneous", "share", "distance"];
@@ -384,51 +371,6 @@ export function setup(ui) {
       });
     },
   };
-}
-
-/** Pressing on a ring's circle (outside the handle) drags wᵢ: the radius gives the weight. */
-function ringTool(ui) {
-  const { view } = ui;
-  let dragging = -1;
-  /** Index of the weight ring whose circle passes near canvas point (x, y), or -1. */
-  const ringAt = (x, y, pointerType) => {
-    const touch = pointerType === "touch";
-    const slack = touch ? RING_HIT_TOUCH_PX : RING_HIT_PX;
-    const inner = touch ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE; // the handle owns its centre
-    const { points, weights } = ui.state;
-    for (let i = points.length - 1; i >= 0; i--) {
-      const d = Math.hypot(x - view.sx(points[i][0]), y - view.sy(points[i][1]));
-      if (d > inner && Math.abs(d - ringRadius(weights[i]) * view.renderer.scale) <= slack) return i;
-    }
-    return -1;
-  };
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      const i = ringAt(x, y, event.pointerType);
-      if (i < 0) return false;
-      dragging = i;
-      ui.handles.select(i);
-      return true;
-    },
-    pointerMove(event, x, y) {
-      const point = ui.state.points[dragging];
-      if (!point) return;
-      const d = Math.hypot(x - view.sx(point[0]), y - view.sy(point[1])) / view.renderer.scale;
-      const w = (Math.max(d, 1) / RING_PX) ** (1 / RING_EXPONENT);
-      ui.setWeight(dragging, Math.min(WEIGHT_MAX, Math.max(WEIGHT_MIN, w)), false);
-    },
-    pointerUp() {
-      if (dragging < 0) return;
-      dragging = -1;
-      ui.commit();
-    },
-    hover: (x, y, pointerType) => (ringAt(x, y, pointerType) >= 0 ? "ew-resize" : null),
-  });
-}
-
-/** Radius (CSS px at scale 1) of the ring that shows weight w. */
-function ringRadius(w) {
-  return RING_PX * w ** RING_EXPONENT;
 }
 
 function tText(s) {
