@@ -237,6 +237,71 @@ fn de_boor_triangle_ends_at_the_point() {
 }
 
 #[test]
+fn de_boor_alphas_of_the_croatian_example_by_hand() {
+    // u = 3/2 in span k = 3 of U = [0,0,0,1,2,3,4,4,4], p = 2:
+    // r = 1: α_1 = (u − u_2)/(u_4 − u_2) = 3/4, α_2 = (u − u_3)/(u_5 − u_3) = 1/4;
+    // r = 2: α_2 = (u − u_3)/(u_4 − u_3) = 1/2.
+    let (k, alphas) = croatian().de_boor_alphas(1.5).unwrap();
+    assert_eq!(k, 3);
+    let got: Vec<_> = alphas
+        .iter()
+        .map(|a| (a.level, a.j, a.lo, a.hi, a.denominator, a.value))
+        .collect();
+    assert_eq!(
+        got,
+        vec![
+            (1, 1, 2, 4, 2.0, 0.75),
+            (1, 2, 3, 5, 2.0, 0.25),
+            (2, 2, 3, 4, 1.0, 0.5),
+        ]
+    );
+}
+
+#[test]
+fn de_boor_alphas_on_bezier_knots_are_all_t() {
+    // Knots 0^4 1^4: every α_j^r = (t − 0)/(1 − 0) = t, the de Casteljau factor.
+    let pts = pts2(&[(0.0, 0.0), (2.0, 2.0), (6.0, 4.0), (8.0, 2.0)]);
+    let b = BSplineCurve::new(pts, 3, vec![0., 0., 0., 0., 1., 1., 1., 1.], None).unwrap();
+    let (k, alphas) = b.de_boor_alphas(0.25).unwrap();
+    assert_eq!(k, 3);
+    assert_eq!(alphas.len(), 6);
+    let order: Vec<_> = alphas.iter().map(|a| (a.level, a.j)).collect();
+    assert_eq!(order, vec![(1, 1), (1, 2), (1, 3), (2, 2), (2, 3), (3, 3)]);
+    assert!(alphas
+        .iter()
+        .all(|a| a.value == 0.25 && a.denominator == 1.0));
+    assert!(b.de_boor_alphas(1.5).is_err());
+    assert!(b.de_boor_alphas(f64::NAN).is_err());
+}
+
+#[test]
+fn matrix_form_evaluation_of_the_croatian_example_by_hand() {
+    let c = croatian();
+    // Span 3 (u ∈ [1, 2]) at t = 1/2, u = 3/2: [1/4 1/2 1] M gives the syllabus' basis values
+    // N_{1,2} = (2 − u)²/2 = 1/8, N_{2,2} = (−2u² + 6u − 3)/2 = 3/4, N_{3,2} = (u − 1)²/2 = 1/8;
+    // the point is (1/8)(1, 2) + (3/4)(3, 3) + (1/8)(5, 1) = (3, 21/8).
+    let f = c.evaluate_matrix_form(3, 0.5).unwrap();
+    assert_eq!(f.monomials, vec![0.25, 0.5, 1.0]);
+    assert_eq!(f.basis, vec![0.125, 0.75, 0.125]);
+    assert_eq!(f.point, DVec2::new(3.0, 2.625));
+    // The first span (u ∈ [0, 1]) at t = 1/2: N_{0,2} = (1 − u)² = 1/4, N_{1,2} = u(4 − 3u)/2 = 5/8,
+    // N_{2,2} = u²/2 = 1/8; the point (5/8)(1, 2) + (1/8)(3, 3) = (1, 13/8).
+    let f = c.evaluate_matrix_form(2, 0.5).unwrap();
+    assert_eq!(f.basis, vec![0.25, 0.625, 0.125]);
+    assert_eq!(f.point, DVec2::new(1.0, 1.625));
+    // t = 1 is the end of the segment: [1 1 1] M is the basis at u_{k+1}.
+    let f = c.evaluate_matrix_form(5, 1.0).unwrap();
+    assert_eq!(f.monomials, vec![1.0, 1.0, 1.0]);
+    assert_eq!(f.point, DVec2::new(8.0, 0.0));
+    assert!(c.evaluate_matrix_form(3, 1.5).is_err());
+    assert!(c.evaluate_matrix_form(3, -0.25).is_err());
+    assert!(c.evaluate_matrix_form(3, f64::NAN).is_err());
+    assert!(c.evaluate_matrix_form(0, 0.5).is_err());
+    assert!(c.evaluate_matrix_form(6, 0.5).is_err());
+    assert!(c.evaluate_matrix_form(usize::MAX, 0.5).is_err());
+}
+
+#[test]
 fn clamped_curves_interpolate_their_end_points() {
     let c = croatian();
     assert_eq!(c.evaluate(0.0).unwrap(), DVec2::new(0.0, 0.0));
@@ -254,6 +319,20 @@ fn clamped_curves_interpolate_their_end_points() {
         1e-14,
         "end tangent",
     );
+}
+
+#[test]
+fn insertion_alphas_of_the_croatian_example_by_hand() {
+    // U = [0,0,0,1,2,3,4,4,4], p = 2, α_i = (s − u_i)/(u_{i+2} − u_i), i = k − 1, k.
+    let c = croatian();
+    // s = 3/2 in span 3: α_2 = (3/2 − 0)/(2 − 0) = 3/4, α_3 = (3/2 − 1)/(3 − 1) = 1/4.
+    assert_eq!(c.insertion_alphas(1.5).unwrap(), (3, vec![0.75, 0.25]));
+    // s = 7/2 in span 5: α_4 = (7/2 − 2)/(4 − 2) = 3/4, α_5 = (7/2 − 3)/(4 − 3) = 1/2.
+    assert_eq!(c.insertion_alphas(3.5).unwrap(), (5, vec![0.75, 0.5]));
+    // s = 4, the end of the domain, is in the last span: α_4 = 2/2, α_5 = 1/1.
+    assert_eq!(c.insertion_alphas(4.0).unwrap(), (5, vec![1.0, 1.0]));
+    assert!(c.insertion_alphas(4.5).is_err());
+    assert!(c.insertion_alphas(f64::INFINITY).is_err());
 }
 
 #[test]

@@ -53,6 +53,12 @@ struct BasisTableJs {
 }
 
 #[derive(Serialize)]
+struct InsertionAlphasJs {
+    span: usize,
+    alphas: Vec<f64>,
+}
+
+#[derive(Serialize)]
 struct KnotContinuityJs {
     knot: f64,
     multiplicity: usize,
@@ -276,6 +282,28 @@ impl JsBSplineCurve {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor(u)?)))
     }
 
+    /// Every α of de Boor's triangle at u, six numbers each `[r, j, lo, hi, u_hi − u_lo, α]`:
+    /// `α_j^r = (u − u_lo)/(u_hi − u_lo)` with `lo = j + k − p`, `hi = j + 1 + k − r`
+    /// (k = span(u)); levels r = 1..p in order, j = r..p ascending (the order of `deBoor(u)`'s
+    /// points after level 0), p(p+1)/2 alphas.
+    #[wasm_bindgen(js_name = deBoorAlphas)]
+    pub fn de_boor_alphas(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        let (_, alphas) = with_curve!(&self.inner, c => c.de_boor_alphas(u))?;
+        Ok(alphas
+            .iter()
+            .flat_map(|a| {
+                [
+                    a.level as f64,
+                    a.j as f64,
+                    a.lo as f64,
+                    a.hi as f64,
+                    a.denominator,
+                    a.value,
+                ]
+            })
+            .collect())
+    }
+
     /// de Boor's triangle on the homogeneous points, dim + 1 numbers each.
     #[wasm_bindgen(js_name = deBoorHomogeneous)]
     pub fn de_boor_homogeneous(&self, u: f64) -> Result<Vec<f64>, JsError> {
@@ -290,6 +318,17 @@ impl JsBSplineCurve {
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.insert_knot(u, times)?),
         ))
+    }
+
+    /// Boehm's rule for inserting u once: `{ span: k, alphas }` with `alphas[m]` =
+    /// `α_i = (u − u_i)/(u_{i+p} − u_i)` for i = k − p + 1 + m (m = 0..p−1).
+    #[wasm_bindgen(js_name = insertionAlphas, unchecked_return_type = "{ span: number; alphas: number[] }")]
+    pub fn insertion_alphas(&self, u: f64) -> Result<JsValue, JsError> {
+        let (span, alphas) = with_curve!(&self.inner, c => c.insertion_alphas(u))?;
+        Ok(serde_wasm_bindgen::to_value(&InsertionAlphasJs {
+            span,
+            alphas,
+        })?)
     }
 
     /// A new curve with every knot of `us` inserted (knot refinement).
@@ -342,6 +381,21 @@ impl JsBSplineCurve {
         let k = whole("k", k)?;
         let m = with_curve!(&self.inner, c => c.segment_matrix(k, local.unwrap_or(true)))?;
         Ok(m.concat())
+    }
+
+    /// The segment of span k in matrix form at the local t ∈ [0, 1], flat: the monomials
+    /// `[t^p … t 1]` (p + 1), the row `[t^p … 1] M` with M = segmentMatrix(k, true) (p + 1, the
+    /// weights of P_{k−p} … P_k), then the point `[t^p … 1] M [P_{k−p} … P_k]^T` (dim).
+    #[wasm_bindgen(js_name = evaluateMatrixForm)]
+    pub fn evaluate_matrix_form(&self, k: f64, t: f64) -> Result<Vec<f64>, JsError> {
+        let k = whole("k", k)?;
+        Ok(with_curve!(&self.inner, c => {
+            let form = c.evaluate_matrix_form(k, t)?;
+            let mut out = form.monomials;
+            out.extend_from_slice(&form.basis);
+            out.extend(flatten_points(&[form.point]));
+            out
+        }))
     }
 
     /// Moves control point i in place (a closed curve's repeated copy follows).

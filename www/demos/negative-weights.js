@@ -1,37 +1,32 @@
 /**
  * Demo (syllabus §4): why the library refuses weights ≤ 0. A rational quadratic with weights
- * 1, w₁, 1 where the slider lets w₁ pass through zero. For w₁ > 0 the curve is the core's
- * `BezierCurve`. For w₁ ≤ 0 the constructor throws, and the demo shows its exact message; it
- * then draws what the curve *would* be: the homogeneous curve is an ordinary polynomial curve
- * in (wx, wy, w) space — a 3D `BezierCurve` on the points (wᵢxᵢ, wᵢyᵢ, wᵢ), which the core
- * accepts as plain coordinates — sampled by the core and divided by w here (the central
- * projection, display only). Where w(t) changes sign the point runs off to infinity (a pole):
- * the drawn path breaks there, and the plot underneath shows w(t) = Σ Bᵢ(t) wᵢ crossing zero.
- *
- * Drags update both curves in place (`setControlPoint`), one `sampleUniform` per change; the
- * draw path allocates nothing (clipping uses scratch arrays).
+ * 1, w₁, 1 where the slider lets w₁ pass through zero:
+ *   P(t) = ((1−t)² P₀ + 2t(1−t) w₁P₁ + t² P₂) / w(t),   w(t) = 1 − 2(1 − w₁) t(1 − t).
+ * For w₁ > 0 the curve is the core's `BezierCurve`. For w₁ ≤ 0 the constructor throws, and the
+ * demo shows its exact message; it then draws what the curve *would* be from the core's
+ * teaching function `rationalPoles` (weights of any sign, no curve object): the homogeneous
+ * samples (wx, wy, w), divided by w here (the central projection, display only), the t where
+ * w(t) is zero, and the direction in which P(t) runs off to infinity there (a pole): the drawn
+ * path breaks, and the plot underneath shows w(t) crossing zero at the core's roots.
  */
-import { Handles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
+import { field } from "../lib/validate.js";
+import { slider, readout, actions, group } from "../lib/panel.js";
 import { fmt } from "../lib/format.js";
-import { t } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
-import { drawCaption } from "../lib/draw.js";
+import { t, tp } from "../lib/strings.js";
+import { flatten, boundsOf, inTriangle } from "../lib/geometry.js";
+import { drawCaption, pointsPath } from "../lib/draw.js";
+import { projectedPath, ExitMarks } from "../lib/clip.js";
 
 export const id = "negative-weights";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "negativeWeights";
-export const title = t("negativeWeights.title");
-export const summary = t("negativeWeights.summary");
 /** Syllabus section. */
 export const section = 4;
 
 /**
- * w₁ = −2: the denominator w(t) = 1 − 2(1 − w₁)t(1 − t) = 1 − 6t(1 − t) vanishes at
- * t = 1/2 ± √3/6 ≈ 0.211 and 0.789, two poles; the middle piece is the hyperbola's other
- * branch, through P(1/2) = (P₀ + 2w₁P₁ + P₂)/(2 + 2w₁) = (2, 6).
+ * w₁ = −2: the denominator w(t) = 1 − 6t(1 − t) vanishes at t = 1/2 ± √3/6 ≈ 0.211 and 0.789,
+ * two poles; the middle piece is the hyperbola's other branch, through
+ * P(1/2) = (P₀ + 2w₁P₁ + P₂)/(2 + 2w₁) = (2, 6).
  */
 export const defaultState = Object.freeze({
   points: Object.freeze([[0, 0], [2, 3], [4, 0]].map(Object.freeze)),
@@ -46,30 +41,24 @@ const W1_STEP = 0.01;
 const PRESETS = Object.freeze([1, -0.5, -1.5]);
 /** The fitted window holds the triangle, P(1/2) and the curve within this many triangle sizes of its middle. */
 const FIT_REACH = 1.2;
-/** Samples: the real curve, and the homogeneous curve (dense: the projection races near a pole). */
+/** Samples: the real curve, and the homogeneous samples (dense: the projection races near a pole). */
 const CURVE_SAMPLES = 256;
 const HOM_SAMPLES = 1201;
-/** |w| below this counts as zero (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
+/** |w| below this counts as zero when projecting (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
 const ZERO_W = 1e-12;
-/** At most this many poles are recorded (a quadratic has two at most). */
-const MAX_POLES = 4;
 /** At most this many "to infinity" marks are drawn where the path leaves the figure. */
 const MAX_EXITS = 8;
 /** A sample this far (model units, relative to the triangle) outside the hull counts as outside. */
 const HULL_TOLERANCE = 1e-9;
-/**
- * The plot of w(t) takes this fraction of the canvas height, below the curve (at least
- * PLOT_MIN_PX, at most PLOT_FRACTION_SHORT of a short canvas).
- */
+/** The plot of w(t): PLOT_FRACTION of the canvas height (at least PLOT_MIN_PX, at most PLOT_FRACTION_SHORT). */
 const PLOT_FRACTION = 0.34;
 const PLOT_MIN_PX = 140;
 const PLOT_FRACTION_SHORT = 0.5;
 const PLOT_MARGIN = Object.freeze({ top: 30, right: 24, bottom: 30, left: 50 });
 /** Extra room above and below the plotted values, as a fraction of their range. */
 const PLOT_PAD = 0.1;
-/** Length of tick marks, CSS px. */
+/** Length of tick marks, vertical distance between pole labels in the plot, CSS px. */
 const TICK_PX = 5;
-/** Vertical distance between pole labels in the plot, CSS px. */
 const POLE_LINE_PX = 18;
 /** The path is clipped to the figure plus this margin (CSS px). */
 const CLIP_MARGIN = 2;
@@ -78,94 +67,170 @@ const EDGE_PX = 14;
 const CAPTION_PX = 34;
 /** Height (CSS px) of the band at the top kept for the caption. */
 const CAPTION_BAND_PX = 30;
+const HANDLE_LABELS = Object.freeze(["P₀", "P₁", "P₂"]);
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "w1"]);
-  checkPoints(state, "points", { min: 3, max: 3 });
-  checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
-}
-
-/** The homogeneous points (wᵢxᵢ, wᵢyᵢ, wᵢ) with weights 1, w₁, 1: plain 3D coordinates. */
-function homogeneousOf(points, w1) {
-  const flat = new Float64Array(9);
-  points.forEach(([x, y], i) => {
-    const w = i === 1 ? w1 : 1;
-    flat[3 * i] = w * x;
-    flat[3 * i + 1] = w * y;
-    flat[3 * i + 2] = w;
-  });
-  return flat;
-}
+export const fields = {
+  points: field.points({ min: 3, max: 3 }),
+  w1: field.number({ min: W1_MIN, max: W1_MAX }),
+};
 
 /** The weights 1, w₁, 1. */
-function weightsOf(w1) {
-  return new Float64Array([1, w1, 1]);
+const weightsOf = (s) => new Float64Array([1, s.w1, 1]);
+
+/**
+ * The library's verdict on weights 1, w₁, 1: with w₁ > 0 its curve (made, or updated in place);
+ * otherwise the constructor's refusal, word for word (the last accepted curve is kept).
+ */
+function askLibrary(library, s, sl) {
+  if (s.w1 > 0) {
+    library.refusal = "";
+    if (library.curve) library.curve.setWeight(1, s.w1);
+    else library.curve = new sl.BezierCurve(flatten(s.points), 2, weightsOf(s));
+    return;
+  }
+  try {
+    new sl.BezierCurve(flatten(s.points), 2, weightsOf(s)).free(); // never gets here
+    library.refusal = "";
+  } catch (err) {
+    library.refusal = err.message;
+  }
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * What the library says (`library.curve` while it accepts the weights, else its refusal); a
+ * dragged point or w₁ updates it in place.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  let work = structuredClone(initialState);
-  /** The 3D polynomial curve on the homogeneous points (always valid). */
-  let homogeneous = new sl.BezierCurve(homogeneousOf(work.points, work.w1), 3);
-  /** The rational curve: built while w₁ > 0, kept (and updated in place) afterwards. */
-  let curve = null;
-  /** The library's refusal of the current weights, or "" when it accepts them. */
-  let refusal = "";
-  let shownStatus = "";
-  ensureCurve();
+export const derive = {
+  from: ["points"],
+  build(s, sl) {
+    sl.rationalPoles(flatten(s.points), 2, weightsOf(s), 2); // throws first on a bad state
+    const library = { curve: null, refusal: "", free: () => library.curve?.free() };
+    askLibrary(library, s, sl);
+    return { library };
+  },
+  moved: (m, i, xy) => m.library.curve?.setControlPoint(i, xy),
+  inPlace: { w1: (m, s, ui) => askLibrary(m.library, s, ui.sl) },
+};
 
-  // Derived data, recomputed when the points or w₁ changed.
-  let samples = null; // curve.sampleUniform (w₁ > 0)
-  let hom = null; // homogeneous.sampleUniform(HOM_SAMPLES): X, Y, W
-  let minW = 0;
-  let maxW = 1;
-  let poleCount = 0;
-  const poles = new Float64Array(MAX_POLES); // t of each pole
-  const poleLabels = [];
-  let outsideHull = false;
-  let middle = null; // P(1/2) from the homogeneous curve, divided (NaN at a pole)
-  let dirty = true;
-  const pointScratch = new Float64Array(2);
-  const homScratch = new Float64Array(3);
-  const clipScratch = new Float64Array(4);
-  const exits = new Float64Array(2 * MAX_EXITS);
-  let exitCount = 0;
-  const insetScratch = [0, 0, 0, 0];
-  const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0, lo: 0, hi: 1 };
-  const handleLabels = ["P₀", "P₁", "P₂"];
-  let loLabel = ""; // the lowest value of w(t) on the plot's axis
-
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => fitBounds(), insets });
-  ctx.slots.figure.classList.add("sl-figure-tall");
-  const handles = new Handles(view, {
-    count: () => 3,
-    get: (i, out) => {
-      out[0] = work.points[i][0];
-      out[1] = work.points[i][1];
+/** What is drawn and said: the samples, the poles, P(1/2), whether the curve leaves its hull. */
+export const compute = {
+  /** The core's teaching data: homogeneous samples, the roots of w(t), the pole directions. */
+  teaching: [["points", "w1"], (s, d) => d.sl.rationalPoles(flatten(s.points), 2, weightsOf(s), HOM_SAMPLES)],
+  hom: [["points", "w1"], (s, d) => d.teaching.samples],
+  samples: [["points", "w1"], (s, d) => (d.library.refusal ? null : d.library.curve.sampleUniform(CURVE_SAMPLES))],
+  /** The roots, and the range of the sampled w(t) (the plot's scale). */
+  poles: [
+    ["points", "w1"],
+    (s, d) => {
+      const { roots, directions } = d.teaching;
+      let minW = Infinity;
+      let maxW = -Infinity;
+      for (let k = 0; k < HOM_SAMPLES; k++) {
+        minW = Math.min(minW, d.hom[3 * k + 2]);
+        maxW = Math.max(maxW, d.hom[3 * k + 2]);
+      }
+      return { ts: roots, directions, count: roots.length, minW, maxW };
     },
-    label: (i) => handleLabels[i],
-    move: (i, x, y) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve?.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
-      setHomogeneousPoint(i);
-      dirty = true;
+  ],
+  poleLabels: [
+    ["points", "w1"],
+    (s, d) => Array.from(d.poles.ts, (p) => t("negativeWeights.poleLabel", { t: fmt(p) })),
+  ],
+  /** P(1/2) by the division (null at a pole). */
+  middle: [
+    ["points", "w1"],
+    (s, d) => {
+      const mid = 3 * ((HOM_SAMPLES - 1) / 2);
+      const w = d.hom[mid + 2];
+      return Math.abs(w) > ZERO_W ? [d.hom[mid] / w, d.hom[mid + 1] / w] : null;
     },
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-  });
+  ],
+  /** A pole, or a finite projected sample outside the triangle P₀P₁P₂. */
+  outsideHull: [
+    ["points", "w1"],
+    (s, d) => {
+      if (d.poles.count > 0) return true;
+      for (let k = 0; k < HOM_SAMPLES; k++) {
+        const w = d.hom[3 * k + 2];
+        if (Math.abs(w) <= ZERO_W) continue;
+        if (!inTriangle(d.hom[3 * k] / w, d.hom[3 * k + 1] / w, s.points, HULL_TOLERANCE)) return true;
+      }
+      return false;
+    },
+  ],
+  /** The plot's value range (w = 0 and w = 1 always visible) and its lowest label. */
+  plotRange: [
+    ["points", "w1"],
+    (s, d) => {
+      const { minW, maxW } = d.poles;
+      const lo = Math.min(0, minW);
+      const hi = Math.max(1, maxW);
+      const pad = PLOT_PAD * (hi - lo);
+      return { lo: lo - pad, hi: hi + pad, loLabel: fmt(minW < 0 ? minW : 0, 2) };
+    },
+  ],
+};
 
-  /** The window to fit: the triangle, P(1/2) and the projected curve near the triangle. */
-  function fitBounds() {
-    recompute();
-    const box = boundsOf(work.points);
+const poleList = (d) => Array.from(d.poles.ts, (p) => fmt(p)).join(", ");
+
+export const controls = [
+  group(
+    null,
+    slider("w1", {
+      label: "negativeWeights.w1",
+      min: W1_MIN,
+      max: W1_MAX,
+      step: W1_STEP,
+      error: "negativeWeights.badWeight",
+    }),
+    actions(PRESETS.map((w) => ({
+      name: `w1-${w}`,
+      label: "negativeWeights.preset",
+      params: { w: String(w).replace("-", "−") },
+      run: (ui) => ui.set("w1", w),
+    }))),
+  ),
+  group(
+    "negativeWeights.libraryLegend",
+    readout("library", (s, d) => {
+      const { refusal } = d.library;
+      return refusal ? t("negativeWeights.libraryRefuses", { message: refusal }) : t("negativeWeights.libraryAccepts");
+    }, { live: true, data: (s, d) => ({ refused: String(!!d.library.refusal) }) }),
+  ),
+  group(
+    "negativeWeights.resultLegend",
+    readout("poles", (s, d) => {
+      const { count } = d.poles;
+      return count ? tp("negativeWeights.poles", count, { list: poleList(d) }) : t("negativeWeights.noPoles");
+    }, {
+      kind: "readout",
+      data: (s, d) => ({
+        poles: String(d.poles.count),
+        poleTs: Array.from(d.poles.ts).join(","),
+        poleDirections: Array.from(d.poles.directions).join(","),
+        minW: String(d.poles.minW),
+      }),
+    }),
+    readout("hull", (s, d) => t(d.outsideHull ? "negativeWeights.outside" : "negativeWeights.inside"), {
+      data: (s, d) => ({
+        outsideHull: String(d.outsideHull),
+        middle: d.middle ? `${d.middle[0]},${d.middle[1]}` : "",
+      }),
+    }),
+  ),
+];
+
+const insetScratch = [0, 0, 0, 0];
+
+function plotHeight(height) {
+  return Math.max(Math.round(height * PLOT_FRACTION), Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)));
+}
+
+export const figure = {
+  /** The triangle, P(1/2) and the projected curve near the triangle. */
+  bounds(s, d) {
+    const box = boundsOf(s.points);
+    if (!d.hom) return box;
     const reach = FIT_REACH * Math.max(box[2] - box[0], box[3] - box[1], 1);
     const cx = (box[0] + box[2]) / 2;
     const cy = (box[1] + box[3]) / 2;
@@ -177,430 +242,218 @@ export function mount(container, initialState, ctx) {
       box[3] = Math.max(box[3], y);
     };
     for (let k = 0; k < HOM_SAMPLES; k++) {
-      const w = hom[3 * k + 2];
-      if (Math.abs(w) > ZERO_W) grow(hom[3 * k] / w, hom[3 * k + 1] / w);
+      const w = d.hom[3 * k + 2];
+      if (Math.abs(w) > ZERO_W) grow(d.hom[3 * k] / w, d.hom[3 * k + 1] / w);
     }
-    if (middle) {
-      box[0] = Math.min(box[0], middle[0]);
-      box[1] = Math.min(box[1], middle[1]);
-      box[2] = Math.max(box[2], middle[0]);
-      box[3] = Math.max(box[3], middle[1]);
+    if (d.middle) {
+      box[0] = Math.min(box[0], d.middle[0]);
+      box[1] = Math.min(box[1], d.middle[1]);
+      box[2] = Math.max(box[2], d.middle[0]);
+      box[3] = Math.max(box[3], d.middle[1]);
     }
     return box;
-  }
-
-  function insets(width, height) {
-    insetScratch[0] = CAPTION_BAND_PX; // the caption line stays clear of the curve
+  },
+  /** The caption line at the top, the plot of w(t) at the bottom. */
+  insets(width, height) {
+    insetScratch[0] = CAPTION_BAND_PX;
     insetScratch[2] = plotHeight(height);
     return insetScratch;
-  }
+  },
+  handles: { field: "points", label: (i) => HANDLE_LABELS[i] },
+};
 
-  function plotHeight(height) {
-    return Math.max(Math.round(height * PLOT_FRACTION), Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)));
-  }
+/** The plot's box (CSS px; y0 is the value lo, y1 the value hi) and the path's exits (scratch). */
+const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0, lo: 0, hi: 1 };
+const exits = new ExitMarks(MAX_EXITS);
+const clipBox = new Float64Array(4);
 
-  // ------------------------------------------------------------ side panel
-  const wSlider = slider({
-    label: t("negativeWeights.w1"),
-    inputLabel: t("negativeWeights.w1.input"),
-    name: "w1",
-    min: W1_MIN,
-    max: W1_MAX,
-    step: W1_STEP,
-    value: work.w1,
-    onChange: (value, final) => setW1(value, final),
-    badNumber: (text) => t("negativeWeights.badWeight", { value: text, min: W1_MIN, max: W1_MAX }),
-    onError: (message) => ctx.status(message, "error"),
-  });
-  const presetButtons = PRESETS.map((w) => button({ label: t("negativeWeights.preset", { w: String(w).replace("-", "−") }), name: `w1-${w}`, onClick: () => setW1(w, true) }));
-  const libraryText = el("p", { class: "sl-note", dataset: { info: "library" }, "aria-live": "polite" });
-  const polesText = el("p", { class: "sl-readout", dataset: { info: "poles" } });
-  const hullText = el("p", { class: "sl-note", dataset: { info: "hull" } });
-  ctx.slots.controls.append(
-    group(null, wSlider.element, el("div", { class: "sl-button-row" }, presetButtons)),
-    group(t("negativeWeights.libraryLegend"), libraryText),
-    group(t("negativeWeights.resultLegend"), polesText, hullText),
-  );
+/** The hull and polygon, the caption, the curve (the library's or the projection), ∞ marks, P(1/2), the plot. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const pts = s.points;
+  const w = r.width;
+  const h = r.height;
+  const k = r.scale;
+  layoutPlot(w, h, k, d);
 
-  // ------------------------------------------------------------ formula
-  const formula = new FormulaPanel(ctx.slots.formula);
+  // The convex hull (the control triangle) and the control polygon.
+  pointsPath(r, v, pts);
+  r.closePath();
+  r.paint(theme.helperFill);
+  pointsPath(r, v, pts);
+  r.paint(theme.polygon);
 
-  // ------------------------------------------------------------ edits
+  // The caption first: marks drawn later stay on top of its halo.
+  const accepted = d.samples !== null;
+  const caption = t(accepted ? "negativeWeights.figureAccepted" : "negativeWeights.figureRefused");
+  drawCaption(r, caption, 12 * k, 16 * k, accepted ? theme.labelSmall : theme.labelBold, r.width - 24 * k, "middle");
 
-  /** Writes homogeneous point i of the current state into the 3D curve (in place). */
-  function setHomogeneousPoint(i) {
-    const w = i === 1 ? work.w1 : 1;
-    homScratch[0] = w * work.points[i][0];
-    homScratch[1] = w * work.points[i][1];
-    homScratch[2] = w;
-    homogeneous.setControlPoint(i, homScratch);
-  }
-
-  /**
-   * Asks the library for the rational curve of the current weights: with w₁ > 0 the curve is
-   * made (or updated in place); otherwise the constructor's refusal is kept, word for word.
-   */
-  function ensureCurve() {
-    if (work.w1 > 0) {
-      refusal = "";
-      if (curve) curve.setWeight(1, work.w1);
-      else curve = new sl.BezierCurve(flatten(work.points), 2, weightsOf(work.w1));
-      return;
-    }
-    try {
-      new sl.BezierCurve(flatten(work.points), 2, weightsOf(work.w1)).free(); // never gets here
-      refusal = "";
-    } catch (err) {
-      refusal = err.message;
-    }
-  }
-
-  /** Shows the library's refusal in the status line (only when it changed; cleared when accepted). */
-  function syncStatus() {
-    if (refusal === shownStatus) return;
-    shownStatus = refusal;
-    if (refusal) ctx.status(t("negativeWeights.refused", { message: refusal }), "error");
-    else ctx.status(t("negativeWeights.accepted"), "info");
-  }
-
-  function setW1(value, final) {
-    work.w1 = value;
-    wSlider.set(value);
-    setHomogeneousPoint(1);
-    ensureCurve();
-    syncStatus();
-    dirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ drawing
-  function recompute() {
-    if (!dirty) return;
-    dirty = false;
-    hom = homogeneous.sampleUniform(HOM_SAMPLES);
-    samples = refusal ? null : curve.sampleUniform(CURVE_SAMPLES);
-    // The poles: where the sampled w(t) is zero or changes sign (t interpolated linearly).
-    poleCount = 0;
-    minW = Infinity;
-    maxW = -Infinity;
-    for (let k = 0; k < HOM_SAMPLES; k++) {
-      const w = hom[3 * k + 2];
-      minW = Math.min(minW, w);
-      maxW = Math.max(maxW, w);
-      if (k === HOM_SAMPLES - 1 || poleCount >= MAX_POLES) continue;
-      const next = hom[3 * k + 5];
-      const tk = k / (HOM_SAMPLES - 1);
-      if (Math.abs(w) <= ZERO_W) {
-        if (k === 0 || Math.abs(hom[3 * k - 1]) > ZERO_W) poles[poleCount++] = tk;
-      } else if (Math.abs(next) > ZERO_W && (w > 0) !== (next > 0)) {
-        poles[poleCount++] = tk + w / (w - next) / (HOM_SAMPLES - 1);
-      }
-    }
-    poleLabels.length = 0;
-    for (let j = 0; j < poleCount; j++) poleLabels.push(t("negativeWeights.poleLabel", { t: fmt(poles[j]) }));
-    // P(1/2) by the division, and whether any finite sample leaves the triangle P₀P₁P₂.
-    const mid = (HOM_SAMPLES - 1) / 2;
-    const wMid = hom[3 * mid + 2];
-    middle = Math.abs(wMid) > ZERO_W ? [hom[3 * mid] / wMid, hom[3 * mid + 1] / wMid] : null;
-    outsideHull = poleCount > 0;
-    for (let k = 0; k < HOM_SAMPLES && !outsideHull; k++) {
-      const w = hom[3 * k + 2];
-      if (Math.abs(w) > ZERO_W && !inTriangle(hom[3 * k] / w, hom[3 * k + 1] / w, work.points)) outsideHull = true;
-    }
-    syncPanels();
-  }
-
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
-    const w = r.width;
-    const h = r.height;
-    layoutPlot(w, h, r.scale);
-
-    // The convex hull (the control triangle) and the control polygon.
+  exits.clear();
+  if (accepted) {
     r.beginPath();
-    r.moveTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
-    r.lineTo(v.sx(pts[1][0]), v.sy(pts[1][1]));
-    r.lineTo(v.sx(pts[2][0]), v.sy(pts[2][1]));
-    r.closePath();
-    r.paint(theme.helperFill);
-    r.beginPath();
-    r.moveTo(v.sx(pts[0][0]), v.sy(pts[0][1]));
-    r.lineTo(v.sx(pts[1][0]), v.sy(pts[1][1]));
-    r.lineTo(v.sx(pts[2][0]), v.sy(pts[2][1]));
-    r.paint(theme.polygon);
-
-    // The caption first: marks drawn later stay on top of its halo.
-    const s = r.scale;
-    drawCaption(r, t(samples ? "negativeWeights.figureAccepted" : "negativeWeights.figureRefused"), 12 * s, 16 * s, samples ? theme.labelSmall : theme.labelBold, r.width - 24 * s, "middle");
-
-    exitCount = 0;
-    if (samples) {
-      // Accepted: the core's rational curve.
-      r.beginPath();
-      for (let k = 0; k < CURVE_SAMPLES; k++) {
-        if (k === 0) r.moveTo(v.sx(samples[0]), v.sy(samples[1]));
-        else r.lineTo(v.sx(samples[2 * k]), v.sy(samples[2 * k + 1]));
-      }
-      r.paint(theme.curve);
-    } else {
-      drawProjected(r, v, -CLIP_MARGIN, -CLIP_MARGIN, w + CLIP_MARGIN, plot.top + CLIP_MARGIN, theme.splitRight);
+    for (let j = 0; j < CURVE_SAMPLES; j++) {
+      if (j === 0) r.moveTo(v.sx(d.samples[0]), v.sy(d.samples[1]));
+      else r.lineTo(v.sx(d.samples[2 * j]), v.sy(d.samples[2 * j + 1]));
     }
-    handles.draw(r, v);
-
-    // Where the path runs off to infinity (below the caption line).
-    for (let j = 0; j < exitCount; j++) {
-      const x = Math.min(Math.max(exits[2 * j], EDGE_PX * r.scale), w - EDGE_PX * r.scale);
-      const y = Math.min(Math.max(exits[2 * j + 1], CAPTION_PX * r.scale), plot.top - EDGE_PX * r.scale);
-      r.text(t("negativeWeights.infinity"), x, y, theme.labelPoint, "center", "middle");
-    }
-    if (middle) {
-      r.point(v.sx(middle[0]), v.sy(middle[1]), theme.pointOnCurve);
-      r.text(t("negativeWeights.middleLabel"), v.sx(middle[0]) + 9 * r.scale, v.sy(middle[1]), theme.labelPoint, "left", "middle");
-    }
-    drawPlot(r, theme, w, h);
+    r.paint(theme.curve);
+  } else {
+    clipBox[0] = clipBox[1] = -CLIP_MARGIN;
+    clipBox[2] = w + CLIP_MARGIN;
+    clipBox[3] = plot.top + CLIP_MARGIN;
+    projectedPath(r, v, d.hom, HOM_SAMPLES, ZERO_W, clipBox, exits);
+    r.paint(theme.splitRight);
   }
+  d.handles.draw(r, v);
 
-  /**
-   * The central projection of the homogeneous samples, (X/W, Y/W), clipped to the figure;
-   * segments across a sign change of W (a pole) are left out. Where a piece leaves or enters the
-   * figure is remembered (up to MAX_EXITS) for the "∞" marks.
-   */
-  function drawProjected(r, v, x0, y0, x1, y1, style) {
+  // Where the path runs off to infinity (below the caption line).
+  for (let j = 0; j < exits.count; j++) {
+    const x = Math.min(Math.max(exits.xy[2 * j], EDGE_PX * k), w - EDGE_PX * k);
+    const y = Math.min(Math.max(exits.xy[2 * j + 1], CAPTION_PX * k), plot.top - EDGE_PX * k);
+    r.text(t("negativeWeights.infinity"), x, y, theme.labelPoint, "center", "middle");
+  }
+  if (d.middle) {
+    const [mx, my] = d.middle;
+    r.point(v.sx(mx), v.sy(my), theme.pointOnCurve);
+    r.text(t("negativeWeights.middleLabel"), v.sx(mx) + 9 * k, v.sy(my), theme.labelPoint, "left", "middle");
+  }
+  drawPlot(r, theme, w, h, d);
+}
+
+// ------------------------------------------------------------ the plot of w(t)
+function layoutPlot(width, height, scale, d) {
+  plot.top = height - plotHeight(height);
+  plot.x0 = PLOT_MARGIN.left * scale;
+  plot.x1 = width - PLOT_MARGIN.right * scale;
+  plot.y0 = height - PLOT_MARGIN.bottom * scale; // value lo
+  plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value hi
+  plot.lo = d.plotRange.lo;
+  plot.hi = d.plotRange.hi;
+}
+
+const ptx = (tValue) => plot.x0 + tValue * (plot.x1 - plot.x0);
+const pty = (value) => plot.y0 - ((value - plot.lo) / (plot.hi - plot.lo)) * (plot.y0 - plot.y1);
+
+/** The band under the figure: axes, w = 1, w(t) (solid where positive, dashed where negative), the poles. */
+function drawPlot(r, theme, w, h, d) {
+  const s = r.scale;
+  r.beginPath();
+  r.rect(0, plot.top, w, h - plot.top);
+  r.paint(theme.plotBackground);
+  r.beginPath();
+  r.moveTo(0, plot.top);
+  r.lineTo(w, plot.top);
+  r.paint(theme.axis);
+
+  // Axes: t from 0 to 1 along w = 0, the value axis on the left.
+  const zero = pty(0);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x0, plot.y0);
+  r.moveTo(plot.x0, zero);
+  r.lineTo(plot.x1, zero);
+  for (let k = 0; k <= 2; k++) {
+    r.moveTo(ptx(k / 2), zero);
+    r.lineTo(ptx(k / 2), zero + TICK_PX * s);
+  }
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, pty(1));
+  r.lineTo(plot.x1, pty(1));
+  r.paint(theme.helper);
+  const left = plot.x0 - (TICK_PX + 2) * s;
+  r.text("0", left, zero, theme.labelSmall, "right", "middle");
+  r.text("1", left, pty(1), theme.labelSmall, "right", "middle");
+  if (plot.lo < -PLOT_PAD) r.text(d.plotRange.loLabel, left, plot.y0, theme.labelSmall, "right", "middle");
+  r.text(t("negativeWeights.tickHalf"), ptx(0.5), zero + (TICK_PX + 2) * s, theme.labelSmall, "center", "top");
+  r.text(t("negativeWeights.axisT"), plot.x1 + 4 * s, zero, theme.labelSmall, "left", "middle");
+  r.text(t("negativeWeights.plotTitle"), plot.x0 + 6 * s, plot.top + 8 * s, theme.labelSmall, "left", "top");
+
+  // w(t) = W of the homogeneous samples: solid where positive, dashed where negative.
+  const hom = d.hom;
+  for (let pass = 0; pass < 2; pass++) {
     r.beginPath();
     let pen = false;
     for (let k = 0; k + 1 < HOM_SAMPLES; k++) {
       const wa = hom[3 * k + 2];
-      const wb = hom[3 * k + 5];
-      if (Math.abs(wa) <= ZERO_W || Math.abs(wb) <= ZERO_W || (wa > 0) !== (wb > 0)) {
+      const negative = (wa + hom[3 * k + 5]) / 2 < 0;
+      if (negative !== (pass === 1)) {
         pen = false;
         continue;
       }
-      const ax = v.sx(hom[3 * k] / wa);
-      const ay = v.sy(hom[3 * k + 1] / wa);
-      const bx = v.sx(hom[3 * k + 3] / wb);
-      const by = v.sy(hom[3 * k + 4] / wb);
-      if (!clipSegment(ax, ay, bx, by, x0, y0, x1, y1, clipScratch)) {
-        pen = false;
-        continue;
-      }
-      const entered = clipScratch[0] !== ax || clipScratch[1] !== ay;
-      if (!pen || entered) {
-        r.moveTo(clipScratch[0], clipScratch[1]);
-        if (entered) addExit(clipScratch[0], clipScratch[1]);
-      }
-      r.lineTo(clipScratch[2], clipScratch[3]);
-      pen = clipScratch[2] === bx && clipScratch[3] === by;
-      if (!pen) addExit(clipScratch[2], clipScratch[3]);
+      if (!pen) r.moveTo(ptx(k / (HOM_SAMPLES - 1)), pty(wa));
+      r.lineTo(ptx((k + 1) / (HOM_SAMPLES - 1)), pty(hom[3 * k + 5]));
+      pen = true;
     }
-    r.paint(style);
+    r.paint(pass === 0 ? theme.curve : theme.splitRight);
   }
 
-  function addExit(x, y) {
-    if (exitCount >= MAX_EXITS) return;
-    exits[2 * exitCount] = x;
-    exits[2 * exitCount + 1] = y;
-    exitCount += 1;
-  }
-
-  // ------------------------------------------------------------ the plot of w(t)
-  function layoutPlot(width, height, scale) {
-    plot.top = height - plotHeight(height);
-    plot.x0 = PLOT_MARGIN.left * scale;
-    plot.x1 = width - PLOT_MARGIN.right * scale;
-    plot.y0 = height - PLOT_MARGIN.bottom * scale; // value lo
-    plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value hi
-  }
-
-  const ptx = (tValue) => plot.x0 + tValue * (plot.x1 - plot.x0);
-  const pty = (value) => plot.y0 - ((value - plot.lo) / (plot.hi - plot.lo)) * (plot.y0 - plot.y1);
-
-  function drawPlot(r, theme, w, h) {
-    const s = r.scale;
+  // The poles on the t axis; labels point inward (toward t = 1/2), one line apart.
+  const poles = d.poles.ts;
+  for (let j = 0; j < poles.length; j++) {
+    const x = ptx(poles[j]);
     r.beginPath();
-    r.rect(0, plot.top, w, h - plot.top);
-    r.paint(theme.plotBackground);
-    r.beginPath();
-    r.moveTo(0, plot.top);
-    r.lineTo(w, plot.top);
-    r.paint(theme.axis);
-
-    // Axes: t from 0 to 1 along w = 0, the value axis on the left.
-    const zero = pty(0);
-    r.beginPath();
-    r.moveTo(plot.x0, plot.y1);
-    r.lineTo(plot.x0, plot.y0);
-    r.moveTo(plot.x0, zero);
-    r.lineTo(plot.x1, zero);
-    for (let k = 0; k <= 2; k++) {
-      r.moveTo(ptx(k / 2), zero);
-      r.lineTo(ptx(k / 2), zero + TICK_PX * s);
-    }
-    r.paint(theme.axis);
-    r.beginPath();
-    r.moveTo(plot.x0, pty(1));
-    r.lineTo(plot.x1, pty(1));
-    r.paint(theme.helper);
-    r.text("0", plot.x0 - (TICK_PX + 2) * s, zero, theme.labelSmall, "right", "middle");
-    r.text("1", plot.x0 - (TICK_PX + 2) * s, pty(1), theme.labelSmall, "right", "middle");
-    if (plot.lo < -PLOT_PAD) r.text(loLabel, plot.x0 - (TICK_PX + 2) * s, plot.y0, theme.labelSmall, "right", "middle");
-    r.text(t("negativeWeights.tickHalf"), ptx(0.5), zero + (TICK_PX + 2) * s, theme.labelSmall, "center", "top");
-    r.text(t("negativeWeights.axisT"), plot.x1 + 4 * s, zero, theme.labelSmall, "left", "middle");
-    r.text(t("negativeWeights.plotTitle"), plot.x0 + 6 * s, plot.top + 8 * s, theme.labelSmall, "left", "top");
-
-    // w(t): solid where positive, dashed where negative.
-    for (let pass = 0; pass < 2; pass++) {
-      r.beginPath();
-      let pen = false;
-      for (let k = 0; k + 1 < HOM_SAMPLES; k++) {
-        const wa = hom[3 * k + 2];
-        const negative = (wa + hom[3 * k + 5]) / 2 < 0;
-        if (negative !== (pass === 1)) {
-          pen = false;
-          continue;
-        }
-        if (!pen) r.moveTo(ptx(k / (HOM_SAMPLES - 1)), pty(wa));
-        r.lineTo(ptx((k + 1) / (HOM_SAMPLES - 1)), pty(hom[3 * k + 5]));
-        pen = true;
-      }
-      r.paint(pass === 0 ? theme.curve : theme.splitRight);
-    }
-
-    // The poles on the t axis.
-    for (let j = 0; j < poleCount; j++) {
-      const x = ptx(poles[j]);
-      r.beginPath();
-      r.moveTo(x, plot.y1);
-      r.lineTo(x, plot.y0);
-      r.paint(theme.marker);
-      r.point(x, zero, theme.pointOnCurve);
-      // Labels point inward (toward t = 1/2), one line apart so near poles do not collide.
-      const align = poles[j] < 0.5 ? "left" : "right";
-      r.text(poleLabels[j], x + (align === "left" ? 6 : -6) * s, plot.y1 + (2 + POLE_LINE_PX * j) * s, theme.labelPoint, align, "top");
-    }
+    r.moveTo(x, plot.y1);
+    r.lineTo(x, plot.y0);
+    r.paint(theme.marker);
+    r.point(x, zero, theme.pointOnCurve);
+    const align = poles[j] < 0.5 ? "left" : "right";
+    const y = plot.y1 + (2 + POLE_LINE_PX * j) * s;
+    r.text(d.poleLabels[j], x + (align === "left" ? 6 : -6) * s, y, theme.labelPoint, align, "top");
   }
+}
 
-  // ------------------------------------------------------------ panels
-  function syncPanels() {
-    const w1 = work.w1;
-    // The plot's value range: w = 0 and w = 1 always visible.
-    const lo = Math.min(0, minW);
-    const hi = Math.max(1, maxW);
-    const pad = PLOT_PAD * (hi - lo);
-    plot.lo = lo - pad;
-    plot.hi = hi + pad;
-    loLabel = fmt(minW < 0 ? minW : 0, 2);
+/** The curve, its denominator, where that vanishes (or its minimum), P(1/2), the hull argument. */
+export function formula(s, d) {
+  const w1 = s.w1;
+  const tx = (key) => `\\text{${t(`negativeWeights.tex.${key}`)}}`;
+  const product = 1 / (2 * (1 - w1)); // t(1 − t) at a zero of w(t)
+  const root = Math.sqrt(Math.max(0, 1 - 4 * product)) / 2;
+  const zeros =
+    w1 <= -1
+      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm ` +
+        `\\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(0.5 - root)},\\ ${fmt(0.5 + root)}\\quad${tx("poles")}`
+      : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad` +
+        `${tx("noPole")} w(t) = 0 ${tx("needs")} w_1 \\le -1\\text{)}`;
+  const middle = d.middle ? `(${fmt(d.middle[0])},\\ ${fmt(d.middle[1])})` : "\\infty";
+  return [
+    `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${fmt(w1, 2)}`,
+    `w(t) = (1-t)^2 + 2t(1-t)\\,w_1 + t^2 = 1 - 2(1-w_1)\\,t(1-t)`,
+    zeros,
+    `P(\\tfrac12) = \\frac{P_0 + 2w_1P_1 + P_2}{2 + 2w_1} = ${middle}`,
+    `w_i > 0 \\Rightarrow ${tx("coefficients")} \\tfrac{B_i(t)\\,w_i}{w(t)} \\in [0, 1] ${tx("sumToOne")} P(t) ` +
+      `${tx("staysInHull")} w_1 < 0 ${tx("breaks")}`,
+  ];
+}
 
-    libraryText.textContent = refusal ? t("negativeWeights.libraryRefuses", { message: refusal }) : t("negativeWeights.libraryAccepts");
-    libraryText.dataset.refused = String(!!refusal);
-    const list = Array.from(poles.subarray(0, poleCount), (p) => fmt(p)).join(", ");
-    polesText.textContent = poleCount ? t(poleCount === 1 ? "negativeWeights.pole" : "negativeWeights.poles", { count: poleCount, list }) : t("negativeWeights.noPoles");
-    polesText.dataset.poles = String(poleCount);
-    polesText.dataset.poleTs = Array.from(poles.subarray(0, poleCount)).join(",");
-    polesText.dataset.minW = String(minW);
-    hullText.textContent = t(outsideHull ? "negativeWeights.outside" : "negativeWeights.inside");
-    hullText.dataset.outsideHull = String(outsideHull);
-    hullText.dataset.middle = middle ? `${middle[0]},${middle[1]}` : "";
+/** The figure's name: the points and weights, the library's verdict, the poles, the hull. */
+export function label(s, d) {
+  const [p0, p1, p2] = s.points.map(([x, y]) => `(${fmt(x, 2)}, ${fmt(y, 2)})`);
+  const { refusal } = d.library;
+  const { count, minW } = d.poles;
+  return t("negativeWeights.aria", {
+    p0,
+    p1,
+    p2,
+    w: fmt(s.w1, 2),
+    verdict: refusal ? t("negativeWeights.ariaRefused", { message: refusal }) : t("negativeWeights.ariaAccepted"),
+    poles: count
+      ? t("negativeWeights.ariaPoles", { count, list: poleList(d) })
+      : t("negativeWeights.ariaNoPoles", { min: fmt(minW, 2) }),
+    hull: t(d.outsideHull ? "negativeWeights.ariaOutside" : "negativeWeights.ariaInside"),
+  });
+}
 
-    const [p0, p1, p2] = work.points;
-    view.setLabel(t("negativeWeights.aria", {
-      p0: `(${fmt(p0[0], 2)}, ${fmt(p0[1], 2)})`,
-      p1: `(${fmt(p1[0], 2)}, ${fmt(p1[1], 2)})`,
-      p2: `(${fmt(p2[0], 2)}, ${fmt(p2[1], 2)})`,
-      w: fmt(w1, 2),
-      verdict: refusal ? t("negativeWeights.ariaRefused", { message: refusal }) : t("negativeWeights.ariaAccepted"),
-      poles: poleCount ? t("negativeWeights.ariaPoles", { count: poleCount, list }) : t("negativeWeights.ariaNoPoles", { min: fmt(minW, 2) }),
-      hull: t(outsideHull ? "negativeWeights.ariaOutside" : "negativeWeights.ariaInside"),
-    }));
-
-    // Formula: the curve, its denominator, where that vanishes, the hull argument.
-    const wTex = fmt(w1, 2);
-    const product = 1 / (2 * (1 - w1)); // t(1 − t) at a zero of w(t)
-    const zeros = w1 <= -1
-      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm \\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(0.5 - Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)},\\ ${fmt(0.5 + Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)}\\quad\\text{(poles)}`
-      : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad\\text{(no pole; } w(t) = 0 \\text{ needs } w_1 \\le -1\\text{)}`;
-    formula.set([
-      `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${wTex}`,
-      `w(t) = (1-t)^2 + 2t(1-t)\\,w_1 + t^2 = 1 - 2(1-w_1)\\,t(1-t)`,
-      zeros,
-      `P(\\tfrac12) = \\frac{P_0 + 2w_1P_1 + P_2}{2 + 2w_1} = ${middle ? `(${fmt(middle[0])},\\ ${fmt(middle[1])})` : "\\infty"}`,
-      `w_i > 0 \\Rightarrow \\text{the coefficients } \\tfrac{B_i(t)\\,w_i}{w(t)} \\in [0, 1] \\text{ sum to 1: } P(t) \\text{ stays in the convex hull; } w_1 < 0 \\text{ breaks that}`,
-    ]);
-  }
-
-  recompute();
-  syncStatus();
-
-  // ------------------------------------------------------------ contract
+/** The taller figure, and the library's refusal in the status line (when it changes). */
+export function setup(ui) {
+  ui.ctx.slots.figure.classList.add("sl-figure-tall");
+  let shown = "";
   return {
-    update(state) {
-      const next = new sl.BezierCurve(homogeneousOf(state.points, state.w1), 3); // throws first
-      homogeneous.free();
-      homogeneous = next;
-      curve?.free();
-      curve = null;
-      work = structuredClone(state);
-      ensureCurve();
-      handles.forgetPointer();
-      wSlider.set(work.w1);
-      dirty = true;
-      view.requestDraw();
-      recompute();
-      syncStatus();
-    },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      homogeneous.free();
-      curve?.free();
+    update(s, d) {
+      const { refusal } = d.library;
+      if (refusal === shown) return;
+      shown = refusal;
+      if (refusal) ui.status(t("negativeWeights.refused", { message: refusal }), "error");
+      else ui.status(t("negativeWeights.accepted"), "info");
     },
   };
 }
-
-/**
- * Liang–Barsky: clips the segment (ax, ay)–(bx, by) to the box [x0, x1] × [y0, y1]; writes the
- * visible part into `out` (x, y, x, y) and returns false when nothing is visible.
- */
-function clipSegment(ax, ay, bx, by, x0, y0, x1, y1, out) {
-  const dx = bx - ax;
-  const dy = by - ay;
-  let t0 = 0;
-  let t1 = 1;
-  for (let k = 0; k < 4; k++) {
-    const p = k === 0 ? -dx : k === 1 ? dx : k === 2 ? -dy : dy;
-    const q = k === 0 ? ax - x0 : k === 1 ? x1 - ax : k === 2 ? ay - y0 : y1 - ay;
-    if (p === 0) {
-      if (q < 0) return false;
-    } else {
-      const r = q / p;
-      if (p < 0) t0 = Math.max(t0, r);
-      else t1 = Math.min(t1, r);
-      if (t0 > t1) return false;
-    }
-  }
-  out[0] = t0 === 0 ? ax : ax + t0 * dx;
-  out[1] = t0 === 0 ? ay : ay + t0 * dy;
-  out[2] = t1 === 1 ? bx : ax + t1 * dx;
-  out[3] = t1 === 1 ? by : ay + t1 * dy;
-  return true;
-}
-
-/** True when (x, y) lies in the triangle of the three points (edges included, with a tolerance). */
-function inTriangle(x, y, points) {
-  const x0 = points[0][0];
-  const y0 = points[0][1];
-  const x1 = points[1][0];
-  const y1 = points[1][1];
-  const x2 = points[2][0];
-  const y2 = points[2][1];
-  const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-  const scale = Math.abs(area) || 1;
-  const d0 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) * Math.sign(area || 1);
-  const d1 = ((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1)) * Math.sign(area || 1);
-  const d2 = ((x0 - x2) * (y - y2) - (x - x2) * (y0 - y2)) * Math.sign(area || 1);
-  const eps = -HULL_TOLERANCE * scale;
-  return d0 >= eps && d1 >= eps && d2 >= eps;
-}
-

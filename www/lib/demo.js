@@ -8,10 +8,10 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `inPlace: { field: (model, state) => void }` likewise for a field not in `from` (a weight slider: `setWeight`) |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data, ui) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`; `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the list's on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -25,7 +25,7 @@
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
 import { FormulaPanel } from "./formula.js";
-import { Handles, pointHandles } from "./handles.js";
+import { Handles, pointHandles, pointListsHandles } from "./handles.js";
 import { t } from "./strings.js";
 
 /** True for a module written to this contract (rather than an old-style `mount`). */
@@ -96,6 +96,21 @@ export function mountDeclared(demo, initialState, ctx) {
       markChanged(field);
       if (final) ctx.commit(work, merge);
     },
+    /**
+     * Sets `state.weights[i]`: in place through `derive.weighted` when the demo has it (no
+     * rebuild while a weight slider is dragged), else like `set`.
+     */
+    setWeight(i, w, final = true) {
+      work.weights[i] = w;
+      if (derive.weighted) {
+        derive.weighted(model, i, w, work, ui);
+        if (changed) changed.add("weights");
+        view.requestDraw();
+      } else {
+        markChanged("weights");
+      }
+      if (final) ctx.commit(work);
+    },
     /** Marks a field changed after mutating it in place (a dragged point). */
     touch: markChanged,
     /** Records the working state as it is now. */
@@ -116,8 +131,9 @@ export function mountDeclared(demo, initialState, ctx) {
 
   function markChanged(field) {
     if (changed) changed.add(field);
-    if (derive.from.includes(field)) modelStale = true;
-    else derive.inPlace?.[field]?.(model, work);
+    const inPlace = derive.inPlace?.[field];
+    if (inPlace && !modelStale) inPlace(model, work, ui);
+    else if (derive.from.includes(field)) modelStale = true;
     view.requestDraw();
   }
 
@@ -191,16 +207,35 @@ export function mountDeclared(demo, initialState, ctx) {
   if (handleSpec) {
     const moved = derive.moved
       ? (i, xy) => {
-          derive.moved(model, i, xy, work);
+          derive.moved(model, i, xy, work, ui);
           if (changed) changed.add(handleSpec.field);
           view.requestDraw();
         }
       : () => markChanged(handleSpec.field);
-    const list = pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null);
+    const label = (i) => handleSpec.label(i, work, data);
+    const lists = handleSpec.fields;
+    const list = lists
+      ? pointListsHandles(
+          lists.length,
+          (k) => work[lists[k]],
+          (i, xy, k) => {
+            if (!derive.moved) {
+              markChanged(lists[k]);
+              return true;
+            }
+            if (derive.moved(model, i, xy, work, ui) === false) return false;
+            if (changed) changed.add(lists[k]);
+            view.requestDraw();
+            return true;
+          },
+          label,
+        )
+      : pointHandles(() => work[handleSpec.field], moved, handleSpec.label ? label : null);
     const extraPoints = handleSpec.extra ?? [];
-    const listed = () => work[handleSpec.field].length;
+    const listed = () => list.count();
     ui.handles = new Handles(view, {
       ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
+      polygon: handleSpec.polygon,
       constraint: handleSpec.constraint,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),

@@ -14,8 +14,11 @@ export function flatten(points) {
   return flat;
 }
 
-/** [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull). */
-export function boundsOf(points) {
+/**
+ * [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull),
+ * written into `out` when given (no allocation while drawing).
+ */
+export function boundsOf(points, out = null) {
   let x0 = Infinity;
   let y0 = Infinity;
   let x1 = -Infinity;
@@ -26,7 +29,12 @@ export function boundsOf(points) {
     x1 = Math.max(x1, x);
     y1 = Math.max(y1, y);
   }
-  return [x0, y0, x1, y1];
+  if (!out) return [x0, y0, x1, y1];
+  out[0] = x0;
+  out[1] = y0;
+  out[2] = x1;
+  out[3] = y1;
+  return out;
 }
 
 /**
@@ -73,4 +81,40 @@ export function nearestGraph(values, count, samples, k, y, toY, maxDistance) {
     }
   }
   return best;
+}
+
+/**
+ * Distance from (x, y) to the polyline through the flat points `flat` [x0, y0, x1, y1, …]: the
+ * least distance to one of its segments, each the clamped projection of the point onto it.
+ * A measurement between two sampled curves that does not depend on their parametrisations.
+ */
+export function distanceToPolyline(x, y, flat) {
+  let best = Infinity;
+  for (let k = 0; k + 3 < flat.length; k += 2) {
+    const ax = flat[k];
+    const ay = flat[k + 1];
+    const dx = flat[k + 2] - ax;
+    const dy = flat[k + 3] - ay;
+    const length2 = dx * dx + dy * dy;
+    const s = length2 > 0 ? Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / length2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - s * dx, y - ay - s * dy));
+  }
+  return best;
+}
+
+/**
+ * True when (x, y) lies in the triangle of the three [x, y] `points`, edges included — drawing
+ * support for the convex hull property of a quadratic. Each edge's cross product with the point
+ * has the sign of the triangle's area when the point is on its inner side; `tolerance` (relative
+ * to the area) lets points on an edge count as inside despite rounding.
+ */
+export function inTriangle(x, y, points, tolerance) {
+  const [[x0, y0], [x1, y1], [x2, y2]] = points;
+  const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+  const scale = Math.abs(area) || 1;
+  const d0 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) * Math.sign(area || 1);
+  const d1 = ((x2 - x1) * (y - y1) - (x - x1) * (y2 - y1)) * Math.sign(area || 1);
+  const d2 = ((x0 - x2) * (y - y2) - (x - x2) * (y0 - y2)) * Math.sign(area || 1);
+  const eps = -tolerance * scale;
+  return d0 >= eps && d1 >= eps && d2 >= eps;
 }

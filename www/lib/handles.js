@@ -76,6 +76,49 @@ export function pointHandles(points, moved, label = null) {
   };
 }
 
+/**
+ * The `count`, `get`, `label` and `move` options of `Handles` for several lists of [x, y]
+ * points shown as one run of handles (a curve's P₀ … P₃, then a frame's Q₀ … Q₃): `list(k)`
+ * returns list k of `lists`; handle i is the i-th point of their concatenation. A move is
+ * offered first, `moved(i, xy, k) → boolean` with `xy` a reused Float64Array [x, y] and k the
+ * list; the point is written into its list only when that returns true, so a move the core
+ * refuses leaves it where it was. `label(i)` names handle i.
+ */
+export function pointListsHandles(lists, list, moved, label) {
+  const xy = new Float64Array(2);
+  /** The list holding handle i and the index in it, written into `at` (no allocation). */
+  const at = { k: 0, j: 0 };
+  const locate = (i) => {
+    let j = i;
+    let k = 0;
+    while (k < lists - 1 && j >= list(k).length) j -= list(k++).length;
+    at.k = k;
+    at.j = j;
+    return list(k)[j];
+  };
+  return {
+    count: () => {
+      let n = 0;
+      for (let k = 0; k < lists; k++) n += list(k).length;
+      return n;
+    },
+    get: (i, out) => {
+      const point = locate(i);
+      out[0] = point[0];
+      out[1] = point[1];
+    },
+    label,
+    move: (i, x, y) => {
+      const point = locate(i);
+      xy[0] = x;
+      xy[1] = y;
+      if (!moved(i, xy, at.k)) return;
+      point[0] = x;
+      point[1] = y;
+    },
+  };
+}
+
 export class Handles {
   /**
    * @param {import("./view.js").View} view

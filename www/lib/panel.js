@@ -8,7 +8,7 @@
  */
 import { slider as sliderElement, checkbox as checkboxElement, radios, button, group as fieldset, el, setText } from "./controls.js";
 import { Player } from "./player.js";
-import { withPointAdded, withPointRemoved } from "./point-list.js";
+import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -151,13 +151,25 @@ export function choice(field, { options, name = field, set = null }) {
  * the limits (`min` may be a function of the state: a B-spline needs p + 1 points; the messages
  * also get the state's fields, e.g. `{degree}`). `adjust(state, ui) → state` fixes what follows
  * from the new list (a lower degree, clamped knots) before the model is built. `more`: further
- * buttons in the same row, as `actions` takes them.
+ * buttons in the same row, as `actions` takes them. `companions: { weights: 1 }` names lists
+ * with one entry per point (a rational curve's weights): a new point gets the value given, a
+ * removed point takes its entry along.
  */
-export function pointButtons(field, { min, max, prefix, adjust = null, more = [] }) {
+export function pointButtons(field, { min, max, prefix, adjust = null, more = [], companions = {} }) {
   return {
     build(ui) {
-      const apply = (next) => {
-        let state = { ...ui.state, [field]: next.points };
+      /** Copies of the companion lists with their value inserted at `at` (`insert`), or entry `at` removed. */
+      const alongside = (at, insert) => {
+        const lists = {};
+        for (const [name, value] of Object.entries(companions)) {
+          lists[name] = ui.state[name].slice();
+          if (insert) lists[name].splice(at, 0, value);
+          else lists[name].splice(at, 1);
+        }
+        return lists;
+      };
+      const apply = (next, lists = {}) => {
+        let state = { ...ui.state, ...lists, [field]: next.points };
         if (adjust) state = adjust(state, ui);
         try {
           ui.replace(state);
@@ -172,12 +184,12 @@ export function pointButtons(field, { min, max, prefix, adjust = null, more = []
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
-          if (next) apply(next);
+          if (next) apply(next, alongside(next.index, true));
           else refuse("max", max);
         },
         remove(i) {
           const next = withPointRemoved(ui.state[field], i, lowest());
-          if (next) apply(next);
+          if (next) apply(next, alongside(pointIndex(ui.state[field], i), false));
           else refuse("min", lowest());
         },
       };
@@ -201,7 +213,8 @@ export function pointButtons(field, { min, max, prefix, adjust = null, more = []
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name` (none
  * when `name` is null); `kind` "note" (default) or "readout" (the larger figure of merit); `live`
  * makes it a polite live region; `data(state, values)` → `{ key: text }` sets data attributes
- * beside the text (numbers for tests and scripts), removing those it no longer returns.
+ * beside the text (exact numbers for tests, e.g. `data-gap-ab`), removing those it no longer
+ * returns.
  */
 export function readout(name, text, { kind = "note", live = false, data = null } = {}) {
   return {
@@ -241,14 +254,14 @@ export function shownWhen(when, item) {
 }
 
 /**
- * A row of buttons, `[{ name, label, title?, run(ui), disabled?(state, data) }]`
- * (`data-action=name`); `title` (legend key) makes it a titled group. `disabled` is re-read
- * after every change.
+ * A row of buttons, `[{ name, label, params?, title?, run(ui), disabled?(state, data) }]`
+ * (`data-action=name`; `params` fill the label's placeholders); `title` (legend key) makes it a
+ * titled group. `disabled` is re-read after every change.
  */
 export function actions(list, { title = null } = {}) {
   return {
     build(ui) {
-      const buttons = list.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
+      const buttons = list.map((a) => button({ label: t(a.label, a.params), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       const row = el("div", { class: "sl-button-row" }, buttons);
       return {
         element: title ? fieldset(t(title), row) : row,
