@@ -17,9 +17,10 @@ export class BasisPlotPointer {
    *   press?(): void, enter?(): void }} options `graphAt` is the function whose graph passes
    *   near (x, y) or -1; `pick(x, final)` sets the parameter under x; `press()` runs before a
    *   press in the plot (stop a player), `enter()` when the pointer hovers the plot (the handles
-   *   forget their hover).
+   *   forget their hover); `first: true` registers it ahead of interactors added before it (the
+   *   handles of a declarative demo, made before its `setup`).
    */
-  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {} }) {
+  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {}, first = false }) {
     this.view = view;
     /** The function under the pointer in the plot, or -1. */
     this.plotHover = -1;
@@ -59,7 +60,7 @@ export class BasisPlotPointer {
           view.requestDraw();
         }
       },
-    });
+    }, { first });
   }
 
   /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */
@@ -86,6 +87,24 @@ export class BasisPlotPointer {
 }
 
 /**
+ * For a declarative demo (demo.js): `ui.data.highlighted()` is the highlighted function now
+ * (`pointer.highlighted(ui.handles)`, -1 past the last handle, e.g. just after a removal), and
+ * each frame in which it differs from `ui.data.highlight` marks the pseudo-field "highlight"
+ * changed. Declare the cell `highlight: [["highlight", <handles' field>], (s, d) =>
+ * d.highlighted()]` and the formula, label, readouts and table follow the highlight as they
+ * follow the state. Call it from `setup(ui)`: its hook runs before the runtime's refresh.
+ */
+export function followHighlight(ui, pointer) {
+  ui.data.highlighted = () => {
+    const i = pointer.highlighted(ui.handles);
+    return i < ui.handles.source.count() ? i : -1;
+  };
+  ui.view.beforeFrame(() => {
+    if (ui.data.highlighted() !== ui.data.highlight) ui.touch("highlight");
+  });
+}
+
+/**
  * Paths and paints graph `i` of i-major samples `values` (`count` per function): sample k at
  * canvas (`x(k)`, `y(values[i·count + k])`).
  */
@@ -97,6 +116,70 @@ export function drawGraph(r, values, i, count, x, y, style) {
     const py = y(values[offset + k]);
     if (k === 0) r.moveTo(px, py);
     else r.lineTo(px, py);
+  }
+  r.paint(style);
+}
+
+/**
+ * The plot's frame: its strip (`plot.top` to `plot.bottom`, CSS px) on the plot background
+ * with a line along its top edge, the axes (value 0 at `plot.y0`, t from `plot.x0` to
+ * `plot.x1`), a helper line at value 1 (`plot.y1`) and the value labels `zero` and `one` left
+ * of the value axis, `tick` CSS px (at scale 1) away from it.
+ */
+export function drawPlotFrame(r, plot, { zero, one, tick }) {
+  const theme = r.theme;
+  r.beginPath();
+  r.rect(0, plot.top, r.width, plot.bottom - plot.top);
+  r.paint(theme.plotBackground);
+  r.beginPath();
+  r.moveTo(0, plot.top);
+  r.lineTo(r.width, plot.top);
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x0, plot.y0);
+  r.lineTo(plot.x1, plot.y0);
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x1, plot.y1);
+  r.paint(theme.helper);
+  const x = plot.x0 - (tick + 2) * r.scale;
+  r.text(zero, x, plot.y0, theme.labelSmall, "right", "middle");
+  r.text(one, x, plot.y1, theme.labelSmall, "right", "middle");
+}
+
+/**
+ * Draws graphs 0 … `functions` − 1 of i-major samples `values` (`count` per function) in the
+ * basis colours, the highlighted one (`highlight`, or -1) last and thicker, on top.
+ */
+export function drawGraphs(r, values, functions, count, x, y, highlight) {
+  const theme = r.theme;
+  const cycle = theme.basisStroke.length;
+  for (let i = 0; i < functions; i++) {
+    if (i !== highlight) drawGraph(r, values, i, count, x, y, theme.basisStroke[i % cycle]);
+  }
+  if (highlight >= 0) drawGraph(r, values, highlight, count, x, y, theme.basisHover[highlight % cycle]);
+}
+
+/**
+ * Where a highlighted function acts on the curve: paths the runs of curve samples `samples`
+ * (flat [x, y, …] in world units, `count` of them) for which `inside(k)` holds, and paints them
+ * with `style` (the band under the curve, in the function's colour).
+ */
+export function drawBand(r, v, samples, count, inside, style) {
+  let open = false;
+  r.beginPath();
+  for (let k = 0; k < count; k++) {
+    if (inside(k)) {
+      const x = v.sx(samples[2 * k]);
+      const y = v.sy(samples[2 * k + 1]);
+      if (open) r.lineTo(x, y);
+      else r.moveTo(x, y);
+      open = true;
+    } else {
+      open = false;
+    }
   }
   r.paint(style);
 }

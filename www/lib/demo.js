@@ -112,6 +112,8 @@ export function mountDeclared(demo, initialState, ctx) {
     },
     status: ctx.status,
     requestDraw: () => view.requestDraw(),
+    /** Stops the controls' animations (a tool of `setup` takes the parameter over). */
+    stopPlayback: () => built.forEach((control) => control.stop?.()),
   };
 
   function markChanged(field) {

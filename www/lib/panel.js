@@ -167,12 +167,15 @@ export function pointButtons(field, { min, max, prefix }) {
 
 /**
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
- * `kind` "note" (default) or "readout" (the larger figure of merit).
+ * `kind` "note" (default) or "readout" (the larger figure of merit); `live: true` makes it a
+ * polite live region (read out when it changes).
  */
-export function readout(name, text, { kind = "note" } = {}) {
+export function readout(name, text, { kind = "note", live = false } = {}) {
   return {
     build(ui) {
-      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } });
+      const attributes = { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } };
+      if (live) attributes["aria-live"] = "polite";
+      const node = el("p", attributes);
       return { element: node, sync: (state, data) => setText(node, text(state, data, ui)) };
     },
   };
