@@ -430,6 +430,24 @@ const LABEL_GAP_PX = 5;
 const LABEL_ALIGN_THRESHOLD = 0.35;
 
 /**
+ * Draws `text` next to the screen point (x, y) on the side away from the screen point (cx, cy)
+ * (a centroid computed once for many labels); straight above when (x, y) is at it.
+ */
+export function placeLabelFrom(r, text, x, y, cx, cy, style, radius) {
+  let dx = x - cx;
+  let dy = y - cy;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) {
+    dx = 0;
+    dy = -1;
+  } else {
+    dx /= length;
+    dy /= length;
+  }
+  placeLabel(r, text, x, y, dx, dy, radius, style);
+}
+
+/**
  * Draws `text` next to the screen point (x, y) on the side away from the centroid of `points`
  * (world [x, y] points, e.g. the control points, mapped with `view`): outside the construction.
  * Straight up-left when (x, y) is at the centroid. Allocates nothing.

@@ -30,7 +30,8 @@ function fragment(...nodes) {
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
- * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
+ * @param {boolean | object | () => object} [o.player] add the step / play buttons (Player options if an
+ *   object, or a function returning them, called at build time so that their strings follow the language).
  * @param {string} [o.error] key of the message for typed text that is out of range.
  */
 export function slider(field, o) {
@@ -62,7 +63,7 @@ export function slider(field, o) {
       });
       if (o.player) {
         player = new Player(ui.view, {
-          ...(typeof o.player === "object" ? o.player : {}),
+          ...(typeof o.player === "function" ? o.player() : typeof o.player === "object" ? o.player : {}),
           get: () => ui.state[field],
           set: (value, final) => ui.set(field, value, final),
           stopped: () => ui.commit(),
