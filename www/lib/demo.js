@@ -11,7 +11,7 @@
  * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), accept?(i, x, y, state) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (or in several fields in a row, `field: [a, b]`; `accept` may refuse a move) |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -25,7 +25,7 @@
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
 import { FormulaPanel } from "./formula.js";
-import { Handles, pointHandles } from "./handles.js";
+import { Handles, listHandles, pointHandles } from "./handles.js";
 import { t } from "./strings.js";
 
 /** True for a module written to this contract (rather than an old-style `mount`). */
@@ -157,15 +157,27 @@ export function mountDeclared(demo, initialState, ctx) {
   // ------------------------------------------------------------ figure parts, handles, panel
   const handleSpec = figureSpec.handles;
   if (handleSpec) {
+    // One field of points, or several in a row (`field: ["points", "line"]`).
+    const handleFields = [].concat(handleSpec.field);
     const moved = derive.moved
-      ? (i, xy) => {
+      ? (i, xy, list = 0) => {
           derive.moved(model, i, xy, work);
-          if (changed) changed.add(handleSpec.field);
+          if (changed) changed.add(handleFields[list]);
           view.requestDraw();
         }
-      : () => markChanged(handleSpec.field);
+      : (i, xy, list = 0) => markChanged(handleFields[list]);
+    const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
+    const accept = handleSpec.accept ? (i, x, y) => handleSpec.accept(i, x, y, work) : null;
+    const lists = handleFields.map(() => null); // reused: nothing allocated per handle and frame
+    const current = () => {
+      handleFields.forEach((name, k) => (lists[k] = work[name]));
+      return lists;
+    };
+    const source = handleFields.length === 1 && !accept
+      ? pointHandles(() => work[handleSpec.field], moved, label)
+      : listHandles(current, moved, label, accept);
     ui.handles = new Handles(view, {
-      ...pointHandles(() => work[handleSpec.field], moved, handleSpec.label ? (i) => handleSpec.label(i, work, data) : null),
+      ...source,
       constraint: handleSpec.constraint,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),

@@ -70,6 +70,52 @@ export function pointHandles(points, moved, label = null) {
   };
 }
 
+/**
+ * Like `pointHandles`, over several point lists in a row (a curve's control points, then a
+ * line's two points): `lists()` returns the lists, and handle i is point i of their
+ * concatenation. `moved(i, xy, list)` is told which list (its index) moved; a move for which
+ * `accept(i, x, y)` is false is skipped (the handle stays, e.g. a line's points may not meet).
+ */
+export function listHandles(lists, moved, label = null, accept = null) {
+  const labels = [];
+  const xy = new Float64Array(2);
+  /** The list and index of handle i (written into `at`: nothing is allocated). */
+  const at = { list: 0, index: 0 };
+  const locate = (i) => {
+    const all = lists();
+    let list = 0;
+    while (list < all.length - 1 && i >= all[list].length) {
+      i -= all[list].length;
+      list += 1;
+    }
+    at.list = list;
+    at.index = i;
+    return all[list][i];
+  };
+  return {
+    count: () => {
+      let n = 0;
+      for (const points of lists()) n += points.length;
+      return n;
+    },
+    get: (i, out) => {
+      const p = locate(i);
+      out[0] = p[0];
+      out[1] = p[1];
+    },
+    label: label ?? ((i) => (labels[i] ??= `P${subscript(i)}`)),
+    move: (i, x, y) => {
+      if (accept && !accept(i, x, y)) return;
+      const p = locate(i);
+      p[0] = x;
+      p[1] = y;
+      xy[0] = x;
+      xy[1] = y;
+      moved(i, xy, at.list);
+    },
+  };
+}
+
 export class Handles {
   /**
    * @param {import("./view.js").View} view
