@@ -8,10 +8,10 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), accept?(i, x, y, state) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (or in several fields in a row, `field: [a, b]`; `accept` may refuse a move) |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (or in several fields in a row, `field: [a, b]`; `accept` may refuse a move) |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -178,7 +178,7 @@ export function mountDeclared(demo, initialState, ctx) {
       : listHandles(current, moved, label, accept);
     ui.handles = new Handles(view, {
       ...source,
-      constraint: handleSpec.constraint,
+      constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => ui.pointList?.remove(i),
@@ -196,11 +196,12 @@ export function mountDeclared(demo, initialState, ctx) {
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
-      const nextModel = derive.build(state, sl); // throws before anything changes
+      const next = structuredClone(state); // build may bring its copy into line (a rule it keeps)
+      const nextModel = derive.build(next, sl); // throws before anything changes
       for (const control of built) control.stop?.();
       swapModel(nextModel);
       modelStale = false;
-      work = structuredClone(state);
+      work = next;
       if (ui.handles) {
         ui.handles.forgetPointer();
         if (ui.handles.selected >= ui.handles.source.count()) ui.handles.select(-1);

@@ -104,15 +104,31 @@ export function checkbox(field, { label, name = field }) {
 /**
  * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
  * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels.
+ * `rebuild: true`: a choice the model is built from (a rule it enforces on the state): the new
+ * state is built first (`ui.replace`) and recorded only when the core accepts it.
  */
-export function choice(field, { options, name = field }) {
+export function choice(field, { options, name = field, rebuild = false }) {
   return {
     build(ui) {
+      const choose = (value) => {
+        if (!rebuild) {
+          ui.set(field, value);
+          return;
+        }
+        const next = structuredClone(ui.state);
+        next[field] = value;
+        try {
+          ui.replace(next);
+        } catch (err) {
+          control.set(ui.state[field]);
+          ui.status(err.message, "error");
+        }
+      };
       const control = radios({
         options: options.map((option) => ({ value: option.value, label: t(option.label) })),
         value: ui.state[field],
         name,
-        onChange: (value) => ui.set(field, value),
+        onChange: choose,
       });
       return { element: control.element, sync: (state) => control.set(state[field]) };
     },
@@ -169,15 +185,22 @@ export function pointButtons(field, { min, max, prefix }) {
 /**
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
  * `kind` "note" (default) or "readout" (the larger figure of merit); `live: true` makes it a
- * polite live region (read out when it changes).
+ * polite live region (read out when it changes); `dataset(state, data)` → data attributes to
+ * set on it (strings), e.g. the numbers behind the text for tests and styles.
  */
-export function readout(name, text, { kind = "note", live = false } = {}) {
+export function readout(name, text, { kind = "note", live = false, dataset = null } = {}) {
   return {
     build(ui) {
       const attributes = { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } };
       if (live) attributes["aria-live"] = "polite";
       const node = el("p", attributes);
-      return { element: node, sync: (state, data) => setText(node, text(state, data, ui)) };
+      return {
+        element: node,
+        sync(state, data) {
+          setText(node, text(state, data, ui));
+          if (dataset) Object.assign(node.dataset, dataset(state, data));
+        },
+      };
     },
   };
 }
