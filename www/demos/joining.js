@@ -145,16 +145,27 @@ class Pieces {
 /**
  * The pieces of a state. When its points break its rule (a link, a file, a new rule), the
  * right piece follows (the syllabus form); a state that obeys its rule stays exactly as it is.
+ * When the core cannot establish the rule, the state is refused (the last one stays), except
+ * the first one, shown as it is with the core's message.
  * Moving handle i re-establishes the rule: a point of the left piece (or Q₃) makes the right
  * piece follow, Q₀, Q₁ or Q₂ the left one; G1's Q₁, held on the tangent line, keeps P₂ and is
  * put back exactly on the ray at its new distance (the right piece follows).
  */
 export const derive = {
   from: ["left", "right", "rule"],
-  build(s, sl) {
+  build(s, sl, { first = false } = {}) {
     const pieces = new Pieces(sl, s);
     if (s.rule !== "none" && !satisfies(s.rule, sl.jointContinuity(pieces.left, pieces.right))) {
-      pieces.tryFollow(s, "right");
+      if (first) {
+        pieces.tryFollow(s, "right");
+      } else {
+        try {
+          pieces.follow(s, "right");
+        } catch (err) {
+          pieces.free();
+          throw err;
+        }
+      }
     }
     return { pieces };
   },

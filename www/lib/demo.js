@@ -8,7 +8,7 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl, { first }) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line; `first` at mount, where there is no last good state to keep); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
  * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (or in several fields in a row, `field: [a, b]`; `accept` may refuse a move) |
@@ -61,7 +61,7 @@ export function mountDeclared(demo, initialState, ctx) {
   const derive = demo.derive;
   const cells = Object.entries(demo.compute ?? {});
   let work = structuredClone(initialState);
-  let model = derive.build(work, sl);
+  let model = derive.build(work, sl, { first: true });
   /**
    * What draw and the panels read: the model's values and the computed cells by name, and
    * `sl` (the wasm package) and `handles` (drawn by the demo where it wants them).
