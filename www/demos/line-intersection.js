@@ -60,17 +60,18 @@ export const defaultState = Object.freeze({
   depth: MAX_DEPTH,
 });
 
-export const fields = {
-  points: field.points({ min: POINT_COUNT, max: POINT_COUNT }),
-  line: field.points({ min: LINE_HANDLES, max: LINE_HANDLES }),
-  depth: field.number({ min: 0, max: MAX_DEPTH, integer: true }),
-};
-
-/** A and B must differ: a line needs a direction. */
-export function check(state) {
-  const [[ax, ay], [bx, by]] = state.line;
+/** The line's two points A and B; they must differ: a line needs a direction. */
+function lineField(state, name) {
+  field.points({ min: LINE_HANDLES, max: LINE_HANDLES })(state, name);
+  const [[ax, ay], [bx, by]] = state[name];
   if (ax === bx && ay === by) throw new Error(t("lineIntersection.sameLinePoints", { x: ax, y: ay }));
 }
+
+export const fields = {
+  points: field.points({ min: POINT_COUNT, max: POINT_COUNT }),
+  line: lineField,
+  depth: field.number({ min: 0, max: MAX_DEPTH, integer: true }),
+};
 
 /** The curve, in wasm; a dragged control point moves it in place (A and B are not in it). */
 export const derive = {
