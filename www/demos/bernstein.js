@@ -20,7 +20,7 @@ import {
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
-import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
 import { BasisPlotPointer, drawBand, drawGraphs, drawPlotFrame, followHighlight } from "../lib/basis-plot.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
@@ -437,15 +437,11 @@ export function setup(ui) {
   });
   followHighlight(ui, pointer);
 
-  const { title, table, wrap } = titledTable("bernstein");
-  ui.ctx.slots.details.append(title, wrap);
-  let degree = -1;
-  let rows = [];
-  let sumCells = null;
-
-  function build(n, { basis: { peakValues }, labels }) {
-    degree = n;
-    rows = [];
+  /** One row per basis function (the legend, hovering a row highlights it), then the sum. */
+  const details = detailsTable(ui, "bernstein", (n, table) => {
+    const { basis: { peakValues }, labels } = ui.data;
+    pointer.setRowHover(-1); // the hovered row, if any, is gone
+    const rows = [];
     const columns = ["colFunction", "colValue", "colMirror", "colPeak"];
     const head = el("tr", {}, columns.map((key) => el("th", { scope: "col", text: t(`bernstein.${key}`) })));
     for (let i = 0; i <= n; i++) {
@@ -470,22 +466,23 @@ export function setup(ui) {
       cells.row.addEventListener("blur", leave);
       rows.push(cells);
     }
-    sumCells = valueSpans();
+    const sum = valueSpans();
     const sumRow = el("tr", { dataset: { index: "sum" } },
       el("th", { scope: "row", text: t("bernstein.sumRow") }),
-      el("td", { dataset: { cell: "value" } }, sumCells.exact, sumCells.decimal),
+      el("td", { dataset: { cell: "value" } }, sum.exact, sum.decimal),
       el("td", {}),
       el("td", {}));
     table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((cells) => cells.row), sumRow));
-  }
+    return { rows, sum };
+  });
 
   return {
     update(s, d) {
       const n = s.points.length - 1;
-      if (degree !== n) build(n, d);
+      const { rows, sum: sumCells } = details.cellsFor(n);
       const w = weightNumbers(s);
       const fill = (spans, value) => setValueSpans(spans, w.value(value, n), fmt(value));
-      setText(title, t("bernstein.tableCaption", { n, t: w.param() }));
+      setText(details.title, t("bernstein.tableCaption", { n, t: w.param() }));
       for (let i = 0; i <= n; i++) {
         fill(rows[i].value, d.weights.values[i]);
         fill(rows[i].mirror, d.weights.mirrored[i]);
