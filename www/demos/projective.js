@@ -234,7 +234,7 @@ export const figure = {
   /** The square and the quadrilateral together (the curves lie inside or near them). */
   bounds: (s) => boundsOf([[0, 0], [SIZE, SIZE], ...s.corners, ...s.points]),
   insets: scaledInsets(LEGEND_PX, 0, 0, 0),
-  handles: { fields: ["points", "corners"], label: (i) => HANDLE_LABELS[i], polygon: false },
+  handles: { field: ["points", "corners"], label: (i) => HANDLE_LABELS[i], polygon: false },
 };
 
 /** The key: (a) solid, (b) dots, (c) dashed. */

@@ -1,41 +1,30 @@
 /**
  * Demo 3 (syllabus §2): subdivision. `curve.split(t0)` cuts a Bézier curve into two Bézier
  * curves of the same degree whose control polygons are the two outer edges of the de Casteljau
- * triangle at t0: left l_i = p_0^i(t0) (top edge), right r_i = p_i^{n−i}(t0) (hypotenuse).
+ * triangle at t0:
+ *
+ *   left  l_i = p_0^i(t0)      (top edge),    L(u) = P(t0·u),
+ *   right r_i = p_i^{n−i}(t0)  (hypotenuse),  R(u) = P(t0 + (1 − t0)·u),   u ∈ [0, 1].
+ *
  * A "levels" control repeats the split at 1/2: after k levels the 2^k polygons (from
  * 2^k − 1 `split(0.5)` calls, every intermediate wasm object freed) hug the curve.
- *
- * Same habits as the reference demo (de-casteljau.js): the curve lives in wasm and is updated in
- * place while dragging, everything drawn comes from the core (`sampleUniform`, `split`,
- * `deCasteljau`), the draw path allocates nothing and replaced wasm objects are freed.
  */
-import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, checkbox, group, el, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
-import { t } from "../lib/strings.js";
+import { field } from "../lib/validate.js";
+import { slider, checkbox, pointButtons, readout, group } from "../lib/panel.js";
+import { placeLabel, placeLabelFrom } from "../lib/handles.js";
+import { el, setText } from "../lib/controls.js";
+import { fmt, subscript, superscript, degreeName, exactNumbers, fractionTex } from "../lib/format.js";
+import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { pointListActions, pointButtons } from "../lib/point-list.js";
-import { Player } from "../lib/player.js";
-import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { screenCentroid } from "../lib/triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "subdivision";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "subdivision";
-export const title = t("subdivision.title");
-export const summary = t("subdivision.summary");
 /** Syllabus section. */
 export const section = 2;
-
-/** The worked example of the Greek notes (syllabus §2), split in the middle. */
-export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
-  t: 0.5,
-  levels: 0,
-  triangle: true,
-});
 
 /** Fewest and most control points (degree 1 … 10). */
 export const MIN_POINTS = 2;
@@ -55,13 +44,37 @@ const END_LABEL_ROOM = 0.12;
 /** Points of the level polygons are drawn up to this level (beyond, they make a solid line). */
 const LEVEL_POINTS_MAX = 3;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "t", "levels", "triangle"]);
-  checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
-  checkNumber(state, "t", { min: 0, max: 1 });
-  checkNumber(state, "levels", { min: 0, max: MAX_LEVELS, integer: true });
-  checkBoolean(state, "triangle");
+/** The worked example of the Greek notes (syllabus §2), split in the middle. */
+export const defaultState = Object.freeze({
+  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  t: 0.5,
+  levels: 0,
+  triangle: true,
+});
+
+export const fields = {
+  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  t: field.number({ min: 0, max: 1 }),
+  levels: field.number({ min: 0, max: MAX_LEVELS, integer: true }),
+  triangle: field.boolean(),
+};
+
+/** The curve, in wasm; a dragged point moves it in place. */
+export const derive = {
+  from: ["points"],
+  build: (s, sl) => ({ curve: new sl.BezierCurve(flatten(s.points), 2) }),
+  moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
+};
+
+/** The control points of the two halves of `curve.split(t0)`, flat; the halves are freed. */
+function halves(curve, t0) {
+  const [l, r] = curve.split(t0);
+  try {
+    return { left: l.controlPoints(), right: r.controlPoints() };
+  } finally {
+    l.free();
+    r.free();
+  }
 }
 
 /**
@@ -94,425 +107,285 @@ function subdivide(curve, levels) {
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * The figure's texts for degree n: handles P₀ … Pₙ (while the split is shown, the ends also
+ * name what they are: P₀ = L₀, Pₙ = Rₙ), the halves' points L₁, R₁ … and the split point
+ * Lₙ = R₀. Made again only when the degree or the split's visibility changed.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let curve = new sl.BezierCurve(flatten(work.points), 2);
-
-  // Derived data, recomputed only when the geometry, t0 or the level changed.
-  let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
-  let left = null; // control points of split(t0)[0], flat
-  let right = null; // control points of split(t0)[1], flat
-  let triangle = null; // curve.deCasteljau(t0)
-  let pieces = null; // subdivide(curve, levels): 2^levels polygons, flat
-  let geometryDirty = true;
-  let tDirty = true;
-  let levelsDirty = true;
-  const handleLabels = []; // "P₀", or "P₀ = L₀" at the ends while the split is shown
-  const sideLabels = []; // "L₁", "R₂" … cached per (side, i)
-  let splitLabel = ""; // "L₃ = R₀"
-
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => paddedBounds(work.points, END_LABEL_ROOM) });
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
-      geometryDirty = true;
-    }, handleLabel),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => edits.add(i),
-    remove: (i) => edits.remove(i),
-  });
-
-  // ------------------------------------------------------------ side panel
-  const tSlider = slider({
-    label: t("subdivision.control.t"),
-    inputLabel: t("subdivision.control.t.input"),
-    name: "t",
-    min: 0,
-    max: 1,
-    step: T_SLIDER_STEP,
-    value: work.t,
-    onChange: (value, final) => setT(value, final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const stepper = new Player(view, {
-    get: () => work.t,
-    set: (value, final) => setT(value, final),
-    playable: false,
-    stepBackTitle: t("subdivision.control.stepBack.title"),
-    stepTitle: t("subdivision.control.stepForward.title"),
-  });
-  const levelsSlider = slider({
-    label: t("subdivision.control.levels"),
-    inputLabel: t("subdivision.control.levels.input"),
-    name: "levels",
-    min: 0,
-    max: MAX_LEVELS,
-    step: 1,
-    value: work.levels,
-    format: (v) => String(v),
-    onChange: (value, final) => setLevels(Math.round(value), final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const levelsText = el("p", { class: "sl-note", dataset: { info: "levels" } });
-  const triangleBox = checkbox({
-    label: t("subdivision.control.triangle"),
-    name: "triangle",
-    checked: work.triangle,
-    onChange: (on) => {
-      work.triangle = on;
-      view.requestDraw();
-      ctx.commit(work);
-    },
-  });
-  const degreeText = el("p", { class: "sl-note", dataset: { info: "degree" } });
-  const { addButton, removeButton } = pointButtons({ add: (i) => edits.add(i), remove: (i) => edits.remove(i), selected: () => handles.selected });
-  ctx.slots.controls.append(
-    group(null, tSlider.element, stepper.element, triangleBox.element),
-    group(null, levelsSlider.element, levelsText),
-    group(null, degreeText, el("div", { class: "sl-button-row" }, addButton, removeButton)),
-  );
-
-  // ------------------------------------------------------------ formula and table
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const { title: tableTitle, table, wrap: tableWrap } = titledTable("subdivision");
-  ctx.slots.details.append(tableTitle, tableWrap);
-  let tableDegree = -1;
-  let tableCells = []; // per i: { left: { exact, decimal }, right: { exact, decimal } }
-
-  // ------------------------------------------------------------ edits
-  function setT(value, final) {
-    work.t = value;
-    tSlider.set(value);
-    tDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
+function labelsOf(n, split, previous) {
+  if (previous?.n === n && previous.split === split) return previous;
+  const p = (i) => `P${subscript(i)}`;
+  const handles = [];
+  for (let i = 0; i <= n; i++) handles.push(p(i));
+  if (split) {
+    handles[0] = t("subdivision.firstLabel", { p: p(0), l: `L${subscript(0)}`, r: `R${subscript(0)}` });
+    handles[n] = t("subdivision.lastLabel", { p: p(n), l: `L${subscript(0)}`, r: `R${subscript(n)}` });
   }
-
-  function setLevels(value, final) {
-    const levels = Math.min(MAX_LEVELS, Math.max(0, value));
-    if (levels !== work.levels) {
-      work.levels = levels;
-      levelsDirty = true;
-      view.requestDraw();
-    }
-    levelsSlider.set(levels);
-    if (final) ctx.commit(work);
+  const left = [];
+  const right = [];
+  for (let i = 0; i <= n; i++) {
+    left.push(t("subdivision.leftLabel", { i: subscript(i) }));
+    right.push(t("subdivision.rightLabel", { i: subscript(i) }));
   }
-
-  /** Replaces the wasm curve after the number of points changed (the old one is freed). */
-  function rebuild() {
-    const next = new sl.BezierCurve(flatten(work.points), 2);
-    curve.free();
-    curve = next;
-    geometryDirty = true;
-    view.requestDraw();
-  }
-
-  const edits = pointListActions({ ctx, work, view, handles, min: MIN_POINTS, max: MAX_POINTS, strings: "subdivision", rebuild });
-
-  // ------------------------------------------------------------ core data
-  /** Asks the core for the samples, the split, the triangle and the levels when something changed. */
-  function recompute() {
-    if (geometryDirty) samples = curve.sampleUniform(CURVE_SAMPLES);
-    if (geometryDirty || tDirty) {
-      const [l, r] = curve.split(work.t);
-      left = l.controlPoints();
-      right = r.controlPoints();
-      l.free();
-      r.free();
-      triangle = curve.deCasteljau(work.t);
-    }
-    if (geometryDirty || levelsDirty) pieces = subdivide(curve, work.levels);
-    if (geometryDirty || tDirty || levelsDirty) syncPanels();
-    geometryDirty = tDirty = levelsDirty = false;
-  }
-
-  // ------------------------------------------------------------ drawing
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
-    const n = pts.length - 1;
-    const showSplit = work.levels === 0;
-
-    // The de Casteljau triangle at t0, faint: its inner levels (the outer edges are L and R).
-    if (showSplit && work.triangle) {
-      let offset = n + 1;
-      r.beginPath();
-      for (let level = 1; level < n; level++) {
-        const count = n + 1 - level;
-        for (let j = 0; j < count; j++) {
-          const x = v.sx(triangle[2 * (offset + j)]);
-          const y = v.sy(triangle[2 * (offset + j) + 1]);
-          if (j === 0) r.moveTo(x, y);
-          else r.lineTo(x, y);
-        }
-        offset += count;
-      }
-      r.paint(theme.helper);
-    }
-
-    // The original control polygon.
-    pointsPath(r, v, pts, 0, n + 1);
-    r.paint(theme.polygon);
-
-    // The curve, from one batched sample call.
-    flatPath(r, v, samples, 0, CURVE_SAMPLES);
-    r.paint(theme.curve);
-
-    // Repeated subdivision: 2^k polygons in two alternating colours, over
-    // the curve so that their approach to it stays visible.
-    if (!showSplit) {
-      const perPiece = n + 1;
-      const count = pieces.length / (2 * perPiece);
-      for (let j = 0; j < count; j++) {
-        const colour = j % 2;
-        pathOf(r, v, pieces, j * perPiece, perPiece);
-        r.paint(theme.levelStroke[colour]);
-        if (work.levels <= LEVEL_POINTS_MAX) {
-          for (let i = 0; i < perPiece; i++) {
-            const k = 2 * (j * perPiece + i);
-            r.point(v.sx(pieces[k]), v.sy(pieces[k + 1]), theme.levelPoint[colour]);
-          }
-        }
-      }
-    }
-
-    // The two halves' control polygons: left solid with dots, right dashed with squares.
-    if (showSplit) {
-      pathOf(r, v, left, 0, n + 1);
-      r.paint(theme.splitLeft);
-      pathOf(r, v, right, 0, n + 1);
-      r.paint(theme.splitRight);
-      for (let i = 0; i <= n; i++) {
-        r.point(v.sx(left[2 * i]), v.sy(left[2 * i + 1]), theme.splitLeftPoint);
-        const size = theme.splitRightPoint.radius * r.scale;
-        r.beginPath();
-        r.rect(v.sx(right[2 * i]) - size, v.sy(right[2 * i + 1]) - size, 2 * size, 2 * size);
-        r.paint(theme.splitRightPoint);
-      }
-    }
-
-    handles.draw(r, v);
-
-    // Centroid of the control points on screen: labels go on the side away from it.
-    let cx = 0;
-    let cy = 0;
-    for (let i = 0; i <= n; i++) {
-      cx += v.sx(pts[i][0]);
-      cy += v.sy(pts[i][1]);
-    }
-    cx /= n + 1;
-    cy /= n + 1;
-    if (showSplit && n <= LABEL_MAX_DEGREE) {
-      for (let i = 1; i < n; i++) {
-        labelOutward(r, v, sideLabel(0, i), left, i, n, cx, cy, theme.labelSmall, theme.splitLeftPoint.radius * r.scale);
-        labelOutward(r, v, sideLabel(1, i), right, i, n, cx, cy, theme.labelSmall, theme.splitRightPoint.radius * r.scale);
-      }
-    }
-
-    // The split point P(t0) = l_n = r_0.
-    const sx = v.sx(right[0]);
-    const sy = v.sy(right[1]);
-    r.point(sx, sy, theme.pointOnCurve);
-    labelAway(r, showSplit ? splitLabel : t("subdivision.splitPointLabel"), sx, sy, cx, cy, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
-  }
-
-  /** Starts a path along `count` points of the flat array `flat` from point `start` (the caller paints it). */
-  function pathOf(r, v, flat, start, count) {
-    r.beginPath();
-    for (let i = 0; i < count; i++) {
-      const k = 2 * (start + i);
-      const x = v.sx(flat[k]);
-      const y = v.sy(flat[k + 1]);
-      if (i === 0) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-  }
-
-  /**
-   * Labels inner point i of a half's polygon (flat, n + 1 points) outside it: perpendicular to
-   * the chord from its first to its last point, on the side the point lies (the half's curve
-   * runs between the polygon and that chord). Points on the chord fall back to `labelAway`.
-   */
-  function labelOutward(r, v, text, flat, i, n, cx, cy, style, radius) {
-    const x = v.sx(flat[2 * i]);
-    const y = v.sy(flat[2 * i + 1]);
-    const ax = v.sx(flat[0]);
-    const ay = v.sy(flat[1]);
-    let nx = ay - v.sy(flat[2 * n + 1]);
-    let ny = v.sx(flat[2 * n]) - ax;
-    const length = Math.hypot(nx, ny);
-    const side = length > 0 ? ((x - ax) * nx + (y - ay) * ny) / length : 0;
-    if (Math.abs(side) < 1) {
-      labelAway(r, text, x, y, cx, cy, style, radius);
-      return;
-    }
-    nx /= side > 0 ? length : -length;
-    ny /= side > 0 ? length : -length;
-    placeLabel(r, text, x, y, nx, ny, radius, style);
-  }
-
-  /** Labels the point (x, y) on the side away from the screen point (cx, cy). */
-  function labelAway(r, text, x, y, cx, cy, style, radius) {
-    let dx = x - cx;
-    let dy = y - cy;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) {
-      dx = 0; // at the centroid: above
-      dy = -1;
-    } else {
-      dx /= length;
-      dy /= length;
-    }
-    placeLabel(r, text, x, y, dx, dy, radius, style);
-  }
-
-  /** "L₁" (side 0) or "R₁" (side 1), cached. */
-  function sideLabel(side, i) {
-    const k = side * (MAX_POINTS + 1) + i;
-    return (sideLabels[k] ??= t(side === 0 ? "subdivision.leftLabel" : "subdivision.rightLabel", { i: subscript(i) }));
-  }
-
-  /** P₀ … Pₙ; while the split is shown the ends also name what they are: P₀ = L₀, Pₙ = Rₙ. */
-  function handleLabel(i) {
-    const n = work.points.length - 1;
-    const end = work.levels === 0 && (i === 0 || i === n);
-    const k = (end ? MAX_POINTS + 1 : 0) + i;
-    return (handleLabels[k] ??= end
-      ? t(i === 0 ? "subdivision.firstLabel" : "subdivision.lastLabel", { p: `P${subscript(i)}`, l: `L${subscript(0)}`, r: `R${subscript(i)}` })
-      : `P${subscript(i)}`);
-  }
-
-  // ------------------------------------------------------------ panels (formula, table, label)
-  function syncPanels() {
-    const pts = work.points;
-    const n = pts.length - 1;
-    const k = work.levels;
-    degreeText.textContent = t("subdivision.degree", { n, count: n + 1 });
-    addButton.disabled = n + 1 >= MAX_POINTS;
-    removeButton.disabled = n + 1 <= MIN_POINTS;
-    splitLabel = t("subdivision.splitLabel", { l: `L${subscript(n)}`, r: `R${subscript(0)}` });
-
-    // Exact fractions when t0 is a simple fraction and every input is an integer: every point
-    // of the triangle is then k / den^n.
-    const tFraction = simpleFraction(work.t);
-    const exact = tFraction && allIntegers(pts.flat()) ? tFraction : null;
-    const den = exact ? exact.den ** n : 0;
-    const tTex = tFraction ? fractionTex(tFraction) : fmt(work.t);
-    const tText = tFraction ? fractionText(tFraction) : fmt(work.t);
-    const coord = (value, tex) => {
-      const f = den ? exactFraction(value, den) : null;
-      if (!f) return fmt(value);
-      return tex ? fractionTex(f) : fractionText(f);
-    };
-    const pointTex = (flat, i) => `\\left(${coord(flat[2 * i], true)},\\ ${coord(flat[2 * i + 1], true)}\\right)`;
-    const list = (flat) => {
-      const parts = [];
-      for (let i = 0; i <= n; i++) parts.push(pointTex(flat, i));
-      return parts.join(",\\ ");
-    };
-
-    // Levels: 2^k polygons of n + 1 points; neighbours share their end points.
-    const polygons = pieces.length / (2 * (n + 1));
-    const total = polygons * (n + 1);
-    const distinct = polygons * n + 1;
-    setText(levelsText, t(k === 0 ? "subdivision.levelsNote0" : "subdivision.levelsNote", { k, polygons, total, distinct }));
-
-    const oneMinusTex = tFraction ? fractionTex({ num: tFraction.den - tFraction.num, den: tFraction.den }) : fmt(1 - work.t);
-    formula.set([
-      `l_i = p_0^{\\,i}(t_0),\\qquad r_i = p_i^{\\,${n}-i}(t_0),\\qquad i = 0,\\dots,${n},\\qquad t_0 = ${tTex}`,
-      `l_{${n}} = r_0 = p_0^{${n}}(${tTex}) = P(${tTex}) = ${pointTex(right, 0)}`,
-      `L:\\ ${list(left)}`,
-      `R:\\ ${list(right)}`,
-      `L(u) = P(${tTex}\\,u),\\qquad R(u) = P\\!\\left(${tTex} + ${oneMinusTex}\\,u\\right),\\qquad 0 \\le u \\le 1`,
-      `k = ${k}:\\quad 2^{${k}} = ${polygons}\\ \\text{${t(polygons === 1 ? "subdivision.formulaPolygon" : "subdivision.formulaPolygons")}},\\quad ${polygons} \\cdot ${n + 1} = ${total}\\ \\text{${t("subdivision.formulaPoints")}}`,
-    ]);
-
-    // Table: one row per i with l_i and r_i.
-    if (tableDegree !== n) buildTable(n);
-    setText(tableTitle, t("subdivision.tableCaption", { t: tText }));
-    for (let i = 0; i <= n; i++) {
-      fillCell(tableCells[i].left, left, i, coord);
-      fillCell(tableCells[i].right, right, i, coord);
-    }
-
-    const levelsAria = k === 0 ? "" : t("subdivision.ariaLevels", { k, polygons, total });
-    view.setLabel(
-      t("subdivision.aria", { kind: degreeName(n), count: n + 1, t: fmt(work.t), n: subscript(n), x: fmt(right[0], 2), y: fmt(right[1], 2) }) + levelsAria,
-    );
-  }
-
-  /** Writes point i of `flat` into a cell: exact value first, decimals under it when different. */
-  function fillCell(cell, flat, i, coord) {
-    const decimalText = `(${fmt(flat[2 * i])}, ${fmt(flat[2 * i + 1])})`;
-    const exactText = `(${coord(flat[2 * i], false)}, ${coord(flat[2 * i + 1], false)})`;
-    setValueSpans(cell, exactText, decimalText);
-  }
-
-  /** Rebuilds the table's rows for degree n (only when the degree changed). */
-  function buildTable(n) {
-    tableDegree = n;
-    tableCells = [];
-    const head = el("tr", {},
-      el("th", { scope: "col", text: t("subdivision.colIndex") }),
-      el("th", { scope: "col", text: t("subdivision.colLeft") }),
-      el("th", { scope: "col", text: t("subdivision.colRight") }));
-    const rows = [];
-    for (let i = 0; i <= n; i++) {
-      const cells = {
-        left: valueSpans(),
-        right: valueSpans(),
-      };
-      tableCells.push(cells);
-      const leftName = `l${subscript(i)} = p${subscript(0)}${superscript(i)} = `;
-      const rightName = `r${subscript(i)} = p${subscript(i)}${superscript(n - i)} = `;
-      rows.push(el("tr", {},
-        el("th", { scope: "row", text: String(i) }),
-        el("td", { dataset: { side: "left", index: String(i) } }, el("span", { class: "sl-cell-name", text: leftName }), cells.left.exact, cells.left.decimal),
-        el("td", { dataset: { side: "right", index: String(i) } }, el("span", { class: "sl-cell-name", text: rightName }), cells.right.exact, cells.right.decimal)));
-    }
-    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
-  }
-
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
-      curve.free();
-      curve = next;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      if (handles.selected >= work.points.length) handles.select(-1);
-      tSlider.set(work.t);
-      levelsSlider.set(work.levels);
-      triangleBox.set(work.triangle);
-      geometryDirty = tDirty = levelsDirty = true;
-      view.requestDraw();
-      recompute();
-    },
-    destroy() {
-      stepper.destroy();
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-    },
-  };
+  const point = split
+    ? t("subdivision.splitLabel", { l: `L${subscript(n)}`, r: `R${subscript(0)}` })
+    : t("subdivision.splitPointLabel");
+  return { n, split, handles, left, right, point };
 }
+
+/** What the core returns: the samples, the two halves and the triangle at t0, the level polygons; the texts. */
+export const compute = {
+  samples: [["points"], (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
+  halves: [["points", "t"], (s, d) => halves(d.curve, s.t)],
+  triangle: [["points", "t"], (s, d) => d.curve.deCasteljau(s.t)],
+  pieces: [["points", "levels"], (s, d) => subdivide(d.curve, s.levels)],
+  labels: [["points", "levels"], (s, d) => labelsOf(s.points.length - 1, s.levels === 0, d.labels)],
+};
+
+export const controls = [
+  group(
+    null,
+    slider("t", {
+      label: "subdivision.control.t",
+      min: 0,
+      max: 1,
+      step: T_SLIDER_STEP,
+      player: () => ({
+        playable: false,
+        stepBackTitle: t("subdivision.control.stepBack.title"),
+        stepTitle: t("subdivision.control.stepForward.title"),
+      }),
+    }),
+    checkbox("triangle", { label: "subdivision.control.triangle" }),
+  ),
+  group(
+    null,
+    slider("levels", {
+      label: "subdivision.control.levels",
+      min: 0,
+      max: MAX_LEVELS,
+      step: 1,
+      format: (v) => String(v),
+      round: (v) => Math.min(MAX_LEVELS, Math.max(0, Math.round(v))),
+    }),
+    readout("levels", (s, d) => levelsNote(s, d)),
+  ),
+  group(
+    null,
+    readout("degree", (s) => t("subdivision.degree", { n: s.points.length - 1, count: s.points.length })),
+    pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
+  ),
+];
+
+export const figure = {
+  bounds: (s) => paddedBounds(s.points, END_LABEL_ROOM),
+  handles: { field: "points", label: (i, s, d) => d.labels.handles[i] },
+};
 
 /** The points' bounding box (the curve lies in their convex hull), widened left and right by `room` × the width. */
 function paddedBounds(points, room) {
   const [x0, y0, x1, y1] = boundsOf(points);
   const pad = room * (x1 - x0);
   return [x0 - pad, y0, x1 + pad, y1];
+}
+
+// ------------------------------------------------------------ drawing
+
+const centre = new Float64Array(2);
+
+/**
+ * The faint triangle at t0, the polygon, the curve, then either the two halves' polygons (left
+ * solid with dots, right dashed with squares) or the 2^k level polygons; the split point.
+ */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const n = s.points.length - 1;
+  const showSplit = s.levels === 0;
+  const { left, right } = d.halves;
+
+  // The de Casteljau triangle at t0, faint: its inner levels (the outer edges are L and R).
+  if (showSplit && s.triangle) {
+    let offset = n + 1;
+    r.beginPath();
+    for (let level = 1; level < n; level++) {
+      const count = n + 1 - level;
+      for (let j = 0; j < count; j++) {
+        const x = v.sx(d.triangle[2 * (offset + j)]);
+        const y = v.sy(d.triangle[2 * (offset + j) + 1]);
+        if (j === 0) r.moveTo(x, y);
+        else r.lineTo(x, y);
+      }
+      offset += count;
+    }
+    r.paint(theme.helper);
+  }
+  pointsPath(r, v, s.points, 0, n + 1);
+  r.paint(theme.polygon);
+  flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
+  r.paint(theme.curve);
+
+  if (showSplit) {
+    flatPath(r, v, left, 0, n + 1);
+    r.paint(theme.splitLeft);
+    flatPath(r, v, right, 0, n + 1);
+    r.paint(theme.splitRight);
+    const size = theme.splitRightPoint.radius * r.scale;
+    for (let i = 0; i <= n; i++) {
+      r.point(v.sx(left[2 * i]), v.sy(left[2 * i + 1]), theme.splitLeftPoint);
+      r.beginPath();
+      r.rect(v.sx(right[2 * i]) - size, v.sy(right[2 * i + 1]) - size, 2 * size, 2 * size);
+      r.paint(theme.splitRightPoint);
+    }
+  } else {
+    // 2^k polygons in two alternating colours, over the curve so that their approach stays visible.
+    const perPiece = n + 1;
+    const count = d.pieces.length / (2 * perPiece);
+    for (let j = 0; j < count; j++) {
+      const colour = j % 2;
+      flatPath(r, v, d.pieces, j * perPiece, (j + 1) * perPiece);
+      r.paint(theme.levelStroke[colour]);
+      if (s.levels > LEVEL_POINTS_MAX) continue;
+      for (let i = 0; i < perPiece; i++) {
+        const k = 2 * (j * perPiece + i);
+        r.point(v.sx(d.pieces[k]), v.sy(d.pieces[k + 1]), theme.levelPoint[colour]);
+      }
+    }
+  }
+  d.handles.draw(r, v);
+
+  // Labels go on the side away from the control points' centroid on screen.
+  screenCentroid(v, s.points, centre);
+  if (showSplit && n <= LABEL_MAX_DEGREE) {
+    for (let i = 1; i < n; i++) {
+      labelOutward(r, v, d.labels.left[i], left, i, n, theme.labelSmall, theme.splitLeftPoint.radius * r.scale);
+      labelOutward(r, v, d.labels.right[i], right, i, n, theme.labelSmall, theme.splitRightPoint.radius * r.scale);
+    }
+  }
+  // The split point P(t0) = l_n = r_0.
+  const sx = v.sx(right[0]);
+  const sy = v.sy(right[1]);
+  r.point(sx, sy, theme.pointOnCurve);
+  const radius = theme.pointOnCurve.radius * r.scale;
+  placeLabelFrom(r, d.labels.point, sx, sy, centre[0], centre[1], theme.labelPoint, radius);
+}
+
+/**
+ * Labels inner point i of a half's polygon (flat, n + 1 points) outside it: perpendicular to
+ * the chord from its first to its last point, on the side the point lies (the half's curve
+ * runs between the polygon and that chord). Points on the chord are labelled away from the centroid.
+ */
+function labelOutward(r, v, text, flat, i, n, style, radius) {
+  const x = v.sx(flat[2 * i]);
+  const y = v.sy(flat[2 * i + 1]);
+  const ax = v.sx(flat[0]);
+  const ay = v.sy(flat[1]);
+  let nx = ay - v.sy(flat[2 * n + 1]);
+  let ny = v.sx(flat[2 * n]) - ax;
+  const length = Math.hypot(nx, ny);
+  const side = length > 0 ? ((x - ax) * nx + (y - ay) * ny) / length : 0;
+  if (Math.abs(side) < 1) {
+    placeLabelFrom(r, text, x, y, centre[0], centre[1], style, radius);
+    return;
+  }
+  nx /= side > 0 ? length : -length;
+  ny /= side > 0 ? length : -length;
+  placeLabel(r, text, x, y, nx, ny, radius, style);
+}
+
+// ------------------------------------------------------------ formula, notes, label
+
+/** Level k: 2^k polygons of n + 1 points; neighbours share their end points. */
+function levelCounts(s, d) {
+  const perPiece = s.points.length;
+  const polygons = d.pieces.length / (2 * perPiece);
+  return { k: s.levels, polygons, total: polygons * perPiece, distinct: polygons * (perPiece - 1) + 1 };
+}
+
+function levelsNote(s, d) {
+  return t(s.levels === 0 ? "subdivision.levelsNote0" : "subdivision.levelsNote", levelCounts(s, d));
+}
+
+/**
+ * Exact text when t0 is a simple fraction and every control point is an integer: every point of
+ * the triangle is then k / den^n. The parameter itself is a fraction whenever it is a simple one.
+ */
+const pointNumbers = (s) => exactNumbers(s.t, s.points.flat());
+const paramText = (s, tex = false) => exactNumbers(s.t, []).param(tex);
+
+/** The two edges of the triangle, the split point, both halves, their reparametrisation, the level count. */
+export function formula(s, d) {
+  const n = s.points.length - 1;
+  const num = pointNumbers(s);
+  const { left, right } = d.halves;
+  const tTex = paramText(s, true);
+  const f = exactNumbers(s.t, []).exact;
+  const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmt(1 - s.t);
+  const coordinate = (value) => num.value(value, n, true);
+  const pointTex = (flat, i) => `\\left(${coordinate(flat[2 * i])},\\ ${coordinate(flat[2 * i + 1])}\\right)`;
+  const list = (flat) => Array.from({ length: n + 1 }, (_, i) => pointTex(flat, i)).join(",\\ ");
+  const { k, polygons, total } = levelCounts(s, d);
+  const polygonWord = `\\text{${tp("subdivision.formulaPolygons", polygons)}}`;
+  return [
+    `l_i = p_0^{\\,i}(t_0),\\qquad r_i = p_i^{\\,${n}-i}(t_0),\\qquad i = 0,\\dots,${n},\\qquad t_0 = ${tTex}`,
+    `l_{${n}} = r_0 = p_0^{${n}}(${tTex}) = P(${tTex}) = ${pointTex(right, 0)}`,
+    `L:\\ ${list(left)}`,
+    `R:\\ ${list(right)}`,
+    `L(u) = P(${tTex}\\,u),\\qquad R(u) = P\\!\\left(${tTex} + ${oneMinusTex}\\,u\\right),\\qquad 0 \\le u \\le 1`,
+    `k = ${k}:\\quad 2^{${k}} = ${polygons}\\ ${polygonWord},\\quad ` +
+      `${polygons} \\cdot ${n + 1} = ${total}\\ \\text{${t("subdivision.formulaPoints")}}`,
+  ];
+}
+
+/** The curve, t0, the halves and the split point; the level polygons when shown. */
+export function label(s, d) {
+  const n = s.points.length - 1;
+  const { right } = d.halves;
+  const { k, polygons, total } = levelCounts(s, d);
+  const levels = k === 0 ? "" : t("subdivision.ariaLevels", { k, polygons, total });
+  const x = fmt(right[0], 2);
+  const y = fmt(right[1], 2);
+  return t("subdivision.aria", { kind: degreeName(n), count: n + 1, t: fmt(s.t), n: subscript(n), x, y }) + levels;
+}
+
+// ------------------------------------------------------------ the table
+
+/** The table: one row per i with l_i = p_0^i and r_i = p_i^{n−i} (fraction and decimals). */
+export function setup(ui) {
+  const details = detailsTable(ui, "subdivision", (n, table) => {
+    const columns = ["colIndex", "colLeft", "colRight"];
+    const head = el("tr", {}, columns.map((key) => el("th", { scope: "col", text: t(`subdivision.${key}`) })));
+    const cell = (side, i, name, spans) => {
+      const nameSpan = el("span", { class: "sl-cell-name", text: name });
+      return el("td", { dataset: { side, index: String(i) } }, nameSpan, spans.exact, spans.decimal);
+    };
+    const cells = [];
+    const rows = [];
+    for (let i = 0; i <= n; i++) {
+      const row = { left: valueSpans(), right: valueSpans() };
+      cells.push(row);
+      rows.push(el("tr", {},
+        el("th", { scope: "row", text: String(i) }),
+        cell("left", i, `l${subscript(i)} = p${subscript(0)}${superscript(i)} = `, row.left),
+        cell("right", i, `r${subscript(i)} = p${subscript(i)}${superscript(n - i)} = `, row.right)));
+    }
+    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
+    return cells;
+  });
+
+  return {
+    update(s, d) {
+      const n = s.points.length - 1;
+      const cells = details.cellsFor(n);
+      const num = pointNumbers(s);
+      /** Point i of `flat` in a cell: exact value first, decimals under it when different. */
+      const fill = (spans, flat, i) => {
+        const [x, y] = [flat[2 * i], flat[2 * i + 1]];
+        setValueSpans(spans, `(${num.value(x, n)}, ${num.value(y, n)})`, `(${fmt(x)}, ${fmt(y)})`);
+      };
+      setText(details.title, t("subdivision.tableCaption", { t: paramText(s) }));
+      for (let i = 0; i <= n; i++) {
+        fill(cells[i].left, d.halves.left, i);
+        fill(cells[i].right, d.halves.right, i);
+      }
+    },
+  };
 }

@@ -20,9 +20,10 @@ export class BasisPlotPointer {
    *   near (x, y) or -1; `pick(x, final)` sets the parameter under x; `press()` runs before a
    *   press in the plot (stop a player), `enter()` when the pointer hovers the plot (the handles
    *   forget their hover). `before`: an interactor already on the view (the handles) that
-   *   this one goes ahead of, when the plot is made after them.
+   *   this one goes ahead of, when the plot is made after them; `first: true` ahead of all
+   *   interactors added before it (the handles of a declarative demo, made before its `setup`).
    */
-  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {}, before = null }) {
+  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {}, before = null, first = false }) {
     this.view = view;
     /** The function under the pointer in the plot, or -1. */
     this.plotHover = -1;
@@ -62,7 +63,7 @@ export class BasisPlotPointer {
           view.requestDraw();
         }
       },
-    }, before);
+    }, { before, first });
   }
 
   /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */
@@ -89,6 +90,24 @@ export class BasisPlotPointer {
 }
 
 /**
+ * For a declarative demo (demo.js): `ui.data.highlighted()` is the highlighted function now
+ * (`pointer.highlighted(ui.handles)`, -1 past the last handle, e.g. just after a removal), and
+ * each frame in which it differs from `ui.data.highlight` marks the pseudo-field "highlight"
+ * changed. Declare the cell `highlight: [["highlight", <handles' field>], (s, d) =>
+ * d.highlighted()]` and the formula, label, readouts and table follow the highlight as they
+ * follow the state. Call it from `setup(ui)`: its hook runs before the runtime's refresh.
+ */
+export function followHighlight(ui, pointer) {
+  ui.data.highlighted = () => {
+    const i = pointer.highlighted(ui.handles);
+    return i < ui.handles.source.count() ? i : -1;
+  };
+  ui.view.beforeFrame(() => {
+    if (ui.data.highlighted() !== ui.data.highlight) ui.touch("highlight");
+  });
+}
+
+/**
  * Paths and paints graph `i` of i-major samples `values` (`count` per function): sample k at
  * canvas (`x(k)`, `y(values[i·count + k])`).
  */
@@ -108,9 +127,10 @@ export function drawGraph(r, values, i, count, x, y, style) {
  * The frame of a basis plot in its strip (canvas px): the strip's background and top edge from
  * `plot.top` to `plot.bottom` across the canvas, the value axis from 0 (`plot.y0`) to 1
  * (`plot.y1`) at `plot.x0`, the parameter axis to `plot.x1`, and a dashed line at value 1
- * (the partition of unity's bound).
+ * (the partition of unity's bound); with `labels` `{ zero, one, tick }`, the value labels left
+ * of the value axis, `tick` CSS px (at scale 1) away from it.
  */
-export function drawPlotFrame(r, plot) {
+export function drawPlotFrame(r, plot, labels = null) {
   const theme = r.theme;
   r.beginPath();
   r.rect(0, plot.top, r.width, plot.bottom - plot.top);
@@ -128,6 +148,10 @@ export function drawPlotFrame(r, plot) {
   r.moveTo(plot.x0, plot.y1);
   r.lineTo(plot.x1, plot.y1);
   r.paint(theme.helper);
+  if (!labels) return;
+  const x = plot.x0 - (labels.tick + 2) * r.scale;
+  r.text(labels.zero, x, plot.y0, theme.labelSmall, "right", "middle");
+  r.text(labels.one, x, plot.y1, theme.labelSmall, "right", "middle");
 }
 
 /**
@@ -146,4 +170,39 @@ export function legendRow(pointer, i, name, ...cells) {
   row.addEventListener("focus", enter);
   row.addEventListener("blur", leave);
   return row;
+}
+
+/**
+ * Draws graphs 0 … `functions` − 1 of i-major samples `values` (`count` per function) in the
+ * basis colours, the highlighted one (`highlight`, or -1) last and thicker, on top.
+ */
+export function drawGraphs(r, values, functions, count, x, y, highlight) {
+  const theme = r.theme;
+  const cycle = theme.basisStroke.length;
+  for (let i = 0; i < functions; i++) {
+    if (i !== highlight) drawGraph(r, values, i, count, x, y, theme.basisStroke[i % cycle]);
+  }
+  if (highlight >= 0) drawGraph(r, values, highlight, count, x, y, theme.basisHover[highlight % cycle]);
+}
+
+/**
+ * Where a highlighted function acts on the curve: paths the runs of curve samples `samples`
+ * (flat [x, y, …] in world units, `count` of them) for which `inside(k)` holds, and paints them
+ * with `style` (the band under the curve, in the function's colour).
+ */
+export function drawBand(r, v, samples, count, inside, style) {
+  let open = false;
+  r.beginPath();
+  for (let k = 0; k < count; k++) {
+    if (inside(k)) {
+      const x = v.sx(samples[2 * k]);
+      const y = v.sy(samples[2 * k + 1]);
+      if (open) r.lineTo(x, y);
+      else r.moveTo(x, y);
+      open = true;
+    } else {
+      open = false;
+    }
+  }
+  r.paint(style);
 }

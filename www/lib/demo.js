@@ -8,10 +8,10 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
+ * | `derive` | `{ from: [fields], build(state, sl, { first }) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line; `first` at mount, where there is no last good state to keep); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data, ui) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With `fields: [a, b]` instead of `field`, the handles run over several lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays). `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With several fields, `field: [a, b]`, the handles run over the lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays); `accept` may refuse a move before that. `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -25,7 +25,7 @@
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
 import { FormulaPanel } from "./formula.js";
-import { Handles, pointHandles, pointListsHandles } from "./handles.js";
+import { Handles, pointHandles, pointLabel, pointListsHandles } from "./handles.js";
 import { t } from "./strings.js";
 
 /** True for a module written to this contract (rather than an old-style `mount`). */
@@ -61,7 +61,7 @@ export function mountDeclared(demo, initialState, ctx) {
   const derive = demo.derive;
   const cells = Object.entries(demo.compute ?? {});
   let work = structuredClone(initialState);
-  let model = derive.build(work, sl);
+  let model = derive.build(work, sl, { first: true });
   /**
    * What draw and the panels read: the model's values and the computed cells by name, and
    * `sl` (the wasm package) and `handles` (drawn by the demo where it wants them).
@@ -127,6 +127,8 @@ export function mountDeclared(demo, initialState, ctx) {
     },
     status: ctx.status,
     requestDraw: () => view.requestDraw(),
+    /** Stops the controls' animations (a tool of `setup` takes the parameter over). */
+    stopPlayback: () => built.forEach((control) => control.stop?.()),
   };
 
   function markChanged(field) {
@@ -205,38 +207,39 @@ export function mountDeclared(demo, initialState, ctx) {
   // ------------------------------------------------------------ figure parts, handles, panel
   const handleSpec = figureSpec.handles;
   if (handleSpec) {
+    // One field of points, or several in a row (`field: ["points", "corners"]`).
+    const handleFields = [].concat(handleSpec.field);
     const moved = derive.moved
       ? (i, xy) => {
           derive.moved(model, i, xy, work, ui);
-          if (changed) changed.add(handleSpec.field);
+          if (changed) changed.add(handleFields[0]);
           view.requestDraw();
         }
-      : () => markChanged(handleSpec.field);
-    const label = (i) => handleSpec.label(i, work, data);
-    const lists = handleSpec.fields;
-    const list = lists
-      ? pointListsHandles(
-          lists.length,
-          (k) => work[lists[k]],
-          (i, xy, k) => {
-            if (!derive.moved) {
-              markChanged(lists[k]);
-              return true;
-            }
-            if (derive.moved(model, i, xy, work, ui) === false) return false;
-            if (changed) changed.add(lists[k]);
-            view.requestDraw();
-            return true;
-          },
-          label,
-        )
-      : pointHandles(() => work[handleSpec.field], moved, handleSpec.label ? label : null);
+      : () => markChanged(handleFields[0]);
+    const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
+    const accept = handleSpec.accept ? (i, x, y) => handleSpec.accept(i, x, y, work) : null;
+    /** A move over several lists: offered to `accept` and `derive.moved` before it is written. */
+    const offer = (i, xy, k) => {
+      if (accept && !accept(i, xy[0], xy[1])) return false;
+      if (!derive.moved) {
+        markChanged(handleFields[k]);
+        return true;
+      }
+      if (derive.moved(model, i, xy, work, ui) === false) return false;
+      if (changed) changed.add(handleFields[k]);
+      view.requestDraw();
+      return true;
+    };
+    const list =
+      handleFields.length === 1 && !accept
+        ? pointHandles(() => work[handleFields[0]], moved, label)
+        : pointListsHandles(handleFields.length, (k) => work[handleFields[k]], offer, label ?? pointLabel);
     const extraPoints = handleSpec.extra ?? [];
     const listed = () => list.count();
     ui.handles = new Handles(view, {
       ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
       polygon: handleSpec.polygon,
-      constraint: handleSpec.constraint,
+      constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => i < listed() && ui.pointList?.remove(i),
@@ -254,11 +257,12 @@ export function mountDeclared(demo, initialState, ctx) {
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */
     update(state) {
-      const nextModel = derive.build(state, sl); // throws before anything changes
+      const next = structuredClone(state); // build may bring its copy into line (a rule it keeps)
+      const nextModel = derive.build(next, sl); // throws before anything changes
       for (const control of built) control.stop?.();
       swapModel(nextModel);
       modelStale = false;
-      work = structuredClone(state);
+      work = next;
       if (ui.handles) {
         ui.handles.forgetPointer();
         if (ui.handles.selected >= ui.handles.source.count()) ui.handles.select(-1);

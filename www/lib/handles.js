@@ -41,6 +41,14 @@ export function roundToView(value, scale) {
   return Math.round(value * factor) / factor;
 }
 
+/** Cached handle labels P₀, P₁, … */
+const POINT_LABELS = [];
+
+/** "Pᵢ" with a subscript index (cached: the draw path allocates nothing). */
+export function pointLabel(i) {
+  return (POINT_LABELS[i] ??= `P${subscript(i)}`);
+}
+
 /**
  * The `count`, `get`, `label` and `move` options of `Handles` for a demo's list of [x, y]
  * control points: `points()` returns the current list (a demo may replace it); a dragged point is
@@ -57,7 +65,6 @@ export function roundToView(value, scale) {
  *   });
  */
 export function pointHandles(points, moved, label = null) {
-  const labels = [];
   const xy = new Float64Array(2);
   return {
     count: () => points().length,
@@ -65,7 +72,7 @@ export function pointHandles(points, moved, label = null) {
       out[0] = points()[i][0];
       out[1] = points()[i][1];
     },
-    label: label ?? ((i) => (labels[i] ??= `P${subscript(i)}`)),
+    label: label ?? pointLabel,
     move: (i, x, y) => {
       points()[i][0] = x;
       points()[i][1] = y;
@@ -506,6 +513,24 @@ export function placeLabel(r, text, x, y, dx, dy, radius, style) {
 const LABEL_GAP_PX = 5;
 /** |dx| above this aligns the label's near edge to the point; below, the label is centred. */
 const LABEL_ALIGN_THRESHOLD = 0.35;
+
+/**
+ * Draws `text` next to the screen point (x, y) on the side away from the screen point (cx, cy)
+ * (a centroid computed once for many labels); straight above when (x, y) is at it.
+ */
+export function placeLabelFrom(r, text, x, y, cx, cy, style, radius) {
+  let dx = x - cx;
+  let dy = y - cy;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) {
+    dx = 0;
+    dy = -1;
+  } else {
+    dx /= length;
+    dy /= length;
+  }
+  placeLabel(r, text, x, y, dx, dy, radius, style);
+}
 
 /**
  * Draws `text` next to the screen point (x, y) on the side away from the centroid of `points`

@@ -202,7 +202,7 @@ export class KnotRuler {
     this._domainKey = "";
 
     // Ahead of the chained handles when they already exist: the band is the ruler's.
-    view.addInteractor(this, source.handles ?? null);
+    view.addInteractor(this, { before: source.handles ?? null });
     view.beforeFrame(() => this._flush());
     this._onKey = (e) => this._key(e);
     // Capture: runs before the Handles' listener on the same canvas, so a selected knot owns the keys.

@@ -31,7 +31,9 @@ function fragment(...nodes) {
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
- * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
+ * @param {boolean | object | () => object} [o.player] add the step / play buttons (Player
+ *   options if an object, or a function returning them, called at build time so that their
+ *   strings follow the language).
  * @param {string | ((text: string, state) => string)} [o.error] key of the message for typed
  *   text that is out of range (given `{ value, min, max, field }`), or the message itself.
  * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
@@ -83,7 +85,7 @@ export function slider(field, o) {
       });
       if (o.player) {
         player = new Player(ui.view, {
-          ...(typeof o.player === "object" ? o.player : {}),
+          ...(typeof o.player === "function" ? o.player() : typeof o.player === "object" ? o.player : {}),
           get: () => ui.state[field],
           set: (value, final) => ui.set(field, value, final),
           stopped: () => ui.commit(),
@@ -124,17 +126,33 @@ export function checkbox(field, { label, name = field }) {
 /**
  * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
  * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels. `set(ui,
- * value)` as for `slider` (then the buttons show the field's value again).
+ * value)` as for `slider` (then the buttons show the field's value again). `rebuild: true`: a
+ * choice the model is built from (a rule it enforces on the state): the new state is built
+ * first (`ui.replace`) and recorded only when the core accepts it.
  */
-export function choice(field, { options, name = field, set = null }) {
+export function choice(field, { options, name = field, set = null, rebuild = false }) {
   return {
     build(ui) {
+      const choose = (value) => {
+        if (!rebuild) {
+          ui.set(field, value);
+          return;
+        }
+        const next = structuredClone(ui.state);
+        next[field] = value;
+        try {
+          ui.replace(next);
+        } catch (err) {
+          control.set(ui.state[field]);
+          ui.status(err.message, "error");
+        }
+      };
       const control = radios({
         options: options.map((option) => ({ value: option.value, label: t(option.label) })),
         value: ui.state[field],
         name,
         onChange: (value) => {
-          if (!set) return ui.set(field, value);
+          if (!set) return choose(value);
           set(ui, value);
           control.set(ui.state[field]);
         },

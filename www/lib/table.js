@@ -25,6 +25,29 @@ export function titledTable(name, { caption, children = [] } = {}) {
   return { title, table, wrap: el("div", { class: "sl-table-wrap" }, table) };
 }
 
+/**
+ * A titled table in a declarative demo's details slot (`ui`, see demo.js) whose contents are
+ * made by `build(key, table)` only when `key` (the degree, say) changed: `cellsFor(key)` returns
+ * what `build` returned, for the caller to fill. `title` is the table's visible title.
+ */
+export function detailsTable(ui, name, build) {
+  const { title, table, wrap } = titledTable(name);
+  ui.ctx.slots.details.append(title, wrap);
+  let shownKey;
+  let cells = null;
+  return {
+    title,
+    table,
+    cellsFor(key) {
+      if (key !== shownKey) {
+        shownKey = key;
+        cells = build(key, table);
+      }
+      return cells;
+    },
+  };
+}
+
 /** The two spans of a value cell: `exact` (a fraction, or the decimals) and `decimal` under it. */
 export function valueSpans() {
   return { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) };

@@ -273,12 +273,13 @@ export class View {
    * Adds an interactor `{ pointerDown(event, x, y) → boolean, pointerMove(event, x, y),
    * pointerUp(event, x, y), hover(x, y, pointerType) → cursor | null, leave() }`; x, y are
    * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up.
-   * `before` (an interactor already added) puts the new one ahead of it: a band or plot made
-   * after the handles still claims its presses first.
+   * `before` (an interactor already added) puts the new one ahead of it, `first: true` ahead of
+   * all added earlier: a band or plot made after the handles still claims its presses first.
    */
-  addInteractor(interactor, before = null) {
+  addInteractor(interactor, { first = false, before = null } = {}) {
     const at = before ? this._interactors.indexOf(before) : -1;
-    if (at >= 0) this._interactors.splice(at, 0, interactor);
+    if (first) this._interactors.unshift(interactor);
+    else if (at >= 0) this._interactors.splice(at, 0, interactor);
     else this._interactors.push(interactor);
   }
 
