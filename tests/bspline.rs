@@ -237,6 +237,44 @@ fn de_boor_triangle_ends_at_the_point() {
 }
 
 #[test]
+fn de_boor_alphas_of_the_croatian_example_by_hand() {
+    // u = 3/2 in span k = 3 of U = [0,0,0,1,2,3,4,4,4], p = 2:
+    // r = 1: α_1 = (u − u_2)/(u_4 − u_2) = 3/4, α_2 = (u − u_3)/(u_5 − u_3) = 1/4;
+    // r = 2: α_2 = (u − u_3)/(u_4 − u_3) = 1/2.
+    let (k, alphas) = croatian().de_boor_alphas(1.5).unwrap();
+    assert_eq!(k, 3);
+    let got: Vec<_> = alphas
+        .iter()
+        .map(|a| (a.level, a.j, a.lo, a.hi, a.denominator, a.value))
+        .collect();
+    assert_eq!(
+        got,
+        vec![
+            (1, 1, 2, 4, 2.0, 0.75),
+            (1, 2, 3, 5, 2.0, 0.25),
+            (2, 2, 3, 4, 1.0, 0.5),
+        ]
+    );
+}
+
+#[test]
+fn de_boor_alphas_on_bezier_knots_are_all_t() {
+    // Knots 0^4 1^4: every α_j^r = (t − 0)/(1 − 0) = t, the de Casteljau factor.
+    let pts = pts2(&[(0.0, 0.0), (2.0, 2.0), (6.0, 4.0), (8.0, 2.0)]);
+    let b = BSplineCurve::new(pts, 3, vec![0., 0., 0., 0., 1., 1., 1., 1.], None).unwrap();
+    let (k, alphas) = b.de_boor_alphas(0.25).unwrap();
+    assert_eq!(k, 3);
+    assert_eq!(alphas.len(), 6);
+    let order: Vec<_> = alphas.iter().map(|a| (a.level, a.j)).collect();
+    assert_eq!(order, vec![(1, 1), (1, 2), (1, 3), (2, 2), (2, 3), (3, 3)]);
+    assert!(alphas
+        .iter()
+        .all(|a| a.value == 0.25 && a.denominator == 1.0));
+    assert!(b.de_boor_alphas(1.5).is_err());
+    assert!(b.de_boor_alphas(f64::NAN).is_err());
+}
+
+#[test]
 fn clamped_curves_interpolate_their_end_points() {
     let c = croatian();
     assert_eq!(c.evaluate(0.0).unwrap(), DVec2::new(0.0, 0.0));

@@ -26,7 +26,7 @@ mod sample;
 
 pub use basis::{basis_derivatives, basis_functions, BasisScratch};
 pub use construct::{knot_vector, parameterize, phantom_points, KnotKind, Parameterization};
-pub use de_boor::de_boor_triangle;
+pub use de_boor::{de_boor_alpha, de_boor_alphas, de_boor_triangle, DeBoorAlpha};
 pub(crate) use insert::check_insertion;
 pub use insert::{boehm_insert, KnotContinuity};
 pub use knots::KnotVector;
@@ -498,6 +498,20 @@ impl<C: Cartesian> BSplineCurve<C> {
             self.degree(),
             k,
             u,
+        ))
+    }
+
+    /// The span `k` of `u` and every α of de Boor's triangle there (see [`de_boor_alphas`]):
+    /// `α_j^r = (u − u_{j+k−p}) / (u_{j+1+k−r} − u_{j+k−p})`, levels `r = 1..=p`, `j = r..=p`.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] or [`Error::ParameterOutOfRange`] for a bad `u`.
+    pub fn de_boor_alphas(&self, u: f64) -> Result<(usize, Vec<DeBoorAlpha>)> {
+        let u = self.knots.check_parameter(u)?;
+        let k = self.knots.span(u);
+        Ok((
+            k,
+            de_boor_alphas(self.knots.as_slice(), self.degree(), k, u),
         ))
     }
 

@@ -276,6 +276,28 @@ impl JsBSplineCurve {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor(u)?)))
     }
 
+    /// Every α of de Boor's triangle at u, six numbers each `[r, j, lo, hi, u_hi − u_lo, α]`:
+    /// `α_j^r = (u − u_lo)/(u_hi − u_lo)` with `lo = j + k − p`, `hi = j + 1 + k − r`
+    /// (k = span(u)); levels r = 1..p in order, j = r..p ascending (the order of `deBoor(u)`'s
+    /// points after level 0), p(p+1)/2 alphas.
+    #[wasm_bindgen(js_name = deBoorAlphas)]
+    pub fn de_boor_alphas(&self, u: f64) -> Result<Vec<f64>, JsError> {
+        let (_, alphas) = with_curve!(&self.inner, c => c.de_boor_alphas(u))?;
+        Ok(alphas
+            .iter()
+            .flat_map(|a| {
+                [
+                    a.level as f64,
+                    a.j as f64,
+                    a.lo as f64,
+                    a.hi as f64,
+                    a.denominator,
+                    a.value,
+                ]
+            })
+            .collect())
+    }
+
     /// de Boor's triangle on the homogeneous points, dim + 1 numbers each.
     #[wasm_bindgen(js_name = deBoorHomogeneous)]
     pub fn de_boor_homogeneous(&self, u: f64) -> Result<Vec<f64>, JsError> {

@@ -1,7 +1,7 @@
 /**
  * Demo (syllabus §3): de Boor's algorithm. The B-spline counterpart of the de Casteljau demo and
  * built the same way: the curve lives in wasm and is updated in place while dragging
- * (`setControlPoint`), the construction is what the core returns (`deBoor(u)`, `span(u)`, one
+ * (`setControlPoint`), the construction is what the core returns (`deBoor(u)`, `deBoorAlphas(u)`, `span(u)`, one
  * `sampleUniform` per change), nothing is allocated per frame in the draw path, and replaced
  * wasm objects are freed. A strip under the figure shows the knot vector with the active span
  * [u_k, u_{k+1}) and the parameter u; pressing or dragging there sets u.
@@ -138,6 +138,7 @@ export function mount(container, initialState, ctx) {
   let triangle = null; // curve.deBoor(u): levels concatenated, the p + 1 active points first
   let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
   let span = 0; // curve.span(u): u_k <= u < u_{k+1}
+  let alphaData = null; // curve.deBoorAlphas(u): [r, j, lo, hi, u_hi − u_lo, α] per step
   let geometryDirty = true;
   let uDirty = true;
   const levelLabels = []; // "d₂¹" … cached per (j, r)
@@ -397,6 +398,7 @@ export function mount(container, initialState, ctx) {
     if (geometryDirty || uDirty) {
       triangle = curve.deBoor(work.u);
       span = curve.span(work.u);
+      alphaData = curve.deBoorAlphas(work.u);
       syncPanels();
     }
     geometryDirty = uDirty = false;
@@ -667,18 +669,13 @@ export function mount(container, initialState, ctx) {
     addButton.disabled = n + 1 >= MAX_POINTS;
     removeButton.disabled = n + 1 <= MIN_POINTS;
 
-    // The α of every step, for display: α_j^r = (u − u_{j+k−p}) / (u_{j+1+k−r} − u_{j+k−p})
-    // (syllabus §3), from the knot vector and the span the core reported. This only shows the
-    // numbers of the formula; the triangle itself is the core's deBoor(u).
+    // The α of every step, α_j^r = (u − u_{j+k−p}) / (u_{j+1+k−r} − u_{j+k−p}), as the core's
+    // deBoorAlphas(u) gives them (level by level, j ascending), grouped by level for display.
     const alphas = [];
-    for (let level = 1; level <= p; level++) {
-      const row = [];
-      for (let j = level; j <= p; j++) {
-        const lo = knots[j + k - p];
-        const hi = knots[j + 1 + k - level];
-        row.push({ j, lo: j + k - p, hi: j + 1 + k - level, value: (work.u - lo) / (hi - lo), width: hi - lo });
-      }
-      alphas.push(row);
+    for (let a = 0; a < alphaData.length; a += 6) {
+      const level = alphaData[a];
+      if (alphas.length < level) alphas.push([]);
+      alphas[level - 1].push({ j: alphaData[a + 1], lo: alphaData[a + 2], hi: alphaData[a + 3], width: alphaData[a + 4], value: alphaData[a + 5] });
     }
 
     // Exact fractions when u is a simple fraction and every point and knot is an integer: the
