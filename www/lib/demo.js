@@ -8,10 +8,11 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
+ * | `adjust(state)` | optional: after a change by the reader (`ui.set`, `ui.replace`), brings fields that depend on others back into range in place (u into a domain that shrank with the degree) |
  * | `derive` | `{ from: [fields], build(state, sl) → model, moved?(model, i, xy, state) }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i), constraint?(i), select?(i, ui) } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (`select` hears the handle selected, -1 for none) |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -94,6 +95,7 @@ export function mountDeclared(demo, initialState, ctx) {
     set(field, value, final = true, merge = null) {
       work[field] = value;
       markChanged(field);
+      adjust(work);
       if (final) ctx.commit(work, merge);
     },
     /** Marks a field changed after mutating it in place (a dragged point). */
@@ -102,6 +104,7 @@ export function mountDeclared(demo, initialState, ctx) {
     commit: (merge = null) => ctx.commit(work, merge),
     /** Replaces the whole working state (after an add/remove): the model is rebuilt first. */
     replace(next, final = true) {
+      demo.adjust?.(next);
       const nextModel = derive.build(next, sl); // throws before anything changes
       swapModel(nextModel);
       work = next;
@@ -113,6 +116,14 @@ export function mountDeclared(demo, initialState, ctx) {
     status: ctx.status,
     requestDraw: () => view.requestDraw(),
   };
+
+  /** `demo.adjust` on the working state; the fields it changed are marked. */
+  function adjust(state) {
+    if (!demo.adjust) return;
+    const before = { ...state };
+    demo.adjust(state);
+    for (const name of Object.keys(state)) if (state[name] !== before[name]) markChanged(name);
+  }
 
   function markChanged(field) {
     if (changed) changed.add(field);
@@ -165,6 +176,7 @@ export function mountDeclared(demo, initialState, ctx) {
     ui.handles = new Handles(view, {
       ...pointHandles(() => work[handleSpec.field], moved, handleSpec.label ?? null),
       constraint: handleSpec.constraint,
+      select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => ui.pointList?.remove(i),

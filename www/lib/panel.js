@@ -32,6 +32,10 @@ function fragment(...nodes) {
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
  * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
  * @param {string} [o.error] key of the message for typed text that is out of range.
+ * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
+ *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
+ * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
+ *   take the value (then it is reported and the slider shows the field again), else null.
  */
 export function slider(field, o) {
   return {
@@ -51,9 +55,17 @@ export function slider(field, o) {
         format: o.format,
         value: ui.state[field],
         onChange: (value, final) => {
+          if (o.onRelease && !final) return;
           player?.stop();
           const typed = control.typing();
-          ui.set(field, o.round ? o.round(value, typed) : value, final);
+          const next = o.round ? o.round(value, typed) : value;
+          const refusal = o.refuse?.(next, ui.state);
+          if (refusal) {
+            ui.status(refusal, "error");
+            control.set(ui.state[field]);
+            return;
+          }
+          ui.set(field, next, final);
         },
         onError: (text) => {
           const [a, b] = range();
@@ -121,10 +133,13 @@ export function choice(field, { options, name = field }) {
 /**
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
- * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits.
+ * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints` (or the keys `maxKey` /
+ * `minKey`, with `params(state)` added to `{ max }` / `{ min }`). The buttons are disabled at the
+ * limits. `min` may be a function of the state (a B-spline of degree p needs p + 1 points).
  */
-export function pointButtons(field, { min, max, prefix }) {
+export function pointButtons(field, o) {
+  const { min, max, prefix, minKey = `${prefix}.minPoints`, maxKey = `${prefix}.maxPoints`, params = () => ({}) } = o;
+  const least = typeof min === "function" ? min : () => min;
   return {
     build(ui) {
       const apply = (next) => {
@@ -137,17 +152,17 @@ export function pointButtons(field, { min, max, prefix }) {
         }
         ui.handles?.select(next.index);
       };
-      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { [kind]: limit }), "error");
+      const refuse = (key, limits) => ui.status(t(key, { ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
           if (next) apply(next);
-          else refuse("max", max);
+          else refuse(maxKey, { max });
         },
         remove(i) {
-          const next = withPointRemoved(ui.state[field], i, min);
+          const next = withPointRemoved(ui.state[field], i, least(ui.state));
           if (next) apply(next);
-          else refuse("min", min);
+          else refuse(minKey, { min: least(ui.state) });
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
@@ -158,7 +173,7 @@ export function pointButtons(field, { min, max, prefix }) {
         sync(state) {
           const count = state[field].length;
           addButton.disabled = count >= max;
-          removeButton.disabled = count <= min;
+          removeButton.disabled = count <= least(state);
         },
       };
     },
@@ -167,13 +182,20 @@ export function pointButtons(field, { min, max, prefix }) {
 
 /**
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
- * `kind` "note" (default) or "readout" (the larger figure of merit).
+ * `kind` "note" (default) or "readout" (the larger figure of merit); `live` makes it a polite
+ * live region; `data(state, data)` → `{ name: value }` sets data attributes (hooks for tests).
  */
-export function readout(name, text, { kind = "note" } = {}) {
+export function readout(name, text, { kind = "note", live = false, data = null } = {}) {
   return {
     build(ui) {
-      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name } });
-      return { element: node, sync: (state, data) => setText(node, text(state, data, ui)) };
+      const node = el("p", { class: kind === "readout" ? "sl-readout" : "sl-note", dataset: { info: name }, "aria-live": live ? "polite" : null });
+      return {
+        element: node,
+        sync(state, values) {
+          setText(node, text(state, values, ui));
+          if (data) Object.assign(node.dataset, data(state, values));
+        },
+      };
     },
   };
 }

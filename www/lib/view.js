@@ -272,10 +272,13 @@ export class View {
   /**
    * Adds an interactor `{ pointerDown(event, x, y) → boolean, pointerMove(event, x, y),
    * pointerUp(event, x, y), hover(x, y, pointerType) → cursor | null, leave() }`; x, y are
-   * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up.
+   * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up;
+   * `first: true` puts this one before those added already (a band that claims its presses
+   * before the handles, e.g. param-strip.js).
    */
-  addInteractor(interactor) {
-    this._interactors.push(interactor);
+  addInteractor(interactor, { first = false } = {}) {
+    if (first) this._interactors.unshift(interactor);
+    else this._interactors.push(interactor);
   }
 
   /** Canvas CSS px of a pointer event (border included, as the canvas box starts after it). */
