@@ -10,31 +10,26 @@
  * Measured continuity: the curve's `toBezier()` segments are placed on their spans with
  * `BezierCurve.withInterval(points, 2, a, b)` and each joint is checked with
  * `jointContinuity(left, right)` → `{ c, g }`; the guaranteed value is `knotContinuity()`.
- * Same habits as the reference demo: a point drag goes through `setControlPoint` (every copy of
- * a repeated point), knot changes rebuild the curve (the old one is freed), the draw path
- * allocates nothing.
+ * A point drag goes through `setControlPoint` (every copy of a repeated point).
  *
  * Keeping the knot vector valid: changing how often a point is repeated changes the number of
  * control points, so the knots are replaced by the core's clamped uniform vector for the new
  * count (`knotVector(points, 2, 3, "clamped")`); knot multiplicities start again from 1.
  */
-import { Handles, pointHandles } from "../lib/handles.js";
-import { KnotRuler, raiseMultiplicity, lowerMultiplicity, stackOf, knotText } from "../lib/knot-ruler.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { button, group, el, radios, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
+import { field, checkNumber } from "../lib/validate.js";
+import { readout, actions, group } from "../lib/panel.js";
+import { knotRuler, stackOf, knotText } from "../lib/knot-ruler.js";
+import { knotsField, clampedKnots, setKnots, domainOf } from "../lib/bspline.js";
+import { radios, el } from "../lib/controls.js";
 import { fmt, subscript, superscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { pointsPath } from "../lib/draw.js";
-import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "multiplicity";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "multiplicity";
-export const title = t("multiplicity.title");
-export const summary = t("multiplicity.summary");
 /** Syllabus section. */
 export const section = 3;
 
@@ -69,20 +64,15 @@ const NOTES_TABLE = Object.freeze([
   Object.freeze(["C²G⁰", "break"]),
 ]);
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "knots", "repeatPoint", "repeatTimes"]);
-  checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
-  checkNumber(state, "repeatPoint", { min: 0, max: state.points.length - 1, integer: true });
-  checkNumber(state, "repeatTimes", { min: 1, max: MAX_REPEAT, integer: true });
-  checkNumbers(state, "knots");
-  const count = state.points.length + state.repeatTimes - 1;
-  const need = count + P + 1;
-  if (state.knots.length !== need) throw new Error(t("multiplicity.knotCount", { count, need, got: state.knots.length }));
-  for (let i = 1; i < need; i++) {
-    if (state.knots[i] < state.knots[i - 1]) throw new Error(t("multiplicity.knotOrder", { i: i - 1, a: state.knots[i - 1], j: i, b: state.knots[i] }));
-  }
-}
+/** Control points of the curve: the distinct ones, the repeated one `repeatTimes` times. */
+const curveCount = (s) => s.points.length + s.repeatTimes - 1;
+
+export const fields = {
+  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  repeatPoint: (s, name) => checkNumber(s, name, { min: 0, max: s.points.length - 1, integer: true }),
+  repeatTimes: field.number({ min: 1, max: MAX_REPEAT, integer: true }),
+  knots: knotsField({ count: curveCount, degree: () => P }),
+};
 
 /** Index in the curve's control points of the first copy of base point j. */
 function expandedIndex(state, j) {
@@ -91,8 +81,7 @@ function expandedIndex(state, j) {
 
 /** Flat Float64Array of the curve's control points: base points with the repeated one repeated. */
 function expandedPoints(state) {
-  const count = state.points.length + state.repeatTimes - 1;
-  const flat = new Float64Array(count * 2);
+  const flat = new Float64Array(curveCount(state) * 2);
   let k = 0;
   state.points.forEach(([x, y], j) => {
     const copies = j === state.repeatPoint ? state.repeatTimes : 1;
@@ -104,496 +93,345 @@ function expandedPoints(state) {
   return flat;
 }
 
+/** The curve on the repeated points, in wasm; a dragged point moves all its copies in place. */
+export const derive = {
+  from: ["points", "knots", "repeatPoint", "repeatTimes"],
+  build: (s, sl) => ({ curve: new sl.BSplineCurve(expandedPoints(s), 2, P, Float64Array.from(s.knots)) }),
+  moved(m, i, xy, s) {
+    const copies = i === s.repeatPoint ? s.repeatTimes : 1;
+    for (let c = 0; c < copies; c++) m.curve.setControlPoint(expandedIndex(s, i) + c, xy);
+  },
+};
+
+const SHAPE = ["points", "knots", "repeatPoint", "repeatTimes"];
+/** What the core returns: samples, guaranteed continuity, measured joints; the knot studied. */
+export const compute = {
+  samples: [SHAPE, (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
+  continuity: [["knots", "repeatPoint", "repeatTimes"], (s, d) => d.curve.knotContinuity()],
+  joints: [SHAPE, (s, d) => measure(s, d)],
+  names: [["points", "repeatPoint", "repeatTimes"], (s) => s.points.map((_, j) => pointName(s, j))],
+  // "selection": the ruler's or the handles' selection changed (touched by the demo's setup).
+  studied: [[...SHAPE, "selection"], (s, d) => findStudied(s, d)],
+};
+
+/**
+ * The measured continuity at every distinct interior knot: Bézier segments from `toBezier()`
+ * placed on their spans, compared pairwise with `jointContinuity`.
+ */
+function measure(s, d) {
+  const { sl, curve } = d;
+  const knots = s.knots;
+  const pieces = curve.toBezier();
+  const spans = curve.spans(); // span index k of each segment: [u_k, u_{k+1}]
+  const placed = [];
+  for (let k = 0; k < pieces.length; k++) {
+    placed.push(sl.BezierCurve.withInterval(pieces[k].controlPoints(), 2, knots[spans[k]], knots[spans[k] + 1]));
+    pieces[k].free();
+  }
+  const joints = [];
+  for (let k = 0; k + 1 < placed.length; k++) {
+    const knot = knots[spans[k + 1]];
+    const { c, g } = sl.jointContinuity(placed[k], placed[k + 1]);
+    joints.push({
+      knot, c, g,
+      left: Array.from(placed[k].evaluate(knot)),
+      right: Array.from(placed[k + 1].evaluate(knot)),
+      speed: Array.from(curve.derivative(knot, 1)),
+      label: t("multiplicity.jointLabel", { u: knotText(knot) }),
+    });
+  }
+  for (const piece of placed) piece.free();
+  return joints;
+}
+
+const jointAt = (d, u) => d.joints.find((j) => j.knot === u) ?? null;
+
+/**
+ * The knot the panels talk about: the selected knot when it is interior; else the interior
+ * knot of highest multiplicity (nearest the middle of the domain on a tie). And the knot
+ * nearest the repeated point: u_k with k = j + p − ⌊(p − r)/2⌋ for copies P_j … P_{j+r−1}
+ * (its value depends on P_{k−p} … P_{k−1}, which then hold the copies as centrally as possible).
+ */
+function findStudied(s, d) {
+  const knots = s.knots;
+  const n = knots.length - P - 2;
+  const [lo, hi] = domainOf(knots, P);
+  const interior = (i) => i > P && i <= n && knots[i] > lo && knots[i] < hi;
+  const selected = d.ruler?.selected ?? -1;
+  let pick = interior(selected) ? selected : -1;
+  if (pick < 0) {
+    const middle = (lo + hi) / 2;
+    let bestR = 0;
+    let bestD = Infinity;
+    for (let i = P + 1; i <= n; i++) {
+      if (!interior(i) || knots[i] === knots[i - 1]) continue;
+      const [a, b] = stackOf(knots, i);
+      const dist = Math.abs(knots[i] - middle);
+      if (b - a + 1 > bestR || (b - a + 1 === bestR && dist < bestD - 1e-12)) {
+        bestR = b - a + 1;
+        bestD = dist;
+        pick = i;
+      }
+    }
+  }
+  let knot = null;
+  if (pick >= 0) {
+    const [a, b] = stackOf(knots, pick);
+    const joint = jointAt(d, knots[pick]);
+    const through = passesThrough(s, joint);
+    const u = knotText(knots[pick]);
+    const label = through ? t("multiplicity.throughLabel", { u, point: through }) : t("multiplicity.pointLabel", { u });
+    knot = { a, b, value: knots[pick], r: b - a + 1, joint, through, label };
+  }
+  let repeat = null;
+  if (s.repeatTimes > 1) {
+    const k = expandedIndex(s, s.repeatPoint) + P - Math.floor((P - s.repeatTimes) / 2);
+    if (interior(k)) repeat = { k, joint: jointAt(d, knots[k]) };
+  }
+  return { knot, repeat };
+}
+
+/** "P₄" when the curve at the joint (right piece) equals a control point, else "". */
+function passesThrough(s, jt) {
+  if (!jt || jt.c < 0) return "";
+  const flat = expandedPoints(s);
+  const scale = 1 + Math.hypot(jt.right[0], jt.right[1]);
+  for (let i = 0; i < flat.length / 2; i++) {
+    const gap = Math.hypot(flat[2 * i] - jt.right[0], flat[2 * i + 1] - jt.right[1]);
+    if (gap <= SAME_POINT * scale) return `P${subscript(i)}`;
+  }
+  return "";
+}
+
+/** "P₄", or "P₄ = P₅ = P₆" for the repeated point. */
+function pointName(s, j) {
+  const copies = j === s.repeatPoint ? s.repeatTimes : 1;
+  const names = [];
+  for (let c = 0; c < copies; c++) names.push(`P${subscript(expandedIndex(s, j) + c)}`);
+  return names.join(" = ");
+}
+
 /** "C²", "C⁰", "C∞", or the break word for continuity k (−1). */
 function continuityText(k) {
   if (k === Infinity) return "C∞";
   return k < 0 ? t("knotRuler.break") : `C${superscript(k)}`;
 }
 
-/** "G²" … ("—" when the pieces do not meet). */
-function geometricText(g, c) {
-  return c < 0 ? "—" : `G${superscript(g)}`;
+/** "C¹ G¹", "break", or "—" without a joint. */
+function measuredText(jt) {
+  if (!jt) return "—";
+  return jt.c < 0 ? t("knotRuler.break") : `${continuityText(jt.c)} G${superscript(jt.g)}`;
 }
 
-/**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
- */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let curve = build(work);
+/** "u₅ = u₆ = u₇". */
+function knotNames(a, b) {
+  const list = [];
+  for (let i = a; i <= b; i++) list.push(`u${subscript(i)}`);
+  return list.join(" = ");
+}
 
-  // Derived data, recomputed when the knots or the geometry changed.
-  let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
-  let continuity = null; // curve.knotContinuity(): guaranteed C^{p−r} per distinct interior knot
-  let joints = []; // measured per distinct interior knot: { knot, c, g, left: [x, y], right: [x, y] }
-  let knotsDirty = true;
-  let geometryDirty = true;
-  const insetScratch = [0, 0, 0, 0];
-  const domainScratch = [0, 1];
-  let handleLabels = []; // "P₄ = P₅ = P₆" …, rebuilt when the repetition changes
-  let studied = null; // { a, b, value, r, joint } the knot the panels talk about
-  let repeatJoint = null; // { k, joint } the knot nearest the repeated point
-  let studiedLabel = ""; // "C(2) = P₄" …
-  let shownKey = ""; // what the panels show (knot index / selection), to resync on selection changes
+/** The knots, replaced by the core's clamped uniform vector for the state's repeated points. */
+const uniformKnots = (ui, s) => clampedKnots(ui.sl, expandedPoints(s), P);
+const RULER = { count: curveCount, degree: () => P, param: null };
 
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-
-  // The knot ruler, before the handles: its band is its own.
-  const ruler = new KnotRuler(view, {
-    knots: () => work.knots,
-    degree: () => P,
-    continuity: () => continuity,
-    move: (i, u) => moveKnot(i, u),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    raise: (i) => changeMultiplicity(raiseMultiplicity(work.knots, i, P)),
-    lower: (i) => changeMultiplicity(lowerMultiplicity(work.knots, i)),
-    select: () => view.requestDraw(),
-  });
-
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      const first = expandedIndex(work, i);
-      const copies = i === work.repeatPoint ? work.repeatTimes : 1;
-      for (let c = 0; c < copies; c++) curve.setControlPoint(first + c, xy); // in place
-      geometryDirty = true;
-    }, (i) => (handleLabels[i] ??= pointName(i))),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    select: (i) => i >= 0 && ruler.select(-1),
-  });
-  ruler.source.handles = handles;
-
-  /** The ruler's band below the world window: [top, right, bottom, left] (scratch). */
-  function insets(width, height, scale) {
-    insetScratch[2] = ruler.height(scale);
-    return insetScratch;
-  }
-
-  /** "P₄", or "P₄ = P₅ = P₆" for the repeated point. */
-  function pointName(j) {
-    const first = expandedIndex(work, j);
-    const copies = j === work.repeatPoint ? work.repeatTimes : 1;
-    const names = [];
-    for (let c = 0; c < copies; c++) names.push(`P${subscript(first + c)}`);
-    return names.join(" = ");
-  }
-
-  // ------------------------------------------------------------ side panel
-  const knotReadout = el("p", { class: "sl-readout", dataset: { info: "knot" } });
-  const knotNote = el("p", { class: "sl-note", dataset: { info: "knot-note" } });
-  const raiseButton = button({ label: t("multiplicity.raise"), title: t("multiplicity.raise.title"), name: "raise", onClick: () => studied && changeMultiplicity(raiseMultiplicity(work.knots, studied.b, P)) });
-  const lowerButton = button({ label: t("multiplicity.lower"), title: t("multiplicity.lower.title"), name: "lower", onClick: () => studied && changeMultiplicity(lowerMultiplicity(work.knots, studied.b)) });
-  const resetKnotsButton = button({ label: t("multiplicity.resetKnots"), title: t("multiplicity.resetKnots.title"), name: "reset-knots", onClick: () => resetKnots() });
-  const repeatRadios = radios({
-    name: "repeat",
-    value: String(work.repeatTimes),
-    options: [1, 2, 3].map((k) => ({ value: String(k), label: t("multiplicity.repeatOption", { k }) })),
-    onChange: (value) => setRepeat(Number(value)),
-  });
-  repeatRadios.element.classList.add("sl-button-row");
-  const repeatReadout = el("p", { class: "sl-note", dataset: { info: "repeat" } });
-  const repeatNote = el("p", { class: "sl-note", dataset: { info: "repeat-note" } });
-  ctx.slots.controls.append(
-    group(t("multiplicity.knotLegend"), knotReadout, knotNote, el("div", { class: "sl-button-row" }, raiseButton, lowerButton, resetKnotsButton)),
-    group(t("multiplicity.repeatLegend"), repeatRadios.element, repeatReadout, repeatNote),
-  );
-
-  // ------------------------------------------------------------ formula and tables
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const notesCells = [];
-  const notesRows = NOTES_TABLE.map((row, k) => {
-    const cells = row.map((text, column) => el("td", { dataset: { column: column === 0 ? "points" : "knots", multiplicity: String(k + 1) }, text: column === 1 && k === 3 ? t("multiplicity.notesBreak") : text }));
-    notesCells.push(cells);
-    return el("tr", { dataset: { multiplicity: String(k + 1) } }, el("th", { scope: "row", text: String(k + 1) }), cells);
-  });
-  const notes = titledTable("notes", {
-    caption: t("multiplicity.notesCaption"),
-    children: [
-      el("thead", {}, el("tr", {},
-        el("th", { scope: "col", text: t("multiplicity.colMultiplicity") }),
-        el("th", { scope: "col", text: t("multiplicity.colPoints") }),
-        el("th", { scope: "col", text: t("multiplicity.colKnots") }))),
-      el("tbody", {}, notesRows),
-    ],
-  });
-  const { title: knotsTitle, table: knotsTable, wrap: knotsTableWrap } = titledTable("knots", { caption: t("multiplicity.knotsCaption") });
-  ctx.slots.details.append(notes.title, notes.wrap, knotsTitle, knotsTableWrap);
-
-  // ------------------------------------------------------------ edits
-
-  /** A new wasm curve for a state (throws on invalid input). */
-  function build(state) {
-    return new sl.BSplineCurve(expandedPoints(state), 2, P, Float64Array.from(state.knots));
-  }
-
-  /** Replaces the curve after the knots or the repetition changed; false (and a message) if refused. */
-  function rebuild() {
-    const next = buildOrReport(() => build(work), ctx);
-    if (!next) return false;
-    curve.free();
-    curve = next;
-    knotsDirty = true;
-    view.requestDraw();
-    return true;
-  }
-
-  function moveKnot(i, u) {
-    const old = work.knots[i];
-    work.knots[i] = u;
-    if (!rebuild()) work.knots[i] = old;
-  }
-
-  /** Applies a raised/lowered knot vector (from knot-ruler.js) or reports why not. */
-  function changeMultiplicity(result) {
-    if (result.error) {
-      ctx.status(t(`multiplicity.multiplicity.${result.error}`, { max: P + 1 }), "error");
-      return;
-    }
-    const old = work.knots;
-    work.knots = result.knots;
-    if (!rebuild()) {
-      work.knots = old;
-      return;
-    }
-    ruler.select(result.index);
-    ctx.commit(work);
-  }
-
-  function clampedKnots() {
-    return Array.from(sl.knotVector(expandedPoints(work), 2, P, "clamped"));
-  }
-
-  function resetKnots() {
-    work.knots = clampedKnots();
-    if (rebuild()) {
-      ruler.forgetPointer();
-      ctx.commit(work);
-    }
-  }
-
-  /** Repeats the selected control point (else the last repeated one) `times` times; the knots become clamped uniform. */
-  function setRepeat(times) {
-    const j = handles.selected >= 0 ? handles.selected : work.repeatPoint;
-    if (times === work.repeatTimes && j === work.repeatPoint) return;
-    const old = { repeatPoint: work.repeatPoint, repeatTimes: work.repeatTimes, knots: work.knots };
-    work.repeatPoint = j;
-    work.repeatTimes = times;
-    work.knots = clampedKnots();
-    if (!rebuild()) {
-      Object.assign(work, old);
-      repeatRadios.set(String(work.repeatTimes));
-      return;
-    }
-    handleLabels = [];
-    ruler.forgetPointer();
-    ruler.select(-1);
-    ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ core data
-  /** Asks the core for the samples, the guaranteed and the measured continuity when something changed. */
-  function recompute() {
-    let changed = false;
-    if (knotsDirty) {
-      continuity = curve.knotContinuity();
-      geometryDirty = true;
-    }
-    if (geometryDirty) {
-      samples = curve.sampleUniform(CURVE_SAMPLES);
-      measure();
-      changed = true;
-    }
-    knotsDirty = geometryDirty = false;
-    const key = `${ruler.selected}/${handles.selected}`;
-    if (changed || key !== shownKey) {
-      shownKey = key;
-      findStudied();
-      syncPanels();
-    }
-  }
-
-  /**
-   * The measured continuity at every distinct interior knot: Bézier segments from `toBezier()`
-   * placed on their spans, compared pairwise with `jointContinuity`.
-   */
-  function measure() {
-    const knots = work.knots;
-    const pieces = curve.toBezier();
-    const spans = curve.spans(); // span index k of each segment: [u_k, u_{k+1}]
-    const placed = [];
-    for (let s = 0; s < pieces.length; s++) {
-      const k = spans[s];
-      placed.push(sl.BezierCurve.withInterval(pieces[s].controlPoints(), 2, knots[k], knots[k + 1]));
-      pieces[s].free();
-    }
-    joints = [];
-    for (let s = 0; s + 1 < placed.length; s++) {
-      const left = placed[s];
-      const right = placed[s + 1];
-      const knot = knots[spans[s + 1]];
-      const { c, g } = sl.jointContinuity(left, right);
-      joints.push({ knot, c, g, left: Array.from(left.evaluate(knot)), right: Array.from(right.evaluate(knot)), speed: Array.from(curve.derivative(knot, 1)), label: t("multiplicity.jointLabel", { u: knotText(knot) }) });
-    }
-    for (const piece of placed) piece.free();
-  }
-
-  /** The joint entry at knot value u, or null. */
-  function jointAt(u) {
-    return joints.find((j) => j.knot === u) ?? null;
-  }
-
-  /**
-   * The knot the panels talk about: the selected knot when it is interior; else the interior
-   * knot of highest multiplicity (nearest the middle of the domain on a tie). And the knot
-   * nearest the repeated point: u_k with k = j + p − ⌊(p − r)/2⌋ for copies P_j … P_{j+r−1}
-   * (its value depends on P_{k−p} … P_{k−1}, which then hold the copies as centrally as possible).
-   */
-  function findStudied() {
-    const knots = work.knots;
-    const n = knots.length - P - 2;
-    const lo = knots[P];
-    const hi = knots[n + 1];
-    const interior = (i) => i > P && i <= n && knots[i] > lo && knots[i] < hi;
-    let pick = -1;
-    if (ruler.selected >= 0 && interior(ruler.selected)) pick = ruler.selected;
-    if (pick < 0) {
-      const middle = (lo + hi) / 2;
-      let bestR = 0;
-      let bestD = Infinity;
-      for (let i = P + 1; i <= n; i++) {
-        if (!interior(i) || knots[i] === knots[i - 1]) continue;
-        const [a, b] = stackOf(knots, i);
-        const r = b - a + 1;
-        const d = Math.abs(knots[i] - middle);
-        if (r > bestR || (r === bestR && d < bestD - 1e-12)) {
-          bestR = r;
-          bestD = d;
-          pick = i;
+/** The repetition radios: the selected point (else the last repeated one) `k` times, clamped uniform knots. */
+const repeatChoice = {
+  build(ui) {
+    const control = radios({
+      name: "repeat",
+      value: String(ui.state.repeatTimes),
+      options: [1, 2, 3].map((k) => ({ value: String(k), label: t("multiplicity.repeatOption", { k }) })),
+      onChange(value) {
+        const s = ui.state;
+        const j = ui.handles.selected >= 0 ? ui.handles.selected : s.repeatPoint;
+        if (Number(value) === s.repeatTimes && j === s.repeatPoint) return;
+        const next = { ...s, repeatPoint: j, repeatTimes: Number(value) };
+        try {
+          ui.replace({ ...next, knots: uniformKnots(ui, next) });
+        } catch (err) {
+          ui.status(t("status.rejected", { message: err.message }), "error");
+          control.set(String(s.repeatTimes));
+          return;
         }
-      }
-    }
-    if (pick < 0) {
-      studied = null;
-    } else {
-      const [a, b] = stackOf(knots, pick);
-      studied = { a, b, value: knots[pick], r: b - a + 1, joint: jointAt(knots[pick]) };
-    }
-    repeatJoint = null;
-    if (work.repeatTimes > 1) {
-      const j = expandedIndex(work, work.repeatPoint);
-      const k = j + P - Math.floor((P - work.repeatTimes) / 2);
-      if (interior(k)) repeatJoint = { k, joint: jointAt(knots[k]) };
-    }
+        ui.data.ruler.forgetPointer();
+        ui.data.ruler.select(-1);
+      },
+    });
+    control.element.classList.add("sl-button-row");
+    return { element: control.element, sync: (s) => control.set(String(s.repeatTimes)) };
+  },
+};
+
+export const controls = [
+  knotRuler("knots", {
+    ...RULER,
+    refused: (error) => t(`multiplicity.multiplicity.${error}`, { max: P + 1 }),
+    select: (ui) => ui.touch("selection"),
+  }),
+  group(
+    "multiplicity.knotLegend",
+    readout("knot", (s, d) => {
+      const k = d.studied.knot;
+      if (!k) return t("multiplicity.noKnot");
+      const guaranteed = continuityText(P - k.r < 0 ? -1 : P - k.r);
+      const names = knotNames(k.a, k.b);
+      const measured = measuredText(k.joint);
+      return t("multiplicity.knotReadout", { names, u: knotText(k.value), r: k.r, guaranteed, measured });
+    }, { kind: "readout" }),
+    readout("knot-note", (s, d) => {
+      const k = d.studied.knot;
+      if (!k?.through) return t("multiplicity.knotHint");
+      return t("multiplicity.through", { u: knotText(k.value), point: k.through });
+    }),
+    actions([
+      {
+        name: "raise",
+        label: "multiplicity.raise",
+        title: "multiplicity.raise.title",
+        disabled: (s, d) => !d.studied.knot || d.studied.knot.r >= P + 1,
+        run: (ui) => ui.data.studied.knot && ui.data.ruler.source.raise(ui.data.studied.knot.b),
+      },
+      {
+        name: "lower",
+        label: "multiplicity.lower",
+        title: "multiplicity.lower.title",
+        disabled: (s, d) => !d.studied.knot || d.studied.knot.r <= 1,
+        run: (ui) => ui.data.studied.knot && ui.data.ruler.source.lower(ui.data.studied.knot.b),
+      },
+      {
+        name: "reset-knots",
+        label: "multiplicity.resetKnots",
+        title: "multiplicity.resetKnots.title",
+        run: (ui) => setKnots(ui, uniformKnots(ui, ui.state), true, RULER) && ui.data.ruler.forgetPointer(),
+      },
+    ]),
+  ),
+  group(
+    "multiplicity.repeatLegend",
+    repeatChoice,
+    readout("repeat", (s, d) => {
+      const points = d.names[s.repeatPoint];
+      const rep = d.studied.repeat;
+      if (s.repeatTimes === 1) return t("multiplicity.repeatNone", { point: points });
+      if (!rep) return t("multiplicity.repeatEnd", { points });
+      const u = knotText(s.knots[rep.k]);
+      return t("multiplicity.repeatReadout", { points, k: subscript(rep.k), u, measured: measuredText(rep.joint) });
+    }),
+    readout("repeat-note", () => t("multiplicity.repeatHint")),
+  ),
+];
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  handles: { field: "points" },
+};
+
+/** True when curve sample k starts a new piece (the curve breaks between samples k − 1 and k). */
+function jumps(s, d, k) {
+  for (const joint of d.joints) {
+    if (joint.c >= 0) continue;
+    const [a, b] = domainOf(s.knots, P);
+    const u = a + (k / (CURVE_SAMPLES - 1)) * (b - a);
+    const u0 = a + ((k - 1) / (CURVE_SAMPLES - 1)) * (b - a);
+    if (u0 < joint.knot && u >= joint.knot) return true;
   }
+  return false;
+}
 
-  // ------------------------------------------------------------ drawing
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
-
-    // Control polygon (of the distinct points: a repeated point is one corner).
-    pointsPath(r, v, pts);
-    r.paint(theme.polygon);
-
-    // The curve, from one batched sample call; at a break the pieces are not joined.
-    r.beginPath();
-    for (let k = 0; k < CURVE_SAMPLES; k++) {
-      const x = v.sx(samples[2 * k]);
-      const y = v.sy(samples[2 * k + 1]);
-      if (k === 0 || jumps(k)) r.moveTo(x, y);
-      else r.lineTo(x, y);
-    }
-    r.paint(theme.curve);
-
-    // The joints: a small dot at every interior knot, the studied one (and its gap) in vermillion.
-    for (let s = 0; s < joints.length; s++) {
-      const jt = joints[s];
-      r.point(v.sx(jt.right[0]), v.sy(jt.right[1]), theme.levelPoint[1]);
-      if (jt !== studied?.joint) r.text(jt.label, v.sx(jt.right[0]) + 6 * r.scale, v.sy(jt.right[1]) + 6 * r.scale, theme.labelSmall, "left", "top");
-    }
-    handles.draw(r, v);
-    if (studied?.joint) {
-      const jt = studied.joint;
-      const lx = v.sx(jt.left[0]);
-      const ly = v.sy(jt.left[1]);
-      const rx = v.sx(jt.right[0]);
-      const ry = v.sy(jt.right[1]);
-      if (jt.c < 0) {
-        r.beginPath();
-        r.moveTo(lx, ly);
-        r.lineTo(rx, ry);
-        r.paint(theme.helper);
-        r.point(lx, ly, theme.pointOnCurve);
-      }
-      r.point(rx, ry, theme.pointOnCurve);
-      r.text(studiedLabel, rx, ry + 12 * r.scale, theme.labelPoint, "center", "top");
-    }
-
-    // The ruler band.
-    const w = r.width;
-    const h = r.height;
-    const sc = r.scale;
-    ruler.layout(40 * sc, w - 34 * sc, h - ruler.height(sc), sc);
-    ruler.draw(r);
+/** The distinct points' polygon, the curve (not joined at a break), the joints, the ruler. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  pointsPath(r, v, s.points);
+  r.paint(theme.polygon);
+  r.beginPath();
+  for (let k = 0; k < CURVE_SAMPLES; k++) {
+    const x = v.sx(d.samples[2 * k]);
+    const y = v.sy(d.samples[2 * k + 1]);
+    if (k === 0 || jumps(s, d, k)) r.moveTo(x, y);
+    else r.lineTo(x, y);
   }
+  r.paint(theme.curve);
 
-  /** True when curve sample k starts a new piece (the curve breaks between samples k − 1 and k). */
-  function jumps(k) {
-    for (let s = 0; s < joints.length; s++) {
-      if (joints[s].c >= 0) continue;
-      const [a, b] = domainOf();
-      const u = a + (k / (CURVE_SAMPLES - 1)) * (b - a);
-      const u0 = a + ((k - 1) / (CURVE_SAMPLES - 1)) * (b - a);
-      if (u0 < joints[s].knot && u >= joints[s].knot) return true;
-    }
-    return false;
+  // The joints: a small dot at every interior knot, the studied one (and its gap) in vermillion.
+  const studied = d.studied.knot;
+  for (const jt of d.joints) {
+    r.point(v.sx(jt.right[0]), v.sy(jt.right[1]), theme.levelPoint[1]);
+    if (jt === studied?.joint) continue;
+    const offset = 6 * r.scale;
+    r.text(jt.label, v.sx(jt.right[0]) + offset, v.sy(jt.right[1]) + offset, theme.labelSmall, "left", "top");
   }
-
-  /** The domain [u_p, u_{n+1}] from the state's knots (no wasm call in the draw path). */
-  function domainOf() {
-    domainScratch[0] = work.knots[P];
-    domainScratch[1] = work.knots[work.knots.length - P - 1];
-    return domainScratch;
+  d.handles.draw(r, v);
+  if (studied?.joint) {
+    const jt = studied.joint;
+    const [lx, ly, rx, ry] = [v.sx(jt.left[0]), v.sy(jt.left[1]), v.sx(jt.right[0]), v.sy(jt.right[1])];
+    if (jt.c < 0) {
+      r.beginPath();
+      r.moveTo(lx, ly);
+      r.lineTo(rx, ry);
+      r.paint(theme.helper);
+      r.point(lx, ly, theme.pointOnCurve);
+    }
+    r.point(rx, ry, theme.pointOnCurve);
+    r.text(studied.label, rx, ry + 12 * r.scale, theme.labelPoint, "center", "top");
   }
+  d.ruler.atBottom(r.width, r.height, r.scale);
+  d.ruler.draw(r);
+}
 
-  // ------------------------------------------------------------ panels (formula, tables, notes, label)
-  function syncPanels() {
-    const knots = work.knots;
-    const names = (a, b) => {
-      const list = [];
-      for (let i = a; i <= b; i++) list.push(`u${subscript(i)}`);
-      return list.join(" = ");
-    };
-    const measuredText = (jt) => (jt ? (jt.c < 0 ? t("knotRuler.break") : `${continuityText(jt.c)} ${geometricText(jt.g, jt.c)}`) : "—");
+/** "₁₂" → "12". */
+function fromSubscript(text) {
+  return text.replace(/[₀-₉]/g, (c) => String(c.charCodeAt(0) - 0x2080));
+}
 
-    // Knot multiplicity: the studied knot.
-    let knotRow = 0;
-    let through = "";
-    if (studied) {
-      const guaranteed = P - studied.r;
-      knotRow = Math.min(studied.r, 4);
-      setText(knotReadout, t("multiplicity.knotReadout", { names: names(studied.a, studied.b), u: knotText(studied.value), r: studied.r, guaranteed: continuityText(guaranteed < 0 ? -1 : guaranteed), measured: measuredText(studied.joint) }));
-      through = passesThrough(studied.joint);
-      setText(knotNote, through ? t("multiplicity.through", { u: knotText(studied.value), point: through }) : t("multiplicity.knotHint"));
-      studiedLabel = through ? t("multiplicity.throughLabel", { u: knotText(studied.value), point: through }) : t("multiplicity.pointLabel", { u: knotText(studied.value) });
-    } else {
-      setText(knotReadout, t("multiplicity.noKnot"));
-      setText(knotNote, t("multiplicity.knotHint"));
-      studiedLabel = "";
-    }
-    raiseButton.disabled = !studied || studied.r >= P + 1;
-    lowerButton.disabled = !studied || studied.r <= 1;
-
-    // Control-point multiplicity.
-    repeatRadios.set(String(work.repeatTimes));
-    const repeated = pointName(work.repeatPoint);
-    if (work.repeatTimes === 1) {
-      setText(repeatReadout, t("multiplicity.repeatNone", { point: repeated }));
-    } else if (repeatJoint) {
-      const jt = repeatJoint.joint;
-      setText(repeatReadout, t("multiplicity.repeatReadout", { points: repeated, k: subscript(repeatJoint.k), u: knotText(knots[repeatJoint.k]), measured: measuredText(jt) }));
-    } else {
-      setText(repeatReadout, t("multiplicity.repeatEnd", { points: repeated }));
-    }
-    setText(repeatNote, t("multiplicity.repeatHint"));
-
-    // The notes' table with the current cases highlighted.
-    for (let k = 0; k < 4; k++) {
-      notesCells[k][0].classList.toggle("sl-highlight", work.repeatTimes > 1 && k + 1 === work.repeatTimes);
-      notesCells[k][1].classList.toggle("sl-highlight", k + 1 === knotRow);
-    }
-
-    // Every distinct interior knot: multiplicity, guaranteed and measured continuity, C there.
-    const head = el("tr", {},
-      el("th", { scope: "col", text: t("multiplicity.colKnot") }),
-      el("th", { scope: "col", text: t("multiplicity.colR") }),
-      el("th", { scope: "col", text: t("multiplicity.colGuaranteed") }),
-      el("th", { scope: "col", text: t("multiplicity.colMeasured") }),
-      el("th", { scope: "col", text: t("multiplicity.colPoint") }),
-      el("th", { scope: "col", text: t("multiplicity.colThrough") }));
-    const rows = [];
-    for (const entry of continuity) {
-      const jt = jointAt(entry.knot);
-      const [a, b] = stackOf(knots, knots.indexOf(entry.knot));
-      const pointText = jt ? (jt.c < 0 ? t("multiplicity.pointBreak", { left: pair(jt.left), right: pair(jt.right) }) : pair(jt.right)) : "—";
-      const hit = passesThrough(jt);
-      const row = el("tr", { dataset: { knot: knotText(entry.knot) } },
-        el("th", { scope: "row", text: `${names(a, b)} = ${knotText(entry.knot)}` }),
-        el("td", { dataset: { cell: "multiplicity" }, text: String(entry.multiplicity) }),
-        el("td", { dataset: { cell: "guaranteed" }, text: continuityText(entry.continuity) }),
-        el("td", { dataset: { cell: "measured" }, text: measuredText(jt) }),
-        el("td", { dataset: jt ? { cell: "point", x: String(jt.right[0]), y: String(jt.right[1]) } : { cell: "point" }, text: pointText }),
-        el("td", { dataset: { cell: "through" }, text: hit || "—" }));
-      if (studied && entry.knot === studied.value) row.classList.add("sl-highlight");
-      rows.push(row);
-    }
-    knotsTable.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
-
-    // Formula panel.
-    const lines = [`C(u) = \\sum_{i=0}^{${knots.length - P - 2}} N_{i,3}(u)\\,P_i,\\qquad \\text{${t("multiplicity.formulaRule")}}\\ r:\\ C^{\\,3-r}`];
-    if (studied) {
-      const g = P - studied.r;
-      const idx = [];
-      for (let i = studied.a; i <= studied.b; i++) idx.push(`u_{${i}}`);
-      const jt = studied.joint;
-      const measured = jt ? (jt.c < 0 ? `\\text{${t("knotRuler.break")}}` : `C^{${jt.c === Infinity ? "\\infty" : jt.c}},\\ G^{${jt.g}}`) : "";
-      const value = jt && jt.c >= 0 ? `,\\quad C(${knotText(studied.value)}) = (${fmt(jt.right[0])},\\ ${fmt(jt.right[1])})${through ? ` = ${through.replace(/P(\S+)/, (m) => `P_{${fromSubscript(m.slice(1))}}`)}` : ""}` : "";
-      lines.push(`${idx.join(" = ")} = ${knotText(studied.value)}:\\quad r = ${studied.r} \\;\\Rightarrow\\; ${g < 0 ? `\\text{${t("multiplicity.formulaBreak")}}` : `C^{3-${studied.r}} = C^{${g}}`};\\quad \\text{${t("multiplicity.formulaMeasured")}}\\ ${measured}${value}`);
-    }
-    if (work.repeatTimes > 1 && repeatJoint?.joint) {
-      const jt = repeatJoint.joint;
-      lines.push(`${repeated.replace(/P([₀-₉]+)/g, (m, s) => `P_{${fromSubscript(s)}}`)}:\\quad C'(u_{${repeatJoint.k}}) = (${fmt(jt.speed[0])},\\ ${fmt(jt.speed[1])}),\\quad \\text{${t("multiplicity.formulaMeasured")}}\\ C^{${jt.c === Infinity ? "\\infty" : jt.c}},\\ G^{${jt.g}}`);
-    }
-    formula.set(lines);
-
-    // The figure's accessible name.
-    const list = continuity.map((entry) => `${knotText(entry.knot)} (×${entry.multiplicity}): ${continuityText(entry.continuity)}, ${measuredText(jointAt(entry.knot))}`).join("; ");
-    view.setLabel(t("multiplicity.aria", { count: knots.length - P - 1, knots: knots.map(knotText).join(", "), list, repeat: work.repeatTimes > 1 ? t("multiplicity.ariaRepeat", { points: repeated, measured: repeatJoint ? measuredText(repeatJoint.joint) : "—" }) : "", through: through ? t("multiplicity.ariaThrough", { u: knotText(studied.value), point: through }) : "" }));
+/** C(u) = Σ N_{i,3} P_i and the rule; the studied knot: r, guaranteed and measured; the repeated point's speed. */
+export function formula(s, d) {
+  const n = s.knots.length - P - 2;
+  const measuredWord = `\\text{${t("multiplicity.formulaMeasured")}}`;
+  const general = `\\text{${t("multiplicity.formulaRule")}}\\ r:\\ C^{\\,3-r}`;
+  const lines = [`C(u) = \\sum_{i=0}^{${n}} N_{i,3}(u)\\,P_i,\\qquad ${general}`];
+  const cTex = (jt) => `C^{${jt.c === Infinity ? "\\infty" : jt.c}},\\ G^{${jt.g}}`;
+  const k = d.studied.knot;
+  if (k) {
+    const g = P - k.r;
+    const idx = [];
+    for (let i = k.a; i <= k.b; i++) idx.push(`u_{${i}}`);
+    const jt = k.joint;
+    const measured = jt ? (jt.c < 0 ? `\\text{${t("knotRuler.break")}}` : cTex(jt)) : "";
+    const through = k.through ? ` = ${k.through.replace(/P(\S+)/, (m) => `P_{${fromSubscript(m.slice(1))}}`)}` : "";
+    const at = jt ? `C(${knotText(k.value)}) = (${fmt(jt.right[0])},\\ ${fmt(jt.right[1])})${through}` : "";
+    const value = jt && jt.c >= 0 ? `,\\quad ${at}` : "";
+    const rule = g < 0 ? `\\text{${t("multiplicity.formulaBreak")}}` : `C^{3-${k.r}} = C^{${g}}`;
+    const head = `${idx.join(" = ")} = ${knotText(k.value)}:\\quad r = ${k.r}`;
+    lines.push(`${head} \\;\\Rightarrow\\; ${rule};\\quad ${measuredWord}\\ ${measured}${value}`);
   }
-
-  /** "P₄" when the curve at the joint (right piece) equals a control point, else "". */
-  function passesThrough(jt) {
-    if (!jt || jt.c < 0) return "";
-    const flat = expandedPoints(work);
-    const scale = 1 + Math.hypot(jt.right[0], jt.right[1]);
-    for (let i = 0; i < flat.length / 2; i++) {
-      if (Math.hypot(flat[2 * i] - jt.right[0], flat[2 * i + 1] - jt.right[1]) <= SAME_POINT * scale) return `P${subscript(i)}`;
-    }
-    return "";
+  const rep = d.studied.repeat;
+  if (s.repeatTimes > 1 && rep?.joint) {
+    const jt = rep.joint;
+    const names = d.names[s.repeatPoint].replace(/P([₀-₉]+)/g, (m, sub) => `P_{${fromSubscript(sub)}}`);
+    const speed = `C'(u_{${rep.k}}) = (${fmt(jt.speed[0])},\\ ${fmt(jt.speed[1])})`;
+    lines.push(`${names}:\\quad ${speed},\\quad ${measuredWord}\\ ${cTex(jt)}`);
   }
+  return lines;
+}
 
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      const next = build(state); // throws before anything changes
-      curve.free();
-      curve = next;
-      work = structuredClone(state);
-      handleLabels = [];
-      handles.forgetPointer();
-      ruler.forgetPointer();
-      if (handles.selected >= work.points.length) handles.select(-1);
-      if (ruler.selected >= work.knots.length) ruler.select(-1);
-      knotsDirty = geometryDirty = true;
-      shownKey = "";
-      view.requestDraw();
-      recompute();
-    },
-    destroy() {
-      ruler.destroy();
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-    },
+/** The knots, each interior knot's continuity (guaranteed, measured), the repetition. */
+export function label(s, d) {
+  const entry = (e) => {
+    const measured = measuredText(jointAt(d, e.knot));
+    return `${knotText(e.knot)} (×${e.multiplicity}): ${continuityText(e.continuity)}, ${measured}`;
   };
+  const list = d.continuity.map(entry).join("; ");
+  const k = d.studied.knot;
+  const rep = d.studied.repeat;
+  return t("multiplicity.aria", {
+    count: s.knots.length - P - 1,
+    knots: s.knots.map(knotText).join(", "),
+    list,
+    repeat: s.repeatTimes > 1
+      ? t("multiplicity.ariaRepeat", { points: d.names[s.repeatPoint], measured: measuredText(rep?.joint) })
+      : "",
+    through: k?.through ? t("multiplicity.ariaThrough", { u: knotText(k.value), point: k.through }) : "",
+  });
 }
 
 /** "(6.000, 4.000)". */
@@ -601,7 +439,67 @@ function pair([x, y]) {
   return `(${fmt(x)}, ${fmt(y)})`;
 }
 
-/** "₁₂" → "12". */
-function fromSubscript(text) {
-  return text.replace(/[₀-₉]/g, (c) => String(c.charCodeAt(0) - 0x2080));
+/**
+ * The handles' names (repeated points), a selection hook, the notes' table with the current
+ * cases highlighted and the table of every distinct interior knot.
+ */
+export function setup(ui) {
+  const source = ui.handles.source;
+  source.label = (i) => ui.data.names[i];
+  const selectPoint = source.select;
+  source.select = (i) => {
+    selectPoint?.(i);
+    ui.touch("selection");
+  };
+  const notesCells = [];
+  const notesRows = NOTES_TABLE.map((row, k) => {
+    const cells = row.map((text, column) => el("td", {
+      dataset: { column: column === 0 ? "points" : "knots", multiplicity: String(k + 1) },
+      text: column === 1 && k === 3 ? t("multiplicity.notesBreak") : text,
+    }));
+    notesCells.push(cells);
+    const head = el("th", { scope: "row", text: String(k + 1) });
+    return el("tr", { dataset: { multiplicity: String(k + 1) } }, head, cells);
+  });
+  const column = (key) => el("th", { scope: "col", text: t(`multiplicity.${key}`) });
+  const columns = (...keys) => el("tr", {}, keys.map(column));
+  const notes = titledTable("notes", {
+    caption: t("multiplicity.notesCaption"),
+    children: [el("thead", {}, columns("colMultiplicity", "colPoints", "colKnots")), el("tbody", {}, notesRows)],
+  });
+  const knotsTable = titledTable("knots", { caption: t("multiplicity.knotsCaption") });
+  ui.ctx.slots.details.append(notes.title, notes.wrap, knotsTable.title, knotsTable.wrap);
+
+  return {
+    update(s, d) {
+      const studied = d.studied.knot;
+      const knotRow = studied ? Math.min(studied.r, 4) : 0;
+      for (let k = 0; k < 4; k++) {
+        notesCells[k][0].classList.toggle("sl-highlight", s.repeatTimes > 1 && k + 1 === s.repeatTimes);
+        notesCells[k][1].classList.toggle("sl-highlight", k + 1 === knotRow);
+      }
+      const rows = d.continuity.map((entry) => {
+        const jt = jointAt(d, entry.knot);
+        const [a, b] = stackOf(s.knots, s.knots.indexOf(entry.knot));
+        let point = "—";
+        let pointData = { cell: "point" };
+        if (jt) {
+          pointData = { cell: "point", x: String(jt.right[0]), y: String(jt.right[1]) };
+          const sides = { left: pair(jt.left), right: pair(jt.right) };
+          point = jt.c >= 0 ? sides.right : t("multiplicity.pointBreak", sides);
+        }
+        const row = el("tr", { dataset: { knot: knotText(entry.knot) } },
+          el("th", { scope: "row", text: `${knotNames(a, b)} = ${knotText(entry.knot)}` }),
+          el("td", { dataset: { cell: "multiplicity" }, text: String(entry.multiplicity) }),
+          el("td", { dataset: { cell: "guaranteed" }, text: continuityText(entry.continuity) }),
+          el("td", { dataset: { cell: "measured" }, text: measuredText(jt) }),
+          el("td", { dataset: pointData, text: point }),
+          el("td", { dataset: { cell: "through" }, text: passesThrough(s, jt) || "—" }));
+        if (studied && entry.knot === studied.value) row.classList.add("sl-highlight");
+        return row;
+      });
+      const head = columns("colKnot", "colR", "colGuaranteed", "colMeasured", "colPoint", "colThrough");
+      knotsTable.table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
+    },
+  };
 }

@@ -17,9 +17,10 @@ export class BasisPlotPointer {
    *   press?(): void, enter?(): void }} options `graphAt` is the function whose graph passes
    *   near (x, y) or -1; `pick(x, final)` sets the parameter under x; `press()` runs before a
    *   press in the plot (stop a player), `enter()` when the pointer hovers the plot (the handles
-   *   forget their hover).
+   *   forget their hover). `before`: an interactor already on the view (the handles) that
+   *   this one goes ahead of, when the plot is made after them.
    */
-  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {} }) {
+  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {}, before = null }) {
     this.view = view;
     /** The function under the pointer in the plot, or -1. */
     this.plotHover = -1;
@@ -59,7 +60,7 @@ export class BasisPlotPointer {
           view.requestDraw();
         }
       },
-    });
+    }, before);
   }
 
   /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */

@@ -26,7 +26,11 @@ import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, NUDGE_MERGE_MS } from "./handles.js
 import { HUES, WIDTH, FONT_SIZE } from "./theme.js";
 import { subscript, superscript } from "./format.js";
 import { t } from "./strings.js";
+import { setKnots } from "./bspline.js";
 
+/** Default ends of the ruler line inside the canvas (left, right), CSS px at text scale 1. */
+export const RULER_LEFT = 40;
+export const RULER_RIGHT = 34;
 /** Vertical distance between stacked (equal) knots, CSS px at scale 1. */
 export const STACK_PX = 16;
 /** Half the side of a knot's square handle, CSS px (hovered / selected: a little larger). */
@@ -197,7 +201,8 @@ export class KnotRuler {
     this._domainLabel = "";
     this._domainKey = "";
 
-    view.addInteractor(this);
+    // Ahead of the chained handles when they already exist: the band is the ruler's.
+    view.addInteractor(this, source.handles ?? null);
     view.beforeFrame(() => this._flush());
     this._onKey = (e) => this._key(e);
     // Capture: runs before the Handles' listener on the same canvas, so a selected knot owns the keys.
@@ -223,6 +228,14 @@ export class KnotRuler {
     this._top = top;
     this._scale = scale;
     if (!this._frozen) this._updateRange();
+  }
+
+  /**
+   * `layout` along the bottom band of a width × height canvas (CSS px) at text scale `scale`,
+   * the line from `left` to `width − right` (CSS px at scale 1).
+   */
+  atBottom(width, height, scale = 1, left = RULER_LEFT, right = RULER_RIGHT) {
+    this.layout(left * scale, width - right * scale, height - this.height(scale), scale);
   }
 
   /** The ruler's u range [u₀, u_m] (fixed while a knot is dragged). */
@@ -719,6 +732,103 @@ export class KnotRuler {
   destroy() {
     this.view.canvas.removeEventListener("keydown", this._onKey, true);
   }
+}
+
+/**
+ * The knot ruler of a declarative demo (demo.js), as a `controls` entry in the panel.js style:
+ * `knotRuler("knots", options)` returns `{ build(ui) }`, which makes a `KnotRuler` on `ui.view`
+ * bound to `state[field]`, chained with the control-point handles (one Tab order, one
+ * selection), and reserves its band at the bottom of the figure (added to the demo's own
+ * `figure.insets`). It has no panel element. A moved knot, a raised or lowered multiplicity
+ * goes through `setKnots` (lib/bspline.js): the core is asked first, u is kept in the domain,
+ * a drag is committed when it ends.
+ *
+ * The ruler is `data[name]` (default `data.ruler`) for the demo's `draw`, which places it
+ * (`data.ruler.atBottom(r.width, r.height, r.scale)`, before drawing next to it with `px(u)`)
+ * and draws it (`data.ruler.draw(r)`) where the band belongs in its picture.
+ * @param {string} field the knot vector's state field.
+ * @param {object} [o]
+ * @param {(state) => number} [o.degree] p (default `state.degree`).
+ * @param {(state) => number} [o.count] control points of the curve (default `state.points.length`).
+ * @param {(state, data) => object[] | null} [o.continuity] the curve's `knotContinuity()`
+ *   (default `data.continuity`).
+ * @param {string | null} [o.param] the parameter field kept inside the domain (default "u").
+ * @param {(error: string, i: number, state) => string} [o.refused] the message when a
+ *   multiplicity cannot be raised or lowered (`raiseMultiplicity`'s error); without it, no
+ *   double click / Enter / Delete.
+ * @param {(ui, u: number, final: boolean) => void} [o.pick] press / drag on the ruler off the knots.
+ * @param {(ui, i: number) => void} [o.select] the selected knot changed.
+ * @param {string} [o.name] its key in `data`.
+ */
+export function knotRuler(field, o = {}) {
+  const degree = o.degree ?? ((s) => s.degree);
+  const count = o.count ?? ((s) => s.points.length);
+  const continuity = o.continuity ?? ((s, d) => d.continuity ?? null);
+  const param = o.param === undefined ? "u" : o.param;
+  const name = o.name ?? "ruler";
+  return {
+    build(ui) {
+      const options = { field, param, count, degree };
+      const multiplicity = (i, result) => {
+        if (result.error) {
+          ui.status(o.refused(result.error, i, ui.state), "error");
+          return;
+        }
+        if (setKnots(ui, result.knots, true, options)) ruler.select(result.index);
+      };
+      const ruler = new KnotRuler(ui.view, {
+        knots: () => ui.state[field],
+        degree: () => degree(ui.state),
+        continuity: () => continuity(ui.state, ui.data),
+        move(i, u) {
+          const next = Array.from(ui.state[field]);
+          next[i] = u;
+          setKnots(ui, next, false, options);
+        },
+        commit: (kind, i, merge) => ui.commit(merge),
+        raise: o.refused ? (i) => multiplicity(i, raiseMultiplicity(ui.state[field], i, degree(ui.state))) : undefined,
+        lower: o.refused ? (i) => multiplicity(i, lowerMultiplicity(ui.state[field], i)) : undefined,
+        pick: o.pick ? (u, final) => o.pick(ui, u, final) : undefined,
+        select: (i) => {
+          o.select?.(ui, i);
+          ui.requestDraw();
+        },
+        handles: ui.handles ?? undefined,
+      });
+      const handles = ui.handles;
+      if (handles) {
+        // Picking a control point deselects the knot.
+        const selectPoint = handles.source.select;
+        handles.source.select = (i) => {
+          selectPoint?.(i);
+          if (i >= 0) ruler.select(-1);
+        };
+      }
+      // The band below the world window, under whatever the demo reserves itself.
+      const demoInsets = ui.view.insets;
+      const insets = [0, 0, 0, 0];
+      ui.view.insets = (width, height, scale) => {
+        const own = demoInsets?.(width, height, scale);
+        for (let k = 0; k < 4; k++) insets[k] = own ? own[k] : 0;
+        insets[2] += ruler.height(scale);
+        return insets;
+      };
+      ui.data[name] = ruler;
+      let length = ui.state[field].length;
+      return {
+        element: null,
+        sync(state) {
+          // A new knot vector length (degree, points): the old selection and drag mean nothing.
+          if (state[field].length !== length) {
+            length = state[field].length;
+            ruler.forgetPointer();
+          }
+        },
+        stop: () => ruler.forgetPointer(),
+        destroy: () => ruler.destroy(),
+      };
+    },
+  };
 }
 
 /** The knotContinuity() entry for knot value u, or null. */

@@ -201,15 +201,23 @@ export function readout(name, text, { kind = "note", live = false, data = null }
 }
 
 /**
- * A row of buttons, `[{ name, label, title?, run(ui) }]` (`data-action=name`); `title` (legend
- * key) makes it a titled group.
+ * A row of buttons, `[{ name, label, title?, run(ui), disabled?(state, data) }]`
+ * (`data-action=name`); `title` (legend key) makes it a titled group. `disabled` is re-read
+ * after every change.
  */
 export function actions(list, { title = null } = {}) {
   return {
     build(ui) {
       const buttons = list.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       const row = el("div", { class: "sl-button-row" }, buttons);
-      return { element: title ? fieldset(t(title), row) : row };
+      return {
+        element: title ? fieldset(t(title), row) : row,
+        sync(state, data) {
+          list.forEach((a, k) => {
+            if (a.disabled) buttons[k].disabled = Boolean(a.disabled(state, data));
+          });
+        },
+      };
     },
   };
 }

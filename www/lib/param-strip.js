@@ -1,7 +1,7 @@
 /**
  * A band along the bottom of a figure where a parameter u in [a, b] is shown and picked: press
- * or drag in the band to set u. The strip lays the band out, handles the pointer (before any
- * handles: its presses are its own) and draws the usual marks (axis, knot ticks and labels,
+ * or drag in the band to set u. The strip lays the band out, handles the pointer (ahead of the
+ * handles: create it first, or pass them as `before`) and draws the usual marks (axis, knot ticks and labels,
  * u itself); the demo chooses which marks its band shows (knots, spans, supports …) with
  * `top`, `y(row)`, `x0`, `x1` and `px(u)`, and reserves the band with the View's `insets`
  * (`height × scale` CSS px at the bottom). For a knot vector the reader edits, with a handle
@@ -62,6 +62,7 @@ export function parameterStrip(field, { height, margin, step, range, over = null
           ui.handles?.leave(); // the pointer left the handles' area (they are not asked while it is here)
           over?.(ui);
         },
+        before: ui.handles,
       });
       ui.data[as] = strip;
       return {
@@ -85,8 +86,10 @@ export class ParameterStrip {
    * @param {(u: number, final: boolean) => void} o.pick u was pressed or dragged to; `final`
    *   when the pointer is released.
    * @param {() => void} [o.over] the pointer hovers over the band (the cursor becomes ↔).
+   * @param {object} [o.before] an interactor already on the view (the handles) that the strip
+   *   goes ahead of: its presses in the band are its own.
    */
-  constructor(view, { height, margin, range, step, pick, over = () => {} }) {
+  constructor(view, { height, margin, range, step, pick, over = () => {}, before = null }) {
     this.view = view;
     this.height = height;
     this.margin = margin;
@@ -122,7 +125,7 @@ export class ParameterStrip {
         over();
         return "col-resize";
       },
-    }, { first: true });
+    }, before);
   }
 
   /** Lays the band out for a canvas of width × height CSS px at (lecture) scale `scale`. */

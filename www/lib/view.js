@@ -272,12 +272,13 @@ export class View {
   /**
    * Adds an interactor `{ pointerDown(event, x, y) → boolean, pointerMove(event, x, y),
    * pointerUp(event, x, y), hover(x, y, pointerType) → cursor | null, leave() }`; x, y are
-   * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up;
-   * `first: true` puts this one before those added already (a band that claims its presses
-   * before the handles, e.g. param-strip.js).
+   * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up.
+   * `before` (an interactor already added) puts the new one ahead of it: a band or plot made
+   * after the handles still claims its presses first.
    */
-  addInteractor(interactor, { first = false } = {}) {
-    if (first) this._interactors.unshift(interactor);
+  addInteractor(interactor, before = null) {
+    const at = before ? this._interactors.indexOf(before) : -1;
+    if (at >= 0) this._interactors.splice(at, 0, interactor);
     else this._interactors.push(interactor);
   }
 

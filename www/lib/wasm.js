@@ -9,6 +9,8 @@ import { t } from "./strings.js";
 const PACKAGE_URL = new URL("../pkg/splinelab.js", import.meta.url);
 
 let loading = null;
+/** The initialised package once `loadWasm` has resolved (for synchronous checks, see `loadedWasm`). */
+let loaded = null;
 
 /**
  * The smallest module using a SIMD128 instruction (`() -> v128`: `i32.const 0`,
@@ -28,12 +30,21 @@ export function loadWasm() {
     }
     const module = await import(PACKAGE_URL.href);
     await module.default(); // wasm-bindgen init: fetches splinelab_bg.wasm next to splinelab.js
+    loaded = module;
     return module;
   })().catch((err) => {
     loading = null; // a later call may retry (e.g. after `make build`)
     throw err;
   });
   return loading;
+}
+
+/**
+ * The initialised package, or null before `loadWasm` has resolved. States are validated only
+ * after it has (app.js, embed.js), so a field check may ask the core (lib/bspline.js `knotsField`).
+ */
+export function loadedWasm() {
+  return loaded;
 }
 
 /** What to tell the reader when `loadWasm` failed with `err`. */
