@@ -295,6 +295,20 @@ fn clamped_curves_interpolate_their_end_points() {
 }
 
 #[test]
+fn insertion_alphas_of_the_croatian_example_by_hand() {
+    // U = [0,0,0,1,2,3,4,4,4], p = 2, α_i = (s − u_i)/(u_{i+2} − u_i), i = k − 1, k.
+    let c = croatian();
+    // s = 3/2 in span 3: α_2 = (3/2 − 0)/(2 − 0) = 3/4, α_3 = (3/2 − 1)/(3 − 1) = 1/4.
+    assert_eq!(c.insertion_alphas(1.5).unwrap(), (3, vec![0.75, 0.25]));
+    // s = 7/2 in span 5: α_4 = (7/2 − 2)/(4 − 2) = 3/4, α_5 = (7/2 − 3)/(4 − 3) = 1/2.
+    assert_eq!(c.insertion_alphas(3.5).unwrap(), (5, vec![0.75, 0.5]));
+    // s = 4, the end of the domain, is in the last span: α_4 = 2/2, α_5 = 1/1.
+    assert_eq!(c.insertion_alphas(4.0).unwrap(), (5, vec![1.0, 1.0]));
+    assert!(c.insertion_alphas(4.5).is_err());
+    assert!(c.insertion_alphas(f64::INFINITY).is_err());
+}
+
+#[test]
 fn knot_insertion_matches_a_hand_computed_case_and_keeps_the_curve() {
     let c = croatian();
     let p = c.control_points();

@@ -329,3 +329,47 @@ fn fixtures_from_homogeneous_scipy_evaluation() {
     }
     assert!(checked >= 150, "only {checked} fixture values");
 }
+
+#[test]
+fn rational_bernstein_basis_by_hand() {
+    // The weights demo's default: weights 1, 3, 1, 1 at t = 1/2, B = 1/8, 3/8, 3/8, 1/8:
+    // w_i B_i = 1/8, 9/8, 3/8, 1/8, Σ = 14/8, so R = 1/14, 9/14, 3/14, 1/14, and
+    // Σ R_i P_i = (13/7, 18/7) (the hand-computed point of tests/e2e/checks/weights.mjs).
+    let pts = pts2(&[(0.0, 0.0), (1.0, 3.0), (4.0, 3.0), (5.0, 0.0)]);
+    let c = BezierCurve::new(pts.clone(), Some(&[1.0, 3.0, 1.0, 1.0])).unwrap();
+    let r = c.rational_basis(0.5).unwrap();
+    let expected = [1.0 / 14.0, 9.0 / 14.0, 3.0 / 14.0, 1.0 / 14.0];
+    for (i, (&got, want)) in r.iter().zip(expected).enumerate() {
+        assert!(
+            (got - want).abs() < 1e-15,
+            "R_{i}(1/2) = {got}, expected {want}"
+        );
+    }
+    let point = pts
+        .iter()
+        .zip(&r)
+        .fold(DVec2::ZERO, |acc, (&p, &ri)| acc + p * ri);
+    assert!((point - DVec2::new(13.0 / 7.0, 18.0 / 7.0)).length() < 1e-14);
+    // Ends: R_0(0) = 1 and R_3(1) = 1 whatever the weights.
+    assert_eq!(c.rational_basis(0.0).unwrap(), vec![1.0, 0.0, 0.0, 0.0]);
+    assert_eq!(c.rational_basis(1.0).unwrap(), vec![0.0, 0.0, 0.0, 1.0]);
+    // The quarter circle: weights 1, √2/2, 1 at t = 1/2 give 1, √2, 1 over 2 + √2.
+    let q = BezierCurve::new(
+        pts2(&[(1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]),
+        Some(&[1.0, FRAC_1_SQRT_2, 1.0]),
+    )
+    .unwrap();
+    let r = q.rational_basis(0.5).unwrap();
+    let d = 2.0 + 2f64.sqrt();
+    for (got, want) in r.iter().zip([1.0 / d, 2f64.sqrt() / d, 1.0 / d]) {
+        assert!((got - want).abs() < 1e-15, "{got} vs {want}");
+    }
+    // A polynomial curve: the Bernstein values (t = 1/4: 27/64, 27/64, 9/64, 1/64).
+    let p = BezierCurve::new(pts, None).unwrap();
+    assert_eq!(
+        p.rational_basis(0.25).unwrap(),
+        vec![27.0 / 64.0, 27.0 / 64.0, 9.0 / 64.0, 1.0 / 64.0]
+    );
+    assert!(c.rational_basis(1.5).is_err());
+    assert!(c.rational_basis(f64::NAN).is_err());
+}

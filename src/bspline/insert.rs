@@ -42,6 +42,27 @@ pub(crate) fn check_insertion(
     })
 }
 
+/// Boehm's factor `α_i = (u − u_i)/(u_{i+p} − u_i)` for inserting `u` (degree `p`); a zero
+/// denominator (impossible for `k − p + 1 <= i <= k` in a non-empty span `k`) counts as 0.
+#[inline]
+pub fn boehm_alpha(knots: &[f64], p: usize, i: usize, u: f64) -> f64 {
+    let denominator = knots[i + p] - knots[i];
+    if denominator == 0.0 {
+        0.0
+    } else {
+        (u - knots[i]) / denominator
+    }
+}
+
+/// The `p` factors of one Boehm insertion of `u` in span `k`:
+/// `α_i = (u − u_i)/(u_{i+p} − u_i)` for `i = k − p + 1 ..= k`, in that order (the weights in
+/// `Q_i = (1 − α_i) P_{i−1} + α_i P_i`).
+pub fn boehm_alphas(knots: &[f64], p: usize, k: usize, u: f64) -> Vec<f64> {
+    (k + 1 - p..=k)
+        .map(|i| boehm_alpha(knots, p, i, u))
+        .collect()
+}
+
 /// One Boehm insertion of `u` (in span `k` of `knots`, degree `p`) into `points`:
 /// `Q_i = P_i` for `i <= k − p`; `Q_i = (1 − α_i) P_{i−1} + α_i P_i` with
 /// `α_i = (u − u_i)/(u_{i+p} − u_i)` for `k − p + 1 <= i <= k`; `Q_i = P_{i−1}` for `i >= k + 1`.
@@ -49,13 +70,7 @@ pub fn boehm_insert<P: Point>(points: &[P], knots: &[f64], p: usize, k: usize, u
     let mut out = Vec::with_capacity(points.len() + 1);
     out.extend_from_slice(&points[..=k - p]);
     for i in k - p + 1..=k {
-        let denominator = knots[i + p] - knots[i];
-        let alpha = if denominator == 0.0 {
-            0.0
-        } else {
-            (u - knots[i]) / denominator
-        };
-        out.push(points[i - 1].lerp_to(points[i], alpha));
+        out.push(points[i - 1].lerp_to(points[i], boehm_alpha(knots, p, i, u)));
     }
     out.extend_from_slice(&points[k..]);
     out
@@ -90,6 +105,18 @@ impl<C: Cartesian> BSplineCurve<C> {
             knots,
             wrap: 0,
         })
+    }
+
+    /// What one insertion of `u` would use, for showing Boehm's rule: the span `k` of `u`
+    /// (`u_k <= u < u_{k+1}`) and `α_i = (u − u_i)/(u_{i+p} − u_i)` for `i = k − p + 1 ..= k`.
+    /// Only `u` is checked (not whether its multiplicity allows one more insertion).
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] or [`Error::ParameterOutOfRange`] for a bad `u`.
+    pub fn insertion_alphas(&self, u: f64) -> Result<(usize, Vec<f64>)> {
+        let u = self.knots.check_parameter(u)?;
+        let k = self.knots.span(u);
+        Ok((k, boehm_alphas(self.knots.as_slice(), self.degree(), k, u)))
     }
 
     /// Knot refinement: inserts every value of `us` (in any order; repeated values raise the

@@ -7,8 +7,10 @@
 //! weights matter; raising `w_i` pulls the curve toward `P_i`; weights must be > 0 (a zero or
 //! negative weight can make the denominator vanish: a pole).
 
+mod basis;
 mod conics;
 mod projective;
 
+pub use basis::rational_basis;
 pub use conics::{circle_arc_from_triangle, conic_kind, ellipse_arc, ConicKind, MAX_ARC_PIECE};
 pub use projective::{projective_map_bezier, projective_map_bspline};

@@ -215,6 +215,13 @@ impl JsBezierCurve {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_casteljau(t)?)))
     }
 
+    /// The rational basis at t: `R_i(t) = w_i B_i(t) / Σ_j w_j B_j(t)` for i = 0..n, the share
+    /// of each control point in P(t) (the Bernstein values for a polynomial curve).
+    #[wasm_bindgen(js_name = rationalBasis)]
+    pub fn rational_basis(&self, t: f64) -> Result<Vec<f64>, JsError> {
+        Ok(with_curve!(&self.inner, c => c.rational_basis(t))?)
+    }
+
     /// de Casteljau's triangle on the homogeneous points `(w·x, w·y, (w·z,) w)`, flat with
     /// dim + 1 numbers per point.
     #[wasm_bindgen(js_name = deCasteljauHomogeneous)]

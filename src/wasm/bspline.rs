@@ -53,6 +53,12 @@ struct BasisTableJs {
 }
 
 #[derive(Serialize)]
+struct InsertionAlphasJs {
+    span: usize,
+    alphas: Vec<f64>,
+}
+
+#[derive(Serialize)]
 struct KnotContinuityJs {
     knot: f64,
     multiplicity: usize,
@@ -312,6 +318,17 @@ impl JsBSplineCurve {
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.insert_knot(u, times)?),
         ))
+    }
+
+    /// Boehm's rule for inserting u once: `{ span: k, alphas }` with `alphas[m]` =
+    /// `α_i = (u − u_i)/(u_{i+p} − u_i)` for i = k − p + 1 + m (m = 0..p−1).
+    #[wasm_bindgen(js_name = insertionAlphas, unchecked_return_type = "{ span: number; alphas: number[] }")]
+    pub fn insertion_alphas(&self, u: f64) -> Result<JsValue, JsError> {
+        let (span, alphas) = with_curve!(&self.inner, c => c.insertion_alphas(u))?;
+        Ok(serde_wasm_bindgen::to_value(&InsertionAlphasJs {
+            span,
+            alphas,
+        })?)
     }
 
     /// A new curve with every knot of `us` inserted (knot refinement).

@@ -13,8 +13,8 @@
  * asked from the core again per change (like `deCasteljau(t)` in the reference demo).
  *
  * JS does no curve maths: picking the clicked parameter is the nearest of the drawn samples
- * (`sampleUniform`), and the α_i are only displayed from the knot vector (the core computes the
- * new points itself).
+ * (`sampleUniform`), and the span and the α_i shown are the core's `insertionAlphas(s)` (the core
+ * computes the new points itself).
  */
 import { Handles, placeLabel, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
@@ -418,18 +418,15 @@ export function mount(container, initialState, ctx) {
   }
 
   /**
-   * The knot s of the last insertion (or the slider's u, as a preview), its span k in the
-   * knot vector before it, and the α_i = (s − u_i)/(u_{i+p} − u_i), i = k−p+1 … k. The α are
-   * SHOWN, not used: the new points come from the core's insertKnot.
+   * The knot s of the last insertion (or the slider's u, as a preview), and from the core's
+   * `insertionAlphas(s)` on the curve before it: its span k and α_i = (s − u_i)/(u_{i+p} − u_i),
+   * i = k−p+1 … k. The α are SHOWN, not used: the new points come from the core's insertKnot.
    */
   function boehmInfo() {
     const preview = work.inserted.length === 0;
     const s = preview ? work.u : work.inserted[work.inserted.length - 1];
-    const U = previousKnots;
-    const p = work.degree;
-    const k = curves.previous.span(s);
-    const alphas = [];
-    for (let i = k - p + 1; i <= k; i++) alphas.push({ i, value: (s - U[i]) / (U[i + p] - U[i]) });
+    const { span: k, alphas: values } = curves.previous.insertionAlphas(s);
+    const alphas = values.map((value, m) => ({ i: k - work.degree + 1 + m, value }));
     return { preview, s, k, alphas };
   }
 

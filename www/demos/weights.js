@@ -9,7 +9,8 @@
  * Everything drawn comes from the core: the rational curve (`BezierCurve` with weights), the
  * ghost (the same points without weights) and the homogeneous curve (a 3D polynomial
  * `BezierCurve` built from `homogeneousPoints()`), each updated in place while dragging
- * (`setControlPoint`, `setWeight`), one `sampleUniform` per change. The inset's oblique
+ * (`setControlPoint`, `setWeight`), one `sampleUniform` per change; the table's shares are the
+ * core's rational basis `rationalBasis(t)`. The inset's oblique
  * projection of 3D onto the canvas is display code only (a fixed linear map, written below).
  */
 import { Handles, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "../lib/handles.js";
@@ -749,14 +750,13 @@ export function mount(container, initialState, ctx) {
     // Table: one row per control point.
     if (tableRows !== n + 1) buildTable(n);
     setText(tableTitle, t("weights.tableCaption", { t: tText() }));
-    let denominatorSum = 0;
-    for (let i = 0; i <= n; i++) denominatorSum += sl.bernstein(n, i, work.t) * ws[i];
+    const shares = curve.rationalBasis(work.t); // R_i(t) = w_i B_i(t) / Σ_j w_j B_j(t)
     for (let i = 0; i <= n; i++) {
       const cells = tableCells[i];
       setText(cells.point, `(${fmt(pts[i][0])}, ${fmt(pts[i][1])})`);
       setText(cells.weight, weightText(ws[i]));
       setText(cells.homogeneous, `(${fmt(homPoints[3 * i])}, ${fmt(homPoints[3 * i + 1])}, ${fmt(homPoints[3 * i + 2])})`);
-      setText(cells.share, fmt((sl.bernstein(n, i, work.t) * ws[i]) / denominatorSum));
+      setText(cells.share, fmt(shares[i]));
       setText(cells.distance, fmt(distances[i]));
       cells.distance.dataset.value = String(distances[i]);
     }
