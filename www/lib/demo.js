@@ -115,6 +115,8 @@ export function mountDeclared(demo, initialState, ctx) {
     },
     status: ctx.status,
     requestDraw: () => view.requestDraw(),
+    /** Stops every control's animation (a press in the figure takes the parameter over). */
+    stop: () => built.forEach((control) => control.stop?.()),
   };
 
   /** `demo.adjust` on the working state; the fields it changed are marked. */

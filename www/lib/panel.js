@@ -9,6 +9,7 @@
 import { slider as sliderElement, checkbox as checkboxElement, radios, button, group as fieldset, el, setText } from "./controls.js";
 import { Player } from "./player.js";
 import { withPointAdded, withPointRemoved } from "./point-list.js";
+import { parseNumberInput } from "./format.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -36,6 +37,12 @@ function fragment(...nodes) {
  *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
  * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
  *   take the value (then it is reported and the slider shows the field again), else null.
+ * @param {(ui, v: number, final: boolean) => void} [o.apply] applies the value instead of
+ *   `ui.set(field, …)` (a change that replaces more than its field, e.g. a degree that resets
+ *   the knots); a refused change leaves the state as it was and the slider shows it again.
+ * @param {number | ((state, data) => number)} o.step may follow the range (re-read with it).
+ * `o.error` may also be a function `(text, state) → message`; `o.player`'s `stepBackTitle` /
+ * `stepTitle` are strings.js keys.
  */
 export function slider(field, o) {
   return {
@@ -43,6 +50,7 @@ export function slider(field, o) {
       const fixed = o.range ? null : [o.min, o.max];
       const range = () => fixed ?? o.range(ui.state, ui.data);
       const [min, max] = range();
+      const step = typeof o.step === "function" ? () => o.step(ui.state, ui.data) : () => o.step;
       let player = null;
       const control = sliderElement({
         label: t(o.label),
@@ -50,7 +58,7 @@ export function slider(field, o) {
         name: o.name ?? field,
         min,
         max,
-        step: o.step,
+        step: step(),
         log: o.log,
         format: o.format,
         value: ui.state[field],
@@ -65,16 +73,23 @@ export function slider(field, o) {
             control.set(ui.state[field]);
             return;
           }
-          ui.set(field, next, final);
+          if (o.apply) {
+            o.apply(ui, next, final);
+            control.set(ui.state[field]);
+          } else ui.set(field, next, final);
         },
         onError: (text) => {
           const [a, b] = range();
-          ui.status(t(o.error ?? "control.badNumber", { value: text, min: a, max: b }), "error");
+          const message = typeof o.error === "function" ? o.error(text, ui.state) : t(o.error ?? "control.badNumber", { value: text, min: a, max: b });
+          ui.status(message, "error");
         },
       });
       if (o.player) {
+        const options = typeof o.player === "object" ? o.player : {};
         player = new Player(ui.view, {
-          ...(typeof o.player === "object" ? o.player : {}),
+          ...options,
+          stepBackTitle: options.stepBackTitle ? t(options.stepBackTitle) : undefined,
+          stepTitle: options.stepTitle ? t(options.stepTitle) : undefined,
           get: () => ui.state[field],
           set: (value, final) => ui.set(field, value, final),
           stopped: () => ui.commit(),
@@ -89,7 +104,7 @@ export function slider(field, o) {
           if (!fixed) {
             const [a, b] = range();
             if (a !== shownRange[0] || b !== shownRange[1]) {
-              control.setRange(a, b);
+              control.setRange(a, b, step());
               shownRange = [a, b];
             }
           }
@@ -136,21 +151,27 @@ export function choice(field, { options, name = field }) {
  * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints` (or the keys `maxKey` /
  * `minKey`, with `params(state)` added to `{ max }` / `{ min }`). The buttons are disabled at the
  * limits. `min` may be a function of the state (a B-spline of degree p needs p + 1 points).
+ * `apply(ui, points) → boolean` replaces `ui.replace` when the new list changes more (knots
+ * reset); `addTitle` / `removeTitle` are keys of the buttons' tooltips.
  */
 export function pointButtons(field, o) {
   const { min, max, prefix, minKey = `${prefix}.minPoints`, maxKey = `${prefix}.maxPoints`, params = () => ({}) } = o;
+  const { addTitle = "control.addPoint.title", removeTitle = "control.removePoint.title" } = o;
   const least = typeof min === "function" ? min : () => min;
   return {
     build(ui) {
-      const apply = (next) => {
-        const state = { ...ui.state, [field]: next.points };
+      const replace = (points) => {
         try {
-          ui.replace(state);
+          ui.replace({ ...ui.state, [field]: points });
+          return true;
         } catch (err) {
           ui.status(err.message, "error");
-          return;
+          return false;
         }
-        ui.handles?.select(next.index);
+      };
+      const apply = (next) => {
+        const done = o.apply ? o.apply(ui, next.points) : replace(next.points);
+        if (done) ui.handles?.select(next.index);
       };
       const refuse = (key, limits) => ui.status(t(key, { ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
@@ -166,8 +187,8 @@ export function pointButtons(field, o) {
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
-      const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => ui.pointList.add(selected()) });
-      const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
+      const addButton = button({ label: t("control.addPoint"), title: t(addTitle), name: "add-point", onClick: () => ui.pointList.add(selected()) });
+      const removeButton = button({ label: t("control.removePoint"), title: t(removeTitle), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
       return {
         element: el("div", { class: "sl-button-row" }, addButton, removeButton),
         sync(state) {
@@ -216,6 +237,49 @@ export function actions(list, { title = null } = {}) {
           list.forEach((a, k) => {
             if (a.disabled) buttons[k].disabled = Boolean(a.disabled(state, data));
           });
+        },
+      };
+    },
+  };
+}
+
+/**
+ * A typed list of numbers bound to a field (a knot vector): a labelled text box
+ * (`data-control=name`) showing `state[field]` as `format(v)` joined by spaces, and a help line
+ * `help(state)` under it. Enter (or leaving the box) reads numbers or fractions separated by
+ * spaces, commas or semicolons; a part that is no number is reported (`control.badNumber`), else
+ * `apply(ui, values)` (default `ui.set(field, values)`) gets the list. The box is not rewritten
+ * while it has the focus.
+ */
+export function numberList(field, { label, name = field, format = String, help = null, apply = null }) {
+  return {
+    build(ui) {
+      const id = `sl-${name}-${Math.random().toString(36).slice(2, 8)}`;
+      const input = el("input", {
+        type: "text", id, class: "sl-value sl-wide", inputmode: "decimal", spellcheck: "false",
+        "aria-describedby": help ? `${id}-help` : null,
+      });
+      const note = help ? el("p", { class: "sl-note", id: `${id}-help` }) : null;
+      const read = () => {
+        const parts = input.value.trim().split(/[\s,;]+/).filter(Boolean);
+        const values = parts.map(parseNumberInput);
+        const bad = parts.find((part, i) => !Number.isFinite(values[i]));
+        if (bad !== undefined) ui.status(t("control.badNumber", { value: bad }), "error");
+        else if (apply) apply(ui, values);
+        else ui.set(field, values);
+      };
+      input.addEventListener("change", read);
+      input.addEventListener("keydown", (event) => {
+        if (event.key === "Enter") read();
+      });
+      const focused = () => document.activeElement === input || input.getRootNode().activeElement === input;
+      const row = el("div", { class: "sl-control", dataset: { control: name } }, el("label", { for: id, text: t(label) }), input);
+      return {
+        element: fragment(row, ...(note ? [note] : [])),
+        sync(state) {
+          const text = state[field].map(format).join(" ");
+          if (input.value !== text && !focused()) input.value = text;
+          if (note) setText(note, help(state));
         },
       };
     },

@@ -20,10 +20,10 @@ import { knotText } from "./knot-ruler.js";
 const END_LABEL_PX = 40;
 
 /**
- * The distinct values of a knot vector and their labels, "0 ×4" for a value repeated 4 times
- * (a knot vector's ticks on a strip).
+ * The distinct values of a knot vector, how often each occurs, and their labels, "0 ×4" for a
+ * value repeated 4 times (a knot vector's ticks on a strip).
  * @param {ArrayLike<number>} knots non-decreasing
- * @returns {{ values: Float64Array, labels: string[] }}
+ * @returns {{ values: Float64Array, counts: number[], labels: string[] }}
  */
 export function knotMarks(knots) {
   const values = [];
@@ -36,7 +36,7 @@ export function knotMarks(knots) {
     }
   }
   const labels = values.map((value, j) => (counts[j] > 1 ? `${knotText(value)} ×${counts[j]}` : knotText(value)));
-  return { values: Float64Array.from(values), labels };
+  return { values: Float64Array.from(values), counts, labels };
 }
 
 /**
@@ -44,19 +44,26 @@ export function knotMarks(knots) {
  * it calls `ui.set(field, u, final)`. It has no element in the side panel; the ParameterStrip
  * is `data[as]` (default `data.strip`) for `draw`.
  * @param {string} field
- * @param {object} o the ParameterStrip options `height`, `margin`, `step`, and
+ * @param {object} o the ParameterStrip options `height`, `margin`, `hit`, and
+ * @param {number | ((state, data) => number)} o.step the rounding of a picked u.
  * @param {(state, data) => [number, number]} o.range the parameter range (e.g. the domain).
+ * @param {(state, data) => [number, number]} [o.clampTo] where picked u stay (the domain,
+ *   when `range` is the whole knot vector).
  * @param {(ui) => void} [o.over] the pointer hovers over the band (the handles are left already).
  * @param {string} [o.as] the name of the strip in `data`.
  */
-export function parameterStrip(field, { height, margin, step, range, over = null, as = "strip" }) {
+export function parameterStrip(field, o) {
+  const { height, margin, step, range, clampTo = null, hit = null, over = null, as = "strip" } = o;
   return {
     build(ui) {
       const strip = new ParameterStrip(ui.view, {
         height,
         margin,
-        step,
+        step: typeof step === "function" ? () => step(ui.state, ui.data) : step,
         range: () => range(ui.state, ui.data),
+        clampTo: clampTo ? () => clampTo(ui.state, ui.data) : null,
+        hit,
+        press: () => ui.stop(), // the press takes u over from a playing animation
         pick: (u, final) => ui.set(field, u, final),
         over: () => {
           ui.handles?.leave(); // the pointer left the handles' area (they are not asked while it is here)
@@ -82,19 +89,28 @@ export class ParameterStrip {
    * @param {number} o.height the band's height, CSS px at scale 1.
    * @param {number} o.margin free space left and right of the parameter line, CSS px at scale 1.
    * @param {() => [number, number]} o.range the parameter range [a, b] drawn across the band.
-   * @param {number} o.step a picked u is clamped to [a, b] and rounded to a multiple of `step`.
+   * @param {number | (() => number)} o.step a picked u is clamped to [a, b] and rounded to a
+   *   multiple of `step` (or to a + k·step with `clampTo`).
+   * @param {() => [number, number]} [o.clampTo] picked u stay in this part of the range (a
+   *   B-spline's domain inside its whole knot vector).
+   * @param {{ bottom: number, slack: number }} [o.hit] presses count only above `bottom` (CSS px
+   *   below the top at scale 1) and at most `slack` px beyond the line's ends; default the band.
+   * @param {() => void} [o.press] a press in the band starts (stop an animation of u there).
    * @param {(u: number, final: boolean) => void} o.pick u was pressed or dragged to; `final`
    *   when the pointer is released.
    * @param {() => void} [o.over] the pointer hovers over the band (the cursor becomes ↔).
    * @param {object} [o.before] an interactor already on the view (the handles) that the strip
    *   goes ahead of: its presses in the band are its own.
    */
-  constructor(view, { height, margin, range, step, pick, over = () => {}, before = null }) {
+  constructor(view, o) {
+    const { height, margin, range, step, pick, over = () => {}, before = null } = o;
     this.view = view;
     this.height = height;
     this.margin = margin;
     this.range = range;
-    this.step = step;
+    this.step = typeof step === "function" ? step : () => step;
+    this.clampTo = o.clampTo ?? null;
+    this.hit = o.hit ?? null;
     /** Layout in canvas CSS px (see `layout`) and the range [a, b] drawn. */
     this.top = 0;
     this.x0 = 0;
@@ -107,7 +123,8 @@ export class ParameterStrip {
     this.dragging = false;
     view.addInteractor({
       pointerDown: (event, x, y) => {
-        if (!this.contains(y)) return false;
+        if (!this.contains(x, y)) return false;
+        o.press?.();
         this.dragging = true;
         pick(this.uAt(x), false);
         return true;
@@ -121,7 +138,7 @@ export class ParameterStrip {
         pick(this.uAt(x), true);
       },
       hover: (x, y) => {
-        if (!this.contains(y)) return null;
+        if (!this.contains(x, y)) return null;
         over();
         return "col-resize";
       },
@@ -142,18 +159,25 @@ export class ParameterStrip {
     return this.x0 + ((u - this.a) / (this.b - this.a)) * (this.x1 - this.x0);
   }
 
-  /** True when canvas y lies in the band (laid out for the view on screen). */
-  contains(y) {
+  /** True when canvas (x, y) lies in the band's pressable part (laid out for the view on screen). */
+  contains(x, y) {
     this.layout(this.view.width, this.view.height, this.view.renderer.scale);
-    return y >= this.top;
+    if (y < this.top) return false;
+    if (!this.hit) return true;
+    const slack = this.hit.slack * this.scale;
+    return y <= this.y(this.hit.bottom) && x >= this.x0 - slack && x <= this.x1 + slack;
   }
 
-  /** u under canvas x, clamped to [a, b] and rounded to a multiple of `step`. */
+  /** u under canvas x, clamped to [a, b] (or `clampTo`) and rounded to the step. */
   uAt(x) {
     this.layout(this.view.width, this.view.height, this.view.renderer.scale);
     const raw = this.a + ((x - this.x0) / (this.x1 - this.x0)) * (this.b - this.a);
-    return Math.round(Math.min(this.b, Math.max(this.a, raw)) / this.step) * this.step;
+    const step = this.step();
+    if (!this.clampTo) return Math.round(Math.min(this.b, Math.max(this.a, raw)) / step) * step;
+    const [lo, hi] = this.clampTo();
+    return Math.min(hi, Math.max(lo, lo + Math.round((raw - lo) / step) * step));
   }
+
 
   /** Canvas y of a row `row` CSS px (at scale 1) below the band's top (after `layout`). */
   y(row) {
