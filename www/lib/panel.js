@@ -204,7 +204,8 @@ export function pointButtons(field, o) {
 /**
  * A line of text computed from the state and data (`text(state, data)`), `data-info=name`;
  * `kind` "note" (default) or "readout" (the larger figure of merit); `live` makes it a polite
- * live region; `data(state, data)` → `{ name: value }` sets data attributes (hooks for tests).
+ * live region; `data(state, data)` → `{ name: value }` sets data attributes (hooks for tests;
+ * null removes one). Built outside the panel (`readout(…).build(ui)`), it can fill other slots.
  */
 export function readout(name, text, { kind = "note", live = false, data = null } = {}) {
   return {
@@ -214,7 +215,11 @@ export function readout(name, text, { kind = "note", live = false, data = null }
         element: node,
         sync(state, values) {
           setText(node, text(state, values, ui));
-          if (data) Object.assign(node.dataset, data(state, values));
+          if (!data) return;
+          for (const [key, value] of Object.entries(data(state, values))) {
+            if (value === null || value === undefined) delete node.dataset[key];
+            else node.dataset[key] = value;
+          }
         },
       };
     },
