@@ -486,8 +486,8 @@ export function mount(container, initialState, ctx) {
     // Formula: the curve, its denominator, where that vanishes, the hull argument.
     const wTex = fmt(w1, 2);
     const product = 1 / (2 * (1 - w1)); // t(1 − t) at a zero of w(t)
-    const zeros = w1 <= -1
-      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm \\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(0.5 - Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)},\\ ${fmt(0.5 + Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)}\\quad\\text{(poles)}`
+    const zeros = w1 <= -1 && poleCount > 0 // the values are the core's roots (a double one at w₁ = −1)
+      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm \\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(poles[0])},\\ ${fmt(poles[poleCount - 1])}\\quad\\text{(poles)}`
       : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad\\text{(no pole; } w(t) = 0 \\text{ needs } w_1 \\le -1\\text{)}`;
     formula.set([
       `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${wTex}`,
