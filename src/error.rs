@@ -138,6 +138,13 @@ pub enum Error {
         /// The curve's dimension.
         dim: usize,
     },
+    /// Every weight of a rational curve is 0, so its denominator `Σ w_i B_i` vanishes for all
+    /// parameters (only reachable where weights of any sign are allowed, e.g.
+    /// [`crate::rational::rational_poles`]).
+    AllWeightsZero {
+        /// Number of weights.
+        count: usize,
+    },
 }
 
 /// A number inside an error message, printed the way the caller's language prints it: in the wasm
@@ -236,6 +243,10 @@ impl fmt::Display for Error {
             Error::Needs2D { operation, dim } => {
                 write!(f, "{operation} works on 2D curves; this curve has dim = {dim}")
             }
+            Error::AllWeightsZero { count } => write!(
+                f,
+                "all {count} weights are 0: the denominator w(t) = Σ w_i B_i(t) is 0 for every t, so there is no curve"
+            ),
         }
     }
 }

@@ -275,6 +275,33 @@ fn de_boor_alphas_on_bezier_knots_are_all_t() {
 }
 
 #[test]
+fn matrix_form_evaluation_of_the_croatian_example_by_hand() {
+    let c = croatian();
+    // Span 3 (u ∈ [1, 2]) at t = 1/2, u = 3/2: [1/4 1/2 1] M gives the syllabus' basis values
+    // N_{1,2} = (2 − u)²/2 = 1/8, N_{2,2} = (−2u² + 6u − 3)/2 = 3/4, N_{3,2} = (u − 1)²/2 = 1/8;
+    // the point is (1/8)(1, 2) + (3/4)(3, 3) + (1/8)(5, 1) = (3, 21/8).
+    let f = c.evaluate_matrix_form(3, 0.5).unwrap();
+    assert_eq!(f.monomials, vec![0.25, 0.5, 1.0]);
+    assert_eq!(f.basis, vec![0.125, 0.75, 0.125]);
+    assert_eq!(f.point, DVec2::new(3.0, 2.625));
+    // The first span (u ∈ [0, 1]) at t = 1/2: N_{0,2} = (1 − u)² = 1/4, N_{1,2} = u(4 − 3u)/2 = 5/8,
+    // N_{2,2} = u²/2 = 1/8; the point (5/8)(1, 2) + (1/8)(3, 3) = (1, 13/8).
+    let f = c.evaluate_matrix_form(2, 0.5).unwrap();
+    assert_eq!(f.basis, vec![0.25, 0.625, 0.125]);
+    assert_eq!(f.point, DVec2::new(1.0, 1.625));
+    // t = 1 is the end of the segment: [1 1 1] M is the basis at u_{k+1}.
+    let f = c.evaluate_matrix_form(5, 1.0).unwrap();
+    assert_eq!(f.monomials, vec![1.0, 1.0, 1.0]);
+    assert_eq!(f.point, DVec2::new(8.0, 0.0));
+    assert!(c.evaluate_matrix_form(3, 1.5).is_err());
+    assert!(c.evaluate_matrix_form(3, -0.25).is_err());
+    assert!(c.evaluate_matrix_form(3, f64::NAN).is_err());
+    assert!(c.evaluate_matrix_form(0, 0.5).is_err());
+    assert!(c.evaluate_matrix_form(6, 0.5).is_err());
+    assert!(c.evaluate_matrix_form(usize::MAX, 0.5).is_err());
+}
+
+#[test]
 fn clamped_curves_interpolate_their_end_points() {
     let c = croatian();
     assert_eq!(c.evaluate(0.0).unwrap(), DVec2::new(0.0, 0.0));

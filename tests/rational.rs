@@ -373,3 +373,92 @@ fn rational_bernstein_basis_by_hand() {
     assert!(c.rational_basis(1.5).is_err());
     assert!(c.rational_basis(f64::NAN).is_err());
 }
+
+/// The negative-weights demo's triangle with weights 1, w1, 1.
+fn negative_weights_poles(w1: f64, count: usize) -> rational::RationalPoles<DVec2> {
+    let pts = pts2(&[(0.0, 0.0), (2.0, 3.0), (4.0, 0.0)]);
+    rational::rational_poles(&pts, &[1.0, w1, 1.0], count).unwrap()
+}
+
+#[test]
+fn rational_poles_of_the_quadratic_by_hand() {
+    // w(t) = (1−t)² + 2w₁t(1−t) + t² = 1 − 2(1 − w₁)t(1 − t) is 0 where t(1−t) = 1/(2(1 − w₁)):
+    // w₁ = −2: t = 1/2 ± √3/6; w₁ = −1.5: t = 1/2 ± √5/10; w₁ > −1: never.
+    for (w1, half_gap) in [(-2.0, 3f64.sqrt() / 6.0), (-1.5, 5f64.sqrt() / 10.0)] {
+        let poles = negative_weights_poles(w1, 5);
+        assert_eq!(poles.roots.len(), 2, "w1 = {w1}: {:?}", poles.roots);
+        assert_close(poles.roots[0], 0.5 - half_gap, 1e-14, "first pole");
+        assert_close(poles.roots[1], 0.5 + half_gap, 1e-14, "second pole");
+        // The numerator there: N = 2t(1−t)w₁P₁ + t²P₂ with t(1−t) = 1/(2(1 − w₁)).
+        for (&t0, d) in poles.roots.iter().zip(&poles.directions) {
+            let s = 1.0 / (2.0 * (1.0 - w1));
+            let n = DVec2::new(2.0, 3.0) * (2.0 * s * w1) + DVec2::new(4.0, 0.0) * (t0 * t0);
+            assert_close2(*d, n / n.length(), 1e-12, "pole direction");
+        }
+    }
+    for w1 in [-0.5, 0.0, 1.0, 3.0] {
+        let poles = negative_weights_poles(w1, 3);
+        assert!(
+            poles.roots.is_empty() && poles.directions.is_empty(),
+            "w1 = {w1}"
+        );
+    }
+    // w₁ = −1: w(t) = (1 − 2t)² touches 0 once, at 1/2, where N = (P₀ − 2P₁ + P₂)/4 = (0, −3/2).
+    let poles = negative_weights_poles(-1.0, 3);
+    assert_eq!(poles.roots, vec![0.5]);
+    assert_eq!(poles.directions, vec![DVec2::new(0.0, -1.0)]);
+    // Samples at t = 0, 1/2, 1 for w₁ = −2: (0, 0, 1), (P₀ + 2w₁P₁ + P₂, 2 + 2w₁)/4 =
+    // (−1, −3, −1/2) (so P(1/2) = (2, 6)), (4, 0, 1).
+    let poles = negative_weights_poles(-2.0, 3);
+    assert_eq!(
+        poles.samples,
+        vec![
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(-1.0, -3.0, -0.5),
+            DVec3::new(4.0, 0.0, 1.0)
+        ]
+    );
+    assert!(negative_weights_poles(-2.0, 0).samples.is_empty());
+}
+
+#[test]
+fn rational_poles_of_a_cubic_and_at_an_end() {
+    // w(t) = (t − 1/4)(t − 1/2)(t − 3/4) = t³ − 3t²/2 + 11t/16 − 3/32 in Bernstein form:
+    // b₀ = w(0) = −3/32, b₁ = w(0) + w'(0)/3 = 13/96, b₂ = w(1) − w'(1)/3 = −13/96, b₃ = 3/32.
+    let pts = [
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 2.0, 0.0),
+        DVec3::new(2.0, 2.0, 1.0),
+        DVec3::new(3.0, 0.0, 1.0),
+    ];
+    let weights = [-3.0 / 32.0, 13.0 / 96.0, -13.0 / 96.0, 3.0 / 32.0];
+    let poles = rational::rational_poles(&pts, &weights, 2).unwrap();
+    assert_eq!(poles.roots.len(), 3, "{:?}", poles.roots);
+    for (got, want) in poles.roots.iter().zip([0.25, 0.5, 0.75]) {
+        assert_close(*got, want, 1e-12, "cubic root");
+    }
+    assert!(poles
+        .directions
+        .iter()
+        .all(|d| (d.length() - 1.0).abs() < 1e-12));
+    assert_eq!(poles.samples.len(), 2);
+    // w₀ = 0: w(t) = 2t(1 − t) + t² = t(2 − t) is 0 at t = 0 only, where N(0) = w₀P₀ = 0.
+    let pts = pts2(&[(1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]);
+    let poles = rational::rational_poles(&pts, &[0.0, 1.0, 1.0], 2).unwrap();
+    assert_eq!(poles.roots, vec![0.0]);
+    assert_eq!(poles.directions, vec![DVec2::ZERO]);
+}
+
+#[test]
+fn rational_poles_validates_its_input() {
+    let pts = pts2(&[(0.0, 0.0), (2.0, 3.0), (4.0, 0.0)]);
+    let err = rational::rational_poles(&pts, &[0.0, 0.0, 0.0], 3).unwrap_err();
+    assert_eq!(err, splinelab::Error::AllWeightsZero { count: 3 });
+    assert!(err.to_string().contains("all 3 weights are 0"));
+    assert!(rational::rational_poles(&pts[..1], &[1.0], 3).is_err());
+    assert!(rational::rational_poles(&pts, &[1.0, 1.0], 3).is_err());
+    assert!(rational::rational_poles(&pts, &[1.0, f64::NAN, 1.0], 3).is_err());
+    assert!(rational::rational_poles(&pts, &[1.0, -1.0, 1.0], usize::MAX).is_err());
+    let bad = pts2(&[(0.0, 0.0), (f64::INFINITY, 3.0), (4.0, 0.0)]);
+    assert!(rational::rational_poles(&bad, &[1.0, -1.0, 1.0], 3).is_err());
+}

@@ -2,8 +2,8 @@
 //! `C(x) = [x^p … x 1] M [P_{k−p} … P_k]^T` (the Croatian notes, syllabus §3).
 
 use super::BSplineCurve;
-use crate::error::{Error, Result};
-use crate::geom::Cartesian;
+use crate::error::{check_finite, Error, Result};
+use crate::geom::{Cartesian, Point};
 
 /// Coefficients (ascending powers) of the `p + 1` basis functions `N_{k−p,p} … N_{k,p}` on the
 /// span `k`, as polynomials in `x` where `u = offset + scale·x`, by running the Cox–de Boor
@@ -78,6 +78,63 @@ impl<C: Cartesian> BSplineCurve<C> {
             (0.0, 1.0)
         };
         Ok(as_matrix(&span_polynomials(knots, p, k, offset, scale), p))
+    }
+}
+
+/// The matrix form of one segment evaluated at a local `t`: what the lecture view writes out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MatrixFormPoint<C> {
+    /// The monomial row `[t^p … t 1]`.
+    pub monomials: Vec<f64>,
+    /// `[t^p … t 1] M`: the weight of each active point `P_{k−p+j}`, `j = 0..=p` (these are
+    /// the basis values `N_{k−p+j,p}(u)` at `u = u_k + (u_{k+1} − u_k) t`).
+    pub basis: Vec<f64>,
+    /// `[t^p … t 1] M [P_{k−p} … P_k]^T` (on the homogeneous points, projected, for a rational
+    /// curve).
+    pub point: C,
+}
+
+impl<C: Cartesian> BSplineCurve<C> {
+    /// The segment on span `k` in matrix form at the local parameter `t ∈ [0, 1]`
+    /// (`u = u_k + (u_{k+1} − u_k) t`): the monomials `[t^p … 1]`, the row `[t^p … 1] M` with
+    /// `M` = [`BSplineCurve::segment_matrix`]`(k, true)`, and the point
+    /// `C(u) = Σ_j ([t^p … 1] M)_j P_{k−p+j}`.
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] for a NaN or infinite `t`, [`Error::ParameterOutOfRange`] outside
+    /// `[0, 1]`, and the errors of `segment_matrix` for a bad `k`.
+    pub fn evaluate_matrix_form(&self, k: usize, t: f64) -> Result<MatrixFormPoint<C>> {
+        check_finite(|| "t".into(), t)?;
+        if !(0.0..=1.0).contains(&t) {
+            return Err(Error::ParameterOutOfRange {
+                name: "t",
+                value: t,
+                min: 0.0,
+                max: 1.0,
+            });
+        }
+        let m = self.segment_matrix(k, true)?;
+        let p = self.degree();
+        let monomials: Vec<f64> = (0..=p).map(|r| t.powi((p - r) as i32)).collect();
+        let basis: Vec<f64> = (0..=p)
+            .map(|j| {
+                monomials
+                    .iter()
+                    .zip(&m)
+                    .fold(0.0, |acc, (x, row)| acc + x * row[j])
+            })
+            .collect();
+        let h = basis
+            .iter()
+            .enumerate()
+            .fold(C::Homogeneous::ZERO, |acc, (j, &b)| {
+                acc + self.homogeneous[k - p + j] * b
+            });
+        Ok(MatrixFormPoint {
+            monomials,
+            basis,
+            point: self.project(h),
+        })
     }
 }
 

@@ -30,7 +30,7 @@ pub use de_boor::{de_boor_alpha, de_boor_alphas, de_boor_triangle, DeBoorAlpha};
 pub(crate) use insert::check_insertion;
 pub use insert::{boehm_alpha, boehm_alphas, boehm_insert, KnotContinuity};
 pub use knots::KnotVector;
-pub use matrix::uniform_segment_matrix;
+pub use matrix::{uniform_segment_matrix, MatrixFormPoint};
 
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{

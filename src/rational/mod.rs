@@ -9,8 +9,12 @@
 
 mod basis;
 mod conics;
+mod poles;
 mod projective;
 
 pub use basis::rational_basis;
 pub use conics::{circle_arc_from_triangle, conic_kind, ellipse_arc, ConicKind, MAX_ARC_PIECE};
+pub use poles::{
+    rational_poles, RationalPoles, MAX_ROOT_DEPTH, MAX_ROOT_INTERVALS, ROOT_MERGE_DISTANCE,
+};
 pub use projective::{projective_map_bezier, projective_map_bspline};

@@ -383,6 +383,21 @@ impl JsBSplineCurve {
         Ok(m.concat())
     }
 
+    /// The segment of span k in matrix form at the local t ∈ [0, 1], flat: the monomials
+    /// `[t^p … t 1]` (p + 1), the row `[t^p … 1] M` with M = segmentMatrix(k, true) (p + 1, the
+    /// weights of P_{k−p} … P_k), then the point `[t^p … 1] M [P_{k−p} … P_k]^T` (dim).
+    #[wasm_bindgen(js_name = evaluateMatrixForm)]
+    pub fn evaluate_matrix_form(&self, k: f64, t: f64) -> Result<Vec<f64>, JsError> {
+        let k = whole("k", k)?;
+        Ok(with_curve!(&self.inner, c => {
+            let form = c.evaluate_matrix_form(k, t)?;
+            let mut out = form.monomials;
+            out.extend_from_slice(&form.basis);
+            out.extend(flatten_points(&[form.point]));
+            out
+        }))
+    }
+
     /// Moves control point i in place (a closed curve's repeated copy follows).
     #[wasm_bindgen(js_name = setControlPoint)]
     pub fn set_control_point(

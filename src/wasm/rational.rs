@@ -1,9 +1,11 @@
 //! Conics, circles, ellipses and projective maps for JavaScript.
 
+use super::bezier::flatten_points;
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
-use super::numbers;
+use super::{numbers, whole};
 use crate::error::{Error, Num};
+use crate::geom::{check_dim, points_from_flat};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
 use wasm_bindgen::prelude::*;
@@ -187,4 +189,61 @@ impl JsBSplineCurve {
             &m,
         )?))
     }
+}
+
+/// `rationalPoles(points, dim, weights, count)`: a TEACHING function for the negative-weights
+/// demo, not a curve constructor — it accepts weights of any sign (curves refuse weights <= 0)
+/// and builds no curve. For the rational Bézier `P(t) = Σ B_i w_i P_i / Σ B_i w_i` it returns
+/// `{ samples, roots, directions }` (Float64Arrays): the homogeneous points `(x·w, y·w, (z·w,) w)`
+/// at `count` equally spaced t in [0, 1], not divided; the t where `w(t) = Σ w_i B_i(t)` is 0,
+/// ascending; and per root the unit direction (dim numbers) of `Σ B_i w_i P_i` there, along
+/// which P(t) runs off to infinity (zeros when that numerator vanishes too).
+#[wasm_bindgen(
+    js_name = rationalPoles,
+    unchecked_return_type = "{ samples: Float64Array; roots: Float64Array; directions: Float64Array }"
+)]
+pub fn rational_poles(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
+    dim: f64,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] weights: JsValue,
+    count: f64,
+) -> Result<JsValue, JsError> {
+    let points = &*numbers("points", &points)?;
+    let weights = &*numbers("weights", &weights)?;
+    let dim = whole("dim", dim)?;
+    let count = whole("count", count)?;
+    let (samples, roots, directions) = match check_dim(dim)? {
+        2 => {
+            let poles =
+                rational::rational_poles::<DVec2>(&points_from_flat(points)?, weights, count)?;
+            (
+                flatten_points(&poles.samples),
+                poles.roots,
+                flatten_points(&poles.directions),
+            )
+        }
+        _ => {
+            let poles =
+                rational::rational_poles::<DVec3>(&points_from_flat(points)?, weights, count)?;
+            (
+                flatten_points(&poles.samples),
+                poles.roots,
+                flatten_points(&poles.directions),
+            )
+        }
+    };
+    let object = js_sys::Object::new();
+    for (key, values) in [
+        ("samples", &samples),
+        ("roots", &roots),
+        ("directions", &directions),
+    ] {
+        js_sys::Reflect::set(
+            &object,
+            &JsValue::from_str(key),
+            &js_sys::Float64Array::from(&values[..]).into(),
+        )
+        .map_err(|_| JsError::new("could not build the result object"))?;
+    }
+    Ok(object.into())
 }

@@ -4,8 +4,8 @@
  * with its p + 1 active points is highlighted, and the formula panel writes the segment as
  * [t^p … t 1] M [P_{i−1} … P_{i+p−1}]^T with M from the core (`segmentMatrix(k, true)`, compared
  * with `uniformSegmentMatrix(p)`), the current coordinates filled in. The point at t is shown
- * twice: as the matrix product of those displayed numbers and as `evaluate(u)` from the core,
- * so students see they agree. The curve itself is drawn from the core (`sampleUniform`, `sample`).
+ * twice: as the matrix product of those displayed numbers (the core's `evaluateMatrixForm(k, t)`:
+ * the monomials, [t^p … 1] M and the product) and as `evaluate(u)`, so students see they agree. The curve itself is drawn from the core (`sampleUniform`, `sample`).
  */
 import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
@@ -119,7 +119,7 @@ export function mount(container, initialState, ctx) {
   let periodic = null; // sl.uniformSegmentMatrix(p)
   let evaluated = null; // curve.evaluate(u)
   let tangent = null; // curve.derivative(u, 1): the label goes beside the curve, not along it
-  const product = new Float64Array(2); // [t^p … 1] M [P…] from the displayed numbers
+  let matrixForm = null; // curve.evaluateMatrixForm(k, t): [t^p … 1], [t^p … 1] M, the product
   let geometryDirty = true;
   let segmentDirty = true;
   let pointLabel = ""; // "C₂(t)", rebuilt when the segment changes
@@ -331,6 +331,7 @@ export function mount(container, initialState, ctx) {
       for (let s = 0; s < SEGMENT_SAMPLES; s++) segmentUs[s] = u0 + ((u1 - u0) * s) / (SEGMENT_SAMPLES - 1);
       segmentSamples = curve.sample(segmentUs);
       matrix = curve.segmentMatrix(k, true);
+      matrixForm = curve.evaluateMatrixForm(k, work.t);
       periodic = sl.uniformSegmentMatrix(p);
       evaluated = curve.evaluate(u0 + work.t * (u1 - u0));
       tangent = curve.derivative(u0 + work.t * (u1 - u0), 1);
@@ -419,22 +420,11 @@ export function mount(container, initialState, ctx) {
     addButton.disabled = n + 1 >= MAX_POINTS;
     removeButton.disabled = n + 1 <= Math.max(MIN_POINTS, p + 1);
 
-    // The matrix product [t^p … 1] M [P_{i−1} … P_{i+p−1}]^T of the numbers shown (display of the
-    // formula's numbers; the curve and evaluate(u) come from the core).
-    const powers = [];
-    for (let e = p; e >= 0; e--) powers.push(work.t ** e);
-    const weights = [];
-    for (let j = 0; j < size; j++) {
-      let w = 0;
-      for (let row = 0; row < size; row++) w += powers[row] * matrix[row * size + j];
-      weights.push(w);
-    }
-    product[0] = 0;
-    product[1] = 0;
-    for (let j = 0; j < size; j++) {
-      product[0] += weights[j] * pts[first + j][0];
-      product[1] += weights[j] * pts[first + j][1];
-    }
+    // The matrix product [t^p … 1] M [P_{i−1} … P_{i+p−1}]^T of the numbers shown, from the core:
+    // the monomials, their row times M (one weight per active point) and the point.
+    const powers = Array.from(matrixForm.subarray(0, size));
+    const weights = Array.from(matrixForm.subarray(size, 2 * size));
+    const product = matrixForm.subarray(2 * size, 2 * size + 2);
 
     // Matrix text: a cubic with a common denominator D is written (1/D)·integers, as in the notes.
     const entries = Array.from(matrix);

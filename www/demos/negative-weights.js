@@ -2,14 +2,14 @@
  * Demo (syllabus §4): why the library refuses weights ≤ 0. A rational quadratic with weights
  * 1, w₁, 1 where the slider lets w₁ pass through zero. For w₁ > 0 the curve is the core's
  * `BezierCurve`. For w₁ ≤ 0 the constructor throws, and the demo shows its exact message; it
- * then draws what the curve *would* be: the homogeneous curve is an ordinary polynomial curve
- * in (wx, wy, w) space — a 3D `BezierCurve` on the points (wᵢxᵢ, wᵢyᵢ, wᵢ), which the core
- * accepts as plain coordinates — sampled by the core and divided by w here (the central
- * projection, display only). Where w(t) changes sign the point runs off to infinity (a pole):
- * the drawn path breaks there, and the plot underneath shows w(t) = Σ Bᵢ(t) wᵢ crossing zero.
+ * then draws what the curve *would* be from the core's teaching function `rationalPoles`
+ * (weights of any sign, no curve object): the homogeneous samples (wx, wy, w), divided by w
+ * here (the central projection, display only), and the t where w(t) = Σ Bᵢ(t) wᵢ is zero.
+ * There the point runs off to infinity (a pole): the drawn path breaks, and the plot
+ * underneath shows w(t) crossing zero at the core's roots.
  *
- * Drags update both curves in place (`setControlPoint`), one `sampleUniform` per change; the
- * draw path allocates nothing (clipping uses scratch arrays).
+ * Drags update the curve in place (`setControlPoint`) and ask `rationalPoles` once per change;
+ * the draw path allocates nothing (clipping uses scratch arrays).
  */
 import { Handles } from "../lib/handles.js";
 import { FormulaPanel } from "../lib/formula.js";
@@ -49,10 +49,8 @@ const FIT_REACH = 1.2;
 /** Samples: the real curve, and the homogeneous curve (dense: the projection races near a pole). */
 const CURVE_SAMPLES = 256;
 const HOM_SAMPLES = 1201;
-/** |w| below this counts as zero (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
+/** |w| below this counts as zero when projecting (a pole exactly on a sample, e.g. w₁ = −1 at t = 1/2). */
 const ZERO_W = 1e-12;
-/** At most this many poles are recorded (a quadratic has two at most). */
-const MAX_POLES = 4;
 /** At most this many "to infinity" marks are drawn where the path leaves the figure. */
 const MAX_EXITS = 8;
 /** A sample this far (model units, relative to the triangle) outside the hull counts as outside. */
@@ -86,18 +84,6 @@ export function validate(state) {
   checkNumber(state, "w1", { min: W1_MIN, max: W1_MAX });
 }
 
-/** The homogeneous points (wᵢxᵢ, wᵢyᵢ, wᵢ) with weights 1, w₁, 1: plain 3D coordinates. */
-function homogeneousOf(points, w1) {
-  const flat = new Float64Array(9);
-  points.forEach(([x, y], i) => {
-    const w = i === 1 ? w1 : 1;
-    flat[3 * i] = w * x;
-    flat[3 * i + 1] = w * y;
-    flat[3 * i + 2] = w;
-  });
-  return flat;
-}
-
 /** The weights 1, w₁, 1. */
 function weightsOf(w1) {
   return new Float64Array([1, w1, 1]);
@@ -110,8 +96,6 @@ function weightsOf(w1) {
 export function mount(container, initialState, ctx) {
   const { sl } = ctx;
   let work = structuredClone(initialState);
-  /** The 3D polynomial curve on the homogeneous points (always valid). */
-  let homogeneous = new sl.BezierCurve(homogeneousOf(work.points, work.w1), 3);
   /** The rational curve: built while w₁ > 0, kept (and updated in place) afterwards. */
   let curve = null;
   /** The library's refusal of the current weights, or "" when it accepts them. */
@@ -121,17 +105,17 @@ export function mount(container, initialState, ctx) {
 
   // Derived data, recomputed when the points or w₁ changed.
   let samples = null; // curve.sampleUniform (w₁ > 0)
-  let hom = null; // homogeneous.sampleUniform(HOM_SAMPLES): X, Y, W
+  let hom = null; // sl.rationalPoles(…).samples: X, Y, W at HOM_SAMPLES t
   let minW = 0;
   let maxW = 1;
   let poleCount = 0;
-  const poles = new Float64Array(MAX_POLES); // t of each pole
+  let poles = null; // sl.rationalPoles(…).roots: t of each pole
+  let poleDirections = null; // sl.rationalPoles(…).directions: unit (x, y) per pole
   const poleLabels = [];
   let outsideHull = false;
   let middle = null; // P(1/2) from the homogeneous curve, divided (NaN at a pole)
   let dirty = true;
   const pointScratch = new Float64Array(2);
-  const homScratch = new Float64Array(3);
   const clipScratch = new Float64Array(4);
   const exits = new Float64Array(2 * MAX_EXITS);
   let exitCount = 0;
@@ -156,7 +140,6 @@ export function mount(container, initialState, ctx) {
       pointScratch[0] = x;
       pointScratch[1] = y;
       curve?.setControlPoint(i, pointScratch); // in place: no rebuild while dragging
-      setHomogeneousPoint(i);
       dirty = true;
     },
     commit: (kind, i, merge) => ctx.commit(work, merge),
@@ -227,15 +210,6 @@ export function mount(container, initialState, ctx) {
 
   // ------------------------------------------------------------ edits
 
-  /** Writes homogeneous point i of the current state into the 3D curve (in place). */
-  function setHomogeneousPoint(i) {
-    const w = i === 1 ? work.w1 : 1;
-    homScratch[0] = w * work.points[i][0];
-    homScratch[1] = w * work.points[i][1];
-    homScratch[2] = w;
-    homogeneous.setControlPoint(i, homScratch);
-  }
-
   /**
    * Asks the library for the rational curve of the current weights: with w₁ > 0 the curve is
    * made (or updated in place); otherwise the constructor's refusal is kept, word for word.
@@ -266,7 +240,6 @@ export function mount(container, initialState, ctx) {
   function setW1(value, final) {
     work.w1 = value;
     wSlider.set(value);
-    setHomogeneousPoint(1);
     ensureCurve();
     syncStatus();
     dirty = true;
@@ -278,24 +251,18 @@ export function mount(container, initialState, ctx) {
   function recompute() {
     if (!dirty) return;
     dirty = false;
-    hom = homogeneous.sampleUniform(HOM_SAMPLES);
+    const result = sl.rationalPoles(flatten(work.points), 2, weightsOf(work.w1), HOM_SAMPLES);
+    hom = result.samples;
+    poles = result.roots;
+    poleDirections = result.directions;
+    poleCount = poles.length;
     samples = refusal ? null : curve.sampleUniform(CURVE_SAMPLES);
-    // The poles: where the sampled w(t) is zero or changes sign (t interpolated linearly).
-    poleCount = 0;
+    // The plot's value range: the extremes of the sampled w(t).
     minW = Infinity;
     maxW = -Infinity;
     for (let k = 0; k < HOM_SAMPLES; k++) {
-      const w = hom[3 * k + 2];
-      minW = Math.min(minW, w);
-      maxW = Math.max(maxW, w);
-      if (k === HOM_SAMPLES - 1 || poleCount >= MAX_POLES) continue;
-      const next = hom[3 * k + 5];
-      const tk = k / (HOM_SAMPLES - 1);
-      if (Math.abs(w) <= ZERO_W) {
-        if (k === 0 || Math.abs(hom[3 * k - 1]) > ZERO_W) poles[poleCount++] = tk;
-      } else if (Math.abs(next) > ZERO_W && (w > 0) !== (next > 0)) {
-        poles[poleCount++] = tk + w / (w - next) / (HOM_SAMPLES - 1);
-      }
+      minW = Math.min(minW, hom[3 * k + 2]);
+      maxW = Math.max(maxW, hom[3 * k + 2]);
     }
     poleLabels.length = 0;
     for (let j = 0; j < poleCount; j++) poleLabels.push(t("negativeWeights.poleLabel", { t: fmt(poles[j]) }));
@@ -495,10 +462,11 @@ export function mount(container, initialState, ctx) {
 
     libraryText.textContent = refusal ? t("negativeWeights.libraryRefuses", { message: refusal }) : t("negativeWeights.libraryAccepts");
     libraryText.dataset.refused = String(!!refusal);
-    const list = Array.from(poles.subarray(0, poleCount), (p) => fmt(p)).join(", ");
+    const list = Array.from(poles, (p) => fmt(p)).join(", ");
     polesText.textContent = poleCount ? t(poleCount === 1 ? "negativeWeights.pole" : "negativeWeights.poles", { count: poleCount, list }) : t("negativeWeights.noPoles");
     polesText.dataset.poles = String(poleCount);
-    polesText.dataset.poleTs = Array.from(poles.subarray(0, poleCount)).join(",");
+    polesText.dataset.poleTs = Array.from(poles).join(",");
+    polesText.dataset.poleDirections = Array.from(poleDirections).join(",");
     polesText.dataset.minW = String(minW);
     hullText.textContent = t(outsideHull ? "negativeWeights.outside" : "negativeWeights.inside");
     hullText.dataset.outsideHull = String(outsideHull);
@@ -518,8 +486,8 @@ export function mount(container, initialState, ctx) {
     // Formula: the curve, its denominator, where that vanishes, the hull argument.
     const wTex = fmt(w1, 2);
     const product = 1 / (2 * (1 - w1)); // t(1 − t) at a zero of w(t)
-    const zeros = w1 <= -1
-      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm \\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(0.5 - Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)},\\ ${fmt(0.5 + Math.sqrt(Math.max(0, 1 - 4 * product)) / 2)}\\quad\\text{(poles)}`
+    const zeros = w1 <= -1 && poleCount > 0 // the values are the core's roots (a double one at w₁ = −1)
+      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm \\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(poles[0])},\\ ${fmt(poles[poleCount - 1])}\\quad\\text{(poles)}`
       : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad\\text{(no pole; } w(t) = 0 \\text{ needs } w_1 \\le -1\\text{)}`;
     formula.set([
       `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${wTex}`,
@@ -536,9 +504,7 @@ export function mount(container, initialState, ctx) {
   // ------------------------------------------------------------ contract
   return {
     update(state) {
-      const next = new sl.BezierCurve(homogeneousOf(state.points, state.w1), 3); // throws first
-      homogeneous.free();
-      homogeneous = next;
+      sl.rationalPoles(flatten(state.points), 2, weightsOf(state.w1), 2); // throws first
       curve?.free();
       curve = null;
       work = structuredClone(state);
@@ -553,7 +519,6 @@ export function mount(container, initialState, ctx) {
     destroy() {
       handles.destroy();
       formula.destroy();
-      homogeneous.free();
       curve?.free();
     },
   };
