@@ -128,19 +128,28 @@ export function checkbox(field, { label, name = field }) {
 }
 
 /**
- * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
- * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels.
+ * One choice out of a few, bound to a field: radio buttons (`data-control=name`, each row
+ * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels; values
+ * may be numbers (a degree), shown as text. `refuse(value, state)` → a message when the state
+ * cannot take the value (reported; the buttons show the field again), else null.
  */
-export function choice(field, { options, name = field }) {
+export function choice(field, { options, name = field, refuse = null }) {
   return {
     build(ui) {
       const control = radios({
-        options: options.map((option) => ({ value: option.value, label: t(option.label) })),
-        value: ui.state[field],
+        options: options.map((option) => ({ value: String(option.value), label: t(option.label) })),
+        value: String(ui.state[field]),
         name,
-        onChange: (value) => ui.set(field, value),
+        onChange: (text) => {
+          const value = options.find((option) => String(option.value) === text).value;
+          const refusal = refuse?.(value, ui.state);
+          if (refusal) {
+            ui.status(refusal, "error");
+            control.set(String(ui.state[field]));
+          } else ui.set(field, value);
+        },
       });
-      return { element: control.element, sync: (state) => control.set(state[field]) };
+      return { element: control.element, sync: (state) => control.set(String(state[field])) };
     },
   };
 }
