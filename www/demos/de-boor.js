@@ -15,7 +15,7 @@ import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
 import { fmt, subscript, superscript, degreeName, MAX_EXACT_DENOMINATOR } from "../lib/format.js";
 import { simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
-import { t } from "../lib/strings.js";
+import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { drawLevels, levelStart, LevelLabels, LegLabelPlacer } from "../lib/triangle.js";
@@ -321,7 +321,9 @@ export const controls = [
   ),
   group(
     null,
-    readout("degree", (s, d) => t("deBoor.degree", { p: s.degree, count: s.points.length, segments: d.spans })),
+    readout("degree", (s, d) => {
+      return t("deBoor.degree", { p: s.degree, count: s.points.length, segments: tp("deBoor.spans", d.spans) });
+    }),
     pointButtons("points", {
       min: MIN_POINTS,
       max: MAX_POINTS,

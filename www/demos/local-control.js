@@ -20,8 +20,9 @@ import { knotText } from "../lib/knot-ruler.js";
 import { placeLabel } from "../lib/handles.js";
 import { fmt, subscript, exactFraction, exactNumbers, degreeName } from "../lib/format.js";
 import { CYCLE, WIDTH, RADIUS, themed } from "../lib/theme.js";
-import { t } from "../lib/strings.js";
-import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
+import { t, tp } from "../lib/strings.js";
+import { boundsOf, convexHull } from "../lib/geometry.js";
+import { bsplineCurve, clampedKnots } from "../lib/bspline.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { titledTable } from "../lib/table.js";
 import { el, setText } from "../lib/controls.js";
@@ -90,10 +91,9 @@ export function adjust(s) {
 export const derive = {
   from: ["points", "degree"],
   build(s, sl) {
-    const knots = sl.knotVector(flatten(s.points), 2, s.degree, "clamped");
-    const marks = knotMarks(knots);
-    const curve = new sl.BSplineCurve(flatten(s.points), 2, s.degree, knots);
-    return { knots, marks, curve, domain: [0, domainEnd(s)] };
+    const knots = clampedKnots(sl, s.points, s.degree);
+    const curve = bsplineCurve(sl, { points: s.points, degree: s.degree, knots });
+    return { knots, marks: knotMarks(knots), curve, domain: [0, domainEnd(s)] };
   },
   moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
 };
@@ -160,7 +160,7 @@ export const controls = [
         wholeHullVertices: String(d.wholeHull.length),
       }),
     }),
-    readout("hull", (s, d) => t("localControl.readout.hull", { hull: d.at.hull.length })),
+    readout("hull", (s, d) => tp("localControl.readout.hull", d.at.hull.length)),
   ),
   group(
     null,
@@ -320,7 +320,7 @@ export function formula(s, d) {
   const approx = num.exact && inexact && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
   const [lo, hi] = d.support.range;
   const only = t("localControl.formula.only");
-  const vertices = t("localControl.formula.vertices");
+  const vertices = tp("localControl.formula.vertices", d.at.hull.length);
   const spanTex = `[${knotText(d.knots[k])}, ${knotText(d.knots[k + 1])})`;
   return [
     `u = ${num.param(true)} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},\\quad k = ${k},\\quad p = ${p}`,
@@ -339,7 +339,8 @@ export function label(s, d) {
   const { k, active, point, hull } = d.at;
   return t("localControl.aria", {
     kind: degreeName(s.degree), count: s.points.length, name: `P${subscript(s.point)}`, lo, hi,
-    u: fmt(s.u), k, names: names(active), x: fmt(point[0], 2), y: fmt(point[1], 2), hull: hull.length,
+    u: fmt(s.u), k, names: names(active), x: fmt(point[0], 2), y: fmt(point[1], 2),
+    hull: tp("localControl.vertices", hull.length),
   });
 }
 

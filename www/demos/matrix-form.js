@@ -14,7 +14,7 @@ import { placeLabel } from "../lib/handles.js";
 import { CurvePicker } from "../lib/curve-picker.js";
 import { fmt, subscript, simpleFraction, fractionText, fractionTex, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
-import { t } from "../lib/strings.js";
+import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -161,7 +161,7 @@ export const controls = [
   group(
     null,
     readout("degree", (s, d) => t("matrixForm.degree", {
-      p: s.degree, count: s.points.length, segments: segmentCount(s),
+      p: s.degree, count: s.points.length, segments: tp("matrixForm.segments", segmentCount(s)),
       knots: Array.from(d.knots, (u) => numberText(u)).join(" "),
     })),
     pointButtons("points", {
