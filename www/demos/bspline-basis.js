@@ -7,36 +7,33 @@
  * "lecture view" of the Italian notes); hovering a basis function (plot, table) or selecting a
  * control point highlights its support [u_i, u_{i+p+1}) in the plot and on the curve.
  *
- * Same habits as the reference demo (de-casteljau.js): the curve lives in wasm; a point drag
- * goes through `setControlPoint` (the basis does not change), a knot change rebuilds the curve
- * (the old one is freed); the plot comes from one `basisCurves(count)` call per knot change,
- * the curve from one `sampleUniform` per change, the values from `basis(u)` / `basisTable(u)`.
- * The draw path allocates nothing.
+ * A point drag goes through `setControlPoint` (the basis does not change), a knot change
+ * rebuilds the curve; the plot comes from one `basisCurves(count)` call per knot change, the
+ * values from `basis(u)` / `basisTable(u)`.
  *
  * Keeping the knot vector valid: changing the degree or the number of control points replaces
  * the knots by the clamped uniform vector of the core (`knotVector(points, 2, p, "clamped")`:
  * p + 1 zeros, 1 … n − p, p + 1 copies of n − p + 1), and u is clamped into the new domain.
  */
-import { Handles, pointHandles, placeLabelAway } from "../lib/handles.js";
-import { KnotRuler, raiseMultiplicity, lowerMultiplicity, knotText } from "../lib/knot-ruler.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, group, el, radios, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkNumbers } from "../lib/validate.js";
+import { field, checkNumber } from "../lib/validate.js";
+import { slider, pointButtons, readout, group } from "../lib/panel.js";
+import { knotRuler, knotText } from "../lib/knot-ruler.js";
+import { knotsField, parameterField, bsplineCurve, withClampedKnots, domainOf, clampInto } from "../lib/bspline.js";
+import { replaceOrReport } from "../lib/wasm.js";
+import { BasisPlotPointer, drawGraph, drawPlotFrame, legendRow } from "../lib/basis-plot.js";
+import { placeLabelAway } from "../lib/handles.js";
+import { radios, el, setText } from "../lib/controls.js";
 import { fmt, subscript, superscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
+import { boundsOf, nearestGraph } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
-import { BasisPlotPointer, drawGraph } from "../lib/basis-plot.js";
+import { BasisTriangleTable } from "../lib/basis-triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
-import { buildOrReport } from "../lib/wasm.js";
 
 export const id = "bspline-basis";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "bsplineBasis";
-export const title = t("bsplineBasis.title");
-export const summary = t("bsplineBasis.summary");
 /** Syllabus section. */
 export const section = 3;
 
@@ -68,9 +65,6 @@ const PLOT_FRACTION = 0.27;
 const PLOT_MIN_PX = 120;
 /** Margins of the plot frame inside its strip, CSS px at scale 1 (labels live there). */
 const PLOT_MARGIN = Object.freeze({ top: 38, bottom: 8 });
-/** Left and right ends of the plot axis and of the knot ruler, CSS px at scale 1. */
-const AXIS_LEFT = 40;
-const AXIS_RIGHT = 34;
 /** A pointer this close (CSS px, vertically) to a basis curve highlights it. */
 const PLOT_HOVER_PX = 14;
 /** Pressing in the plot snaps u to a knot this close (CSS px). */
@@ -82,24 +76,158 @@ const NAME_LABELS_MAX = 10;
 /** Fill opacity of the highlighted support in the plot. */
 const SUPPORT_ALPHA = 0.14;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "degree", "knots", "u"]);
-  checkPoints(state, "points", { min: MIN_POINTS, max: MAX_POINTS });
-  checkNumber(state, "degree", { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
-  const count = state.points.length;
-  const p = state.degree;
-  if (count < p + 1) throw new Error(t("bsplineBasis.fewPoints", { p, need: p + 1, count }));
-  checkNumbers(state, "knots");
-  const need = count + p + 1;
-  if (state.knots.length !== need) throw new Error(t("bsplineBasis.knotCount", { count, p, need, got: state.knots.length }));
-  for (let i = 1; i < need; i++) {
-    if (state.knots[i] < state.knots[i - 1]) throw new Error(t("bsplineBasis.knotOrder", { i: i - 1, a: state.knots[i - 1], j: i, b: state.knots[i] }));
+export const fields = {
+  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  degree(s, name) {
+    checkNumber(s, name, { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
+    const count = s.points.length;
+    if (count < s.degree + 1) throw new Error(t("bsplineBasis.fewPoints", { p: s.degree, need: s.degree + 1, count }));
+  },
+  knots: knotsField(),
+  u: parameterField({ error: "bsplineBasis.uRange" }),
+};
+
+/** The curve, in wasm; a dragged point moves it in place (the basis does not change). */
+export const derive = {
+  from: ["points", "degree", "knots"],
+  build: (s, sl) => ({ curve: bsplineCurve(sl, s) }),
+  moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
+};
+
+/** Sample index of each N_i's maximum (where its name goes). */
+function peaks(basis, count) {
+  const peak = new Int32Array(count);
+  for (let i = 0; i < count; i++) {
+    for (let k = 1; k < SAMPLES; k++) if (basis[i * SAMPLES + k] > basis[i * SAMPLES + peak[i]]) peak[i] = k;
   }
-  checkNumber(state, "u");
-  const a = state.knots[p];
-  const b = state.knots[count];
-  if (state.u < a || state.u > b) throw new Error(t("bsplineBasis.uRange", { a, b, u: state.u }));
+  return peak;
+}
+
+const BASIS = ["degree", "knots"];
+/** What the core returns: every N_{i,p} sampled, the continuity, the curve, the values at u. */
+export const compute = {
+  basis: [BASIS, (s, d) => d.curve.basisCurves(SAMPLES)], // i-major: every N_{i,p} at SAMPLES u values
+  peaks: [BASIS, (s, d) => peaks(d.basis, s.points.length)],
+  continuity: [BASIS, (s, d) => d.curve.knotContinuity()],
+  domain: [BASIS, (s, d) => d.curve.domain()],
+  samples: [["points", ...BASIS], (s, d) => d.curve.sampleUniform(SAMPLES)],
+  point: [["points", ...BASIS, "u"], (s, d) => d.curve.evaluate(s.u)],
+  values: [[...BASIS, "u"], (s, d) => d.curve.basis(s.u)],
+  sum: [[...BASIS, "u"], (s, d) => d.values.reduce((sum, value) => sum + value, 0)], // partition of unity: 1
+  table: [[...BASIS, "u"], (s, d) => d.curve.basisTable(s.u)], // { span, levels }
+  marker: [["u"], (s) => {
+    const f = simpleFraction(s.u);
+    return t("bsplineBasis.marker", { u: f && f.den > 1 ? fractionText(f) : knotText(s.u) });
+  }],
+};
+
+/** The degree buttons: 1 … 5, those above n disabled; a new degree gets clamped uniform knots. */
+const degreeButtons = {
+  build(ui) {
+    const options = [];
+    for (let p = MIN_DEGREE; p <= MAX_DEGREE; p++) {
+      options.push({ value: String(p), label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }) });
+    }
+    const control = radios({
+      name: "degree",
+      value: String(ui.state.degree),
+      options,
+      onChange(value) {
+        const p = Number(value);
+        const s = ui.state;
+        if (p === s.degree) return;
+        if (s.points.length < p + 1) ui.status(t("bsplineBasis.minPoints", { min: p + 1, degree: p }), "error");
+        else replaceOrReport(ui, withClampedKnots(ui.sl, { ...s, degree: p }));
+        control.set(String(ui.state.degree));
+      },
+    });
+    control.element.classList.add("sl-button-row");
+    return {
+      element: control.element,
+      sync(s) {
+        control.set(String(s.degree));
+        for (const input of control.inputs) input.disabled = Number(input.value) > s.points.length - 1;
+      },
+    };
+  },
+};
+
+/** u clamped into the domain, snapped to a knot within KNOT_SNAP_PX on the ruler, else to the slider's step. */
+function snapToKnot(s, d, u) {
+  const [a, b] = d.domain;
+  const clamped = clampInto(u, d.domain);
+  for (const knot of s.knots) {
+    if (knot >= a && knot <= b && Math.abs(d.ruler.px(knot) - d.ruler.px(clamped)) <= KNOT_SNAP_PX) return knot;
+  }
+  const step = (b - a) * U_SLIDER_RESOLUTION;
+  return clampInto(a + Math.round((clamped - a) / step) * step, d.domain);
+}
+
+export const controls = [
+  knotRuler("knots", {
+    refused: (error, i, s) => t(`bsplineBasis.multiplicity.${error}`, { i: subscript(i), max: s.degree + 1 }),
+    pick: (ui, u, final) => ui.set("u", snapToKnot(ui.state, ui.data, u), final),
+  }),
+  group("bsplineBasis.degreeLegend", degreeButtons),
+  group(
+    null,
+    slider("u", {
+      label: "bsplineBasis.control.u",
+      range: (s) => domainOf(s.knots, s.degree),
+      step: (a, b) => (b - a) * U_SLIDER_RESOLUTION,
+    }),
+    readout("sum", (s, d) => t("bsplineBasis.sumNote", { u: knotText(s.u), sum: fmt(d.sum) }), { kind: "readout" }),
+  ),
+  group(
+    null,
+    readout("count", (s) => {
+      const m = s.knots.length - 1;
+      return t("bsplineBasis.knotNote", { count: s.points.length, p: s.degree, m: m + 1, last: subscript(m) });
+    }),
+    pointButtons("points", {
+      min: (s) => Math.max(MIN_POINTS, s.degree + 1),
+      max: MAX_POINTS,
+      prefix: strings,
+      adjust: (s, ui) => withClampedKnots(ui.sl, s),
+      more: [{
+        name: "reset-knots",
+        label: "bsplineBasis.resetKnots",
+        title: "bsplineBasis.resetKnots.title",
+        run: (ui) => replaceOrReport(ui, withClampedKnots(ui.sl, ui.state)),
+      }],
+    }),
+    readout("ruler-help", () => t("bsplineBasis.rulerHelp")),
+  ),
+];
+
+/** Scratch of the figure's insets (read at once by the view). */
+const PLOT_INSETS = [0, 0, 0, 0];
+
+function plotHeight(height) {
+  return Math.max(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION));
+}
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  /** The plot's strip below the world window (the ruler's band is added under it). */
+  insets: (width, height) => {
+    PLOT_INSETS[2] = plotHeight(height);
+    return PLOT_INSETS;
+  },
+  handles: { field: "points" },
+};
+
+/** Lays out the ruler and the plot frame `d.plot` for a canvas of width × height CSS px at text scale `scale`. */
+function layoutBands(d, width, height, scale) {
+  const { plot, ruler } = d;
+  ruler.atBottom(width, height, scale);
+  const rulerTop = height - ruler.height(scale);
+  plot.bottom = rulerTop;
+  plot.top = rulerTop - plotHeight(height);
+  plot.x0 = ruler.px(d.domain[0]);
+  plot.x1 = ruler.px(d.domain[1]);
+  plot.y0 = rulerTop - PLOT_MARGIN.bottom * scale; // value 0 (y down on screen)
+  plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value 1
 }
 
 /** Styles of the plot that the theme does not have, made once per theme. */
@@ -113,643 +241,173 @@ function supportFill(theme) {
   return list;
 }
 
-/**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
- */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let curve = build(work);
+/** "N₃,₂" (cached per degree and index). */
+const basisNames = [];
+function basisName(p, i) {
+  return (basisNames[p * (MAX_POINTS + 1) + i] ??= `N${subscript(i)},${subscript(p)}`);
+}
 
-  // Derived data, recomputed only when the knots, the geometry or u changed.
-  let samples = null; // curve.sampleUniform(SAMPLES)
-  let basis = null; // curve.basisCurves(SAMPLES), i-major
-  let continuity = null; // curve.knotContinuity()
-  let domain = null; // curve.domain()
-  let values = null; // curve.basis(u)
-  let table = null; // curve.basisTable(u): { span, levels }
-  let point = null; // curve.evaluate(u)
-  let knotsDirty = true;
-  let geometryDirty = true;
-  let uDirty = true;
-  const peakK = new Int32Array(MAX_POINTS); // sample index of each N_i's maximum (label placement)
-  const insetScratch = [0, 0, 0, 0];
-  const plot = { x0: 0, x1: 0, y0: 0, y1: 0, top: 0, bottom: 0 }; // frame (CSS px), strip top/bottom
-  const basisNames = []; // "N₀,₂" … per (p, i)
-  let markerLabel = ""; // "u = 2.5", rebuilt when u changes
+/** The curve (with the highlighted support), the plot of the basis with the marker at u, the ruler. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const pts = s.points;
+  const n = pts.length - 1;
+  const p = s.degree;
+  const hi = highlighted(s, d);
+  const cycle = theme.basisStroke.length;
+  const knots = s.knots;
+  const u0 = d.domain[0];
+  const u1 = d.domain[1];
+  const sampleU = (k) => u0 + (k / (SAMPLES - 1)) * (u1 - u0);
 
-  // What is highlighted: a basis curve under the pointer in the plot, a table row, or a handle.
-  let shownHighlight = -2; // the highlight the panels show (-2: not yet synced)
-
-  // ------------------------------------------------------------ figure
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets });
-  // A taller figure than the default 16:10: the curve, the plot and the ruler share it.
-  ctx.slots.figure.style.aspectRatio = "1 / 1";
-
-  // The plot claims its frame before the handles see the pointer: press or drag there to set u.
-  const plotPointer = new BasisPlotPointer(view, {
-    inPlot,
-    graphAt: basisAt,
-    pick: (x, final) => setU(uAtPixel(x), final),
-    enter: () => handles.leave(),
-  });
-
-  // The knot ruler, before the handles: its band is its own.
-  const ruler = new KnotRuler(view, {
-    knots: () => work.knots,
-    degree: () => work.degree,
-    continuity: () => continuity,
-    move: (i, u) => moveKnot(i, u),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    raise: (i) => changeMultiplicity(i, raiseMultiplicity(work.knots, i, work.degree)),
-    lower: (i) => changeMultiplicity(i, lowerMultiplicity(work.knots, i)),
-    pick: (u, final) => setU(snapToKnot(u), final),
-  });
-
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      curve.setControlPoint(i, xy); // in place: the basis does not change
-      geometryDirty = true;
-    }),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
-    select: (i) => i >= 0 && ruler.select(-1),
-  });
-  ruler.source.handles = handles;
-
-  /** The canvas strips below the world window: [top, right, bottom, left] (scratch, no allocation). */
-  function insets(width, height) {
-    insetScratch[2] = plotHeight(height) + ruler.height(view.renderer.scale);
-    return insetScratch;
+  // ---- the curve area (world window, above the plot)
+  pointsPath(r, v, pts, 0, n + 1);
+  r.paint(theme.polygon);
+  // The highlighted function's support [u_i, u_{i+p+1}) on the curve: a band in its colour.
+  if (hi >= 0) {
+    let k0 = 0;
+    while (k0 < SAMPLES && sampleU(k0) < knots[hi]) k0++;
+    let k1 = k0;
+    while (k1 < SAMPLES && sampleU(k1) <= knots[hi + p + 1]) k1++;
+    flatPath(r, v, d.samples, k0, k1);
+    r.paint(theme.basisBand[hi % cycle]);
   }
+  flatPath(r, v, d.samples, 0, SAMPLES);
+  r.paint(theme.curve);
+  // Every control point ringed in its basis function's colour.
+  for (let i = 0; i <= n; i++) r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
+  d.handles.draw(r, v);
+  const pointX = v.sx(d.point[0]);
+  const pointY = v.sy(d.point[1]);
+  r.point(pointX, pointY, theme.pointOnCurve);
+  const radius = theme.pointOnCurve.radius * r.scale;
+  placeLabelAway(r, v, pts, t("bsplineBasis.pointLabel"), pointX, pointY, theme.labelPoint, radius);
 
-  function plotHeight(height) {
-    return Math.max(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION));
-  }
-
-  /** Lays out the ruler and the plot frame for a canvas of width × height CSS px at text scale `scale`. */
-  function layoutBands(width, height, scale) {
-    const rulerTop = height - ruler.height(scale);
-    ruler.layout(AXIS_LEFT * scale, width - AXIS_RIGHT * scale, rulerTop, scale);
-    plot.bottom = rulerTop;
-    plot.top = rulerTop - plotHeight(height);
-    plot.x0 = ruler.px(domain[0]);
-    plot.x1 = ruler.px(domain[1]);
-    plot.y0 = rulerTop - PLOT_MARGIN.bottom * scale; // value 0 (y down on screen)
-    plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value 1
-  }
-
+  // ---- the plot strip and the ruler (screen space, below the world window)
+  const { plot, ruler } = d;
+  const sc = r.scale;
+  layoutBands(d, r.width, r.height, sc);
   const py = (value) => plot.y0 - value * (plot.y0 - plot.y1);
-  /** u of basis/curve sample k. */
-  const sampleU = (k) => domain[0] + (k / (SAMPLES - 1)) * (domain[1] - domain[0]);
-
-  function inPlot(x, y) {
-    if (!domain) return false;
-    layoutBands(view.width, view.height, view.renderer.scale);
-    return x >= plot.x0 - KNOT_SNAP_PX && x <= plot.x1 + KNOT_SNAP_PX && y >= plot.top && y < plot.bottom;
-  }
-
-  /** u under canvas x in the plot (clamped to the domain, snapped to a knot nearby). */
-  function uAtPixel(x) {
-    layoutBands(view.width, view.height, view.renderer.scale);
-    return snapToKnot(ruler.uAt(x));
-  }
-
-  /** Clamps u into the domain, snaps it to a knot within KNOT_SNAP_PX, else to the slider's step. */
-  function snapToKnot(u) {
-    const [a, b] = domain;
-    const clamped = Math.min(b, Math.max(a, u));
-    for (const knot of work.knots) {
-      if (knot >= a && knot <= b && Math.abs(ruler.px(knot) - ruler.px(clamped)) <= KNOT_SNAP_PX) return knot;
-    }
-    const step = (b - a) * U_SLIDER_RESOLUTION;
-    return Math.min(b, Math.max(a, a + Math.round((clamped - a) / step) * step));
-  }
-
-  /** The basis function whose graph passes nearest (vertically) to canvas point (x, y), or -1. */
-  function basisAt(x, y) {
-    if (!basis) return -1;
-    const raw = Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
-    return nearestGraph(basis, work.points.length, SAMPLES, Math.round(raw * (SAMPLES - 1)), y, py, PLOT_HOVER_PX);
-  }
-
-
-  // ------------------------------------------------------------ side panel
-  const degreeRadios = radios({
-    name: "degree",
-    value: String(work.degree),
-    options: Array.from({ length: MAX_DEGREE - MIN_DEGREE + 1 }, (_, k) => {
-      const p = MIN_DEGREE + k;
-      return { value: String(p), label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }) };
-    }),
-    onChange: (value) => setDegree(Number(value)),
-  });
-  degreeRadios.element.classList.add("sl-button-row");
-  const uSlider = slider({
-    label: t("bsplineBasis.control.u"),
-    inputLabel: t("bsplineBasis.control.u.input"),
-    name: "u",
-    min: work.knots[work.degree],
-    max: work.knots[work.points.length],
-    step: (work.knots[work.points.length] - work.knots[work.degree]) * U_SLIDER_RESOLUTION,
-    value: work.u,
-    onChange: (value, final) => setU(Math.min(domain[1], Math.max(domain[0], value)), final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const sumText = el("p", { class: "sl-readout", dataset: { info: "sum" } });
-  const countText = el("p", { class: "sl-note", dataset: { info: "count" } });
-  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
-  const resetKnotsButton = button({ label: t("bsplineBasis.resetKnots"), title: t("bsplineBasis.resetKnots.title"), name: "reset-knots", onClick: () => resetKnots() });
-  const rulerHelp = el("p", { class: "sl-note", text: t("bsplineBasis.rulerHelp") });
-  ctx.slots.controls.append(
-    group(t("bsplineBasis.degreeLegend"), degreeRadios.element),
-    group(null, uSlider.element, sumText),
-    group(null, countText, el("div", { class: "sl-button-row" }, addButton, removeButton, resetKnotsButton), rulerHelp),
-  );
-
-  // ------------------------------------------------------------ formula and tables
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const { title: tableTitle, table: valuesTable, wrap: valuesTableWrap } = titledTable("basis");
-  const { title: triangleTitle, table: triangleTable, wrap: triangleTableWrap } = titledTable("cox-de-boor");
-  ctx.slots.details.append(
-    tableTitle,
-    valuesTableWrap,
-    triangleTitle,
-    triangleTableWrap,
-  );
-  let tableShape = ""; // "count/p" the values table was built for
-  let tableRows = []; // per i: { row, support, value, exact }
-  let sumCells = null;
-  let triangleShape = ""; // "p/k" the triangle was built for
-  let triangleCells = []; // per level r, per j: td
-
-  // ------------------------------------------------------------ edits
-
-  /** A new wasm curve for a state (throws on invalid input). */
-  function build(state) {
-    return new sl.BSplineCurve(flatten(state.points), 2, state.degree, Float64Array.from(state.knots));
-  }
-
-  /** Replaces the curve after the knots, the degree or the points changed; false (and a message) if refused. */
-  function rebuild() {
-    const next = buildOrReport(() => build(work), ctx);
-    if (!next) return false;
-    curve.free();
-    curve = next;
-    knotsDirty = true;
-    view.requestDraw();
-    return true;
-  }
-
-  /** Knot i dragged or nudged to u (already between its neighbours). */
-  function moveKnot(i, u) {
-    const old = work.knots[i];
-    work.knots[i] = u;
-    if (!rebuild()) work.knots[i] = old;
-  }
-
-  /** Applies a raised/lowered knot vector (from knot-ruler.js) or reports why not. */
-  function changeMultiplicity(i, result) {
-    if (result.error) {
-      const max = work.degree + 1;
-      ctx.status(t(`bsplineBasis.multiplicity.${result.error}`, { i: subscript(i), max }), "error");
-      return;
-    }
-    const old = work.knots;
-    work.knots = result.knots;
-    if (!rebuild()) {
-      work.knots = old;
-      return;
-    }
-    ruler.select(result.index);
-    ctx.commit(work);
-  }
-
-  /** The core's clamped uniform knot vector for the current points and degree. */
-  function clampedKnots() {
-    return Array.from(sl.knotVector(flatten(work.points), 2, work.degree, "clamped"));
-  }
-
-  function resetKnots() {
-    work.knots = clampedKnots();
-    if (rebuild()) ctx.commit(work);
-  }
-
-  function setDegree(p) {
-    if (p === work.degree) return;
-    if (work.points.length < p + 1) {
-      ctx.status(t("bsplineBasis.minPoints", { min: p + 1, p }), "error");
-      degreeRadios.set(String(work.degree));
-      return;
-    }
-    const old = { degree: work.degree, knots: work.knots };
-    work.degree = p;
-    work.knots = clampedKnots();
-    if (!rebuild()) {
-      Object.assign(work, old);
-      degreeRadios.set(String(work.degree));
-      return;
-    }
-    ruler.forgetPointer();
-    ctx.commit(work);
-  }
-
-  function setU(value, final) {
-    work.u = value;
-    uSlider.set(value);
-    uDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  /** Adds a point after handle i (at the end when none is selected); the knots become clamped uniform. */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("bsplineBasis.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    work.knots = clampedKnots();
-    rebuild();
-    ruler.forgetPointer();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes handle i (the last one when none is selected); the knots become clamped uniform. */
-  function removePoint(i) {
-    const min = Math.max(MIN_POINTS, work.degree + 1);
-    const next = withPointRemoved(work.points, i, min);
-    if (!next) return ctx.status(t("bsplineBasis.minPoints", { min, p: work.degree }), "error");
-    work.points = next.points;
-    work.knots = clampedKnots();
-    rebuild();
-    ruler.forgetPointer();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ core data
-  /** Asks the core for the samples, the basis and the values when something changed. */
-  function recompute() {
-    const n = work.points.length - 1;
-    let changed = false;
-    if (knotsDirty) {
-      basis = curve.basisCurves(SAMPLES); // one call: every N_{i,p} at SAMPLES u values
-      continuity = curve.knotContinuity();
-      domain = curve.domain();
-      for (let i = 0; i <= n; i++) {
-        let best = 0;
-        for (let k = 1; k < SAMPLES; k++) if (basis[i * SAMPLES + k] > basis[i * SAMPLES + best]) best = k;
-        peakK[i] = best;
-      }
-      // The domain may have moved (end knots dragged): keep u inside, and the slider's range on it.
-      const clamped = Math.min(domain[1], Math.max(domain[0], work.u));
-      if (clamped !== work.u) work.u = clamped;
-      uSlider.setRange(domain[0], domain[1], (domain[1] - domain[0]) * U_SLIDER_RESOLUTION);
-      uSlider.set(work.u);
-      geometryDirty = uDirty = true;
-    }
-    if (geometryDirty) samples = curve.sampleUniform(SAMPLES);
-    if (geometryDirty || uDirty) {
-      point = curve.evaluate(work.u);
-      if (uDirty || knotsDirty) {
-        values = curve.basis(work.u);
-        table = curve.basisTable(work.u);
-        const f = simpleFraction(work.u);
-        markerLabel = t("bsplineBasis.marker", { u: f && f.den > 1 ? fractionText(f) : knotText(work.u) });
-      }
-      changed = true;
-    }
-    knotsDirty = geometryDirty = uDirty = false;
-    const hi = plotPointer.highlighted(handles);
-    if (changed || hi !== shownHighlight) {
-      shownHighlight = hi;
-      syncPanels(hi);
-    }
-  }
-
-  // ------------------------------------------------------------ drawing
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
-    const n = pts.length - 1;
-    const p = work.degree;
-    const hi = shownHighlight;
-    const cycle = theme.basisStroke.length;
-    const knots = work.knots;
-
-    // ---- the curve area (world window, above the plot)
-    pointsPath(r, v, pts, 0, n + 1);
-    r.paint(theme.polygon);
-
-    // The highlighted function's support [u_i, u_{i+p+1}) on the curve: a band in its colour.
-    if (hi >= 0) {
-      const lo = knots[hi];
-      const up = knots[hi + p + 1];
-      let open = false;
-      r.beginPath();
-      for (let k = 0; k < SAMPLES; k++) {
-        const u = sampleU(k);
-        if (u >= lo && u <= up) {
-          const x = v.sx(samples[2 * k]);
-          const y = v.sy(samples[2 * k + 1]);
-          if (open) r.lineTo(x, y);
-          else r.moveTo(x, y);
-          open = true;
-        } else {
-          open = false;
-        }
-      }
-      r.paint(theme.basisBand[hi % cycle]);
-    }
-
-    flatPath(r, v, samples, 0, SAMPLES);
-    r.paint(theme.curve);
-
-    // Every control point ringed in its basis function's colour.
-    for (let i = 0; i <= n; i++) r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
-    handles.draw(r, v);
-
-    const pointX = v.sx(point[0]);
-    const pointY = v.sy(point[1]);
-    r.point(pointX, pointY, theme.pointOnCurve);
-    placeLabelAway(r, v, work.points, t("bsplineBasis.pointLabel"), pointX, pointY, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
-
-    // ---- the plot strip and the ruler (screen space, below the world window)
-    const w = r.width;
-    const h = r.height;
-    layoutBands(w, h, r.scale);
+  drawPlotFrame(r, plot);
+  // The highlighted support, shaded (before the curves).
+  if (hi >= 0) {
+    const a = ruler.px(Math.max(knots[hi], u0));
+    const b = ruler.px(Math.min(knots[hi + p + 1], u1));
     r.beginPath();
-    r.rect(0, plot.top, w, plot.bottom - plot.top);
-    r.paint(theme.plotBackground);
-    r.beginPath();
-    r.moveTo(0, plot.top);
-    r.lineTo(w, plot.top);
-    r.paint(theme.axis);
-
-    // The highlighted support, shaded (before the curves).
-    if (hi >= 0) {
-      const a = ruler.px(Math.max(knots[hi], domain[0]));
-      const b = ruler.px(Math.min(knots[hi + p + 1], domain[1]));
-      r.beginPath();
-      r.rect(a, plot.y1, Math.max(0, b - a), plot.y0 - plot.y1);
-      r.paint(supportFill(theme)[hi % cycle]);
-    }
-
-    // Value axis 0 … 1 (dashed at 1) and the u axis along the domain.
-    r.beginPath();
-    r.moveTo(plot.x0, plot.y1);
-    r.lineTo(plot.x0, plot.y0);
-    r.lineTo(plot.x1, plot.y0);
-    r.paint(theme.axis);
-    r.beginPath();
-    r.moveTo(plot.x0, plot.y1);
-    r.lineTo(plot.x1, plot.y1);
-    r.paint(theme.helper);
-    r.beginPath();
-    for (let a = 0; a < knots.length; a++) {
-      if (knots[a] < domain[0] || knots[a] > domain[1] || (a > 0 && knots[a] === knots[a - 1])) continue;
-      r.moveTo(ruler.px(knots[a]), plot.y1);
-      r.lineTo(ruler.px(knots[a]), plot.y0);
-    }
-    r.paint(theme.helper);
-    r.text(t("bsplineBasis.axisValue0"), plot.x0 - (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "right", "middle");
-    r.text(t("bsplineBasis.axisValue1"), plot.x0 - (TICK_PX + 2) * r.scale, plot.y1, theme.labelSmall, "right", "middle");
-    r.text(t("bsplineBasis.axisU"), plot.x1 + (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "left", "middle");
-
-    // The basis functions, from the core's table (highlighted one last, on top).
-    const sampleX = (k) => ruler.px(sampleU(k));
-    for (let i = 0; i <= n; i++) if (i !== hi) drawGraph(r, basis, i, SAMPLES, sampleX, py, theme.basisStroke[i % cycle]);
-    if (hi >= 0) drawGraph(r, basis, hi, SAMPLES, sampleX, py, theme.basisHover[hi % cycle]);
-
-    // The marker at u, under the names (their halo keeps them readable where it crosses), with
-    // the values N_{i,p}(u) as dots on top.
-    const mx = ruler.px(work.u);
-    r.beginPath();
-    r.moveTo(mx, plot.top + 18 * r.scale);
-    r.lineTo(mx, plot.y0);
-    r.paint(theme.marker);
-
-    // Names at the peaks.
-    if (n + 1 <= NAME_LABELS_MAX) {
-      for (let i = 0; i <= n; i++) {
-        const k = peakK[i];
-        const x = ruler.px(sampleU(k));
-        const align = k === 0 ? "left" : k === SAMPLES - 1 ? "right" : "center";
-        const dx = (k === 0 ? 4 : k === SAMPLES - 1 ? -4 : 0) * r.scale;
-        r.text(basisName(p, i), x + dx, py(basis[i * SAMPLES + k]) - 4 * r.scale, i === hi ? theme.labelBold : theme.labelSmall, align, "bottom");
-      }
-    }
-
-    for (let i = 0; i <= n; i++) if (values[i] > 0) r.point(mx, py(values[i]), theme.basisPoint[i % cycle]);
-    const markerAlign = mx < plot.x0 + 40 * r.scale ? "left" : mx > plot.x1 - 40 * r.scale ? "right" : "center";
-    r.text(markerLabel, mx, plot.top + 2 * r.scale, theme.labelPoint, markerAlign, "top");
-
-    // The knot ruler, and u marked on its line.
-    ruler.draw(r);
-    const ly = ruler.lineY;
-    r.beginPath();
-    r.moveTo(mx, ly - 5 * r.scale);
-    r.lineTo(mx, ly + 5 * r.scale);
-    r.paint(theme.marker);
-    r.point(mx, ly, theme.pointOnCurve);
+    r.rect(a, plot.y1, Math.max(0, b - a), plot.y0 - plot.y1);
+    r.paint(supportFill(theme)[hi % cycle]);
   }
-
-  /** "N₃,₂" (cached per degree and index). */
-  function basisName(p, i) {
-    return (basisNames[p * (MAX_POINTS + 1) + i] ??= `N${subscript(i)},${subscript(p)}`);
+  // A line at each distinct knot in the domain.
+  r.beginPath();
+  for (let a = 0; a < knots.length; a++) {
+    if (knots[a] < u0 || knots[a] > u1 || (a > 0 && knots[a] === knots[a - 1])) continue;
+    r.moveTo(ruler.px(knots[a]), plot.y1);
+    r.lineTo(ruler.px(knots[a]), plot.y0);
   }
+  r.paint(theme.helper);
+  const tick = (TICK_PX + 2) * sc;
+  r.text(t("bsplineBasis.axisValue0"), plot.x0 - tick, plot.y0, theme.labelSmall, "right", "middle");
+  r.text(t("bsplineBasis.axisValue1"), plot.x0 - tick, plot.y1, theme.labelSmall, "right", "middle");
+  r.text(t("bsplineBasis.axisU"), plot.x1 + tick, plot.y0, theme.labelSmall, "left", "middle");
 
-  // ------------------------------------------------------------ panels (formula, tables, notes, label)
-  function syncPanels(hi) {
-    const pts = work.points;
-    const n = pts.length - 1;
-    const p = work.degree;
-    const knots = work.knots;
-    const m = knots.length - 1;
-    const k = table.span;
-    const uText = knotText(work.u);
-    const uFraction = simpleFraction(work.u);
-    const uTex = uFraction && uFraction.den > 1 ? `\\tfrac{${uFraction.num}}{${uFraction.den}}` : uText;
-    degreeRadios.set(String(p));
-    for (const input of degreeRadios.inputs) input.disabled = Number(input.value) > n;
-    addButton.disabled = n + 1 >= MAX_POINTS;
-    removeButton.disabled = n + 1 <= Math.max(MIN_POINTS, p + 1);
-    setText(countText, t("bsplineBasis.knotNote", { count: n + 1, p, m: m + 1, last: subscript(m) }));
-
-    let sum = 0;
-    for (let i = 0; i <= n; i++) sum += values[i];
-    setText(sumText, t("bsplineBasis.sumNote", { u: uText, sum: fmt(sum) }));
-
-    // Formula panel: the recurrence, one function with the live numbers, the sum, the point.
-    const focus = hi >= 0 ? hi : argmax(values, n);
-    const level = (r, i) => {
-      // N_{i,r}(u) from the core's triangle (zero outside k − r … k).
-      const j = i - (k - r);
-      return j >= 0 && j <= r ? table.levels[r][j] : 0;
-    };
-    const term = (num, den, value, numTex, denTex) => {
-      if (den === 0) return { tex: "0", factor: 0 }; // 0/0 := 0
-      return { tex: `\\frac{${numTex}}{${denTex}}\\,`, factor: num / den, value };
-    };
-    const kt = (x) => knotText(x);
-    const left = term(work.u - knots[focus], knots[focus + p] - knots[focus], level(p - 1, focus), `${uText}-${kt(knots[focus])}`, `${kt(knots[focus + p])}-${kt(knots[focus])}`);
-    const right = term(knots[focus + p + 1] - work.u, knots[focus + p + 1] - knots[focus + 1], level(p - 1, focus + 1), `${kt(knots[focus + p + 1])}-${uText}`, `${kt(knots[focus + p + 1])}-${kt(knots[focus + 1])}`);
-    const leftPart = left.tex === "0" ? "0" : `${left.tex}N_{${focus},${p - 1}}(${uTex})`;
-    const rightPart = right.tex === "0" ? "0" : `${right.tex}N_{${focus + 1},${p - 1}}(${uTex})`;
-    const leftNumbers = left.tex === "0" ? "0" : `${fmt(left.factor)}\\cdot ${fmt(level(p - 1, focus))}`;
-    const rightNumbers = right.tex === "0" ? "0" : `${fmt(right.factor)}\\cdot ${fmt(level(p - 1, focus + 1))}`;
-    const active = [];
-    const weighted = [];
-    for (let i = Math.max(0, k - p); i <= Math.min(n, k); i++) {
-      active.push(fmt(values[i]));
-      weighted.push(`${fmt(values[i])}\\,P_{${i}}`);
-    }
-    const knotList = knots.map(kt).join(",\\ ");
-    formula.set([
-      `N_{i,0}(u) = \\begin{cases} 1 & u_i \\le u < u_{i+1} \\\\ 0 & \\text{${t("bsplineBasis.formulaOtherwise")}} \\end{cases},\\qquad N_{i,p}(u) = \\frac{u-u_i}{u_{i+p}-u_i}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1}-u}{u_{i+p+1}-u_{i+1}}\\,N_{i+1,p-1}(u),\\quad \\tfrac{0}{0} := 0`,
-      `U = [${knotList}],\\qquad u = ${uTex} \\in [u_{${k}}, u_{${k + 1}}) = [${kt(knots[k])}, ${kt(knots[k + 1])})`,
-      `N_{${focus},${p}}(${uTex}) = ${leftPart} + ${rightPart} = ${leftNumbers} + ${rightNumbers} = ${fmt(values[focus])}`,
-      `\\sum_{i=0}^{${n}} N_{i,${p}}(${uTex}) = ${active.join(" + ")} = ${fmt(sum)}`,
-      `C(u) = \\sum_{i=0}^{${n}} N_{i,${p}}(u)\\,P_i,\\qquad C(${uTex}) = ${weighted.join(" + ")} = (${fmt(point[0])},\\ ${fmt(point[1])})`,
-    ]);
-
-    // The values table: one row per basis function (the legend), then the sum.
-    const shape = `${n + 1}/${p}`;
-    if (tableShape !== shape) buildValuesTable(n, p, shape);
-    setText(tableTitle, t("bsplineBasis.tableCaption", { p, u: uText }));
-    const valueTexts = [];
+  // The basis functions, from the core's table (highlighted one last, on top).
+  const sampleX = (k) => ruler.px(sampleU(k));
+  for (let i = 0; i <= n; i++) {
+    if (i !== hi) drawGraph(r, d.basis, i, SAMPLES, sampleX, py, theme.basisStroke[i % cycle]);
+  }
+  if (hi >= 0) drawGraph(r, d.basis, hi, SAMPLES, sampleX, py, theme.basisHover[hi % cycle]);
+  // The marker at u, under the names (their halo keeps them readable where it crosses).
+  const mx = ruler.px(s.u);
+  r.beginPath();
+  r.moveTo(mx, plot.top + 18 * sc);
+  r.lineTo(mx, plot.y0);
+  r.paint(theme.marker);
+  // Names at the peaks.
+  if (n + 1 <= NAME_LABELS_MAX) {
     for (let i = 0; i <= n; i++) {
-      const cells = tableRows[i];
-      setText(cells.support, t("bsplineBasis.supportCell", { i: subscript(i), j: subscript(i + p + 1), a: kt(knots[i]), b: kt(knots[i + p + 1]) }));
-      setText(cells.value, fmt(values[i]));
-      const f = simpleFraction(values[i]);
-      setText(cells.exact, f && f.den > 1 ? `= ${fractionText(f)}` : "");
-      cells.row.classList.toggle("sl-highlight", i === hi);
-      if (values[i] > 0) valueTexts.push(`${basisName(p, i)} = ${fmt(values[i])}`);
+      const k = d.peaks[i];
+      const align = k === 0 ? "left" : k === SAMPLES - 1 ? "right" : "center";
+      const dx = (k === 0 ? 4 : k === SAMPLES - 1 ? -4 : 0) * sc;
+      const style = i === hi ? theme.labelBold : theme.labelSmall;
+      r.text(basisName(p, i), sampleX(k) + dx, py(d.basis[i * SAMPLES + k]) - 4 * sc, style, align, "bottom");
     }
-    setText(sumCells.value, fmt(sum));
-
-    // The Cox–de Boor triangle at u.
-    const triShape = `${p}/${k}`;
-    if (triangleShape !== triShape) buildTriangle(p, k, triShape);
-    setText(triangleTitle, t("bsplineBasis.triangleCaption", { u: uText, k, a: kt(knots[k]), b: kt(knots[k + 1]), kSub: subscript(k), k1Sub: subscript(k + 1) }));
-    for (let r = 0; r <= p; r++) {
-      for (let j = 0; j <= r; j++) setText(triangleCells[r][j], fmt(table.levels[r][j]));
-    }
-
-    const joints = [];
-    for (const entry of continuity) joints.push(`${kt(entry.knot)}: ${entry.continuity < 0 ? t("knotRuler.break") : `C${superscript(entry.continuity)}`}`);
-    const ariaContinuity = joints.length ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") }) : "";
-    let ariaSupport = "";
-    if (hi >= 0) ariaSupport = t("bsplineBasis.ariaSupport", { name: basisName(p, hi), a: kt(knots[hi]), b: kt(knots[hi + p + 1]) });
-    view.setLabel(
-      t("bsplineBasis.aria", {
-        kind: degreeName(p),
-        count: n + 1,
-        knots: knots.map(kt).join(", "),
-        u: uText,
-        a: kt(knots[k]),
-        b: kt(knots[k + 1]),
-        values: valueTexts.join(", "),
-        sum: fmt(sum),
-        x: fmt(point[0], 2),
-        y: fmt(point[1], 2),
-      }) + ariaContinuity + ariaSupport,
-    );
   }
+  // The values N_{i,p}(u) as dots on the marker, and its label.
+  for (let i = 0; i <= n; i++) if (d.values[i] > 0) r.point(mx, py(d.values[i]), theme.basisPoint[i % cycle]);
+  const markerAlign = mx < plot.x0 + 40 * sc ? "left" : mx > plot.x1 - 40 * sc ? "right" : "center";
+  r.text(d.marker, mx, plot.top + 2 * sc, theme.labelPoint, markerAlign, "top");
 
-  /** Rebuilds the values table for n + 1 functions of degree p. */
-  function buildValuesTable(n, p, shape) {
-    tableShape = shape;
-    tableRows = [];
-    const head = el("tr", {},
-      el("th", { scope: "col", text: t("bsplineBasis.colFunction") }),
-      el("th", { scope: "col", text: t("bsplineBasis.colSupport") }),
-      el("th", { scope: "col", text: t("bsplineBasis.colValue") }));
-    const rows = [];
-    for (let i = 0; i <= n; i++) {
-      const cells = { support: el("span"), value: el("span", { class: "sl-cell-value" }), exact: el("span", { class: "sl-cell-decimal" }) };
-      const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
-      swatch.style.background = CYCLE[i % CYCLE.length];
-      const row = el("tr", { tabindex: "0", dataset: { index: String(i) } },
-        el("th", { scope: "row" }, swatch, t("bsplineBasis.rowName", { name: basisName(p, i), point: `P${subscript(i)}` })),
-        el("td", { dataset: { cell: "support" } }, cells.support),
-        el("td", { dataset: { cell: "value" } }, cells.value, cells.exact));
-      const enter = () => plotPointer.setRowHover(i);
-      const leave = () => plotPointer.setRowHover(-1);
-      row.addEventListener("pointerenter", enter);
-      row.addEventListener("pointerleave", leave);
-      row.addEventListener("focus", enter);
-      row.addEventListener("blur", leave);
-      cells.row = row;
-      tableRows.push(cells);
-      rows.push(row);
-    }
-    sumCells = { value: el("span", { class: "sl-cell-value" }) };
-    rows.push(el("tr", { dataset: { index: "sum" } },
-      el("th", { scope: "row", text: t("bsplineBasis.sumRow") }),
-      el("td", {}),
-      el("td", { dataset: { cell: "value" } }, sumCells.value)));
-    valuesTable.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
-  }
+  // The knot ruler, and u marked on its line.
+  ruler.draw(r);
+  const ly = ruler.lineY;
+  r.beginPath();
+  r.moveTo(mx, ly - 5 * sc);
+  r.lineTo(mx, ly + 5 * sc);
+  r.paint(theme.marker);
+  r.point(mx, ly, theme.pointOnCurve);
+}
 
-  /** Rebuilds the triangle for degree p on span k: row r holds N_{k−r,r} … N_{k,r} under their columns. */
-  function buildTriangle(p, k, shape) {
-    triangleShape = shape;
-    triangleCells = [];
-    const head = [el("th", { scope: "col", text: t("bsplineBasis.triangleCorner") })];
-    for (let i = k - p; i <= k; i++) head.push(el("th", { scope: "col", text: `i = ${i}` }));
-    const rows = [];
-    for (let r = 0; r <= p; r++) {
-      const cells = [el("th", { scope: "row", text: t("bsplineBasis.triangleRow", { r }) })];
-      const levelCells = [];
-      for (let i = k - p; i <= k; i++) {
-        if (i < k - r) {
-          cells.push(el("td", { class: "sl-cell-empty" }));
-          continue;
-        }
-        const value = el("span", { class: "sl-cell-value" });
-        levelCells.push(value);
-        cells.push(el("td", { dataset: { r: String(r), i: String(i) } }, el("span", { class: "sl-cell-name", text: `N${subscript(i)},${subscript(r)} = ` }), value));
-      }
-      triangleCells.push(levelCells);
-      rows.push(el("tr", {}, cells));
-    }
-    triangleTable.replaceChildren(el("thead", {}, el("tr", {}, head)), el("tbody", {}, rows));
-  }
+/** u as TeX: a simple fraction when it is one. */
+function uTexOf(u) {
+  const f = simpleFraction(u);
+  return f && f.den > 1 ? `\\tfrac{${f.num}}{${f.den}}` : knotText(u);
+}
 
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      const next = build(state); // throws before anything changes
-      curve.free();
-      curve = next;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      ruler.forgetPointer();
-      if (handles.selected >= work.points.length) handles.select(-1);
-      if (ruler.selected >= work.knots.length) ruler.select(-1);
-      plotPointer.reset();
-      degreeRadios.set(String(work.degree));
-      knotsDirty = geometryDirty = uDirty = true;
-      view.requestDraw();
-      recompute();
-    },
-    destroy() {
-      ruler.destroy();
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-    },
+/** The recurrence; one function (highlighted, else the largest at u) with the live numbers; the sum; C(u). */
+export function formula(s, d) {
+  const n = s.points.length - 1;
+  const p = s.degree;
+  const knots = s.knots;
+  const kt = knotText;
+  const k = d.table.span;
+  const uText = kt(s.u);
+  const uTex = uTexOf(s.u);
+  const values = d.values;
+  const hi = highlighted(s, d);
+  const focus = hi >= 0 ? hi : argmax(values, n);
+  // N_{i,r}(u) from the core's triangle (zero outside k − r … k).
+  const level = (r, i) => {
+    const j = i - (k - r);
+    return j >= 0 && j <= r ? d.table.levels[r][j] : 0;
   };
+  // One side of the recurrence: (num / den) N_{i, p−1}(u), or 0 when den = 0 (0/0 := 0).
+  const side = (num, den, i, numTex, denTex) => {
+    if (den === 0) return { part: "0", numbers: "0" };
+    const part = `\\frac{${numTex}}{${denTex}}\\,N_{${i},${p - 1}}(${uTex})`;
+    return { part, numbers: `${fmt(num / den)}\\cdot ${fmt(level(p - 1, i))}` };
+  };
+  const [a, b, c, e] = [knots[focus], knots[focus + p], knots[focus + 1], knots[focus + p + 1]];
+  const left = side(s.u - a, b - a, focus, `${uText}-${kt(a)}`, `${kt(b)}-${kt(a)}`);
+  const right = side(e - s.u, e - c, focus + 1, `${kt(e)}-${uText}`, `${kt(e)}-${kt(c)}`);
+  const active = [];
+  const weighted = [];
+  for (let i = Math.max(0, k - p); i <= Math.min(n, k); i++) {
+    active.push(fmt(values[i]));
+    weighted.push(`${fmt(values[i])}\\,P_{${i}}`);
+  }
+  const otherwise = `\\text{${t("bsplineBasis.formulaOtherwise")}}`;
+  const zero = `N_{i,0}(u) = \\begin{cases} 1 & u_i \\le u < u_{i+1} \\\\ 0 & ${otherwise} \\end{cases}`;
+  const recurrence =
+    "N_{i,p}(u) = \\frac{u-u_i}{u_{i+p}-u_i}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1}-u}{u_{i+p+1}-u_{i+1}}\\,N_{i+1,p-1}(u)";
+  const point = `(${fmt(d.point[0])},\\ ${fmt(d.point[1])})`;
+  const span = `[u_{${k}}, u_{${k + 1}}) = [${kt(knots[k])}, ${kt(knots[k + 1])})`;
+  const numbers = `${left.numbers} + ${right.numbers}`;
+  return [
+    `${zero},\\qquad ${recurrence},\\quad \\tfrac{0}{0} := 0`,
+    `U = [${knots.map(kt).join(",\\ ")}],\\qquad u = ${uTex} \\in ${span}`,
+    `N_{${focus},${p}}(${uTex}) = ${left.part} + ${right.part} = ${numbers} = ${fmt(values[focus])}`,
+    `\\sum_{i=0}^{${n}} N_{i,${p}}(${uTex}) = ${active.join(" + ")} = ${fmt(d.sum)}`,
+    `C(u) = \\sum_{i=0}^{${n}} N_{i,${p}}(u)\\,P_i,\\qquad C(${uTex}) = ${weighted.join(" + ")} = ${point}`,
+  ];
+}
+
+/**
+ * The highlighted basis function (plot hover, table row, then the handle in hand, hovered or
+ * selected; setup's pointer), or -1; one of the state's n + 1 functions.
+ */
+function highlighted(s, d) {
+  const hi = d.pointer ? d.pointer.highlighted(d.handles) : -1;
+  return hi < s.points.length ? hi : -1;
 }
 
 /** Index of the largest of values[0..n] (the first on a tie). */
@@ -757,4 +415,130 @@ function argmax(values, n) {
   let best = 0;
   for (let i = 1; i <= n; i++) if (values[i] > values[best]) best = i;
   return best;
+}
+
+/** The curve, its knots, the span of u, the non-zero values, C(u), the continuity, the highlight. */
+export function label(s, d) {
+  const kt = knotText;
+  const p = s.degree;
+  const k = d.table.span;
+  const nonZero = [];
+  d.values.forEach((value, i) => value > 0 && nonZero.push(`${basisName(p, i)} = ${fmt(value)}`));
+  const continuityText = (e) => (e.continuity < 0 ? t("knotRuler.break") : `C${superscript(e.continuity)}`);
+  const joints = d.continuity.map((e) => `${kt(e.knot)}: ${continuityText(e)}`);
+  const continuity = joints.length ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") }) : "";
+  const hi = highlighted(s, d);
+  const ends = hi >= 0 ? { name: basisName(p, hi), a: kt(s.knots[hi]), b: kt(s.knots[hi + p + 1]) } : null;
+  const support = ends ? t("bsplineBasis.ariaSupport", ends) : "";
+  const text = t("bsplineBasis.aria", {
+    kind: degreeName(p),
+    count: s.points.length,
+    knots: s.knots.map(kt).join(", "),
+    u: kt(s.u),
+    a: kt(s.knots[k]),
+    b: kt(s.knots[k + 1]),
+    values: nonZero.join(", "),
+    sum: fmt(d.sum),
+    x: fmt(d.point[0], 2),
+    y: fmt(d.point[1], 2),
+  });
+  return text + continuity + support;
+}
+
+/**
+ * The square figure, the plot's pointer (press or drag sets u, hover highlights a graph) and
+ * the highlight it and the table rows set, the values table and the Cox–de Boor triangle.
+ */
+export function setup(ui) {
+  const { view, data } = ui;
+  // A taller figure than the default 16:10: the curve, the plot and the ruler share it.
+  ui.ctx.slots.figure.style.aspectRatio = "1 / 1";
+  data.plot = { x0: 0, x1: 0, y0: 0, y1: 0, top: 0, bottom: 0 }; // frame (CSS px), strip top/bottom
+  let shown = -1;
+
+  const layout = () => layoutBands(data, view.width, view.height, view.renderer.scale);
+  const inPlot = (x, y) => {
+    layout();
+    const plot = data.plot;
+    return x >= plot.x0 - KNOT_SNAP_PX && x <= plot.x1 + KNOT_SNAP_PX && y >= plot.top && y < plot.bottom;
+  };
+  const pointer = (data.pointer = new BasisPlotPointer(view, {
+    inPlot,
+    graphAt(x, y) {
+      const { plot } = data;
+      const raw = Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
+      const py = (value) => plot.y0 - value * (plot.y0 - plot.y1);
+      const k = Math.round(raw * (SAMPLES - 1));
+      return nearestGraph(data.basis, ui.state.points.length, SAMPLES, k, y, py, PLOT_HOVER_PX);
+    },
+    pick(x, final) {
+      layout();
+      ui.set("u", snapToKnot(ui.state, data, data.ruler.uAt(x)), final);
+    },
+    enter: () => ui.handles.leave(),
+    before: ui.handles,
+  }));
+  // The highlight (plot hover, table row, handle) is not state: touched when it changes.
+  view.beforeFrame(() => {
+    const hi = highlighted(ui.state, data);
+    if (hi === shown) return;
+    shown = hi;
+    ui.touch("highlight");
+  });
+
+  const values = titledTable("basis");
+  const triangle = new BasisTriangleTable(strings);
+  ui.ctx.slots.details.append(values.title, values.wrap, triangle.title, triangle.wrap);
+  let valuesShape = ""; // "count/p" the values table was built for
+  let rows = []; // per i: { row, support, value, exact }
+  let sumValue = null;
+
+  /** Rebuilds the values table for n + 1 functions of degree p. */
+  function buildValues(n, p) {
+    const column = (key) => el("th", { scope: "col", text: t(`bsplineBasis.${key}`) });
+    rows = [];
+    for (let i = 0; i <= n; i++) {
+      const cells = { support: el("span"), value: el("span", { class: "sl-cell-value" }) };
+      cells.exact = el("span", { class: "sl-cell-decimal" });
+      const name = t("bsplineBasis.rowName", { name: basisName(p, i), point: `P${subscript(i)}` });
+      cells.row = legendRow(pointer, i, name,
+        el("td", { dataset: { cell: "support" } }, cells.support),
+        el("td", { dataset: { cell: "value" } }, cells.value, cells.exact));
+      rows.push(cells);
+    }
+    sumValue = el("span", { class: "sl-cell-value" });
+    const sumHead = el("th", { scope: "row", text: t("bsplineBasis.sumRow") });
+    const sumCell = el("td", { dataset: { cell: "value" } }, sumValue);
+    const sumRow = el("tr", { dataset: { index: "sum" } }, sumHead, el("td", {}), sumCell);
+    const head = el("tr", {}, column("colFunction"), column("colSupport"), column("colValue"));
+    values.table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((r) => r.row), sumRow));
+  }
+
+  return {
+    update(s, d) {
+      const n = s.points.length - 1;
+      const p = s.degree;
+      const kt = knotText;
+      const uText = kt(s.u);
+      if (valuesShape !== `${n + 1}/${p}`) {
+        valuesShape = `${n + 1}/${p}`;
+        buildValues(n, p);
+      }
+      setText(values.title, t("bsplineBasis.tableCaption", { p, u: uText }));
+      const hi = highlighted(s, d);
+      rows.forEach((cells, i) => {
+        const ends = { a: kt(s.knots[i]), b: kt(s.knots[i + p + 1]) };
+        setText(cells.support, t("bsplineBasis.supportCell", { i: subscript(i), j: subscript(i + p + 1), ...ends }));
+        setText(cells.value, fmt(d.values[i]));
+        const f = simpleFraction(d.values[i]);
+        setText(cells.exact, f && f.den > 1 ? `= ${fractionText(f)}` : "");
+        cells.row.classList.toggle("sl-highlight", i === hi);
+      });
+      setText(sumValue, fmt(d.sum));
+      const k = d.table.span;
+      const span = { k, a: kt(s.knots[k]), b: kt(s.knots[k + 1]), kSub: subscript(k), k1Sub: subscript(k + 1) };
+      triangle.show(p, k, d.table.levels, t("bsplineBasis.triangleCaption", { u: uText, ...span }));
+    },
+    destroy: () => pointer.reset(),
+  };
 }

@@ -288,7 +288,7 @@ export const controls = [
     slider("u", {
       label: "deBoor.control.u",
       range: domain,
-      step: uStep,
+      step: (a, b) => (b - a) * U_RESOLUTION,
       player: { stepBackTitle: "deBoor.control.stepBack.title", stepTitle: "deBoor.control.stepForward.title" },
     }),
     readout("span", (s, d) => {
@@ -309,7 +309,7 @@ export const controls = [
       onRelease: true,
       refuse: (p, s) => (p < 1 || p > highestDegree(s) ? degreeRange(p, s) : null),
       error: degreeRange,
-      apply: setDegree,
+      set: setDegree,
     }),
     numberList("knots", {
       label: "deBoor.control.knots",

@@ -26,6 +26,7 @@ import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
 import { pointsPath } from "../lib/draw.js";
+import { replaceOrReport } from "../lib/wasm.js";
 
 export const id = "multiplicity";
 /** Prefix of this demo's keys in strings.js. */
@@ -246,15 +247,11 @@ const repeatChoice = {
         const j = ui.handles.selected >= 0 ? ui.handles.selected : s.repeatPoint;
         if (Number(value) === s.repeatTimes && j === s.repeatPoint) return;
         const next = { ...s, repeatPoint: j, repeatTimes: Number(value) };
-        try {
-          ui.replace({ ...next, knots: uniformKnots(ui, next) });
-        } catch (err) {
-          ui.status(t("status.rejected", { message: err.message }), "error");
-          control.set(String(s.repeatTimes));
-          return;
+        if (replaceOrReport(ui, { ...next, knots: uniformKnots(ui, next) })) {
+          ui.data.ruler.forgetPointer();
+          ui.data.ruler.select(-1);
         }
-        ui.data.ruler.forgetPointer();
-        ui.data.ruler.select(-1);
+        control.set(String(ui.state.repeatTimes));
       },
     });
     control.element.classList.add("sl-button-row");
@@ -330,7 +327,8 @@ export const figure = {
 function jumps(s, d, k) {
   for (const joint of d.joints) {
     if (joint.c >= 0) continue;
-    const [a, b] = domainOf(s.knots, P);
+    const a = s.knots[P];
+    const b = s.knots[s.knots.length - P - 1];
     const u = a + (k / (CURVE_SAMPLES - 1)) * (b - a);
     const u0 = a + ((k - 1) / (CURVE_SAMPLES - 1)) * (b - a);
     if (u0 < joint.knot && u >= joint.knot) return true;
@@ -363,13 +361,14 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
   if (studied?.joint) {
     const jt = studied.joint;
-    const [lx, ly, rx, ry] = [v.sx(jt.left[0]), v.sy(jt.left[1]), v.sx(jt.right[0]), v.sy(jt.right[1])];
+    const rx = v.sx(jt.right[0]);
+    const ry = v.sy(jt.right[1]);
     if (jt.c < 0) {
       r.beginPath();
-      r.moveTo(lx, ly);
+      r.moveTo(v.sx(jt.left[0]), v.sy(jt.left[1]));
       r.lineTo(rx, ry);
       r.paint(theme.helper);
-      r.point(lx, ly, theme.pointOnCurve);
+      r.point(v.sx(jt.left[0]), v.sy(jt.left[1]), theme.pointOnCurve);
     }
     r.point(rx, ry, theme.pointOnCurve);
     r.text(studied.label, rx, ry + 12 * r.scale, theme.labelPoint, "center", "top");

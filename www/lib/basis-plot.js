@@ -6,6 +6,8 @@
  * core's i-major samples. The plot's layout stays with each demo (Bernstein's runs over
  * t ∈ [0, 1], the B-spline's over the knot ruler's domain).
  */
+import { el } from "./controls.js";
+import { CYCLE } from "./theme.js";
 
 /** The pointer in a basis plot and the highlight it and the legend table set. */
 export class BasisPlotPointer {
@@ -100,4 +102,48 @@ export function drawGraph(r, values, i, count, x, y, style) {
     else r.lineTo(px, py);
   }
   r.paint(style);
+}
+
+/**
+ * The frame of a basis plot in its strip (canvas px): the strip's background and top edge from
+ * `plot.top` to `plot.bottom` across the canvas, the value axis from 0 (`plot.y0`) to 1
+ * (`plot.y1`) at `plot.x0`, the parameter axis to `plot.x1`, and a dashed line at value 1
+ * (the partition of unity's bound).
+ */
+export function drawPlotFrame(r, plot) {
+  const theme = r.theme;
+  r.beginPath();
+  r.rect(0, plot.top, r.width, plot.bottom - plot.top);
+  r.paint(theme.plotBackground);
+  r.beginPath();
+  r.moveTo(0, plot.top);
+  r.lineTo(r.width, plot.top);
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x0, plot.y0);
+  r.lineTo(plot.x1, plot.y0);
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x1, plot.y1);
+  r.paint(theme.helper);
+}
+
+/**
+ * A row of a basis legend table for function i: focusable, `data-index=i`, a swatch in the
+ * function's colour (`CYCLE[i mod 4]`) before `name` in its header cell, then `cells`; hovering
+ * or focusing it highlights the function through `pointer.setRowHover`.
+ */
+export function legendRow(pointer, i, name, ...cells) {
+  const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
+  swatch.style.background = CYCLE[i % CYCLE.length];
+  const row = el("tr", { tabindex: "0", dataset: { index: String(i) } }, el("th", { scope: "row" }, swatch, name), ...cells);
+  const enter = () => pointer.setRowHover(i);
+  const leave = () => pointer.setRowHover(-1);
+  row.addEventListener("pointerenter", enter);
+  row.addEventListener("pointerleave", leave);
+  row.addEventListener("focus", enter);
+  row.addEventListener("blur", leave);
+  return row;
 }

@@ -32,6 +32,18 @@ export function clampedKnots(sl, points, degree) {
 }
 
 /**
+ * The state with the core's clamped uniform knots for its points and degree (after the number
+ * of points or the degree changed) and its parameter `param` (if it has one) clamped into
+ * their domain.
+ */
+export function withClampedKnots(sl, state, { param = "u" } = {}) {
+  const knots = clampedKnots(sl, state.points, state.degree);
+  const next = { ...state, knots };
+  if (param && param in state) next[param] = clampInto(state[param], domainOf(knots, state.degree));
+  return next;
+}
+
+/**
  * The domain [u_p, u_{n+1}] of knots u₀ … u_m of degree p (n + 1 = m − p). Read from the state,
  * a slider's `range` follows the knots: `slider("u", { range: (s) => domainOf(s.knots, s.degree) })`.
  */

@@ -27,22 +27,22 @@ function fragment(...nodes) {
  *   (default `<label>.input`).
  * @param {number} [o.min] @param {number} [o.max] fixed range, or `o.range(state, data) → [a, b]`
  *   (e.g. a B-spline's domain, re-read after every change).
- * @param {number} o.step slider resolution (log10 units for `log`).
+ * @param {number | ((a: number, b: number) => number)} o.step slider resolution (log10 units for
+ *   `log`), or a function of the range (e.g. a thousandth of a B-spline's domain).
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
  * @param {boolean | object} [o.player] add the step / play buttons (Player options if an object).
- * @param {string} [o.error] key of the message for typed text that is out of range.
+ * @param {string | ((text: string, state) => string)} [o.error] key of the message for typed
+ *   text that is out of range (given `{ value, min, max }`), or the message itself.
+ * @param {(ui, value: number, final: boolean) => void} [o.set] instead of `ui.set(field, value,
+ *   final)`, for a change that implies others or may be refused (e.g. through `ui.replace`);
+ *   after a final change the slider shows the field's value again.
  * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
  *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
  * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
  *   take the value (then it is reported and the slider shows the field again), else null.
- * @param {(ui, v: number, final: boolean) => void} [o.apply] applies the value instead of
- *   `ui.set(field, …)` (a change that replaces more than its field, e.g. a degree that resets
- *   the knots); a refused change leaves the state as it was and the slider shows it again.
- * @param {number | ((state, data) => number)} o.step may follow the range (re-read with it).
- * `o.error` may also be a function `(text, state) → message`; `o.player`'s `stepBackTitle` /
- * `stepTitle` are strings.js keys.
+ * `o.player`'s `stepBackTitle` / `stepTitle` are strings.js keys.
  */
 export function slider(field, o) {
   return {
@@ -50,7 +50,7 @@ export function slider(field, o) {
       const fixed = o.range ? null : [o.min, o.max];
       const range = () => fixed ?? o.range(ui.state, ui.data);
       const [min, max] = range();
-      const step = typeof o.step === "function" ? () => o.step(ui.state, ui.data) : () => o.step;
+      const stepOf = (a, b) => (typeof o.step === "function" ? o.step(a, b) : o.step);
       let player = null;
       const control = sliderElement({
         label: t(o.label),
@@ -58,7 +58,7 @@ export function slider(field, o) {
         name: o.name ?? field,
         min,
         max,
-        step: step(),
+        step: stepOf(min, max),
         log: o.log,
         format: o.format,
         value: ui.state[field],
@@ -73,10 +73,9 @@ export function slider(field, o) {
             control.set(ui.state[field]);
             return;
           }
-          if (o.apply) {
-            o.apply(ui, next, final);
-            control.set(ui.state[field]);
-          } else ui.set(field, next, final);
+          if (!o.set) return ui.set(field, next, final);
+          o.set(ui, next, final);
+          if (final) control.set(ui.state[field]);
         },
         onError: (text) => {
           const [a, b] = range();
@@ -104,7 +103,7 @@ export function slider(field, o) {
           if (!fixed) {
             const [a, b] = range();
             if (a !== shownRange[0] || b !== shownRange[1]) {
-              control.setRange(a, b, step());
+              control.setRange(a, b, typeof o.step === "function" ? o.step(a, b) : null);
               shownRange = [a, b];
             }
           }
@@ -131,9 +130,10 @@ export function checkbox(field, { label, name = field }) {
  * One choice out of a few, bound to a field: radio buttons (`data-control=name`, each row
  * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels; values
  * may be numbers (a degree), shown as text. `refuse(value, state)` → a message when the state
- * cannot take the value (reported; the buttons show the field again), else null.
+ * cannot take the value (reported; the buttons show the field again), else null. `set(ui,
+ * value)` as for `slider` (then the buttons show the field's value again).
  */
-export function choice(field, { options, name = field, refuse = null }) {
+export function choice(field, { options, name = field, refuse = null, set = null }) {
   return {
     build(ui) {
       const control = radios({
@@ -143,10 +143,10 @@ export function choice(field, { options, name = field, refuse = null }) {
         onChange: (text) => {
           const value = options.find((option) => String(option.value) === text).value;
           const refusal = refuse?.(value, ui.state);
-          if (refusal) {
-            ui.status(refusal, "error");
-            control.set(String(ui.state[field]));
-          } else ui.set(field, value);
+          if (refusal) ui.status(refusal, "error");
+          else if (!set) return ui.set(field, value);
+          else set(ui, value);
+          control.set(String(ui.state[field]));
         },
       });
       return { element: control.element, sync: (state) => control.set(String(state[field])) };
@@ -161,17 +161,21 @@ export function choice(field, { options, name = field, refuse = null }) {
  * `minKey`, with `params(state)` added to `{ max }` / `{ min }`). The buttons are disabled at the
  * limits. `min` may be a function of the state (a B-spline of degree p needs p + 1 points).
  * `apply(ui, points) → boolean` replaces `ui.replace` when the new list changes more (knots
- * reset); `addTitle` / `removeTitle` are keys of the buttons' tooltips.
+ * reset); or `adjust(state, ui) → state` amends the new state before `ui.replace`. `more`: extra
+ * buttons `[{ name, label, title?, run(ui) }]` in the row; `addTitle` / `removeTitle` are keys
+ * of the tooltips. The messages also get the state's fields as parameters.
  */
 export function pointButtons(field, o) {
   const { min, max, prefix, minKey = `${prefix}.minPoints`, maxKey = `${prefix}.maxPoints`, params = () => ({}) } = o;
-  const { addTitle = "control.addPoint.title", removeTitle = "control.removePoint.title" } = o;
+  const { addTitle = "control.addPoint.title", removeTitle = "control.removePoint.title", adjust = null, more = [] } = o;
   const least = typeof min === "function" ? min : () => min;
   return {
     build(ui) {
       const replace = (points) => {
+        let state = { ...ui.state, [field]: points };
+        if (adjust) state = adjust(state, ui);
         try {
-          ui.replace({ ...ui.state, [field]: points });
+          ui.replace(state);
           return true;
         } catch (err) {
           ui.status(err.message, "error");
@@ -182,7 +186,7 @@ export function pointButtons(field, o) {
         const done = o.apply ? o.apply(ui, next.points) : replace(next.points);
         if (done) ui.handles?.select(next.index);
       };
-      const refuse = (key, limits) => ui.status(t(key, { ...limits, ...params(ui.state) }), "error");
+      const refuse = (key, limits) => ui.status(t(key, { ...ui.state, ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
@@ -198,8 +202,9 @@ export function pointButtons(field, o) {
       const selected = () => ui.handles?.selected ?? -1;
       const addButton = button({ label: t("control.addPoint"), title: t(addTitle), name: "add-point", onClick: () => ui.pointList.add(selected()) });
       const removeButton = button({ label: t("control.removePoint"), title: t(removeTitle), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
+      const others = more.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       return {
-        element: el("div", { class: "sl-button-row" }, addButton, removeButton),
+        element: el("div", { class: "sl-button-row" }, addButton, removeButton, ...others),
         sync(state) {
           const count = state[field].length;
           addButton.disabled = count >= max;

@@ -70,3 +70,18 @@ export function buildOrReport(build, ctx) {
     return null;
   }
 }
+
+/**
+ * A declarative demo's `ui.replace(next)` (demo.js: the model is built first), or, when the
+ * core refuses `next`, its reason in the status line and nothing changed. Returns true when
+ * replaced.
+ */
+export function replaceOrReport(ui, next) {
+  try {
+    ui.replace(next);
+    return true;
+  } catch (err) {
+    ui.status(t("status.rejected", { message: err.message }), "error");
+    return false;
+  }
+}
