@@ -13,6 +13,7 @@ import { field, checkNumber, checkNumbers } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, actions, numberList, group } from "../lib/panel.js";
 import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
+import { replaceOrReport } from "../lib/wasm.js";
 import { fmt, subscript, superscript, degreeName, MAX_EXACT_DENOMINATOR } from "../lib/format.js";
 import { simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
@@ -119,12 +120,7 @@ function restructure(ui, changes, reset = false) {
   const [a, b] = domain(ui.state);
   const [a1, b1] = domain(next);
   next.u = clampInto(a1 + ((ui.state.u - a) / (b - a)) * (b1 - a1), [a1, b1]);
-  try {
-    ui.replace(next);
-  } catch (err) {
-    ui.status(t("status.rejected", { message: err.message }), "error");
-    return false;
-  }
+  if (!replaceOrReport(ui, next)) return false;
   if (reset) ui.status(t("deBoor.knotsReset"), "info");
   return true;
 }
