@@ -594,3 +594,77 @@ fn bezier_surfaces_and_meshes_from_js() {
     assert_eq!(refined.evaluate(0.5, 0.25).unwrap(), vec![0.5, 0.25, 0.125]);
     assert!(message(s.insert_knot_u(0.5, Some(3.0))).contains("multiplicity 3"));
 }
+
+#[test]
+fn teaching_data_wrappers_return_the_documented_layouts() {
+    // The Croatian quadratic: U = [0,0,0,1,2,3,4,4,4]; at u = 3/2 (span 3) by hand:
+    // de Boor α: r = 1: (u − u_2)/(u_4 − u_2) = 3/4, (u − u_3)/(u_5 − u_3) = 1/4; r = 2: 1/2.
+    let pts = [0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 5.0, 1.0, 6.0, 3.0, 8.0, 0.0];
+    let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
+    let c =
+        splinelab::wasm::JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), JsValue::UNDEFINED)
+            .unwrap();
+    assert_eq!(
+        c.de_boor_alphas(1.5).unwrap(),
+        vec![
+            1.0, 1.0, 2.0, 4.0, 2.0, 0.75, //
+            1.0, 2.0, 3.0, 5.0, 2.0, 0.25, //
+            2.0, 2.0, 3.0, 4.0, 1.0, 0.5,
+        ]
+    );
+    assert!(message(c.de_boor_alphas(5.0)).contains("outside the domain"));
+    // Boehm at s = 3/2: span 3, α_2 = 3/4, α_3 = 1/4.
+    let boehm = c.insertion_alphas(1.5).unwrap();
+    let get = |o: &JsValue, key: &str| js_sys::Reflect::get(o, &key.into()).unwrap();
+    assert_eq!(get(&boehm, "span").as_f64(), Some(3.0));
+    let alphas: Vec<f64> = js_sys::Array::from(&get(&boehm, "alphas"))
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert_eq!(alphas, vec![0.75, 0.25]);
+    // Matrix form of span 3 at t = 1/2: [1/4 1/2 1], [1/8 3/4 1/8], the point (3, 21/8).
+    assert_eq!(
+        c.evaluate_matrix_form(3.0, 0.5).unwrap(),
+        vec![0.25, 0.5, 1.0, 0.125, 0.75, 0.125, 3.0, 2.625]
+    );
+    assert!(message(c.evaluate_matrix_form(3.0, 2.0)).contains("outside the domain [0, 1]"));
+    assert!(message(c.evaluate_matrix_form(-1.0, 0.5)).contains("whole number"));
+    // Rational basis of weights 1, 3, 1, 1 at t = 1/2: 1/14, 9/14, 3/14, 1/14 (within rounding).
+    let w = JsBezierCurve::new(
+        arr(&[0.0, 0.0, 1.0, 3.0, 4.0, 3.0, 5.0, 0.0]),
+        2.0,
+        arr(&[1.0, 3.0, 1.0, 1.0]),
+    )
+    .unwrap();
+    let r = w.rational_basis(0.5).unwrap();
+    for (got, want) in r.iter().zip([1.0, 9.0, 3.0, 1.0]) {
+        assert!((got - want / 14.0).abs() < 1e-15);
+    }
+    assert!(message(w.rational_basis(f64::NAN)).contains("finite"));
+    // rationalPoles with w₁ = −1: one double zero at t = 1/2, direction (0, −1).
+    let poles = splinelab::wasm::rational::rational_poles(
+        arr(&[0.0, 0.0, 2.0, 3.0, 4.0, 0.0]),
+        2.0,
+        arr(&[1.0, -1.0, 1.0]),
+        3.0,
+    )
+    .unwrap();
+    let typed = |key: &str| js_sys::Float64Array::from(get(&poles, key)).to_vec();
+    assert_eq!(typed("roots"), vec![0.5]);
+    assert_eq!(typed("directions"), vec![0.0, -1.0]);
+    assert_eq!(typed("samples").len(), 9);
+    assert!(message(splinelab::wasm::rational::rational_poles(
+        arr(&[0.0, 0.0, 2.0, 3.0, 4.0, 0.0]),
+        2.0,
+        arr(&[0.0, 0.0, 0.0]),
+        3.0,
+    ))
+    .contains("all 3 weights are 0"));
+    assert!(message(splinelab::wasm::rational::rational_poles(
+        arr(&[0.0, 0.0, 2.0, 3.0, 4.0, 0.0]),
+        2.0,
+        JsValue::NULL,
+        3.0,
+    ))
+    .contains("weights"));
+}

@@ -431,7 +431,7 @@ export function setup(ui) {
       return nearestGraph(ui.data.basis.values, ui.state.points.length, SAMPLES, k, y, py, PLOT_HOVER_PX);
     },
     pick: (x, final) => ui.set("t", tAtPixel(x), final),
-    press: () => ui.stopPlayback(),
+    press: () => ui.stop(),
     enter: () => ui.handles.leave(),
     first: true,
   });

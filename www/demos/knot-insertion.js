@@ -6,34 +6,36 @@
  * and the α_i of Boehm's rule are listed. Repeated insertions pull the polygon onto the curve;
  * "Extract Bézier segments" draws each `toBezier()` segment's control polygon.
  *
+ * Boehm's rule for s ∈ [u_k, u_{k+1}): Q_i = P_i (i ≤ k − p), Q_i = P_{i−1} (i ≥ k + 1) and
+ *   Q_i = (1 − α_i) P_{i−1} + α_i P_i,  α_i = (s − u_i) / (u_{i+p} − u_i),  k − p + 1 ≤ i ≤ k.
+ *
  * State: the original points and knots plus the list of inserted knots, so undo, links and
  * files replay the insertions: the curve before the last insertion is `refine(all but the last)`
  * and the shown curve is that one's `insertKnot(last, 1)`. Dragging an original point goes
- * through `setControlPoint` on the original curve; the refined curves are derived data and are
- * asked from the core again per change (like `deCasteljau(t)` in the reference demo).
- *
- * JS does no curve maths: picking the clicked parameter is the nearest of the drawn samples
- * (`sampleUniform`), and the span and the α_i shown are the core's `insertionAlphas(s)` (the core
- * computes the new points itself).
+ * through `setControlPoint` on the original curve; the refined curves are asked from the core
+ * again. JS does no curve maths: a click picks the nearest drawn sample (`sampleUniform`), and
+ * the span and the α shown are the core's `insertionAlphas(s)`.
  */
-import { Handles, placeLabel, HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, pointHandles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkNumbers, checkBoolean } from "../lib/validate.js";
-import { fmt, subscript, simpleFraction, fractionText, fractionTex, degreeName } from "../lib/format.js";
-import { HUES, WIDTH, RADIUS } from "../lib/theme.js";
-import { t } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
+import { field, checkNumber, checkNumbers } from "../lib/validate.js";
+import { slider, checkbox, readout, actions, group } from "../lib/panel.js";
+import { parameterStrip, knotMarks } from "../lib/param-strip.js";
+import { bsplineCurve, domainOf } from "../lib/bspline.js";
+import { knotText } from "../lib/knot-ruler.js";
+import { placeLabel } from "../lib/handles.js";
+import { fmt, subscript, degreeName, parseNumberInput } from "../lib/format.js";
+import { simpleFraction, fractionText, fractionTex } from "../lib/format.js";
+import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
+import { t, tp } from "../lib/strings.js";
+import { boundsOf } from "../lib/geometry.js";
+import { CurvePicker } from "../lib/curve-picker.js";
 import { titledTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
-import { ParameterStrip } from "../lib/param-strip.js";
+import { el, setText } from "../lib/controls.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "knot-insertion";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "knotInsertion";
-export const title = t("knotInsertion.title");
-export const summary = t("knotInsertion.summary");
 /** Syllabus section. */
 export const section = 3;
 
@@ -68,46 +70,49 @@ const GHOST_ALPHA = 0.55;
 const STRIP_PX = 62;
 const STRIP_MARGIN = 34;
 /** Rows of the strip, CSS px below its top at scale 1: u label, axis, knot labels. */
-const STRIP_ROW = Object.freeze({ label: 12, axis: 30, ticks: 48 });
+const ROW = Object.freeze({ label: 12, axis: 30, ticks: 48 });
 /** Half-length of a knot tick (inserted knots: longer), CSS px. */
 const TICK_PX = 6;
 const INSERTED_TICK_PX = 10;
 /** Knot labels closer than this (CSS px) to the previous one are left out. */
 const LABEL_SPACING_PX = 30;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "degree", "knots", "inserted", "u", "bezier"]);
-  checkPoints(state, "points", { min: MIN_DEGREE + 1, max: MAX_POINTS });
-  checkNumber(state, "degree", { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
-  const count = state.points.length;
-  const p = state.degree;
-  if (count < p + 1) throw new Error(t("knotInsertion.error.tooFewPoints", { min: p + 1, p, count }));
-  checkNumbers(state, "knots", { min: count + p + 1, max: count + p + 1 });
-  for (let i = 1; i < state.knots.length; i++) {
-    if (state.knots[i] < state.knots[i - 1]) throw new Error(t("knotInsertion.error.knotOrder", { i }));
-  }
-  const a = state.knots[p];
-  const b = state.knots[count];
-  if (!(a < b)) throw new Error(t("knotInsertion.error.emptyDomain"));
-  checkNumbers(state, "inserted", { min: 0, max: MAX_INSERTED });
-  for (const s of state.inserted) {
-    if (s < a || s > b) throw new Error(t("knotInsertion.error.insertedRange", { value: s, a, b }));
-  }
-  checkNumber(state, "u", { min: a, max: b });
-  checkBoolean(state, "bezier");
-}
+// ------------------------------------------------------------------ the state and its checks
 
-/** A knot or parameter value as text: integers plain, else up to 3 decimals. */
-function knotText(value) {
-  return Number.isInteger(value) ? String(value) : String(Number(value.toFixed(3)));
-}
+const domain = (s) => domainOf(s.knots, s.degree);
 
-/** A number in TeX: a simple fraction when it is one, else 3 decimals. */
-function numberTex(value) {
-  const f = simpleFraction(value);
-  return f ? fractionTex(f) : fmt(value);
-}
+export const fields = {
+  points: field.points({ min: MIN_DEGREE + 1, max: MAX_POINTS }),
+  degree(s, name) {
+    checkNumber(s, name, { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
+    const count = s.points.length;
+    const p = s.degree;
+    if (count < p + 1) throw new Error(t("knotInsertion.error.tooFewPoints", { min: p + 1, p, count }));
+  },
+  knots(s, name) {
+    const m = s.points.length + s.degree + 1;
+    checkNumbers(s, name, { min: m, max: m });
+    for (let i = 1; i < s.knots.length; i++) {
+      if (s.knots[i] < s.knots[i - 1]) throw new Error(t("knotInsertion.error.knotOrder", { i }));
+    }
+    const [a, b] = domain(s);
+    if (!(a < b)) throw new Error(t("knotInsertion.error.emptyDomain"));
+  },
+  inserted(s, name) {
+    checkNumbers(s, name, { min: 0, max: MAX_INSERTED });
+    const [a, b] = domain(s);
+    for (const value of s.inserted) {
+      if (value < a || value > b) throw new Error(t("knotInsertion.error.insertedRange", { value, a, b }));
+    }
+  },
+  u: field.number((s) => {
+    const [min, max] = domain(s);
+    return { min, max };
+  }),
+  bezier: field.boolean(),
+};
+
+// ------------------------------------------------------------------ the curves, from the core
 
 /**
  * The curves a state shows, asked from the core: `previous` before the last insertion
@@ -125,594 +130,407 @@ function deriveCurves(base, inserted) {
   }
 }
 
-/** Frees the derived curves that are not `base`. */
-function freeCurves(curves, base) {
-  if (curves.current !== base) curves.current.free();
-  if (curves.previous !== base) curves.previous.free();
+/** Puts the curves for `inserted` into the model in place: `refined` holds those the model owns. */
+function refineInto(m, inserted) {
+  const next = deriveCurves(m.base, inserted);
+  for (const curve of m.refined) curve.free();
+  m.refined.length = 0;
+  for (const curve of new Set([next.previous, next.current])) if (curve !== m.base) m.refined.push(curve);
+  m.curves.previous = next.previous;
+  m.curves.current = next.current;
+}
+
+/** The original curve and the refined ones; an original point dragged asks for them again. */
+export const derive = {
+  from: ["points", "degree", "knots", "inserted"],
+  build(s, sl) {
+    const m = { base: bsplineCurve(sl, s), refined: [], curves: {} };
+    try {
+      refineInto(m, s.inserted);
+    } catch (err) {
+      m.base.free();
+      throw err;
+    }
+    return m;
+  },
+  moved(m, i, xy, s) {
+    m.base.setControlPoint(i, xy); // in place: the original curve is not rebuilt
+    if (s.inserted.length > 0) refineInto(m, s.inserted);
+  },
+};
+
+/**
+ * The knot s of the last insertion (or the slider's u, as a preview), and from the core's
+ * `insertionAlphas(s)` on the curve before it: its span k and α_i, i = k−p+1 … k. The α are
+ * SHOWN, not used: the new points come from the core's insertKnot.
+ */
+function boehm(s, d) {
+  const preview = s.inserted.length === 0;
+  const at = preview ? s.u : s.inserted[s.inserted.length - 1];
+  const { span: k, alphas: values } = d.curves.previous.insertionAlphas(at);
+  return { preview, s: at, k, alphas: values.map((value, m) => ({ i: k - s.degree + 1 + m, value })) };
+}
+
+/** Each Bézier segment's control points (`toBezier()`), when they are shown. */
+function segments(s, d) {
+  if (!s.bezier) return [];
+  return d.curves.current.toBezier().map((segment) => {
+    const points = segment.controlPoints();
+    segment.free();
+    return points;
+  });
+}
+
+/** A weighted sum of the drawn samples (`data-curve-sum`): insertion must leave it unchanged. */
+function checksum(samples) {
+  let sum = 0;
+  for (let j = 0; j < CURVE_SAMPLES; j++) sum += (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
+  return sum;
+}
+
+const ALL = ["points", "degree", "knots", "inserted"];
+export const compute = {
+  samples: [ALL, (s, d) => d.curves.current.sampleUniform(CURVE_SAMPLES)],
+  curveSum: [ALL, (s, d) => checksum(d.samples)],
+  currentPoints: [ALL, (s, d) => d.curves.current.controlPoints()],
+  previousPoints: [ALL, (s, d) => d.curves.previous.controlPoints()],
+  currentKnots: [ALL, (s, d) => d.curves.current.knots()],
+  previousKnots: [ALL, (s, d) => d.curves.previous.knots()],
+  segments: [[...ALL, "bezier"], segments],
+  marks: [ALL, (s, d) => ({ ...knotMarks(d.currentKnots), inserted: new Set(s.inserted) })],
+  uPoint: [[...ALL, "u"], (s, d) => d.base.evaluate(s.u)],
+  uLabel: [["u"], (s) => `u = ${knotText(s.u)}`],
+  last: [[...ALL, "u"], boehm],
+};
+
+// ------------------------------------------------------------------ the panel and its actions
+
+/** Inserts the knots `more` (once each) after those inserted so far; false when refused. */
+function insertAll(ui, more) {
+  const s = ui.state;
+  if (s.inserted.length + more.length > MAX_INSERTED) {
+    ui.status(t("knotInsertion.maxInserted", { max: MAX_INSERTED }), "error");
+    return;
+  }
+  try {
+    ui.replace({ ...s, inserted: [...s.inserted, ...more] });
+  } catch (err) {
+    ui.status(t("knotInsertion.refused", { message: err.message }), "error");
+  }
+}
+
+/** The midpoint of every non-empty span of the shown curve (one `refine` call). */
+function spanMidpoints(ui) {
+  const knots = ui.data.currentKnots;
+  return Array.from(ui.data.curves.current.spans(), (k) => (knots[k] + knots[k + 1]) / 2);
+}
+
+/** A typed u outside the domain is named as such; other text is no number. */
+function badU(text, s) {
+  const value = parseNumberInput(text);
+  if (!Number.isFinite(value)) return t("control.badNumber", { value: text });
+  const [a, b] = domain(s).map(knotText);
+  return t("knotInsertion.outside", { value: knotText(value), a, b });
+}
+
+const ACTIONS = [
+  {
+    name: "insert", label: "knotInsertion.control.insert", title: "knotInsertion.control.insert.title",
+    run: (ui) => insertAll(ui, [ui.state.u]), disabled: (s) => s.inserted.length >= MAX_INSERTED,
+  },
+  {
+    name: "refine-all", label: "knotInsertion.control.refine", title: "knotInsertion.control.refine.title",
+    run: (ui) => insertAll(ui, spanMidpoints(ui)),
+  },
+  {
+    name: "reset-knots", label: "knotInsertion.control.reset", title: "knotInsertion.control.reset.title",
+    run: (ui) => ui.state.inserted.length > 0 && ui.replace({ ...ui.state, inserted: [] }),
+    disabled: (s) => s.inserted.length === 0,
+  },
+];
+
+/** Control points of the shown curve. */
+const pointCount = (d) => d.currentPoints.length / 2;
+
+export const controls = [
+  parameterStrip("u", {
+    height: STRIP_PX, margin: STRIP_MARGIN, step: U_STEP, range: domain, over: (ui) => ui.data.hover.set(-1),
+  }),
+  group(
+    null,
+    slider("u", { label: "knotInsertion.control.u", range: domain, step: U_STEP, error: badU }),
+    actions(ACTIONS),
+  ),
+  group(
+    null,
+    readout("count", (s, d) => t("knotInsertion.readout", { count: pointCount(d), knots: d.currentKnots.length }), {
+      kind: "readout",
+      live: true,
+      data: (s, d) => ({
+        points: String(pointCount(d)),
+        knots: String(d.currentKnots.length),
+        curveSum: String(d.curveSum),
+      }),
+    }),
+    checkbox("bezier", { label: "knotInsertion.control.bezier" }),
+    readout("segments", (s, d) => {
+      return s.bezier ? tp("knotInsertion.segments", d.segments.length) : t("knotInsertion.segmentsOff");
+    }, { data: (s, d) => ({ segments: s.bezier ? String(d.segments.length) : null }) }),
+  ),
+];
+
+// ------------------------------------------------------------------ the figure
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  insets: scaledInsets(0, 0, STRIP_PX, 0),
+  handles: { field: "points" },
+};
+
+/** The demo's own styles of a theme. */
+const stylesFor = themed((theme) => ({
+  ghost: Object.freeze({ ...theme.polygon, strokeAlpha: GHOST_ALPHA }),
+  strong: Object.freeze({ stroke: theme.text, width: WIDTH.construction, join: "round" }),
+  q: Object.freeze({
+    fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint,
+  }),
+  qNew: Object.freeze({
+    fill: HUES.vermillion, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.pointOnCurve,
+  }),
+  hover: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction, radius: RADIUS.handleHover }),
+  tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
+  insertedTick: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.split }),
+}));
+
+/** "Q₀" … (cached). */
+const qLabels = [];
+const qLabel = (i) => (qLabels[i] ??= `Q${subscript(i)}`);
+
+/**
+ * The polygon before the last insertion ghosted, the curve, the Bézier segments' polygons or
+ * the new polygon Q with the points the insertion made, the handles, where Insert would insert,
+ * the sample under the pointer, and the knot strip.
+ */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const st = stylesFor(theme);
+  const inserted = s.inserted.length > 0;
+  flatPath(r, v, d.previousPoints);
+  r.paint(inserted ? st.ghost : theme.polygon);
+  flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
+  r.paint(theme.curve);
+  const q = d.currentPoints;
+  if (s.bezier) {
+    for (let k = 0; k < d.segments.length; k++) {
+      const pts = d.segments[k];
+      const colour = k % theme.levelStroke.length;
+      flatPath(r, v, pts);
+      r.paint(theme.levelStroke[colour]);
+      const style = theme.levelPoint[colour];
+      for (let j = 0; j < pts.length / 2; j++) r.point(v.sx(pts[2 * j]), v.sy(pts[2 * j + 1]), style);
+    }
+  } else if (inserted) {
+    const count = q.length / 2;
+    flatPath(r, v, q, 0, count);
+    r.paint(st.strong);
+    for (let i = 0; i < count; i++) r.point(v.sx(q[2 * i]), v.sy(q[2 * i + 1]), st.q);
+  }
+  d.handles.draw(r, v);
+  if (!s.bezier && inserted) {
+    const { k } = d.last;
+    for (let i = k - s.degree + 1; i <= k; i++) {
+      const x = v.sx(q[2 * i]);
+      const y = v.sy(q[2 * i + 1]);
+      r.point(x, y, st.qNew);
+      labelOffLeg(r, v, d.previousPoints, qLabel(i), x, y, i, theme.labelPoint, st.qNew.radius * r.scale);
+    }
+  }
+  // Where Insert would insert: C(u) on the curve, a ring (the filled vermillion dots are new points).
+  r.point(v.sx(d.uPoint[0]), v.sy(d.uPoint[1]), st.hover);
+  const hover = d.hover;
+  if (hover.index >= 0 && d.handles.hovered < 0 && d.handles.dragging < 0) {
+    const x = v.sx(d.samples[2 * hover.index]);
+    const y = v.sy(d.samples[2 * hover.index + 1]);
+    r.point(x, y, st.hover);
+    placeLabel(r, hover.label, x, y, 0, -1, st.hover.radius * r.scale, theme.labelPoint);
+  }
+  drawStrip(r, s, d, theme, st);
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * Labels new point Q_i beside the leg P_{i−1}P_i of the polygon before the insertion (Q_i
+ * lies on it), on the side away from the polygon's centroid.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let base = new sl.BSplineCurve(flatten(work.points), 2, work.degree, Float64Array.from(work.knots));
-  let curves = deriveCurves(base, work.inserted);
+function labelOffLeg(r, v, P, text, x, y, i, style, radius) {
+  let nx = v.sy(P[2 * i + 1]) - v.sy(P[2 * i - 1]);
+  let ny = v.sx(P[2 * i]) - v.sx(P[2 * i - 2]);
+  const length = Math.hypot(nx, ny);
+  if (length < 1) {
+    nx = 0;
+    ny = -1;
+  } else {
+    nx /= length;
+    ny /= length;
+  }
+  let cx = 0;
+  let cy = 0;
+  const count = P.length / 2;
+  for (let j = 0; j < count; j++) {
+    cx += v.sx(P[2 * j]);
+    cy += v.sy(P[2 * j + 1]);
+  }
+  const away = (x - cx / count) * nx + (y - cy / count) * ny < 0 ? -1 : 1;
+  placeLabel(r, text, x, y, away * nx, away * ny, radius, style);
+}
 
-  // Derived data, recomputed only when something changed.
-  let geometryDirty = true; // points moved
-  let curvesStale = false; // an original point moved: the refined curves must be asked again
-  let structureDirty = true; // knots or insertions changed
-  let uDirty = true;
-  let samples = null; // current.sampleUniform(CURVE_SAMPLES)
-  let currentPoints = null; // current.controlPoints()
-  let previousPoints = null; // previous.controlPoints()
-  let currentKnots = null;
-  let previousKnots = null;
-  let segments = []; // control points of each toBezier() segment
-  let uPoint = null; // base.evaluate(u): where Insert would insert
-  let last = null; // { s, k, alphas } of the last insertion, or of the slider's u (preview)
-  let distinct = []; // distinct knot values of the current curve
-  let knotLabels = []; // their labels ("0 ×3")
-  const insertedSet = new Set(); // inserted values (strip ticks)
-  const qLabels = []; // "Q₀" …
-  let uLabel = "";
-  let hoverIndex = -1; // the sample under the pointer (click inserts its u)
-  let hoverLabel = "";
-  let styles = null; // per theme, see stylesFor
-  let stylesTheme = null;
+/** The parameter line under the figure: the knots as ticks (inserted ones longer, vermillion) and u. */
+function drawStrip(r, s, d, theme, st) {
+  const strip = d.strip;
+  strip.layout(r.width, r.height, r.scale);
+  const { values, labels, inserted } = d.marks;
+  const isInserted = (j) => inserted.has(values[j]);
+  strip.drawAxis(r, ROW.axis, theme.axis);
+  strip.drawTicks(r, values, ROW.axis, TICK_PX, st.tick, (j) => !isInserted(j));
+  strip.drawTicks(r, values, ROW.axis, INSERTED_TICK_PX, st.insertedTick, isInserted);
+  const labelStyle = (j) => (isInserted(j) ? theme.labelPoint : theme.labelSmall);
+  strip.drawLabels(r, values, labels, ROW.ticks, labelStyle, LABEL_SPACING_PX);
+  strip.drawParameter(r, s.u, d.uLabel, ROW.axis, ROW.label, theme.pointOnCurve, theme.labelPoint);
+}
 
-  // ------------------------------------------------------------ figure
-  // The canvas strip below the world window.
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(0, 0, STRIP_PX, 0) });
+// ------------------------------------------------------------------ formula, lists, table, label
 
-  // The knot strip claims the pointer before the handles: press or drag there to set u.
-  const strip = new ParameterStrip(view, {
-    height: STRIP_PX,
-    margin: STRIP_MARGIN,
-    step: U_STEP,
-    range: () => domain(),
-    pick: (u, final) => setU(u, final),
-    over: () => {
-      handles.leave(); // the pointer left the handles' area (they are not asked while it is here)
-      setHover(-1);
-    },
+/** A number as text (or TeX): a simple fraction when it is one, else 3 decimals. */
+function numberText(value, tex = false) {
+  const f = simpleFraction(value);
+  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(value);
+}
+
+/** Boehm's rule with the live α (the Q values come from the core's new polygon). */
+export function formula(s, d) {
+  const p = s.degree;
+  const { preview, s: at, k, alphas } = d.last;
+  const U = d.previousKnots;
+  const q = d.currentPoints;
+  const alphaTex = alphas.map(({ i, value }) => {
+    const ratio = `\\frac{${knotText(at)} - ${knotText(U[i])}}{${knotText(U[i + p])} - ${knotText(U[i])}}`;
+    return `\\alpha_{${i}} = ${ratio} = ${numberText(value, true)}`;
+  }).join(",\\quad ");
+  const previewTex = preview ? `\\text{${t("knotInsertion.formula.preview")}}\\ ` : "";
+  const spanTex = `[${numberText(U[k], true)}, ${numberText(U[k + 1], true)})`;
+  const lines = [
+    `${previewTex}s = ${numberText(at, true)} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},` +
+      `\\quad k = ${k},\\quad p = ${p}`,
+    `Q_i = P_i\\ (i \\le ${k - p}),\\qquad Q_i = (1-\\alpha_i)\\,P_{i-1} + \\alpha_i\\,P_i` +
+      `\\ (${k - p + 1} \\le i \\le ${k}),\\qquad Q_i = P_{i-1}\\ (i \\ge ${k + 1})`,
+    `\\alpha_i = \\frac{s - u_i}{u_{i+p} - u_i}:\\quad ${alphaTex}`,
+  ];
+  if (!preview) {
+    const terms = alphas.map(({ i, value }) => {
+      const sum = `${numberText(1 - value, true)}\\,P_{${i - 1}} + ${numberText(value, true)}\\,P_{${i}}`;
+      return `Q_{${i}} = ${sum} = (${fmt(q[2 * i])},\\ ${fmt(q[2 * i + 1])})`;
+    });
+    lines.push(terms.join(",\\quad "));
+  }
+  return lines;
+}
+
+/** "quadratic B-spline with 7 control points and 10 knots after inserting u = 1.5 with α = …". */
+export function label(s, d) {
+  const { preview, s: at, alphas } = d.last;
+  return t(preview ? "knotInsertion.ariaNone" : "knotInsertion.aria", {
+    kind: degreeName(s.degree), count: d.currentPoints.length / 2, knots: d.currentKnots.length, s: knotText(at),
+    alphas: alphas.map(({ value }) => fmt(value)).join(", "),
+    segments: s.bezier ? tp("knotInsertion.ariaSegments", d.segments.length) : "",
   });
+}
 
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      base.setControlPoint(i, xy); // in place: the original curve is not rebuilt
-      geometryDirty = curvesStale = true;
-    }),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-  });
+const knotList = (values) => Array.from(values, knotText).join(", ");
 
-  // Clicking (or tapping) the curve inserts the parameter of the nearest drawn sample. The
-  // handles come first, so a press on a control point still drags it.
-  let pressIndex = -1;
-  view.addInteractor({
-    pointerDown(event, x, y) {
-      const j = sampleNear(x, y, event.pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE);
-      if (j < 0) return false;
-      pressIndex = j;
-      setHover(j);
-      return true;
-    },
-    pointerMove() {},
-    pointerUp(event, x, y) {
-      if (pressIndex < 0) return;
-      const j = sampleNear(x, y, event.pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE);
-      const picked = pressIndex;
-      pressIndex = -1;
-      if (j < 0) return; // slid off the curve: no insertion
-      insert(sampleU(picked));
-    },
-    hover(x, y, pointerType) {
-      const j = handles.hovered >= 0 ? -1 : sampleNear(x, y, pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE);
-      setHover(j);
-      return j >= 0 ? "copy" : null;
-    },
-    leave() {
-      setHover(-1);
-    },
-  });
-
-  // ------------------------------------------------------------ side panel
-  const uSlider = slider({
-    label: t("knotInsertion.control.u"),
-    inputLabel: t("knotInsertion.control.u.input"),
-    name: "u",
-    // The typed range is checked against the curve's domain in setU (it changes with the state).
-    min: -1e9,
-    max: 1e9,
-    step: U_STEP,
-    value: work.u,
-    onChange: (value, final) => setU(value, final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const insertButton = button({ label: t("knotInsertion.control.insert"), title: t("knotInsertion.control.insert.title"), name: "insert", onClick: () => insert(work.u) });
-  const refineButton = button({ label: t("knotInsertion.control.refine"), title: t("knotInsertion.control.refine.title"), name: "refine-all", onClick: () => refineAll() });
-  const resetButton = button({ label: t("knotInsertion.control.reset"), title: t("knotInsertion.control.reset.title"), name: "reset-knots", onClick: () => clearInserted() });
-  const bezierBox = checkbox({
-    label: t("knotInsertion.control.bezier"),
-    name: "bezier",
-    checked: work.bezier,
-    onChange: (on) => {
-      work.bezier = on;
-      structureDirty = true;
-      view.requestDraw();
-      ctx.commit(work);
-    },
-  });
-  const countText = el("p", { class: "sl-readout", dataset: { info: "count" }, "aria-live": "polite" });
-  const segmentText = el("p", { class: "sl-note", dataset: { info: "segments" } });
-  ctx.slots.controls.append(
-    group(null, uSlider.element, el("div", { class: "sl-button-row" }, insertButton, refineButton, resetButton)),
-    group(null, countText, bezierBox.element, segmentText),
-  );
-
-  // ------------------------------------------------------------ formula, knot lists and table
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const knotsBefore = el("p", { class: "sl-note", dataset: { info: "knots-before" } });
-  const knotsAfter = el("p", { class: "sl-note", dataset: { info: "knots-after" } });
-  const alphaText = el("p", { class: "sl-note", dataset: { info: "alphas" } });
-  const insertedText = el("p", { class: "sl-note", dataset: { info: "inserted" } });
-  const { title: tableTitle, table, wrap: tableWrap } = titledTable("knot-insertion");
-  ctx.slots.details.append(knotsBefore, knotsAfter, alphaText, insertedText, tableTitle, tableWrap);
-
-  // ------------------------------------------------------------ edits
-
-  /** The domain [u_p, u_{n+1}] of the original knots (insertion never changes it). */
-  function domain() {
-    return [work.knots[work.degree], work.knots[work.points.length]];
-  }
-
-  function setU(value, final) {
-    const [a, b] = domain();
-    if (final && (value < a || value > b)) {
-      ctx.status(t("knotInsertion.outside", { value: knotText(value), a: knotText(a), b: knotText(b) }), "error");
-      uSlider.set(work.u);
-      return;
-    }
-    work.u = Math.min(b, Math.max(a, value));
-    uSlider.set(work.u);
-    uDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  /** Replaces the derived curves after `work.inserted` changed; false (and a message) if refused. */
-  function rederive() {
-    let next;
-    try {
-      next = deriveCurves(base, work.inserted);
-    } catch (err) {
-      ctx.status(t("knotInsertion.refused", { message: err.message }), "error");
-      return false;
-    }
-    freeCurves(curves, base);
-    curves = next;
-    structureDirty = true;
-    view.requestDraw();
-    return true;
-  }
-
-  /** Inserts knot s once (the new curve is the core's `insertKnot(s, 1)`). */
-  function insert(s) {
-    if (work.inserted.length >= MAX_INSERTED) {
-      ctx.status(t("knotInsertion.maxInserted", { max: MAX_INSERTED }), "error");
-      return;
-    }
-    work.inserted.push(s);
-    if (!rederive()) {
-      work.inserted.pop();
-      return;
-    }
-    ctx.commit(work);
-  }
-
-  /** Inserts the midpoint of every non-empty span of the shown curve (one `refine` call). */
-  function refineAll() {
-    const spans = curves.current.spans();
-    const mids = [];
-    for (const k of spans) mids.push((currentKnots[k] + currentKnots[k + 1]) / 2);
-    if (work.inserted.length + mids.length > MAX_INSERTED) {
-      ctx.status(t("knotInsertion.maxInserted", { max: MAX_INSERTED }), "error");
-      return;
-    }
-    const before = work.inserted.length;
-    work.inserted.push(...mids);
-    if (!rederive()) {
-      work.inserted.length = before;
-      return;
-    }
-    ctx.commit(work);
-  }
-
-  function clearInserted() {
-    if (work.inserted.length === 0) return;
-    work.inserted = [];
-    rederive();
-    ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ picking (nearest drawn sample)
-  /** u of uniform sample j (the grid `sampleUniform` uses: ends included, equal steps). */
-  function sampleU(j) {
-    const [a, b] = domain();
-    return a + ((b - a) * j) / (CURVE_SAMPLES - 1);
-  }
-
-  /** Index of the sample nearest to canvas point (x, y) within `radius` px, or -1. */
-  function sampleNear(x, y, radius) {
-    if (!samples) return -1;
-    let best = -1;
-    let bestDistance = radius;
-    for (let j = 0; j < CURVE_SAMPLES; j++) {
-      const d = Math.hypot(view.sx(samples[2 * j]) - x, view.sy(samples[2 * j + 1]) - y);
-      if (d <= bestDistance) {
-        best = j;
-        bestDistance = d;
-      }
-    }
-    return best;
-  }
-
-  function setHover(j) {
-    if (j === hoverIndex) return;
-    hoverIndex = j;
-    hoverLabel = j >= 0 ? t("knotInsertion.hoverLabel", { u: knotText(sampleU(j)) }) : "";
-    view.requestDraw();
-  }
-
-  // ------------------------------------------------------------ knot strip
-  // ------------------------------------------------------------ the core's answers
-  function recompute() {
-    if (curvesStale && work.inserted.length > 0) {
-      // The refined curves follow the dragged original points: asked from the core again.
-      const next = deriveCurves(base, work.inserted);
-      freeCurves(curves, base);
-      curves = next;
-    }
-    curvesStale = false;
-    if (geometryDirty || structureDirty) {
-      const { previous, current } = curves;
-      samples = current.sampleUniform(CURVE_SAMPLES);
-      currentPoints = current.controlPoints();
-      previousPoints = previous.controlPoints();
-      currentKnots = current.knots();
-      previousKnots = previous.knots();
-      segments = [];
-      if (work.bezier) {
-        for (const segment of current.toBezier()) {
-          segments.push(segment.controlPoints());
-          segment.free();
-        }
-      }
-      publishChecksum();
-    }
-    if (structureDirty) {
-      distinct = [];
-      knotLabels = [];
-      for (let i = 0; i < currentKnots.length; i++) {
-        const value = currentKnots[i];
-        if (distinct.length && distinct[distinct.length - 1] === value) continue;
-        let r = 1;
-        while (i + r < currentKnots.length && currentKnots[i + r] === value) r += 1;
-        distinct.push(value);
-        knotLabels.push(r > 1 ? `${knotText(value)} ×${r}` : knotText(value));
-      }
-      insertedSet.clear();
-      for (const s of work.inserted) insertedSet.add(s);
-    }
-    if (geometryDirty || structureDirty || uDirty) {
-      uPoint = base.evaluate(work.u);
-      uLabel = `u = ${knotText(work.u)}`;
-      last = boehmInfo();
-      syncPanels();
-    }
-    geometryDirty = structureDirty = uDirty = false;
-  }
-
-  /**
-   * The knot s of the last insertion (or the slider's u, as a preview), and from the core's
-   * `insertionAlphas(s)` on the curve before it: its span k and α_i = (s − u_i)/(u_{i+p} − u_i),
-   * i = k−p+1 … k. The α are SHOWN, not used: the new points come from the core's insertKnot.
-   */
-  function boehmInfo() {
-    const preview = work.inserted.length === 0;
-    const s = preview ? work.u : work.inserted[work.inserted.length - 1];
-    const { span: k, alphas: values } = curves.previous.insertionAlphas(s);
-    const alphas = values.map((value, m) => ({ i: k - work.degree + 1 + m, value }));
-    return { preview, s, k, alphas };
-  }
-
-  /**
-   * Writes a weighted sum of the drawn samples to the count readout (`data-curve-sum`):
-   * insertion must leave it unchanged up to rounding (a hook for tests and curious readers).
-   */
-  function publishChecksum() {
-    let sum = 0;
-    for (let j = 0; j < CURVE_SAMPLES; j++) sum += (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
-    countText.dataset.curveSum = String(sum);
-  }
-
-  // ------------------------------------------------------------ drawing
-  /** The demo's derived styles of a theme (made once per theme, not per frame). */
-  function stylesFor(theme) {
-    if (stylesTheme !== theme) {
-      stylesTheme = theme;
-      styles = {
-        ghost: Object.freeze({ ...theme.polygon, strokeAlpha: GHOST_ALPHA }),
-        strong: Object.freeze({ stroke: theme.text, width: WIDTH.construction, join: "round" }),
-        q: Object.freeze({ fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint }),
-        qNew: Object.freeze({ fill: HUES.vermillion, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.pointOnCurve }),
-        hover: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction, radius: RADIUS.handleHover }),
-        tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
-        insertedTick: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.split }),
-      };
-    }
-    return styles;
-  }
-
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const st = stylesFor(theme);
-    const inserted = work.inserted.length > 0;
-
-    // The polygon before the last insertion: ghosted (the original one, plain, before any).
-    flatPath(r, v, previousPoints);
-    r.paint(inserted ? st.ghost : theme.polygon);
-
-    // The curve (the same before and after: drawn from the refined curve).
-    flatPath(r, v, samples, 0, CURVE_SAMPLES);
-    r.paint(theme.curve);
-
-    if (work.bezier) {
-      // Each Bézier segment's polygon in the categorical colours.
-      for (let s = 0; s < segments.length; s++) {
-        const pts = segments[s];
-        const colour = s % theme.levelStroke.length;
-        flatPath(r, v, pts);
-        r.paint(theme.levelStroke[colour]);
-        for (let j = 0; j < pts.length / 2; j++) r.point(v.sx(pts[2 * j]), v.sy(pts[2 * j + 1]), theme.levelPoint[colour]);
-      }
-    } else if (inserted) {
-      // The new polygon Q, strong; the points the last insertion made in vermillion.
-      const count = currentPoints.length / 2;
-      flatPath(r, v, currentPoints, 0, count);
-      r.paint(st.strong);
-      for (let i = 0; i < count; i++) r.point(v.sx(currentPoints[2 * i]), v.sy(currentPoints[2 * i + 1]), st.q);
-    }
-
-    handles.draw(r, v);
-
-    if (!work.bezier && inserted) {
-      const { k } = last;
-      const p = work.degree;
-      for (let i = k - p + 1; i <= k; i++) {
-        const x = v.sx(currentPoints[2 * i]);
-        const y = v.sy(currentPoints[2 * i + 1]);
-        r.point(x, y, st.qNew);
-        labelOffLeg(r, v, (qLabels[i] ??= `Q${subscript(i)}`), x, y, i, theme.labelPoint, st.qNew.radius * r.scale);
-      }
-    }
-
-    // Where Insert would insert: C(u) on the curve, a ring (the filled vermillion dots are new points).
-    r.point(v.sx(uPoint[0]), v.sy(uPoint[1]), st.hover);
-
-    // The sample under the pointer: click to insert its u.
-    if (hoverIndex >= 0 && handles.hovered < 0 && handles.dragging < 0) {
-      const x = v.sx(samples[2 * hoverIndex]);
-      const y = v.sy(samples[2 * hoverIndex + 1]);
-      r.point(x, y, st.hover);
-      placeLabel(r, hoverLabel, x, y, 0, -1, st.hover.radius * r.scale, theme.labelPoint);
-    }
-
-    drawStrip(r, theme, st);
-  }
-
-  /**
-   * Labels new point Q_i beside the leg P_{i−1}P_i of the polygon before the insertion (Q_i
-   * lies on it), on the side away from the polygon's centroid.
-   */
-  function labelOffLeg(r, v, text, x, y, i, style, radius) {
-    const P = previousPoints;
-    let nx = v.sy(P[2 * i + 1]) - v.sy(P[2 * i - 1]);
-    let ny = v.sx(P[2 * i]) - v.sx(P[2 * i - 2]);
-    const length = Math.hypot(nx, ny);
-    if (length < 1) {
-      nx = 0;
-      ny = -1;
-    } else {
-      nx /= length;
-      ny /= length;
-    }
-    let cx = 0;
-    let cy = 0;
-    const count = P.length / 2;
-    for (let j = 0; j < count; j++) {
-      cx += v.sx(P[2 * j]);
-      cy += v.sy(P[2 * j + 1]);
-    }
-    if ((x - cx / count) * nx + (y - cy / count) * ny < 0) {
-      nx = -nx;
-      ny = -ny;
-    }
-    placeLabel(r, text, x, y, nx, ny, radius, style);
-  }
-
-  /** The parameter line under the figure: the knots as ticks (inserted ones longer, vermillion) and u. */
-  function drawStrip(r, theme, st) {
-    const s = r.scale;
-    strip.layout(r.width, r.height, s);
-    const top = strip.top;
-    const axisY = top + STRIP_ROW.axis * s;
-    r.beginPath();
-    r.moveTo(strip.x0, axisY);
-    r.lineTo(strip.x1, axisY);
-    r.paint(theme.axis);
-    r.beginPath();
-    for (let j = 0; j < distinct.length; j++) {
-      if (insertedSet.has(distinct[j])) continue;
-      const x = strip.px(distinct[j]);
-      r.moveTo(x, axisY - TICK_PX * s);
-      r.lineTo(x, axisY + TICK_PX * s);
-    }
-    r.paint(st.tick);
-    r.beginPath();
-    for (let j = 0; j < distinct.length; j++) {
-      if (!insertedSet.has(distinct[j])) continue;
-      const x = strip.px(distinct[j]);
-      r.moveTo(x, axisY - INSERTED_TICK_PX * s);
-      r.lineTo(x, axisY + INSERTED_TICK_PX * s);
-    }
-    r.paint(st.insertedTick);
-    let lastLabel = -Infinity;
-    for (let j = 0; j < distinct.length; j++) {
-      const x = strip.px(distinct[j]);
-      const isEnd = j === distinct.length - 1;
-      if (x - lastLabel < LABEL_SPACING_PX * s && !isEnd) continue;
-      if (isEnd && x - lastLabel < LABEL_SPACING_PX * s) continue;
-      r.text(knotLabels[j], x, top + STRIP_ROW.ticks * s, insertedSet.has(distinct[j]) ? theme.labelPoint : theme.labelSmall, "center", "middle");
-      lastLabel = x;
-    }
-    const x = strip.px(work.u);
-    r.point(x, axisY, theme.pointOnCurve);
-    const align = x < strip.x0 + 40 * s ? "left" : x > strip.x1 - 40 * s ? "right" : "center";
-    r.text(uLabel, x, top + STRIP_ROW.label * s, theme.labelPoint, align, "middle");
-  }
-
-  // ------------------------------------------------------------ panels (formula, lists, table, label)
-  function syncPanels() {
-    const p = work.degree;
-    const { preview, s, k, alphas } = last;
-    const U = previousKnots;
-    const sTex = numberTex(s);
-    const count = currentPoints.length / 2;
-
-    // Boehm's rule with the live α (the Q values come from the core's new polygon).
-    const alphaTex = alphas
-      .map(({ i, value }) => `\\alpha_{${i}} = \\frac{${knotText(s)} - ${knotText(U[i])}}{${knotText(U[i + p])} - ${knotText(U[i])}} = ${numberTex(value)}`)
-      .join(",\\quad ");
-    const lines = [
-      `${preview ? `\\text{${t("knotInsertion.formula.preview")}}\\ ` : ""}s = ${sTex} \\in [u_{${k}}, u_{${k + 1}}) = [${numberTex(U[k])}, ${numberTex(U[k + 1])}),\\quad k = ${k},\\quad p = ${p}`,
-      `Q_i = P_i\\ (i \\le ${k - p}),\\qquad Q_i = (1-\\alpha_i)\\,P_{i-1} + \\alpha_i\\,P_i\\ (${k - p + 1} \\le i \\le ${k}),\\qquad Q_i = P_{i-1}\\ (i \\ge ${k + 1})`,
-      `\\alpha_i = \\frac{s - u_i}{u_{i+p} - u_i}:\\quad ${alphaTex}`,
-    ];
-    if (!preview) {
-      const terms = alphas.map(({ i, value }) => `Q_{${i}} = ${numberTex(1 - value)}\\,P_{${i - 1}} + ${numberTex(value)}\\,P_{${i}} = (${fmt(currentPoints[2 * i])},\\ ${fmt(currentPoints[2 * i + 1])})`);
-      lines.push(terms.join(",\\quad "));
-    }
-    formula.set(lines);
-
-    // Knot vectors before/after, the α used, the insertions so far.
-    const list = (values) => Array.from(values, knotText).join(", ");
-    const alphaList = alphas.map(({ i, value }) => {
+/** The knot vectors before and after, the α used, the insertions so far (under the figure). */
+const LISTS = [
+  readout("knots-before", (s, d) => {
+    const { preview, s: at } = d.last;
+    if (preview) return t("knotInsertion.knotsNow", { knots: knotList(d.currentKnots) });
+    return t("knotInsertion.knotsBefore", { s: knotText(at), knots: knotList(d.previousKnots) });
+  }, { data: (s, d) => ({ knots: Array.from(d.previousKnots, knotText).join(",") }) }),
+  readout("knots-after", (s, d) => {
+    if (d.last.preview) return t("knotInsertion.knotsNone");
+    return t("knotInsertion.knotsAfter", { knots: knotList(d.currentKnots) });
+  }, { data: (s, d) => ({ knots: d.last.preview ? "" : Array.from(d.currentKnots, knotText).join(",") }) }),
+  readout("alphas", (s, d) => {
+    const { preview, s: at, alphas } = d.last;
+    const list = alphas.map(({ i, value }) => {
       const f = simpleFraction(value);
       return `α${subscript(i)} = ${f ? `${fractionText(f)} (${fmt(value)})` : fmt(value)}`;
-    });
-    if (preview) {
-      setText(knotsBefore, t("knotInsertion.knotsNow", { knots: list(currentKnots) }));
-      setText(knotsAfter, t("knotInsertion.knotsNone"));
-      setText(alphaText, t("knotInsertion.alphasPreview", { s: knotText(s), alphas: alphaList.join(", ") }));
-    } else {
-      setText(knotsBefore, t("knotInsertion.knotsBefore", { s: knotText(s), knots: list(previousKnots) }));
-      setText(knotsAfter, t("knotInsertion.knotsAfter", { knots: list(currentKnots) }));
-      setText(alphaText, t("knotInsertion.alphasUsed", { alphas: alphaList.join(", ") }));
-    }
-    knotsBefore.dataset.knots = Array.from(previousKnots, knotText).join(",");
-    knotsAfter.dataset.knots = preview ? "" : Array.from(currentKnots, knotText).join(",");
-    alphaText.dataset.alphas = alphas.map(({ value }) => String(value)).join(",");
-    setText(insertedText, work.inserted.length ? t("knotInsertion.insertedList", { count: work.inserted.length, knots: work.inserted.map(knotText).join(", ") }) : t("knotInsertion.insertedNone"));
+    }).join(", ");
+    if (preview) return t("knotInsertion.alphasPreview", { s: knotText(at), alphas: list });
+    return t("knotInsertion.alphasUsed", { alphas: list });
+  }, { data: (s, d) => ({ alphas: d.last.alphas.map(({ value }) => String(value)).join(",") }) }),
+  readout("inserted", (s) => (s.inserted.length
+    ? t("knotInsertion.insertedList", { count: s.inserted.length, knots: s.inserted.map(knotText).join(", ") })
+    : t("knotInsertion.insertedNone"))),
+];
 
-    setText(countText, t("knotInsertion.readout", { count, knots: currentKnots.length }));
-    countText.dataset.points = String(count);
-    countText.dataset.knots = String(currentKnots.length);
-    if (work.bezier) {
-      setText(segmentText, t("knotInsertion.segments", { count: segments.length }));
-      segmentText.dataset.segments = String(segments.length);
-    } else {
-      setText(segmentText, t("knotInsertion.segmentsOff"));
-      delete segmentText.dataset.segments;
-    }
-    resetButton.disabled = work.inserted.length === 0;
-    insertButton.disabled = work.inserted.length >= MAX_INSERTED;
+/**
+ * The lists and the table of the new points Q_i with the rule that made each (values from the
+ * core), and the pointer tool: a click (or tap) on the curve inserts the parameter of the
+ * nearest drawn sample; the handles come first, so a press on a control point still drags it.
+ */
+export function setup(ui) {
+  const lists = LISTS.map((part) => part.build(ui));
+  const { title, table, wrap } = titledTable("knot-insertion");
+  ui.ctx.slots.details.append(...lists.map((part) => part.element), title, wrap);
 
-    view.setLabel(t(preview ? "knotInsertion.ariaNone" : "knotInsertion.aria", {
-      kind: degreeName(p), count, knots: currentKnots.length, s: knotText(s),
-      alphas: alphas.map(({ value }) => fmt(value)).join(", "),
-      segments: work.bezier ? t("knotInsertion.ariaSegments", { count: segments.length }) : "",
-    }));
-
-    // Table: every new point Q_i and the rule that made it (values from the core).
-    setText(tableTitle, preview ? t("knotInsertion.tableEmpty") : t("knotInsertion.tableCaption", { s: knotText(s) }));
-    const rows = [];
-    if (!preview) {
-      for (let i = 0; i < count; i++) {
-        const alpha = alphas.find((a) => a.i === i);
-        const rule = i <= k - p ? `Q${subscript(i)} = P${subscript(i)}` : alpha ? `Q${subscript(i)} = ${numberText(1 - alpha.value)} P${subscript(i - 1)} + ${numberText(alpha.value)} P${subscript(i)}` : `Q${subscript(i)} = P${subscript(i - 1)}`;
-        rows.push(el("tr", { class: alpha ? "sl-highlight" : undefined },
-          el("th", { scope: "row", text: `Q${subscript(i)}` }),
-          el("td", { text: rule }),
-          el("td", { dataset: { index: String(i) }, text: `(${fmt(currentPoints[2 * i])}, ${fmt(currentPoints[2 * i + 1])})` })));
-      }
-    }
-    table.replaceChildren(el("tbody", {}, rows));
-  }
-
-  /** A number as text: a simple fraction when it is one, else 3 decimals. */
-  function numberText(value) {
-    const f = simpleFraction(value);
-    return f ? fractionText(f) : fmt(value);
-  }
-
-  uSlider.range.min = String(domain()[0]);
-  uSlider.range.max = String(domain()[1]);
-  uSlider.set(work.u);
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      // Build everything first: the core may refuse (the shell then keeps the old state).
-      const nextBase = new sl.BSplineCurve(flatten(state.points), 2, state.degree, Float64Array.from(state.knots));
-      let nextCurves;
-      try {
-        nextCurves = deriveCurves(nextBase, state.inserted);
-      } catch (err) {
-        nextBase.free();
-        throw err;
-      }
-      freeCurves(curves, base);
-      base.free();
-      base = nextBase;
-      curves = nextCurves;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      if (handles.selected >= work.points.length) handles.select(-1);
-      strip.dragging = false;
-      pressIndex = -1;
-      hoverIndex = -1;
-      uSlider.range.min = String(domain()[0]);
-      uSlider.range.max = String(domain()[1]);
-      uSlider.set(work.u);
-      bezierBox.set(work.bezier);
-      geometryDirty = structureDirty = uDirty = true;
+  const view = ui.view;
+  const sampleU = (j) => {
+    const [a, b] = domain(ui.state);
+    return a + ((b - a) * j) / (CURVE_SAMPLES - 1);
+  };
+  /** The sample under the pointer (a click inserts its u), shared with draw. */
+  const hover = {
+    index: -1,
+    label: "",
+    set(j) {
+      if (j === hover.index) return;
+      hover.index = j;
+      hover.label = j >= 0 ? t("knotInsertion.hoverLabel", { u: knotText(sampleU(j)) }) : "";
       view.requestDraw();
-      recompute();
     },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      freeCurves(curves, base);
-      base.free();
+  };
+  ui.data.hover = hover;
+  new CurvePicker(view, {
+    samples: () => ui.data.samples,
+    count: CURVE_SAMPLES,
+    press: (j) => hover.set(j),
+    click: (j) => insertAll(ui, [sampleU(j)]),
+    hover: (j) => hover.set(j),
+    ignore: () => ui.handles.hovered >= 0,
+    cursor: "copy",
+  });
+
+  return {
+    update(s, d) {
+      lists.forEach((part) => part.sync(s, d));
+      const { preview, s: at, k, alphas } = d.last;
+      const p = s.degree;
+      const q = d.currentPoints;
+      setText(title, preview ? t("knotInsertion.tableEmpty") : t("knotInsertion.tableCaption", { s: knotText(at) }));
+      const rows = [];
+      for (let i = 0; !preview && i < q.length / 2; i++) {
+        const alpha = alphas.find((a) => a.i === i);
+        const Q = `Q${subscript(i)}`;
+        let rule = `${Q} = P${subscript(i - 1)}`;
+        if (i <= k - p) rule = `${Q} = P${subscript(i)}`;
+        else if (alpha) {
+          const [a, b] = [numberText(1 - alpha.value), numberText(alpha.value)];
+          rule = `${Q} = ${a} P${subscript(i - 1)} + ${b} P${subscript(i)}`;
+        }
+        rows.push(el("tr", { class: alpha ? "sl-highlight" : undefined },
+          el("th", { scope: "row", text: Q }),
+          el("td", { text: rule }),
+          el("td", { dataset: { index: String(i) }, text: `(${fmt(q[2 * i])}, ${fmt(q[2 * i + 1])})` })));
+      }
+      table.replaceChildren(el("tbody", {}, rows));
     },
   };
 }

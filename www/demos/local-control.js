@@ -8,33 +8,51 @@
  * hull (filled), a much smaller region than the hull of the whole polygon (outlined).
  *
  * Everything about the curve comes from the core: the knot vector (`knotVector(…, "clamped")`),
- * the samples (one `sampleUniform` for the curve, one `sample(us)` for the highlighted range,
- * one for the knot points), `span(u)`, `basis(u)` and `evaluate(u)`. JS only adds drawing
- * support: the convex hull polygon of a handful of points (monotone chain, `convexHull` in
- * lib/geometry.js) and the knot strip under the figure (ticks on a line, picked through
- * lib/param-strip.js). Drags go through `setControlPoint`.
+ * the samples (one `sampleUniform` for the curve, one `sample(us)` for the lit range, one for
+ * the knot points), `span(u)`, `basis(u)` and `evaluate(u)`. JS only adds drawing support: the
+ * convex hull polygon of a handful of points (`convexHull`, lib/geometry.js) and the knot strip
+ * under the figure (lib/param-strip.js). Drags go through `setControlPoint`.
  */
-import { Handles, placeLabel, pointHandles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, group, el, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber } from "../lib/validate.js";
-import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex, allIntegers, degreeName } from "../lib/format.js";
-import { CYCLE, WIDTH, RADIUS } from "../lib/theme.js";
-import { t } from "../lib/strings.js";
-import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
-import { withPointAdded, withPointRemoved, pointButtons } from "../lib/point-list.js";
+import { field, checkNumber } from "../lib/validate.js";
+import { slider, readout, pointButtons, group } from "../lib/panel.js";
+import { parameterStrip, knotMarks } from "../lib/param-strip.js";
+import { knotText } from "../lib/knot-ruler.js";
+import { placeLabel } from "../lib/handles.js";
+import { fmt, subscript, exactFraction, exactNumbers, degreeName } from "../lib/format.js";
+import { CYCLE, WIDTH, RADIUS, themed } from "../lib/theme.js";
+import { t, tp } from "../lib/strings.js";
+import { boundsOf, convexHull } from "../lib/geometry.js";
+import { bsplineCurve, clampedKnots } from "../lib/bspline.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
 import { titledTable } from "../lib/table.js";
-import { flatPath } from "../lib/draw.js";
-import { ParameterStrip } from "../lib/param-strip.js";
+import { el, setText } from "../lib/controls.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "local-control";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "localControl";
-export const title = t("localControl.title");
-export const summary = t("localControl.summary");
 /** Syllabus section. */
 export const section = 3;
+
+/** Degrees offered (the clamped knot vector needs at least degree + 1 points). */
+export const MIN_DEGREE = 1;
+export const MAX_DEGREE = 5;
+/** Most control points. */
+export const MAX_POINTS = 14;
+/** Points sampled along the whole curve (one `sampleUniform` call per change). */
+const CURVE_SAMPLES = 241;
+/** Points sampled over the lit range [u_i, u_{i+p+1}] (one `sample(us)` call). */
+const SUPPORT_SAMPLES = 121;
+/** Slider resolution for u. */
+const U_STEP = 0.01;
+/** The knot strip under the figure: height and side margins in CSS px at scale 1. */
+const STRIP_PX = 78;
+const STRIP_MARGIN = 34;
+/** Rows of the strip, CSS px below its top at scale 1: u label, support bar, axis, knot labels. */
+const ROW = Object.freeze({ label: 12, bar: 28, axis: 44, ticks: 62 });
+/** Half-length of a knot tick, CSS px; the span of u is shaded 1.6 times as high. */
+const TICK_PX = 6;
+const SPAN_SHADE = 1.6;
 
 /**
  * Nine integer points and a clamped cubic: knots 0 0 0 0 1 2 3 4 5 6 6 6 6, six spans. P₄ acts
@@ -48,566 +66,323 @@ export const defaultState = Object.freeze({
   point: 4,
 });
 
-/** Degrees offered (the clamped knot vector needs at least degree + 1 points). */
-export const MIN_DEGREE = 1;
-export const MAX_DEGREE = 5;
-/** Most control points. */
-export const MAX_POINTS = 14;
-/** Points sampled along the whole curve (one `sampleUniform` call per change). */
-const CURVE_SAMPLES = 241;
-/** Points sampled over the highlighted range [u_i, u_{i+p+1}] (one `sample(us)` call). */
-const SUPPORT_SAMPLES = 121;
-/** Slider resolution for u. */
-const U_STEP = 0.01;
-/** The knot strip under the figure: height and side margins in CSS px at scale 1. */
-const STRIP_PX = 78;
-const STRIP_MARGIN = 34;
-/** Rows of the strip, CSS px below its top at scale 1: u label, support bar, axis, knot labels. */
-const STRIP_ROW = Object.freeze({ label: 12, bar: 28, axis: 44, ticks: 62 });
-/** Half-length of a knot tick, CSS px. */
-const TICK_PX = 6;
+/** The clamped knots run 0 … n − p + 1: the domain of u ends at (n + 1) − p. */
+const domainEnd = (s) => s.points.length - s.degree;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "degree", "u", "point"]);
-  checkPoints(state, "points", { min: MIN_DEGREE + 1, max: MAX_POINTS });
-  checkNumber(state, "degree", { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
-  const count = state.points.length;
-  if (count < state.degree + 1) throw new Error(t("localControl.error.tooFewPoints", { min: state.degree + 1, p: state.degree, count }));
-  // Clamped knots 0 … n − p + 1: the domain of u.
-  checkNumber(state, "u", { min: 0, max: count - state.degree });
-  checkNumber(state, "point", { min: 0, max: count - 1, integer: true });
+const tooFewPoints = (p, count) => t("localControl.error.tooFewPoints", { min: p + 1, p, count });
+
+export const fields = {
+  points: field.points({ min: MIN_DEGREE + 1, max: MAX_POINTS }),
+  degree(s, name) {
+    checkNumber(s, name, { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
+    if (s.points.length < s.degree + 1) throw new Error(tooFewPoints(s.degree, s.points.length));
+  },
+  u: field.number((s) => ({ min: 0, max: domainEnd(s) })),
+  point: field.number((s) => ({ min: 0, max: s.points.length - 1, integer: true })),
+};
+
+/** After a new degree or point count: u stays in the domain, the lit point in the list. */
+export function adjust(s) {
+  s.u = Math.min(s.u, domainEnd(s));
+  s.point = Math.min(s.point, s.points.length - 1);
 }
 
-/** Product over r = 1..p of lcm(1..r): with integer knot gaps ≤ r at level r, it clears every
- * Cox–de Boor denominator apart from u's own (used to show basis values as exact fractions). */
-function basisDenominator(p) {
-  const lcm = [1, 1, 2, 6, 12, 60];
-  let d = 1;
-  for (let r = 1; r <= p; r++) d *= lcm[r];
-  return d;
+/** The clamped knot vector (the core's), the curve on it and the knots' ticks. */
+export const derive = {
+  from: ["points", "degree"],
+  build(s, sl) {
+    const knots = clampedKnots(sl, s.points, s.degree);
+    const curve = bsplineCurve(sl, { points: s.points, degree: s.degree, knots });
+    return { knots, marks: knotMarks(knots), curve, domain: [0, domainEnd(s)] };
+  },
+  moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
+};
+
+/**
+ * The range P_i acts on, [u_i, u_{i+p+1}], sampled in one `sample(us)` call, and the sums of the
+ * uniform samples inside and outside it (`data-inside-sum`, `data-outside-sum`): moving P_i
+ * must leave the outside sum exactly as it was (a hook for tests and curious readers). The last
+ * span is closed on the right: u = b belongs to a range ending at b.
+ */
+function support(s, d) {
+  const lo = d.knots[s.point];
+  const hi = d.knots[s.point + s.degree + 1];
+  const us = new Float64Array(SUPPORT_SAMPLES);
+  for (let j = 0; j < SUPPORT_SAMPLES; j++) us[j] = lo + ((hi - lo) * j) / (SUPPORT_SAMPLES - 1);
+  const b = domainEnd(s);
+  let inside = 0;
+  let outside = 0;
+  for (let j = 0; j < CURVE_SAMPLES; j++) {
+    const u = (b * j) / (CURVE_SAMPLES - 1);
+    const value = (j + 1) * (d.samples[2 * j] + Math.SQRT2 * d.samples[2 * j + 1]);
+    if (u >= lo && (u < hi || (hi === b && u === b))) inside += value;
+    else outside += value;
+  }
+  const closing = hi === b ? "]" : ")";
+  return { lo, hi, samples: d.curve.sample(us), inside, outside, range: [knotText(lo), `${knotText(hi)}${closing}`] };
 }
 
-/** A knot value as text: integers plain, else up to 3 decimals. */
-function knotText(value) {
-  return Number.isInteger(value) ? String(value) : String(Number(value.toFixed(3)));
+/** The span k of u, the basis there, C(u), the active points P_{k−p} … P_k and their hull. */
+function atU(s, d) {
+  const k = d.curve.span(s.u);
+  const active = [];
+  for (let i = k - s.degree; i <= k; i++) active.push(i);
+  return { k, active, basis: d.curve.basis(s.u), point: d.curve.evaluate(s.u), hull: convexHull(s.points, active) };
+}
+
+/** What the core returns, recomputed when its fields changed. */
+export const compute = {
+  samples: [["points", "degree"], (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
+  joints: [["points", "degree"], (s, d) => d.curve.sample(d.marks.values)],
+  wholeHull: [["points"], (s) => convexHull(s.points)],
+  support: [["points", "degree", "point"], support],
+  at: [["points", "degree", "u"], atU],
+  uLabel: [["u"], (s) => `u = ${knotText(s.u)}`],
+};
+
+/** An integer slider: whole numbers in the box and in the state. */
+const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
+
+const names = (indices) => indices.map((i) => `P${subscript(i)}`).join(", ");
+
+export const controls = [
+  parameterStrip("u", { height: STRIP_PX, margin: STRIP_MARGIN, step: U_STEP, range: (s, d) => d.domain }),
+  group(
+    null,
+    slider("u", { label: "localControl.control.u", range: (s, d) => d.domain, step: U_STEP }),
+    readout("span", (s, d) => t("localControl.readout.span", { k: d.at.k, names: names(d.at.active) }), {
+      kind: "readout",
+      live: true,
+      data: (s, d) => ({
+        span: String(d.at.k),
+        active: d.at.active.join(" "),
+        hullVertices: String(d.at.hull.length),
+        wholeHullVertices: String(d.wholeHull.length),
+      }),
+    }),
+    readout("hull", (s, d) => tp("localControl.readout.hull", d.at.hull.length)),
+  ),
+  group(
+    null,
+    slider("point", { label: "localControl.control.point", range: (s) => [0, s.points.length - 1], ...INTEGER }),
+    readout("support", (s, d) => {
+      const [lo, hi] = d.support.range;
+      return t("localControl.readout.support", { name: `P${subscript(s.point)}`, lo, hi });
+    }, {
+      data: (s, { support: { lo, hi, inside, outside } }) => ({
+        support: `${lo},${hi}`,
+        insideSum: String(inside),
+        outsideSum: String(outside),
+      }),
+    }),
+  ),
+  group(
+    null,
+    slider("degree", {
+      label: "localControl.control.degree",
+      min: MIN_DEGREE,
+      max: MAX_DEGREE,
+      ...INTEGER,
+      onRelease: true,
+      refuse: (p, s) => (s.points.length < p + 1 ? tooFewPoints(p, s.points.length) : null),
+    }),
+    pointButtons("points", {
+      min: (s) => s.degree + 1,
+      max: MAX_POINTS,
+      prefix: strings,
+      minKey: "localControl.error.tooFewPoints",
+      params: (s) => ({ p: s.degree, count: s.points.length - 1 }),
+    }),
+  ),
+];
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  insets: scaledInsets(0, 0, STRIP_PX, 0),
+  handles: {
+    field: "points",
+    // The point in hand is the one whose range is lit; it is recorded with the next change.
+    select(i, ui) {
+      if (i < 0 || i === ui.state.point) return;
+      ui.set("point", i, false);
+      ui.ctx.preview(ui.state);
+    },
+  },
+};
+
+/** The knot joints on the curve and the knot ticks on the strip. */
+const stylesFor = themed((theme) => ({
+  dot: Object.freeze({
+    fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint,
+  }),
+  tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
+}));
+
+/** Adds the closed polygon through `points[indices[…]]` to a new path. */
+function polygonPath(r, v, points, indices) {
+  r.beginPath();
+  for (let k = 0; k < indices.length; k++) {
+    const q = points[indices[k]];
+    if (k === 0) r.moveTo(v.sx(q[0]), v.sy(q[1]));
+    else r.lineTo(v.sx(q[0]), v.sy(q[1]));
+  }
+  r.closePath();
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * The hulls (whole polygon outlined, active points filled), the polygon, the lit range as a
+ * band in P_i's colour, the curve and its knot joints, the handles, C(u) labelled away from the
+ * active points' centre, and the knot strip.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let knots = sl.knotVector(flatten(work.points), 2, work.degree, "clamped");
-  let curve = new sl.BSplineCurve(flatten(work.points), 2, work.degree, knots);
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const styles = stylesFor(theme);
+  const colour = s.point % CYCLE.length;
+  polygonPath(r, v, s.points, d.wholeHull);
+  r.paint(theme.helper);
+  polygonPath(r, v, s.points, d.at.hull);
+  r.paint(theme.helperFill);
+  pointsPath(r, v, s.points);
+  r.paint(theme.polygon);
+  flatPath(r, v, d.support.samples, 0, SUPPORT_SAMPLES);
+  r.paint(theme.basisBand[colour]);
+  flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
+  r.paint(theme.curve);
+  for (let j = 0; j < d.marks.values.length; j++) r.point(v.sx(d.joints[2 * j]), v.sy(d.joints[2 * j + 1]), styles.dot);
+  const lit = s.points[s.point];
+  r.point(v.sx(lit[0]), v.sy(lit[1]), theme.basisRing[colour]);
+  d.handles.draw(r, v);
 
-  // Derived data, recomputed only when something changed.
-  let geometryDirty = true; // points moved
-  let structureDirty = true; // knots, degree or point count changed
-  let supportDirty = true; // the point whose range is shown changed
-  let uDirty = true;
-  let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
-  let supportSamples = null; // curve.sample(supportUs)
-  let knotSamples = null; // curve.sample(distinct knots): the joints of the segments
-  let distinct = new Float64Array(0); // distinct knot values
-  let multiplicity = []; // their multiplicities
-  const supportUs = new Float64Array(SUPPORT_SAMPLES);
-  let supportLo = 0; // u_i
-  let supportHi = 0; // u_{i+p+1}
-  let span = 0; // k with u_k ≤ u < u_{k+1}
-  let basis = null; // curve.basis(u)
-  let point = null; // curve.evaluate(u)
-  let activeHull = []; // hull vertex indices of P_{k−p} … P_k
-  let wholeHull = []; // hull vertex indices of all points
-  let knotLabels = []; // "0 ×4" … per distinct knot
-  let uLabel = "";
-  let knotStyles = null; // per theme: { dot, tick }
-  let knotStylesTheme = null;
+  const px = v.sx(d.at.point[0]);
+  const py = v.sy(d.at.point[1]);
+  r.point(px, py, theme.pointOnCurve);
+  let cx = 0;
+  let cy = 0;
+  for (const i of d.at.active) {
+    cx += v.sx(s.points[i][0]);
+    cy += v.sy(s.points[i][1]);
+  }
+  const dx = px - cx / d.at.active.length;
+  const dy = py - cy / d.at.active.length;
+  const length = Math.hypot(dx, dy);
+  const [ux, uy] = length < 1 ? [0, -1] : [dx / length, dy / length];
+  placeLabel(r, t("localControl.pointLabel"), px, py, ux, uy, theme.pointOnCurve.radius * r.scale, theme.labelPoint);
 
-  // ------------------------------------------------------------ figure
-  // The canvas strip below the world window.
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(0, 0, STRIP_PX, 0) });
+  drawStrip(r, s, d, theme, styles, colour);
+}
 
-  const uRange = [0, 1]; // the strip's [a, b], reused (no allocation per frame)
-  // The knot strip claims the pointer before the handles: press or drag there to set u.
-  const strip = new ParameterStrip(view, {
-    height: STRIP_PX,
-    margin: STRIP_MARGIN,
-    step: U_STEP,
-    range: () => {
-      uRange[1] = domainEnd();
-      return uRange;
-    },
-    pick: (u, final) => setU(u, final),
-    over: () => handles.leave(), // the pointer left the handles' area (they are not asked while it is here)
+/** The parameter line under the figure: the span of u shaded, the lit range as a bar, the knots, u. */
+function drawStrip(r, s, d, theme, styles, colour) {
+  const strip = d.strip;
+  strip.layout(r.width, r.height, r.scale);
+  const shade = TICK_PX * SPAN_SHADE * r.scale;
+  const x0 = strip.px(d.knots[d.at.k]);
+  r.beginPath();
+  r.rect(x0, strip.y(ROW.axis) - shade, strip.px(d.knots[d.at.k + 1]) - x0, 2 * shade);
+  r.paint(theme.helperFill);
+  r.beginPath();
+  r.moveTo(strip.px(d.support.lo), strip.y(ROW.bar));
+  r.lineTo(strip.px(d.support.hi), strip.y(ROW.bar));
+  r.paint(theme.basisBand[colour]);
+  strip.drawAxis(r, ROW.axis, theme.axis);
+  strip.drawTicks(r, d.marks.values, ROW.axis, TICK_PX, styles.tick);
+  strip.drawLabels(r, d.marks.values, d.marks.labels, ROW.ticks, () => theme.labelSmall);
+  strip.drawParameter(r, s.u, d.uLabel, ROW.axis, ROW.label, theme.pointOnCurve, theme.labelPoint);
+}
+
+/**
+ * Product over r = 1..p of lcm(1..r): with integer knot gaps ≤ r at level r, it clears every
+ * Cox–de Boor denominator apart from u's own (used to show basis values as exact fractions).
+ */
+function basisDenominator(p) {
+  const lcm = [1, 1, 2, 6, 12, 60];
+  let den = 1;
+  for (let r = 1; r <= p; r++) den *= lcm[r];
+  return den;
+}
+
+/** Exact text for values at u (fractions when u is simple and the points integers), and den. */
+function numbers(s) {
+  const num = exactNumbers(s.u, s.points.flat());
+  const den = num.exact ? num.exact.den ** s.degree * basisDenominator(s.degree) : 1;
+  return { num, den, value: (x, tex = false) => num.value(x, s.degree, tex, den) };
+}
+
+/** The span of u, the sum over the active points, C(u), the range of P_i and the hull property. */
+export function formula(s, d) {
+  const p = s.degree;
+  const { k, basis, point } = d.at;
+  const i = s.point;
+  const { num, den, value } = numbers(s);
+  const terms = d.at.active.map((j) => `${value(basis[j], true)}\\,P_{${j}}`);
+  const [x, y] = point;
+  const inexact = !Number.isInteger(x) || !Number.isInteger(y);
+  const approx = num.exact && inexact && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
+  const [lo, hi] = d.support.range;
+  const only = t("localControl.formula.only");
+  const vertices = tp("localControl.formula.vertices", d.at.hull.length);
+  const spanTex = `[${knotText(d.knots[k])}, ${knotText(d.knots[k + 1])})`;
+  return [
+    `u = ${num.param(true)} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},\\quad k = ${k},\\quad p = ${p}`,
+    `C(u) = \\sum_{i=k-p}^{k} N_{i,${p}}(u)\\,P_i = ${terms.join(" + ")}`,
+    `C(${num.param(true)}) = \\left(${value(x, true)},\\ ${value(y, true)}\\right) ${approx}`,
+    `N_{${i},${p}}(u) \\ne 0 \\iff u \\in [u_{${i}}, u_{${i + p + 1}}) = [${lo}, ${hi}` +
+      `\\quad\\Rightarrow\\quad \\text{${only}}\\ P_{${i}}`,
+    `C([u_{${k}}, u_{${k + 1}}]) \\subset \\operatorname{conv}\\{P_{${k - p}}, \\dots, P_{${k}}\\}` +
+      `\\quad (${d.at.hull.length}\\ \\text{${vertices}})`,
+  ];
+}
+
+/** "clamped cubic B-spline with 9 control points; P₄ moves only the part for u in [1, 5); …". */
+export function label(s, d) {
+  const [lo, hi] = d.support.range;
+  const { k, active, point, hull } = d.at;
+  return t("localControl.aria", {
+    kind: degreeName(s.degree), count: s.points.length, name: `P${subscript(s.point)}`, lo, hi,
+    u: fmt(s.u), k, names: names(active), x: fmt(point[0], 2), y: fmt(point[1], 2),
+    hull: tp("localControl.vertices", hull.length),
   });
+}
 
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
-      geometryDirty = true;
-    }),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
-    add: (i) => addPoint(i),
-    remove: (i) => removePoint(i),
-    // The point in hand is the one whose range is lit; it is recorded with the next change.
-    select: (i) => {
-      if (i < 0 || i === work.point) return;
-      work.point = i;
-      pointSlider.set(i);
-      supportDirty = true;
-      ctx.preview(work);
-      view.requestDraw();
-    },
-  });
+/** The table: every basis function at u and its support; the p + 1 active rows highlighted. */
+export function setup(ui) {
+  const { title, table, wrap } = titledTable("local-control");
+  ui.ctx.slots.details.append(title, wrap);
+  let shape = "";
+  let rows = [];
 
-  // ------------------------------------------------------------ side panel
-  const uSlider = slider({
-    label: t("localControl.control.u"),
-    inputLabel: t("localControl.control.u.input"),
-    name: "u",
-    min: 0,
-    max: MAX_POINTS - MIN_DEGREE,
-    step: U_STEP,
-    value: work.u,
-    onChange: (value, final) => setU(value, final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const pointSlider = slider({
-    label: t("localControl.control.point"),
-    inputLabel: t("localControl.control.point.input"),
-    name: "point",
-    min: 0,
-    max: MAX_POINTS - 1,
-    step: 1,
-    value: work.point,
-    format: (v) => String(Math.round(v)),
-    onChange: (value, final) => setPoint(Math.round(value), final),
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const degreeSlider = slider({
-    label: t("localControl.control.degree"),
-    inputLabel: t("localControl.control.degree.input"),
-    name: "degree",
-    min: MIN_DEGREE,
-    max: MAX_DEGREE,
-    step: 1,
-    value: work.degree,
-    format: (v) => String(Math.round(v)),
-    onChange: (value, final) => {
-      if (final) setDegree(Math.round(value));
-    },
-    onError: (text) => ctx.status(t("control.badNumber", { value: text }), "error"),
-  });
-  const spanText = el("p", { class: "sl-readout", dataset: { info: "span" }, "aria-live": "polite" });
-  const hullText = el("p", { class: "sl-note", dataset: { info: "hull" } });
-  const supportText = el("p", { class: "sl-note", dataset: { info: "support" } });
-  const { addButton, removeButton } = pointButtons({ add: addPoint, remove: removePoint, selected: () => handles.selected });
-  ctx.slots.controls.append(
-    group(null, uSlider.element, spanText, hullText),
-    group(null, pointSlider.element, supportText),
-    group(null, degreeSlider.element, el("div", { class: "sl-button-row" }, addButton, removeButton)),
-  );
-
-  // ------------------------------------------------------------ formula and table
-  const formula = new FormulaPanel(ctx.slots.formula);
-  const { title: tableTitle, table, wrap: tableWrap } = titledTable("local-control");
-  ctx.slots.details.append(tableTitle, tableWrap);
-  let tableShape = "";
-  let tableRows = []; // per i: { row, value, support }
-
-  // ------------------------------------------------------------ edits
-
-  /** The clamped domain [0, n − p + 1] of the current state. */
-  function domainEnd() {
-    return work.points.length - work.degree;
-  }
-
-  function setU(value, final) {
-    work.u = Math.min(domainEnd(), Math.max(0, value));
-    uSlider.set(work.u);
-    uDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  function setPoint(i, final) {
-    work.point = Math.min(work.points.length - 1, Math.max(0, i));
-    pointSlider.set(work.point);
-    supportDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  function setDegree(p) {
-    if (work.points.length < p + 1) {
-      ctx.status(t("localControl.error.tooFewPoints", { min: p + 1, p, count: work.points.length }), "error");
-      degreeSlider.set(work.degree);
-      return;
-    }
-    work.degree = p;
-    rebuild();
-    ctx.commit(work);
-  }
-
-  /** Builds the wasm curve for the current points and degree (the old one is freed). */
-  function rebuild() {
-    const nextKnots = sl.knotVector(flatten(work.points), 2, work.degree, "clamped");
-    const next = new sl.BSplineCurve(flatten(work.points), 2, work.degree, nextKnots);
-    curve.free();
-    curve = next;
-    knots = nextKnots;
-    work.u = Math.min(work.u, domainEnd());
-    work.point = Math.min(work.point, work.points.length - 1);
-    syncControls();
-    geometryDirty = structureDirty = supportDirty = uDirty = true;
-    view.requestDraw();
-  }
-
-  /** Shows the state's values in the controls (without firing them). */
-  function syncControls() {
-    uSlider.range.max = String(domainEnd());
-    pointSlider.range.max = String(work.points.length - 1);
-    uSlider.set(work.u);
-    pointSlider.set(work.point);
-    degreeSlider.set(work.degree);
-  }
-
-  /** Adds a point after handle i (at the end when none is selected). */
-  function addPoint(i) {
-    const next = withPointAdded(work.points, i, MAX_POINTS, view.scale);
-    if (!next) return ctx.status(t("localControl.maxPoints", { max: MAX_POINTS }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  /** Removes handle i (the last one when none is selected). */
-  function removePoint(i) {
-    const next = withPointRemoved(work.points, i, work.degree + 1);
-    if (!next) return ctx.status(t("localControl.error.tooFewPoints", { min: work.degree + 1, p: work.degree, count: work.points.length - 1 }), "error");
-    work.points = next.points;
-    rebuild();
-    handles.select(next.index);
-    ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ knot strip
-  // ------------------------------------------------------------ the core's answers
-  /** Asks the core for samples, span, basis and point when something changed. */
-  function recompute() {
-    const p = work.degree;
-    const n = work.points.length - 1;
-    if (structureDirty) {
-      // Distinct knots and their multiplicities (for the strip and the joints on the curve).
-      const values = [];
-      multiplicity = [];
-      for (const value of knots) {
-        if (values.length && values[values.length - 1] === value) multiplicity[multiplicity.length - 1] += 1;
-        else {
-          values.push(value);
-          multiplicity.push(1);
-        }
-      }
-      distinct = Float64Array.from(values);
-      knotLabels = values.map((value, j) => (multiplicity[j] > 1 ? `${knotText(value)} ×${multiplicity[j]}` : knotText(value)));
-    }
-    if (structureDirty || supportDirty) {
-      const i = work.point;
-      supportLo = knots[i];
-      supportHi = knots[i + p + 1];
-      for (let j = 0; j < SUPPORT_SAMPLES; j++) supportUs[j] = supportLo + ((supportHi - supportLo) * j) / (SUPPORT_SAMPLES - 1);
-    }
-    if (geometryDirty || structureDirty) {
-      samples = curve.sampleUniform(CURVE_SAMPLES);
-      knotSamples = curve.sample(distinct);
-      const all = [];
-      for (let i = 0; i <= n; i++) all.push(i);
-      wholeHull = convexHull(work.points, all);
-    }
-    if (geometryDirty || structureDirty || supportDirty) {
-      supportSamples = curve.sample(supportUs); // the whole highlighted range in one call
-      publishChecksums();
-    }
-    if (geometryDirty || structureDirty || uDirty) {
-      span = curve.span(work.u);
-      basis = curve.basis(work.u);
-      point = curve.evaluate(work.u);
-      const active = [];
-      for (let i = span - p; i <= span; i++) active.push(i);
-      activeHull = convexHull(work.points, active);
-      uLabel = `u = ${knotText(work.u)}`;
-    }
-    if (geometryDirty || structureDirty || supportDirty || uDirty) syncPanels();
-    geometryDirty = structureDirty = supportDirty = uDirty = false;
-  }
-
-  /**
-   * Writes weighted sums of the uniform samples inside and outside the lit range to the span
-   * readout (`data-inside-sum`, `data-outside-sum`): moving P_i must leave the outside sum
-   * exactly as it was (a hook for tests and curious readers).
-   */
-  function publishChecksums() {
-    const [a, b] = [0, domainEnd()];
-    // The last span is closed on the right: the point u = b belongs to a range ending at b.
-    let inside = 0;
-    let outside = 0;
-    for (let j = 0; j < CURVE_SAMPLES; j++) {
-      const u = a + ((b - a) * j) / (CURVE_SAMPLES - 1);
-      const value = (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
-      const within = u >= supportLo && (u < supportHi || (supportHi === b && u === b));
-      if (within) inside += value;
-      else outside += value;
-    }
-    supportText.dataset.support = `${supportLo},${supportHi}`;
-    supportText.dataset.insideSum = String(inside);
-    supportText.dataset.outsideSum = String(outside);
-  }
-
-  // ------------------------------------------------------------ drawing
-  /** The knot dot and tick styles of a theme (made once per theme, not per frame). */
-  function stylesFor(theme) {
-    if (knotStylesTheme !== theme) {
-      knotStylesTheme = theme;
-      knotStyles = {
-        dot: Object.freeze({ fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint }),
-        tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
-      };
-    }
-    return knotStyles;
-  }
-
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const styles = stylesFor(theme);
-    const pts = work.points;
-    const n = pts.length - 1;
-    const colour = work.point % CYCLE.length;
-
-    // The hull of the whole polygon (outline only) and the hull of the active points (filled).
-    polygonPath(r, v, wholeHull);
-    r.paint(theme.helper);
-    polygonPath(r, v, activeHull);
-    r.paint(theme.helperFill);
-
-    // Control polygon.
-    r.beginPath();
-    for (let i = 0; i <= n; i++) {
-      if (i === 0) r.moveTo(v.sx(pts[i][0]), v.sy(pts[i][1]));
-      else r.lineTo(v.sx(pts[i][0]), v.sy(pts[i][1]));
-    }
-    r.paint(theme.polygon);
-
-    // The range P_i acts on: a band in P_i's colour under the curve, from one sample(us) call.
-    flatPath(r, v, supportSamples, 0, SUPPORT_SAMPLES);
-    r.paint(theme.basisBand[colour]);
-
-    // The curve.
-    flatPath(r, v, samples, 0, CURVE_SAMPLES);
-    r.paint(theme.curve);
-
-    // The joints C(u_j) at the distinct knots.
-    for (let j = 0; j < distinct.length; j++) r.point(v.sx(knotSamples[2 * j]), v.sy(knotSamples[2 * j + 1]), styles.dot);
-
-    // A ring in the same colour around the point whose range is lit.
-    r.point(v.sx(pts[work.point][0]), v.sy(pts[work.point][1]), theme.basisRing[colour]);
-    handles.draw(r, v);
-
-    // C(u), labelled on the side away from the active hull's centre.
-    const px = v.sx(point[0]);
-    const py = v.sy(point[1]);
-    r.point(px, py, theme.pointOnCurve);
-    let cx = 0;
-    let cy = 0;
-    for (let i = span - work.degree; i <= span; i++) {
-      cx += v.sx(pts[i][0]);
-      cy += v.sy(pts[i][1]);
-    }
-    cx /= work.degree + 1;
-    cy /= work.degree + 1;
-    let dx = px - cx;
-    let dy = py - cy;
-    const length = Math.hypot(dx, dy);
-    if (length < 1) {
-      dx = 0;
-      dy = -1;
-    } else {
-      dx /= length;
-      dy /= length;
-    }
-    placeLabel(r, t("localControl.pointLabel"), px, py, dx, dy, theme.pointOnCurve.radius * r.scale, theme.labelPoint);
-
-    drawStrip(r, theme, styles, colour);
-  }
-
-  /** Adds the closed polygon through points `indices` to the path. */
-  function polygonPath(r, v, indices) {
-    r.beginPath();
-    for (let k = 0; k < indices.length; k++) {
-      const q = work.points[indices[k]];
-      if (k === 0) r.moveTo(v.sx(q[0]), v.sy(q[1]));
-      else r.lineTo(v.sx(q[0]), v.sy(q[1]));
-    }
-    r.closePath();
-  }
-
-  /** The parameter line under the figure: knots as ticks, the lit range, the span of u, u. */
-  function drawStrip(r, theme, styles, colour) {
-    const s = r.scale;
-    strip.layout(r.width, r.height, s);
-    const top = strip.top;
-    const axisY = top + STRIP_ROW.axis * s;
-    // The span of u, shaded like the active hull.
-    r.beginPath();
-    r.rect(strip.px(knots[span]), axisY - TICK_PX * 1.6 * s, strip.px(knots[span + 1]) - strip.px(knots[span]), TICK_PX * 3.2 * s);
-    r.paint(theme.helperFill);
-    // The range of P_i, as a bar in its colour.
-    r.beginPath();
-    r.moveTo(strip.px(supportLo), top + STRIP_ROW.bar * s);
-    r.lineTo(strip.px(supportHi), top + STRIP_ROW.bar * s);
-    r.paint(theme.basisBand[colour]);
-    // The axis and the knots.
-    r.beginPath();
-    r.moveTo(strip.x0, axisY);
-    r.lineTo(strip.x1, axisY);
-    r.paint(theme.axis);
-    r.beginPath();
-    for (let j = 0; j < distinct.length; j++) {
-      const x = strip.px(distinct[j]);
-      r.moveTo(x, axisY - TICK_PX * s);
-      r.lineTo(x, axisY + TICK_PX * s);
-    }
-    r.paint(styles.tick);
-    for (let j = 0; j < distinct.length; j++) r.text(knotLabels[j], strip.px(distinct[j]), top + STRIP_ROW.ticks * s, theme.labelSmall, "center", "middle");
-    // u itself.
-    const x = strip.px(work.u);
-    r.point(x, axisY, theme.pointOnCurve);
-    const align = x < strip.x0 + 40 * s ? "left" : x > strip.x1 - 40 * s ? "right" : "center";
-    r.text(uLabel, x, top + STRIP_ROW.label * s, theme.labelPoint, align, "middle");
-  }
-
-  // ------------------------------------------------------------ panels (formula, table, label)
-  function syncPanels() {
-    if (!basis) return;
-    const pts = work.points;
-    const p = work.degree;
-    const n = pts.length - 1;
-    const k = span;
-    const i = work.point;
-
-    // Exact fractions when u is a simple fraction and the points are integers (knots always are).
-    const uFraction = simpleFraction(work.u);
-    const exact = uFraction && allIntegers(pts.flat()) ? uFraction : null;
-    const den = exact ? exact.den ** p * basisDenominator(p) : 0;
-    const valueTex = (value) => {
-      const f = exact ? exactFraction(value, den) : null;
-      return f ? fractionTex(f) : fmt(value);
-    };
-    const valueText = (value) => {
-      const f = exact ? exactFraction(value, den) : null;
-      return f ? fractionText(f) : fmt(value);
-    };
-    const uTex = exact ? fractionTex(exact) : fmt(work.u);
-
-    const activeNames = [];
-    const terms = [];
-    for (let j = k - p; j <= k; j++) {
-      activeNames.push(`P${subscript(j)}`);
-      terms.push(`${valueTex(basis[j])}\\,P_{${j}}`);
-    }
-    const x = point[0];
-    const y = point[1];
-    const coords = `\\left(${valueTex(x)},\\ ${valueTex(y)}\\right)`;
-    const approx = exact && (!Number.isInteger(x) || !Number.isInteger(y)) && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
-    const lo = knotText(supportLo);
-    const hi = knotText(supportHi);
-    const closing = supportHi === domainEnd() ? "]" : ")";
-    formula.set([
-      `u = ${uTex} \\in [u_{${k}}, u_{${k + 1}}) = [${knotText(knots[k])}, ${knotText(knots[k + 1])}),\\quad k = ${k},\\quad p = ${p}`,
-      `C(u) = \\sum_{i=k-p}^{k} N_{i,${p}}(u)\\,P_i = ${terms.join(" + ")}`,
-      `C(${uTex}) = ${coords} ${approx}`,
-      `N_{${i},${p}}(u) \\ne 0 \\iff u \\in [u_{${i}}, u_{${i + p + 1}}) = [${lo}, ${hi}${closing}\\quad\\Rightarrow\\quad \\text{${t("localControl.formula.only")}}\\ P_{${i}}`,
-      `C([u_{${k}}, u_{${k + 1}}]) \\subset \\operatorname{conv}\\{P_{${k - p}}, \\dots, P_{${k}}\\}\\quad (${activeHull.length}\\ \\text{${t("localControl.formula.vertices")}})`,
-    ]);
-
-    setText(spanText, t("localControl.readout.span", { k, names: activeNames.join(", ") }));
-    setText(hullText, t("localControl.readout.hull", { hull: activeHull.length }));
-    spanText.dataset.span = String(k);
-    spanText.dataset.active = activeNames.map((_, j) => k - p + j).join(" ");
-    spanText.dataset.hullVertices = String(activeHull.length);
-    spanText.dataset.wholeHullVertices = String(wholeHull.length);
-    supportText.textContent = t("localControl.readout.support", { name: `P${subscript(i)}`, lo, hi: `${hi}${closing}` });
-    view.setLabel(t("localControl.aria", {
-      kind: degreeName(p), count: n + 1, name: `P${subscript(i)}`, lo, hi: `${hi}${closing}`,
-      u: fmt(work.u), k, names: activeNames.join(", "), x: fmt(x, 2), y: fmt(y, 2), hull: activeHull.length,
-    }));
-    addButton.disabled = n + 1 >= MAX_POINTS;
-    removeButton.disabled = n + 1 <= p + 1;
-
-    // Table: every basis function at u and its support; the active ones highlighted.
-    const shape = `${n}/${p}`;
-    if (tableShape !== shape) buildTable(n);
-    tableTitle.textContent = t("localControl.tableCaption", { u: exact ? fractionText(exact) : fmt(work.u), p });
-    for (let j = 0; j <= n; j++) {
-      const rowData = tableRows[j];
-      setText(rowData.value, valueText(basis[j]));
-      const end = knots[j + p + 1] === domainEnd() ? "]" : ")";
-      setText(rowData.support, `[${knotText(knots[j])}, ${knotText(knots[j + p + 1])}${end}`);
-      rowData.row.classList.toggle("sl-highlight", j >= k - p && j <= k);
-      rowData.row.dataset.active = String(j >= k - p && j <= k);
-    }
-  }
-
-  /** Rebuilds the table's rows for n + 1 points (only when the count or degree changed). */
-  function buildTable(n) {
-    tableShape = `${n}/${work.degree}`;
-    tableRows = [];
+  function build(n, p) {
+    shape = `${n}/${p}`;
     const head = el("tr", {},
       el("th", { scope: "col", text: t("localControl.table.point") }),
-      el("th", { scope: "col", text: t("localControl.table.value", { p: subscript(work.degree) }) }),
+      el("th", { scope: "col", text: t("localControl.table.value", { p: subscript(p) }) }),
       el("th", { scope: "col", text: t("localControl.table.support") }));
-    const rows = [];
+    rows = [];
     for (let j = 0; j <= n; j++) {
       const value = el("td", { dataset: { index: String(j), column: "value" } });
-      const support = el("td", { dataset: { index: String(j), column: "support" } });
-      const row = el("tr", {}, el("th", { scope: "row", text: `P${subscript(j)}` }), value, support);
-      tableRows.push({ row, value, support });
-      rows.push(row);
+      const range = el("td", { dataset: { index: String(j), column: "support" } });
+      const row = el("tr", {}, el("th", { scope: "row", text: `P${subscript(j)}` }), value, range);
+      rows.push({ row, value, range });
     }
-    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
+    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((row) => row.row)));
   }
 
-  syncControls();
-  recompute();
-
-  // ------------------------------------------------------------ contract
   return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      const nextKnots = sl.knotVector(flatten(state.points), 2, state.degree, "clamped");
-      const next = new sl.BSplineCurve(flatten(state.points), 2, state.degree, nextKnots); // throws before anything changes
-      curve.free();
-      curve = next;
-      knots = nextKnots;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      if (handles.selected >= work.points.length) handles.select(-1);
-      strip.dragging = false;
-      syncControls();
-      geometryDirty = structureDirty = supportDirty = uDirty = true;
-      view.requestDraw();
-      recompute();
-    },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      curve.free();
+    update(s, d) {
+      const n = s.points.length - 1;
+      const p = s.degree;
+      if (shape !== `${n}/${p}`) build(n, p);
+      const { num, value } = numbers(s);
+      setText(title, t("localControl.tableCaption", { u: num.param(), p }));
+      const { k, basis } = d.at;
+      for (let j = 0; j <= n; j++) {
+        const row = rows[j];
+        const end = d.knots[j + p + 1] === domainEnd(s) ? "]" : ")";
+        setText(row.value, value(basis[j]));
+        setText(row.range, `[${knotText(d.knots[j])}, ${knotText(d.knots[j + p + 1])}${end}`);
+        row.row.classList.toggle("sl-highlight", j >= k - p && j <= k);
+        row.row.dataset.active = String(j >= k - p && j <= k);
+      }
     },
   };
 }

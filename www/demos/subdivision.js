@@ -149,11 +149,11 @@ export const controls = [
       min: 0,
       max: 1,
       step: T_SLIDER_STEP,
-      player: () => ({
+      player: {
         playable: false,
-        stepBackTitle: t("subdivision.control.stepBack.title"),
-        stepTitle: t("subdivision.control.stepForward.title"),
-      }),
+        stepBackTitle: "subdivision.control.stepBack.title",
+        stepTitle: "subdivision.control.stepForward.title",
+      },
     }),
     checkbox("triangle", { label: "subdivision.control.triangle" }),
   ),

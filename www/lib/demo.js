@@ -8,10 +8,11 @@
  * |---|---|
  * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
  * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
+ * | `adjust(state)` | optional: after a change by the reader (`ui.set`, `ui.replace`), brings fields that depend on others back into range in place (u into a domain that shrank with the degree) |
  * | `derive` | `{ from: [fields], build(state, sl, { first }) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line; `first` at mount, where there is no last good state to keep); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
  * | `compute` | `{ name: [[fields], (state, data, ui) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
  * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]`. With several fields, `field: [a, b]`, the handles run over the lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays); `accept` may refuse a move before that. `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
+ * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state), select?(i, ui), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (`select` hears the handle selected, -1 for none). With several fields, `field: [a, b]`, the handles run over the lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays); `accept` may refuse a move before that. `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
  * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
  * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
  * | `label(state, data)` | optional: the figure's accessible name |
@@ -94,6 +95,7 @@ export function mountDeclared(demo, initialState, ctx) {
     set(field, value, final = true, merge = null) {
       work[field] = value;
       markChanged(field);
+      adjust(work);
       if (final) ctx.commit(work, merge);
     },
     /**
@@ -117,6 +119,7 @@ export function mountDeclared(demo, initialState, ctx) {
     commit: (merge = null) => ctx.commit(work, merge),
     /** Replaces the whole working state (after an add/remove): the model is rebuilt first. */
     replace(next, final = true) {
+      demo.adjust?.(next);
       const nextModel = derive.build(next, sl); // throws before anything changes
       swapModel(nextModel);
       work = next;
@@ -127,9 +130,17 @@ export function mountDeclared(demo, initialState, ctx) {
     },
     status: ctx.status,
     requestDraw: () => view.requestDraw(),
-    /** Stops the controls' animations (a tool of `setup` takes the parameter over). */
-    stopPlayback: () => built.forEach((control) => control.stop?.()),
+    /** Stops every control's animation (a press in the figure takes the parameter over). */
+    stop: () => built.forEach((control) => control.stop?.()),
   };
+
+  /** `demo.adjust` on the working state; the fields it changed are marked. */
+  function adjust(state) {
+    if (!demo.adjust) return;
+    const before = { ...state };
+    demo.adjust(state);
+    for (const name of Object.keys(state)) if (state[name] !== before[name]) markChanged(name);
+  }
 
   function markChanged(field) {
     if (changed) changed.add(field);
@@ -240,6 +251,7 @@ export function mountDeclared(demo, initialState, ctx) {
       ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
       polygon: handleSpec.polygon,
       constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
+      select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
       commit: (kind, i, merge) => ctx.commit(work, merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => i < listed() && ui.pointList?.remove(i),

@@ -9,6 +9,7 @@
 import { slider as sliderElement, checkbox as checkboxElement, radios, button, group as fieldset, el, setText } from "./controls.js";
 import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
+import { parseNumberInput } from "./format.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -31,9 +32,8 @@ function fragment(...nodes) {
  * @param {boolean} [o.log] logarithmic slider; its `aria-valuetext` is the real value.
  * @param {(v: number) => string} [o.format] text in the box.
  * @param {(v: number, typed: boolean) => number} [o.round] the value kept from a slider move.
- * @param {boolean | object | () => object} [o.player] add the step / play buttons (Player
- *   options if an object, or a function returning them, called at build time so that their
- *   strings follow the language).
+ * @param {boolean | object} [o.player] add the step / play buttons (Player options if an
+ *   object; `stepBackTitle` / `stepTitle` are strings.js keys, resolved at build time).
  * @param {string | ((text: string, state) => string)} [o.error] key of the message for typed
  *   text that is out of range (given `{ value, min, max, field }`), or the message itself.
  * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
@@ -43,6 +43,11 @@ function fragment(...nodes) {
  * @param {(ui, value: number, final: boolean) => void} [o.set] instead of `ui.set(field, value,
  *   final)`, for a change that implies others or may be refused (e.g. through `ui.replace`);
  *   after a final change the slider shows the field's value again.
+ * @param {boolean} [o.onRelease] apply the value only when the slider is released or a value is
+ *   typed, not while it is dragged (a field that rebuilds the model, such as the degree).
+ * @param {(v: number, state) => string | null} [o.refuse] the message when the state cannot
+ *   take the value (then it is reported and the slider shows the field again), else null.
+ * `o.player`'s `stepBackTitle` / `stepTitle` are strings.js keys.
  */
 export function slider(field, o) {
   return {
@@ -84,8 +89,11 @@ export function slider(field, o) {
         },
       });
       if (o.player) {
+        const options = typeof o.player === "object" ? o.player : {};
         player = new Player(ui.view, {
-          ...(typeof o.player === "function" ? o.player() : typeof o.player === "object" ? o.player : {}),
+          ...options,
+          stepBackTitle: options.stepBackTitle ? t(options.stepBackTitle) : undefined,
+          stepTitle: options.stepTitle ? t(options.stepTitle) : undefined,
           get: () => ui.state[field],
           set: (value, final) => ui.set(field, value, final),
           stopped: () => ui.commit(),
@@ -124,13 +132,15 @@ export function checkbox(field, { label, name = field }) {
 }
 
 /**
- * One choice out of a few, bound to a string field: radio buttons (`data-control=name`, each row
- * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels. `set(ui,
+ * One choice out of a few, bound to a field: radio buttons (`data-control=name`, each row
+ * `data-choice=value`). `options`: `[{ value, label }]` with strings.js keys as labels; values
+ * may be numbers (a degree), shown as text. `refuse(value, state)` → a message when the state
+ * cannot take the value (reported; the buttons show the field again), else null. `set(ui,
  * value)` as for `slider` (then the buttons show the field's value again). `rebuild: true`: a
  * choice the model is built from (a rule it enforces on the state): the new state is built
  * first (`ui.replace`) and recorded only when the core accepts it.
  */
-export function choice(field, { options, name = field, set = null, rebuild = false }) {
+export function choice(field, { options, name = field, refuse = null, set = null, rebuild = false }) {
   return {
     build(ui) {
       const choose = (value) => {
@@ -148,16 +158,19 @@ export function choice(field, { options, name = field, set = null, rebuild = fal
         }
       };
       const control = radios({
-        options: options.map((option) => ({ value: option.value, label: t(option.label) })),
-        value: ui.state[field],
+        options: options.map((option) => ({ value: String(option.value), label: t(option.label) })),
+        value: String(ui.state[field]),
         name,
-        onChange: (value) => {
-          if (!set) return choose(value);
-          set(ui, value);
-          control.set(ui.state[field]);
+        onChange: (text) => {
+          const value = options.find((option) => String(option.value) === text).value;
+          const refusal = refuse?.(value, ui.state);
+          if (refusal) ui.status(refusal, "error");
+          else if (set) set(ui, value);
+          else return choose(value);
+          control.set(String(ui.state[field]));
         },
       });
-      return { element: control.element, sync: (state) => control.set(state[field]) };
+      return { element: control.element, sync: (state) => control.set(String(state[field])) };
     },
   };
 }
@@ -165,15 +178,21 @@ export function choice(field, { options, name = field, set = null, rebuild = fal
 /**
  * The Add point / Remove point buttons (and `+` / Delete on the figure) for the handles' point
  * list: the new list is built into a new model first (`ui.replace`), then the handle is selected.
- * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints`. The buttons are disabled at
- * the limits (`min` may be a function of the state: a B-spline needs p + 1 points; the messages
- * also get the state's fields, e.g. `{degree}`). `adjust(state, ui) → state` fixes what follows
- * from the new list (a lower degree, clamped knots) before the model is built. `more`: further
- * buttons in the same row, as `actions` takes them. `companions: { weights: 1 }` names lists
- * with one entry per point (a rational curve's weights): a new point gets the value given, a
- * removed point takes its entry along.
+ * A full or minimal list reports `<prefix>.maxPoints` / `.minPoints` (or the keys `maxKey` /
+ * `minKey`, with `params(state)` added to `{ max }` / `{ min }`). The buttons are disabled at the
+ * limits. `min` may be a function of the state (a B-spline of degree p needs p + 1 points).
+ * `apply(ui, points) → boolean` replaces `ui.replace` when the new list changes more (knots
+ * reset); or `adjust(state, ui) → state` amends the new state before `ui.replace`. `more`: extra
+ * buttons `[{ name, label, title?, run(ui) }]` in the row; `addTitle` / `removeTitle` are keys
+ * of the tooltips. The messages also get the state's fields as parameters. `companions:
+ * { weights: 1 }` names lists with one entry per point (a rational curve's weights): a new
+ * point gets the value given, a removed point takes its entry along.
  */
-export function pointButtons(field, { min, max, prefix, adjust = null, more = [], companions = {} }) {
+export function pointButtons(field, o) {
+  const { min, max, prefix, minKey = `${prefix}.minPoints`, maxKey = `${prefix}.maxPoints`, params = () => ({}) } = o;
+  const { addTitle = "control.addPoint.title", removeTitle = "control.removePoint.title", adjust = null, more = [] } = o;
+  const { companions = {} } = o;
+  const least = typeof min === "function" ? min : () => min;
   return {
     build(ui) {
       /** Copies of the companion lists with their value inserted at `at` (`insert`), or entry `at` removed. */
@@ -186,41 +205,44 @@ export function pointButtons(field, { min, max, prefix, adjust = null, more = []
         }
         return lists;
       };
-      const apply = (next, lists = {}) => {
-        let state = { ...ui.state, ...lists, [field]: next.points };
+      const replace = (points, lists) => {
+        let state = { ...ui.state, ...lists, [field]: points };
         if (adjust) state = adjust(state, ui);
         try {
           ui.replace(state);
+          return true;
         } catch (err) {
           ui.status(err.message, "error");
-          return;
+          return false;
         }
-        ui.handles?.select(next.index);
       };
-      const lowest = () => (typeof min === "function" ? min(ui.state) : min);
-      const refuse = (kind, limit) => ui.status(t(`${prefix}.${kind}Points`, { ...ui.state, [kind]: limit }), "error");
+      const apply = (next, lists = {}) => {
+        const done = o.apply ? o.apply(ui, next.points) : replace(next.points, lists);
+        if (done) ui.handles?.select(next.index);
+      };
+      const refuse = (key, limits) => ui.status(t(key, { ...ui.state, ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
           if (next) apply(next, alongside(next.index, true));
-          else refuse("max", max);
+          else refuse(maxKey, { max });
         },
         remove(i) {
-          const next = withPointRemoved(ui.state[field], i, lowest());
+          const next = withPointRemoved(ui.state[field], i, least(ui.state));
           if (next) apply(next, alongside(pointIndex(ui.state[field], i), false));
-          else refuse("min", lowest());
+          else refuse(minKey, { min: least(ui.state) });
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
-      const addButton = button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => ui.pointList.add(selected()) });
-      const removeButton = button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
+      const addButton = button({ label: t("control.addPoint"), title: t(addTitle), name: "add-point", onClick: () => ui.pointList.add(selected()) });
+      const removeButton = button({ label: t("control.removePoint"), title: t(removeTitle), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
       const others = more.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
       return {
         element: el("div", { class: "sl-button-row" }, addButton, removeButton, ...others),
         sync(state) {
           const count = state[field].length;
           addButton.disabled = count >= max;
-          removeButton.disabled = count <= lowest();
+          removeButton.disabled = count <= least(state);
         },
       };
     },
@@ -247,7 +269,10 @@ export function readout(name, text, { kind = "note", live = false, data = null }
           if (!data) return;
           const attributes = data(state, values);
           for (const key of keys) if (!(key in attributes)) delete node.dataset[key];
-          Object.assign(node.dataset, attributes);
+          for (const [key, value] of Object.entries(attributes)) {
+            if (value === null || value === undefined) delete node.dataset[key];
+            else node.dataset[key] = value;
+          }
           keys = Object.keys(attributes);
         },
       };
@@ -287,6 +312,49 @@ export function actions(list, { title = null } = {}) {
           list.forEach((a, k) => {
             if (a.disabled) buttons[k].disabled = Boolean(a.disabled(state, data));
           });
+        },
+      };
+    },
+  };
+}
+
+/**
+ * A typed list of numbers bound to a field (a knot vector): a labelled text box
+ * (`data-control=name`) showing `state[field]` as `format(v)` joined by spaces, and a help line
+ * `help(state)` under it. Enter (or leaving the box) reads numbers or fractions separated by
+ * spaces, commas or semicolons; a part that is no number is reported (`control.badNumber`), else
+ * `apply(ui, values)` (default `ui.set(field, values)`) gets the list. The box is not rewritten
+ * while it has the focus.
+ */
+export function numberList(field, { label, name = field, format = String, help = null, apply = null }) {
+  return {
+    build(ui) {
+      const id = `sl-${name}-${Math.random().toString(36).slice(2, 8)}`;
+      const input = el("input", {
+        type: "text", id, class: "sl-value sl-wide", inputmode: "decimal", spellcheck: "false",
+        "aria-describedby": help ? `${id}-help` : null,
+      });
+      const note = help ? el("p", { class: "sl-note", id: `${id}-help` }) : null;
+      const read = () => {
+        const parts = input.value.trim().split(/[\s,;]+/).filter(Boolean);
+        const values = parts.map(parseNumberInput);
+        const bad = parts.find((part, i) => !Number.isFinite(values[i]));
+        if (bad !== undefined) ui.status(t("control.badNumber", { value: bad }), "error");
+        else if (apply) apply(ui, values);
+        else ui.set(field, values);
+      };
+      input.addEventListener("change", read);
+      input.addEventListener("keydown", (event) => {
+        if (event.key === "Enter") read();
+      });
+      const focused = () => document.activeElement === input || input.getRootNode().activeElement === input;
+      const row = el("div", { class: "sl-control", dataset: { control: name } }, el("label", { for: id, text: t(label) }), input);
+      return {
+        element: fragment(row, ...(note ? [note] : [])),
+        sync(state) {
+          const text = state[field].map(format).join(" ");
+          if (input.value !== text && !focused()) input.value = text;
+          if (note) setText(note, help(state));
         },
       };
     },

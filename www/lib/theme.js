@@ -178,3 +178,20 @@ export function onThemeChange(callback) {
 export function prefersReducedMotion() {
   return typeof matchMedia === "function" && matchMedia("(prefers-reduced-motion: reduce)").matches;
 }
+
+/**
+ * A demo's own styles derived from a theme, made once per theme (never per frame):
+ * `const stylesFor = themed((theme) => ({ tick: Object.freeze({ stroke: theme.text, … }) }));`
+ * then `stylesFor(r.theme).tick` in `draw`.
+ */
+export function themed(make) {
+  const cache = new WeakMap();
+  return (theme) => {
+    let styles = cache.get(theme);
+    if (!styles) {
+      styles = Object.freeze(make(theme));
+      cache.set(theme, styles);
+    }
+    return styles;
+  };
+}

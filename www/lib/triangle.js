@@ -41,9 +41,10 @@ export class LevelLabels {
 /**
  * Draws levels 1 … n − 1 of `triangle` (flat [x, y, …]) with their points, and labels them
  * with `labels.get(i, level)` when `labels` is given. `centre` is [x, y] in canvas px: labels go
- * on the side away from it (the centroid of the control points).
+ * on the side away from it (the centroid of the control points). With a `placer`
+ * (LegLabelPlacer, its `points` set to the control points) labels also keep clear of each other.
  */
-export function drawLevels(r, v, triangle, n, centre, labels = null) {
+export function drawLevels(r, v, triangle, n, centre, labels = null, placer = null) {
   const theme = r.theme;
   let offset = n + 1; // level 1 starts after the n + 1 points of level 0
   for (let level = 1; level < n; level++) {
@@ -62,7 +63,10 @@ export function drawLevels(r, v, triangle, n, centre, labels = null) {
       const x = v.sx(triangle[2 * (offset + j)]);
       const y = v.sy(triangle[2 * (offset + j) + 1]);
       r.point(x, y, style);
-      if (labels) legLabel(r, v, triangle, n, level, j, labels.get(j, level), centre, theme.labelSmall, style.radius * r.scale);
+      if (!labels) continue;
+      const text = labels.get(j, level);
+      if (placer) placer.place(r, v, triangle, n, level, j, text, centre, theme.labelSmall, style.radius * r.scale, placer.points);
+      else legLabel(r, v, triangle, n, level, j, text, centre, theme.labelSmall, style.radius * r.scale);
     }
     offset += count;
   }
@@ -73,6 +77,19 @@ export function drawLevels(r, v, triangle, n, centre, labels = null) {
  * `level` − 1 that it divides, on the side away from `centre`.
  */
 export function legLabel(r, v, triangle, n, level, j, text, centre, style, radius) {
+  legNormal(v, triangle, n, level, j, centre, normal);
+  placeLabel(r, text, normal[2], normal[3], normal[0], normal[1], radius, style);
+}
+
+/** Scratch of `legNormal`: [nx, ny, x, y]. */
+const normal = new Float64Array(4);
+
+/**
+ * Writes into `out` the unit normal (canvas px) of the leg of level `level` − 1 that point j
+ * of `level` divides, turned away from `centre` (above left for a degenerate leg), and the
+ * point's canvas position: [nx, ny, x, y].
+ */
+function legNormal(v, triangle, n, level, j, centre, out) {
   const p = levelStart(n, level) + j;
   const x = v.sx(triangle[2 * p]);
   const y = v.sy(triangle[2 * p + 1]);
@@ -87,11 +104,12 @@ export function legLabel(r, v, triangle, n, level, j, text, centre, style, radiu
     nx /= length;
     ny /= length;
   }
-  if ((x - centre[0]) * nx + (y - centre[1]) * ny < 0) {
-    nx = -nx;
-    ny = -ny;
-  }
-  placeLabel(r, text, x, y, nx, ny, radius, style);
+  const away = (x - centre[0]) * nx + (y - centre[1]) * ny < 0 ? -1 : 1;
+  out[0] = away * nx;
+  out[1] = away * ny;
+  out[2] = x;
+  out[3] = y;
+  return out;
 }
 
 /** Writes the canvas-px centroid of `points` ([[x, y], …]) into `out` and returns it. */
@@ -105,4 +123,78 @@ export function screenCentroid(v, points, out) {
   out[0] = cx / points.length;
   out[1] = cy / points.length;
   return out;
+}
+
+/**
+ * Candidate label directions around a construction point, as (normal, leg) components and a
+ * bonus in px for the plain normals; a label's centre is probed `LABEL_PROBE_PX` from its point.
+ */
+const LABEL_DIRECTIONS = Object.freeze([
+  1, 0, 4, -1, 0, 4,
+  Math.SQRT1_2, Math.SQRT1_2, 0, Math.SQRT1_2, -Math.SQRT1_2, 0,
+  -Math.SQRT1_2, Math.SQRT1_2, 0, -Math.SQRT1_2, -Math.SQRT1_2, 0,
+]);
+const LABEL_PROBE_PX = 14;
+
+/**
+ * Leg labels that keep clear of each other (the de Boor triangle, where legs cross): of six
+ * directions (the leg's two normals and the four diagonals between normal and leg), the one
+ * whose label centre keeps farthest from the other triangle points, the control points and the
+ * labels already placed in this frame wins, the normals slightly preferred; the side away from
+ * `centre` breaks ties. `reset()` at the start of each frame; nothing is allocated per label.
+ */
+export class LegLabelPlacer {
+  /** @param {number} capacity most labels remembered per frame. */
+  constructor(capacity = 32) {
+    this.placed = new Float64Array(2 * capacity);
+    this.count = 0;
+  }
+
+  reset() {
+    this.count = 0;
+  }
+
+  /**
+   * Labels point j of level `level` (≥ 1) of a triangle whose level 0 has n + 1 points, keeping
+   * clear of `points` ([[x, y], …] world) too.
+   */
+  place(r, v, triangle, n, level, j, text, centre, style, radius, points) {
+    const self = levelStart(n, level) + j;
+    legNormal(v, triangle, n, level, j, centre, normal);
+    const nx = normal[0];
+    const ny = normal[1];
+    const x = normal[2];
+    const y = normal[3];
+    const lx = -ny; // the leg's direction
+    const ly = nx;
+    const reach = radius + LABEL_PROBE_PX * r.scale;
+    const all = levelStart(n, n + 1);
+    let bestX = nx;
+    let bestY = ny;
+    let bestScore = -Infinity;
+    for (let c = 0; c < LABEL_DIRECTIONS.length; c += 3) {
+      const dx = LABEL_DIRECTIONS[c] * nx + LABEL_DIRECTIONS[c + 1] * lx;
+      const dy = LABEL_DIRECTIONS[c] * ny + LABEL_DIRECTIONS[c + 1] * ly;
+      const qx = x + dx * reach;
+      const qy = y + dy * reach;
+      let score = Infinity;
+      for (let k = 0; k < all; k++) {
+        if (k !== self) score = Math.min(score, Math.hypot(v.sx(triangle[2 * k]) - qx, v.sy(triangle[2 * k + 1]) - qy));
+      }
+      for (const [px, py] of points) score = Math.min(score, Math.hypot(v.sx(px) - qx, v.sy(py) - qy));
+      for (let k = 0; k < this.count; k++) score = Math.min(score, Math.hypot(this.placed[2 * k] - qx, this.placed[2 * k + 1] - qy));
+      score += LABEL_DIRECTIONS[c + 2] * r.scale;
+      if (score > bestScore) {
+        bestScore = score;
+        bestX = dx;
+        bestY = dy;
+      }
+    }
+    if (this.count < this.placed.length / 2) {
+      this.placed[2 * this.count] = x + bestX * reach;
+      this.placed[2 * this.count + 1] = y + bestY * reach;
+      this.count += 1;
+    }
+    placeLabel(r, text, x, y, bestX, bestY, radius, style);
+  }
 }

@@ -84,7 +84,8 @@ export function checkWindow(win) {
  *   export const fields = { points: field.points({ min: 2, max: 11 }), t: field.number({ min: 0, max: 1 }) };
  */
 export const field = Object.freeze({
-  number: (options) => (state, name) => checkNumber(state, name, options),
+  /** `options` may be a function of the state: `field.number((s) => ({ min: 0, max: s.points.length - 1 }))`. */
+  number: (options) => (state, name) => checkNumber(state, name, typeof options === "function" ? options(state) : options),
   boolean: () => (state, name) => checkBoolean(state, name),
   choice: (choices) => (state, name) => checkChoice(state, name, choices),
   points: (options) => (state, name) => checkPoints(state, name, options),
