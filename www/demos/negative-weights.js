@@ -407,11 +407,11 @@ export function formula(s, d) {
   const w1 = s.w1;
   const tx = (key) => `\\text{${t(`negativeWeights.tex.${key}`)}}`;
   const product = 1 / (2 * (1 - w1)); // t(1 − t) at a zero of w(t)
-  const root = Math.sqrt(Math.max(0, 1 - 4 * product)) / 2;
+  const { ts, count } = d.poles; // the core's roots (a double one at w₁ = −1)
   const zeros =
-    w1 <= -1
+    w1 <= -1 && count > 0
       ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm ` +
-        `\\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(0.5 - root)},\\ ${fmt(0.5 + root)}\\quad${tx("poles")}`
+        `\\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(ts[0])},\\ ${fmt(ts[count - 1])}\\quad${tx("poles")}`
       : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad` +
         `${tx("noPole")} w(t) = 0 ${tx("needs")} w_1 \\le -1\\text{)}`;
   const middle = d.middle ? `(${fmt(d.middle[0])},\\ ${fmt(d.middle[1])})` : "\\infty";
