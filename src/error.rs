@@ -140,23 +140,16 @@ pub enum Error {
     },
 }
 
-/// A number inside an error message, printed the way the caller's language prints it: in the wasm
-/// build by JavaScript's `String(x)` (`Infinity`, `1e-7`, `0.1`), natively by Rust's `{}`
-/// (`inf`, `0.0000001`, `0.1`). Every `f64` in a message goes through this, which also keeps
-/// Rust's float-printing code (~20 KB) out of the wasm.
+/// A number inside an error message, printed as JavaScript's `String(x)` prints it
+/// (`Infinity`, `1e-7`, `0.1`) on every target (see [`crate::platform::number_text`]), so a
+/// message is the same natively and in the browser. In the wasm build this also keeps Rust's
+/// float-printing code (~20 KB) out of the module.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Num(pub f64);
 
 impl fmt::Display for Num {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        #[cfg(target_arch = "wasm32")]
-        {
-            f.write_str(&crate::wasm::number_text(self.0))
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            fmt::Display::fmt(&self.0, f)
-        }
+        f.write_str(&crate::platform::number_text(self.0))
     }
 }
 

@@ -1,6 +1,6 @@
 //! The JavaScript boundary, in Node: bad input becomes a thrown `Error` with a clear message,
 //! never a trap, and the wrappers return the flat layouts the README documents.
-#![cfg(target_arch = "wasm32")]
+#![cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 
 use splinelab::wasm::{self, JsBezierCurve};
 use wasm_bindgen::{JsCast, JsError, JsValue};

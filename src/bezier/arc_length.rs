@@ -575,7 +575,7 @@ pub fn arc_lengths<C: Cartesian>(
 mod tests {
     use super::*;
     #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::platform::test;
 
     /// Gauss–Legendre by Newton's method on `P_n` in f64 (as `gauss_legendre` above), sorted
     /// like the tables: positive nodes, largest first.

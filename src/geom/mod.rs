@@ -402,18 +402,10 @@ pub fn check_dim(dim: usize) -> Result<usize> {
     }
 }
 
-/// `(sin x, cos x)`. The wasm build asks JavaScript's `Math.sin` and `Math.cos` (V8 uses the
-/// same fdlibm algorithms as Rust's libm), which keeps a second copy of them (~7 KB with the
-/// argument reduction) out of the wasm; natively it is [`f64::sin_cos`].
+/// `(sin x, cos x)`: JavaScript's `Math.sin`/`Math.cos` in the browser build, [`f64::sin_cos`]
+/// elsewhere (see [`crate::platform::sin_cos`]).
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
-    #[cfg(target_arch = "wasm32")]
-    {
-        crate::wasm::js_sin_cos(x)
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        x.sin_cos()
-    }
+    crate::platform::sin_cos(x)
 }
 
 /// Binomial coefficient `C(n, k)` as `f64` (exact for the degrees curves use).
@@ -429,7 +421,7 @@ pub fn binomial(n: usize, k: usize) -> f64 {
 mod tests {
     use super::*;
     #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::platform::test;
 
     #[test]
     fn binomial_matches_pascal() {

@@ -243,31 +243,6 @@ pub(crate) fn check_count(count: usize) -> Result<(), Error> {
     Ok(())
 }
 
-#[cfg(target_arch = "wasm32")]
-#[wasm_bindgen]
-extern "C" {
-    /// JavaScript's `String(x)` for a number.
-    #[wasm_bindgen(js_name = String)]
-    fn js_string(x: f64) -> String;
-    #[wasm_bindgen(js_namespace = Math, js_name = sin)]
-    fn js_sin(x: f64) -> f64;
-    #[wasm_bindgen(js_namespace = Math, js_name = cos)]
-    fn js_cos(x: f64) -> f64;
-}
-
-/// `(Math.sin(x), Math.cos(x))`: see [`crate::geom::sin_cos`].
-#[cfg(target_arch = "wasm32")]
-pub(crate) fn js_sin_cos(x: f64) -> (f64, f64) {
-    (js_sin(x), js_cos(x))
-}
-
-/// `x` as JavaScript prints it (`String(x)`): the numbers in error messages (see
-/// [`crate::error::Num`]).
-#[cfg(target_arch = "wasm32")]
-pub(crate) fn number_text(x: f64) -> String {
-    js_string(x)
-}
-
 /// The crate version, e.g. `"0.1.0"`.
 #[wasm_bindgen]
 pub fn version() -> String {

@@ -4,13 +4,9 @@
 
 use splinelab::{DVec2, DVec3};
 
-/// How error messages print infinity: JavaScript's `String(Infinity)` in the wasm build, Rust's
-/// `{}` natively (see `splinelab::error` on numbers in messages).
-pub const INFINITY_TEXT: &str = if cfg!(target_arch = "wasm32") {
-    "Infinity"
-} else {
-    "inf"
-};
+/// How error messages print infinity: as JavaScript's `String(Infinity)`, on every target (see
+/// `splinelab::error` on numbers in messages).
+pub const INFINITY_TEXT: &str = "Infinity";
 
 /// Asserts `|a − b| <= tol`, printing both values and the difference.
 #[track_caller]
