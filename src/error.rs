@@ -9,26 +9,28 @@ use std::fmt;
 /// is always the same one for the same input.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Error {
-    /// `dim` is not 2 or 3: `BezierCurve::from_flat(&[0.0; 4], 4, None)`.
+    /// `dim` is not 2 or 3: `geom::check_dim(4)`, or `new BezierCurve(points, 4)` from JavaScript.
     InvalidDimension {
         /// The dimension that was given.
         dim: usize,
     },
-    /// The flat coordinate array does not split into whole points.
+    /// The flat coordinate array does not split into whole points:
+    /// `BezierCurve::<DVec2>::from_flat(&[0.0, 0.0, 1.0], None)`.
     CoordinateCount {
         /// Number of coordinates given.
         count: usize,
         /// Dimension of one point.
         dim: usize,
     },
-    /// A coordinate, weight, parameter or tolerance is NaN or infinite.
+    /// A coordinate, weight, parameter or tolerance is NaN or infinite:
+    /// `BezierCurve::<DVec2>::from_flat(&[0.0, f64::NAN, 1.0, 1.0], None)`.
     NotFinite {
         /// What the number is ("coordinate 3", "t", "weight 1").
         what: String,
         /// The offending value.
         value: f64,
     },
-    /// Not enough control points for the requested object.
+    /// Not enough control points for the requested object: `BezierCurve::new(vec![p], None)`.
     TooFewPoints {
         /// Minimum number of points needed.
         needed: usize,
@@ -37,21 +39,21 @@ pub enum Error {
         /// What needs them ("a Bézier curve").
         what: &'static str,
     },
-    /// Wrong number of weights.
+    /// Wrong number of weights: `BezierCurve::new(two_points, Some(&[1.0]))`.
     WeightCount {
         /// Number of control points (= number of weights expected).
         expected: usize,
         /// Number of weights given.
         got: usize,
     },
-    /// A weight is zero or negative.
+    /// A weight is zero or negative: `BezierCurve::new(two_points, Some(&[1.0, 0.0]))`.
     NonPositiveWeight {
         /// Index of the weight.
         index: usize,
         /// Its value.
         value: f64,
     },
-    /// A parameter lies outside the curve's domain.
+    /// A parameter lies outside the curve's domain: `bezier.evaluate(1.5)`.
     ParameterOutOfRange {
         /// Name of the parameter ("t", "u").
         name: &'static str,
@@ -62,35 +64,52 @@ pub enum Error {
         /// End of the domain.
         max: f64,
     },
-    /// A control point index is out of range.
+    /// A control point index is out of range: `cubic.set_control_point(5, p)`.
     IndexOutOfRange {
         /// The index given.
         index: usize,
         /// Number of control points.
         count: usize,
     },
-    /// A point argument has the wrong number of coordinates.
+    /// A point argument has the wrong number of coordinates: `curve2d.setControlPoint(0, [1, 2, 3])`
+    /// from JavaScript.
     PointDimension {
         /// Expected number of coordinates.
         expected: usize,
         /// Number given.
         got: usize,
     },
-    /// A tolerance is not a positive finite number, or is too small to honour.
+    /// A tolerance is not a finite number > 0: `curve.flatten(0.0)`.
     InvalidTolerance {
         /// The tolerance given.
         value: f64,
-        /// Why it was rejected.
-        reason: String,
     },
-    /// An interval `[a, b]` is empty or reversed.
+    /// A flattening tolerance below rounding at the curve's size: `curve.flatten(1e-20)` on a
+    /// curve of size 10.
+    ToleranceTooSmall {
+        /// The tolerance given.
+        value: f64,
+        /// The smallest tolerance allowed, relative to the size (`BezierCurve::flatten`'s
+        /// `MIN_RELATIVE_TOLERANCE`).
+        relative: f64,
+        /// The diagonal of the control points' bounding box.
+        size: f64,
+    },
+    /// Flattening found no piece flat enough within the tolerance before the parameter step
+    /// reached rounding: a guard that keeps `flatten` from looping; no input is known to reach
+    /// it, because [`Error::ToleranceTooSmall`] rejects such tolerances first.
+    FlatteningStalled {
+        /// The tolerance given.
+        value: f64,
+    },
+    /// An interval `[a, b]` is empty or reversed: `curve.with_interval(2.0, 1.0)`.
     InvalidInterval {
         /// Start.
         a: f64,
         /// End.
         b: f64,
     },
-    /// An argument that must be one of a few words was something else.
+    /// An argument that must be one of a few words was something else: `KnotKind::parse("even")`.
     UnknownOption {
         /// Argument name.
         name: &'static str,
@@ -99,12 +118,283 @@ pub enum Error {
         /// The accepted values.
         expected: &'static str,
     },
-    /// Two objects that must match (dimension, joint) do not.
-    Mismatch {
-        /// What does not match, with numbers.
-        message: String,
+    /// Wraps an error raised while reading a named argument (`knotsU`, `us[3]`), so the message
+    /// says which one: `BSplineSurface::from_flat(…, knots_u = &[0.0, 1.0], …)` gives
+    /// "knotsU: knot vector must have …". [`std::error::Error::source`] returns the cause.
+    InArgument {
+        /// The argument's name ("knotsU", "degreeU (rows along u)", "us").
+        name: &'static str,
+        /// The element of the argument, when the argument is a list (`us[3]`).
+        index: Option<usize>,
+        /// What went wrong with it.
+        source: Box<Error>,
     },
-    /// A count (samples, degree, segments) exceeds a documented cap.
+    /// A knot vector of the wrong length: `KnotVector::new(vec![0.0; 8], 3, 5)` (5 points of
+    /// degree 3 need n+p+2 = 9 knots).
+    KnotCount {
+        /// `n + p + 2`.
+        expected: usize,
+        /// Number of knots given.
+        got: usize,
+        /// Number of control points `n + 1`.
+        points: usize,
+        /// The degree `p`.
+        degree: usize,
+    },
+    /// Knots that decrease: `KnotVector::new(vec![0.0, 0.0, 2.0, 1.0], 1, 2)`.
+    KnotOrder {
+        /// Index `i` of the first knot smaller than its predecessor.
+        index: usize,
+        /// `u_i`.
+        value: f64,
+        /// `u_{i−1}`.
+        previous: f64,
+    },
+    /// An empty domain `[u_p, u_{n+1}]`: `KnotVector::new(vec![0.0, 1.0, 1.0, 2.0], 1, 2)`.
+    EmptyDomain {
+        /// `u_p`.
+        a: f64,
+        /// `u_{n+1}`.
+        b: f64,
+        /// The degree `p`.
+        degree: usize,
+        /// Number of control points `n + 1` (the index of `u_{n+1}`).
+        points: usize,
+    },
+    /// A knot repeated more than `p + 1` times:
+    /// `KnotVector::new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3)`.
+    KnotMultiplicity {
+        /// The repeated knot.
+        knot: f64,
+        /// How many times it appears.
+        multiplicity: usize,
+        /// Index of its first copy.
+        first: usize,
+        /// Index of its last copy.
+        last: usize,
+        /// The degree `p`.
+        degree: usize,
+    },
+    /// Knot insertion past multiplicity `p + 1`: `curve.insert_knot(u, 5)` on a cubic.
+    InsertionMultiplicity {
+        /// The parameter's name for a surface (`"u"`, `"v"`), `None` for a curve.
+        name: Option<&'static str>,
+        /// The knot inserted.
+        knot: f64,
+        /// How many copies were asked for.
+        times: usize,
+        /// The multiplicity it would reach.
+        multiplicity: usize,
+        /// The degree `p`.
+        degree: usize,
+    },
+    /// Degree 0 where a curve needs at least 1: `BSplineCurve::new(points, 0, …)`.
+    DegreeZero {},
+    /// A degree outside `1..=max`: `uniformSegmentMatrix(0)` from JavaScript.
+    DegreeOutOfRange {
+        /// The degree given.
+        degree: usize,
+        /// The largest degree allowed.
+        max: usize,
+    },
+    /// Fewer than `p + 1` control points: `BSplineCurve::new(three_points, 3, …)`.
+    TooFewPointsForDegree {
+        /// The degree `p`.
+        degree: usize,
+        /// Number of control points given.
+        got: usize,
+    },
+    /// Two consecutive points coincide, so chord or centripetal spacing has a zero step:
+    /// `parameterize(&[p, p, q], Parameterization::Chord)`.
+    CoincidentPoints {
+        /// Index `i` of the first of the two points `P_i = P_{i+1}`.
+        index: usize,
+        /// The spacing asked for.
+        kind: crate::bspline::Parameterization,
+    },
+    /// Phantom end points need an odd degree: `phantom_points(&points, 2)`.
+    PhantomEvenDegree {
+        /// The degree given.
+        degree: usize,
+    },
+    /// A span index that is not a non-empty span of the domain: `curve.segment_matrix(0, true)`
+    /// on a clamped cubic (whose first span is 3).
+    NotASpan {
+        /// The span asked for.
+        span: usize,
+        /// The non-empty spans of the domain.
+        valid: Vec<usize>,
+    },
+    /// Joining rules are for polynomial pieces: `join(&rational, &right, JoinRule::C1, true)`.
+    RationalJoin {},
+    /// Pieces of too low degree for a joining rule: `join(&line, &line, JoinRule::C2, true)`.
+    JoinDegree {
+        /// The rule.
+        rule: crate::bezier::JoinRule,
+        /// Degree `n` of the left piece.
+        left: usize,
+        /// Degree `m` of the right piece.
+        right: usize,
+        /// The degree each piece needs (= points of the right piece the rule fixes).
+        needed: usize,
+    },
+    /// G1 needs a tangent at the joint: `join(&left, &right, JoinRule::G1, true)` where the left
+    /// piece's last two points coincide.
+    NoJointTangent {},
+    /// A composite curve with a wrong number of breakpoints:
+    /// `CompositeCurve::new(two_pieces, &[0.0, 1.0])`.
+    BreakpointCount {
+        /// Number of pieces (the breakpoints needed are one more).
+        pieces: usize,
+        /// Number of breakpoints given.
+        got: usize,
+    },
+    /// A line given by one point twice: `curve.intersect_line(p, p, 1e-9)`.
+    DegenerateLine {
+        /// x of the repeated point.
+        x: f64,
+        /// y of the repeated point.
+        y: f64,
+    },
+    /// Flat coordinates that do not split into whole curves of the degree:
+    /// `arc_lengths::<DVec2>(&[0.0; 10], 3, None)`.
+    CurveBatchLength {
+        /// Number of coordinates given.
+        count: usize,
+        /// The degree of every curve.
+        degree: usize,
+        /// `(degree + 1)·dim`, the numbers per curve.
+        per_curve: usize,
+    },
+    /// A rational curve has no hodograph of the same form: `rational_curve.hodograph()`.
+    RationalHodograph {},
+    /// A projective map sends a control point to weight ≤ 0: `projective_map_bezier(&curve, &m)`
+    /// with a map whose horizon crosses the control polygon.
+    MappedWeight {
+        /// The control point's index.
+        index: usize,
+        /// The weight it is sent to.
+        weight: f64,
+    },
+    /// A singular projective map: `projective_map_bezier(&curve, &DMat3::ZERO)`.
+    SingularMap {},
+    /// A projective map from JavaScript that is not 9 numbers: `curve.projectiveMap([1, 0, 0])`.
+    MatrixSize {
+        /// Number of entries given.
+        got: usize,
+    },
+    /// A circular arc from a degenerate triangle:
+    /// `circle_arc_from_triangle(p, p, q)` (coincident or collinear points).
+    DegenerateTriangle {},
+    /// A circular arc from a triangle whose legs differ: `circle_arc_from_triangle(a, b, c)`
+    /// with `|P0P1| ≠ |P1P2|`.
+    NotIsosceles {
+        /// `|P0P1|`.
+        first: f64,
+        /// `|P1P2|`.
+        second: f64,
+    },
+    /// A circular arc from JavaScript with other than 3 points: `circularArcBezier([0, 0, 1, 1])`.
+    ArcPointCount {
+        /// Number of points given.
+        got: usize,
+    },
+    /// An ellipse arc with a zero sweep or more than one turn: `ellipse_arc(c, x, y, 0.0, 0.0)`.
+    InvalidSweep {
+        /// The sweep given (radians).
+        sweep: f64,
+    },
+    /// An ellipse whose axes are parallel or zero: `ellipse_arc(c, x, x, 0.0, 1.0)`.
+    ParallelAxes {},
+    /// Center and axes of different lengths from JavaScript:
+    /// `ellipseArc([0, 0], [1, 0, 0], [0, 1], 0, 1)`.
+    AxisLengths {
+        /// Length of `center`.
+        center: usize,
+        /// Length of `axisX`.
+        axis_x: usize,
+        /// Length of `axisY`.
+        axis_y: usize,
+    },
+    /// A length that must be > 0 is not: `circle(center, 0)` from JavaScript.
+    NotPositive {
+        /// What the number is ("radius").
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// Two pieces of different dimensions: `joinBezier(curve2d, curve3d, "C1")` from JavaScript.
+    DimensionMismatch {
+        /// Dimension of the left piece.
+        left: usize,
+        /// Dimension of the right piece.
+        right: usize,
+    },
+    /// Piece degrees that do not add up to the control points given:
+    /// `compositeBezier([0, 0, 1, 1], [3], …)` from JavaScript.
+    PiecePointCount {
+        /// The degree of each piece.
+        degrees: Vec<usize>,
+        /// Control points the degrees need, `Σ (n_i + 1)`.
+        needed: usize,
+        /// Control points given.
+        got: usize,
+    },
+    /// An output buffer of the wrong length: `curve.sample_into(&[0.5], &mut [0.0; 3])` for a
+    /// 2D curve.
+    BufferLength {
+        /// Length of the buffer.
+        len: usize,
+        /// Number of points to write.
+        count: usize,
+        /// Numbers they need (`count · dim`).
+        needed: usize,
+    },
+    /// Surface coordinates that do not fill the net: `BSplineSurface::from_flat(&[0.0; 10], 2, 2, …)`.
+    NetCoordinateCount {
+        /// Rows of the net.
+        rows: usize,
+        /// Columns of the net.
+        cols: usize,
+        /// Number of coordinates given.
+        got: usize,
+    },
+    /// A Bézier patch with a single row or column: `BSplineSurface::bezier(&coords, 1, 3, None)`.
+    PatchTooSmall {
+        /// Rows given.
+        rows: usize,
+        /// Columns given.
+        cols: usize,
+    },
+    /// A control point `(i, j)` outside the net: `surface.set_control_point(5, 0, p)` on a 4 × 4
+    /// net.
+    NetIndexOutOfRange {
+        /// Row index.
+        i: usize,
+        /// Column index.
+        j: usize,
+        /// Rows of the net.
+        rows: usize,
+        /// Columns of the net.
+        cols: usize,
+    },
+    /// No surface normal at `(u, v)`, even in the limit: `surface.normal(u, v)` on a patch whose
+    /// rows all coincide.
+    NoNormal {
+        /// u.
+        u: f64,
+        /// v.
+        v: f64,
+    },
+    /// A tessellation with no quads one way: `surface.tessellate(0, 4)`.
+    EmptyTessellation {
+        /// Quads along u.
+        nu: usize,
+        /// Quads along v.
+        nv: usize,
+    },
+    /// A count (samples, degree, segments) exceeds a documented cap: `BSplineCurve::new(points,
+    /// MAX_DEGREE + 1, …)`.
     TooLarge {
         /// What is too large.
         what: &'static str,
@@ -114,7 +404,7 @@ pub enum Error {
         max: usize,
     },
     /// An argument from JavaScript has the wrong type: `null` or `undefined` for an array, a
-    /// number for a string.
+    /// number for a string (`new BezierCurve(null, 2)`).
     ArgumentType {
         /// The argument's name ("points", "kind").
         name: &'static str,
@@ -124,14 +414,14 @@ pub enum Error {
         got: String,
     },
     /// A count, index, degree, order or dimension given from JavaScript is not a whole number
-    /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument).
+    /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument): `new BezierCurve(points, 2.5)`.
     NotWholeNumber {
         /// What the number is ("count", "i", "degree 1").
         what: String,
         /// The value given.
         value: f64,
     },
-    /// An operation needs a 2D curve.
+    /// An operation needs a 2D curve: `curve3d.intersectLine(0, 0, 1, 0, 1e-9)` from JavaScript.
     Needs2D {
         /// The operation.
         operation: &'static str,
@@ -150,6 +440,72 @@ pub(crate) struct Num(pub f64);
 impl fmt::Display for Num {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&crate::platform::number_text(self.0))
+    }
+}
+
+impl Error {
+    /// A stable kebab-case code naming the kind of failure (`"knot-count"`,
+    /// `"parameter-out-of-range"`), one per variant: with the variant's fields it is all a
+    /// translated message needs. [`Error::InArgument`] has its own code; its `source` has the
+    /// cause's.
+    pub fn code(&self) -> &'static str {
+        match self {
+            Error::InvalidDimension { .. } => "invalid-dimension",
+            Error::CoordinateCount { .. } => "coordinate-count",
+            Error::NotFinite { .. } => "not-finite",
+            Error::TooFewPoints { .. } => "too-few-points",
+            Error::WeightCount { .. } => "weight-count",
+            Error::NonPositiveWeight { .. } => "non-positive-weight",
+            Error::ParameterOutOfRange { .. } => "parameter-out-of-range",
+            Error::IndexOutOfRange { .. } => "index-out-of-range",
+            Error::PointDimension { .. } => "point-dimension",
+            Error::InvalidTolerance { .. } => "invalid-tolerance",
+            Error::ToleranceTooSmall { .. } => "tolerance-too-small",
+            Error::FlatteningStalled { .. } => "flattening-stalled",
+            Error::InvalidInterval { .. } => "invalid-interval",
+            Error::UnknownOption { .. } => "unknown-option",
+            Error::InArgument { .. } => "in-argument",
+            Error::KnotCount { .. } => "knot-count",
+            Error::KnotOrder { .. } => "knot-order",
+            Error::EmptyDomain { .. } => "empty-domain",
+            Error::KnotMultiplicity { .. } => "knot-multiplicity",
+            Error::InsertionMultiplicity { .. } => "insertion-multiplicity",
+            Error::DegreeZero { .. } => "degree-zero",
+            Error::DegreeOutOfRange { .. } => "degree-out-of-range",
+            Error::TooFewPointsForDegree { .. } => "too-few-points-for-degree",
+            Error::CoincidentPoints { .. } => "coincident-points",
+            Error::PhantomEvenDegree { .. } => "phantom-even-degree",
+            Error::NotASpan { .. } => "not-a-span",
+            Error::RationalJoin { .. } => "rational-join",
+            Error::JoinDegree { .. } => "join-degree",
+            Error::NoJointTangent { .. } => "no-joint-tangent",
+            Error::BreakpointCount { .. } => "breakpoint-count",
+            Error::DegenerateLine { .. } => "degenerate-line",
+            Error::CurveBatchLength { .. } => "curve-batch-length",
+            Error::RationalHodograph { .. } => "rational-hodograph",
+            Error::MappedWeight { .. } => "mapped-weight",
+            Error::SingularMap { .. } => "singular-map",
+            Error::MatrixSize { .. } => "matrix-size",
+            Error::DegenerateTriangle { .. } => "degenerate-triangle",
+            Error::NotIsosceles { .. } => "not-isosceles",
+            Error::ArcPointCount { .. } => "arc-point-count",
+            Error::InvalidSweep { .. } => "invalid-sweep",
+            Error::ParallelAxes { .. } => "parallel-axes",
+            Error::AxisLengths { .. } => "axis-lengths",
+            Error::NotPositive { .. } => "not-positive",
+            Error::DimensionMismatch { .. } => "dimension-mismatch",
+            Error::PiecePointCount { .. } => "piece-point-count",
+            Error::BufferLength { .. } => "buffer-length",
+            Error::NetCoordinateCount { .. } => "net-coordinate-count",
+            Error::PatchTooSmall { .. } => "patch-too-small",
+            Error::NetIndexOutOfRange { .. } => "net-index-out-of-range",
+            Error::NoNormal { .. } => "no-normal",
+            Error::EmptyTessellation { .. } => "empty-tessellation",
+            Error::TooLarge { .. } => "too-large",
+            Error::ArgumentType { .. } => "argument-type",
+            Error::NotWholeNumber { .. } => "not-whole-number",
+            Error::Needs2D { .. } => "needs-2d",
+        }
     }
 }
 
@@ -200,9 +556,27 @@ impl fmt::Display for Error {
                 f,
                 "a point needs {expected} coordinates, got {got}"
             ),
-            Error::InvalidTolerance { value, reason } => {
-                write!(f, "tolerance {} is not usable: {reason}", Num(*value))
-            }
+            Error::InvalidTolerance { value } => write!(
+                f,
+                "tolerance {} is not usable: it must be a finite number > 0",
+                Num(*value)
+            ),
+            Error::ToleranceTooSmall {
+                value,
+                relative,
+                size,
+            } => write!(
+                f,
+                "tolerance {} is not usable: it is below {} × the curve's size ({}); rounding would dominate",
+                Num(*value),
+                Num(*relative),
+                Num(*size)
+            ),
+            Error::FlatteningStalled { value } => write!(
+                f,
+                "tolerance {} is not usable: no piece of the curve is flat enough at this precision",
+                Num(*value)
+            ),
             Error::InvalidInterval { a, b } => {
                 write!(f, "interval [{}, {}] is empty; it needs a < b", Num(*a), Num(*b))
             }
@@ -211,7 +585,218 @@ impl fmt::Display for Error {
                 value,
                 expected,
             } => write!(f, "{name} must be one of {expected}, got \"{value}\""),
-            Error::Mismatch { message } => f.write_str(message),
+            Error::InArgument {
+                name,
+                index,
+                source,
+            } => match index {
+                Some(i) => write!(f, "{name}[{i}]: {source}"),
+                None => write!(f, "{name}: {source}"),
+            },
+            Error::KnotCount {
+                expected,
+                got,
+                points,
+                degree,
+            } => write!(
+                f,
+                "knot vector must have n+p+2 = {} + {degree} + 2 = {expected} values, got {got}",
+                points.saturating_sub(1)
+            ),
+            Error::KnotOrder {
+                index,
+                value,
+                previous,
+            } => write!(
+                f,
+                "knots must not decrease: u_{index} = {} comes after u_{} = {}",
+                Num(*value),
+                index.saturating_sub(1),
+                Num(*previous)
+            ),
+            Error::EmptyDomain {
+                a,
+                b,
+                degree,
+                points,
+            } => write!(
+                f,
+                "the domain [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{}, {}] is empty; it needs u_{degree} < u_{points}",
+                Num(*a),
+                Num(*b)
+            ),
+            Error::KnotMultiplicity {
+                knot,
+                multiplicity,
+                first,
+                last,
+                degree,
+            } => write!(
+                f,
+                "knot {} appears {multiplicity} times (u_{first}..u_{last}); a degree-{degree} curve allows at most p+1 = {}",
+                Num(*knot),
+                degree + 1
+            ),
+            Error::InsertionMultiplicity {
+                name,
+                knot,
+                times,
+                multiplicity,
+                degree,
+            } => {
+                f.write_str("inserting knot ")?;
+                if let Some(name) = name {
+                    write!(f, "{name} = ")?;
+                }
+                write!(
+                    f,
+                    "{} {times} time(s) would give it multiplicity {multiplicity}; degree {degree} allows at most p+1 = {}",
+                    Num(*knot),
+                    degree + 1
+                )
+            }
+            Error::DegreeZero {} => f.write_str("degree must be at least 1, got 0"),
+            Error::DegreeOutOfRange { degree, max } => {
+                write!(f, "degree must be 1..={max}, got {degree}")
+            }
+            Error::TooFewPointsForDegree { degree, got } => write!(
+                f,
+                "degree {degree} needs at least p+1 = {} control points, got {got}",
+                degree + 1
+            ),
+            Error::CoincidentPoints { index, kind } => write!(
+                f,
+                "points {index} and {} coincide; {kind:?} spacing needs distinct consecutive points",
+                index + 1
+            ),
+            Error::PhantomEvenDegree { degree } => write!(
+                f,
+                "phantom points make a uniform B-spline of odd degree pass through its ends; degree {degree} is even"
+            ),
+            Error::NotASpan { span, valid } => write!(
+                f,
+                "span {span} is not a non-empty span of the domain (valid: {valid:?})"
+            ),
+            Error::RationalJoin {} => f.write_str(
+                "the joining rules are for polynomial Bézier pieces; these have weights",
+            ),
+            Error::JoinDegree {
+                rule,
+                left,
+                right,
+                needed,
+            } => write!(
+                f,
+                "rule {rule:?} fixes {needed} point(s) of the right piece; degrees {left} and {right} are too low (each piece needs degree >= {needed})"
+            ),
+            Error::NoJointTangent {} => f.write_str(
+                "G1 needs a tangent at the joint, but the left piece's last two points coincide",
+            ),
+            Error::BreakpointCount { pieces, got } => write!(
+                f,
+                "{pieces} pieces need {} breakpoints, got {got}",
+                pieces + 1
+            ),
+            Error::DegenerateLine { x, y } => write!(
+                f,
+                "the line needs two different points, got ({}, {}) twice",
+                Num(*x),
+                Num(*y)
+            ),
+            Error::CurveBatchLength {
+                count,
+                degree,
+                per_curve,
+            } => write!(
+                f,
+                "{count} coordinates do not split into curves of degree {degree} ((degree + 1)·dim = {per_curve} numbers each)"
+            ),
+            Error::RationalHodograph {} => f.write_str(
+                "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead",
+            ),
+            Error::MappedWeight { index, weight } => write!(
+                f,
+                "the map sends control point {index} to weight {}; weights must stay > 0 (the point would cross the line at infinity)",
+                Num(*weight)
+            ),
+            Error::SingularMap {} => f.write_str("the projective map is singular (determinant 0)"),
+            Error::MatrixSize { got } => write!(
+                f,
+                "a projective map is a 3×3 matrix (9 numbers, row by row), got {got}"
+            ),
+            Error::DegenerateTriangle {} => f.write_str(
+                "a circular arc needs a proper triangle P0 P1 P2 (no coincident or collinear points)",
+            ),
+            Error::NotIsosceles { first, second } => write!(
+                f,
+                "a circular arc needs an isosceles triangle: |P0P1| = {} but |P1P2| = {}",
+                Num(*first),
+                Num(*second)
+            ),
+            Error::ArcPointCount { got } => write!(
+                f,
+                "a circular arc needs 3 control points (6 numbers), got {got}"
+            ),
+            Error::InvalidSweep { sweep } => write!(
+                f,
+                "the sweep must be non-zero and at most one full turn (2π), got {}",
+                Num(*sweep)
+            ),
+            Error::ParallelAxes {} => {
+                f.write_str("the two axes of an ellipse must not be parallel or zero")
+            }
+            Error::AxisLengths {
+                center,
+                axis_x,
+                axis_y,
+            } => write!(
+                f,
+                "center, axisX and axisY need the same length, got {center}, {axis_x}, {axis_y}"
+            ),
+            Error::NotPositive { name, value } => {
+                write!(f, "{name} must be > 0, got {}", Num(*value))
+            }
+            Error::DimensionMismatch { left, right } => write!(
+                f,
+                "both pieces need the same dim, got {left} and {right}"
+            ),
+            Error::PiecePointCount {
+                degrees,
+                needed,
+                got,
+            } => write!(
+                f,
+                "degrees {degrees:?} need {needed} control points in all (n + 1 per piece), got {got}"
+            ),
+            Error::BufferLength { len, count, needed } => write!(
+                f,
+                "output buffer has {len} values, {count} points need {needed}"
+            ),
+            Error::NetCoordinateCount { rows, cols, got } => write!(
+                f,
+                "points must hold rows·cols·3 = {rows}·{cols}·3 = {} coordinates, got {got}",
+                rows.saturating_mul(*cols).saturating_mul(3)
+            ),
+            Error::PatchTooSmall { rows, cols } => write!(
+                f,
+                "a Bézier patch needs at least 2 rows and 2 columns (degree ≥ 1 each way), got {rows} × {cols}"
+            ),
+            Error::NetIndexOutOfRange { i, j, rows, cols } => write!(
+                f,
+                "control point (i, j) = ({i}, {j}) is out of range: the net has {rows} × {cols} points (i in 0..={}, j in 0..={})",
+                rows.saturating_sub(1),
+                cols.saturating_sub(1)
+            ),
+            Error::NoNormal { u, v } => write!(
+                f,
+                "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
+                Num(*u),
+                Num(*v)
+            ),
+            Error::EmptyTessellation { nu, nv } => write!(
+                f,
+                "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
+            ),
             Error::TooLarge { what, value, max } => {
                 write!(f, "{what} = {value} is too large; at most {max} is allowed")
             }
@@ -233,7 +818,14 @@ impl fmt::Display for Error {
     }
 }
 
-impl std::error::Error for Error {}
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::InArgument { source, .. } => Some(source.as_ref()),
+            _ => None,
+        }
+    }
+}
 
 /// Shorthand for results in this crate.
 pub type Result<T> = std::result::Result<T, Error>;
@@ -255,9 +847,6 @@ pub(crate) fn check_tolerance(value: f64) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(Error::InvalidTolerance {
-            value,
-            reason: "it must be a finite number > 0".into(),
-        })
+        Err(Error::InvalidTolerance { value })
     }
 }

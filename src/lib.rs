@@ -27,5 +27,5 @@ pub mod wasm;
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;
 pub use error::{Error, Result};
-pub use glam::{DVec2, DVec3, DVec4};
+pub use glam::{DMat3, DVec2, DVec3, DVec4};
 pub use surface::BSplineSurface;

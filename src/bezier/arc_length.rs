@@ -534,7 +534,7 @@ impl<C: Cartesian> BezierCurve<C> {
 /// `BezierCurve::arc_length` on each curve.
 ///
 /// # Errors
-/// [`crate::Error::Mismatch`] when the coordinates do not split into whole curves, and the
+/// [`crate::Error::CurveBatchLength`] when the coordinates do not split into whole curves, and the
 /// errors of [`BezierCurve::from_flat`] and [`BezierCurve::arc_length`] for the first bad curve
 /// (a coordinate is named by its index within its curve, as `from_flat` does).
 pub fn arc_lengths<C: Cartesian>(
@@ -544,11 +544,10 @@ pub fn arc_lengths<C: Cartesian>(
 ) -> Result<Vec<f64>> {
     let per_curve = (degree + 1) * C::DIM;
     if degree == 0 || coords.is_empty() || !coords.len().is_multiple_of(per_curve) {
-        return Err(crate::Error::Mismatch {
-            message: format!(
-                "{} coordinates do not split into curves of degree {degree} ((degree + 1)·dim = {per_curve} numbers each)",
-                coords.len()
-            ),
+        return Err(crate::Error::CurveBatchLength {
+            count: coords.len(),
+            degree,
+            per_curve,
         });
     }
     if C::DIM != 2 || degree > 3 {

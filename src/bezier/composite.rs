@@ -58,7 +58,8 @@ impl Continuity {
 /// otherwise the left piece's last points follow the right one. Returns both pieces.
 ///
 /// # Errors
-/// [`Error::Mismatch`] for rational pieces, or a piece of too low degree for the rule (C2
+/// [`Error::RationalJoin`] for rational pieces, [`Error::JoinDegree`] for a piece of too low
+/// degree for the rule (C2
 /// needs degree >= 2 on both sides), or pieces too short to leave the constrained points
 /// free of each other.
 pub fn join<C: Cartesian>(
@@ -68,10 +69,7 @@ pub fn join<C: Cartesian>(
     adjust_right: bool,
 ) -> Result<(BezierCurve<C>, BezierCurve<C>)> {
     if left.is_rational() || right.is_rational() {
-        return Err(Error::Mismatch {
-            message: "the joining rules are for polynomial Bézier pieces; these have weights"
-                .into(),
-        });
+        return Err(Error::RationalJoin {});
     }
     if !adjust_right {
         let (r, l) = join(
@@ -93,12 +91,11 @@ pub fn join<C: Cartesian>(
         JoinRule::C2 => 2,
     };
     if n < needed || m < needed || (m < needed + 1 && needed > 0) {
-        return Err(Error::Mismatch {
-            message: format!(
-                "rule {rule:?} fixes {} point(s) of the right piece; degrees {n} and {m} are too low (each piece needs degree >= {})",
-                needed + 1,
-                needed + 1
-            ),
+        return Err(Error::JoinDegree {
+            rule,
+            left: n,
+            right: m,
+            needed: needed + 1,
         });
     }
     q[0] = p[n];
@@ -118,9 +115,7 @@ pub fn join<C: Cartesian>(
             let dir = p[n] - p[n - 1];
             let len = dir.norm();
             if len == 0.0 {
-                return Err(Error::Mismatch {
-                    message: "G1 needs a tangent at the joint, but the left piece's last two points coincide".into(),
-                });
+                return Err(Error::NoJointTangent {});
             }
             let old = (right.control_points()[1] - right.control_points()[0]).norm();
             let dist = if old > 0.0 { old } else { len };
@@ -256,7 +251,7 @@ impl<C: Cartesian> CompositeCurve<C> {
     /// than the pieces); piece `i` is re-parametrised onto `[t_i, t_{i+1}]`.
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] without pieces, [`Error::Mismatch`] for a wrong number of
+    /// [`Error::TooFewPoints`] without pieces, [`Error::BreakpointCount`] for a wrong number of
     /// breakpoints, the errors of [`BezierCurve::with_interval`] for breakpoints out of order.
     pub fn new(pieces: Vec<BezierCurve<C>>, breaks: &[f64]) -> Result<Self> {
         if pieces.is_empty() {
@@ -267,13 +262,9 @@ impl<C: Cartesian> CompositeCurve<C> {
             });
         }
         if breaks.len() != pieces.len() + 1 {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "{} pieces need {} breakpoints, got {}",
-                    pieces.len(),
-                    pieces.len() + 1,
-                    breaks.len()
-                ),
+            return Err(Error::BreakpointCount {
+                pieces: pieces.len(),
+                got: breaks.len(),
             });
         }
         let pieces = pieces

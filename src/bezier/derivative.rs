@@ -73,13 +73,11 @@ impl<C: Cartesian> BezierCurve<C> {
     /// returned as a degree-1 curve with two equal points.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] for a rational curve, whose derivative is not a Bézier curve of
+    /// [`Error::RationalHodograph`] for a rational curve, whose derivative is not a Bézier curve of
     /// this form (sample `derivative` instead).
     pub fn hodograph(&self) -> Result<Self> {
         if self.rational {
-            return Err(Error::Mismatch {
-                message: "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead".into(),
-            });
+            return Err(Error::RationalHodograph {});
         }
         let n = self.degree();
         let scale = n as f64 / (self.b - self.a);

@@ -228,7 +228,7 @@ impl<C: Cartesian> BezierCurve<C> {
     ///
     /// # Errors
     /// As [`BezierCurve::evaluate`], naming the index of the first bad parameter;
-    /// [`Error::Mismatch`] when `out` has the wrong length.
+    /// [`Error::BufferLength`] when `out` has the wrong length.
     pub fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), ts.len(), C::DIM)?;
         for (i, &t) in ts.iter().enumerate() {

@@ -60,15 +60,13 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// `N_{k−p+j,p}` restricted to the span, highest power first.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] unless `k` is a non-empty span of the domain.
+    /// [`Error::NotASpan`] unless `k` is a non-empty span of the domain.
     pub fn segment_matrix(&self, k: usize, local: bool) -> Result<Vec<Vec<f64>>> {
         let knots = self.knots.as_slice();
         if !self.knots.spans().any(|s| s == k) {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "span {k} is not a non-empty span of the domain (valid: {:?})",
-                    self.knots.spans().collect::<Vec<_>>()
-                ),
+            return Err(Error::NotASpan {
+                span: k,
+                valid: self.knots.spans().collect(),
             });
         }
         let p = self.degree();

@@ -54,8 +54,8 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// weights.
     ///
     /// # Errors
-    /// In the documented order: [`Error::NotFinite`] for coordinates, [`Error::Mismatch`] for
-    /// degree 0, [`Error::TooFewPoints`] for fewer than `p + 1` points, [`Error::TooLarge`]
+    /// In the documented order: [`Error::NotFinite`] for coordinates, [`Error::DegreeZero`],
+    /// [`Error::TooFewPointsForDegree`] for fewer than `p + 1` points, [`Error::TooLarge`]
     /// above [`MAX_DEGREE`], then the knot errors of [`KnotVector::new`], then weights.
     pub fn new(
         points: Vec<C>,
@@ -558,9 +558,7 @@ impl<C: Cartesian> BSplineCurve<C> {
 /// Checks the degree against the number of points: `1 <= p <= n` and `p <= MAX_DEGREE`.
 pub(crate) fn check_degree(degree: usize, points: usize) -> Result<()> {
     if degree == 0 {
-        return Err(Error::Mismatch {
-            message: "degree must be at least 1, got 0".into(),
-        });
+        return Err(Error::DegreeZero {});
     }
     if degree > MAX_DEGREE {
         return Err(Error::TooLarge {
@@ -570,11 +568,9 @@ pub(crate) fn check_degree(degree: usize, points: usize) -> Result<()> {
         });
     }
     if points < degree + 1 {
-        return Err(Error::Mismatch {
-            message: format!(
-                "degree {degree} needs at least p+1 = {} control points, got {points}",
-                degree + 1
-            ),
+        return Err(Error::TooFewPointsForDegree {
+            degree,
+            got: points,
         });
     }
     Ok(())

@@ -328,11 +328,10 @@ pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
         });
     }
     if len != count * dim {
-        return Err(Error::Mismatch {
-            message: format!(
-                "output buffer has {len} values, {count} points need {}",
-                count * dim
-            ),
+        return Err(Error::BufferLength {
+            len,
+            count,
+            needed: count * dim,
         });
     }
     Ok(())

@@ -12,7 +12,7 @@
 use crate::bezier::split_points;
 use crate::bspline::{basis_derivatives, basis_functions, boehm_insert, BasisScratch};
 use crate::bspline::{check_degree, check_insertion, KnotVector};
-use crate::error::{check_finite, Error, Num, Result};
+use crate::error::{check_finite, Error, Result};
 use crate::geom::{check_all_finite, check_weights, Params, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
@@ -32,10 +32,22 @@ pub struct BSplineSurface {
     knots_v: KnotVector,
 }
 
-/// Prefixes the message of a knot-vector error with the argument it concerns.
-fn in_argument(name: &str, err: Error) -> Error {
-    Error::Mismatch {
-        message: format!("{name}: {err}"),
+/// An error about the argument `name`, keeping its cause (the message says `name: cause`).
+fn in_argument(name: &'static str, err: Error) -> Error {
+    Error::InArgument {
+        name,
+        index: None,
+        source: Box::new(err),
+    }
+}
+
+/// An error about element `index` of the list argument `name` (the message says
+/// `name[index]: cause`).
+fn in_element(name: &'static str, index: usize, err: Error) -> Error {
+    Error::InArgument {
+        name,
+        index: Some(index),
+        source: Box::new(err),
     }
 }
 
@@ -61,12 +73,10 @@ impl BSplineSurface {
     ) -> Result<Self> {
         let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
         if coords.len() != 3 * count {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "points must hold rows·cols·3 = {rows}·{cols}·3 = {} coordinates, got {}",
-                    3 * count,
-                    coords.len()
-                ),
+            return Err(Error::NetCoordinateCount {
+                rows,
+                cols,
+                got: coords.len(),
             });
         }
         check_all_finite(coords, "coordinate")?;
@@ -113,9 +123,7 @@ impl BSplineSurface {
             && (rows < 2 || cols < 2)
         {
             check_all_finite(coords, "coordinate")?;
-            return Err(Error::Mismatch {
-                message: format!("a Bézier patch needs at least 2 rows and 2 columns (degree ≥ 1 each way), got {rows} × {cols}"),
-            });
+            return Err(Error::PatchTooSmall { rows, cols });
         }
         // Bounded by the coordinate count, which from_flat checks first.
         let clamped = |count: usize| -> Vec<f64> {
@@ -184,14 +192,11 @@ impl BSplineSurface {
     /// The flat index of control point `(i, j)`, checked.
     fn index(&self, i: usize, j: usize) -> Result<usize> {
         if i >= self.rows || j >= self.cols {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "control point (i, j) = ({i}, {j}) is out of range: the net has {} × {} points (i in 0..={}, j in 0..={})",
-                    self.rows,
-                    self.cols,
-                    self.rows - 1,
-                    self.cols - 1
-                ),
+            return Err(Error::NetIndexOutOfRange {
+                i,
+                j,
+                rows: self.rows,
+                cols: self.cols,
             });
         }
         Ok(i * self.cols + j)
@@ -366,7 +371,7 @@ impl BSplineSurface {
     /// `S_u = 0`.
     ///
     /// # Errors
-    /// A bad `u` or `v`, and [`Error::Mismatch`] where even the limit gives no direction: both
+    /// A bad `u` or `v`, and [`Error::NoNormal`] where even the limit gives no direction: both
     /// partial derivatives vanish, or they are parallel (a fold).
     pub fn normal(&self, u: f64, v: f64) -> Result<DVec3> {
         let (u, v) = self.check_uv(u, v)?;
@@ -384,13 +389,7 @@ impl BSplineSurface {
         };
         let cross = a.cross(b);
         if cross.length() <= 1e-12 * a.length() * b.length() {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
-                    Num(u),
-                    Num(v)
-                ),
-            });
+            return Err(Error::NoNormal { u, v });
         }
         Ok(cross / cross.length())
     }
@@ -458,7 +457,7 @@ impl BSplineSurface {
     /// per insertion (Boehm's algorithm on every column); the shape does not change.
     ///
     /// # Errors
-    /// A bad `u`; [`Error::Mismatch`] when its multiplicity would exceed `p + 1`.
+    /// A bad `u`; [`Error::InsertionMultiplicity`] when its multiplicity would exceed `p + 1`.
     pub fn insert_knot_u(&self, u: f64, times: usize) -> Result<Self> {
         Ok(self
             .transposed()
@@ -524,15 +523,11 @@ impl BSplineSurface {
     /// counter-clockwise seen from the side the normals point to.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
+    /// [`Error::EmptyTessellation`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
     /// [`MAX_MESH_VERTICES`] vertices.
     pub fn tessellate(&self, nu: usize, nv: usize) -> Result<Mesh> {
         if nu == 0 || nv == 0 {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
-                ),
-            });
+            return Err(Error::EmptyTessellation { nu, nv });
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
         checked_count(
@@ -702,12 +697,12 @@ impl BSplineSurface {
         for (i, &u) in us.iter().enumerate() {
             self.knots_u
                 .check_named("u", u)
-                .map_err(|e| in_argument(&format!("us[{i}]"), e))?;
+                .map_err(|e| in_element("us", i, e))?;
         }
         for (j, &v) in vs.iter().enumerate() {
             self.knots_v
                 .check_named("v", v)
-                .map_err(|e| in_argument(&format!("vs[{j}]"), e))?;
+                .map_err(|e| in_element("vs", j, e))?;
         }
         out.clear();
         out.resize(3 * points, 0.0);

@@ -577,12 +577,9 @@ pub fn join_bezier(
 }
 
 fn dim_mismatch(left: &JsBezierCurve, right: &JsBezierCurve) -> Error {
-    Error::Mismatch {
-        message: format!(
-            "both pieces need the same dim, got {} and {}",
-            left.dim(),
-            right.dim()
-        ),
+    Error::DimensionMismatch {
+        left: left.dim(),
+        right: right.dim(),
     }
 }
 
@@ -612,11 +609,10 @@ fn composite_from<C: Cartesian>(
         .map(|&d| d.saturating_add(1))
         .fold(0, usize::saturating_add);
     if needed != pts.len() {
-        return Err(Error::Mismatch {
-            message: format!(
-                "degrees {degrees:?} need {needed} control points in all (n + 1 per piece), got {}",
-                pts.len()
-            ),
+        return Err(Error::PiecePointCount {
+            degrees: degrees.to_vec(),
+            needed,
+            got: pts.len(),
         });
     }
     let mut rest = pts.as_slice();

@@ -470,8 +470,9 @@ pub fn phantom_points(
 pub fn uniform_segment_matrix(p: f64) -> Result<Vec<f64>, JsError> {
     let p = whole("p", p)?;
     if p == 0 || p > crate::geom::MAX_DEGREE {
-        return Err(Error::Mismatch {
-            message: format!("degree must be 1..={}, got {p}", crate::geom::MAX_DEGREE),
+        return Err(Error::DegreeOutOfRange {
+            degree: p,
+            max: crate::geom::MAX_DEGREE,
         }
         .into());
     }

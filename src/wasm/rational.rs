@@ -3,7 +3,7 @@
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
 use super::numbers;
-use crate::error::{Error, Num};
+use crate::error::Error;
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
 use wasm_bindgen::prelude::*;
@@ -76,13 +76,10 @@ pub fn ellipse_arc(
     let axis_x = &*numbers("axisX", &axis_x)?;
     let axis_y = &*numbers("axisY", &axis_y)?;
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
-        return Err(Error::Mismatch {
-            message: format!(
-                "center, axisX and axisY need the same length, got {}, {}, {}",
-                center.len(),
-                axis_x.len(),
-                axis_y.len()
-            ),
+        return Err(Error::AxisLengths {
+            center: center.len(),
+            axis_x: axis_x.len(),
+            axis_y: axis_y.len(),
         }
         .into());
     }
@@ -117,13 +114,7 @@ pub fn circular_arc_bezier(
         [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
             *p0, *p1, *p2,
         )?)),
-        _ => Err(Error::Mismatch {
-            message: format!(
-                "a circular arc needs 3 control points (6 numbers), got {}",
-                pts.len()
-            ),
-        }
-        .into()),
+        _ => Err(Error::ArcPointCount { got: pts.len() }.into()),
     }
 }
 
@@ -137,21 +128,16 @@ pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, JsError> {
 fn check_radius(name: &'static str, r: f64) -> Result<(), Error> {
     crate::error::check_finite(|| name.into(), r)?;
     if r <= 0.0 {
-        return Err(Error::Mismatch {
-            message: format!("{name} must be > 0, got {}", Num(r)),
-        });
+        return Err(Error::NotPositive { name, value: r });
     }
     Ok(())
 }
 
 /// A row-major 3×3 matrix from JS.
 fn matrix(m: &[f64]) -> Result<DMat3, Error> {
-    let rows: &[f64; 9] = m.try_into().map_err(|_| Error::Mismatch {
-        message: format!(
-            "a projective map is a 3×3 matrix (9 numbers, row by row), got {}",
-            m.len()
-        ),
-    })?;
+    let rows: &[f64; 9] = m
+        .try_into()
+        .map_err(|_| Error::MatrixSize { got: m.len() })?;
     crate::geom::check_all_finite(rows, "matrix entry")?;
     Ok(DMat3::from_cols_array(rows).transpose())
 }
