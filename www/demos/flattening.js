@@ -3,27 +3,18 @@
  * `flatten(ε)` returns, with its vertices, the segment count, and the count for ε/2 (one more
  * `flatten` call) to show that halving the tolerance multiplies the segments by about √2. The
  * optional tolerance band is the polyline stroked 2ε wide: the curve never leaves it.
- *
- * Same shape as the reference demo (de-casteljau.js): the curve lives in wasm and is updated in
- * place while dragging (`setControlPoint`), the polyline is what the core returns (no
- * subdivision in JS), nothing is allocated per frame in the draw path, and replaced wasm
- * objects are freed.
  */
-import { Handles, pointHandles } from "../lib/handles.js";
-import { FormulaPanel } from "../lib/formula.js";
-import { slider, button, checkbox, group, el, setText } from "../lib/controls.js";
-import { checkObject, checkPoints, checkNumber, checkBoolean } from "../lib/validate.js";
+import { field } from "../lib/validate.js";
+import { slider, checkbox, readout, actions, group } from "../lib/panel.js";
 import { fmt } from "../lib/format.js";
-import { t } from "../lib/strings.js";
+import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { flatPath } from "../lib/draw.js";
+import { flatPath, pointsPath } from "../lib/draw.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "flattening";
 /** Prefix of this demo's keys in strings.js. */
 export const strings = "flattening";
-export const title = t("flattening.title");
-export const summary = t("flattening.summary");
 /** Syllabus section. */
 export const section = 2;
 
@@ -44,8 +35,6 @@ export const PRESETS = Object.freeze({
   cusp: Object.freeze([[1, 0], [7, 6], [1, 6], [7, 0]].map(Object.freeze)),
   straight: Object.freeze([[0, 0], [3, 1], [5, 1], [8, 2]].map(Object.freeze)),
 });
-/** Preset keys in button order. */
-const PRESET_ORDER = ["s", "loop", "cusp", "straight"];
 
 /**
  * ε = 0.1 rather than a smaller value: at the default zoom the band is then about 10 px wide, so
@@ -59,7 +48,7 @@ export const defaultState = Object.freeze({
 
 /** A cubic: four control points. */
 const POINT_COUNT = 4;
-/** Points sampled along the curve for drawing (one `sampleUniform` call per change). */
+/** Points sampled along the curve for drawing. */
 const CURVE_SAMPLES = 256;
 /** Slider resolution in log10 units (about 230 positions from 0.001 to 1). */
 const LOG_STEP = 0.01;
@@ -74,18 +63,11 @@ const COUNT_LABEL_INSET = 12;
 /** Height of the band kept free for the count above the world window, CSS px at scale 1. */
 const COUNT_BAND_PX = 34;
 
-/** Checks a state from a link, a file or attributes; throws an Error naming the bad field. */
-export function validate(state) {
-  checkObject(state, ["points", "tolerance", "band"]);
-  checkPoints(state, "points", { min: POINT_COUNT, max: POINT_COUNT });
-  checkNumber(state, "tolerance", { min: MIN_TOLERANCE, max: MAX_TOLERANCE });
-  checkBoolean(state, "band");
-}
-
-/** A coordinate for labels: integers as they are, others with 2 decimals. */
-function coord(x) {
-  return Number.isInteger(x) ? String(x) : fmt(x, 2);
-}
+export const fields = {
+  points: field.points({ min: POINT_COUNT, max: POINT_COUNT }),
+  tolerance: field.number({ min: MIN_TOLERANCE, max: MAX_TOLERANCE }),
+  band: field.boolean(),
+};
 
 /** A tolerance as typed or shown: "0.05", "0.0015" (no trailing zeros, no float noise). */
 function formatTolerance(value) {
@@ -94,236 +76,165 @@ function formatTolerance(value) {
 
 /** Segments of a flat 2D polyline (vertices − 1). */
 function segmentCount(polyline) {
-  return polyline.length / 2 - 1;
+  return Math.max(0, polyline.length / 2 - 1);
+}
+
+/** The polylines for ε and ε/2; throws only for a far too small ε on a huge curve. */
+function flattenBoth(curve, tolerance) {
+  return { polyline: curve.flatten(tolerance), halfCount: segmentCount(curve.flatten(tolerance / 2)) };
+}
+
+/** The curve, and its polylines for the state's ε (so a refused ε refuses the state). */
+export const derive = {
+  from: ["points"],
+  build(s, sl) {
+    const curve = new sl.BezierCurve(flatten(s.points), 2);
+    try {
+      flattenBoth(curve, s.tolerance);
+    } catch (err) {
+      curve.free();
+      throw err;
+    }
+    return { curve };
+  },
+  moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
+};
+
+/** An empty polyline: what is shown before the first one (never, unless ε is refused at once). */
+const NOTHING = Object.freeze({ polyline: new Float64Array(0), halfCount: 0 });
+
+export const compute = {
+  samples: [["points"], (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
+  flattened: [
+    ["points", "tolerance"],
+    (s, d, ui) => {
+      try {
+        return flattenBoth(d.curve, s.tolerance);
+      } catch (err) {
+        // Only a far too small ε for a huge curve: keep the last polyline, say why.
+        ui.status(t("flattening.flattenFailed", { message: err.message }), "error");
+        return d.flattened ?? NOTHING;
+      }
+    },
+  ],
+  countLabel: [
+    ["points", "tolerance"],
+    (s, d) => t("flattening.countLabel", { count: segmentCount(d.flattened.polyline), tolerance: formatTolerance(s.tolerance) }),
+  ],
+};
+
+/** Moves the four points to a preset shape. */
+const preset = (key) => ({
+  name: `preset-${key}`,
+  label: `flattening.preset.${key}`,
+  title: "flattening.preset.title",
+  run: (ui) => ui.set("points", structuredClone(PRESETS[key])),
+});
+
+export const controls = [
+  group(
+    null,
+    readout("segments", (s, d) => tp("flattening.segments", segmentCount(d.flattened.polyline)), { kind: "readout" }),
+    readout("half", (s, d) => {
+      const count = segmentCount(d.flattened.polyline);
+      const ratio = count > 0 ? fmt(d.flattened.halfCount / count, 2) : "?";
+      return t("flattening.half", { tolerance: formatTolerance(s.tolerance / 2), count: d.flattened.halfCount, ratio });
+    }),
+  ),
+  group(
+    null,
+    slider("tolerance", {
+      label: "flattening.tolerance",
+      inputParams: { min: MIN_TOLERANCE, max: MAX_TOLERANCE },
+      min: MIN_TOLERANCE,
+      max: MAX_TOLERANCE,
+      step: LOG_STEP,
+      log: true,
+      format: formatTolerance,
+      // The range moves in powers of ten: keep two significant digits; typed values as typed.
+      round: (v, typed) => (typed ? v : Math.min(MAX_TOLERANCE, Math.max(MIN_TOLERANCE, Number(v.toPrecision(SLIDER_DIGITS))))),
+      error: "flattening.badTolerance",
+    }),
+    checkbox("band", { label: "flattening.band" }),
+  ),
+  actions(["s", "loop", "cusp", "straight"].map(preset), { title: "flattening.presets" }),
+];
+
+export const figure = {
+  bounds: (s) => boundsOf(s.points),
+  insets: scaledInsets(COUNT_BAND_PX, 0, 0, 0),
+  handles: { field: "points" },
+};
+
+/** The band's style: helper grey, width 2ε in world units (set per draw, made once). */
+const bandStyle = { stroke: "", strokeAlpha: BAND_ALPHA, width: 1, join: "round", cap: "round" };
+
+/** The band, the polygon, the curve, the polyline with its vertices, the handles, the count. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const { polyline } = d.flattened;
+  const vertices = polyline.length / 2;
+  // The polyline stroked 2ε wide: round joins and caps make it exactly the points within ε.
+  if (s.band) {
+    bandStyle.stroke = theme.helper.stroke;
+    bandStyle.width = (2 * s.tolerance * v.scale) / r.scale; // the renderer multiplies by r.scale
+    flatPath(r, v, polyline, 0, vertices);
+    r.paint(bandStyle);
+  }
+  pointsPath(r, v, s.points, 0, POINT_COUNT);
+  r.paint(theme.polygon);
+  flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
+  r.paint(theme.curve);
+  flatPath(r, v, polyline, 0, vertices);
+  r.paint(theme.levelStroke[0]);
+  for (let k = 0; k < vertices; k++) r.point(v.sx(polyline[2 * k]), v.sy(polyline[2 * k + 1]), theme.levelPoint[0]);
+  d.handles.draw(r, v);
+  // The count in the corner, so projections and exports carry it too.
+  r.text(d.countLabel, COUNT_LABEL_INSET * r.scale, COUNT_LABEL_INSET * r.scale, theme.label, "left", "top");
 }
 
 /**
- * Mounts the demo. `ctx` comes from the shell (lib/shell.js): `sl` (wasm), `slots`,
- * `createFigure`, `preview`, `commit`, `status`.
+ * The flatness test of the whole curve (the core's first test): distances of the inner control
+ * points to the chord P₀P₃, d_i = |(P₃ − P₀) × (P₃ − P_i)| / |P₃ − P₀|, a formula on the four
+ * numbers shown beside the segment counts.
  */
-export function mount(container, initialState, ctx) {
-  const { sl } = ctx;
-  /** The state shown; mutated in place during drags, committed as a copy. */
-  let work = structuredClone(initialState);
-  let curve = new sl.BezierCurve(flatten(work.points), 2);
+export function formula(s, d) {
+  const [x0, y0] = s.points[0];
+  const [x3, y3] = s.points[3];
+  const cx = x3 - x0;
+  const cy = y3 - y0;
+  const chord = Math.hypot(cx, cy);
+  const distance = ([x, y]) => (chord > 0 ? Math.abs(cx * (y3 - y) - cy * (x3 - x)) / chord : Math.hypot(x - x0, y - y0));
+  const d1 = distance(s.points[1]);
+  const d2 = distance(s.points[2]);
+  const flat = Math.max(d1, d2) <= s.tolerance;
+  const eps = formatTolerance(s.tolerance);
+  const halfEps = formatTolerance(s.tolerance / 2);
+  const count = segmentCount(d.flattened.polyline);
+  const half = d.flattened.halfCount;
+  const ratio = count > 0 ? fmt(half / count, 2) : "?";
+  const segments = t("flattening.formula.segments");
+  return [
+    `d_i = \\frac{\\lvert (P_3 - P_0) \\times (P_3 - P_i) \\rvert}{\\lvert P_3 - P_0 \\rvert} \\le \\varepsilon, \\quad i = 1, 2, \\qquad \\varepsilon = ${eps}`,
+    `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmt(d1)},\\ d_2 = ${fmt(d2)}\\ ${flat ? "\\le" : ">"}\\ \\varepsilon \\;\\Rightarrow\\; \\text{${t(flat ? "flattening.formula.flat" : "flattening.formula.split")}}`,
+    `\\text{${t("flattening.formula.until")}}`,
+    `\\varepsilon = ${eps}:\\ \\mathbf{${count}}\\ \\text{${segments}};\\qquad \\tfrac{\\varepsilon}{2} = ${halfEps}:\\ \\mathbf{${half}}\\ \\text{${segments}} \\quad (\\times ${ratio} \\approx \\sqrt{2})`,
+  ];
+}
 
-  // Derived data, recomputed only when the geometry or the tolerance changed.
-  let samples = null; // curve.sampleUniform(CURVE_SAMPLES)
-  let polyline = new Float64Array(0); // curve.flatten(ε): flat vertices, ends included
-  let halfCount = 0; // segments of curve.flatten(ε / 2)
-  let geometryDirty = true;
-  let toleranceDirty = true;
-  let countLabel = "";
-  const pointScratch = new Float64Array(2);
-  /** The band's style: helper grey, width 2ε in world units (set per draw, made once). */
-  const bandStyle = { stroke: "", strokeAlpha: BAND_ALPHA, width: 1, join: "round", cap: "round" };
+/** A coordinate for labels: integers as they are, others with 2 decimals. */
+const coord = (x) => (Number.isInteger(x) ? String(x) : fmt(x, 2));
 
-  // ------------------------------------------------------------ figure
-  // The count's band above the world window.
-  const view = ctx.createFigure({ draw, bounds: () => boundsOf(work.points), insets: scaledInsets(COUNT_BAND_PX, 0, 0, 0) });
-  const handles = new Handles(view, {
-    ...pointHandles(() => work.points, (i, xy) => {
-      curve.setControlPoint(i, xy); // in place: no rebuild while dragging
-      geometryDirty = true;
-    }),
-    commit: (kind, i, merge) => ctx.commit(work, merge),
+/** The figure's accessible name: the points, ε, and both segment counts. */
+export function label(s, d) {
+  const count = segmentCount(d.flattened.polyline);
+  const eps = formatTolerance(s.tolerance);
+  return t("flattening.aria", {
+    tolerance: eps,
+    count,
+    vertices: count + 1,
+    half: formatTolerance(s.tolerance / 2),
+    halfCount: d.flattened.halfCount,
+    points: s.points.map(([x, y]) => `(${coord(x)}, ${coord(y)})`).join(", "),
   });
-
-  // ------------------------------------------------------------ side panel
-  const segmentsText = el("p", { class: "sl-readout", dataset: { info: "segments" } });
-  const halfText = el("p", { class: "sl-note", dataset: { info: "half" } });
-  const toleranceSlider = slider({
-    label: t("flattening.tolerance"),
-    inputLabel: t("flattening.tolerance.input", { min: MIN_TOLERANCE, max: MAX_TOLERANCE }),
-    name: "tolerance",
-    min: MIN_TOLERANCE,
-    max: MAX_TOLERANCE,
-    step: LOG_STEP,
-    log: true,
-    value: work.tolerance,
-    format: formatTolerance,
-    onChange: (value, final) => {
-      // The range moves in powers of ten: keep two significant digits; typed values as typed.
-      const typed = document.activeElement === toleranceSlider.box || toleranceSlider.box.getRootNode().activeElement === toleranceSlider.box;
-      const v = typed ? value : Math.min(MAX_TOLERANCE, Math.max(MIN_TOLERANCE, Number(value.toPrecision(SLIDER_DIGITS))));
-      setTolerance(v, final);
-    },
-    onError: (text) => ctx.status(t("flattening.badTolerance", { value: text, min: MIN_TOLERANCE, max: MAX_TOLERANCE }), "error"),
-  });
-  const bandBox = checkbox({
-    label: t("flattening.band"),
-    name: "band",
-    checked: work.band,
-    onChange: (on) => {
-      work.band = on;
-      view.requestDraw();
-      ctx.commit(work);
-    },
-  });
-  const presetButtons = PRESET_ORDER.map((key) =>
-    button({ label: t(`flattening.preset.${key}`), title: t("flattening.preset.title"), name: `preset-${key}`, onClick: () => applyPreset(key) }));
-  ctx.slots.controls.append(
-    group(null, segmentsText, halfText),
-    group(null, toleranceSlider.element, bandBox.element),
-    group(t("flattening.presets"), el("div", { class: "sl-button-row" }, presetButtons)),
-  );
-
-  // ------------------------------------------------------------ formula
-  const formula = new FormulaPanel(ctx.slots.formula);
-
-  // ------------------------------------------------------------ edits
-
-  function setTolerance(value, final) {
-    work.tolerance = value;
-    toleranceSlider.set(value);
-    toleranceDirty = true;
-    view.requestDraw();
-    if (final) ctx.commit(work);
-  }
-
-  /** Moves the four points to a preset shape (in place: same number of points). */
-  function applyPreset(key) {
-    PRESETS[key].forEach(([x, y], i) => {
-      work.points[i][0] = x;
-      work.points[i][1] = y;
-      pointScratch[0] = x;
-      pointScratch[1] = y;
-      curve.setControlPoint(i, pointScratch);
-    });
-    geometryDirty = true;
-    view.requestDraw();
-    ctx.commit(work);
-  }
-
-  // ------------------------------------------------------------ drawing
-  /** Asks the core for the samples and both polylines when something changed. */
-  function recompute() {
-    if (geometryDirty) samples = curve.sampleUniform(CURVE_SAMPLES);
-    if (geometryDirty || toleranceDirty) {
-      try {
-        polyline = curve.flatten(work.tolerance);
-        halfCount = segmentCount(curve.flatten(work.tolerance / 2));
-      } catch (err) {
-        // Only a far too small ε for a huge curve: keep the last polyline, say why.
-        ctx.status(t("flattening.flattenFailed", { message: err.message }), "error");
-      }
-      syncPanels();
-    }
-    geometryDirty = toleranceDirty = false;
-  }
-
-  /** Draws the figure (screen, SVG and PNG exports all come through here). */
-  function draw(r, v) {
-    recompute();
-    const theme = r.theme;
-    const pts = work.points;
-    const vertices = polyline.length / 2;
-
-    // The tolerance band under everything: the polyline stroked 2ε wide (round joins and caps
-    // make it exactly the set of points within ε of the polyline).
-    if (work.band) {
-      bandStyle.stroke = theme.helper.stroke;
-      bandStyle.width = (2 * work.tolerance * v.scale) / r.scale; // the renderer multiplies by r.scale
-      flatPath(r, v, polyline, 0, vertices);
-      r.paint(bandStyle);
-    }
-
-    // Control polygon.
-    r.beginPath();
-    for (let i = 0; i < pts.length; i++) {
-      if (i === 0) r.moveTo(v.sx(pts[i][0]), v.sy(pts[i][1]));
-      else r.lineTo(v.sx(pts[i][0]), v.sy(pts[i][1]));
-    }
-    r.paint(theme.polygon);
-
-    // The curve, from one batched sample call.
-    flatPath(r, v, samples, 0, CURVE_SAMPLES);
-    r.paint(theme.curve);
-
-    // The polyline from flatten(ε) and its vertices.
-    flatPath(r, v, polyline, 0, vertices);
-    r.paint(theme.levelStroke[0]);
-    for (let k = 0; k < vertices; k++) r.point(v.sx(polyline[2 * k]), v.sy(polyline[2 * k + 1]), theme.levelPoint[0]);
-
-    handles.draw(r, v);
-
-    // The count in the corner, so projections and exports carry it too.
-    r.text(countLabel, COUNT_LABEL_INSET * r.scale, COUNT_LABEL_INSET * r.scale, theme.label, "left", "top");
-  }
-
-  // ------------------------------------------------------------ panels (formula, label)
-  function syncPanels() {
-    const pts = work.points;
-    const count = Math.max(0, segmentCount(polyline));
-    const eps = formatTolerance(work.tolerance);
-    const halfEps = formatTolerance(work.tolerance / 2);
-    const ratio = count > 0 ? fmt(halfCount / count, 2) : "?";
-    countLabel = t("flattening.countLabel", { count, tolerance: eps });
-    setText(segmentsText, t(count === 1 ? "flattening.segments.one" : "flattening.segments", { count }));
-    setText(halfText, t("flattening.half", { tolerance: halfEps, count: halfCount, ratio }));
-    view.setLabel(t("flattening.aria", {
-      tolerance: eps,
-      count,
-      vertices: count + 1,
-      half: halfEps,
-      halfCount,
-      points: pts.map(([x, y]) => `(${coord(x)}, ${coord(y)})`).join(", "),
-    }));
-
-    // The flatness test of the whole curve (the first test the core makes): distances of the
-    // inner control points to the chord P₀P₃ — a formula on the four numbers, not the algorithm.
-    const [x0, y0] = pts[0];
-    const [x3, y3] = pts[3];
-    const cx = x3 - x0;
-    const cy = y3 - y0;
-    const chord = Math.hypot(cx, cy);
-    const distance = ([x, y]) => (chord > 0 ? Math.abs(cx * (y3 - y) - cy * (x3 - x)) / chord : Math.hypot(x - x0, y - y0));
-    const d1 = distance(pts[1]);
-    const d2 = distance(pts[2]);
-    const flat = Math.max(d1, d2) <= work.tolerance;
-    formula.set([
-      `d_i = \\frac{\\lvert (P_3 - P_0) \\times (P_3 - P_i) \\rvert}{\\lvert P_3 - P_0 \\rvert} \\le \\varepsilon, \\quad i = 1, 2, \\qquad \\varepsilon = ${eps}`,
-      `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmt(d1)},\\ d_2 = ${fmt(d2)}\\ ${flat ? "\\le" : ">"}\\ \\varepsilon \\;\\Rightarrow\\; \\text{${t(flat ? "flattening.formula.flat" : "flattening.formula.split")}}`,
-      `\\text{${t("flattening.formula.until")}}`,
-      `\\varepsilon = ${eps}:\\ \\mathbf{${count}}\\ \\text{${t("flattening.formula.segments")}};\\qquad \\tfrac{\\varepsilon}{2} = ${halfEps}:\\ \\mathbf{${halfCount}}\\ \\text{${t("flattening.formula.segments")}} \\quad (\\times ${ratio} \\approx \\sqrt{2})`,
-    ]);
-  }
-
-  recompute();
-
-  // ------------------------------------------------------------ contract
-  return {
-    /** Shows a validated state from outside (undo, reset, link, import). */
-    update(state) {
-      const next = new sl.BezierCurve(flatten(state.points), 2); // throws before anything changes
-      let nextPolyline;
-      let nextHalf;
-      try {
-        nextPolyline = next.flatten(state.tolerance);
-        nextHalf = segmentCount(next.flatten(state.tolerance / 2));
-      } catch (err) {
-        next.free();
-        throw err;
-      }
-      curve.free();
-      curve = next;
-      polyline = nextPolyline;
-      halfCount = nextHalf;
-      work = structuredClone(state);
-      handles.forgetPointer();
-      toleranceSlider.set(work.tolerance);
-      bandBox.set(work.band);
-      geometryDirty = true;
-      toleranceDirty = false;
-      samples = curve.sampleUniform(CURVE_SAMPLES);
-      geometryDirty = false;
-      syncPanels();
-      view.requestDraw();
-    },
-    destroy() {
-      handles.destroy();
-      formula.destroy();
-      curve.free();
-    },
-  };
 }

@@ -58,15 +58,20 @@ export function slider({ label, inputLabel, min, max, step, value, onChange, onE
     el("label", { for: id, text: label }),
     el("div", { class: "sl-slider-row" }, range, box));
 
+  const typing = () => document.activeElement === box || box.getRootNode().activeElement === box;
   /** The value shown (unsnapped: a log slider's range position is rounded to its step). */
   let current = value;
   /** The accepted range (`setRange` moves it, e.g. a B-spline's domain after a knot change). */
   let lo = min;
   let hi = max;
+  /** A log slider's position is not its value: say the value (ARIA `aria-valuetext`). */
+  const describe = log ? (v) => range.setAttribute("aria-valuetext", format(v)) : () => {};
+  describe(value);
   range.addEventListener("input", () => {
     const v = fromRange(Number(range.value));
     current = v;
     box.value = format(v);
+    describe(v);
     onChange(v, false);
   });
   range.addEventListener("change", () => {
@@ -82,6 +87,7 @@ export function slider({ label, inputLabel, min, max, step, value, onChange, onE
     }
     current = v;
     range.value = String(toRange(v));
+    describe(v);
     onChange(v, true);
   };
   box.addEventListener("change", typed);
@@ -93,12 +99,16 @@ export function slider({ label, inputLabel, min, max, step, value, onChange, onE
     element: row,
     range,
     box,
-    /** Shows `v` without firing onChange. */
+    /** Shows `v` without firing onChange (nothing is written when it is already shown). */
     set(v) {
+      if (v === current && !typing()) return;
       current = v;
       range.value = String(toRange(v));
-      if (document.activeElement !== box && box.getRootNode().activeElement !== box) box.value = format(v);
+      describe(v);
+      if (!typing()) box.value = format(v);
     },
+    /** True while the typed-value box has the focus (a typed value is kept as typed). */
+    typing,
     /** Changes the accepted range (and the step when given) without firing onChange; call `set` after. */
     setRange(newMin, newMax, newStep = null) {
       lo = newMin;
@@ -106,6 +116,7 @@ export function slider({ label, inputLabel, min, max, step, value, onChange, onE
       range.min = String(toRange(newMin));
       range.max = String(toRange(newMax));
       if (newStep !== null) range.step = String(newStep);
+      current = NaN; // the browser may have clamped the position: the next `set` writes it
     },
   };
 }

@@ -99,3 +99,28 @@ export function parseNumberInput(text) {
   if (trimmed === "") return NaN;
   return Number(trimmed);
 }
+
+/**
+ * Exact text for numbers computed from integer inputs and a parameter that is a simple fraction
+ * (ui.md: the worked example reads (29/16, 23/16)). `parameter` is t (or u); `inputs` the
+ * numbers it was combined with. When t = a/b and every input is an integer, a value made by
+ * `level` convex combinations has a denominator dividing b^level, so it is shown as a fraction;
+ * otherwise everything is shown with 3 decimals.
+ * @returns {{ exact: { num: number, den: number } | null, param(tex?: boolean): string,
+ *   value(x: number, level: number, tex?: boolean, den?: number): string }}
+ */
+export function exactNumbers(parameter, inputs) {
+  const f = simpleFraction(parameter);
+  const exact = f && allIntegers(inputs) ? f : null;
+  return {
+    exact,
+    /** The parameter: "1/4" (or TeX \tfrac{1}{4}) when exact, else 3 decimals. */
+    param: (tex = false) => (exact ? (tex ? fractionTex(exact) : fractionText(exact)) : fmt(parameter)),
+    /** x after `level` steps: a fraction over (a divisor of) den^level when exact, else decimals. */
+    value(x, level, tex = false, den = exact ? exact.den ** level : 1) {
+      const g = exact ? exactFraction(x, den) : null;
+      if (!g) return fmt(x);
+      return tex ? fractionTex(g) : fractionText(g);
+    },
+  };
+}

@@ -14,6 +14,7 @@ import { checkWindow } from "./validate.js";
 import { el, button } from "./controls.js";
 import { t, has } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
+import { isDeclarative, mountDeclared, validateDeclared } from "./demo.js";
 
 /** Info messages clear themselves after this many ms; errors stay until replaced. */
 const INFO_MESSAGE_MS = 8000;
@@ -25,6 +26,7 @@ const MAX_TRY_ITEMS = 6;
  * naming the bad field. `view` is the shell's own field and is checked here.
  */
 export function validateState(demo, candidate) {
+  const validate = isDeclarative(demo) ? (s) => validateDeclared(demo, s) : demo.validate;
   let state = candidate;
   if (state !== null && typeof state === "object" && !Array.isArray(state)) {
     state = { ...structuredClone(demo.defaultState), ...state };
@@ -32,9 +34,9 @@ export function validateState(demo, candidate) {
   if (state && typeof state === "object" && "view" in state) {
     const { view, ...rest } = state;
     checkWindow(view);
-    demo.validate(rest);
+    validate(rest);
   } else {
-    demo.validate(state);
+    validate(state);
   }
   return state;
 }
@@ -96,7 +98,7 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
       : null;
 
   const element = el("section", { class: `sl-demo sl-mode-${mode}`, dataset: { demo: demo.id } },
-    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: demo.title }), toolbar),
+    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: t(`${prefix}.title`) }), toolbar),
     el("div", { class: "sl-body" },
       el("div", { class: "sl-figure-wrap" }, figureHost, help),
       panel,
@@ -298,7 +300,7 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
     status: showStatus,
   };
 
-  const instance = demo.mount(element, history.current, ctx);
+  const instance = isDeclarative(demo) ? mountDeclared(demo, history.current, ctx) : demo.mount(element, history.current, ctx);
   syncWindow();
   refreshButtons();
 

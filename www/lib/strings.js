@@ -212,8 +212,8 @@ const EN = {
   "flattening.preset.loop": "Loop",
   "flattening.preset.cusp": "Cusp",
   "flattening.preset.straight": "Nearly straight",
-  "flattening.segments": "{count} segments",
-  "flattening.segments.one": "1 segment",
+  "flattening.segments.one": "{count} segment",
+  "flattening.segments.other": "{count} segments",
   "flattening.half": "With ε/2 = {tolerance}: {count} segments (× {ratio}; √2 ≈ 1.41)",
   "flattening.countLabel": "{count} segments at ε = {tolerance}",
   "flattening.aria": "cubic Bézier curve with control points {points}, flattened with tolerance {tolerance}: a polyline of {count} segments ({vertices} vertices); with tolerance {half}: {halfCount} segments",
@@ -915,6 +915,8 @@ const EN = {
 
 const locales = { en: EN };
 let active = EN;
+/** The active language's code (for Intl). */
+let locale = "en";
 
 /** Adds (or extends) the string table of a language. */
 export function addLocale(code, table) {
@@ -924,6 +926,7 @@ export function addLocale(code, table) {
 /** Makes `code` the active language (falls back to English for missing keys). */
 export function setLocale(code) {
   active = locales[code] ?? EN;
+  locale = locales[code] ? code : "en";
 }
 
 /** The string for `key` with `{name}` placeholders replaced from `params`. */
@@ -936,4 +939,22 @@ export function t(key, params) {
 /** True when a key exists (used for optional demo texts such as a third "Try this"). */
 export function has(key) {
   return key in active || key in EN;
+}
+
+/** Plural rules per locale, made once. */
+const pluralRules = new Map();
+
+/**
+ * The plural form of `key` for `count` (`Intl.PluralRules` of the current locale): the key
+ * `<key>.<category>` ("one", "few", "other" …), else `<key>.other`; `{count}` is filled in with
+ * the other `params`. `tp("flattening.segments", 7)` → "7 segments".
+ */
+export function tp(key, count, params = {}) {
+  let rules = pluralRules.get(locale);
+  if (!rules) {
+    rules = new Intl.PluralRules(locale);
+    pluralRules.set(locale, rules);
+  }
+  const exact = `${key}.${rules.select(count)}`;
+  return t(has(exact) ? exact : `${key}.other`, { count, ...params });
 }

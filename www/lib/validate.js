@@ -76,3 +76,17 @@ export function checkWindow(win) {
     win[1] < win[3];
   if (!ok) throw new Error(t("error.window"));
 }
+
+/**
+ * Field checkers for a declarative demo's `fields` export (see demo.js): each is
+ * `(state, name) => void` and throws like the functions above.
+ *
+ *   export const fields = { points: field.points({ min: 2, max: 11 }), t: field.number({ min: 0, max: 1 }) };
+ */
+export const field = Object.freeze({
+  number: (options) => (state, name) => checkNumber(state, name, options),
+  boolean: () => (state, name) => checkBoolean(state, name),
+  choice: (choices) => (state, name) => checkChoice(state, name, choices),
+  points: (options) => (state, name) => checkPoints(state, name, options),
+  numbers: (options) => (state, name) => checkNumbers(state, name, options),
+});
