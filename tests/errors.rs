@@ -469,6 +469,20 @@ fn parallel_axes() {
 }
 
 #[test]
+fn not_positive() {
+    fails(
+        rational::circular_arc(DVec2::ZERO, -1.0, 0.0, 1.0),
+        "not-positive",
+        &["r must be > 0, got -1"],
+    );
+    fails(
+        rational::ellipse(DVec2::ZERO, 1.0, 0.0, 0.0),
+        "not-positive",
+        &["ry must be > 0, got 0"],
+    );
+}
+
+#[test]
 fn buffer_length() {
     fails(
         cubic().sample_into(&[0.5], &mut [0.0; 3]),

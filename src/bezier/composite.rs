@@ -137,6 +137,10 @@ impl<C: Cartesian> BezierCurve<C> {
     }
 }
 
+/// Relative tolerance of the continuity checks ([`check_continuity`],
+/// [`CompositeCurve::continuity`]) when the caller gives none.
+pub const DEFAULT_CONTINUITY_TOLERANCE: f64 = 1e-9;
+
 /// Largest derivative order compared by [`check_continuity`] before declaring `C^∞`.
 const MAX_CHECKED_ORDER: usize = 2 * super::MAX_DEGREE + 1;
 
@@ -273,6 +277,57 @@ impl<C: Cartesian> CompositeCurve<C> {
             .map(|(p, w)| p.with_interval(w[0], w[1]))
             .collect::<Result<Vec<_>>>()?;
         Ok(CompositeCurve { pieces })
+    }
+
+    /// Pieces given back to back as flat coordinates (`n_i + 1` points of `C::DIM` numbers for
+    /// piece `i` of degree `degrees[i]`), on the breakpoints `breaks` (default `0, 1, …, k`).
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] for a piece of degree 0, the errors of
+    /// [`crate::geom::points_from_flat`], [`Error::PiecePointCount`] when the degrees need
+    /// `Σ (n_i + 1)` points and another number is given, then those of [`CompositeCurve::new`].
+    ///
+    /// ```
+    /// use splinelab::{bezier::CompositeCurve, DVec2};
+    /// // A line then a quadratic: 2 + 3 points.
+    /// let coords = [0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 2.0, 2.0, 3.0, 1.0];
+    /// let c = CompositeCurve::<DVec2>::from_flat(&coords, &[1, 2], None).unwrap();
+    /// assert_eq!(c.domain(), (0.0, 2.0));
+    /// ```
+    pub fn from_flat(coords: &[f64], degrees: &[usize], breaks: Option<&[f64]>) -> Result<Self> {
+        if let Some(&d) = degrees.iter().find(|&&d| d == 0) {
+            return Err(Error::TooFewPoints {
+                needed: 2,
+                got: d + 1,
+                what: "every piece (degree >= 1)",
+            });
+        }
+        let pts: Vec<C> = crate::geom::points_from_flat(coords)?;
+        let needed: usize = degrees
+            .iter()
+            .map(|&d| d.saturating_add(1))
+            .fold(0, usize::saturating_add);
+        if needed != pts.len() {
+            return Err(Error::PiecePointCount {
+                degrees: degrees.to_vec(),
+                needed,
+                got: pts.len(),
+            });
+        }
+        let mut rest = pts.as_slice();
+        let mut pieces = Vec::with_capacity(degrees.len());
+        for &d in degrees {
+            let (piece, tail) = rest.split_at(d + 1);
+            pieces.push(BezierCurve::new(piece.to_vec(), None)?);
+            rest = tail;
+        }
+        match breaks {
+            Some(breaks) => CompositeCurve::new(pieces, breaks),
+            None => {
+                let breaks: Vec<f64> = (0..=degrees.len()).map(|i| i as f64).collect();
+                CompositeCurve::new(pieces, &breaks)
+            }
+        }
     }
 
     /// The pieces, each on its own interval.

@@ -156,3 +156,45 @@ pub fn ellipse_arc<C: Cartesian>(
     knots.extend([1.0; 3]);
     BSplineCurve::new(points, 2, knots, Some(&weights))
 }
+
+/// The circular arc `center + r·(cos θ, sin θ)` for θ from `start` to `start + sweep` (radians;
+/// a negative sweep runs clockwise) as an exact NURBS: [`ellipse_arc`] with the axes `(r, 0)`
+/// and `(0, r)`. A full turn is the 9-point circle.
+///
+/// # Errors
+/// [`Error::NotFinite`] or [`Error::NotPositive`] for the radius, then as [`ellipse_arc`].
+///
+/// ```
+/// let c = splinelab::rational::circular_arc(glam::DVec2::ZERO, 2.0, 0.0, std::f64::consts::TAU).unwrap();
+/// assert_eq!(c.control_points().len(), 9);
+/// assert!((c.evaluate(0.3).unwrap().length() - 2.0).abs() < 1e-14);
+/// ```
+pub fn circular_arc(center: DVec2, r: f64, start: f64, sweep: f64) -> Result<BSplineCurve<DVec2>> {
+    check_radius("r", r)?;
+    ellipse_arc(center, DVec2::new(r, 0.0), DVec2::new(0.0, r), start, sweep)
+}
+
+/// The full ellipse with semi-axes `rx`, `ry`, the first axis turned by `rotation` radians:
+/// `center + rx cos θ·e_x + ry sin θ·e_y` with `e_x = (cos φ, sin φ)`, `e_y = (−sin φ, cos φ)`,
+/// as an exact NURBS ([`ellipse_arc`] over a full turn).
+///
+/// # Errors
+/// [`Error::NotFinite`] or [`Error::NotPositive`] for `rx`, then `ry`; [`Error::NotFinite`]
+/// for the rotation; then as [`ellipse_arc`].
+pub fn ellipse(center: DVec2, rx: f64, ry: f64, rotation: f64) -> Result<BSplineCurve<DVec2>> {
+    check_radius("rx", rx)?;
+    check_radius("ry", ry)?;
+    check_finite(|| "rotation".into(), rotation)?;
+    let (sin, cos) = sin_cos(rotation);
+    let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
+    ellipse_arc(center, ex * rx, ey * ry, 0.0, std::f64::consts::TAU)
+}
+
+/// A radius: finite and > 0 (`name` names it in the error).
+fn check_radius(name: &'static str, r: f64) -> Result<()> {
+    check_finite(|| name.into(), r)?;
+    if r <= 0.0 {
+        return Err(Error::NotPositive { name, value: r });
+    }
+    Ok(())
+}

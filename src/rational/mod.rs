@@ -10,5 +10,8 @@
 mod conics;
 mod projective;
 
-pub use conics::{circle_arc_from_triangle, conic_kind, ellipse_arc, ConicKind, MAX_ARC_PIECE};
+pub use conics::{
+    circle_arc_from_triangle, circular_arc, conic_kind, ellipse, ellipse_arc, ConicKind,
+    MAX_ARC_PIECE,
+};
 pub use projective::{projective_map_bezier, projective_map_bspline};

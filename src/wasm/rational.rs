@@ -25,14 +25,7 @@ pub fn circular_arc(
     start_angle: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
-    check_radius("r", r)?;
-    let c = rational::ellipse_arc(
-        DVec2::new(cx, cy),
-        DVec2::new(r, 0.0),
-        DVec2::new(0.0, r),
-        start_angle,
-        sweep,
-    )?;
+    let c = rational::circular_arc(DVec2::new(cx, cy), r, start_angle, sweep)?;
     Ok(JsBSplineCurve::from_2d(c))
 }
 
@@ -46,19 +39,7 @@ pub fn ellipse(
     ry: f64,
     rotation: Option<f64>,
 ) -> Result<JsBSplineCurve, JsError> {
-    check_radius("rx", rx)?;
-    check_radius("ry", ry)?;
-    let phi = rotation.unwrap_or(0.0);
-    crate::error::check_finite(|| "rotation".into(), phi)?;
-    let (sin, cos) = crate::geom::sin_cos(phi);
-    let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
-    let c = rational::ellipse_arc(
-        DVec2::new(cx, cy),
-        ex * rx,
-        ey * ry,
-        0.0,
-        std::f64::consts::TAU,
-    )?;
+    let c = rational::ellipse(DVec2::new(cx, cy), rx, ry, rotation.unwrap_or(0.0))?;
     Ok(JsBSplineCurve::from_2d(c))
 }
 
@@ -123,14 +104,6 @@ pub fn circular_arc_bezier(
 #[wasm_bindgen(js_name = conicKind)]
 pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, JsError> {
     Ok(rational::conic_kind(w0, w1, w2)?.name().into())
-}
-
-fn check_radius(name: &'static str, r: f64) -> Result<(), Error> {
-    crate::error::check_finite(|| name.into(), r)?;
-    if r <= 0.0 {
-        return Err(Error::NotPositive { name, value: r });
-    }
-    Ok(())
 }
 
 /// A row-major 3×3 matrix from JS.
