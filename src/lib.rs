@@ -16,6 +16,7 @@
 
 pub mod bezier;
 pub mod bspline;
+pub mod curve;
 pub mod error;
 pub mod geom;
 mod platform;
@@ -23,6 +24,11 @@ pub mod rational;
 pub mod surface;
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 pub mod wasm;
+
+/// The capability traits ([`curve`]), for `use splinelab::prelude::*;`.
+pub mod prelude {
+    pub use crate::curve::{ControlPolygon, ParamCurve, ParamCurveDeriv};
+}
 
 pub use bezier::BezierCurve;
 pub use bspline::BSplineCurve;

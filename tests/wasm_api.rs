@@ -5,6 +5,7 @@
 mod common;
 
 use common::js_message as message;
+use splinelab::prelude::*;
 use splinelab::wasm::{self, JsBezierCurve};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test as test;

@@ -2,6 +2,7 @@
 //! degree ≤ 3 (the speed's singularities are known in closed form), and adaptive
 //! Gauss–Legendre quadrature of the speed for everything else.
 
+use crate::prelude::*;
 mod adaptive;
 mod planar;
 

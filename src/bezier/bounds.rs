@@ -3,6 +3,7 @@
 
 use super::{de_casteljau_point, split_points, BezierCurve};
 use crate::geom::{BoundingBox, Cartesian};
+use crate::prelude::*;
 
 impl<C: Cartesian> BezierCurve<C> {
     /// The tight axis-aligned bounding box of the curve itself (not of its control polygon),

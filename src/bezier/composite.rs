@@ -3,6 +3,7 @@
 use super::BezierCurve;
 use crate::error::{check_tolerance, Error, Result};
 use crate::geom::{binomial, Cartesian};
+use crate::prelude::*;
 
 /// How two Bézier pieces `P` (degree n, on `[a0, b0]`) and `Q` (degree m, on `[a1, b1]`)
 /// are joined at `P(b0) = Q(a1)`. With `h0 = b0 − a0`, `h1 = b1 − a1` (both 1 in the syllabus):
@@ -375,5 +376,24 @@ impl<C: Cartesian> CompositeCurve<C> {
             .windows(2)
             .map(|w| check_continuity(&w[0], &w[1], tolerance))
             .collect()
+    }
+}
+
+/// Dense sampling and curvature come from the trait defaults (piece by piece).
+impl<C: Cartesian> ParamCurve for CompositeCurve<C> {
+    type Point = C;
+
+    fn domain(&self) -> (f64, f64) {
+        CompositeCurve::domain(self)
+    }
+
+    fn evaluate(&self, t: f64) -> Result<C> {
+        CompositeCurve::evaluate(self, t)
+    }
+}
+
+impl<C: Cartesian> ParamCurveDeriv for CompositeCurve<C> {
+    fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        CompositeCurve::derivative(self, t, order)
     }
 }

@@ -4,6 +4,7 @@
 use super::{BezierCurve, MAX_DEGREE};
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{check_all_finite, check_weights, Cartesian};
+use crate::prelude::*;
 
 impl<C: Cartesian> BezierCurve<C> {
     /// A curve on `[0, 1]` through the given control points; `weights` (one per point, each
@@ -92,39 +93,9 @@ impl<C: Cartesian> BezierCurve<C> {
         self.homogeneous.len() - 1
     }
 
-    /// True when some weight differs from 1.
-    pub fn is_rational(&self) -> bool {
-        self.rational
-    }
-
     /// The parameter interval `[a, b]` (default `[0, 1]`).
     pub fn interval(&self) -> (f64, f64) {
         (self.a, self.b)
-    }
-
-    /// The Cartesian control points `P_i`.
-    pub fn control_points(&self) -> Vec<C> {
-        self.homogeneous.iter().map(|&h| self.project(h)).collect()
-    }
-
-    /// The weights `w_i` (all 1 for a polynomial curve).
-    pub fn weights(&self) -> Vec<f64> {
-        self.homogeneous.iter().map(|&h| C::weight_of(h)).collect()
-    }
-
-    /// The homogeneous control points `(w_i P_i, w_i)`.
-    pub fn homogeneous_points(&self) -> &[C::Homogeneous] {
-        &self.homogeneous
-    }
-
-    /// Maps a homogeneous point to Cartesian: a division for rational curves, none otherwise.
-    #[inline]
-    pub(crate) fn project(&self, h: C::Homogeneous) -> C {
-        if self.rational {
-            C::project(h)
-        } else {
-            C::numerator(h)
-        }
     }
 
     /// The local parameter `s = (t − a)/(b − a)` of `t`, checked to lie in `[a, b]`.
@@ -206,5 +177,36 @@ impl<C: Cartesian> BezierCurve<C> {
         self.homogeneous[i] = p.to_homogeneous(w);
         self.rational = self.homogeneous.iter().any(|&h| C::weight_of(h) != 1.0);
         Ok(())
+    }
+}
+
+impl<C: Cartesian> ParamCurve for BezierCurve<C> {
+    type Point = C;
+
+    /// The interval `[a, b]` (see [`BezierCurve::interval`]).
+    fn domain(&self) -> (f64, f64) {
+        self.interval()
+    }
+
+    fn evaluate(&self, t: f64) -> Result<C> {
+        BezierCurve::evaluate(self, t)
+    }
+
+    fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
+        BezierCurve::sample_into(self, ts, out)
+    }
+
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
+        BezierCurve::sample_uniform_into(self, count, out)
+    }
+}
+
+impl<C: Cartesian> ControlPolygon for BezierCurve<C> {
+    fn homogeneous_points(&self) -> &[C::Homogeneous] {
+        &self.homogeneous
+    }
+
+    fn is_rational(&self) -> bool {
+        self.rational
     }
 }

@@ -4,6 +4,7 @@
 use super::{de_casteljau_point, differences, BezierCurve};
 use crate::error::{Error, Result};
 use crate::geom::{Cartesian, Point};
+use crate::prelude::*;
 
 use crate::geom::MAX_DERIVATIVE_ORDER;
 
@@ -91,15 +92,10 @@ impl<C: Cartesian> BezierCurve<C> {
         let curve = BezierCurve::new(pts, None)?;
         curve.with_interval(self.a, self.b)
     }
+}
 
-    /// Curvature at `t`: in 2D the signed `κ = (x'y'' − y'x'') / |P'|³` (positive where the curve
-    /// turns counter-clockwise), in 3D `κ = |P' × P''| / |P'|³ >= 0`. `+∞` where the velocity
-    /// vanishes (a cusp, or an end point whose neighbouring control point coincides with it),
-    /// 0 on a straight piece.
-    pub fn curvature(&self, t: f64) -> Result<f64> {
-        Ok(crate::geom::curvature(
-            self.derivative(t, 1)?,
-            self.derivative(t, 2)?,
-        ))
+impl<C: Cartesian> ParamCurveDeriv for BezierCurve<C> {
+    fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        BezierCurve::derivative(self, t, order)
     }
 }

@@ -7,6 +7,7 @@ use super::{
 };
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{check_out_len, Cartesian, Params};
+use crate::prelude::*;
 
 impl<C: Cartesian> BezierCurve<C> {
     /// The point `P(t)` by de Casteljau's algorithm (O(n²)).

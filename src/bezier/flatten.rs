@@ -3,6 +3,7 @@
 use super::{subsegment_points, BezierCurve};
 use crate::error::{check_tolerance, Error, Result};
 use crate::geom::Cartesian;
+use crate::prelude::*;
 
 /// Most segments one call to [`BezierCurve::flatten`] may produce.
 pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 16;

@@ -4,6 +4,7 @@
 use super::{de_casteljau_point, split_points, BezierCurve};
 use crate::error::{check_finite, check_tolerance, Error, Result};
 use crate::geom::{BoundingBox, Cartesian};
+use crate::prelude::*;
 use glam::{DVec2, DVec3};
 
 /// Deepest subdivision level of the box recursion (2^-48 of the parameter range).

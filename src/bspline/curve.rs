@@ -4,6 +4,7 @@
 use super::{BSplineCurve, KnotVector};
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{check_weights, Cartesian, MAX_DEGREE};
+use crate::prelude::*;
 
 impl<C: Cartesian> BSplineCurve<C> {
     /// A curve of degree `degree` through validated control points, knots and optional
@@ -105,38 +106,9 @@ impl<C: Cartesian> BSplineCurve<C> {
         self.knots.domain()
     }
 
-    /// True when some weight differs from 1.
-    pub fn is_rational(&self) -> bool {
-        self.rational
-    }
-
     /// For a closed curve, how many control points at the end repeat the first ones (0 if open).
     pub fn wrapped(&self) -> usize {
         self.wrap
-    }
-
-    /// The Cartesian control points `P_i` (a closed curve includes the repeated ones).
-    pub fn control_points(&self) -> Vec<C> {
-        self.homogeneous.iter().map(|&h| self.project(h)).collect()
-    }
-
-    /// The weights (all 1 for a polynomial curve).
-    pub fn weights(&self) -> Vec<f64> {
-        self.homogeneous.iter().map(|&h| C::weight_of(h)).collect()
-    }
-
-    /// The homogeneous control points `(w_i P_i, w_i)`.
-    pub fn homogeneous_points(&self) -> &[C::Homogeneous] {
-        &self.homogeneous
-    }
-
-    #[inline]
-    pub(crate) fn project(&self, h: C::Homogeneous) -> C {
-        if self.rational {
-            C::project(h)
-        } else {
-            C::numerator(h)
-        }
     }
 
     /// The span index `k` of `u` (`u_k <= u < u_{k+1}`; the last span is closed).
@@ -212,4 +184,34 @@ pub(crate) fn check_degree(degree: usize, points: usize) -> Result<()> {
         });
     }
     Ok(())
+}
+
+impl<C: Cartesian> ParamCurve for BSplineCurve<C> {
+    type Point = C;
+
+    fn domain(&self) -> (f64, f64) {
+        BSplineCurve::domain(self)
+    }
+
+    fn evaluate(&self, u: f64) -> Result<C> {
+        BSplineCurve::evaluate(self, u)
+    }
+
+    fn sample_into(&self, us: &[f64], out: &mut [f64]) -> Result<()> {
+        BSplineCurve::sample_into(self, us, out)
+    }
+
+    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
+        BSplineCurve::sample_uniform_into(self, count, out)
+    }
+}
+
+impl<C: Cartesian> ControlPolygon for BSplineCurve<C> {
+    fn homogeneous_points(&self) -> &[C::Homogeneous] {
+        &self.homogeneous
+    }
+
+    fn is_rational(&self) -> bool {
+        self.rational
+    }
 }

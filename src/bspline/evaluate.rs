@@ -3,6 +3,7 @@
 use super::{basis_derivatives, basis_functions, de_boor_triangle, BSplineCurve, BasisScratch};
 use crate::error::{Error, Result};
 use crate::geom::{rational_derivative, Cartesian, Point, MAX_DERIVATIVE_ORDER};
+use crate::prelude::*;
 
 impl<C: Cartesian> BSplineCurve<C> {
     /// `C(u)` from the `p + 1` non-zero basis functions (O(p²)).
@@ -71,14 +72,6 @@ impl<C: Cartesian> BSplineCurve<C> {
         }
     }
 
-    /// Curvature at `u` (see [`crate::geom::curvature`]: signed in 2D, `+∞` at zero velocity).
-    pub fn curvature(&self, u: f64) -> Result<f64> {
-        Ok(crate::geom::curvature(
-            self.derivative(u, 1)?,
-            self.derivative(u, 2)?,
-        ))
-    }
-
     /// The control points of the derivative curves of the homogeneous curve, orders
     /// `0..=order` (NURBS Book eq. 3.8): `P^(k)_i = (p − k + 1)/(u_{i+p+1} − u_{i+k})
     /// (P^(k−1)_{i+1} − P^(k−1)_i)`; the `k`-th is a B-spline of degree `p − k` whose value at `u`
@@ -125,5 +118,11 @@ impl<C: Cartesian> BSplineCurve<C> {
             k,
             u,
         ))
+    }
+}
+
+impl<C: Cartesian> ParamCurveDeriv for BSplineCurve<C> {
+    fn derivative(&self, u: f64, order: usize) -> Result<C> {
+        BSplineCurve::derivative(self, u, order)
     }
 }

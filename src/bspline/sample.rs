@@ -12,6 +12,7 @@ use crate::bezier::{horner_run, horner_with_derivative_fixed, to_power_form, Pow
 use crate::error::{Error, Result};
 use crate::geom::{check_out_len, rational_derivative, MAX_DERIVATIVE_ORDER};
 use crate::geom::{Cartesian, Params, Point};
+use crate::prelude::*;
 use std::ops::Range;
 
 /// Points per run from which converting the span to the power form pays for itself: the

@@ -165,7 +165,9 @@ pub fn ellipse_arc<C: Cartesian>(
 /// [`Error::NotFinite`] or [`Error::NotPositive`] for the radius, then as [`ellipse_arc`].
 ///
 /// ```
-/// let c = splinelab::rational::circular_arc(glam::DVec2::ZERO, 2.0, 0.0, std::f64::consts::TAU).unwrap();
+/// use splinelab::prelude::*;
+/// let tau = std::f64::consts::TAU;
+/// let c = splinelab::rational::circular_arc(glam::DVec2::ZERO, 2.0, 0.0, tau).unwrap();
 /// assert_eq!(c.control_points().len(), 9);
 /// assert!((c.evaluate(0.3).unwrap().length() - 2.0).abs() < 1e-14);
 /// ```

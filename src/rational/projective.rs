@@ -8,6 +8,7 @@
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
 use crate::error::{Error, Result};
+use crate::prelude::*;
 use glam::{DMat3, DVec2, DVec3};
 
 /// Maps homogeneous points by `m`, checking the new weights stay > 0 (a point sent to or

@@ -11,6 +11,7 @@ use super::{numbers, optional_numbers, whole};
 use crate::bezier::{self, BezierCurve};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
+use crate::prelude::*;
 use glam::{DVec2, DVec3};
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;

@@ -5,6 +5,7 @@ use super::{numbers, optional_numbers, string_arg, whole};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
+use crate::prelude::*;
 use glam::{DVec2, DVec3};
 use js_sys::Float64Array;
 use serde::Serialize;

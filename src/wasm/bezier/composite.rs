@@ -4,6 +4,7 @@ use super::{flatten_points, Curve, JsBezierCurve};
 use crate::bezier::{self, CompositeCurve, Continuity, JoinRule, DEFAULT_CONTINUITY_TOLERANCE};
 use crate::error::Error;
 use crate::geom::check_dim;
+use crate::prelude::*;
 use crate::wasm::{numbers, optional_numbers, string_arg, whole};
 use glam::{DVec2, DVec3};
 use serde::Serialize;
@@ -186,13 +187,13 @@ impl JsCompositeBezier {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
         let ts = &*numbers("ts", &ts)?;
-        Ok(with_composite!(&self.inner, c => {
-            let mut out = Vec::with_capacity(ts.len().saturating_mul(3));
-            for &t in ts {
-                out.extend(flatten_points(&[c.evaluate(t)?]));
-            }
-            out
-        }))
+        let dim = match &self.inner {
+            Composite::D2(_) => 2,
+            Composite::D3(_) => 3,
+        };
+        let mut out = vec![0.0; ts.len().saturating_mul(dim)];
+        with_composite!(&self.inner, c => c.sample_into(ts, &mut out))?;
+        Ok(out)
     }
 
     /// `[{ c, g }, …]`: the continuity at each joint (see `jointContinuity`).
