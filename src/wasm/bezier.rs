@@ -16,34 +16,7 @@ use glam::{DVec2, DVec3};
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
-/// A 2D or 3D curve behind one JS class.
-#[derive(Clone)]
-enum Curve {
-    D2(BezierCurve<DVec2>),
-    D3(BezierCurve<DVec3>),
-}
-
-/// Runs `$body` with `$c` bound to the curve of either dimension.
-macro_rules! with_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => $body,
-            Curve::D3($c) => $body,
-        }
-    };
-}
-
-/// Maps a curve of either dimension to a curve of the same dimension.
-macro_rules! map_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => Curve::D2($body),
-            Curve::D3($c) => Curve::D3($body),
-        }
-    };
-}
-
-impl_class_curve!();
+curve_enum!(BezierCurve);
 
 /// Points as one flat array of `P::DIM` numbers each.
 pub(crate) fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {

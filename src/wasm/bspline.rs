@@ -11,32 +11,7 @@ use js_sys::Float64Array;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-/// A 2D or 3D curve behind one JS class.
-#[derive(Clone)]
-enum Curve {
-    D2(BSplineCurve<DVec2>),
-    D3(BSplineCurve<DVec3>),
-}
-
-macro_rules! with_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => $body,
-            Curve::D3($c) => $body,
-        }
-    };
-}
-
-macro_rules! map_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => Curve::D2($body),
-            Curve::D3($c) => Curve::D3($body),
-        }
-    };
-}
-
-impl_class_curve!();
+curve_enum!(BSplineCurve);
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
 #[wasm_bindgen(js_name = BSplineCurve)]
