@@ -7,6 +7,7 @@ mod common;
 use common::*;
 use splinelab::bezier::{self, bernstein, BezierCurve, Continuity, JoinRule};
 use splinelab::geom::Cartesian;
+use splinelab::prelude::*;
 use splinelab::{DVec2, DVec3, Error};
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 #[cfg(target_arch = "wasm32")]
@@ -1354,4 +1355,39 @@ fn arc_length_with_an_accuracy_below_rounding_still_returns() {
     let tight = c.arc_length(Some(1e-16)).unwrap();
     let default = c.arc_length(None).unwrap();
     assert_close(tight, default, 1e-12 * default, "tight vs default accuracy");
+}
+
+/// The capability traits: curvature written once (the default method) agrees between a Bézier
+/// curve, the same curve as a B-spline and as a one-piece composite; the default dense sampling
+/// of a composite curve matches point evaluation.
+#[test]
+fn capability_traits_agree_across_curve_types() {
+    use splinelab::bezier::CompositeCurve;
+    let pts = pts2(&[(0.0, 0.0), (2.0, 2.0), (6.0, 4.0), (8.0, 2.0)]);
+    let bez = BezierCurve::new(pts.clone(), None).unwrap();
+    let bsp =
+        splinelab::BSplineCurve::new(pts, 3, vec![0., 0., 0., 0., 1., 1., 1., 1.], None).unwrap();
+    let comp = CompositeCurve::new(vec![bez.clone()], &[0.0, 1.0]).unwrap();
+    for t in [0.0, 0.3, 0.5, 1.0] {
+        let k = bez.curvature(t).unwrap();
+        assert_close(bsp.curvature(t).unwrap(), k, 1e-12, "B-spline curvature");
+        assert_close(comp.curvature(t).unwrap(), k, 1e-12, "composite curvature");
+    }
+    let ts = [0.0, 0.25, 0.75, 1.0];
+    let mut out = [0.0; 8];
+    ParamCurve::sample_into(&comp, &ts, &mut out).unwrap();
+    for (k, &t) in ts.iter().enumerate() {
+        let p = bez.evaluate(t).unwrap();
+        assert_close2(
+            DVec2::new(out[2 * k], out[2 * k + 1]),
+            p,
+            1e-12,
+            "composite sample",
+        );
+    }
+    let mut uniform = [0.0; 6];
+    comp.sample_uniform_into(3, &mut uniform).unwrap();
+    assert_eq!(&uniform[4..], &[8.0, 2.0]);
+    assert_eq!(bez.control_box().unwrap().max, DVec2::new(8.0, 4.0));
+    assert!(ParamCurve::sample_into(&comp, &[2.0], &mut [0.0; 2]).is_err());
 }

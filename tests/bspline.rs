@@ -8,6 +8,7 @@ mod common;
 use common::*;
 use splinelab::bezier::{self, BezierCurve};
 use splinelab::bspline::{self, BSplineCurve, KnotKind, Parameterization};
+use splinelab::prelude::*;
 use splinelab::{DVec2, DVec3};
 #[cfg(target_arch = "wasm32")]
 use wasm_bindgen_test::wasm_bindgen_test as test;

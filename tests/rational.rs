@@ -6,6 +6,7 @@ mod common;
 use common::*;
 use splinelab::bezier::BezierCurve;
 use splinelab::bspline::BSplineCurve;
+use splinelab::prelude::*;
 use splinelab::rational::{self, ConicKind};
 use splinelab::{DVec2, DVec3};
 use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};

@@ -1,21 +1,14 @@
 //! The JavaScript boundary, in Node: bad input becomes a thrown `Error` with a clear message,
 //! never a trap, and the wrappers return the flat layouts the README documents.
-#![cfg(target_arch = "wasm32")]
+#![cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 
+mod common;
+
+use common::js_message as message;
+use splinelab::prelude::*;
 use splinelab::wasm::{self, JsBezierCurve};
-use wasm_bindgen::{JsCast, JsError, JsValue};
+use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::wasm_bindgen_test as test;
-
-fn message<T>(r: Result<T, JsError>) -> String {
-    match r {
-        Ok(_) => panic!("expected an error"),
-        Err(e) => JsValue::from(e)
-            .dyn_into::<js_sys::Error>()
-            .expect("a JS Error")
-            .message()
-            .into(),
-    }
-}
 
 /// An array argument as the API takes it (a `JsValue`, so that JS `null` or a number gets a
 /// clear error).

@@ -3,6 +3,7 @@
 use super::BezierCurve;
 use crate::error::{check_tolerance, Error, Result};
 use crate::geom::{binomial, Cartesian};
+use crate::prelude::*;
 
 /// How two Bézier pieces `P` (degree n, on `[a0, b0]`) and `Q` (degree m, on `[a1, b1]`)
 /// are joined at `P(b0) = Q(a1)`. With `h0 = b0 − a0`, `h1 = b1 − a1` (both 1 in the syllabus):
@@ -58,7 +59,8 @@ impl Continuity {
 /// otherwise the left piece's last points follow the right one. Returns both pieces.
 ///
 /// # Errors
-/// [`Error::Mismatch`] for rational pieces, or a piece of too low degree for the rule (C2
+/// [`Error::RationalJoin`] for rational pieces, [`Error::JoinDegree`] for a piece of too low
+/// degree for the rule (C2
 /// needs degree >= 2 on both sides), or pieces too short to leave the constrained points
 /// free of each other.
 pub fn join<C: Cartesian>(
@@ -68,10 +70,7 @@ pub fn join<C: Cartesian>(
     adjust_right: bool,
 ) -> Result<(BezierCurve<C>, BezierCurve<C>)> {
     if left.is_rational() || right.is_rational() {
-        return Err(Error::Mismatch {
-            message: "the joining rules are for polynomial Bézier pieces; these have weights"
-                .into(),
-        });
+        return Err(Error::RationalJoin {});
     }
     if !adjust_right {
         let (r, l) = join(
@@ -93,12 +92,11 @@ pub fn join<C: Cartesian>(
         JoinRule::C2 => 2,
     };
     if n < needed || m < needed || (m < needed + 1 && needed > 0) {
-        return Err(Error::Mismatch {
-            message: format!(
-                "rule {rule:?} fixes {} point(s) of the right piece; degrees {n} and {m} are too low (each piece needs degree >= {})",
-                needed + 1,
-                needed + 1
-            ),
+        return Err(Error::JoinDegree {
+            rule,
+            left: n,
+            right: m,
+            needed: needed + 1,
         });
     }
     q[0] = p[n];
@@ -118,9 +116,7 @@ pub fn join<C: Cartesian>(
             let dir = p[n] - p[n - 1];
             let len = dir.norm();
             if len == 0.0 {
-                return Err(Error::Mismatch {
-                    message: "G1 needs a tangent at the joint, but the left piece's last two points coincide".into(),
-                });
+                return Err(Error::NoJointTangent {});
             }
             let old = (right.control_points()[1] - right.control_points()[0]).norm();
             let dist = if old > 0.0 { old } else { len };
@@ -141,6 +137,10 @@ impl<C: Cartesian> BezierCurve<C> {
         r
     }
 }
+
+/// Relative tolerance of the continuity checks ([`check_continuity`],
+/// [`CompositeCurve::continuity`]) when the caller gives none.
+pub const DEFAULT_CONTINUITY_TOLERANCE: f64 = 1e-9;
 
 /// Largest derivative order compared by [`check_continuity`] before declaring `C^∞`.
 const MAX_CHECKED_ORDER: usize = 2 * super::MAX_DEGREE + 1;
@@ -256,7 +256,7 @@ impl<C: Cartesian> CompositeCurve<C> {
     /// than the pieces); piece `i` is re-parametrised onto `[t_i, t_{i+1}]`.
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] without pieces, [`Error::Mismatch`] for a wrong number of
+    /// [`Error::TooFewPoints`] without pieces, [`Error::BreakpointCount`] for a wrong number of
     /// breakpoints, the errors of [`BezierCurve::with_interval`] for breakpoints out of order.
     pub fn new(pieces: Vec<BezierCurve<C>>, breaks: &[f64]) -> Result<Self> {
         if pieces.is_empty() {
@@ -267,13 +267,9 @@ impl<C: Cartesian> CompositeCurve<C> {
             });
         }
         if breaks.len() != pieces.len() + 1 {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "{} pieces need {} breakpoints, got {}",
-                    pieces.len(),
-                    pieces.len() + 1,
-                    breaks.len()
-                ),
+            return Err(Error::BreakpointCount {
+                pieces: pieces.len(),
+                got: breaks.len(),
             });
         }
         let pieces = pieces
@@ -282,6 +278,57 @@ impl<C: Cartesian> CompositeCurve<C> {
             .map(|(p, w)| p.with_interval(w[0], w[1]))
             .collect::<Result<Vec<_>>>()?;
         Ok(CompositeCurve { pieces })
+    }
+
+    /// Pieces given back to back as flat coordinates (`n_i + 1` points of `C::DIM` numbers for
+    /// piece `i` of degree `degrees[i]`), on the breakpoints `breaks` (default `0, 1, …, k`).
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] for a piece of degree 0, the errors of
+    /// [`crate::geom::points_from_flat`], [`Error::PiecePointCount`] when the degrees need
+    /// `Σ (n_i + 1)` points and another number is given, then those of [`CompositeCurve::new`].
+    ///
+    /// ```
+    /// use splinelab::{bezier::CompositeCurve, DVec2};
+    /// // A line then a quadratic: 2 + 3 points.
+    /// let coords = [0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 2.0, 2.0, 3.0, 1.0];
+    /// let c = CompositeCurve::<DVec2>::from_flat(&coords, &[1, 2], None).unwrap();
+    /// assert_eq!(c.domain(), (0.0, 2.0));
+    /// ```
+    pub fn from_flat(coords: &[f64], degrees: &[usize], breaks: Option<&[f64]>) -> Result<Self> {
+        if let Some(&d) = degrees.iter().find(|&&d| d == 0) {
+            return Err(Error::TooFewPoints {
+                needed: 2,
+                got: d + 1,
+                what: "every piece (degree >= 1)",
+            });
+        }
+        let pts: Vec<C> = crate::geom::points_from_flat(coords)?;
+        let needed: usize = degrees
+            .iter()
+            .map(|&d| d.saturating_add(1))
+            .fold(0, usize::saturating_add);
+        if needed != pts.len() {
+            return Err(Error::PiecePointCount {
+                degrees: degrees.to_vec(),
+                needed,
+                got: pts.len(),
+            });
+        }
+        let mut rest = pts.as_slice();
+        let mut pieces = Vec::with_capacity(degrees.len());
+        for &d in degrees {
+            let (piece, tail) = rest.split_at(d + 1);
+            pieces.push(BezierCurve::new(piece.to_vec(), None)?);
+            rest = tail;
+        }
+        match breaks {
+            Some(breaks) => CompositeCurve::new(pieces, breaks),
+            None => {
+                let breaks: Vec<f64> = (0..=degrees.len()).map(|i| i as f64).collect();
+                CompositeCurve::new(pieces, &breaks)
+            }
+        }
     }
 
     /// The pieces, each on its own interval.
@@ -329,5 +376,24 @@ impl<C: Cartesian> CompositeCurve<C> {
             .windows(2)
             .map(|w| check_continuity(&w[0], &w[1], tolerance))
             .collect()
+    }
+}
+
+/// Dense sampling and curvature come from the trait defaults (piece by piece).
+impl<C: Cartesian> ParamCurve for CompositeCurve<C> {
+    type Point = C;
+
+    fn domain(&self) -> (f64, f64) {
+        CompositeCurve::domain(self)
+    }
+
+    fn evaluate(&self, t: f64) -> Result<C> {
+        CompositeCurve::evaluate(self, t)
+    }
+}
+
+impl<C: Cartesian> ParamCurveDeriv for CompositeCurve<C> {
+    fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        CompositeCurve::derivative(self, t, order)
     }
 }

@@ -286,9 +286,9 @@ pub fn horner<P: Point>(coeffs: &[P], s: f64) -> P {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::DVec2;
     #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::platform::test;
+    use glam::DVec2;
 
     #[test]
     fn triangle_has_all_levels() {

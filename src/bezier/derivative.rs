@@ -4,6 +4,7 @@
 use super::{de_casteljau_point, differences, BezierCurve};
 use crate::error::{Error, Result};
 use crate::geom::{Cartesian, Point};
+use crate::prelude::*;
 
 use crate::geom::MAX_DERIVATIVE_ORDER;
 
@@ -73,13 +74,11 @@ impl<C: Cartesian> BezierCurve<C> {
     /// returned as a degree-1 curve with two equal points.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] for a rational curve, whose derivative is not a Bézier curve of
+    /// [`Error::RationalHodograph`] for a rational curve, whose derivative is not a Bézier curve of
     /// this form (sample `derivative` instead).
     pub fn hodograph(&self) -> Result<Self> {
         if self.rational {
-            return Err(Error::Mismatch {
-                message: "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead".into(),
-            });
+            return Err(Error::RationalHodograph {});
         }
         let n = self.degree();
         let scale = n as f64 / (self.b - self.a);
@@ -93,15 +92,10 @@ impl<C: Cartesian> BezierCurve<C> {
         let curve = BezierCurve::new(pts, None)?;
         curve.with_interval(self.a, self.b)
     }
+}
 
-    /// Curvature at `t`: in 2D the signed `κ = (x'y'' − y'x'') / |P'|³` (positive where the curve
-    /// turns counter-clockwise), in 3D `κ = |P' × P''| / |P'|³ >= 0`. `+∞` where the velocity
-    /// vanishes (a cusp, or an end point whose neighbouring control point coincides with it),
-    /// 0 on a straight piece.
-    pub fn curvature(&self, t: f64) -> Result<f64> {
-        Ok(crate::geom::curvature(
-            self.derivative(t, 1)?,
-            self.derivative(t, 2)?,
-        ))
+impl<C: Cartesian> ParamCurveDeriv for BezierCurve<C> {
+    fn derivative(&self, t: f64, order: usize) -> Result<C> {
+        BezierCurve::derivative(self, t, order)
     }
 }

@@ -1,8 +1,9 @@
 //! Adaptive flattening: a polyline that provably stays within a tolerance of the curve.
 
 use super::{subsegment_points, BezierCurve};
-use crate::error::{check_tolerance, Error, Num, Result};
+use crate::error::{check_tolerance, Error, Result};
 use crate::geom::Cartesian;
+use crate::prelude::*;
 
 /// Most segments one call to [`BezierCurve::flatten`] may produce.
 pub const MAX_FLATTEN_SEGMENTS: usize = 1 << 16;
@@ -44,13 +45,10 @@ impl<C: Cartesian> BezierCurve<C> {
             .map(|b| b.diagonal())
             .unwrap_or(0.0);
         if tolerance < MIN_RELATIVE_TOLERANCE * size {
-            return Err(Error::InvalidTolerance {
+            return Err(Error::ToleranceTooSmall {
                 value: tolerance,
-                reason: format!(
-                    "it is below {} × the curve's size ({}); rounding would dominate",
-                    Num(MIN_RELATIVE_TOLERANCE),
-                    Num(size)
-                ),
+                relative: MIN_RELATIVE_TOLERANCE,
+                size,
             });
         }
         let mut scratch = Vec::with_capacity(cps.len());
@@ -78,10 +76,7 @@ impl<C: Cartesian> BezierCurve<C> {
                 loop {
                     s1 = s0 + 0.5 * (bad - s0);
                     if s1 <= s0 {
-                        return Err(Error::InvalidTolerance {
-                            value: tolerance,
-                            reason: "no piece of the curve is flat enough at this precision".into(),
-                        });
+                        return Err(Error::FlatteningStalled { value: tolerance });
                     }
                     if passes(s1) {
                         good = s1;

@@ -2,8 +2,9 @@
 //! visited kept for teaching.
 
 use super::{de_casteljau_point, split_points, BezierCurve};
-use crate::error::{check_finite, check_tolerance, Error, Num, Result};
+use crate::error::{check_finite, check_tolerance, Error, Result};
 use crate::geom::{BoundingBox, Cartesian};
+use crate::prelude::*;
 use glam::{DVec2, DVec3};
 
 /// Deepest subdivision level of the box recursion (2^-48 of the parameter range).
@@ -53,20 +54,16 @@ impl BezierCurve<DVec2> {
     /// ends of its interval, `[a, b]`.
     ///
     /// # Errors
-    /// [`Error::NotFinite`] for a bad coordinate, [`Error::Mismatch`] when `p0 == p1`,
+    /// [`Error::NotFinite`] for a bad coordinate, [`Error::DegenerateLine`] when `p0 == p1`,
     /// [`Error::InvalidTolerance`] unless `tolerance` is finite and > 0.
     pub fn intersect_line(&self, p0: DVec2, p1: DVec2, tolerance: f64) -> Result<LineIntersection> {
         for (k, v) in [p0.x, p0.y, p1.x, p1.y].into_iter().enumerate() {
             check_finite(|| ["x0", "y0", "x1", "y1"][k].into(), v)?;
         }
         check_tolerance(tolerance)?;
-        let dir = (p1 - p0).try_normalize().ok_or_else(|| Error::Mismatch {
-            message: format!(
-                "the line needs two different points, got ({}, {}) twice",
-                Num(p0.x),
-                Num(p0.y)
-            ),
-        })?;
+        let dir = (p1 - p0)
+            .try_normalize()
+            .ok_or(Error::DegenerateLine { x: p0.x, y: p0.y })?;
         let signed = |p: DVec2| dir.perp_dot(p - p0);
         // Homogeneous signed distances: D(s) = Σ B_i(s) w_i d_i has the sign of the distance.
         let distance_coeffs: Vec<f64> = self

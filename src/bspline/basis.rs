@@ -6,6 +6,9 @@
 //! with `0/0 := 0`. On the span `[u_k, u_{k+1})` only `N_{k−p,p} … N_{k,p}` are non-zero, and
 //! they sum to 1. The triangular scheme below never divides by zero inside a non-empty span.
 
+use super::BSplineCurve;
+use crate::error::{Error, Result};
+use crate::geom::{check_out_len, Cartesian, MAX_DEGREE};
 /// Reusable buffers for [`basis_functions`], so dense evaluation allocates once.
 #[derive(Debug, Clone, Default)]
 pub struct BasisScratch {
@@ -129,4 +132,118 @@ pub fn basis_derivatives(knots: &[f64], k: usize, u: f64, p: usize, order: usize
         factor *= (p - d) as f64;
     }
     ders
+}
+
+impl<C: Cartesian> BSplineCurve<C> {
+    /// `N_{i,p}(u)` for every `i = 0..=n` (zero outside the span's `p + 1`).
+    pub fn basis(&self, u: f64) -> Result<Vec<f64>> {
+        let (k, local) = self.basis_non_zero(u)?;
+        let p = self.degree();
+        let mut all = vec![0.0; self.homogeneous.len()];
+        if let Some(slot) = all.get_mut(k - p..=k) {
+            slot.copy_from_slice(&local);
+        }
+        Ok(all)
+    }
+
+    /// The span `k` of `u` (`u_k ≤ u < u_{k+1}`, a non-empty span; `u = b` is in the last one)
+    /// and the `p + 1` basis functions that can be non-zero there, `N_{k−p,p}(u) … N_{k,p}(u)`
+    /// (NURBS Book A2.1 and A2.2; they sum to 1). O(p²) whatever the number of points.
+    pub fn basis_non_zero(&self, u: f64) -> Result<(usize, Vec<f64>)> {
+        let u = self.knots.check_parameter(u)?;
+        let p = self.degree();
+        let k = self.knots.span(u);
+        let mut local = vec![0.0; p + 1];
+        basis_functions(
+            self.knots.as_slice(),
+            k,
+            u,
+            p,
+            &mut local,
+            &mut BasisScratch::default(),
+            None,
+        );
+        Ok((k, local))
+    }
+
+    /// The triangular table of the Cox–de Boor recurrence at `u`: level `r = 0..=p` holds
+    /// `N_{k−r,r}(u) … N_{k,r}(u)` for the span `k` of `u`. Returns `(k, levels)`.
+    pub fn basis_table(&self, u: f64) -> Result<(usize, Vec<Vec<f64>>)> {
+        let u = self.knots.check_parameter(u)?;
+        let p = self.degree();
+        let k = self.knots.span(u);
+        let mut local = vec![0.0; p + 1];
+        let mut levels = Vec::with_capacity(p + 1);
+        basis_functions(
+            self.knots.as_slice(),
+            k,
+            u,
+            p,
+            &mut local,
+            &mut BasisScratch::default(),
+            Some(&mut levels),
+        );
+        Ok((k, levels))
+    }
+
+    /// All basis functions sampled at `count` equally spaced parameters over the domain, for
+    /// plotting: `N_{i,p}(u_j)` at index `i·count + j` (i-major). One pass over the spans.
+    pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>> {
+        let n1 = self.homogeneous.len();
+        check_out_len(count.saturating_mul(n1), count.saturating_mul(n1), 1)?;
+        let (a, b) = self.domain();
+        let p = self.degree();
+        let step = if count > 1 {
+            (b - a) / (count - 1) as f64
+        } else {
+            0.0
+        };
+        let mut out = vec![0.0; n1 * count];
+        let mut local = vec![0.0; p + 1];
+        let mut scratch = BasisScratch::default();
+        let mut k = p;
+        for j in 0..count {
+            let u = if j + 1 == count {
+                b
+            } else {
+                a + step * j as f64
+            };
+            k = self.knots.span_from(u, k);
+            basis_functions(
+                self.knots.as_slice(),
+                k,
+                u,
+                p,
+                &mut local,
+                &mut scratch,
+                None,
+            );
+            for (r, &v) in local.iter().enumerate() {
+                out[(k - p + r) * count + j] = v;
+            }
+        }
+        Ok(out)
+    }
+
+    /// The derivatives of every basis function at `u`: row `d = 0..=order` holds
+    /// `N^{(d)}_{i,p}(u)` for `i = 0..=n`, flattened row by row.
+    pub fn basis_derivatives_at(&self, u: f64, order: usize) -> Result<Vec<f64>> {
+        let u = self.knots.check_parameter(u)?;
+        if order > MAX_DEGREE {
+            return Err(Error::TooLarge {
+                what: "order",
+                value: order,
+                max: MAX_DEGREE,
+            });
+        }
+        let p = self.degree();
+        let n1 = self.homogeneous.len();
+        let k = self.knots.span(u);
+        let ders = basis_derivatives(self.knots.as_slice(), k, u, p, order);
+        let mut out = vec![0.0; (order + 1) * n1];
+        for (d, row) in ders.iter().enumerate() {
+            out[d * n1 + k - p..=d * n1 + k].copy_from_slice(row);
+        }
+        Ok(out)
+    }
 }

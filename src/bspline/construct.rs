@@ -77,7 +77,7 @@ impl KnotKind {
 /// `|P_{i+1} − P_i|`; centripetal: sums of their square roots.
 ///
 /// # Errors
-/// [`Error::TooFewPoints`] for fewer than 2 points; [`Error::Mismatch`] naming the pair of
+/// [`Error::TooFewPoints`] for fewer than 2 points; [`Error::CoincidentPoints`] naming the pair of
 /// repeated consecutive points for chord and centripetal spacing.
 pub fn parameterize<P: Point>(points: &[P], kind: Parameterization) -> Result<Vec<f64>> {
     if points.len() < 2 {
@@ -90,9 +90,9 @@ pub fn parameterize<P: Point>(points: &[P], kind: Parameterization) -> Result<Ve
     let mut out = Vec::with_capacity(points.len());
     out.push(0.0);
     for i in 0..points.len() - 1 {
-        let step = kind.step(points[i], points[i + 1]).ok_or_else(|| Error::Mismatch {
-            message: format!("points {i} and {} coincide; {kind:?} spacing needs distinct consecutive points", i + 1),
-        })?;
+        let step = kind
+            .step(points[i], points[i + 1])
+            .ok_or(Error::CoincidentPoints { index: i, kind })?;
         out.push(out[i] + step);
     }
     Ok(out)
@@ -105,7 +105,7 @@ pub fn parameterize<P: Point>(points: &[P], kind: Parameterization) -> Result<Ve
 /// legs of the control polygon and end knots at the total over the first `n − p + 1` legs.
 ///
 /// # Errors
-/// [`Error::Mismatch`] for degree 0 or fewer than `p + 1` points, and as [`parameterize`].
+/// [`Error::DegreeZero`] or [`Error::TooFewPointsForDegree`], and as [`parameterize`].
 pub fn knot_vector<P: Point>(points: &[P], degree: usize, kind: KnotKind) -> Result<Vec<f64>> {
     super::check_degree(degree, points.len())?;
     let (n, p) = (points.len() - 1, degree);
@@ -139,12 +139,10 @@ pub fn knot_vector<P: Point>(points: &[P], degree: usize, kind: KnotKind) -> Res
 /// and ends at `P_n`. For a cubic: one point each, collinear with `P_0 P_1` (the Croatian notes).
 ///
 /// # Errors
-/// [`Error::Mismatch`] for an even degree (no symmetric choice exists) or too few points.
+/// [`Error::PhantomEvenDegree`] for an even degree (no symmetric choice exists) or too few points.
 pub fn phantom_points<P: Point>(points: &[P], degree: usize) -> Result<Vec<P>> {
     if degree.is_multiple_of(2) {
-        return Err(Error::Mismatch {
-            message: format!("phantom points make a uniform B-spline of odd degree pass through its ends; degree {degree} is even"),
-        });
+        return Err(Error::PhantomEvenDegree { degree });
     }
     let extra = (degree - 1) / 2;
     if points.len() < extra + 2 {

@@ -3,7 +3,7 @@
 
 use super::{BSplineCurve, KnotVector};
 use crate::bezier::BezierCurve;
-use crate::error::{check_finite, Error, Num, Result};
+use crate::error::{check_finite, Error, Result};
 use crate::geom::{Cartesian, Point};
 
 /// The continuity at one distinct interior knot: multiplicity `r` gives `C^{p−r}`
@@ -19,10 +19,10 @@ pub struct KnotContinuity {
 }
 
 /// Inserting a knot `times` times where it already has multiplicity `s`: at most `p + 1` in all
-/// (the curve breaks there), so more is [`Error::Mismatch`]. `name` is the parameter's name in
+/// (the curve breaks there), so more is [`Error::InsertionMultiplicity`]. `name` is the parameter's name in
 /// the message (`None` for a curve, `"u"` or `"v"` for a surface).
 pub(crate) fn check_insertion(
-    name: Option<&str>,
+    name: Option<&'static str>,
     knot: f64,
     s: usize,
     times: usize,
@@ -31,14 +31,12 @@ pub(crate) fn check_insertion(
     if s + times <= p + 1 {
         return Ok(());
     }
-    Err(Error::Mismatch {
-        message: format!(
-            "inserting knot {}{} {times} time(s) would give it multiplicity {}; degree {p} allows at most p+1 = {}",
-            name.map(|n| format!("{n} = ")).unwrap_or_default(),
-            Num(knot),
-            s + times,
-            p + 1
-        ),
+    Err(Error::InsertionMultiplicity {
+        name,
+        knot,
+        times,
+        multiplicity: s + times,
+        degree: p,
     })
 }
 
@@ -81,7 +79,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// insertion): the shape does not change, the control polygon moves towards the curve.
     ///
     /// # Errors
-    /// A bad `u`; [`Error::Mismatch`] when the multiplicity of `u` would exceed `p + 1`.
+    /// A bad `u`; [`Error::InsertionMultiplicity`] when the multiplicity of `u` would exceed `p + 1`.
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self> {
         let u = self.knots.check_parameter(u)?;
         let p = self.degree();

@@ -1,6 +1,6 @@
 //! Validated knot vectors, span search and multiplicity (syllabus §3).
 
-use crate::error::{check_finite, Error, Num, Result};
+use crate::error::{check_finite, Error, Result};
 
 /// A non-decreasing knot vector `u_0..u_m` (`m = n + p + 1`) for degree `p` and `n + 1` control
 /// points, whose domain `[u_p, u_{n+1}]` is not empty and where no value repeats more than
@@ -15,42 +15,36 @@ impl KnotVector {
     /// Validates `knots` for `point_count` control points of degree `degree`.
     ///
     /// # Errors
-    /// In this order: [`Error::Mismatch`] for a count other than `n + p + 2`,
-    /// [`Error::NotFinite`], [`Error::Mismatch`] for a decreasing pair, an empty domain or a
-    /// multiplicity above `p + 1`; each message carries the numbers.
+    /// In this order: [`Error::KnotCount`] for a count other than `n + p + 2`,
+    /// [`Error::NotFinite`], [`Error::KnotOrder`] for a decreasing pair, [`Error::EmptyDomain`],
+    /// [`Error::KnotMultiplicity`] above `p + 1`; each message carries the numbers.
     pub fn new(knots: Vec<f64>, degree: usize, point_count: usize) -> Result<Self> {
         let expected = point_count + degree + 1;
         if knots.len() != expected {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "knot vector must have n+p+2 = {} + {} + 2 = {expected} values, got {}",
-                    point_count - 1,
-                    degree,
-                    knots.len()
-                ),
+            return Err(Error::KnotCount {
+                expected,
+                got: knots.len(),
+                points: point_count,
+                degree,
             });
         }
         for (i, &u) in knots.iter().enumerate() {
             check_finite(|| format!("knot u_{i}"), u)?;
         }
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] < knots[i - 1]) {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "knots must not decrease: u_{i} = {} comes after u_{} = {}",
-                    Num(knots[i]),
-                    i - 1,
-                    Num(knots[i - 1])
-                ),
+            return Err(Error::KnotOrder {
+                index: i,
+                value: knots[i],
+                previous: knots[i - 1],
             });
         }
         let (a, b) = (knots[degree], knots[point_count]);
         if a >= b {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "the domain [u_p, u_(n+1)] = [u_{degree}, u_{point_count}] = [{}, {}] is empty; it needs u_{degree} < u_{point_count}",
-                    Num(a),
-                    Num(b)
-                ),
+            return Err(Error::EmptyDomain {
+                a,
+                b,
+                degree,
+                points: point_count,
             });
         }
         let mut i = 0;
@@ -61,12 +55,12 @@ impl KnotVector {
             }
             let r = j - i + 1;
             if r > degree + 1 {
-                return Err(Error::Mismatch {
-                    message: format!(
-                        "knot {} appears {r} times (u_{i}..u_{j}); a degree-{degree} curve allows at most p+1 = {}",
-                        Num(knots[i]),
-                        degree + 1
-                    ),
+                return Err(Error::KnotMultiplicity {
+                    knot: knots[i],
+                    multiplicity: r,
+                    first: i,
+                    last: j,
+                    degree,
                 });
             }
             i = j + 1;
@@ -194,7 +188,7 @@ impl KnotVector {
 mod tests {
     use super::*;
     #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::platform::test;
 
     fn example() -> KnotVector {
         KnotVector::new(vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0], 2, 6).unwrap()

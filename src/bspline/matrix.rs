@@ -4,6 +4,7 @@
 use super::BSplineCurve;
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{Cartesian, Point};
+use crate::prelude::*;
 
 /// Coefficients (ascending powers) of the `p + 1` basis functions `N_{k−p,p} … N_{k,p}` on the
 /// span `k`, as polynomials in `x` where `u = offset + scale·x`, by running the Cox–de Boor
@@ -60,15 +61,13 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// `N_{k−p+j,p}` restricted to the span, highest power first.
     ///
     /// # Errors
-    /// [`Error::Mismatch`] unless `k` is a non-empty span of the domain.
+    /// [`Error::NotASpan`] unless `k` is a non-empty span of the domain.
     pub fn segment_matrix(&self, k: usize, local: bool) -> Result<Vec<Vec<f64>>> {
         let knots = self.knots.as_slice();
         if !self.knots.spans().any(|s| s == k) {
-            return Err(Error::Mismatch {
-                message: format!(
-                    "span {k} is not a non-empty span of the domain (valid: {:?})",
-                    self.knots.spans().collect::<Vec<_>>()
-                ),
+            return Err(Error::NotASpan {
+                span: k,
+                valid: self.knots.spans().collect(),
             });
         }
         let p = self.degree();

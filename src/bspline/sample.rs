@@ -9,7 +9,10 @@
 
 use super::{basis_functions, BSplineCurve, BasisScratch};
 use crate::bezier::{horner_run, horner_with_derivative_fixed, to_power_form, PowerForm};
+use crate::error::{Error, Result};
+use crate::geom::{check_out_len, rational_derivative, MAX_DERIVATIVE_ORDER};
 use crate::geom::{Cartesian, Params, Point};
+use crate::prelude::*;
 use std::ops::Range;
 
 /// Points per run from which converting the span to the power form pays for itself: the
@@ -249,5 +252,91 @@ impl<C: Cartesian> BSplineCurve<C> {
                 (false, false) => derivative_run::<C, 6, false>(c, local, us, outs),
             }
         });
+    }
+}
+
+impl<C: Cartesian> BSplineCurve<C> {
+    /// Writes `C(u)` for every `u` of `us` into `out` (point-major). All parameters are checked
+    /// first; spans are found from the previous one (sorted input walks the knots once), and
+    /// one set of buffers serves every point.
+    pub fn sample_into(&self, us: &[f64], out: &mut [f64]) -> Result<()> {
+        check_out_len(out.len(), us.len(), C::DIM)?;
+        for &u in us {
+            self.knots.check_parameter(u)?;
+        }
+        self.sample_params_into(Params::Slice(us), out);
+        Ok(())
+    }
+
+    /// Writes `count` points at equally spaced parameters over the domain (ends included;
+    /// `count = 1` gives the start point, as for Bézier curves).
+    pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
+        check_out_len(out.len(), count, C::DIM)?;
+        let (a, b) = self.domain();
+        self.sample_params_into(Params::uniform(a, b, count), out);
+        Ok(())
+    }
+
+    /// Writes the derivative of order `order` at every `u` of `us` into `out` (point-major),
+    /// walking the spans once for sorted input: the derivative control points are computed
+    /// once, then each point costs `order + 1` basis evaluations and no allocation (the
+    /// quotient rule for rational curves runs on the stack).
+    ///
+    /// # Errors
+    /// A bad parameter, [`Error::TooLarge`] above [`MAX_DERIVATIVE_ORDER`], a wrong `out` length.
+    pub fn sample_derivatives_into(&self, us: &[f64], order: usize, out: &mut [f64]) -> Result<()> {
+        check_out_len(out.len(), us.len(), C::DIM)?;
+        if order > MAX_DERIVATIVE_ORDER {
+            return Err(Error::TooLarge {
+                what: "derivative order",
+                value: order,
+                max: MAX_DERIVATIVE_ORDER,
+            });
+        }
+        for &u in us {
+            self.knots.check_parameter(u)?;
+        }
+        let p = self.degree();
+        if !self.rational && order > p {
+            out.fill(0.0);
+            return Ok(());
+        }
+        // The derivative control points serve the per-point path only: made on first use, so
+        // a first derivative sampled densely (every run in the power form) never builds them.
+        let mut points: Option<Vec<Vec<C::Homogeneous>>> = None;
+        let mut basis = vec![0.0; p + 1];
+        let mut scratch = BasisScratch::default();
+        let mut homogeneous = vec![C::Homogeneous::ZERO; order + 1];
+        let knots = self.knots.as_slice();
+        let mut general = |us: &[f64], out: &mut [f64]| {
+            let points = points.get_or_insert_with(|| self.derivative_points(order));
+            let mut s = p;
+            for (&u, o) in us.iter().zip(out.chunks_exact_mut(C::DIM)) {
+                s = self.knots.span_from(u, s);
+                for (k, h) in homogeneous.iter_mut().enumerate() {
+                    *h = C::Homogeneous::ZERO;
+                    if k > p {
+                        continue;
+                    }
+                    let q = p - k;
+                    basis_functions(knots, s, u, q, &mut basis[..=q], &mut scratch, None);
+                    for (j, &b) in basis[..=q].iter().enumerate() {
+                        *h = *h + points[k][s - p + j] * b;
+                    }
+                }
+                let d = if self.rational {
+                    rational_derivative::<C>(&homogeneous)
+                } else {
+                    C::numerator(homogeneous[order])
+                };
+                d.write_to(o);
+            }
+        };
+        if order == 1 {
+            self.first_derivatives_into(us, out, |run, o| general(&us[run], o));
+        } else {
+            general(us, out);
+        }
+        Ok(())
     }
 }

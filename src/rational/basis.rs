@@ -4,6 +4,7 @@
 use crate::bezier::{bernstein, BezierCurve};
 use crate::error::Result;
 use crate::geom::Cartesian;
+use crate::prelude::*;
 
 /// `R_i = w_i b_i / Σ_j w_j b_j` for polynomial basis values `b` (Bernstein or B-spline) and
 /// weights `w` of the same length. With positive weights and a partition of unity `b` the

@@ -2,7 +2,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
-use crate::error::{check_finite, Error, Num, Result};
+use crate::error::{check_finite, Error, Result};
 use crate::geom::{sin_cos, Cartesian};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
@@ -58,7 +58,7 @@ pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<ConicKind> {
 /// arc's sweep `Δ`). The arc is tangent to `P0P1` at `P0` and to `P1P2` at `P2`.
 ///
 /// # Errors
-/// [`Error::Mismatch`] unless the legs are equal (to `1e-9` relative) and the triangle is not
+/// [`Error::NotIsosceles`] unless the legs are equal (to `1e-9` relative) and the triangle is not
 /// degenerate (collinear points or a zero leg).
 pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<BezierCurve<DVec2>> {
     for (name, v) in [
@@ -74,17 +74,12 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
     let (a, b) = (p0 - p1, p2 - p1);
     let (la, lb) = (a.length(), b.length());
     if la == 0.0 || lb == 0.0 || a.perp_dot(b).abs() <= 1e-12 * la * lb {
-        return Err(Error::Mismatch {
-            message: "a circular arc needs a proper triangle P0 P1 P2 (no coincident or collinear points)".into(),
-        });
+        return Err(Error::DegenerateTriangle {});
     }
     if (la - lb).abs() > 1e-9 * la.max(lb) {
-        return Err(Error::Mismatch {
-            message: format!(
-                "a circular arc needs an isosceles triangle: |P0P1| = {} but |P1P2| = {}",
-                Num(la),
-                Num(lb)
-            ),
+        return Err(Error::NotIsosceles {
+            first: la,
+            second: lb,
         });
     }
     // The middle weight is sin(θ/2) for the angle θ at P1 (= cos of half the arc's sweep π − θ):
@@ -103,7 +98,7 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
 /// `0,0,0,¼,¼,½,½,¾,¾,1,1,1`.
 ///
 /// # Errors
-/// [`Error::NotFinite`]; [`Error::Mismatch`] for a zero sweep, a sweep beyond a full turn or
+/// [`Error::NotFinite`]; [`Error::InvalidSweep`] for a zero sweep, a sweep beyond a full turn or
 /// parallel (degenerate) axes.
 pub fn ellipse_arc<C: Cartesian>(
     center: C,
@@ -121,17 +116,10 @@ pub fn ellipse_arc<C: Cartesian>(
     }
     let full = std::f64::consts::TAU;
     if sweep == 0.0 || sweep.abs() > full * (1.0 + 1e-12) {
-        return Err(Error::Mismatch {
-            message: format!(
-                "the sweep must be non-zero and at most one full turn (2π), got {}",
-                Num(sweep)
-            ),
-        });
+        return Err(Error::InvalidSweep { sweep });
     }
     if C::cross_norm(axis_x, axis_y).abs() <= 1e-12 * axis_x.norm() * axis_y.norm() {
-        return Err(Error::Mismatch {
-            message: "the two axes of an ellipse must not be parallel or zero".into(),
-        });
+        return Err(Error::ParallelAxes {});
     }
     let pieces = ((sweep.abs() / MAX_ARC_PIECE) - 1e-9).ceil().max(1.0) as usize;
     let delta = sweep / pieces as f64;
@@ -167,4 +155,48 @@ pub fn ellipse_arc<C: Cartesian>(
     }
     knots.extend([1.0; 3]);
     BSplineCurve::new(points, 2, knots, Some(&weights))
+}
+
+/// The circular arc `center + r·(cos θ, sin θ)` for θ from `start` to `start + sweep` (radians;
+/// a negative sweep runs clockwise) as an exact NURBS: [`ellipse_arc`] with the axes `(r, 0)`
+/// and `(0, r)`. A full turn is the 9-point circle.
+///
+/// # Errors
+/// [`Error::NotFinite`] or [`Error::NotPositive`] for the radius, then as [`ellipse_arc`].
+///
+/// ```
+/// use splinelab::prelude::*;
+/// let tau = std::f64::consts::TAU;
+/// let c = splinelab::rational::circular_arc(glam::DVec2::ZERO, 2.0, 0.0, tau).unwrap();
+/// assert_eq!(c.control_points().len(), 9);
+/// assert!((c.evaluate(0.3).unwrap().length() - 2.0).abs() < 1e-14);
+/// ```
+pub fn circular_arc(center: DVec2, r: f64, start: f64, sweep: f64) -> Result<BSplineCurve<DVec2>> {
+    check_radius("r", r)?;
+    ellipse_arc(center, DVec2::new(r, 0.0), DVec2::new(0.0, r), start, sweep)
+}
+
+/// The full ellipse with semi-axes `rx`, `ry`, the first axis turned by `rotation` radians:
+/// `center + rx cos θ·e_x + ry sin θ·e_y` with `e_x = (cos φ, sin φ)`, `e_y = (−sin φ, cos φ)`,
+/// as an exact NURBS ([`ellipse_arc`] over a full turn).
+///
+/// # Errors
+/// [`Error::NotFinite`] or [`Error::NotPositive`] for `rx`, then `ry`; [`Error::NotFinite`]
+/// for the rotation; then as [`ellipse_arc`].
+pub fn ellipse(center: DVec2, rx: f64, ry: f64, rotation: f64) -> Result<BSplineCurve<DVec2>> {
+    check_radius("rx", rx)?;
+    check_radius("ry", ry)?;
+    check_finite(|| "rotation".into(), rotation)?;
+    let (sin, cos) = sin_cos(rotation);
+    let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
+    ellipse_arc(center, ex * rx, ey * ry, 0.0, std::f64::consts::TAU)
+}
+
+/// A radius: finite and > 0 (`name` names it in the error).
+fn check_radius(name: &'static str, r: f64) -> Result<()> {
+    check_finite(|| name.into(), r)?;
+    if r <= 0.0 {
+        return Err(Error::NotPositive { name, value: r });
+    }
+    Ok(())
 }

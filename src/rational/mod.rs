@@ -13,7 +13,10 @@ mod poles;
 mod projective;
 
 pub use basis::rational_basis;
-pub use conics::{circle_arc_from_triangle, conic_kind, ellipse_arc, ConicKind, MAX_ARC_PIECE};
+pub use conics::{
+    circle_arc_from_triangle, circular_arc, conic_kind, ellipse, ellipse_arc, ConicKind,
+    MAX_ARC_PIECE,
+};
 pub use poles::{
     rational_poles, RationalPoles, MAX_ROOT_DEPTH, MAX_ROOT_INTERVALS, ROOT_MERGE_DISTANCE,
 };

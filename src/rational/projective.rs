@@ -7,7 +7,8 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
-use crate::error::{Error, Num, Result};
+use crate::error::{Error, Result};
+use crate::prelude::*;
 use glam::{DMat3, DVec2, DVec3};
 
 /// Maps homogeneous points by `m`, checking the new weights stay > 0 (a point sent to or
@@ -19,11 +20,9 @@ fn map_points(points: &[DVec3], m: &DMat3) -> Result<Vec<DVec2>> {
         .enumerate()
         .find(|(_, h)| h.z.is_nan() || h.z <= 0.0 || !h.is_finite())
     {
-        return Err(Error::Mismatch {
-            message: format!(
-                "the map sends control point {i} to weight {}; weights must stay > 0 (the point would cross the line at infinity)",
-                Num(h.z)
-            ),
+        return Err(Error::MappedWeight {
+            index: i,
+            weight: h.z,
         });
     }
     Ok(mapped.iter().map(|h| h.truncate() / h.z).collect())
@@ -36,7 +35,7 @@ fn mapped_weights(points: &[DVec3], m: &DMat3) -> Vec<f64> {
 /// The image of a 2D (rational or polynomial) Bézier curve under the projective map `m`.
 ///
 /// # Errors
-/// [`Error::Mismatch`] when a mapped weight is not > 0, [`Error::NotFinite`] for a bad matrix.
+/// [`Error::MappedWeight`] when a mapped weight is not > 0, [`Error::NotFinite`] for a bad matrix.
 pub fn projective_map_bezier(curve: &BezierCurve<DVec2>, m: &DMat3) -> Result<BezierCurve<DVec2>> {
     check_matrix(m)?;
     let h = curve.homogeneous_points();
@@ -69,9 +68,7 @@ pub fn projective_map_bspline(
 fn check_matrix(m: &DMat3) -> Result<()> {
     crate::geom::check_all_finite(&m.to_cols_array(), "matrix entry")?;
     if m.determinant() == 0.0 {
-        return Err(Error::Mismatch {
-            message: "the projective map is singular (determinant 0)".into(),
-        });
+        return Err(Error::SingularMap {});
     }
     Ok(())
 }

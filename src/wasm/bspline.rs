@@ -5,37 +5,13 @@ use super::{numbers, optional_numbers, string_arg, whole};
 use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
+use crate::prelude::*;
 use glam::{DVec2, DVec3};
 use js_sys::Float64Array;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
-/// A 2D or 3D curve behind one JS class.
-#[derive(Clone)]
-enum Curve {
-    D2(BSplineCurve<DVec2>),
-    D3(BSplineCurve<DVec3>),
-}
-
-macro_rules! with_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => $body,
-            Curve::D3($c) => $body,
-        }
-    };
-}
-
-macro_rules! map_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => Curve::D2($body),
-            Curve::D3($c) => Curve::D3($body),
-        }
-    };
-}
-
-impl_class_curve!();
+curve_enum!(BSplineCurve);
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
 #[wasm_bindgen(js_name = BSplineCurve)]
@@ -524,8 +500,9 @@ pub fn phantom_points(
 pub fn uniform_segment_matrix(p: f64) -> Result<Vec<f64>, JsError> {
     let p = whole("p", p)?;
     if p == 0 || p > crate::geom::MAX_DEGREE {
-        return Err(Error::Mismatch {
-            message: format!("degree must be 1..={}, got {p}", crate::geom::MAX_DEGREE),
+        return Err(Error::DegreeOutOfRange {
+            degree: p,
+            max: crate::geom::MAX_DEGREE,
         }
         .into());
     }

@@ -11,8 +11,43 @@
     clippy::indexing_slicing
 )]
 
-/// Implements [`ClassCurve`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in,
-/// through that module's `with_curve!`.
+/// Runs `$body` with `$c` bound to the curve of either dimension of a `Curve` enum (`D2`,
+/// `D3`; see [`curve_enum!`]).
+macro_rules! with_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => $body,
+            Curve::D3($c) => $body,
+        }
+    };
+}
+
+/// Maps a curve of either dimension to a curve of the same dimension.
+macro_rules! map_curve {
+    ($curve:expr, $c:ident => $body:expr) => {
+        match $curve {
+            Curve::D2($c) => Curve::D2($body),
+            Curve::D3($c) => Curve::D3($body),
+        }
+    };
+}
+
+/// Defines `enum Curve { D2(Ty<DVec2>), D3(Ty<DVec3>) }`, the 2D or 3D core curve behind one JS
+/// class, and implements [`ClassCurve`] for it.
+macro_rules! curve_enum {
+    ($ty:ident) => {
+        /// A 2D or 3D curve behind one JS class.
+        #[derive(Clone)]
+        enum Curve {
+            D2($ty<DVec2>),
+            D3($ty<DVec3>),
+        }
+
+        impl_class_curve!();
+    };
+}
+
+/// Implements [`ClassCurve`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in.
 macro_rules! impl_class_curve {
     () => {
         impl super::ClassCurve for Curve {
@@ -241,31 +276,6 @@ pub(crate) fn check_count(count: usize) -> Result<(), Error> {
         });
     }
     Ok(())
-}
-
-#[cfg(target_arch = "wasm32")]
-#[wasm_bindgen]
-extern "C" {
-    /// JavaScript's `String(x)` for a number.
-    #[wasm_bindgen(js_name = String)]
-    fn js_string(x: f64) -> String;
-    #[wasm_bindgen(js_namespace = Math, js_name = sin)]
-    fn js_sin(x: f64) -> f64;
-    #[wasm_bindgen(js_namespace = Math, js_name = cos)]
-    fn js_cos(x: f64) -> f64;
-}
-
-/// `(Math.sin(x), Math.cos(x))`: see [`crate::geom::sin_cos`].
-#[cfg(target_arch = "wasm32")]
-pub(crate) fn js_sin_cos(x: f64) -> (f64, f64) {
-    (js_sin(x), js_cos(x))
-}
-
-/// `x` as JavaScript prints it (`String(x)`): the numbers in error messages (see
-/// [`crate::error::Num`]).
-#[cfg(target_arch = "wasm32")]
-pub(crate) fn number_text(x: f64) -> String {
-    js_string(x)
 }
 
 /// The crate version, e.g. `"0.1.0"`.

@@ -4,7 +4,7 @@ use super::bezier::flatten_points;
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
 use super::{numbers, whole};
-use crate::error::{Error, Num};
+use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
@@ -27,14 +27,7 @@ pub fn circular_arc(
     start_angle: f64,
     sweep: f64,
 ) -> Result<JsBSplineCurve, JsError> {
-    check_radius("r", r)?;
-    let c = rational::ellipse_arc(
-        DVec2::new(cx, cy),
-        DVec2::new(r, 0.0),
-        DVec2::new(0.0, r),
-        start_angle,
-        sweep,
-    )?;
+    let c = rational::circular_arc(DVec2::new(cx, cy), r, start_angle, sweep)?;
     Ok(JsBSplineCurve::from_2d(c))
 }
 
@@ -48,19 +41,7 @@ pub fn ellipse(
     ry: f64,
     rotation: Option<f64>,
 ) -> Result<JsBSplineCurve, JsError> {
-    check_radius("rx", rx)?;
-    check_radius("ry", ry)?;
-    let phi = rotation.unwrap_or(0.0);
-    crate::error::check_finite(|| "rotation".into(), phi)?;
-    let (sin, cos) = crate::geom::sin_cos(phi);
-    let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
-    let c = rational::ellipse_arc(
-        DVec2::new(cx, cy),
-        ex * rx,
-        ey * ry,
-        0.0,
-        std::f64::consts::TAU,
-    )?;
+    let c = rational::ellipse(DVec2::new(cx, cy), rx, ry, rotation.unwrap_or(0.0))?;
     Ok(JsBSplineCurve::from_2d(c))
 }
 
@@ -78,13 +59,10 @@ pub fn ellipse_arc(
     let axis_x = &*numbers("axisX", &axis_x)?;
     let axis_y = &*numbers("axisY", &axis_y)?;
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
-        return Err(Error::Mismatch {
-            message: format!(
-                "center, axisX and axisY need the same length, got {}, {}, {}",
-                center.len(),
-                axis_x.len(),
-                axis_y.len()
-            ),
+        return Err(Error::AxisLengths {
+            center: center.len(),
+            axis_x: axis_x.len(),
+            axis_y: axis_y.len(),
         }
         .into());
     }
@@ -119,13 +97,7 @@ pub fn circular_arc_bezier(
         [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
             *p0, *p1, *p2,
         )?)),
-        _ => Err(Error::Mismatch {
-            message: format!(
-                "a circular arc needs 3 control points (6 numbers), got {}",
-                pts.len()
-            ),
-        }
-        .into()),
+        _ => Err(Error::ArcPointCount { got: pts.len() }.into()),
     }
 }
 
@@ -136,24 +108,11 @@ pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, JsError> {
     Ok(rational::conic_kind(w0, w1, w2)?.name().into())
 }
 
-fn check_radius(name: &'static str, r: f64) -> Result<(), Error> {
-    crate::error::check_finite(|| name.into(), r)?;
-    if r <= 0.0 {
-        return Err(Error::Mismatch {
-            message: format!("{name} must be > 0, got {}", Num(r)),
-        });
-    }
-    Ok(())
-}
-
 /// A row-major 3×3 matrix from JS.
 fn matrix(m: &[f64]) -> Result<DMat3, Error> {
-    let rows: &[f64; 9] = m.try_into().map_err(|_| Error::Mismatch {
-        message: format!(
-            "a projective map is a 3×3 matrix (9 numbers, row by row), got {}",
-            m.len()
-        ),
-    })?;
+    let rows: &[f64; 9] = m
+        .try_into()
+        .map_err(|_| Error::MatrixSize { got: m.len() })?;
     crate::geom::check_all_finite(rows, "matrix entry")?;
     Ok(DMat3::from_cols_array(rows).transpose())
 }

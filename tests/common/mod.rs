@@ -4,13 +4,23 @@
 
 use splinelab::{DVec2, DVec3};
 
-/// How error messages print infinity: JavaScript's `String(Infinity)` in the wasm build, Rust's
-/// `{}` natively (see `splinelab::error` on numbers in messages).
-pub const INFINITY_TEXT: &str = if cfg!(target_arch = "wasm32") {
-    "Infinity"
-} else {
-    "inf"
-};
+/// How error messages print infinity: as JavaScript's `String(Infinity)`, on every target (see
+/// `splinelab::error` on numbers in messages).
+pub const INFINITY_TEXT: &str = "Infinity";
+
+/// The message of the JS `Error` a wasm export threw (panics if it returned `Ok`).
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+pub fn js_message<T>(r: Result<T, wasm_bindgen::JsError>) -> String {
+    use wasm_bindgen::JsCast;
+    match r {
+        Ok(_) => panic!("expected an error"),
+        Err(e) => wasm_bindgen::JsValue::from(e)
+            .dyn_into::<js_sys::Error>()
+            .expect("a JS Error")
+            .message()
+            .into(),
+    }
+}
 
 /// Asserts `|a − b| <= tol`, printing both values and the difference.
 #[track_caller]

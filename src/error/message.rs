@@ -1,0 +1,330 @@
+//! The English message of every variant: it speaks to a student and carries the numbers.
+
+use super::Error;
+use std::fmt;
+
+/// A number inside an error message, printed as JavaScript's `String(x)` prints it
+/// (`Infinity`, `1e-7`, `0.1`) on every target (see [`crate::platform::number_text`]), so a
+/// message is the same natively and in the browser. In the wasm build this also keeps Rust's
+/// float-printing code (~20 KB) out of the module.
+#[derive(Clone, Copy, Debug)]
+struct Num(f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&crate::platform::number_text(self.0))
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidDimension { dim } => write!(f, "dim must be 2 or 3, got {dim}"),
+            Error::CoordinateCount { count, dim } => write!(
+                f,
+                "coordinate count {count} is not a multiple of dim = {dim}; points are given as flat [x0, y0{}, x1, …]",
+                if *dim == 3 { ", z0" } else { "" }
+            ),
+            Error::NotFinite { what, value } => {
+                write!(f, "{what} is {}; every number must be finite", Num(*value))
+            }
+            Error::TooFewPoints { needed, got, what } => write!(
+                f,
+                "{what} needs at least {needed} control point{}, got {got}",
+                if *needed == 1 { "" } else { "s" }
+            ),
+            Error::WeightCount { expected, got } => write!(
+                f,
+                "weights must have one value per control point ({expected}), got {got}"
+            ),
+            Error::NonPositiveWeight { index, value } => write!(
+                f,
+                "weight {index} is {}; weights must be > 0 (zero or negative weights can put poles on the curve)",
+                Num(*value)
+            ),
+            Error::ParameterOutOfRange {
+                name,
+                value,
+                min,
+                max,
+            } => write!(
+                f,
+                "{name} = {} is outside the domain [{}, {}]",
+                Num(*value),
+                Num(*min),
+                Num(*max)
+            ),
+            Error::IndexOutOfRange { index, count } => write!(
+                f,
+                "control point index {index} is out of range: the curve has {count} points (0..={})",
+                count.saturating_sub(1)
+            ),
+            Error::PointDimension { expected, got } => write!(
+                f,
+                "a point needs {expected} coordinates, got {got}"
+            ),
+            Error::InvalidTolerance { value } => write!(
+                f,
+                "tolerance {} is not usable: it must be a finite number > 0",
+                Num(*value)
+            ),
+            Error::ToleranceTooSmall {
+                value,
+                relative,
+                size,
+            } => write!(
+                f,
+                "tolerance {} is not usable: it is below {} × the curve's size ({}); rounding would dominate",
+                Num(*value),
+                Num(*relative),
+                Num(*size)
+            ),
+            Error::FlatteningStalled { value } => write!(
+                f,
+                "tolerance {} is not usable: no piece of the curve is flat enough at this precision",
+                Num(*value)
+            ),
+            Error::InvalidInterval { a, b } => {
+                write!(f, "interval [{}, {}] is empty; it needs a < b", Num(*a), Num(*b))
+            }
+            Error::UnknownOption {
+                name,
+                value,
+                expected,
+            } => write!(f, "{name} must be one of {expected}, got \"{value}\""),
+            Error::InArgument {
+                name,
+                index,
+                source,
+            } => match index {
+                Some(i) => write!(f, "{name}[{i}]: {source}"),
+                None => write!(f, "{name}: {source}"),
+            },
+            Error::KnotCount {
+                expected,
+                got,
+                points,
+                degree,
+            } => write!(
+                f,
+                "knot vector must have n+p+2 = {} + {degree} + 2 = {expected} values, got {got}",
+                points.saturating_sub(1)
+            ),
+            Error::KnotOrder {
+                index,
+                value,
+                previous,
+            } => write!(
+                f,
+                "knots must not decrease: u_{index} = {} comes after u_{} = {}",
+                Num(*value),
+                index.saturating_sub(1),
+                Num(*previous)
+            ),
+            Error::EmptyDomain {
+                a,
+                b,
+                degree,
+                points,
+            } => write!(
+                f,
+                "the domain [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{}, {}] is empty; it needs u_{degree} < u_{points}",
+                Num(*a),
+                Num(*b)
+            ),
+            Error::KnotMultiplicity {
+                knot,
+                multiplicity,
+                first,
+                last,
+                degree,
+            } => write!(
+                f,
+                "knot {} appears {multiplicity} times (u_{first}..u_{last}); a degree-{degree} curve allows at most p+1 = {}",
+                Num(*knot),
+                degree + 1
+            ),
+            Error::InsertionMultiplicity {
+                name,
+                knot,
+                times,
+                multiplicity,
+                degree,
+            } => {
+                f.write_str("inserting knot ")?;
+                if let Some(name) = name {
+                    write!(f, "{name} = ")?;
+                }
+                write!(
+                    f,
+                    "{} {times} time(s) would give it multiplicity {multiplicity}; degree {degree} allows at most p+1 = {}",
+                    Num(*knot),
+                    degree + 1
+                )
+            }
+            Error::DegreeZero {} => f.write_str("degree must be at least 1, got 0"),
+            Error::DegreeOutOfRange { degree, max } => {
+                write!(f, "degree must be 1..={max}, got {degree}")
+            }
+            Error::TooFewPointsForDegree { degree, got } => write!(
+                f,
+                "degree {degree} needs at least p+1 = {} control points, got {got}",
+                degree + 1
+            ),
+            Error::CoincidentPoints { index, kind } => write!(
+                f,
+                "points {index} and {} coincide; {kind:?} spacing needs distinct consecutive points",
+                index + 1
+            ),
+            Error::PhantomEvenDegree { degree } => write!(
+                f,
+                "phantom points make a uniform B-spline of odd degree pass through its ends; degree {degree} is even"
+            ),
+            Error::NotASpan { span, valid } => write!(
+                f,
+                "span {span} is not a non-empty span of the domain (valid: {valid:?})"
+            ),
+            Error::RationalJoin {} => f.write_str(
+                "the joining rules are for polynomial Bézier pieces; these have weights",
+            ),
+            Error::JoinDegree {
+                rule,
+                left,
+                right,
+                needed,
+            } => write!(
+                f,
+                "rule {rule:?} fixes {needed} point(s) of the right piece; degrees {left} and {right} are too low (each piece needs degree >= {needed})"
+            ),
+            Error::NoJointTangent {} => f.write_str(
+                "G1 needs a tangent at the joint, but the left piece's last two points coincide",
+            ),
+            Error::BreakpointCount { pieces, got } => write!(
+                f,
+                "{pieces} pieces need {} breakpoints, got {got}",
+                pieces + 1
+            ),
+            Error::DegenerateLine { x, y } => write!(
+                f,
+                "the line needs two different points, got ({}, {}) twice",
+                Num(*x),
+                Num(*y)
+            ),
+            Error::CurveBatchLength {
+                count,
+                degree,
+                per_curve,
+            } => write!(
+                f,
+                "{count} coordinates do not split into curves of degree {degree} ((degree + 1)·dim = {per_curve} numbers each)"
+            ),
+            Error::RationalHodograph {} => f.write_str(
+                "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead",
+            ),
+            Error::MappedWeight { index, weight } => write!(
+                f,
+                "the map sends control point {index} to weight {}; weights must stay > 0 (the point would cross the line at infinity)",
+                Num(*weight)
+            ),
+            Error::SingularMap {} => f.write_str("the projective map is singular (determinant 0)"),
+            Error::MatrixSize { got } => write!(
+                f,
+                "a projective map is a 3×3 matrix (9 numbers, row by row), got {got}"
+            ),
+            Error::DegenerateTriangle {} => f.write_str(
+                "a circular arc needs a proper triangle P0 P1 P2 (no coincident or collinear points)",
+            ),
+            Error::NotIsosceles { first, second } => write!(
+                f,
+                "a circular arc needs an isosceles triangle: |P0P1| = {} but |P1P2| = {}",
+                Num(*first),
+                Num(*second)
+            ),
+            Error::ArcPointCount { got } => write!(
+                f,
+                "a circular arc needs 3 control points (6 numbers), got {got}"
+            ),
+            Error::InvalidSweep { sweep } => write!(
+                f,
+                "the sweep must be non-zero and at most one full turn (2π), got {}",
+                Num(*sweep)
+            ),
+            Error::ParallelAxes {} => {
+                f.write_str("the two axes of an ellipse must not be parallel or zero")
+            }
+            Error::AxisLengths {
+                center,
+                axis_x,
+                axis_y,
+            } => write!(
+                f,
+                "center, axisX and axisY need the same length, got {center}, {axis_x}, {axis_y}"
+            ),
+            Error::NotPositive { name, value } => {
+                write!(f, "{name} must be > 0, got {}", Num(*value))
+            }
+            Error::DimensionMismatch { left, right } => write!(
+                f,
+                "both pieces need the same dim, got {left} and {right}"
+            ),
+            Error::PiecePointCount {
+                degrees,
+                needed,
+                got,
+            } => write!(
+                f,
+                "degrees {degrees:?} need {needed} control points in all (n + 1 per piece), got {got}"
+            ),
+            Error::BufferLength { len, count, needed } => write!(
+                f,
+                "output buffer has {len} values, {count} points need {needed}"
+            ),
+            Error::NetCoordinateCount { rows, cols, got } => write!(
+                f,
+                "points must hold rows·cols·3 = {rows}·{cols}·3 = {} coordinates, got {got}",
+                rows.saturating_mul(*cols).saturating_mul(3)
+            ),
+            Error::PatchTooSmall { rows, cols } => write!(
+                f,
+                "a Bézier patch needs at least 2 rows and 2 columns (degree ≥ 1 each way), got {rows} × {cols}"
+            ),
+            Error::NetIndexOutOfRange { i, j, rows, cols } => write!(
+                f,
+                "control point (i, j) = ({i}, {j}) is out of range: the net has {rows} × {cols} points (i in 0..={}, j in 0..={})",
+                rows.saturating_sub(1),
+                cols.saturating_sub(1)
+            ),
+            Error::NoNormal { u, v } => write!(
+                f,
+                "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
+                Num(*u),
+                Num(*v)
+            ),
+            Error::EmptyTessellation { nu, nv } => write!(
+                f,
+                "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
+            ),
+            Error::TooLarge { what, value, max } => {
+                write!(f, "{what} = {value} is too large; at most {max} is allowed")
+            }
+            Error::ArgumentType {
+                name,
+                expected,
+                got,
+            } => write!(f, "{name} must be {expected}, got {got}"),
+            Error::NotWholeNumber { what, value } => write!(
+                f,
+                "{what} must be a whole number from 0 to {}, got {}",
+                u32::MAX,
+                Num(*value)
+            ),
+            Error::Needs2D { operation, dim } => {
+                write!(f, "{operation} works on 2D curves; this curve has dim = {dim}")
+            }
+            Error::AllWeightsZero { count } => write!(
+                f,
+                "all {count} weights are 0: the denominator w(t) = Σ w_i B_i(t) is 0 for every t, so there is no curve"
+            ),
+        }
+    }
+}

@@ -1,0 +1,83 @@
+//! Input checks shared by every family: weights, output lengths, flat coordinates, `dim`.
+
+use super::{Point, MAX_SAMPLES};
+use crate::error::{check_finite, Error, Result};
+
+/// Validates a weight list: count, finite, > 0.
+pub fn check_weights(w: &[f64], expected: usize) -> Result<()> {
+    if w.len() != expected {
+        return Err(Error::WeightCount {
+            expected,
+            got: w.len(),
+        });
+    }
+    check_all_finite(w, "weight")?;
+    if let Some((index, &value)) = w.iter().enumerate().find(|(_, &wi)| wi <= 0.0) {
+        return Err(Error::NonPositiveWeight { index, value });
+    }
+    Ok(())
+}
+
+/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count`.
+pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
+    if count > MAX_SAMPLES {
+        return Err(Error::TooLarge {
+            what: "sample count",
+            value: count,
+            max: MAX_SAMPLES,
+        });
+    }
+    if len != count * dim {
+        return Err(Error::BufferLength {
+            len,
+            count,
+            needed: count * dim,
+        });
+    }
+    Ok(())
+}
+
+/// Splits a flat coordinate array into points of dimension `P::DIM`, validating count and
+/// finiteness ("coordinate 5 is NaN").
+pub fn points_from_flat<P: Point>(coords: &[f64]) -> Result<Vec<P>> {
+    if !coords.len().is_multiple_of(P::DIM) {
+        return Err(Error::CoordinateCount {
+            count: coords.len(),
+            dim: P::DIM,
+        });
+    }
+    check_all_finite(coords, "coordinate")?;
+    Ok(coords.chunks_exact(P::DIM).map(P::from_slice).collect())
+}
+
+/// Checks every value of `values` is finite; the error names `"{what} {index}"`.
+pub fn check_all_finite(values: &[f64], what: &str) -> Result<()> {
+    for (i, &v) in values.iter().enumerate() {
+        check_finite(|| format!("{what} {i}"), v)?;
+    }
+    Ok(())
+}
+
+/// Validates `dim` (2 or 3).
+pub fn check_dim(dim: usize) -> Result<usize> {
+    if dim == 2 || dim == 3 {
+        Ok(dim)
+    } else {
+        Err(Error::InvalidDimension { dim })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+    use glam::DVec2;
+
+    #[test]
+    fn flat_points_are_validated() {
+        assert!(points_from_flat::<DVec2>(&[1.0, 2.0, 3.0]).is_err());
+        let e = points_from_flat::<DVec2>(&[1.0, f64::NAN]).unwrap_err();
+        assert!(e.to_string().contains("coordinate 1 is NaN"), "{e}");
+    }
+}

@@ -1,0 +1,13 @@
+//! The named caps on user-controlled sizes: degrees, derivative orders, sample counts.
+
+/// Highest degree accepted by the curve constructors: de Casteljau and de Boor cost O(p²) per
+/// point and such degrees are of no practical use (the syllabus recommends piecewise curves
+/// above ~5).
+pub const MAX_DEGREE: usize = 64;
+
+/// Highest derivative order accepted for rational curves (whose derivatives never vanish);
+/// polynomial curves accept any order (zero above the degree).
+pub const MAX_DERIVATIVE_ORDER: usize = 32;
+
+/// Largest number of samples one dense call may produce.
+pub const MAX_SAMPLES: usize = 1 << 24;

@@ -1,0 +1,704 @@
+//! One test per `Error` variant: a public call that produces it, its stable code, and a
+//! message that names the bad values. Variants only the JavaScript layer raises are tested
+//! through `splinelab::wasm` at the end (wasm only). Runs natively and in Node.
+
+mod common;
+
+use common::*;
+use splinelab::bezier::{self, BezierCurve, CompositeCurve, JoinRule};
+use splinelab::bspline::{self, BSplineCurve, KnotKind, KnotVector, Parameterization};
+use splinelab::geom::MAX_DEGREE;
+use splinelab::rational;
+use splinelab::{BSplineSurface, DMat3, DVec2, DVec3, Error};
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+/// Asserts `result` failed with `code` and a message containing every one of `parts`; returns
+/// the error for further checks.
+#[track_caller]
+fn fails<T: std::fmt::Debug>(result: splinelab::Result<T>, code: &str, parts: &[&str]) -> Error {
+    let e = result.expect_err("expected an error");
+    let message = e.to_string();
+    assert_eq!(e.code(), code, "code of {message:?}");
+    for part in parts {
+        assert!(message.contains(part), "message {message:?} lacks {part:?}");
+    }
+    e
+}
+
+/// The syllabus' cubic `(0,0) (2,2) (6,4) (8,2)`.
+fn cubic() -> BezierCurve<DVec2> {
+    BezierCurve::new(
+        pts2(&[(0.0, 0.0), (2.0, 2.0), (6.0, 4.0), (8.0, 2.0)]),
+        None,
+    )
+    .unwrap()
+}
+
+/// A rational quadratic with weights 1, 2, 1.
+fn rational_quadratic() -> BezierCurve<DVec2> {
+    BezierCurve::new(
+        pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)]),
+        Some(&[1.0, 2.0, 1.0]),
+    )
+    .unwrap()
+}
+
+/// A line segment from `a` to `b`.
+fn line(a: (f64, f64), b: (f64, f64)) -> BezierCurve<DVec2> {
+    BezierCurve::new(pts2(&[a, b]), None).unwrap()
+}
+
+/// A clamped cubic B-spline with five control points and one interior knot 0.5.
+fn clamped_cubic() -> BSplineCurve<DVec2> {
+    BSplineCurve::new(
+        pts2(&[(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (5.0, 1.0), (6.0, 0.0)]),
+        3,
+        vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0],
+        None,
+    )
+    .unwrap()
+}
+
+/// A 2 × 2 bilinear patch through the corners given row by row.
+fn patch(corners: [[f64; 3]; 4]) -> BSplineSurface {
+    BSplineSurface::bezier(&corners.concat(), 2, 2, None).unwrap()
+}
+
+fn unit_patch() -> BSplineSurface {
+    patch([
+        [0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 1.0],
+    ])
+}
+
+#[test]
+fn invalid_dimension() {
+    fails(
+        splinelab::geom::check_dim(4),
+        "invalid-dimension",
+        &["dim must be 2 or 3, got 4"],
+    );
+}
+
+#[test]
+fn coordinate_count() {
+    fails(
+        BezierCurve::<DVec2>::from_flat(&[0.0, 0.0, 1.0], None),
+        "coordinate-count",
+        &["coordinate count 3", "dim = 2"],
+    );
+}
+
+#[test]
+fn not_finite() {
+    fails(
+        BezierCurve::<DVec2>::from_flat(&[0.0, f64::INFINITY, 1.0, 1.0], None),
+        "not-finite",
+        &[&format!("coordinate 1 is {INFINITY_TEXT}")],
+    );
+}
+
+#[test]
+fn too_few_points() {
+    fails(
+        BezierCurve::new(pts2(&[(1.0, 2.0)]), None),
+        "too-few-points",
+        &["at least 2 control points, got 1"],
+    );
+}
+
+#[test]
+fn weight_count() {
+    fails(
+        BezierCurve::new(pts2(&[(0.0, 0.0), (1.0, 1.0)]), Some(&[1.0])),
+        "weight-count",
+        &["(2), got 1"],
+    );
+}
+
+#[test]
+fn all_weights_zero() {
+    fails(
+        rational::rational_poles(
+            &pts2(&[(0.0, 0.0), (1.0, 2.0), (2.0, 0.0)]),
+            &[0.0, 0.0, 0.0],
+            8,
+        ),
+        "all-weights-zero",
+        &["all 3 weights are 0"],
+    );
+}
+
+#[test]
+fn non_positive_weight() {
+    fails(
+        BezierCurve::new(pts2(&[(0.0, 0.0), (1.0, 1.0)]), Some(&[1.0, -0.5])),
+        "non-positive-weight",
+        &["weight 1 is -0.5"],
+    );
+}
+
+#[test]
+fn parameter_out_of_range() {
+    fails(
+        cubic().evaluate(1.5),
+        "parameter-out-of-range",
+        &["t = 1.5 is outside the domain [0, 1]"],
+    );
+}
+
+#[test]
+fn index_out_of_range() {
+    fails(
+        cubic().set_control_point(5, DVec2::ZERO),
+        "index-out-of-range",
+        &["index 5", "4 points (0..=3)"],
+    );
+}
+
+#[test]
+fn invalid_tolerance() {
+    fails(
+        cubic().flatten(0.0),
+        "invalid-tolerance",
+        &["tolerance 0 is not usable", "finite number > 0"],
+    );
+}
+
+#[test]
+fn tolerance_too_small() {
+    fails(
+        cubic().flatten(1e-20),
+        "tolerance-too-small",
+        &["tolerance 1e-20", "1e-10 × the curve's size"],
+    );
+}
+
+#[test]
+fn flattening_stalled() {
+    // A guard against a subdivision that stops making progress: no input is known to reach it
+    // (the relative floor of `tolerance-too-small` comes first, even for coordinates near
+    // 1e153 or weights of 1e±300), so the message is checked on the value itself.
+    let e = Error::FlatteningStalled { value: 1e-3 };
+    assert_eq!(e.code(), "flattening-stalled");
+    assert_eq!(
+        e.to_string(),
+        "tolerance 0.001 is not usable: no piece of the curve is flat enough at this precision"
+    );
+}
+
+#[test]
+fn invalid_interval() {
+    fails(
+        cubic().with_interval(2.0, 1.0),
+        "invalid-interval",
+        &["interval [2, 1] is empty"],
+    );
+}
+
+#[test]
+fn unknown_option() {
+    fails(
+        KnotKind::parse("even"),
+        "unknown-option",
+        &["kind must be one of", "got \"even\""],
+    );
+}
+
+#[test]
+fn in_argument_keeps_its_cause() {
+    let e = fails(
+        BSplineSurface::from_flat(
+            &[0.0; 12],
+            2,
+            2,
+            1,
+            1,
+            vec![0.0, 0.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+            None,
+        ),
+        "in-argument",
+        &["knotsU: knot vector must have", "got 3"],
+    );
+    let source = std::error::Error::source(&e).expect("a source");
+    assert_eq!(
+        source.to_string(),
+        "knot vector must have n+p+2 = 1 + 1 + 2 = 4 values, got 3"
+    );
+    let grid = unit_patch().sample_grid_into(&[0.5, 2.0], &[0.5], &mut Vec::new());
+    fails(grid, "in-argument", &["us[1]: u = 2 is outside"]);
+}
+
+#[test]
+fn knot_count() {
+    fails(
+        KnotVector::new(vec![0.0; 8], 3, 5),
+        "knot-count",
+        &["n+p+2 = 4 + 3 + 2 = 9 values, got 8"],
+    );
+}
+
+#[test]
+fn knot_order() {
+    fails(
+        KnotVector::new(vec![0.0, 0.0, 2.0, 1.0], 1, 2),
+        "knot-order",
+        &["u_3 = 1 comes after u_2 = 2"],
+    );
+}
+
+#[test]
+fn empty_domain() {
+    fails(
+        KnotVector::new(vec![0.0, 1.0, 1.0, 2.0], 1, 2),
+        "empty-domain",
+        &["[u_1, u_2] = [1, 1] is empty"],
+    );
+}
+
+#[test]
+fn knot_multiplicity() {
+    fails(
+        KnotVector::new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3),
+        "knot-multiplicity",
+        &["knot 0 appears 3 times (u_0..u_2)", "at most p+1 = 2"],
+    );
+}
+
+#[test]
+fn insertion_multiplicity() {
+    fails(
+        clamped_cubic().insert_knot(0.5, 4),
+        "insertion-multiplicity",
+        &["knot 0.5 4 time(s)", "multiplicity 5", "p+1 = 4"],
+    );
+    fails(
+        unit_patch().insert_knot_v(0.25, 3),
+        "insertion-multiplicity",
+        &["knot v = 0.25 3 time(s)", "multiplicity 3"],
+    );
+}
+
+#[test]
+fn degree_zero() {
+    fails(
+        BSplineCurve::new(
+            pts2(&[(0.0, 0.0), (1.0, 1.0)]),
+            0,
+            vec![0.0, 1.0, 2.0],
+            None,
+        ),
+        "degree-zero",
+        &["degree must be at least 1, got 0"],
+    );
+}
+
+#[test]
+fn too_few_points_for_degree() {
+    fails(
+        BSplineCurve::new(
+            pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)]),
+            3,
+            vec![0.0; 7],
+            None,
+        ),
+        "too-few-points-for-degree",
+        &["degree 3 needs at least p+1 = 4 control points, got 3"],
+    );
+}
+
+#[test]
+fn too_large() {
+    let points = vec![DVec2::ZERO; MAX_DEGREE + 2];
+    let knots = vec![0.0; 2 * MAX_DEGREE + 4];
+    fails(
+        BSplineCurve::new(points, MAX_DEGREE + 1, knots, None),
+        "too-large",
+        &[&format!(
+            "degree = {} is too large; at most {MAX_DEGREE}",
+            MAX_DEGREE + 1
+        )],
+    );
+}
+
+#[test]
+fn coincident_points() {
+    let p = DVec2::new(1.0, 1.0);
+    fails(
+        bspline::parameterize(&[p, p, DVec2::ZERO], Parameterization::Chord),
+        "coincident-points",
+        &["points 0 and 1 coincide", "Chord spacing"],
+    );
+}
+
+#[test]
+fn phantom_even_degree() {
+    fails(
+        bspline::phantom_points(&pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)]), 2),
+        "phantom-even-degree",
+        &["degree 2 is even"],
+    );
+}
+
+#[test]
+fn not_a_span() {
+    fails(
+        clamped_cubic().segment_matrix(0, true),
+        "not-a-span",
+        &["span 0 is not a non-empty span", "(valid: [3, 4])"],
+    );
+}
+
+#[test]
+fn rational_join() {
+    fails(
+        bezier::join(&rational_quadratic(), &cubic(), JoinRule::C1, true),
+        "rational-join",
+        &["polynomial Bézier pieces"],
+    );
+}
+
+#[test]
+fn join_degree() {
+    let a = line((0.0, 0.0), (1.0, 1.0));
+    let b = line((1.0, 1.0), (2.0, 0.0));
+    fails(
+        bezier::join(&a, &b, JoinRule::C2, true),
+        "join-degree",
+        &["rule C2", "degrees 1 and 1 are too low"],
+    );
+}
+
+#[test]
+fn no_joint_tangent() {
+    let left = BezierCurve::new(pts2(&[(0.0, 0.0), (1.0, 1.0), (1.0, 1.0)]), None).unwrap();
+    fails(
+        bezier::join(&left, &cubic(), JoinRule::G1, true),
+        "no-joint-tangent",
+        &["G1 needs a tangent at the joint"],
+    );
+}
+
+#[test]
+fn breakpoint_count() {
+    let pieces = vec![line((0.0, 0.0), (1.0, 1.0)), line((1.0, 1.0), (2.0, 0.0))];
+    fails(
+        CompositeCurve::new(pieces, &[0.0, 1.0]),
+        "breakpoint-count",
+        &["2 pieces need 3 breakpoints, got 2"],
+    );
+}
+
+#[test]
+fn degenerate_line() {
+    let p = DVec2::new(1.5, -2.0);
+    fails(
+        cubic().intersect_line(p, p, 1e-9),
+        "degenerate-line",
+        &["got (1.5, -2) twice"],
+    );
+}
+
+#[test]
+fn curve_batch_length() {
+    fails(
+        bezier::arc_lengths::<DVec2>(&[0.0; 10], 3, None),
+        "curve-batch-length",
+        &["10 coordinates", "degree 3", "= 8 numbers each"],
+    );
+}
+
+#[test]
+fn rational_hodograph() {
+    fails(
+        rational_quadratic().hodograph(),
+        "rational-hodograph",
+        &["hodograph of a rational curve"],
+    );
+}
+
+#[test]
+fn mapped_weight() {
+    let flip = DMat3::from_diagonal(DVec3::new(1.0, 1.0, -2.0));
+    fails(
+        rational::projective_map_bezier(&cubic(), &flip),
+        "mapped-weight",
+        &["control point 0 to weight -2"],
+    );
+}
+
+#[test]
+fn singular_map() {
+    fails(
+        rational::projective_map_bezier(&cubic(), &DMat3::ZERO),
+        "singular-map",
+        &["singular (determinant 0)"],
+    );
+}
+
+#[test]
+fn degenerate_triangle() {
+    let p = DVec2::new(1.0, 1.0);
+    fails(
+        rational::circle_arc_from_triangle(p, p, DVec2::ZERO),
+        "degenerate-triangle",
+        &["proper triangle P0 P1 P2"],
+    );
+}
+
+#[test]
+fn not_isosceles() {
+    fails(
+        rational::circle_arc_from_triangle(
+            DVec2::new(0.0, 0.0),
+            DVec2::new(1.0, 0.0),
+            DVec2::new(1.0, 2.0),
+        ),
+        "not-isosceles",
+        &["|P0P1| = 1 but |P1P2| = 2"],
+    );
+}
+
+#[test]
+fn invalid_sweep() {
+    fails(
+        rational::ellipse_arc(DVec2::ZERO, DVec2::X, DVec2::Y, 0.0, 7.0),
+        "invalid-sweep",
+        &["one full turn (2π), got 7"],
+    );
+}
+
+#[test]
+fn parallel_axes() {
+    fails(
+        rational::ellipse_arc(DVec2::ZERO, DVec2::X, 2.0 * DVec2::X, 0.0, 1.0),
+        "parallel-axes",
+        &["axes of an ellipse must not be parallel"],
+    );
+}
+
+#[test]
+fn not_positive() {
+    fails(
+        rational::circular_arc(DVec2::ZERO, -1.0, 0.0, 1.0),
+        "not-positive",
+        &["r must be > 0, got -1"],
+    );
+    fails(
+        rational::ellipse(DVec2::ZERO, 1.0, 0.0, 0.0),
+        "not-positive",
+        &["ry must be > 0, got 0"],
+    );
+}
+
+#[test]
+fn buffer_length() {
+    fails(
+        cubic().sample_into(&[0.5], &mut [0.0; 3]),
+        "buffer-length",
+        &["output buffer has 3 values, 1 points need 2"],
+    );
+}
+
+#[test]
+fn net_coordinate_count() {
+    fails(
+        BSplineSurface::from_flat(
+            &[0.0; 10],
+            2,
+            2,
+            1,
+            1,
+            vec![0.0, 0.0, 1.0, 1.0],
+            vec![0.0, 0.0, 1.0, 1.0],
+            None,
+        ),
+        "net-coordinate-count",
+        &["rows·cols·3 = 2·2·3 = 12 coordinates, got 10"],
+    );
+}
+
+#[test]
+fn patch_too_small() {
+    fails(
+        BSplineSurface::bezier(&[0.0; 9], 1, 3, None),
+        "patch-too-small",
+        &["at least 2 rows and 2 columns", "got 1 × 3"],
+    );
+}
+
+#[test]
+fn net_index_out_of_range() {
+    fails(
+        unit_patch().set_control_point(5, 0, DVec3::ZERO),
+        "net-index-out-of-range",
+        &["(i, j) = (5, 0)", "2 × 2 points (i in 0..=1, j in 0..=1)"],
+    );
+}
+
+#[test]
+fn no_normal() {
+    // Every row of the net is one point: S_v = 0 everywhere.
+    let flat = patch([
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+    ]);
+    fails(
+        flat.normal(0.5, 0.25),
+        "no-normal",
+        &["no normal at (u, v) = (0.5, 0.25)"],
+    );
+}
+
+#[test]
+fn empty_tessellation() {
+    fails(
+        unit_patch().tessellate(0, 4),
+        "empty-tessellation",
+        &["got nu = 0, nv = 4"],
+    );
+}
+
+#[test]
+fn codes_are_kebab_case() {
+    let e = KnotVector::new(vec![0.0; 3], 1, 2).unwrap_err();
+    assert!(e
+        .code()
+        .chars()
+        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'));
+}
+
+/// The variants only the JavaScript layer raises, through the exported functions.
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+mod js {
+    use splinelab::wasm::{self, JsBezierCurve, JsCompositeBezier};
+    use wasm_bindgen::{JsError, JsValue};
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Asserts the export threw a JS `Error` whose message contains every one of `parts`.
+    #[track_caller]
+    fn fails<T>(result: Result<T, JsError>, parts: &[&str]) {
+        let message = super::js_message(result);
+        for part in parts {
+            assert!(message.contains(part), "message {message:?} lacks {part:?}");
+        }
+    }
+
+    fn arr(values: &[f64]) -> JsValue {
+        js_sys::Float64Array::from(values).into()
+    }
+
+    fn curve(coords: &[f64], dim: f64) -> JsBezierCurve {
+        JsBezierCurve::new(arr(coords), dim, JsValue::UNDEFINED).unwrap()
+    }
+
+    fn cubic() -> JsBezierCurve {
+        curve(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2.0)
+    }
+
+    #[test]
+    fn point_dimension() {
+        fails(
+            cubic().set_control_point(0.0, arr(&[1.0, 2.0, 3.0])),
+            &["a point needs 2 coordinates, got 3"],
+        );
+    }
+
+    #[test]
+    fn degree_out_of_range() {
+        fails(
+            wasm::bspline::uniform_segment_matrix(0.0),
+            &["degree must be 1..=", "got 0"],
+        );
+    }
+
+    #[test]
+    fn matrix_size() {
+        fails(
+            cubic().projective_map(arr(&[1.0, 0.0, 0.0])),
+            &["3×3 matrix (9 numbers, row by row), got 3"],
+        );
+    }
+
+    #[test]
+    fn arc_point_count() {
+        fails(
+            wasm::rational::circular_arc_bezier(arr(&[0.0, 0.0, 1.0, 1.0])),
+            &["3 control points (6 numbers), got 2"],
+        );
+    }
+
+    #[test]
+    fn axis_lengths() {
+        fails(
+            wasm::rational::ellipse_arc(
+                arr(&[0.0, 0.0]),
+                arr(&[1.0, 0.0, 0.0]),
+                arr(&[0.0, 1.0]),
+                0.0,
+                1.0,
+            ),
+            &["same length, got 2, 3, 2"],
+        );
+    }
+
+    #[test]
+    fn not_positive() {
+        fails(
+            wasm::rational::circle(0.0, 0.0, -1.0),
+            &["r must be > 0, got -1"],
+        );
+    }
+
+    #[test]
+    fn dimension_mismatch() {
+        let c3 = curve(&[0.0; 6], 3.0);
+        fails(
+            wasm::bezier::join_bezier(&cubic(), &c3, JsValue::from("C1"), JsValue::UNDEFINED),
+            &["same dim, got 2 and 3"],
+        );
+    }
+
+    #[test]
+    fn piece_point_count() {
+        fails(
+            JsCompositeBezier::new(
+                arr(&[0.0, 0.0, 1.0, 1.0]),
+                2.0,
+                arr(&[3.0]),
+                JsValue::UNDEFINED,
+            ),
+            &["degrees [3] need 4 control points", "got 2"],
+        );
+    }
+
+    #[test]
+    fn argument_type() {
+        fails(
+            JsBezierCurve::new(JsValue::NULL, 2.0, JsValue::UNDEFINED),
+            &["points must be an array of numbers", "got null"],
+        );
+    }
+
+    #[test]
+    fn not_whole_number() {
+        fails(
+            JsBezierCurve::new(arr(&[0.0; 4]), 2.5, JsValue::UNDEFINED),
+            &["dim must be a whole number", "got 2.5"],
+        );
+    }
+
+    #[test]
+    fn needs_2d() {
+        fails(
+            curve(&[0.0; 6], 3.0).intersect_line(0.0, 0.0, 1.0, 0.0, 1e-9),
+            &["works on 2D curves; this curve has dim = 3"],
+        );
+    }
+}
