@@ -12,7 +12,8 @@ export function bezierSample(points, dim, ts, out) {
     const mt = 1 - t;
     scratch.set(points);
     for (let r = 1; r < count; r++) {
-      for (let i = 0; i < (count - r) * dim; i++) scratch[i] = mt * scratch[i] + t * scratch[i + dim];
+      for (let i = 0; i < (count - r) * dim; i++)
+        scratch[i] = mt * scratch[i] + t * scratch[i + dim];
     }
     for (let c = 0; c < dim; c++) out[s * dim + c] = scratch[c];
   }
@@ -94,7 +95,8 @@ export function deBoorSample(curve, us, out) {
         const denom = knots[i + p - r + 1] - knots[i];
         const a = denom === 0 ? 0 : (u - knots[i]) / denom;
         const b = 1 - a;
-        for (let c = 0; c < stride; c++) d[j * stride + c] = b * d[(j - 1) * stride + c] + a * d[j * stride + c];
+        for (let c = 0; c < stride; c++)
+          d[j * stride + c] = b * d[(j - 1) * stride + c] + a * d[j * stride + c];
       }
     }
     const o = p * stride;
@@ -192,7 +194,8 @@ export function insertKnotInPlace(curve, u) {
   for (let i = k; i >= k - p + 1; i--) {
     const a = (u - knots[i]) / (knots[i + p] - knots[i]);
     const b = 1 - a;
-    for (let c = 0; c < stride; c++) cw[i * stride + c] = a * cw[i * stride + c] + b * cw[(i - 1) * stride + c];
+    for (let c = 0; c < stride; c++)
+      cw[i * stride + c] = a * cw[i * stride + c] + b * cw[(i - 1) * stride + c];
   }
   knots.copyWithin(k + 2, k + 1, n + p + 2);
   knots[k + 1] = u;
@@ -235,7 +238,9 @@ function cubicSpeedGL24(ax, ay, bx, by, cx, cy, lo, hi) {
   for (let i = 0; i < 24; i++) {
     const t = lo + h * (nodes[i] + 1);
     const mt = 1 - t;
-    const b0 = mt * mt, b1 = 2 * mt * t, b2 = t * t;
+    const b0 = mt * mt,
+      b1 = 2 * mt * t,
+      b2 = t * t;
     const dx = b0 * ax + b1 * bx + b2 * cx;
     const dy = b0 * ay + b1 * by + b2 * cy;
     sum += weights[i] * Math.sqrt(dx * dx + dy * dy);
@@ -249,9 +254,12 @@ export function cubicArcLengthsGL24(points, out) {
   for (let c = 0; c < count; c++) {
     const o = 8 * c;
     // Differences of the control points: the hodograph's, divided by 3.
-    const ax = points[o + 2] - points[o], ay = points[o + 3] - points[o + 1];
-    const bx = points[o + 4] - points[o + 2], by = points[o + 5] - points[o + 3];
-    const cx = points[o + 6] - points[o + 4], cy = points[o + 7] - points[o + 5];
+    const ax = points[o + 2] - points[o],
+      ay = points[o + 3] - points[o + 1];
+    const bx = points[o + 4] - points[o + 2],
+      by = points[o + 5] - points[o + 3];
+    const cx = points[o + 6] - points[o + 4],
+      cy = points[o + 7] - points[o + 5];
     out[c] = cubicSpeedGL24(ax, ay, bx, by, cx, cy, 0, 1);
   }
   return out;
@@ -272,25 +280,45 @@ export function cubicArcLengthsAdaptiveGL24(points, out, accuracy = 1e-13) {
   const count = points.length / 8;
   for (let c = 0; c < count; c++) {
     const o = 8 * c;
-    const ax = points[o + 2] - points[o], ay = points[o + 3] - points[o + 1];
-    const bx = points[o + 4] - points[o + 2], by = points[o + 5] - points[o + 3];
-    const cx = points[o + 6] - points[o + 4], cy = points[o + 7] - points[o + 5];
-    const polygon = Math.sqrt(ax * ax + ay * ay) + Math.sqrt(bx * bx + by * by) + Math.sqrt(cx * cx + cy * cy);
+    const ax = points[o + 2] - points[o],
+      ay = points[o + 3] - points[o + 1];
+    const bx = points[o + 4] - points[o + 2],
+      by = points[o + 5] - points[o + 3];
+    const cx = points[o + 6] - points[o + 4],
+      cy = points[o + 7] - points[o + 5];
+    const polygon =
+      Math.sqrt(ax * ax + ay * ay) + Math.sqrt(bx * bx + by * by) + Math.sqrt(cx * cx + cy * cy);
     let total = 0;
-    stack[0] = 0; stack[1] = 1; stack[2] = cubicSpeedGL24(ax, ay, bx, by, cx, cy, 0, 1); stack[3] = 0;
+    stack[0] = 0;
+    stack[1] = 1;
+    stack[2] = cubicSpeedGL24(ax, ay, bx, by, cx, cy, 0, 1);
+    stack[3] = 0;
     let top = 1;
     while (top > 0) {
       top -= 1;
       const k = 4 * top;
-      const lo = stack[k], hi = stack[k + 1], whole = stack[k + 2], depth = stack[k + 3];
+      const lo = stack[k],
+        hi = stack[k + 1],
+        whole = stack[k + 2],
+        depth = stack[k + 3];
       const mid = 0.5 * (lo + hi);
       const left = cubicSpeedGL24(ax, ay, bx, by, cx, cy, lo, mid);
       const right = cubicSpeedGL24(ax, ay, bx, by, cx, cy, mid, hi);
-      if (depth >= 50 || top + 2 > ADAPTIVE_STACK || Math.abs(left + right - whole) <= accuracy * polygon * (hi - lo)) {
+      if (
+        depth >= 50 ||
+        top + 2 > ADAPTIVE_STACK ||
+        Math.abs(left + right - whole) <= accuracy * polygon * (hi - lo)
+      ) {
         total += left + right;
       } else {
-        stack[k] = lo; stack[k + 1] = mid; stack[k + 2] = left; stack[k + 3] = depth + 1;
-        stack[k + 4] = mid; stack[k + 5] = hi; stack[k + 6] = right; stack[k + 7] = depth + 1;
+        stack[k] = lo;
+        stack[k + 1] = mid;
+        stack[k + 2] = left;
+        stack[k + 3] = depth + 1;
+        stack[k + 4] = mid;
+        stack[k + 5] = hi;
+        stack[k + 6] = right;
+        stack[k + 7] = depth + 1;
         top += 2;
       }
     }
@@ -351,7 +379,10 @@ export function surfaceGrid(s, gridU, gridV, out) {
     }
     for (let j = 0; j < gridV; j++) {
       const kv = V.spans[j];
-      let x = 0, y = 0, z = 0, w = 0;
+      let x = 0,
+        y = 0,
+        z = 0,
+        w = 0;
       for (let b = 0; b <= p; b++) {
         const nv = V.basis[j * (p + 1) + b];
         const r = (kv - p + b) * 4;

@@ -17,7 +17,14 @@ import os from "node:os";
 import { fileURLToPath } from "node:url";
 import init, * as sl from "../www/pkg/splinelab.js";
 import * as base from "./baseline.mjs";
-import { bspline, cubicBezier, insertionKnots, nurbsSurface, randomCubics, uniformParams } from "./inputs.mjs";
+import {
+  bspline,
+  cubicBezier,
+  insertionKnots,
+  nurbsSurface,
+  randomCubics,
+  uniformParams,
+} from "./inputs.mjs";
 import { dragBench } from "./drag.mjs";
 
 const args = new Set(process.argv.slice(2));
@@ -41,7 +48,10 @@ const { Bezier } = require("bezier-js");
 const nurbs = require("nurbs");
 const rhino = await require("rhino3dm")();
 const peerVersions = Object.fromEntries(
-  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm"].map((name) => [name, JSON.parse(readFileSync(here(`../node_modules/${name}/package.json`), "utf8")).version]),
+  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm"].map((name) => [
+    name,
+    JSON.parse(readFileSync(here(`../node_modules/${name}/package.json`), "utf8")).version,
+  ]),
 );
 
 // ---- harness -------------------------------------------------------------------------------
@@ -59,8 +69,20 @@ const median = (xs) => {
 function views(curve, params, n, check) {
   if (!curve.sampleUniformView) return [];
   return [
-    { lib: "splinelab", method: "sampleView(params), view into wasm memory", n, run: () => curve.sampleView(params), check },
-    { lib: "splinelab", method: `sampleUniformView(${n}), view into wasm memory`, n, run: () => curve.sampleUniformView(n), check },
+    {
+      lib: "splinelab",
+      method: "sampleView(params), view into wasm memory",
+      n,
+      run: () => curve.sampleView(params),
+      check,
+    },
+    {
+      lib: "splinelab",
+      method: `sampleUniformView(${n}), view into wasm memory`,
+      n,
+      run: () => curve.sampleUniformView(n),
+      check,
+    },
   ];
 }
 
@@ -187,11 +209,34 @@ const fallbacks = [];
 
   const bz = new Bezier(...cp);
   const pb = peer(sizes(200_000));
-  const vc = verb.geom.NurbsCurve.byKnotsControlPointsWeights(3, [0, 0, 0, 0, 1, 1, 1, 1], [[cp[0], cp[1]], [cp[2], cp[3]], [cp[4], cp[5]], [cp[6], cp[7]]], [1, 1, 1, 1]);
+  const vc = verb.geom.NurbsCurve.byKnotsControlPointsWeights(
+    3,
+    [0, 0, 0, 0, 1, 1, 1, 1],
+    [
+      [cp[0], cp[1]],
+      [cp[2], cp[3]],
+      [cp[4], cp[5]],
+      [cp[6], cp[7]],
+    ],
+    [1, 1, 1, 1],
+  );
   const pv = peer(sizes(100_000));
   const nVerbGrid = sizes(100_000);
-  const verbGridRef = base.cubicSample2d(cp, uniformParams(0, 1, nVerbGrid), new Float64Array(2 * nVerbGrid));
-  const nc = nurbs({ points: [[cp[0], cp[1]], [cp[2], cp[3]], [cp[4], cp[5]], [cp[6], cp[7]]], degree: 3, knots: [[0, 0, 0, 0, 1, 1, 1, 1]] });
+  const verbGridRef = base.cubicSample2d(
+    cp,
+    uniformParams(0, 1, nVerbGrid),
+    new Float64Array(2 * nVerbGrid),
+  );
+  const nc = nurbs({
+    points: [
+      [cp[0], cp[1]],
+      [cp[2], cp[3]],
+      [cp[4], cp[5]],
+      [cp[6], cp[7]],
+    ],
+    degree: 3,
+    knots: [[0, 0, 0, 0, 1, 1, 1, 1]],
+  });
   const pn = peer(sizes(200_000));
   const rc = new rhino.NurbsCurve(2, false, 4, 4);
   for (let i = 0; i < 4; i++) rc.points().set(i, [cp[2 * i], cp[2 * i + 1], 0, 1]);
@@ -205,18 +250,50 @@ const fallbacks = [];
       title: `2D cubic Bézier at ${N.toLocaleString("en")} parameters`,
       unit: "points",
       contenders: [
-        { lib: "splinelab", method: "sample(ts)", n: N, run: () => curve.sample(ts), check: (o) => ((ref = o), 0) },
-        { lib: "splinelab", method: `sampleUniform(${N})`, n: N, run: () => curve.sampleUniform(N), check },
-        ...views(curve, ts, N, check),
-        { lib: "js-baseline", method: "de Casteljau loop", n: N, run: () => base.bezierSample(cp, 2, ts, out), check },
-        { lib: "js-baseline", method: "Bernstein form, unrolled cubic", n: N, run: () => base.cubicSample2d(cp, ts, out), check },
         {
-          lib: "js-baseline", method: "Bernstein form, new output array per call", n: N,
-          run: () => base.cubicSample2d(cp, ts, new Float64Array(2 * N)), check,
+          lib: "splinelab",
+          method: "sample(ts)",
+          n: N,
+          run: () => curve.sample(ts),
+          check: (o) => {
+            ref = o;
+            return 0;
+          },
+        },
+        {
+          lib: "splinelab",
+          method: `sampleUniform(${N})`,
+          n: N,
+          run: () => curve.sampleUniform(N),
+          check,
+        },
+        ...views(curve, ts, N, check),
+        {
+          lib: "js-baseline",
+          method: "de Casteljau loop",
+          n: N,
+          run: () => base.bezierSample(cp, 2, ts, out),
+          check,
+        },
+        {
+          lib: "js-baseline",
+          method: "Bernstein form, unrolled cubic",
+          n: N,
+          run: () => base.cubicSample2d(cp, ts, out),
+          check,
+        },
+        {
+          lib: "js-baseline",
+          method: "Bernstein form, new output array per call",
+          n: N,
+          run: () => base.cubicSample2d(cp, ts, new Float64Array(2 * N)),
+          check,
           note: "allocates its result as splinelab's API must",
         },
         {
-          lib: "bezier-js", method: "compute(t) per point", n: pb.n,
+          lib: "bezier-js",
+          method: "compute(t) per point",
+          n: pb.n,
           run: () => {
             for (let k = 0; k < pb.n; k++) {
               const q = bz.compute(pb.ts[k]);
@@ -228,23 +305,35 @@ const fallbacks = [];
           check: (o) => check(o, pb.n, pb.stride),
         },
         {
-          lib: "verb-nurbs", method: "NurbsCurve.point(u) per point", n: pv.n,
+          lib: "verb-nurbs",
+          method: "NurbsCurve.point(u) per point",
+          n: pv.n,
           run: () => pointByPoint(pv.ts, pv.n, pv.out, (u) => vc.point(u)),
           check: (o) => check(o, pv.n, pv.stride),
         },
         {
-          lib: "verb-nurbs", method: "Eval.curveRegularSamplePoints (forward differences)", n: nVerbGrid,
+          lib: "verb-nurbs",
+          method: "Eval.curveRegularSamplePoints (forward differences)",
+          n: nVerbGrid,
           run: () => verb.eval.Eval.curveRegularSamplePoints(vc._data, nVerbGrid - 1),
           check: (o) => maxAbsDiff(o.flat(), verbGridRef),
           note: "its own grid of n points; compared with the JS Bernstein form there",
         },
         {
-          lib: "nurbs", method: "evaluate(out, t) per point", n: pn.n,
-          run: () => pointByPoint(pn.ts, pn.n, pn.out, (u) => (nc.evaluate(tmp, u), tmp)),
+          lib: "nurbs",
+          method: "evaluate(out, t) per point",
+          n: pn.n,
+          run: () =>
+            pointByPoint(pn.ts, pn.n, pn.out, (u) => {
+              nc.evaluate(tmp, u);
+              return tmp;
+            }),
           check: (o) => check(o, pn.n, pn.stride),
         },
         {
-          lib: "rhino3dm", method: "NurbsCurve.pointAt(t) per point", n: pr.n,
+          lib: "rhino3dm",
+          method: "NurbsCurve.pointAt(t) per point",
+          n: pr.n,
           run: () => pointByPoint(pr.ts, pr.n, pr.out, (u) => rc.pointAt(u)),
           check: (o) => check(o, pr.n, pr.stride),
         },
@@ -260,7 +349,12 @@ function verbCurve(input) {
   const pts = [];
   for (let i = 0; i < input.count; i++) pts.push([input.points[2 * i], input.points[2 * i + 1]]);
   const w = input.weights ? Array.from(input.weights) : new Array(input.count).fill(1);
-  return verb.geom.NurbsCurve.byKnotsControlPointsWeights(input.degree, Array.from(input.knots), pts, w);
+  return verb.geom.NurbsCurve.byKnotsControlPointsWeights(
+    input.degree,
+    Array.from(input.knots),
+    pts,
+    w,
+  );
 }
 function nurbsCurve(input) {
   const pts = [];
@@ -282,7 +376,8 @@ function rhinoCurve(input) {
   for (let i = 1; i < input.knots.length - 1; i++) kl.set(i - 1, input.knots[i]);
   return c;
 }
-const slCurve = (input) => new sl.BSplineCurve(input.points, 2, input.degree, input.knots, input.weights);
+const slCurve = (input) =>
+  new sl.BSplineCurve(input.points, 2, input.degree, input.knots, input.weights);
 
 // ---- (b) B-spline and NURBS curves -------------------------------------------------------------
 for (const rational of [false, true]) {
@@ -310,22 +405,53 @@ for (const rational of [false, true]) {
       title: `2D clamped cubic ${kind}, 1000 control points, at ${N.toLocaleString("en")} parameters`,
       unit: "points",
       contenders: [
-        { lib: "splinelab", method: "sample(us)", n: N, run: () => curve.sample(us), check: (o) => ((ref = o), 0) },
-        { lib: "splinelab", method: `sampleUniform(${N})`, n: N, run: () => curve.sampleUniform(N), check },
-        ...views(curve, us, N, check),
-        { lib: "js-baseline", method: "de Boor, span hint", n: N, run: () => base.deBoorSample(jsCurve, us, out), check },
         {
-          lib: "verb-nurbs", method: "NurbsCurve.point(u) per point", n: pv.n,
+          lib: "splinelab",
+          method: "sample(us)",
+          n: N,
+          run: () => curve.sample(us),
+          check: (o) => {
+            ref = o;
+            return 0;
+          },
+        },
+        {
+          lib: "splinelab",
+          method: `sampleUniform(${N})`,
+          n: N,
+          run: () => curve.sampleUniform(N),
+          check,
+        },
+        ...views(curve, us, N, check),
+        {
+          lib: "js-baseline",
+          method: "de Boor, span hint",
+          n: N,
+          run: () => base.deBoorSample(jsCurve, us, out),
+          check,
+        },
+        {
+          lib: "verb-nurbs",
+          method: "NurbsCurve.point(u) per point",
+          n: pv.n,
           run: () => pointByPoint(pv.us, pv.n, pv.out, (u) => vc.point(u)),
           check: (o) => check(o, pv.n, pv.stride),
         },
         {
-          lib: "nurbs", method: "evaluate(out, u) per point", n: pn.n,
-          run: () => pointByPoint(pn.us, pn.n, pn.out, (u) => (nc.evaluate(tmp, u), tmp)),
+          lib: "nurbs",
+          method: "evaluate(out, u) per point",
+          n: pn.n,
+          run: () =>
+            pointByPoint(pn.us, pn.n, pn.out, (u) => {
+              nc.evaluate(tmp, u);
+              return tmp;
+            }),
           check: (o) => check(o, pn.n, pn.stride),
         },
         {
-          lib: "rhino3dm", method: "NurbsCurve.pointAt(u) per point", n: pr.n,
+          lib: "rhino3dm",
+          method: "NurbsCurve.pointAt(u) per point",
+          n: pr.n,
           run: () => pointByPoint(pr.us, pr.n, pr.out, (u) => rc.pointAt(u)),
           check: (o) => check(o, pr.n, pr.stride),
         },
@@ -349,17 +475,37 @@ for (const rational of [false, true]) {
   const refVerb = grid(gVerb);
   const refNurbs = grid(gNurbs);
   const refRhino = grid(gRhino);
-  const nested = (f) => Array.from({ length: s.countU }, (_, i) => Array.from({ length: s.countV }, (_, j) => f(i * s.countV + j)));
+  const nested = (f) =>
+    Array.from({ length: s.countU }, (_, i) =>
+      Array.from({ length: s.countV }, (_, j) => f(i * s.countV + j)),
+    );
   const pts = nested((k) => [s.points[3 * k], s.points[3 * k + 1], s.points[3 * k + 2]]);
   const ws = nested((k) => s.weights[k]);
-  const vs = verb.geom.NurbsSurface.byKnotsControlPointsWeights(3, 3, Array.from(s.knotsU), Array.from(s.knotsV), pts, ws);
-  const ns = nurbs({ points: pts, weights: ws, degree: [3, 3], knots: [Array.from(s.knotsU), Array.from(s.knotsV)] });
+  const vs = verb.geom.NurbsSurface.byKnotsControlPointsWeights(
+    3,
+    3,
+    Array.from(s.knotsU),
+    Array.from(s.knotsV),
+    pts,
+    ws,
+  );
+  const ns = nurbs({
+    points: pts,
+    weights: ws,
+    degree: [3, 3],
+    knots: [Array.from(s.knotsU), Array.from(s.knotsV)],
+  });
   const rs = rhino.NurbsSurface.create(3, true, 4, 4, s.countU, s.countV);
   for (let i = 0; i < s.countU; i++) {
     for (let j = 0; j < s.countV; j++) {
       const k = i * s.countV + j;
       const w = s.weights[k];
-      rs.points().set(i, j, [w * s.points[3 * k], w * s.points[3 * k + 1], w * s.points[3 * k + 2], w]);
+      rs.points().set(i, j, [
+        w * s.points[3 * k],
+        w * s.points[3 * k + 1],
+        w * s.points[3 * k + 2],
+        w,
+      ]);
     }
   }
   for (let i = 1; i < s.knotsU.length - 1; i++) rs.knotsU().set(i - 1, s.knotsU[i]);
@@ -376,26 +522,51 @@ for (const rational of [false, true]) {
     };
   };
   const tmp = [0, 0, 0];
-  const slSurface = has.surface ? new sl.BSplineSurface(s.points, s.countU, s.countV, 3, 3, s.knotsU, s.knotsV, s.weights) : null;
+  const slSurface = has.surface
+    ? new sl.BSplineSurface(s.points, s.countU, s.countV, 3, 3, s.knotsU, s.knotsV, s.weights)
+    : null;
   const gridUs = paramsOf(s.knotsU, s.countU, G);
   const gridVs = paramsOf(s.knotsV, s.countV, G);
   const reference = base.surfaceGrid(s, G, G, new Float64Array(3 * G * G));
   const contenders = [
     ...(slSurface
       ? [
-          { lib: "splinelab", method: "sampleGridView(us, vs), view into wasm memory", n: G * G, run: () => slSurface.sampleGridView(gridUs, gridVs), check: (o) => maxAbsDiff(o, reference) },
-          { lib: "splinelab", method: "sampleGrid(us, vs)", n: G * G, run: () => slSurface.sampleGrid(gridUs, gridVs), check: (o) => maxAbsDiff(o, reference) },
+          {
+            lib: "splinelab",
+            method: "sampleGridView(us, vs), view into wasm memory",
+            n: G * G,
+            run: () => slSurface.sampleGridView(gridUs, gridVs),
+            check: (o) => maxAbsDiff(o, reference),
+          },
+          {
+            lib: "splinelab",
+            method: "sampleGrid(us, vs)",
+            n: G * G,
+            run: () => slSurface.sampleGrid(gridUs, gridVs),
+            check: (o) => maxAbsDiff(o, reference),
+          },
         ]
       : []),
-    { lib: "js-baseline", method: "basis tabulated per grid line, rows collapsed", n: G * G, run: () => base.surfaceGrid(s, G, G, out), check: (o) => maxAbsDiff(o, reference) },
     {
-      lib: "verb-nurbs", method: "Eval.rationalSurfaceRegularSamplePoints", n: gVerb * gVerb,
-      run: () => verb.eval.Eval.rationalSurfaceRegularSamplePoints(vs._data, gVerb - 1, gVerb - 1),
-      check: (o) => maxAbsDiff(o.flat(2), refVerb),
-      failNote: "it steps u += span, which can overshoot the last knot by rounding (depends on the grid size), and its span walk then leaves the control net",
+      lib: "js-baseline",
+      method: "basis tabulated per grid line, rows collapsed",
+      n: G * G,
+      run: () => base.surfaceGrid(s, G, G, out),
+      check: (o) => maxAbsDiff(o, reference),
     },
     {
-      lib: "verb-nurbs", method: "NurbsSurface.point(u, v) per point", n: gVerb * gVerb,
+      lib: "verb-nurbs",
+      method: "Eval.rationalSurfaceRegularSamplePoints",
+      n: gVerb * gVerb,
+      run: () => verb.eval.Eval.rationalSurfaceRegularSamplePoints(vs._data, gVerb - 1, gVerb - 1),
+      check: (o) => maxAbsDiff(o.flat(2), refVerb),
+      failNote:
+        "it steps u += span, which can overshoot the last knot by rounding (depends on the grid size), and its span walk then leaves the control net",
+    },
+    {
+      lib: "verb-nurbs",
+      method: "NurbsSurface.point(u, v) per point",
+      n: gVerb * gVerb,
       run: perPoint(gVerb, (u, v, o, m) => {
         const q = vs.point(u, v);
         o[m] = q[0];
@@ -406,7 +577,9 @@ for (const rational of [false, true]) {
       check: (o) => maxAbsDiff(o, refVerb),
     },
     {
-      lib: "nurbs", method: "evaluate(out, u, v) per point", n: gNurbs * gNurbs,
+      lib: "nurbs",
+      method: "evaluate(out, u, v) per point",
+      n: gNurbs * gNurbs,
       run: perPoint(gNurbs, (u, v, o, m) => {
         ns.evaluate(tmp, u, v);
         o[m] = tmp[0];
@@ -417,7 +590,9 @@ for (const rational of [false, true]) {
       check: (o) => maxAbsDiff(o, refNurbs),
     },
     {
-      lib: "rhino3dm", method: "NurbsSurface.pointAt(u, v) per point", n: gRhino * gRhino,
+      lib: "rhino3dm",
+      method: "NurbsSurface.pointAt(u, v) per point",
+      n: gRhino * gRhino,
       run: perPoint(gRhino, (u, v, o, m) => {
         const q = rs.pointAt(u, v);
         o[m] = q[0];
@@ -429,7 +604,8 @@ for (const rational of [false, true]) {
     },
   ];
   const unsupported = [{ lib: "bezier-js", reason: "Bézier curves only (no surfaces)" }];
-  if (!slSurface) unsupported.unshift({ lib: "splinelab", reason: "no BSplineSurface in this build" });
+  if (!slSurface)
+    unsupported.unshift({ lib: "splinelab", reason: "no BSplineSurface in this build" });
   results.push(
     runWorkload({
       id: "(c)",
@@ -473,16 +649,69 @@ for (const rational of [false, true]) {
     }
     return pe.out;
   };
-  const slPerPoint = { lib: "splinelab", method: "derivative(u, 1) per point", n: pp.n, run: perPoint(pp, (u) => curve.derivative(u, 1)), check: (o) => check(o, pp.n, pp.stride) };
+  const slPerPoint = {
+    lib: "splinelab",
+    method: "derivative(u, 1) per point",
+    n: pp.n,
+    run: perPoint(pp, (u) => curve.derivative(u, 1)),
+    check: (o) => check(o, pp.n, pp.stride),
+  };
   const contenders = has.sampleDerivatives
-    ? [{ lib: "splinelab", method: "sampleDerivatives(us, 1)", n: N, run: () => curve.sampleDerivatives(us, 1), check: (o) => ((ref = o), 0) }, slPerPoint]
-    : [{ ...slPerPoint, n: N, run: perPoint(peer(N), (u) => curve.derivative(u, 1)), check: (o) => ((ref = o.slice()), 0), note: "fallback: sampleDerivatives not in this build" }];
+    ? [
+        {
+          lib: "splinelab",
+          method: "sampleDerivatives(us, 1)",
+          n: N,
+          run: () => curve.sampleDerivatives(us, 1),
+          check: (o) => {
+            ref = o;
+            return 0;
+          },
+        },
+        slPerPoint,
+      ]
+    : [
+        {
+          ...slPerPoint,
+          n: N,
+          run: perPoint(peer(N), (u) => curve.derivative(u, 1)),
+          check: (o) => {
+            ref = o.slice();
+            return 0;
+          },
+          note: "fallback: sampleDerivatives not in this build",
+        },
+      ];
   if (!has.sampleDerivatives && !fallbacks.includes("(d)")) fallbacks.push("(d)");
   contenders.push(
-    { lib: "js-baseline", method: "A2.3 basis derivatives per point, span hint", n: N, run: () => base.deBoorFirstDerivatives(jsCurve, us, out), check },
-    { lib: "verb-nurbs", method: "NurbsCurve.derivatives(u, 1) per point", n: pv.n, run: perPoint(pv, (u) => vc.derivatives(u, 1)[1]), check: (o) => check(o, pv.n, pv.stride) },
-    { lib: "nurbs", method: "evaluator(1)(out, u) per point", n: pn.n, run: perPoint(pn, (u) => nd(tmp, u)), check: (o) => check(o, pn.n, pn.stride) },
-    { lib: "rhino3dm", method: "derivativeAt(u, 1) per point", n: pr.n, run: perPoint(pr, (u) => rc.derivativeAt(u, 1)[1]), check: (o) => check(o, pr.n, pr.stride) },
+    {
+      lib: "js-baseline",
+      method: "A2.3 basis derivatives per point, span hint",
+      n: N,
+      run: () => base.deBoorFirstDerivatives(jsCurve, us, out),
+      check,
+    },
+    {
+      lib: "verb-nurbs",
+      method: "NurbsCurve.derivatives(u, 1) per point",
+      n: pv.n,
+      run: perPoint(pv, (u) => vc.derivatives(u, 1)[1]),
+      check: (o) => check(o, pv.n, pv.stride),
+    },
+    {
+      lib: "nurbs",
+      method: "evaluator(1)(out, u) per point",
+      n: pn.n,
+      run: perPoint(pn, (u) => nd(tmp, u)),
+      check: (o) => check(o, pn.n, pn.stride),
+    },
+    {
+      lib: "rhino3dm",
+      method: "derivativeAt(u, 1) per point",
+      n: pr.n,
+      run: perPoint(pr, (u) => rc.derivativeAt(u, 1)[1]),
+      check: (o) => check(o, pr.n, pr.stride),
+    },
   );
   const kind = rational ? "NURBS" : "B-spline";
   results.push(
@@ -506,7 +735,8 @@ for (const rational of [false, true]) {
   const curve = slCurve(input);
   let refPoints = null;
   let refKnots = null;
-  const checkCurve = (points, knots) => Math.max(maxAbsDiff(points, refPoints), maxAbsDiff(knots, refKnots));
+  const checkCurve = (points, knots) =>
+    Math.max(maxAbsDiff(points, refPoints), maxAbsDiff(knots, refKnots));
   const slCheck = (c) => checkCurve(c.controlPoints(), c.knots());
   const freeIt = (c) => c.free();
   // Baseline: fresh arrays with spare capacity before each run (untimed), K in-place insertions.
@@ -543,11 +773,21 @@ for (const rational of [false, true]) {
   };
   const contenders = [
     {
-      lib: "splinelab", method: `refine(us), ${K} knots in one call`, n: K, run: () => curve.refine(uk),
-      check: (c) => ((refPoints = c.controlPoints()), (refKnots = c.knots()), 0), after: freeIt,
+      lib: "splinelab",
+      method: `refine(us), ${K} knots in one call`,
+      n: K,
+      run: () => curve.refine(uk),
+      check: (c) => {
+        refPoints = c.controlPoints();
+        refKnots = c.knots();
+        return 0;
+      },
+      after: freeIt,
     },
     {
-      lib: "splinelab", method: `${K}× insertKnot(u) (a new curve each, old freed)`, n: K,
+      lib: "splinelab",
+      method: `${K}× insertKnot(u) (a new curve each, old freed)`,
+      n: K,
       run: () => {
         let c = curve.insertKnot(uk[0]);
         for (let k = 1; k < K; k++) {
@@ -557,10 +797,13 @@ for (const rational of [false, true]) {
         }
         return c;
       },
-      check: slCheck, after: freeIt,
+      check: slCheck,
+      after: freeIt,
     },
     {
-      lib: "js-baseline", method: `${K}× in-place Boehm (copyWithin shift)`, n: K,
+      lib: "js-baseline",
+      method: `${K}× in-place Boehm (copyWithin shift)`,
+      n: K,
       prepare: () => (js = base.prepareBSpline(input, K)),
       run: () => {
         for (let k = 0; k < K; k++) base.insertKnotInPlace(js, uk[k]);
@@ -568,9 +811,17 @@ for (const rational of [false, true]) {
       },
       check: jsCheck,
     },
-    { lib: "verb-nurbs", method: "Modify.curveKnotRefine(curve, knots)", n: K, run: () => verb.eval.Modify.curveKnotRefine(verbData, ukArray), check: verbCheck },
     {
-      lib: "rhino3dm", method: `${K}× knots().insertKnot(u, 1) in place`, n: K,
+      lib: "verb-nurbs",
+      method: "Modify.curveKnotRefine(curve, knots)",
+      n: K,
+      run: () => verb.eval.Modify.curveKnotRefine(verbData, ukArray),
+      check: verbCheck,
+    },
+    {
+      lib: "rhino3dm",
+      method: `${K}× knots().insertKnot(u, 1) in place`,
+      n: K,
       prepare: () => (rdup = rc.duplicate()),
       run: () => {
         const kl = rdup.knots();
@@ -579,7 +830,8 @@ for (const rational of [false, true]) {
         for (let k = 0; k < K; k++) kl.insertKnot(uk[k], 1);
         return rdup;
       },
-      check: rhinoCheck, after: (c) => c.delete(),
+      check: rhinoCheck,
+      after: (c) => c.delete(),
     },
   ];
   const kind = rational ? "NURBS" : "B-spline";
@@ -588,7 +840,8 @@ for (const rational of [false, true]) {
       id: rational ? "(e2)" : "(e1)",
       title: `${K} knot insertions into the (b) ${kind}`,
       unit: "insertions",
-      agreementMeaning: "max |difference| of the refined control points and knots from splinelab's refine",
+      agreementMeaning:
+        "max |difference| of the refined control points and knots from splinelab's refine",
       contenders,
       unsupported: [
         { lib: "nurbs", reason: "evaluation only: no knot insertion" },
@@ -610,9 +863,12 @@ const REF_ACCURACY = 1e-15;
 const REF_MAX_DEPTH = 50;
 const GL = base.gaussLegendre(24);
 function referenceArcLength(cp, accuracy = REF_ACCURACY) {
-  const ax = cp[2] - cp[0], ay = cp[3] - cp[1];
-  const bx = cp[4] - cp[2], by = cp[5] - cp[3];
-  const cx = cp[6] - cp[4], cy = cp[7] - cp[5];
+  const ax = cp[2] - cp[0],
+    ay = cp[3] - cp[1];
+  const bx = cp[4] - cp[2],
+    by = cp[5] - cp[3];
+  const cx = cp[6] - cp[4],
+    cy = cp[7] - cp[5];
   const speed = (t) => {
     const mt = 1 - t;
     const dx = 3 * (mt * mt * ax + 2 * mt * t * bx + t * t * cx);
@@ -647,7 +903,8 @@ function referenceArcLength(cp, accuracy = REF_ACCURACY) {
   }
   // How far the reference is from itself at ten times the accuracy: its own error, roughly.
   let selfCheck = 0;
-  for (let c = 0; c < C; c++) selfCheck = Math.max(selfCheck, Math.abs(tighter[c] - reference[c]) / reference[c]);
+  for (let c = 0; c < C; c++)
+    selfCheck = Math.max(selfCheck, Math.abs(tighter[c] - reference[c]) / reference[c]);
   const relErr = (lengths) => {
     let m = 0;
     for (let c = 0; c < C; c++) {
@@ -657,7 +914,9 @@ function referenceArcLength(cp, accuracy = REF_ACCURACY) {
     return m;
   };
   const out = new Float64Array(C);
-  const slCurves = has.arcLengths ? [] : Array.from({ length: C }, (_, c) => new sl.BezierCurve(cps.subarray(8 * c, 8 * c + 8), 2));
+  const slCurves = has.arcLengths
+    ? []
+    : Array.from({ length: C }, (_, c) => new sl.BezierCurve(cps.subarray(8 * c, 8 * c + 8), 2));
   const perCurve = (objs, f) => () => {
     const o = new Float64Array(objs.length);
     for (let c = 0; c < objs.length; c++) o[c] = f(objs[c]);
@@ -666,17 +925,76 @@ function referenceArcLength(cp, accuracy = REF_ACCURACY) {
   const bz = Array.from({ length: C }, (_, c) => new Bezier(...cps.subarray(8 * c, 8 * c + 8)));
   const vc = Array.from({ length: C }, (_, c) => {
     const q = cps.subarray(8 * c, 8 * c + 8);
-    return verb.geom.NurbsCurve.byKnotsControlPointsWeights(3, [0, 0, 0, 0, 1, 1, 1, 1], [[q[0], q[1]], [q[2], q[3]], [q[4], q[5]], [q[6], q[7]]], [1, 1, 1, 1]);
+    return verb.geom.NurbsCurve.byKnotsControlPointsWeights(
+      3,
+      [0, 0, 0, 0, 1, 1, 1, 1],
+      [
+        [q[0], q[1]],
+        [q[2], q[3]],
+        [q[4], q[5]],
+        [q[6], q[7]],
+      ],
+      [1, 1, 1, 1],
+    );
   });
   const contenders = [
     has.arcLengths
-      ? { lib: "splinelab", method: "arcLengths(points, 2, 3), one call", n: C, run: () => sl.arcLengths(cps, 2, 3), check: relErr }
-      : { lib: "splinelab", method: "BezierCurve.arcLength() per curve (objects pre-built)", n: C, run: perCurve(slCurves, (c) => c.arcLength()), check: relErr, note: "fallback: arcLengths not in this build" },
-    ...(has.arcLengths ? [{ lib: "splinelab", method: "arcLengths(points, 2, 3, 1e-12)", n: C, run: () => sl.arcLengths(cps, 2, 3, 1e-12), check: relErr, note: "absolute accuracy; polygons here are ~1–3 long" }] : []),
-    { lib: "js-baseline", method: "24-point Gauss–Legendre per curve", n: C, run: () => base.cubicArcLengthsGL24(cps, out), check: relErr },
-    { lib: "js-baseline", method: "adaptive 24-point Gauss–Legendre to 1e-13 × polygon", n: C, run: () => base.cubicArcLengthsAdaptiveGL24(cps, out), check: relErr, note: "what JS needs for the target's accuracy" },
-    { lib: "bezier-js", method: "length() per curve (objects pre-built)", n: C, run: perCurve(bz, (b) => b.length()), check: relErr },
-    { lib: "verb-nurbs", method: "NurbsCurve.length() per curve (objects pre-built)", n: C, run: perCurve(vc, (v) => v.length()), check: relErr },
+      ? {
+          lib: "splinelab",
+          method: "arcLengths(points, 2, 3), one call",
+          n: C,
+          run: () => sl.arcLengths(cps, 2, 3),
+          check: relErr,
+        }
+      : {
+          lib: "splinelab",
+          method: "BezierCurve.arcLength() per curve (objects pre-built)",
+          n: C,
+          run: perCurve(slCurves, (c) => c.arcLength()),
+          check: relErr,
+          note: "fallback: arcLengths not in this build",
+        },
+    ...(has.arcLengths
+      ? [
+          {
+            lib: "splinelab",
+            method: "arcLengths(points, 2, 3, 1e-12)",
+            n: C,
+            run: () => sl.arcLengths(cps, 2, 3, 1e-12),
+            check: relErr,
+            note: "absolute accuracy; polygons here are ~1–3 long",
+          },
+        ]
+      : []),
+    {
+      lib: "js-baseline",
+      method: "24-point Gauss–Legendre per curve",
+      n: C,
+      run: () => base.cubicArcLengthsGL24(cps, out),
+      check: relErr,
+    },
+    {
+      lib: "js-baseline",
+      method: "adaptive 24-point Gauss–Legendre to 1e-13 × polygon",
+      n: C,
+      run: () => base.cubicArcLengthsAdaptiveGL24(cps, out),
+      check: relErr,
+      note: "what JS needs for the target's accuracy",
+    },
+    {
+      lib: "bezier-js",
+      method: "length() per curve (objects pre-built)",
+      n: C,
+      run: perCurve(bz, (b) => b.length()),
+      check: relErr,
+    },
+    {
+      lib: "verb-nurbs",
+      method: "NurbsCurve.length() per curve (objects pre-built)",
+      n: C,
+      run: perCurve(vc, (v) => v.length()),
+      check: relErr,
+    },
   ];
   if (!has.arcLengths) fallbacks.push("(f)");
   const r = runWorkload({
@@ -687,7 +1005,10 @@ function referenceArcLength(cp, accuracy = REF_ACCURACY) {
     contenders,
     unsupported: [
       { lib: "nurbs", reason: "evaluation only: no arc length" },
-      { lib: "rhino3dm", reason: "no curve length in rhino3dm's JS API (OpenNURBS GetLength is not bound)" },
+      {
+        lib: "rhino3dm",
+        reason: "no curve length in rhino3dm's JS API (OpenNURBS GetLength is not bound)",
+      },
     ],
   });
   r.referenceSelfCheck = selfCheck;
@@ -715,7 +1036,11 @@ if (BROWSER) {
 
 // ---- sizes, machine, report --------------------------------------------------------------------
 const wasmBytes = readFileSync(WASM);
-const wasm = { bytes: statSync(WASM).size, gzipBytes: gzipSync(wasmBytes, { level: 9 }).length, note: "www/pkg/splinelab_bg.wasm as built by make build (after wasm-opt -O)" };
+const wasm = {
+  bytes: statSync(WASM).size,
+  gzipBytes: gzipSync(wasmBytes, { level: 9 }).length,
+  note: "www/pkg/splinelab_bg.wasm as built by make build (after wasm-opt -O)",
+};
 const cpus = os.cpus();
 const machine = {
   cpu: cpus[0]?.model ?? "unknown",
@@ -726,28 +1051,44 @@ const machine = {
 };
 
 const fmtNum = (x) => (x >= 100 ? x.toFixed(0) : x >= 10 ? x.toFixed(1) : x.toFixed(2));
-const fmtTput = (x) => (x >= 1e6 ? `${fmtNum(x / 1e6)} M/s` : x >= 1e3 ? `${fmtNum(x / 1e3)} k/s` : `${fmtNum(x)} /s`);
-const fmtDiff = (x) => (x === undefined ? "" : Number.isNaN(x) ? "NaN!" : x === 0 ? "0" : x.toExponential(1));
+const fmtTput = (x) =>
+  x >= 1e6 ? `${fmtNum(x / 1e6)} M/s` : x >= 1e3 ? `${fmtNum(x / 1e3)} k/s` : `${fmtNum(x)} /s`;
+const fmtDiff = (x) =>
+  x === undefined ? "" : Number.isNaN(x) ? "NaN!" : x === 0 ? "0" : x.toExponential(1);
 const pad = (s, n) => String(s).padEnd(n);
 const lpad = (s, n) => String(s).padStart(n);
 
 const lines = [];
-lines.push(`splinelab ${sl.version()} benchmark${QUICK ? " (--quick: inputs ×0.1, 3 reps)" : ""} — ${new Date().toISOString()}`);
-lines.push(`machine: ${machine.cpu}, ${machine.cores} cores, ${machine.platform}, Node ${machine.node}${machine.chromium ? `, Chromium ${machine.chromium}` : ""}`);
-lines.push(`peers: ${Object.entries(peerVersions).map(([k, v]) => `${k} ${v}`).join(", ")}`);
-lines.push(`median of ${ROUNDS} interleaved repetitions; "ref ×" = reference throughput ÷ this row's (> 1: the reference is faster)`);
+lines.push(
+  `splinelab ${sl.version()} benchmark${QUICK ? " (--quick: inputs ×0.1, 3 reps)" : ""} — ${new Date().toISOString()}`,
+);
+lines.push(
+  `machine: ${machine.cpu}, ${machine.cores} cores, ${machine.platform}, Node ${machine.node}${machine.chromium ? `, Chromium ${machine.chromium}` : ""}`,
+);
+lines.push(
+  `peers: ${Object.entries(peerVersions)
+    .map(([k, v]) => `${k} ${v}`)
+    .join(", ")}`,
+);
+lines.push(
+  `median of ${ROUNDS} interleaved repetitions; "ref ×" = reference throughput ÷ this row's (> 1: the reference is faster)`,
+);
 for (const w of results) {
   lines.push("");
   lines.push(`${w.id} ${w.title}`);
   lines.push(`    reference: ${w.reference}; agreement: ${w.agreementMeaning}`);
-  lines.push(`    ${pad("library", 12)} ${pad("method", 58)} ${lpad("n", 9)} ${lpad("median", 10)} ${lpad(w.unit + "/s", 12)} ${lpad("ref ×", 8)} ${lpad("agreement", 9)}`);
+  lines.push(
+    `    ${pad("library", 12)} ${pad("method", 58)} ${lpad("n", 9)} ${lpad("median", 10)} ${lpad(`${w.unit}/s`, 12)} ${lpad("ref ×", 8)} ${lpad("agreement", 9)}`,
+  );
   for (const r of w.rows) {
     if (r.error) {
-      lines.push(`    ${pad(r.lib, 12)} ${pad(r.method, 58)} failed: ${r.error}${r.note ? " (" + r.note + ")" : ""}`);
+      lines.push(
+        `    ${pad(r.lib, 12)} ${pad(r.method, 58)} failed: ${r.error}${r.note ? ` (${r.note})` : ""}`,
+      );
       continue;
     }
     lines.push(
-      `    ${pad(r.lib, 12)} ${pad(r.method, 58)} ${lpad(r.n.toLocaleString("en"), 9)} ${lpad(r.medianMs.toFixed(2) + " ms", 10)} ${lpad(fmtTput(r.throughput), 12)} ${lpad(fmtNum(r.refOverThis), 8)} ${lpad(fmtDiff(r.agreement), 9)}${r.note ? "  (" + r.note + ")" : ""}`,
+      `    ${pad(r.lib, 12)} ${pad(r.method, 58)} ${lpad(r.n.toLocaleString("en"), 9)} ${lpad(`${r.medianMs.toFixed(2)} ms`, 10)} ${lpad(fmtTput(r.throughput), 12)} ${lpad(fmtNum(r.refOverThis), 8)} ${lpad(fmtDiff(r.agreement), 9)}${r.note ? `  (${r.note})` : ""}`,
     );
   }
   for (const u of w.unsupported) lines.push(`    ${pad(u.lib, 12)} cannot: ${u.reason}`);
@@ -756,76 +1097,172 @@ const dragLines = (label, d) => {
   if (!d) return;
   if (d.error) return lines.push(`    ${label}: failed: ${d.error}`);
   for (const c of d.contenders) {
-    lines.push(`    ${pad(label, 9)} ${pad(c.lib, 12)} ${pad(c.method, 70)} median ${c.medianMs.toFixed(2)} ms, p95 ${c.p95Ms.toFixed(2)} ms, max ${c.maxMs.toFixed(2)} ms`);
+    lines.push(
+      `    ${pad(label, 9)} ${pad(c.lib, 12)} ${pad(c.method, 70)} median ${c.medianMs.toFixed(2)} ms, p95 ${c.p95Ms.toFixed(2)} ms, max ${c.maxMs.toFixed(2)} ms`,
+    );
   }
-  lines.push(`    ${pad(label, 9)} agreement after the last frame: points ${fmtDiff(d.agreement.pointMaxDiff)}, basis ${fmtDiff(d.agreement.basisMaxDiff)}`);
+  lines.push(
+    `    ${pad(label, 9)} agreement after the last frame: points ${fmtDiff(d.agreement.pointMaxDiff)}, basis ${fmtDiff(d.agreement.basisMaxDiff)}`,
+  );
 };
 lines.push("");
-lines.push(`(g) one drag frame of a 1000-point NURBS (${dragFrames} frames after 10 warm-up, contenders interleaved per frame)`);
+lines.push(
+  `(g) one drag frame of a 1000-point NURBS (${dragFrames} frames after 10 warm-up, contenders interleaved per frame)`,
+);
 dragLines("Node", dragNode);
 dragLines("Chromium", dragChromium);
-lines.push(`    peers: not timed in (g) — the frame is the playground's path (in-place edit, resample, basis strip); bezier-js has no B-splines, rhino3dm no basis functions, and verb/nurbs evaluation speed is measured in (b)`);
+lines.push(
+  `    peers: not timed in (g) — the frame is the playground's path (in-place edit, resample, basis strip); bezier-js has no B-splines, rhino3dm no basis functions, and verb/nurbs evaluation speed is measured in (b)`,
+);
 lines.push("");
-lines.push(`wasm: ${wasm.bytes.toLocaleString("en")} bytes after wasm-opt, ${wasm.gzipBytes.toLocaleString("en")} bytes gzipped (-9)`);
+lines.push(
+  `wasm: ${wasm.bytes.toLocaleString("en")} bytes after wasm-opt, ${wasm.gzipBytes.toLocaleString("en")} bytes gzipped (-9)`,
+);
 
 // Targets of issue 5, computed from this run (reported, never asserted).
 const row = (id, pred) => results.find((w) => w.id === id)?.rows.find((r) => !r.error && pred(r));
-const best = (id, lib) => results.find((w) => w.id === id)?.rows.filter((r) => !r.error && r.lib === lib).sort((a, b) => b.throughput - a.throughput)[0];
-const fastestPeer = (id) => results.find((w) => w.id === id)?.rows.filter((r) => !r.error && !["splinelab", "js-baseline"].includes(r.lib)).sort((a, b) => b.throughput - a.throughput)[0];
+const best = (id, lib) =>
+  results
+    .find((w) => w.id === id)
+    ?.rows.filter((r) => !r.error && r.lib === lib)
+    .sort((a, b) => b.throughput - a.throughput)[0];
+const fastestPeer = (id) =>
+  results
+    .find((w) => w.id === id)
+    ?.rows.filter((r) => !r.error && !["splinelab", "js-baseline"].includes(r.lib))
+    .sort((a, b) => b.throughput - a.throughput)[0];
 const ratio = (a, b) => (a && b ? a.throughput / b.throughput : NaN);
 const targets = [];
 const target = (what, value, goal, met, detail) => targets.push({ what, value, goal, met, detail });
 {
-  const sa = best("(a)", "splinelab"), ja = best("(a)", "js-baseline");
+  const sa = best("(a)", "splinelab"),
+    ja = best("(a)", "js-baseline");
   const r = ratio(sa, ja);
   target("(a) Bézier vs hand-written JS", r, "≥ 1.5×", r >= 1.5, `${sa?.method} vs ${ja?.method}`);
-  const sb = best("(b2)", "splinelab"), pb = fastestPeer("(b2)"), jb = best("(b2)", "js-baseline");
-  const r1 = ratio(sb, pb), r2 = ratio(sb, jb);
-  target("(b) NURBS vs fastest peer", r1, "≥ 10×", r1 >= 10, `${sb?.method} vs ${pb?.lib} ${pb?.method}`);
+  const sb = best("(b2)", "splinelab"),
+    pb = fastestPeer("(b2)"),
+    jb = best("(b2)", "js-baseline");
+  const r1 = ratio(sb, pb),
+    r2 = ratio(sb, jb);
+  target(
+    "(b) NURBS vs fastest peer",
+    r1,
+    "≥ 10×",
+    r1 >= 10,
+    `${sb?.method} vs ${pb?.lib} ${pb?.method}`,
+  );
   target("(b) NURBS vs hand-written JS", r2, "≥ 8×", r2 >= 8, `${sb?.method} vs ${jb?.method}`);
   {
-    const sc = best("(c)", "splinelab"), jc = best("(c)", "js-baseline");
+    const sc = best("(c)", "splinelab"),
+      jc = best("(c)", "js-baseline");
     const rc = ratio(sc, jc);
-    target("(c) surface grid vs hand-written JS", rc, "≥ 2×", sc ? rc >= 2 : null, sc ? `${sc.method} vs ${jc?.method}` : "no BSplineSurface in this build");
+    target(
+      "(c) surface grid vs hand-written JS",
+      rc,
+      "≥ 2×",
+      sc ? rc >= 2 : null,
+      sc ? `${sc.method} vs ${jc?.method}` : "no BSplineSurface in this build",
+    );
   }
   for (const id of ["(d1)", "(d2)"]) {
     const sd = row(id, (x) => x.lib === "splinelab" && x.method.startsWith("sampleDerivatives"));
     const jd = best(id, "js-baseline");
     const rd = ratio(sd, jd);
-    target(`${id} batched derivatives vs hand-written JS`, rd, "≥ 5×", sd ? rd >= 5 : null, sd ? `${sd.method} vs ${jd?.method}` : "sampleDerivatives not in this build");
+    target(
+      `${id} batched derivatives vs hand-written JS`,
+      rd,
+      "≥ 5×",
+      sd ? rd >= 5 : null,
+      sd ? `${sd.method} vs ${jd?.method}` : "sampleDerivatives not in this build",
+    );
   }
   for (const id of ["(e1)", "(e2)"]) {
     const se = row(id, (x) => x.lib === "splinelab" && x.method.startsWith("refine"));
     const je = best(id, "js-baseline");
     const re = ratio(se, je);
-    target(`${id} refine vs in-place Boehm`, re, "≥ 1.5×", re >= 1.5, `${se?.method} vs ${je?.method}`);
+    target(
+      `${id} refine vs in-place Boehm`,
+      re,
+      "≥ 1.5×",
+      re >= 1.5,
+      `${se?.method} vs ${je?.method}`,
+    );
   }
   // The fastest splinelab row that is accurate enough, against the plain 24-point rule.
-  const sf = results.find((w) => w.id === "(f)")?.rows.filter((r) => !r.error && r.lib === "splinelab" && r.agreement <= 1e-12).sort((a, b) => b.throughput - a.throughput)[0];
+  const sf = results
+    .find((w) => w.id === "(f)")
+    ?.rows.filter((r) => !r.error && r.lib === "splinelab" && r.agreement <= 1e-12)
+    .sort((a, b) => b.throughput - a.throughput)[0];
   const jf = best("(f)", "js-baseline");
   const rf = ratio(sf, jf);
-  target("(f) arc length speed vs JS Gauss–Legendre 24", rf, "≥ 1× at rel. error ≤ 1e-12", sf ? rf >= 1 : false, sf?.method ?? "no splinelab row within 1e-12");
-  target("(f) arc length max relative error", sf?.agreement, "≤ 1e-12", sf ? sf.agreement <= 1e-12 : false, sf?.method);
+  target(
+    "(f) arc length speed vs JS Gauss–Legendre 24",
+    rf,
+    "≥ 1× at rel. error ≤ 1e-12",
+    sf ? rf >= 1 : false,
+    sf?.method ?? "no splinelab row within 1e-12",
+  );
+  target(
+    "(f) arc length max relative error",
+    sf?.agreement,
+    "≤ 1e-12",
+    sf ? sf.agreement <= 1e-12 : false,
+    sf?.method,
+  );
   // Context, not a target: against the JS rule that is as accurate.
-  const jfa = results.find((w) => w.id === "(f)")?.rows.filter((r) => !r.error && r.lib === "js-baseline" && r.agreement <= 1e-12).sort((a, b) => b.throughput - a.throughput)[0];
-  target("(f) same, vs JS at equal accuracy (context)", ratio(sf, jfa), "— (not an issue target)", null, jfa ? `${sf?.method} vs ${jfa.method}` : "no JS row within 1e-12");
-  for (const [label, d] of [["Node", dragNode], ["Chromium", dragChromium]]) {
+  const jfa = results
+    .find((w) => w.id === "(f)")
+    ?.rows.filter((r) => !r.error && r.lib === "js-baseline" && r.agreement <= 1e-12)
+    .sort((a, b) => b.throughput - a.throughput)[0];
+  target(
+    "(f) same, vs JS at equal accuracy (context)",
+    ratio(sf, jfa),
+    "— (not an issue target)",
+    null,
+    jfa ? `${sf?.method} vs ${jfa.method}` : "no JS row within 1e-12",
+  );
+  for (const [label, d] of [
+    ["Node", dragNode],
+    ["Chromium", dragChromium],
+  ]) {
     const c = d?.contenders?.[0];
-    target(`(g) drag frame, ${label} (median)`, c?.medianMs, "≤ 4 ms", c ? c.medianMs <= 4 : null, c?.method ?? d?.error ?? "not run");
+    target(
+      `(g) drag frame, ${label} (median)`,
+      c?.medianMs,
+      "≤ 4 ms",
+      c ? c.medianMs <= 4 : null,
+      c?.method ?? d?.error ?? "not run",
+    );
   }
-  target("wasm size after wasm-opt", wasm.bytes, "≤ 250 KB (250,000 bytes)", wasm.bytes <= 250_000, `${wasm.gzipBytes} bytes gzipped`);
+  target(
+    "wasm size after wasm-opt",
+    wasm.bytes,
+    "≤ 250 KB (250,000 bytes)",
+    wasm.bytes <= 250_000,
+    `${wasm.gzipBytes} bytes gzipped`,
+  );
 }
 lines.push("");
 lines.push("targets (issue 5; reported from this run, not asserted):");
 for (const t of targets) {
-  const v = typeof t.value === "number" && Number.isFinite(t.value)
-    ? t.what.includes("error") ? t.value.toExponential(1) : t.what.includes("drag") ? `${t.value.toFixed(2)} ms` : t.what.includes("wasm") ? `${t.value.toLocaleString("en")} B` : `${t.value.toFixed(2)}×`
-    : "—";
-  lines.push(`    ${t.met === true ? "met " : t.met === false ? "MISS" : "n/a "} ${pad(t.what, 46)} ${lpad(v, 12)}  goal ${pad(t.goal, 24)} ${t.detail ?? ""}`);
+  const v =
+    typeof t.value === "number" && Number.isFinite(t.value)
+      ? t.what.includes("error")
+        ? t.value.toExponential(1)
+        : t.what.includes("drag")
+          ? `${t.value.toFixed(2)} ms`
+          : t.what.includes("wasm")
+            ? `${t.value.toLocaleString("en")} B`
+            : `${t.value.toFixed(2)}×`
+      : "—";
+  lines.push(
+    `    ${t.met === true ? "met " : t.met === false ? "MISS" : "n/a "} ${pad(t.what, 46)} ${lpad(v, 12)}  goal ${pad(t.goal, 24)} ${t.detail ?? ""}`,
+  );
 }
-if (fallbacks.length) lines.push(`fallbacks used (batched API absent from this build): ${fallbacks.join(", ")}`);
+if (fallbacks.length)
+  lines.push(`fallbacks used (batched API absent from this build): ${fallbacks.join(", ")}`);
 
-console.log("\n" + lines.join("\n"));
+console.log(`\n${lines.join("\n")}`);
 
 const report = {
   splinelab: sl.version(),
@@ -843,5 +1280,5 @@ const report = {
   table: lines.join("\n"),
 };
 mkdirSync(here("./results"), { recursive: true });
-writeFileSync(here("./results/latest.json"), JSON.stringify(report, null, 2) + "\n");
+writeFileSync(here("./results/latest.json"), `${JSON.stringify(report, null, 2)}\n`);
 console.log(`\nwrote bench/results/latest.json`);

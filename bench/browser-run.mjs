@@ -11,8 +11,22 @@ import { chromium } from "playwright-core";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
 const MOUNTS = { "/bench/": join(ROOT, "bench"), "/pkg/": join(ROOT, "www", "pkg") };
-const TYPES = { ".html": "text/html; charset=utf-8", ".js": "text/javascript", ".mjs": "text/javascript", ".wasm": "application/wasm" };
-const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run"];
+const TYPES = {
+  ".html": "text/html; charset=utf-8",
+  ".js": "text/javascript",
+  ".mjs": "text/javascript",
+  ".wasm": "application/wasm",
+};
+const ARGS = [
+  "--headless",
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+  "--disable-quic",
+  "--no-first-run",
+];
 /** Longest the page may take to finish its frames (ms). */
 const PAGE_TIMEOUT_MS = 120_000;
 
@@ -50,17 +64,26 @@ export async function runInChromium({ frames = 100, warmup = 10 } = {}) {
   const profile = mkdtempSync(join(tmpdir(), "splinelab-bench-"));
   let context = null;
   try {
-    context = await chromium.launchPersistentContext(profile, { executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium", args: ARGS });
+    context = await chromium.launchPersistentContext(profile, {
+      executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+      args: ARGS,
+    });
     const page = context.pages()[0] ?? (await context.newPage());
     const errors = [];
     page.on("pageerror", (err) => errors.push(err.message));
     const url = `http://127.0.0.1:${server.address().port}/bench/browser.html?frames=${frames}&warmup=${warmup}`;
     await page.goto(url);
-    await page.waitForFunction(() => window.benchResult !== undefined, null, { timeout: PAGE_TIMEOUT_MS });
+    await page.waitForFunction(() => window.benchResult !== undefined, null, {
+      timeout: PAGE_TIMEOUT_MS,
+    });
     const result = await page.evaluate(() => window.benchResult);
     if (result.error) throw new Error(result.error);
     if (errors.length) throw new Error(errors[0]);
-    result.browserVersion = context.browser()?.version() ?? (await page.evaluate(() => navigator.userAgent.match(/Chrom(e|ium)\/([\d.]+)/)?.[2] ?? "unknown"));
+    result.browserVersion =
+      context.browser()?.version() ??
+      (await page.evaluate(
+        () => navigator.userAgent.match(/Chrom(e|ium)\/([\d.]+)/)?.[2] ?? "unknown",
+      ));
     result.crossOriginIsolated = await page.evaluate(() => self.crossOriginIsolated);
     return result;
   } finally {

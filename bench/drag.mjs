@@ -17,7 +17,12 @@ function quantile(sorted, q) {
 
 function stats(times) {
   const s = [...times].sort((a, b) => a - b);
-  return { medianMs: quantile(s, 0.5), p95Ms: quantile(s, 0.95), maxMs: s[s.length - 1], frames: s.length };
+  return {
+    medianMs: quantile(s, 0.5),
+    p95Ms: quantile(s, 0.95),
+    maxMs: s[s.length - 1],
+    frames: s.length,
+  };
 }
 
 /** Runs `frames` drag frames per contender, interleaved; returns timings (ms) and agreement. */
@@ -33,7 +38,7 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
   const curve = new sl.BSplineCurve(input.points, 2, p, knots, input.weights);
   const curve2 = new sl.BSplineCurve(input.points, 2, p, knots, input.weights);
   let slPoints = null;
-  let slStrip = [];
+  const slStrip = [];
   const splinelab = (f) => {
     curve.setControlPoint(i, position(f));
     slPoints = curve.sampleUniform(DRAG.samples);
@@ -72,10 +77,30 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
   };
 
   const contenders = [
-    { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + 200× span(u), basisNonZero(u)", run: splinelabNonZero, times: [] },
-    { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + 200× basis(u)", run: splinelab, times: [] },
-    { lib: "splinelab", method: "setControlPoint + sampleUniform(4000) + basisCurves(200)", run: splinelabCurves, times: [] },
-    { lib: "js-baseline", method: "in-place point + de Boor ×4000 + 200× A2.2 basis", run: baseline, times: [] },
+    {
+      lib: "splinelab",
+      method: "setControlPoint + sampleUniform(4000) + 200× span(u), basisNonZero(u)",
+      run: splinelabNonZero,
+      times: [],
+    },
+    {
+      lib: "splinelab",
+      method: "setControlPoint + sampleUniform(4000) + 200× basis(u)",
+      run: splinelab,
+      times: [],
+    },
+    {
+      lib: "splinelab",
+      method: "setControlPoint + sampleUniform(4000) + basisCurves(200)",
+      run: splinelabCurves,
+      times: [],
+    },
+    {
+      lib: "js-baseline",
+      method: "in-place point + de Boor ×4000 + 200× A2.2 basis",
+      run: baseline,
+      times: [],
+    },
   ];
   for (let f = 0; f < warmup + frames; f++) {
     for (let c = 0; c < contenders.length; c++) {
@@ -89,7 +114,8 @@ export function dragBench(sl, { frames = 100, warmup = 10 } = {}) {
 
   // Agreement after the last frame: curve points and the non-zero strip values.
   let pointDiff = 0;
-  for (let k = 0; k < basePoints.length; k++) pointDiff = Math.max(pointDiff, Math.abs(basePoints[k] - slPoints[k]));
+  for (let k = 0; k < basePoints.length; k++)
+    pointDiff = Math.max(pointDiff, Math.abs(basePoints[k] - slPoints[k]));
   let basisDiff = 0;
   for (let s = 0; s < DRAG.strip; s++) {
     for (let j = 0; j <= p; j++) {

@@ -10,7 +10,17 @@ import { fileURLToPath } from "node:url";
 import { startServer } from "./serve.mjs";
 
 const OUT = fileURLToPath(new URL("../screenshots/", import.meta.url));
-const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run", "--enable-unsafe-swiftshader"];
+const ARGS = [
+  "--headless",
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+  "--disable-quic",
+  "--no-first-run",
+  "--enable-unsafe-swiftshader",
+];
 const DESKTOP = { width: 1280, height: 900 };
 const PHONE = { width: 390, height: 844 };
 const narrow = process.argv.includes("--narrow");
@@ -20,7 +30,9 @@ async function demoReady(page, scope = "") {
   await page.locator(`${scope}.sl-figure[data-handles]`).first().waitFor({ state: "attached" });
   await page.locator(`${scope}.sl-formula .katex`).first().waitFor({ state: "attached" });
   await page.evaluate(() => document.fonts.ready);
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  await page.evaluate(
+    () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))),
+  );
 }
 
 mkdirSync(OUT, { recursive: true });
@@ -30,21 +42,32 @@ const written = [];
 
 for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, PHONE]] : [])]) {
   const profile = mkdtempSync(join(tmpdir(), "splinelab-shots-"));
-  const context = await chromium.launchPersistentContext(profile, { executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium", args: ARGS, viewport, deviceScaleFactor: scale });
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+    args: ARGS,
+    viewport,
+    deviceScaleFactor: scale,
+  });
   const page = context.pages()[0] ?? (await context.newPage());
   page.on("pageerror", (err) => console.error(`page error: ${err.message}`));
   const suffix = viewport === PHONE ? "phone" : `dpr${scale}`;
   try {
     await page.goto(`${base}/index.html`);
-    const ids = await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => d.id));
+    const ids = await page.evaluate(async () =>
+      (await import("./demos/index.js")).demos.map((d) => d.id),
+    );
     if (viewport !== PHONE) {
       // Thumbnails are drawn when their card comes near the viewport: pass every card by.
       for (const card of await page.locator(".card").all()) {
         await card.scrollIntoViewIfNeeded();
-        await card.locator("img").evaluate((img) => new Promise((resolve) => {
-          const check = () => (img.src.startsWith("data:") ? resolve() : requestAnimationFrame(check));
-          check();
-        }));
+        await card.locator("img").evaluate(
+          (img) =>
+            new Promise((resolve) => {
+              const check = () =>
+                img.src.startsWith("data:") ? resolve() : requestAnimationFrame(check);
+              check();
+            }),
+        );
       }
       await page.evaluate(() => window.scrollTo(0, 0));
       await page.screenshot({ path: `${OUT}gallery-${suffix}.png`, fullPage: true });

@@ -29,7 +29,8 @@ export function startServer(port = 8000, host = "127.0.0.1") {
       let path = normalize(decodeURIComponent(url.pathname));
       if (path.endsWith("/")) path += "index.html";
       const file = resolve(join(ROOT, path));
-      if (file !== ROOT && !file.startsWith(ROOT + sep)) throw Object.assign(new Error("outside"), { code: 403 });
+      if (file !== ROOT && !file.startsWith(ROOT + sep))
+        throw Object.assign(new Error("outside"), { code: 403 });
       const info = await stat(file);
       if (!info.isFile()) throw Object.assign(new Error("not a file"), { code: 404 });
       const body = await readFile(file);
@@ -52,7 +53,7 @@ export function startServer(port = 8000, host = "127.0.0.1") {
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   const i = process.argv.indexOf("--port");
-  const port = Number(i > 0 ? process.argv[i + 1] : process.env.PORT ?? 8000);
+  const port = Number(i > 0 ? process.argv[i + 1] : (process.env.PORT ?? 8000));
   const server = await startServer(port);
   console.log(`splinelab playground: http://127.0.0.1:${server.address().port}/`);
 }

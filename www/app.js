@@ -65,13 +65,23 @@ function unmount() {
 async function showGallery(sl) {
   unmount();
   document.title = t("app.galleryTitle", { app: t("app.name"), heading: t("gallery.heading") });
-  const page = el("div", { class: "gallery" },
+  const page = el(
+    "div",
+    { class: "gallery" },
     el("h1", { text: t("gallery.heading") }),
-    el("p", { class: "gallery-intro", text: t("app.tagline") }));
+    el("p", { class: "gallery-intro", text: t("app.tagline") }),
+  );
   for (const section of SECTIONS) {
     const members = demos.filter((entry) => entry.section === section);
     if (!members.length) continue;
-    page.append(el("h2", { text: t(`section.${section}`) }), el("ul", { class: "cards" }, members.map((entry) => card(entry))));
+    page.append(
+      el("h2", { text: t(`section.${section}`) }),
+      el(
+        "ul",
+        { class: "cards" },
+        members.map((entry) => card(entry)),
+      ),
+    );
   }
   main.append(page);
   if (sl) stopThemeWatch = watchThumbnails(page, sl);
@@ -100,14 +110,17 @@ function watchThumbnails(page, sl) {
       // leave the placeholder (or the previous picture)
     }
   };
-  const observer = new IntersectionObserver((entries) => {
-    for (const entry of entries) {
-      if (!entry.isIntersecting || shown.has(entry.target)) continue;
-      shown.add(entry.target);
-      observer.unobserve(entry.target);
-      draw(entry.target);
-    }
-  }, { rootMargin: THUMB_MARGIN });
+  const observer = new IntersectionObserver(
+    (entries) => {
+      for (const entry of entries) {
+        if (!entry.isIntersecting || shown.has(entry.target)) continue;
+        shown.add(entry.target);
+        observer.unobserve(entry.target);
+        draw(entry.target);
+      }
+    },
+    { rootMargin: THUMB_MARGIN },
+  );
   for (const img of page.querySelectorAll("img.card-thumb")) observer.observe(img);
   const stopTheme = onThemeChange(() => shown.forEach(draw));
   return () => {
@@ -120,21 +133,47 @@ function watchThumbnails(page, sl) {
 /** A gallery card: the words come from the manifest's string keys, the picture comes later. */
 function card(entry) {
   const title = t(`${entry.strings}.title`);
-  const img = el("img", { class: "card-thumb placeholder", alt: t("gallery.thumbnailAlt", { title }), width: String(THUMB_WIDTH), height: String(THUMB_HEIGHT), dataset: { demo: entry.id } });
-  return el("li", {},
-    el("a", { class: "card", href: buildHash(entry.id), dataset: { demo: entry.id } },
+  const img = el("img", {
+    class: "card-thumb placeholder",
+    alt: t("gallery.thumbnailAlt", { title }),
+    width: String(THUMB_WIDTH),
+    height: String(THUMB_HEIGHT),
+    dataset: { demo: entry.id },
+  });
+  return el(
+    "li",
+    {},
+    el(
+      "a",
+      { class: "card", href: buildHash(entry.id), dataset: { demo: entry.id } },
       img,
-      el("span", { class: "card-body" },
+      el(
+        "span",
+        { class: "card-body" },
         el("span", { class: "card-title", text: title }),
-        el("span", { class: "card-line", text: t(`${entry.strings}.summary`) }))));
+        el("span", { class: "card-line", text: t(`${entry.strings}.summary`) }),
+      ),
+    ),
+  );
 }
 
 /** A PNG data URL of the demo module's default state, rendered off-screen through the normal mount. */
 function thumbnail(demo, sl) {
   const holder = document.createElement("div");
-  const temp = mountDemo(holder, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "embed", shareUrl: () => "" });
+  const temp = mountDemo(holder, demo, {
+    sl,
+    state: validateState(demo, structuredClone(demo.defaultState)),
+    mode: "embed",
+    shareUrl: () => "",
+  });
   try {
-    return figureToCanvas(temp.figure, THUMB_SCALE, THUMB_FIGURE_WIDTH, THUMB_FIGURE_HEIGHT, currentTheme()).toDataURL("image/png");
+    return figureToCanvas(
+      temp.figure,
+      THUMB_SCALE,
+      THUMB_FIGURE_WIDTH,
+      THUMB_FIGURE_HEIGHT,
+      currentTheme(),
+    ).toDataURL("image/png");
   } finally {
     temp.destroy();
   }
@@ -155,7 +194,11 @@ function showDemo(entry, demo, encoded, sl) {
       linkError = err.message;
     }
   }
-  const holder = el("div", { class: "demo-page" }, el("a", { class: "back", href: "#", text: t("app.backToGallery") }));
+  const holder = el(
+    "div",
+    { class: "demo-page" },
+    el("a", { class: "back", href: "#", text: t("app.backToGallery") }),
+  );
   const root = el("div");
   holder.append(root);
   main.append(holder);
@@ -171,7 +214,14 @@ function showDemo(entry, demo, encoded, sl) {
   } catch (err) {
     // The wasm constructor refused a state that passed validation: fall back to the default.
     linkError = err.message;
-    controller = mountDemo(root, demo, { sl, state: validateState(demo, structuredClone(demo.defaultState)), mode: "page", headingLevel: "h1", onCommit: (s) => writeHash(demo.id, s), shareUrl: (s) => shareUrl(demo.id, s) });
+    controller = mountDemo(root, demo, {
+      sl,
+      state: validateState(demo, structuredClone(demo.defaultState)),
+      mode: "page",
+      headingLevel: "h1",
+      onCommit: (s) => writeHash(demo.id, s),
+      shareUrl: (s) => shareUrl(demo.id, s),
+    });
   }
   writeHash(demo.id, controller.state);
   if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
@@ -201,7 +251,9 @@ async function route(sl) {
     // Same demo, new link: validate and apply (no state: the starting picture); a bad one
     // keeps the current picture.
     try {
-      controller.accept(s ? decodeState(s) : structuredClone(demo.defaultState), { errorKey: "status.badLink" });
+      controller.accept(s ? decodeState(s) : structuredClone(demo.defaultState), {
+        errorKey: "status.badLink",
+      });
     } catch (err) {
       controller.status(t("status.badLink", { message: err.message }), "error");
     }

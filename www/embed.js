@@ -41,13 +41,16 @@ class SplineLabElement extends HTMLElement {
       shadow.append(style, link, this._root);
     }
     if (this._controller || this._observer) return;
-    this._observer = new IntersectionObserver((entries) => {
-      if (entries.some((e) => e.isIntersecting)) {
-        this._observer.disconnect();
-        this._observer = null;
-        this._start();
-      }
-    }, { rootMargin: START_MARGIN });
+    this._observer = new IntersectionObserver(
+      (entries) => {
+        if (entries.some((e) => e.isIntersecting)) {
+          this._observer.disconnect();
+          this._observer = null;
+          this._start();
+        }
+      },
+      { rootMargin: START_MARGIN },
+    );
     this._observer.observe(this);
   }
 
@@ -100,7 +103,10 @@ class SplineLabElement extends HTMLElement {
       this._controller = mountDemo(root, demo, { ...options, state });
     } catch (err) {
       problem = err.message; // refused by the wasm constructor: show the default instead
-      this._controller = mountDemo(root, demo, { ...options, state: validateState(demo, structuredClone(demo.defaultState)) });
+      this._controller = mountDemo(root, demo, {
+        ...options,
+        state: validateState(demo, structuredClone(demo.defaultState)),
+      });
     }
     if (problem) this._controller.status(t("status.rejected", { message: problem }), "error");
 

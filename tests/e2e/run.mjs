@@ -17,7 +17,17 @@ import { fuzzApi } from "./api-fuzz.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
 
 const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
-const ARGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run", "--enable-unsafe-swiftshader"];
+const ARGS = [
+  "--headless",
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+  "--disable-quic",
+  "--no-first-run",
+  "--enable-unsafe-swiftshader",
+];
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
 const TEST_TIMEOUT_MS = 30_000;
@@ -50,12 +60,26 @@ async function test(name, body) {
   const started = Date.now();
   let timer;
   try {
-    await Promise.race([body(), new Promise((_, reject) => (timer = setTimeout(() => reject(new Error(`timed out after ${TEST_TIMEOUT_MS} ms`)), TEST_TIMEOUT_MS)))]);
+    await Promise.race([
+      body(),
+      new Promise(
+        (_, reject) =>
+          (timer = setTimeout(
+            () => reject(new Error(`timed out after ${TEST_TIMEOUT_MS} ms`)),
+            TEST_TIMEOUT_MS,
+          )),
+      ),
+    ]);
     passed += 1;
     console.log(`ok   ${name} (${Date.now() - started} ms)`);
   } catch (err) {
     failed += 1;
-    console.log(`FAIL ${name}\n     ${String(err.stack ?? err).split("\n").slice(0, 4).join("\n     ")}`);
+    console.log(
+      `FAIL ${name}\n     ${String(err.stack ?? err)
+        .split("\n")
+        .slice(0, 4)
+        .join("\n     ")}`,
+    );
   } finally {
     clearTimeout(timer);
   }
@@ -66,7 +90,10 @@ function assert(condition, message) {
 }
 
 function equal(actual, expected, message) {
-  if (actual !== expected) throw new Error(`${message}: expected ${JSON.stringify(expected)}, got ${JSON.stringify(actual)}`);
+  if (actual !== expected)
+    throw new Error(
+      `${message}: expected ${JSON.stringify(expected)}, got ${JSON.stringify(actual)}`,
+    );
 }
 
 const digest = (text) => createHash("sha256").update(text).digest("hex").slice(0, 16);
@@ -85,7 +112,9 @@ function watchErrors(page) {
 
 /** Waits two animation frames (the coalesced draw has happened). */
 async function settle(page) {
-  await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+  await page.evaluate(
+    () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))),
+  );
 }
 
 /** Scopes helpers to one demo instance (`scope` = CSS prefix, e.g. "" or "spline-lab#a "). */
@@ -111,16 +140,20 @@ function demoHelpers(page, scope = "") {
         const r = c.getBoundingClientRect();
         return { x: r.left + c.clientLeft, y: r.top + c.clientTop };
       });
-      return (text ?? "").split(";").filter(Boolean).map((pair) => {
-        const [x, y] = pair.split(",").map(Number);
-        return { x: origin.x + x, y: origin.y + y };
-      });
+      return (text ?? "")
+        .split(";")
+        .filter(Boolean)
+        .map((pair) => {
+          const [x, y] = pair.split(",").map(Number);
+          return { x: origin.x + x, y: origin.y + y };
+        });
     },
     async drag(from, dx, dy) {
       await page.mouse.move(from.x, from.y);
       await page.mouse.down();
       const steps = 6;
-      for (let k = 1; k <= steps; k++) await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
+      for (let k = 1; k <= steps; k++)
+        await page.mouse.move(from.x + (dx * k) / steps, from.y + (dy * k) / steps);
       await page.mouse.up();
       await settle(page);
     },
@@ -130,11 +163,17 @@ function demoHelpers(page, scope = "") {
     },
     /** Clicks a toolbar/panel button by its data-action name and returns the download. */
     async download(action) {
-      const [file] = await Promise.all([page.waitForEvent("download"), page.locator(`${scope}[data-action="${action}"]`).first().click()]);
+      const [file] = await Promise.all([
+        page.waitForEvent("download"),
+        page.locator(`${scope}[data-action="${action}"]`).first().click(),
+      ]);
       return file;
     },
     async importText(name, text) {
-      await page.locator(`${scope}.sl-import-input`).first().setInputFiles({ name, mimeType: "application/json", buffer: Buffer.from(text) });
+      await page
+        .locator(`${scope}.sl-import-input`)
+        .first()
+        .setInputFiles({ name, mimeType: "application/json", buffer: Buffer.from(text) });
       await settle(page);
     },
   };
@@ -177,10 +216,18 @@ async function demoSuite({ page, errors }, demo) {
     await h.ready();
     // Every demo has keyboard handles: an interactive figure, not a picture.
     equal(await h.canvas().getAttribute("role"), "application", "canvas role");
-    assert((await h.canvas().getAttribute("aria-roledescription"))?.length > 3, "canvas has an aria-roledescription");
+    assert(
+      (await h.canvas().getAttribute("aria-roledescription"))?.length > 3,
+      "canvas has an aria-roledescription",
+    );
     assert((await h.canvas().getAttribute("aria-label")).length > 10, "canvas has an aria-label");
-    const size = await h.canvas().evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
-    assert(Math.abs(size.w - size.cw * size.ratio) <= 1, `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`);
+    const size = await h
+      .canvas()
+      .evaluate((c) => ({ w: c.width, cw: c.clientWidth, ratio: devicePixelRatio }));
+    assert(
+      Math.abs(size.w - size.cw * size.ratio) <= 1,
+      `backing store ${size.w} px for ${size.cw} CSS px at DPR ${size.ratio}`,
+    );
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
@@ -195,12 +242,20 @@ async function demoSuite({ page, errors }, demo) {
     const after = await h.snapshot();
     assert(before !== after, "canvas unchanged after drag");
     const moved = (await h.handles())[second ? 1 : 0];
-    assert(Math.abs(moved.x - handle.x - DRAG_PX.x) < 1.5 && Math.abs(moved.y - handle.y - DRAG_PX.y) < 1.5, `handle at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + drag`);
+    assert(
+      Math.abs(moved.x - handle.x - DRAG_PX.x) < 1.5 &&
+        Math.abs(moved.y - handle.y - DRAG_PX.y) < 1.5,
+      `handle at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + drag`,
+    );
     // Undo puts the handle back; Escape clears the selection: the first picture again.
     await page.keyboard.press("Control+z");
     await page.keyboard.press("Escape");
     await page.mouse.move(1, 1);
-    equal(JSON.stringify((await h.handles())[second ? 1 : 0]), JSON.stringify(handle), "handle after undo");
+    equal(
+      JSON.stringify((await h.handles())[second ? 1 : 0]),
+      JSON.stringify(handle),
+      "handle after undo",
+    );
     equal(await h.snapshot(), before, "snapshot after undo");
   });
 
@@ -215,7 +270,10 @@ async function demoSuite({ page, errors }, demo) {
     const after = await h.snapshot();
     assert(before !== after, "canvas unchanged after arrow keys");
     const moved = (await h.handles())[0];
-    assert(Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6, `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`);
+    assert(
+      Math.abs(moved.x - start.x - 1) < 0.6 && Math.abs(moved.y - start.y + 10) < 0.6,
+      `nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`,
+    );
   });
 
   await test(name("the Add point / Remove point buttons add and remove a handle"), async () => {
@@ -236,32 +294,35 @@ async function demoSuite({ page, errors }, demo) {
     assert(problems.length === 0, problems.join("\n"));
   });
 
-  await test(name("Remove point stops at the minimum (button disabled, Delete refused with a message)"), async () => {
-    h = await openDemo(page, base, demo.id);
-    const remove = page.locator('[data-action="remove-point"]').first();
-    if ((await remove.count()) === 0) return; // a demo without an editable point list
-    for (let k = 0; k < 40 && !(await remove.isDisabled()); k++) {
-      await remove.click();
+  await test(
+    name("Remove point stops at the minimum (button disabled, Delete refused with a message)"),
+    async () => {
+      h = await openDemo(page, base, demo.id);
+      const remove = page.locator('[data-action="remove-point"]').first();
+      if ((await remove.count()) === 0) return; // a demo without an editable point list
+      for (let k = 0; k < 40 && !(await remove.isDisabled()); k++) {
+        await remove.click();
+        await settle(page);
+      }
+      assert(await remove.isDisabled(), "Remove point is disabled at the minimum");
+      const count = (await h.handles()).length;
+      assert(count >= 2, `${count} handles left`);
+      // The keyboard path is refused too, with a message naming the limit.
+      await h.canvas().focus();
+      await page.keyboard.press("Home");
+      await page.keyboard.press("Delete");
       await settle(page);
-    }
-    assert(await remove.isDisabled(), "Remove point is disabled at the minimum");
-    const count = (await h.handles()).length;
-    assert(count >= 2, `${count} handles left`);
-    // The keyboard path is refused too, with a message naming the limit.
-    await h.canvas().focus();
-    await page.keyboard.press("Home");
-    await page.keyboard.press("Delete");
-    await settle(page);
-    equal((await h.handles()).length, count, "handles after Delete at the minimum");
-    equal(await h.statusKind(), "error", "status kind");
-    assert(/\d/.test(await h.status()), `the message names the limit: ${await h.status()}`);
-    // Still interactive: Add point works again.
-    await page.locator('[data-action="add-point"]').first().click();
-    await settle(page);
-    equal((await h.handles()).length, count + 1, "handles after Add point");
-    const problems = errors.take();
-    assert(problems.length === 0, problems.join("\n"));
-  });
+      equal((await h.handles()).length, count, "handles after Delete at the minimum");
+      equal(await h.statusKind(), "error", "status kind");
+      assert(/\d/.test(await h.status()), `the message names the limit: ${await h.status()}`);
+      // Still interactive: Add point works again.
+      await page.locator('[data-action="add-point"]').first().click();
+      await settle(page);
+      equal((await h.handles()).length, count + 1, "handles after Add point");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    },
+  );
 
   await test(name("the URL restores the same picture after reload"), async () => {
     h = await openDemo(page, base, demo.id);
@@ -287,7 +348,12 @@ async function demoSuite({ page, errors }, demo) {
     const text = readFileSync(await file.path(), "utf8");
     const parsed = await page.evaluate((svg) => {
       const doc = new DOMParser().parseFromString(svg, "image/svg+xml");
-      return { error: doc.querySelector("parsererror")?.textContent ?? null, root: doc.documentElement.nodeName, paths: doc.querySelectorAll("path").length, texts: doc.querySelectorAll("text").length };
+      return {
+        error: doc.querySelector("parsererror")?.textContent ?? null,
+        root: doc.documentElement.nodeName,
+        paths: doc.querySelectorAll("path").length,
+        texts: doc.querySelectorAll("text").length,
+      };
     }, text);
     equal(parsed.error, null, "parser error");
     equal(parsed.root, "svg", "root element");
@@ -330,8 +396,16 @@ async function demoSuite({ page, errors }, demo) {
     assert((await h.status()).length > 10, "a message is shown");
     // A bad hash edited into a working page keeps the last good picture.
     const good = await h.snapshot();
-    await page.evaluate(() => (location.hash = "#demo=" + new URLSearchParams(location.hash.slice(1)).get("demo") + "&s=eyJwb2ludHMiOjN9"));
-    await page.waitForFunction(() => document.querySelector(".sl-status")?.textContent.includes("points"));
+    await page.evaluate(
+      () =>
+        (location.hash =
+          "#demo=" +
+          new URLSearchParams(location.hash.slice(1)).get("demo") +
+          "&s=eyJwb2ludHMiOjN9"),
+    );
+    await page.waitForFunction(() =>
+      document.querySelector(".sl-status")?.textContent.includes("points"),
+    );
     equal(await h.snapshot(), good, "picture kept");
     const problems = errors.take().filter((e) => !e.includes("404"));
     assert(problems.length === 0, problems.join("\n"));
@@ -343,7 +417,10 @@ async function demoSuite({ page, errors }, demo) {
     await h.importText("broken.json", "{ this is not json");
     equal(await h.statusKind(), "error", "status kind");
     assert((await h.status()).includes("broken.json"), "message names the file");
-    await h.importText("wrong.json", JSON.stringify({ version: 1, demo: demo.id, state: { points: "nope" } }));
+    await h.importText(
+      "wrong.json",
+      JSON.stringify({ version: 1, demo: demo.id, state: { points: "nope" } }),
+    );
     assert((await h.status()).includes("points"), `message names the field: ${await h.status()}`);
     equal(await h.snapshot(), good, "picture kept");
     // Still interactive.
@@ -352,27 +429,55 @@ async function demoSuite({ page, errors }, demo) {
     assert((await h.snapshot()) !== good, "still draggable");
   });
 
-  await test(name("formula lines shrink to fit the panel in lecture mode (1280 px wide)"), async () => {
-    // At 1.6× type 16 of the 20 demos had lines running out of the panel; each line now
-    // shrinks until it fits (never below MIN_FIT_SCALE), and a line that fits keeps its size.
-    await openDemo(page, base, demo.id);
-    const measure = () => page.evaluate(() => [...document.querySelectorAll(".sl-formula-line")].map((l) => ({ client: l.clientWidth, scroll: l.scrollWidth, size: l.style.fontSize })));
-    // At normal size every line fits at 1280 px: none is shrunk.
-    const normal = await measure();
-    assert(normal.every((l) => l.size === "" && l.scroll <= l.client + 1), `normal-size lines ${JSON.stringify(normal)}`);
-    await page.locator('[data-action="lecture"]').first().click();
-    // The refit follows the panel's resize (ResizeObserver), a frame or more after the click.
-    const fits = () => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.scrollWidth <= l.clientWidth + 1 || l.style.fontSize === "0.6em");
-    if (!(await page.waitForFunction(fits, null, { timeout: 3000 }).then(() => true, () => false))) {
-      const lines = (await measure()).map((l, i) => `line ${i}: ${l.scroll} px in ${l.client} px at ${l.size || "full size"}`);
-      throw new Error(`lines still overflow in lecture mode:\n${lines.join("\n")}`);
-    }
-    // Back to normal size: the panel refits (its type size changed) and nothing stays shrunk.
-    await page.locator('[data-action="lecture"]').first().click();
-    await page.waitForFunction(() => [...document.querySelectorAll(".sl-formula-line")].every((l) => l.style.fontSize === ""), null, { timeout: 3000 });
-    const problems = errors.take();
-    assert(problems.length === 0, problems.join("\n"));
-  });
+  await test(
+    name("formula lines shrink to fit the panel in lecture mode (1280 px wide)"),
+    async () => {
+      // At 1.6× type 16 of the 20 demos had lines running out of the panel; each line now
+      // shrinks until it fits (never below MIN_FIT_SCALE), and a line that fits keeps its size.
+      await openDemo(page, base, demo.id);
+      const measure = () =>
+        page.evaluate(() =>
+          [...document.querySelectorAll(".sl-formula-line")].map((l) => ({
+            client: l.clientWidth,
+            scroll: l.scrollWidth,
+            size: l.style.fontSize,
+          })),
+        );
+      // At normal size every line fits at 1280 px: none is shrunk.
+      const normal = await measure();
+      assert(
+        normal.every((l) => l.size === "" && l.scroll <= l.client + 1),
+        `normal-size lines ${JSON.stringify(normal)}`,
+      );
+      await page.locator('[data-action="lecture"]').first().click();
+      // The refit follows the panel's resize (ResizeObserver), a frame or more after the click.
+      const fits = () =>
+        [...document.querySelectorAll(".sl-formula-line")].every(
+          (l) => l.scrollWidth <= l.clientWidth + 1 || l.style.fontSize === "0.6em",
+        );
+      if (
+        !(await page.waitForFunction(fits, null, { timeout: 3000 }).then(
+          () => true,
+          () => false,
+        ))
+      ) {
+        const lines = (await measure()).map(
+          (l, i) => `line ${i}: ${l.scroll} px in ${l.client} px at ${l.size || "full size"}`,
+        );
+        throw new Error(`lines still overflow in lecture mode:\n${lines.join("\n")}`);
+      }
+      // Back to normal size: the panel refits (its type size changed) and nothing stays shrunk.
+      await page.locator('[data-action="lecture"]').first().click();
+      await page.waitForFunction(
+        () =>
+          [...document.querySelectorAll(".sl-formula-line")].every((l) => l.style.fontSize === ""),
+        null,
+        { timeout: 3000 },
+      );
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    },
+  );
 
   for (const [what, body] of await demoChecks(demo.id)) {
     await test(name(what), async () => {
@@ -389,7 +494,13 @@ async function demoSuite({ page, errors }, demo) {
 /** A browser of its own (profile, context, page and its error watch) for a share of the demos. */
 async function launchWorker() {
   const profile = mkdtempSync(join(tmpdir(), "splinelab-e2e-"));
-  const context = await chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, args: ARGS, viewport: VIEWPORT, deviceScaleFactor: 1, acceptDownloads: true });
+  const context = await chromium.launchPersistentContext(profile, {
+    executablePath: CHROMIUM,
+    args: ARGS,
+    viewport: VIEWPORT,
+    deviceScaleFactor: 1,
+    acceptDownloads: true,
+  });
   const page = context.pages()[0] ?? (await context.newPage());
   return { profile, context, page, errors: watchErrors(page) };
 }
@@ -408,7 +519,13 @@ const extraWorkers = [];
 try {
   // The registry, as the page sees it.
   await page.goto(`${base}/index.html`);
-  const registry = await page.evaluate(async () => (await import("./demos/index.js")).demos.map(({ id, section, strings }) => ({ id, section, strings })));
+  const registry = await page.evaluate(async () =>
+    (await import("./demos/index.js")).demos.map(({ id, section, strings }) => ({
+      id,
+      section,
+      strings,
+    })),
+  );
 
   await test("registry: every manifest entry loads its module, which agrees on id, section and strings", async () => {
     const problems = await page.evaluate(async () => {
@@ -416,16 +533,27 @@ try {
       const found = [];
       for (const entry of demos) {
         const demo = await loadDemo(entry.id);
-        if (demo !== (await loadDemo(entry.id))) found.push(`${entry.id}: loadDemo is not memoised`);
+        if (demo !== (await loadDemo(entry.id)))
+          found.push(`${entry.id}: loadDemo is not memoised`);
         if (findDemo(entry.id) !== entry) found.push(`${entry.id}: findDemo`);
         for (const field of ["id", "section", "strings"]) {
-          if (demo[field] !== entry[field]) found.push(`${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`);
+          if (demo[field] !== entry[field])
+            found.push(
+              `${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`,
+            );
         }
         // The declarative contract (lib/demo.js): state, fields, model and drawing.
-        const exports = "mount" in demo ? ["defaultState", "validate", "mount"] : ["defaultState", "fields", "derive", "draw"];
-        for (const name of exports) if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
+        const exports =
+          "mount" in demo
+            ? ["defaultState", "validate", "mount"]
+            : ["defaultState", "fields", "derive", "draw"];
+        for (const name of exports)
+          if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
       }
-      const refused = await loadDemo("no-such-demo").then(() => "loaded", (err) => err.message);
+      const refused = await loadDemo("no-such-demo").then(
+        () => "loaded",
+        (err) => err.message,
+      );
       if (!refused.includes("no-such-demo")) found.push(`an unknown id: ${refused}`);
       if (findDemo("no-such-demo") !== undefined) found.push("findDemo of an unknown id");
       return found;
@@ -442,17 +570,30 @@ try {
       if (/^\/demos\/[^/]+\.js$/.test(path)) modules.push(path);
     };
     await page.goto("about:blank");
-    await page.route(pageUrl, (route) => route.fulfill({ contentType: "text/html", body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="one" demo="de-casteljau" points="0,0 2,2 6,4 8,2" t="0.25"></spline-lab></body></html>' }));
+    await page.route(pageUrl, (route) =>
+      route.fulfill({
+        contentType: "text/html",
+        body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="one" demo="de-casteljau" points="0,0 2,2 6,4 8,2" t="0.25"></spline-lab></body></html>',
+      }),
+    );
     page.on("request", watch);
     try {
       await page.goto(pageUrl);
       await demoHelpers(page, "spline-lab#one ").ready();
-      equal((await demoHelpers(page, "spline-lab#one ").handles()).length, 4, "the embed's handles");
+      equal(
+        (await demoHelpers(page, "spline-lab#one ").handles()).length,
+        4,
+        "the embed's handles",
+      );
     } finally {
       page.off("request", watch);
       await page.unroute(pageUrl);
     }
-    equal(JSON.stringify([...new Set(modules)].sort()), JSON.stringify(["/demos/de-casteljau.js", "/demos/index.js"]), "demo modules requested");
+    equal(
+      JSON.stringify([...new Set(modules)].sort()),
+      JSON.stringify(["/demos/de-casteljau.js", "/demos/index.js"]),
+      "demo modules requested",
+    );
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
@@ -462,7 +603,9 @@ try {
     const missingDemoKeys = await page.evaluate(async () => {
       const strings = await import("./lib/strings.js");
       const { demos } = await import("./demos/index.js");
-      const keys = demos.flatMap((d) => ["title", "summary", "whatYouSee", "try1"].map((k) => `${d.strings}.${k}`));
+      const keys = demos.flatMap((d) =>
+        ["title", "summary", "whatYouSee", "try1"].map((k) => `${d.strings}.${k}`),
+      );
       return keys.filter((k) => !strings.has(k));
     });
     assert(missingDemoKeys.length === 0, `missing demo keys: ${missingDemoKeys.join(", ")}`);
@@ -470,28 +613,52 @@ try {
     const strings = await import("../../www/lib/strings.js");
     for (const file of listJs(join(ROOT, "www"))) {
       for (const [, fn, key] of readFileSync(file, "utf8").matchAll(/\b(tp?)\("([\w.]+)"/g)) {
-        if (!strings.has(key) && !(fn === "tp" && strings.has(`${key}.other`))) missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
+        if (!strings.has(key) && !(fn === "tp" && strings.has(`${key}.other`)))
+          missing.push(`${file.slice(ROOT.length + 1)}: ${key}`);
       }
     }
     assert(missing.length === 0, `keys missing from strings.js:\n${missing.join("\n")}`);
   });
 
   await test("strings: tp() picks the plural form by Intl.PluralRules of the active language", async () => {
-    const { addLocale, setLocale, locale, tp, t, formatNumber } = await import("../../www/lib/strings.js");
+    const { addLocale, setLocale, locale, tp, t, formatNumber } = await import(
+      "../../www/lib/strings.js"
+    );
     // A made-up key in English and in Croatian (one: 1, 21, …; few: 2–4, 22–24, …; other: the rest).
     addLocale("en", { "test.apples.one": "{count} apple", "test.apples.other": "{count} apples" });
-    addLocale("hr", { "test.apples.one": "{count} jabuka", "test.apples.few": "{count} jabuke", "test.apples.other": "{count} jabuka", "test.only.other": "samo {count}" });
+    addLocale("hr", {
+      "test.apples.one": "{count} jabuka",
+      "test.apples.few": "{count} jabuke",
+      "test.apples.other": "{count} jabuka",
+      "test.only.other": "samo {count}",
+    });
     try {
       equal(tp("test.apples", 1), "1 apple", "en one");
       equal(tp("test.apples", 0), "0 apples", "en zero is other");
-      equal(tp("test.apples", 3, { count: formatNumber(3) }), "3 apples", "en other, formatted count");
-      equal(tp("test.missing", 2, { n: 2 }), "test.missing", "no forms: the key itself, as t() does");
+      equal(
+        tp("test.apples", 3, { count: formatNumber(3) }),
+        "3 apples",
+        "en other, formatted count",
+      );
+      equal(
+        tp("test.missing", 2, { n: 2 }),
+        "test.missing",
+        "no forms: the key itself, as t() does",
+      );
       setLocale("hr");
       equal(locale(), "hr", "active language");
-      equal([1, 3, 5, 21, 22].map((n) => tp("test.apples", n)).join(", "), "1 jabuka, 3 jabuke, 5 jabuka, 21 jabuka, 22 jabuke", "hr forms");
+      equal(
+        [1, 3, 5, 21, 22].map((n) => tp("test.apples", n)).join(", "),
+        "1 jabuka, 3 jabuke, 5 jabuka, 21 jabuka, 22 jabuke",
+        "hr forms",
+      );
       equal(tp("test.only", 3), "samo 3", "a missing category falls back to .other");
       equal(formatNumber(1.8125), "1,813", "hr decimal comma, 3 decimals");
-      equal(t("gallery.heading"), "Demos, by syllabus section", "a key the table lacks falls back to English");
+      equal(
+        t("gallery.heading"),
+        "Demos, by syllabus section",
+        "a key the table lacks falls back to English",
+      );
     } finally {
       setLocale("en");
     }
@@ -505,7 +672,11 @@ try {
     const publicPart = dts.slice(0, dts.indexOf("export type InitInput"));
     const code = publicPart.split("\n").filter((line) => !/^\s*(\/\*\*|\*)/.test(line));
     const loose = code.filter((line) => /\bany\b/.test(line));
-    assert(publicPart.includes("class BSplineSurface") && publicPart.includes("basisNonZero(u: number): Float64Array"), "declarations of this build");
+    assert(
+      publicPart.includes("class BSplineSurface") &&
+        publicPart.includes("basisNonZero(u: number): Float64Array"),
+      "declarations of this build",
+    );
     assert(loose.length === 0, `untyped declarations:\n${loose.join("\n")}`);
   });
 
@@ -521,10 +692,15 @@ try {
       await page.goto("about:blank");
       await page.goto(`${base}/index.html`);
       await page.locator(".card").first().waitFor();
-      await page.waitForFunction(() => document.querySelector("a.card img")?.src.startsWith("data:image/png"));
+      await page.waitForFunction(() =>
+        document.querySelector("a.card img")?.src.startsWith("data:image/png"),
+      );
       await settle(page);
       const early = modules.size;
-      assert(early > 0 && early < registry.length, `${early} of ${registry.length} demo modules imported before scrolling`);
+      assert(
+        early > 0 && early < registry.length,
+        `${early} of ${registry.length} demo modules imported before scrolling`,
+      );
       const words = await page.evaluate(async () => {
         const { t } = await import("./lib/strings.js");
         const { demos } = await import("./demos/index.js");
@@ -536,9 +712,19 @@ try {
         equal(await card.locator(".card-title").textContent(), title, `${id} title`);
         equal(await card.locator(".card-line").textContent(), summary, `${id} summary`);
         await card.scrollIntoViewIfNeeded();
-        await page.waitForFunction((id) => document.querySelector(`a.card[data-demo="${id}"] img`)?.src.startsWith("data:image/png"), id);
+        await page.waitForFunction(
+          (id) =>
+            document
+              .querySelector(`a.card[data-demo="${id}"] img`)
+              ?.src.startsWith("data:image/png"),
+          id,
+        );
       }
-      equal(modules.size, registry.length, "every module imported once its card was near the viewport");
+      equal(
+        modules.size,
+        registry.length,
+        "every module imported once its card was near the viewport",
+      );
     } finally {
       page.off("request", watch);
     }
@@ -551,7 +737,7 @@ try {
     // background), once it is drawn; null before.
     const corner = () => {
       const img = document.querySelector("img.card-thumb");
-      if (!img || !img.complete || !img.src.startsWith("data:")) return null;
+      if (!img?.complete || !img.src.startsWith("data:")) return null;
       const c = document.createElement("canvas");
       c.width = c.height = 8;
       const g = c.getContext("2d");
@@ -561,9 +747,12 @@ try {
       for (let i = 0; i < d.length; i += 4) sum += (d[i] + d[i + 1] + d[i + 2]) / 3;
       return sum / 64;
     };
-    const waitFor = (test) => page.waitForFunction(`(${corner})() !== null && (${corner})() ${test}`, null, { timeout: 5000 }).catch(async () => {
-      throw new Error(`thumbnail background ${await page.evaluate(corner)}, expected ${test}`);
-    });
+    const waitFor = (test) =>
+      page
+        .waitForFunction(`(${corner})() !== null && (${corner})() ${test}`, null, { timeout: 5000 })
+        .catch(async () => {
+          throw new Error(`thumbnail background ${await page.evaluate(corner)}, expected ${test}`);
+        });
     try {
       await page.emulateMedia({ colorScheme: "light" });
       await page.goto("about:blank");
@@ -590,11 +779,17 @@ try {
       r.text("top", 100, 1, style, "center", "bottom"); // would stand above the top edge
       r.text("outside", 250, 50, style, "left"); // anchor outside: left alone
       const width = r.measure("a long label", style);
-      const xs = [...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"/g)].map((m) => [Number(m[1]), Number(m[2])]);
+      const xs = [...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"/g)].map((m) => [
+        Number(m[1]),
+        Number(m[2]),
+      ]);
       return { width, xs, size: style.size };
     });
     const [[x0], [, y1], [x2]] = result.xs;
-    assert(x0 + result.width <= 200 && x0 >= 0, `right edge: label at ${x0}, width ${result.width}`);
+    assert(
+      x0 + result.width <= 200 && x0 >= 0,
+      `right edge: label at ${x0}, width ${result.width}`,
+    );
     assert(y1 - result.size >= 0, `top edge: baseline at ${y1}`);
     equal(x2, 250, "a label of a point outside the frame stays put");
   });
@@ -604,22 +799,38 @@ try {
       const { SvgRecorder, drawCaption } = await import("./lib/draw.js");
       const { LIGHT_THEME } = await import("./lib/theme.js");
       const style = LIGHT_THEME.labelSmall;
-      const r = new SvgRecorder({ theme: LIGHT_THEME, measureContext: document.createElement("canvas").getContext("2d") });
+      const r = new SvgRecorder({
+        theme: LIGHT_THEME,
+        measureContext: document.createElement("canvas").getContext("2d"),
+      });
       r.begin(200, 300, "#fff");
-      const sentence = "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length";
+      const sentence =
+        "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length";
       const lines = drawCaption(r, sentence, 10, 290, style, 180, "bottom");
       const short = drawCaption(r, "C¹ at the joint", 10, 10, style, 180, "top");
-      const texts = [...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"[^>]*>([^<]*)<\/text>/g)].map((m) => ({ y: Number(m[2]), text: m[3], width: r.measure(m[3], style) }));
+      const texts = [
+        ...r.toString().matchAll(/<text x="([-\d.]+)" y="([-\d.]+)"[^>]*>([^<]*)<\/text>/g),
+      ].map((m) => ({ y: Number(m[2]), text: m[3], width: r.measure(m[3], style) }));
       return { lines, short, texts, whole: r.measure(sentence, style) };
     });
     assert(result.whole > 180, `the sentence is wider than the frame (${result.whole} px)`);
     equal(result.short, 1, "a caption that fits is one line");
     assert(result.lines >= 2, `${result.lines} lines`);
     const wrapped = result.texts.slice(0, result.lines);
-    assert(wrapped.every((l) => l.width <= 180), `line widths ${wrapped.map((l) => l.width.toFixed(1)).join(", ")}`);
-    equal(wrapped.map((l) => l.text).join(" "), "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length", "the words, in order");
+    assert(
+      wrapped.every((l) => l.width <= 180),
+      `line widths ${wrapped.map((l) => l.width.toFixed(1)).join(", ")}`,
+    );
+    equal(
+      wrapped.map((l) => l.text).join(" "),
+      "Arrows: velocity P′(1) arriving and Q′(1) leaving the joint, drawn at 1/6 length",
+      "the words, in order",
+    );
     equal(wrapped[wrapped.length - 1].y, 290, "the last line sits on the anchor (baseline bottom)");
-    assert(wrapped.every((l, i) => i === 0 || l.y > wrapped[i - 1].y), "lines go down the frame");
+    assert(
+      wrapped.every((l, i) => i === 0 || l.y > wrapped[i - 1].y),
+      "lines go down the frame",
+    );
   });
 
   // The demos' suites, shared out among the workers (each its own browser): a demo's tests run
@@ -628,9 +839,11 @@ try {
   const workers = [main];
   for (let w = 1; w < WORKERS; w++) workers.push(await launchWorker());
   extraWorkers.push(...workers.slice(1));
-  await Promise.all(workers.map(async (worker) => {
-    for (let demo = queue.shift(); demo; demo = queue.shift()) await demoSuite(worker, demo);
-  }));
+  await Promise.all(
+    workers.map(async (worker) => {
+      for (let demo = queue.shift(); demo; demo = queue.shift()) await demoSuite(worker, demo);
+    }),
+  );
 
   await test("the JS API throws an Error on random arguments, never traps (3 seeds × 700 rounds)", async () => {
     await page.goto("about:blank");
@@ -638,7 +851,10 @@ try {
     for (const seedValue of [1, 2, 3]) {
       const result = await page.evaluate(fuzzApi, { seedValue, iterations: 700 });
       assert(result.bad.length === 0, `seed ${seedValue}:\n${result.bad.join("\n")}`);
-      assert(result.calls > 3000 && result.errors > 1000, `seed ${seedValue}: ${result.calls} calls, ${result.errors} errors`);
+      assert(
+        result.calls > 3000 && result.errors > 1000,
+        `seed ${seedValue}: ${result.calls} calls, ${result.errors} errors`,
+      );
       equal(result.alive, "0.5,0.5", "the module works afterwards");
     }
     const problems = errors.take();
@@ -650,7 +866,10 @@ try {
     await page.goto(`${base}/index.html`);
     const result = await page.evaluate(fuzzStates, { seedValue: 7, rounds: 60 });
     assert(result.bad.length === 0, result.bad.join("\n"));
-    assert(result.accepted > 100 && result.refused > 100, `accepted ${result.accepted}, refused ${result.refused}`);
+    assert(
+      result.accepted > 100 && result.refused > 100,
+      `accepted ${result.accepted}, refused ${result.refused}`,
+    );
     await settle(page);
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
@@ -674,7 +893,10 @@ try {
     assert((await h.snapshot()) !== before, "the picture changes");
     const large = await sizes();
     assert(Math.abs(large.font / normal.font - 1.6) < 1e-9, `font ${normal.font} → ${large.font}`);
-    assert(Math.abs(large.stroke / normal.stroke - 1.6) < 1e-9, `stroke ${normal.stroke} → ${large.stroke}`);
+    assert(
+      Math.abs(large.stroke / normal.stroke - 1.6) < 1e-9,
+      `stroke ${normal.stroke} → ${large.stroke}`,
+    );
     await lecture.click();
     equal(await lecture.getAttribute("aria-pressed"), "false", "released");
     equal(await h.snapshot(), before, "the picture is as before");
@@ -686,7 +908,11 @@ try {
     const h = await openDemo(page, base, "de-casteljau");
     const canvas = h.canvas();
     equal(await canvas.getAttribute("role"), "application", "canvas role");
-    equal(await canvas.getAttribute("aria-roledescription"), "interactive figure", "role description");
+    equal(
+      await canvas.getAttribute("aria-roledescription"),
+      "interactive figure",
+      "role description",
+    );
     const live = page.locator(".sl-figure .sl-announcer");
     equal(await live.count(), 1, "one live region");
     equal(await live.getAttribute("aria-live"), "polite", "aria-live");
@@ -706,7 +932,16 @@ try {
     const moved = await live.textContent();
     const [, x] = moved.match(/^P₁ moved to \((\d+(?:\.\d+)?), 2\)$/) ?? [];
     assert(Number(x) > 2, `announced after the nudge: ${moved}`);
-    const state = await page.evaluate(() => JSON.parse(atob(new URLSearchParams(location.hash.slice(1)).get("s").replace(/-/g, "+").replace(/_/g, "/"))));
+    const state = await page.evaluate(() =>
+      JSON.parse(
+        atob(
+          new URLSearchParams(location.hash.slice(1))
+            .get("s")
+            .replace(/-/g, "+")
+            .replace(/_/g, "/"),
+        ),
+      ),
+    );
     equal(Number(x), Number(state.points[1][0].toFixed(3)), "the announced x is the committed one");
     // A drag is announced once, when it ends.
     const [p0] = await h.handles();
@@ -717,7 +952,10 @@ try {
     await settle(page);
     equal(await live.textContent(), "P₀ selected, (0, 0)", "nothing said while dragging");
     await page.mouse.up();
-    assert(/^P₀ moved to \(\d/.test(await live.textContent()), `after the drag: ${await live.textContent()}`);
+    assert(
+      /^P₀ moved to \(\d/.test(await live.textContent()),
+      `after the drag: ${await live.textContent()}`,
+    );
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });
@@ -730,11 +968,17 @@ try {
     await a.ready();
     await page.locator("spline-lab#quadratic").scrollIntoViewIfNeeded();
     await b.ready();
-    const shadow = await page.evaluate(() => [...document.querySelectorAll("spline-lab")].map((e) => !!e.shadowRoot?.querySelector("canvas")));
+    const shadow = await page.evaluate(() =>
+      [...document.querySelectorAll("spline-lab")].map(
+        (e) => !!e.shadowRoot?.querySelector("canvas"),
+      ),
+    );
     equal(JSON.stringify(shadow), "[true,true]", "both rendered in shadow roots");
     equal((await a.handles()).length, 4, "worked example points");
     equal((await b.handles()).length, 3, "quadratic points");
-    const cell = await page.locator('spline-lab#worked td[data-level="3"][data-index="0"]').textContent();
+    const cell = await page
+      .locator('spline-lab#worked td[data-level="3"][data-index="0"]')
+      .textContent();
     assert(cell.includes("29/16, 23/16"), `worked example cell: ${cell}`);
     const caption = await page.locator("spline-lab#quadratic .sl-table-title").textContent();
     assert(caption.includes("1/2"), `quadratic caption: ${caption}`);
@@ -745,7 +989,9 @@ try {
     await b.drag(p0, 20, -20);
     assert((await b.snapshot()) !== before, "second embed reacts to a drag");
     equal(await a.snapshot(), otherBefore, "first embed unchanged");
-    const loads = await page.evaluate(() => performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length);
+    const loads = await page.evaluate(
+      () => performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length,
+    );
     equal(loads, 1, "wasm fetched once per page");
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
@@ -756,9 +1002,13 @@ try {
     const labels = async (id, pattern) => {
       const h = await openDemo(page, base, id);
       const svg = readFileSync(await (await h.download("export-svg")).path(), "utf8");
-      return [...svg.matchAll(/<text[^>]*>([^<]*)<\/text>/g)].filter((m) => pattern.test(m[1])).length;
+      return [...svg.matchAll(/<text[^>]*>([^<]*)<\/text>/g)].filter((m) => pattern.test(m[1]))
+        .length;
     };
-    const cases = [["derivatives", /^3\(P/], ["projective", /^w′/]];
+    const cases = [
+      ["derivatives", /^3\(P/],
+      ["projective", /^w′/],
+    ];
     const desktop = [];
     for (const [id, pattern] of cases) desktop.push(await labels(id, pattern));
     await page.setViewportSize({ width: 390, height: 844 });
@@ -784,15 +1034,23 @@ try {
       });
       const noSimd = /needs WebAssembly SIMD \(Chrome or Edge 91, Firefox 89, Safari 16\.4/;
       await old.goto(`${base}/index.html#demo=de-casteljau`);
-      await old.waitForFunction(() => document.querySelector(".app-status")?.dataset.kind === "error");
+      await old.waitForFunction(
+        () => document.querySelector(".app-status")?.dataset.kind === "error",
+      );
       const status = await old.locator(".app-status").textContent();
       assert(noSimd.test(status), `app status: ${status}`);
-      assert(!status.includes("make build"), `no build advice for a browser that is too old: ${status}`);
+      assert(
+        !status.includes("make build"),
+        `no build advice for a browser that is too old: ${status}`,
+      );
       await old.goto(`${base}/embed-example.html`);
       await old.locator("spline-lab#worked .sl-embed-error").waitFor();
       const embedText = await old.locator("spline-lab#worked .sl-embed-error").textContent();
       assert(noSimd.test(embedText), `embed: ${embedText}`);
-      const wasmLoads = await old.evaluate(() => performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length);
+      const wasmLoads = await old.evaluate(
+        () =>
+          performance.getEntriesByType("resource").filter((r) => r.name.endsWith(".wasm")).length,
+      );
       equal(wasmLoads, 0, "the wasm is not fetched");
       const problems = oldErrors.take().filter((p) => !p.includes("Failed to load resource"));
       assert(problems.length === 0, problems.join("\n"));

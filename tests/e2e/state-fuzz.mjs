@@ -11,9 +11,34 @@ export async function fuzzStates({ seedValue, rounds }) {
   const { loadWasm } = await import("./lib/wasm.js");
   const sl = await loadWasm();
   let seed = seedValue;
-  const rnd = () => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed / 2147483648; };
+  const rnd = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648;
+  };
   const pick = (a) => a[Math.floor(rnd() * a.length)];
-  const weird = () => pick([NaN, Infinity, -1, 0, 1e308, -1e308, 2.5, 1e-300, "x", null, true, [], {}, [1], [[1, 2]], 1e6, 3, 12, 40, 0.5]);
+  const weird = () =>
+    pick([
+      NaN,
+      Infinity,
+      -1,
+      0,
+      1e308,
+      -1e308,
+      2.5,
+      1e-300,
+      "x",
+      null,
+      true,
+      [],
+      {},
+      [1],
+      [[1, 2]],
+      1e6,
+      3,
+      12,
+      40,
+      0.5,
+    ]);
   function mutate(v) {
     if (rnd() < 0.15) return weird();
     if (Array.isArray(v)) {
@@ -31,14 +56,27 @@ export async function fuzzStates({ seedValue, rounds }) {
     return v;
   }
   const bad = [];
-  let accepted = 0, refused = 0;
+  let accepted = 0,
+    refused = 0;
   for (const entry of demos) {
     const demo = await loadDemo(entry.id);
     for (let k = 0; k < rounds; k++) {
       const candidate = mutate(structuredClone(demo.defaultState));
       let state;
-      try { state = validateState(demo, structuredClone(candidate)); }
-      catch (e) { refused++; if (!(e instanceof Error) || e.constructor !== Error) bad.push([demo.id, "validate", e.constructor.name, e.message, JSON.stringify(candidate).slice(0, 200)]); continue; }
+      try {
+        state = validateState(demo, structuredClone(candidate));
+      } catch (e) {
+        refused++;
+        if (!(e instanceof Error) || e.constructor !== Error)
+          bad.push([
+            demo.id,
+            "validate",
+            e.constructor.name,
+            e.message,
+            JSON.stringify(candidate).slice(0, 200),
+          ]);
+        continue;
+      }
       accepted++;
       const holder = document.createElement("div");
       document.body.append(holder);
@@ -46,7 +84,14 @@ export async function fuzzStates({ seedValue, rounds }) {
         const c = mountDemo(holder, demo, { sl, state, mode: "embed", shareUrl: () => "" });
         c.destroy();
       } catch (e) {
-        if (!(e instanceof Error) || e.constructor !== Error) bad.push([demo.id, "mount", e.constructor.name, e.message, JSON.stringify(candidate).slice(0, 200)]);
+        if (!(e instanceof Error) || e.constructor !== Error)
+          bad.push([
+            demo.id,
+            "mount",
+            e.constructor.name,
+            e.message,
+            JSON.stringify(candidate).slice(0, 200),
+          ]);
       }
       holder.remove();
     }

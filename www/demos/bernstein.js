@@ -15,13 +15,27 @@ import { slider, pointButtons, readout, group } from "../lib/panel.js";
 import { placeLabelAway } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
 import {
-  fmt, subscript, superscript, simpleFraction, exactFraction, fractionText, fractionTex, exactNumbers, degreeName,
+  fmt,
+  subscript,
+  superscript,
+  simpleFraction,
+  exactFraction,
+  fractionText,
+  fractionTex,
+  exactNumbers,
+  degreeName,
 } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
 import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
-import { BasisPlotPointer, drawBand, drawGraphs, drawPlotFrame, followHighlight } from "../lib/basis-plot.js";
+import {
+  BasisPlotPointer,
+  drawBand,
+  drawGraphs,
+  drawPlotFrame,
+  followHighlight,
+} from "../lib/basis-plot.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bernstein";
@@ -68,7 +82,14 @@ const TICK_PX = 5;
 
 /** The worked example of the Greek notes (syllabus §2) at t = 1/4: weights 27/64, 27/64, 9/64, 1/64. */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 2],
+      [6, 4],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   t: 0.25,
 });
 
@@ -153,10 +174,15 @@ export const controls = [
   ),
   group(
     null,
-    readout("degree", (s) => t("bernstein.degree", { n: s.points.length - 1, count: s.points.length })),
+    readout("degree", (s) =>
+      t("bernstein.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
     pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
   ),
-  group(null, readout("peak", (s, d) => peakNote(s, d), { live: true })),
+  group(
+    null,
+    readout("peak", (s, d) => peakNote(s, d), { live: true }),
+  ),
 ];
 
 export const figure = {
@@ -176,7 +202,10 @@ const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0, bottom: 0 };
 
 /** Height of the plot strip: PLOT_FRACTION of the canvas, at least PLOT_MIN_PX while that leaves the curve half. */
 function plotHeight(height) {
-  return Math.max(Math.round(height * PLOT_FRACTION), Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)));
+  return Math.max(
+    Math.round(height * PLOT_FRACTION),
+    Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)),
+  );
 }
 
 /** Lays out the plot frame for a canvas of width × height CSS px at text scale `scale`. */
@@ -223,7 +252,8 @@ export function draw(r, v, s, d) {
   r.paint(theme.curve);
 
   // Every control point ringed in its basis function's colour.
-  for (let i = 0; i <= n; i++) r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
+  for (let i = 0; i <= n; i++)
+    r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
 
   // The highlighted point's peak: P(i/n) on the curve, joined to P_i.
   const peakX = hi >= 0 ? v.sx(d.peakPoints[2 * hi]) : 0;
@@ -240,7 +270,16 @@ export function draw(r, v, s, d) {
   const pointY = v.sy(d.point[1]);
   r.point(pointX, pointY, theme.pointOnCurve);
   const pointRadius = theme.pointOnCurve.radius * r.scale;
-  placeLabelAway(r, v, pts, t("bernstein.pointLabel"), pointX, pointY, theme.labelPoint, pointRadius);
+  placeLabelAway(
+    r,
+    v,
+    pts,
+    t("bernstein.pointLabel"),
+    pointX,
+    pointY,
+    theme.labelPoint,
+    pointRadius,
+  );
   if (hi >= 0) {
     r.point(peakX, peakY, theme.basisPoint[hi % cycle]);
     const peakRadius = theme.basisPoint[0].radius * r.scale;
@@ -256,8 +295,19 @@ function drawPlot(r, s, d) {
   const hi = d.highlight;
   const { values: basis, peakValues } = d.basis;
   layoutPlot(r.width, r.height, r.scale);
-  drawPlotFrame(r, plot, { zero: t("bernstein.axisValue0"), one: t("bernstein.axisValue1"), tick: TICK_PX });
-  r.text(t("bernstein.axisT"), plot.x1 + (TICK_PX + 2) * r.scale, plot.y0, theme.labelSmall, "left", "middle");
+  drawPlotFrame(r, plot, {
+    zero: t("bernstein.axisValue0"),
+    one: t("bernstein.axisValue1"),
+    tick: TICK_PX,
+  });
+  r.text(
+    t("bernstein.axisT"),
+    plot.x1 + (TICK_PX + 2) * r.scale,
+    plot.y0,
+    theme.labelSmall,
+    "left",
+    "middle",
+  );
 
   // Ticks at i/n, labelled while the labels keep TICK_LABEL_MIN_GAP apart (the last one always).
   const tickGap = (plot.x1 - plot.x0) / n;
@@ -270,7 +320,14 @@ function drawPlot(r, s, d) {
   r.paint(theme.axis);
   for (let i = 0; i <= n; i++) {
     if (i !== n && (i % labelEvery !== 0 || n - i < labelEvery)) continue;
-    r.text(d.labels.ticks[i], px(i / n), plot.y0 + (TICK_PX + 2) * r.scale, theme.labelSmall, "center", "top");
+    r.text(
+      d.labels.ticks[i],
+      px(i / n),
+      plot.y0 + (TICK_PX + 2) * r.scale,
+      theme.labelSmall,
+      "center",
+      "top",
+    );
   }
 
   // The basis functions from the core's table, and their names at the peaks (B_0 left, B_n right).
@@ -280,7 +337,14 @@ function drawPlot(r, s, d) {
   if (n <= NAME_LABELS_MAX_DEGREE) {
     for (let i = 0; i <= n; i++) {
       const style = i === hi ? theme.labelBold : theme.labelSmall;
-      r.text(d.labels.names[i], px(i / n) + nudge(i, 4), py(peakValues[i]) - 5 * r.scale, style, align(i), "bottom");
+      r.text(
+        d.labels.names[i],
+        px(i / n) + nudge(i, 4),
+        py(peakValues[i]) - 5 * r.scale,
+        style,
+        align(i),
+        "bottom",
+      );
     }
   }
 
@@ -293,7 +357,14 @@ function drawPlot(r, s, d) {
     r.lineTo(x, plot.y0);
     r.paint(theme.helper);
     r.point(x, y, theme.basisPoint[hi % theme.basisPoint.length]);
-    r.text(d.labels.peaks[hi], x + nudge(hi, 8), (y + plot.y0) / 2, theme.labelBold, align(hi), "middle");
+    r.text(
+      d.labels.peaks[hi],
+      x + nudge(hi, 8),
+      (y + plot.y0) / 2,
+      theme.labelBold,
+      align(hi),
+      "middle",
+    );
   }
 
   // The marker at t, with the weights B_i^n(t) as dots.
@@ -302,7 +373,8 @@ function drawPlot(r, s, d) {
   r.moveTo(mx, plot.y1 - 2 * r.scale);
   r.lineTo(mx, plot.y0);
   r.paint(theme.marker);
-  for (let i = 0; i <= n; i++) r.point(mx, py(d.weights.values[i]), theme.basisPoint[i % theme.basisPoint.length]);
+  for (let i = 0; i <= n; i++)
+    r.point(mx, py(d.weights.values[i]), theme.basisPoint[i % theme.basisPoint.length]);
   const markerAlign = s.t < 0.1 ? "left" : s.t > 0.9 ? "right" : "center";
   r.text(d.marker, mx, plot.y1 - 4 * r.scale, theme.labelPoint, markerAlign, "bottom");
 }
@@ -378,7 +450,13 @@ function peakNote(s, d) {
   const p = exactNumbers(s.t, s.points.flat());
   const x = p.value(d.peakPoints[2 * hi], n, false, n ** n);
   const y = p.value(d.peakPoints[2 * hi + 1], n, false, n ** n);
-  return t("bernstein.peakNote", { b: d.labels.names[hi], p: `P${subscript(hi)}`, t: d.labels.ticks[hi], x, y });
+  return t("bernstein.peakNote", {
+    b: d.labels.names[hi],
+    p: `P${subscript(hi)}`,
+    t: d.labels.ticks[hi],
+    x,
+    y,
+  });
 }
 
 /** The curve, its weights at t and their sum, P(t), and the highlighted function's maximum. */
@@ -398,7 +476,15 @@ export function label(s, d) {
   });
   if (hi < 0) return text;
   const [x, y] = [d.peakPoints[2 * hi], d.peakPoints[2 * hi + 1]];
-  return text + t("bernstein.ariaPeak", { b: d.labels.names[hi], t: d.labels.ticks[hi], x: fmt(x, 2), y: fmt(y, 2) });
+  return (
+    text +
+    t("bernstein.ariaPeak", {
+      b: d.labels.names[hi],
+      t: d.labels.ticks[hi],
+      x: fmt(x, 2),
+      y: fmt(y, 2),
+    })
+  );
 }
 
 // ------------------------------------------------------------ the plot's pointer and the legend table
@@ -413,7 +499,9 @@ export function setup(ui) {
   const inPlot = (x, y) => {
     layoutPlot(view.width, view.height, view.renderer.scale);
     const slack = TICK_SNAP_PX;
-    return x >= plot.x0 - slack && x <= plot.x1 + slack && y >= plot.y1 - slack && y <= plot.y0 + slack;
+    return (
+      x >= plot.x0 - slack && x <= plot.x1 + slack && y >= plot.y1 - slack && y <= plot.y0 + slack
+    );
   };
   const rawT = (x) => Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
   /** t under canvas x in the plot: snapped to a tick i/n nearby, else to the slider's step. */
@@ -428,7 +516,15 @@ export function setup(ui) {
     inPlot,
     graphAt: (x, y) => {
       const k = Math.round(rawT(x) * (SAMPLES - 1));
-      return nearestGraph(ui.data.basis.values, ui.state.points.length, SAMPLES, k, y, py, PLOT_HOVER_PX);
+      return nearestGraph(
+        ui.data.basis.values,
+        ui.state.points.length,
+        SAMPLES,
+        k,
+        y,
+        py,
+        PLOT_HOVER_PX,
+      );
     },
     pick: (x, final) => ui.set("t", tAtPixel(x), final),
     press: () => ui.stop(),
@@ -439,11 +535,18 @@ export function setup(ui) {
 
   /** One row per basis function (the legend, hovering a row highlights it), then the sum. */
   const details = detailsTable(ui, "bernstein", (n, table) => {
-    const { basis: { peakValues }, labels } = ui.data;
+    const {
+      basis: { peakValues },
+      labels,
+    } = ui.data;
     pointer.setRowHover(-1); // the hovered row, if any, is gone
     const rows = [];
     const columns = ["colFunction", "colValue", "colMirror", "colPeak"];
-    const head = el("tr", {}, columns.map((key) => el("th", { scope: "col", text: t(`bernstein.${key}`) })));
+    const head = el(
+      "tr",
+      {},
+      columns.map((key) => el("th", { scope: "col", text: t(`bernstein.${key}`) })),
+    );
     for (let i = 0; i <= n; i++) {
       const cells = { value: valueSpans(), mirror: valueSpans() };
       const peakValue = exactFraction(peakValues[i], n ** n) ?? exactFraction(peakValues[i], 1);
@@ -453,11 +556,19 @@ export function setup(ui) {
       });
       const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
       swatch.style.background = CYCLE[i % CYCLE.length];
-      cells.row = el("tr", { tabindex: "0", dataset: { index: String(i) } },
-        el("th", { scope: "row" }, swatch, t("bernstein.rowName", { b: labels.names[i], p: `P${subscript(i)}` })),
+      cells.row = el(
+        "tr",
+        { tabindex: "0", dataset: { index: String(i) } },
+        el(
+          "th",
+          { scope: "row" },
+          swatch,
+          t("bernstein.rowName", { b: labels.names[i], p: `P${subscript(i)}` }),
+        ),
         el("td", { dataset: { cell: "value" } }, cells.value.exact, cells.value.decimal),
         el("td", { dataset: { cell: "mirror" } }, cells.mirror.exact, cells.mirror.decimal),
-        el("td", { dataset: { cell: "peak" }, text: peakText }));
+        el("td", { dataset: { cell: "peak" }, text: peakText }),
+      );
       const enter = () => pointer.setRowHover(i);
       const leave = () => pointer.setRowHover(-1);
       cells.row.addEventListener("pointerenter", enter);
@@ -467,12 +578,23 @@ export function setup(ui) {
       rows.push(cells);
     }
     const sum = valueSpans();
-    const sumRow = el("tr", { dataset: { index: "sum" } },
+    const sumRow = el(
+      "tr",
+      { dataset: { index: "sum" } },
       el("th", { scope: "row", text: t("bernstein.sumRow") }),
       el("td", { dataset: { cell: "value" } }, sum.exact, sum.decimal),
       el("td", {}),
-      el("td", {}));
-    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((cells) => cells.row), sumRow));
+      el("td", {}),
+    );
+    table.replaceChildren(
+      el("thead", {}, head),
+      el(
+        "tbody",
+        {},
+        rows.map((cells) => cells.row),
+        sumRow,
+      ),
+    );
     return { rows, sum };
   });
 

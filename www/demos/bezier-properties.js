@@ -9,7 +9,15 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, choice, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
-import { fmt, subscript, degreeName, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  degreeName,
+  exactFraction,
+  fractionText,
+  fractionTex,
+  allIntegers,
+} from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
@@ -48,14 +56,41 @@ const CHEVRON_ANGLE = 0.5;
 const INTERSECT_TOLERANCE = 1e-9;
 
 // Styles of this demo's own marks (theme hues are the same in light and dark mode).
-const MAPPED_CURVE_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.curve, join: "round", cap: "round" });
-const MAPPED_POLYGON_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.polygon, dash: POLYGON_DASH });
-const MAPPED_POINT_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: RADIUS.constructionPoint });
+const MAPPED_CURVE_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.curve,
+  join: "round",
+  cap: "round",
+});
+const MAPPED_POLYGON_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.polygon,
+  dash: POLYGON_DASH,
+});
+const MAPPED_POINT_STYLE = Object.freeze({
+  fill: HUES.bluishGreen,
+  radius: RADIUS.constructionPoint,
+});
 const DOT_STYLE = Object.freeze({ fill: HUES.vermillion, radius: 2.5 });
 const REVERSED_DASH = Object.freeze([8, 6]);
-const REVERSED_STYLE = Object.freeze({ stroke: HUES.orange, width: WIDTH.curve, dash: REVERSED_DASH, cap: "butt" });
-const FORWARD_CHEVRON = Object.freeze({ stroke: HUES.blue, width: 2.5, cap: "round", join: "round" });
-const REVERSED_CHEVRON = Object.freeze({ stroke: HUES.orange, width: 2.5, cap: "round", join: "round" });
+const REVERSED_STYLE = Object.freeze({
+  stroke: HUES.orange,
+  width: WIDTH.curve,
+  dash: REVERSED_DASH,
+  cap: "butt",
+});
+const FORWARD_CHEVRON = Object.freeze({
+  stroke: HUES.blue,
+  width: 2.5,
+  cap: "round",
+  join: "round",
+});
+const REVERSED_CHEVRON = Object.freeze({
+  stroke: HUES.orange,
+  width: 2.5,
+  cap: "round",
+  join: "round",
+});
 const LINE_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
 
 /**
@@ -64,13 +99,25 @@ const LINE_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
  * y = 3, which crosses the polygon twice and misses the curve (its highest point is y = 2√2 ≈ 2.83).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 2],
+      [6, 4],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   property: "hull",
   rotation: 20,
   scale: 0.8,
   shear: -0.3,
   elevations: 2,
-  line: Object.freeze([[-1, 3], [9, 3]].map(Object.freeze)),
+  line: Object.freeze(
+    [
+      [-1, 3],
+      [9, 3],
+    ].map(Object.freeze),
+  ),
 });
 
 export const fields = {
@@ -135,7 +182,10 @@ function affine(s, d) {
   let distance = 0;
   for (let k = 0; k < MAPPED_DOTS; k++) {
     dots.set(map(original[2 * k], original[2 * k + 1]), 2 * k);
-    distance = Math.max(distance, Math.hypot(dots[2 * k] - onMapped[2 * k], dots[2 * k + 1] - onMapped[2 * k + 1]));
+    distance = Math.max(
+      distance,
+      Math.hypot(dots[2 * k] - onMapped[2 * k], dots[2 * k + 1] - onMapped[2 * k + 1]),
+    );
   }
   return { matrix, centre, points, samples: d.mapped.sampleUniform(CURVE_SAMPLES), dots, distance };
 }
@@ -148,7 +198,10 @@ function reversed(s, d) {
   let distance = 0;
   for (let k = 0; k < CURVE_SAMPLES; k++) {
     const j = CURVE_SAMPLES - 1 - k;
-    const gap = Math.hypot(d.samples[2 * k] - samples[2 * j], d.samples[2 * k + 1] - samples[2 * j + 1]);
+    const gap = Math.hypot(
+      d.samples[2 * k] - samples[2 * j],
+      d.samples[2 * k + 1] - samples[2 * j + 1],
+    );
     distance = Math.max(distance, gap);
   }
   return { samples, distance };
@@ -201,7 +254,10 @@ export const compute = {
 const PROPERTY = {
   hull: {
     readout: (s, d) =>
-      t("bezierProperties.readout.hull", { k: d.hull.length, names: d.hull.map((i) => `P${subscript(i)}`).join(", ") }),
+      t("bezierProperties.readout.hull", {
+        k: d.hull.length,
+        names: d.hull.map((i) => `P${subscript(i)}`).join(", "),
+      }),
     data: (s, d) => ({ hullVertices: String(d.hull.length) }),
     formula(s, d, n) {
       const weights = [];
@@ -225,7 +281,11 @@ const PROPERTY = {
     readout: (s, d) => t("bezierProperties.readout.affine", { d: fmt(d.affine.distance) }),
     data: (s, d) => ({ maxDistance: fmt(d.affine.distance) }),
     formula(s, d, n) {
-      const { matrix: [a, b, c, e], centre, distance } = d.affine;
+      const {
+        matrix: [a, b, c, e],
+        centre,
+        distance,
+      } = d.affine;
       return [
         `A = R(${fmt(s.rotation, 0)}^\\circ)\\cdot ${fmt(s.scale, 2)}\\cdot` +
           `\\begin{pmatrix}1 & ${fmt(s.shear, 2)}\\\\ 0 & 1\\end{pmatrix} = ` +
@@ -259,11 +319,16 @@ const PROPERTY = {
       `\\max_{t}\\ |R(1-t) - P(t)| = ${fmt(d.reversed.distance)}\\quad ` +
         `(${CURVE_SAMPLES}\\ \\text{${t("bezierProperties.formula.samples")}})`,
     ],
-    aria: (s, d, kind) => t("bezierProperties.aria.reversed", { kind, d: fmt(d.reversed.distance) }),
+    aria: (s, d, kind) =>
+      t("bezierProperties.aria.reversed", { kind, d: fmt(d.reversed.distance) }),
   },
   elevation: {
     readout: (s, d) =>
-      t("bezierProperties.readout.elevation", { count: elevatedCount(d), n: s.points.length, e: s.elevations }),
+      t("bezierProperties.readout.elevation", {
+        count: elevatedCount(d),
+        n: s.points.length,
+        e: s.elevations,
+      }),
     data: (s, d) => ({ polygonPoints: String(elevatedCount(d)) }),
     formula(s, d, n) {
       const den = n + 1;
@@ -274,7 +339,8 @@ const PROPERTY = {
       };
       const first = d.elevation.first;
       const q = [];
-      for (let i = 0; i <= n + 1; i++) q.push(`(${coord(first[2 * i])},\\ ${coord(first[2 * i + 1])})`);
+      for (let i = 0; i <= n + 1; i++)
+        q.push(`(${coord(first[2 * i])},\\ ${coord(first[2 * i + 1])})`);
       const count = elevatedCount(d);
       return [
         `Q_i = \\frac{i}{n+1}\\,P_{i-1} + \\Big(1 - \\frac{i}{n+1}\\Big)P_i,\\quad i = 0,\\dots,n+1,\\quad n = ${n}`,
@@ -284,11 +350,15 @@ const PROPERTY = {
           `\\text{${t("bezierProperties.formula.points")}}`,
       ];
     },
-    aria: (s, d, kind) => t("bezierProperties.aria.elevation", { kind, e: s.elevations, count: elevatedCount(d) }),
+    aria: (s, d, kind) =>
+      t("bezierProperties.aria.elevation", { kind, e: s.elevations, count: elevatedCount(d) }),
   },
   variation: {
     readout: (s, d) =>
-      t("bezierProperties.readout.variation", { k: d.variation.polygonCrossings, j: d.variation.curveCrossings }),
+      t("bezierProperties.readout.variation", {
+        k: d.variation.polygonCrossings,
+        j: d.variation.curveCrossings,
+      }),
     data: (s, d) => ({
       polygonCrossings: String(d.variation.polygonCrossings),
       curveCrossings: String(d.variation.curveCrossings),
@@ -299,38 +369,61 @@ const PROPERTY = {
       `${d.variation.curveCrossings} \\le ${d.variation.polygonCrossings}`,
     ],
     aria: (s, d, kind) =>
-      t("bezierProperties.aria.variation", { kind, k: d.variation.polygonCrossings, j: d.variation.curveCrossings }),
+      t("bezierProperties.aria.variation", {
+        kind,
+        k: d.variation.polygonCrossings,
+        j: d.variation.curveCrossings,
+      }),
   },
 };
 
 const roundTo3 = (v) => String(Math.round(v * 1000) / 1000);
 export const controls = [
-  group("bezierProperties.propertyLegend", choice("property", {
-    options: PROPERTIES.map((p) => ({ value: p, label: `bezierProperties.property.${p}` })),
-  })),
-  shownWhen((s) => s.property === "affine", group(
-    "bezierProperties.affineLegend",
-    slider("rotation", {
-      label: "bezierProperties.rotation",
-      min: ROTATION_RANGE[0],
-      max: ROTATION_RANGE[1],
-      step: 1,
-      format: roundTo3,
+  group(
+    "bezierProperties.propertyLegend",
+    choice("property", {
+      options: PROPERTIES.map((p) => ({ value: p, label: `bezierProperties.property.${p}` })),
     }),
-    slider("scale", { label: "bezierProperties.scale", min: SCALE_RANGE[0], max: SCALE_RANGE[1], step: 0.05 }),
-    slider("shear", { label: "bezierProperties.shear", min: SHEAR_RANGE[0], max: SHEAR_RANGE[1], step: 0.05 }),
-  )),
-  shownWhen((s) => s.property === "elevation", group(
-    "bezierProperties.elevationLegend",
-    slider("elevations", {
-      label: "bezierProperties.elevations",
-      min: 0,
-      max: MAX_ELEVATIONS,
-      step: 1,
-      format: (v) => String(Math.round(v)),
-      round: Math.round,
-    }),
-  )),
+  ),
+  shownWhen(
+    (s) => s.property === "affine",
+    group(
+      "bezierProperties.affineLegend",
+      slider("rotation", {
+        label: "bezierProperties.rotation",
+        min: ROTATION_RANGE[0],
+        max: ROTATION_RANGE[1],
+        step: 1,
+        format: roundTo3,
+      }),
+      slider("scale", {
+        label: "bezierProperties.scale",
+        min: SCALE_RANGE[0],
+        max: SCALE_RANGE[1],
+        step: 0.05,
+      }),
+      slider("shear", {
+        label: "bezierProperties.shear",
+        min: SHEAR_RANGE[0],
+        max: SHEAR_RANGE[1],
+        step: 0.05,
+      }),
+    ),
+  ),
+  shownWhen(
+    (s) => s.property === "elevation",
+    group(
+      "bezierProperties.elevationLegend",
+      slider("elevations", {
+        label: "bezierProperties.elevations",
+        min: 0,
+        max: MAX_ELEVATIONS,
+        step: 1,
+        format: (v) => String(Math.round(v)),
+        round: Math.round,
+      }),
+    ),
+  ),
   group(
     null,
     readout("property", (s, d) => PROPERTY[s.property].readout(s, d), {
@@ -342,7 +435,9 @@ export const controls = [
   ),
   group(
     null,
-    readout("degree", (s) => t("bezierProperties.degree", { n: s.points.length - 1, count: s.points.length })),
+    readout("degree", (s) =>
+      t("bezierProperties.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
     pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
   ),
 ];
@@ -468,7 +563,10 @@ export function setup(ui) {
       head.push(el("th", { scope: "col", text: `Q${subscript(i)}` }));
       cells.push(el("td", { dataset: { elevated: String(i) } }));
     }
-    table.replaceChildren(el("thead", {}, el("tr", {}, head)), el("tbody", {}, el("tr", {}, cells)));
+    table.replaceChildren(
+      el("thead", {}, el("tr", {}, head)),
+      el("tbody", {}, el("tr", {}, cells)),
+    );
   }
 
   return {
@@ -485,7 +583,10 @@ export function setup(ui) {
         const y = first[2 * i + 1];
         const fx = ints ? exactFraction(x, n + 1) : null;
         const fy = ints ? exactFraction(y, n + 1) : null;
-        setText(cells[i], fx && fy ? `(${fractionText(fx)}, ${fractionText(fy)})` : `(${fmt(x)}, ${fmt(y)})`);
+        setText(
+          cells[i],
+          fx && fy ? `(${fractionText(fx)}, ${fractionText(fy)})` : `(${fmt(x)}, ${fmt(y)})`,
+        );
       }
     },
   };

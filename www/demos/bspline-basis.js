@@ -18,12 +18,26 @@
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, pointButtons, readout, group } from "../lib/panel.js";
 import { knotRuler, knotText } from "../lib/knot-ruler.js";
-import { knotsField, parameterField, bsplineCurve, withClampedKnots, domainOf, clampInto } from "../lib/bspline.js";
+import {
+  knotsField,
+  parameterField,
+  bsplineCurve,
+  withClampedKnots,
+  domainOf,
+  clampInto,
+} from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
 import { BasisPlotPointer, drawGraph, drawPlotFrame, legendRow } from "../lib/basis-plot.js";
 import { placeLabelAway } from "../lib/handles.js";
 import { radios, el, setText } from "../lib/controls.js";
-import { fmt, subscript, superscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  superscript,
+  simpleFraction,
+  fractionText,
+  degreeName,
+} from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { boundsOf, nearestGraph } from "../lib/geometry.js";
@@ -42,7 +56,16 @@ export const section = 3;
  * U = [0, 0, 0, 1, 2, 3, 4, 4, 4]; at u = 5/2: N₂,₂ = 1/8, N₃,₂ = 3/4, N₄,₂ = 1/8.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [1, 3], [3, 4], [5, 1], [7, 3], [8, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [1, 3],
+      [3, 4],
+      [5, 1],
+      [7, 3],
+      [8, 0],
+    ].map(Object.freeze),
+  ),
   degree: 2,
   knots: Object.freeze([0, 0, 0, 1, 2, 3, 4, 4, 4]),
   u: 2.5,
@@ -81,7 +104,8 @@ export const fields = {
   degree(s, name) {
     checkNumber(s, name, { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
     const count = s.points.length;
-    if (count < s.degree + 1) throw new Error(t("bsplineBasis.fewPoints", { p: s.degree, need: s.degree + 1, count }));
+    if (count < s.degree + 1)
+      throw new Error(t("bsplineBasis.fewPoints", { p: s.degree, need: s.degree + 1, count }));
   },
   knots: knotsField(),
   u: parameterField({ error: "bsplineBasis.uRange" }),
@@ -98,7 +122,8 @@ export const derive = {
 function peaks(basis, count) {
   const peak = new Int32Array(count);
   for (let i = 0; i < count; i++) {
-    for (let k = 1; k < SAMPLES; k++) if (basis[i * SAMPLES + k] > basis[i * SAMPLES + peak[i]]) peak[i] = k;
+    for (let k = 1; k < SAMPLES; k++)
+      if (basis[i * SAMPLES + k] > basis[i * SAMPLES + peak[i]]) peak[i] = k;
   }
   return peak;
 }
@@ -115,10 +140,13 @@ export const compute = {
   values: [[...BASIS, "u"], (s, d) => d.curve.basis(s.u)],
   sum: [[...BASIS, "u"], (s, d) => d.values.reduce((sum, value) => sum + value, 0)], // partition of unity: 1
   table: [[...BASIS, "u"], (s, d) => d.curve.basisTable(s.u)], // { span, levels }
-  marker: [["u"], (s) => {
-    const f = simpleFraction(s.u);
-    return t("bsplineBasis.marker", { u: f && f.den > 1 ? fractionText(f) : knotText(s.u) });
-  }],
+  marker: [
+    ["u"],
+    (s) => {
+      const f = simpleFraction(s.u);
+      return t("bsplineBasis.marker", { u: f && f.den > 1 ? fractionText(f) : knotText(s.u) });
+    },
+  ],
 };
 
 /** The degree buttons: 1 … 5, those above n disabled; a new degree gets clamped uniform knots. */
@@ -126,7 +154,10 @@ const degreeButtons = {
   build(ui) {
     const options = [];
     for (let p = MIN_DEGREE; p <= MAX_DEGREE; p++) {
-      options.push({ value: String(p), label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }) });
+      options.push({
+        value: String(p),
+        label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }),
+      });
     }
     const control = radios({
       name: "degree",
@@ -136,7 +167,8 @@ const degreeButtons = {
         const p = Number(value);
         const s = ui.state;
         if (p === s.degree) return;
-        if (s.points.length < p + 1) ui.status(t("bsplineBasis.minPoints", { min: p + 1, degree: p }), "error");
+        if (s.points.length < p + 1)
+          ui.status(t("bsplineBasis.minPoints", { min: p + 1, degree: p }), "error");
         else replaceOrReport(ui, withClampedKnots(ui.sl, { ...s, degree: p }));
         control.set(String(ui.state.degree));
       },
@@ -146,7 +178,8 @@ const degreeButtons = {
       element: control.element,
       sync(s) {
         control.set(String(s.degree));
-        for (const input of control.inputs) input.disabled = Number(input.value) > s.points.length - 1;
+        for (const input of control.inputs)
+          input.disabled = Number(input.value) > s.points.length - 1;
       },
     };
   },
@@ -157,7 +190,8 @@ function snapToKnot(s, d, u) {
   const [a, b] = d.domain;
   const clamped = clampInto(u, d.domain);
   for (const knot of s.knots) {
-    if (knot >= a && knot <= b && Math.abs(d.ruler.px(knot) - d.ruler.px(clamped)) <= KNOT_SNAP_PX) return knot;
+    if (knot >= a && knot <= b && Math.abs(d.ruler.px(knot) - d.ruler.px(clamped)) <= KNOT_SNAP_PX)
+      return knot;
   }
   const step = (b - a) * U_SLIDER_RESOLUTION;
   return clampInto(a + Math.round((clamped - a) / step) * step, d.domain);
@@ -165,7 +199,8 @@ function snapToKnot(s, d, u) {
 
 export const controls = [
   knotRuler("knots", {
-    refused: (error, i, s) => t(`bsplineBasis.multiplicity.${error}`, { i: subscript(i), max: s.degree + 1 }),
+    refused: (error, i, s) =>
+      t(`bsplineBasis.multiplicity.${error}`, { i: subscript(i), max: s.degree + 1 }),
     pick: (ui, u, final) => ui.set("u", snapToKnot(ui.state, ui.data, u), final),
   }),
   group("bsplineBasis.degreeLegend", degreeButtons),
@@ -176,25 +211,34 @@ export const controls = [
       range: (s) => domainOf(s.knots, s.degree),
       step: (a, b) => (b - a) * U_SLIDER_RESOLUTION,
     }),
-    readout("sum", (s, d) => t("bsplineBasis.sumNote", { u: knotText(s.u), sum: fmt(d.sum) }), { kind: "readout" }),
+    readout("sum", (s, d) => t("bsplineBasis.sumNote", { u: knotText(s.u), sum: fmt(d.sum) }), {
+      kind: "readout",
+    }),
   ),
   group(
     null,
     readout("count", (s) => {
       const m = s.knots.length - 1;
-      return t("bsplineBasis.knotNote", { count: s.points.length, p: s.degree, m: m + 1, last: subscript(m) });
+      return t("bsplineBasis.knotNote", {
+        count: s.points.length,
+        p: s.degree,
+        m: m + 1,
+        last: subscript(m),
+      });
     }),
     pointButtons("points", {
       min: (s) => Math.max(MIN_POINTS, s.degree + 1),
       max: MAX_POINTS,
       prefix: strings,
       adjust: (s, ui) => withClampedKnots(ui.sl, s),
-      more: [{
-        name: "reset-knots",
-        label: "bsplineBasis.resetKnots",
-        title: "bsplineBasis.resetKnots.title",
-        run: (ui) => replaceOrReport(ui, withClampedKnots(ui.sl, ui.state)),
-      }],
+      more: [
+        {
+          name: "reset-knots",
+          label: "bsplineBasis.resetKnots",
+          title: "bsplineBasis.resetKnots.title",
+          run: (ui) => replaceOrReport(ui, withClampedKnots(ui.sl, ui.state)),
+        },
+      ],
     }),
     readout("ruler-help", () => t("bsplineBasis.rulerHelp")),
   ),
@@ -235,7 +279,9 @@ const supportStyles = new WeakMap();
 function supportFill(theme) {
   let list = supportStyles.get(theme);
   if (!list) {
-    list = Object.freeze(CYCLE.map((colour) => Object.freeze({ fill: colour, alpha: SUPPORT_ALPHA })));
+    list = Object.freeze(
+      CYCLE.map((colour) => Object.freeze({ fill: colour, alpha: SUPPORT_ALPHA })),
+    );
     supportStyles.set(theme, list);
   }
   return list;
@@ -275,7 +321,8 @@ export function draw(r, v, s, d) {
   flatPath(r, v, d.samples, 0, SAMPLES);
   r.paint(theme.curve);
   // Every control point ringed in its basis function's colour.
-  for (let i = 0; i <= n; i++) r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
+  for (let i = 0; i <= n; i++)
+    r.point(v.sx(pts[i][0]), v.sy(pts[i][1]), theme.basisRing[i % cycle]);
   d.handles.draw(r, v);
   const pointX = v.sx(d.point[0]);
   const pointY = v.sy(d.point[1]);
@@ -306,8 +353,22 @@ export function draw(r, v, s, d) {
   }
   r.paint(theme.helper);
   const tick = (TICK_PX + 2) * sc;
-  r.text(t("bsplineBasis.axisValue0"), plot.x0 - tick, plot.y0, theme.labelSmall, "right", "middle");
-  r.text(t("bsplineBasis.axisValue1"), plot.x0 - tick, plot.y1, theme.labelSmall, "right", "middle");
+  r.text(
+    t("bsplineBasis.axisValue0"),
+    plot.x0 - tick,
+    plot.y0,
+    theme.labelSmall,
+    "right",
+    "middle",
+  );
+  r.text(
+    t("bsplineBasis.axisValue1"),
+    plot.x0 - tick,
+    plot.y1,
+    theme.labelSmall,
+    "right",
+    "middle",
+  );
   r.text(t("bsplineBasis.axisU"), plot.x1 + tick, plot.y0, theme.labelSmall, "left", "middle");
 
   // The basis functions, from the core's table (highlighted one last, on top).
@@ -329,11 +390,19 @@ export function draw(r, v, s, d) {
       const align = k === 0 ? "left" : k === SAMPLES - 1 ? "right" : "center";
       const dx = (k === 0 ? 4 : k === SAMPLES - 1 ? -4 : 0) * sc;
       const style = i === hi ? theme.labelBold : theme.labelSmall;
-      r.text(basisName(p, i), sampleX(k) + dx, py(d.basis[i * SAMPLES + k]) - 4 * sc, style, align, "bottom");
+      r.text(
+        basisName(p, i),
+        sampleX(k) + dx,
+        py(d.basis[i * SAMPLES + k]) - 4 * sc,
+        style,
+        align,
+        "bottom",
+      );
     }
   }
   // The values N_{i,p}(u) as dots on the marker, and its label.
-  for (let i = 0; i <= n; i++) if (d.values[i] > 0) r.point(mx, py(d.values[i]), theme.basisPoint[i % cycle]);
+  for (let i = 0; i <= n; i++)
+    if (d.values[i] > 0) r.point(mx, py(d.values[i]), theme.basisPoint[i % cycle]);
   const markerAlign = mx < plot.x0 + 40 * sc ? "left" : mx > plot.x1 - 40 * sc ? "right" : "center";
   r.text(d.marker, mx, plot.top + 2 * sc, theme.labelPoint, markerAlign, "top");
 
@@ -424,11 +493,15 @@ export function label(s, d) {
   const k = d.table.span;
   const nonZero = [];
   d.values.forEach((value, i) => value > 0 && nonZero.push(`${basisName(p, i)} = ${fmt(value)}`));
-  const continuityText = (e) => (e.continuity < 0 ? t("knotRuler.break") : `C${superscript(e.continuity)}`);
+  const continuityText = (e) =>
+    e.continuity < 0 ? t("knotRuler.break") : `C${superscript(e.continuity)}`;
   const joints = d.continuity.map((e) => `${kt(e.knot)}: ${continuityText(e)}`);
-  const continuity = joints.length ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") }) : "";
+  const continuity = joints.length
+    ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") })
+    : "";
   const hi = highlighted(s, d);
-  const ends = hi >= 0 ? { name: basisName(p, hi), a: kt(s.knots[hi]), b: kt(s.knots[hi + p + 1]) } : null;
+  const ends =
+    hi >= 0 ? { name: basisName(p, hi), a: kt(s.knots[hi]), b: kt(s.knots[hi + p + 1]) } : null;
   const support = ends ? t("bsplineBasis.ariaSupport", ends) : "";
   const text = t("bsplineBasis.aria", {
     kind: degreeName(p),
@@ -460,7 +533,9 @@ export function setup(ui) {
   const inPlot = (x, y) => {
     layout();
     const plot = data.plot;
-    return x >= plot.x0 - KNOT_SNAP_PX && x <= plot.x1 + KNOT_SNAP_PX && y >= plot.top && y < plot.bottom;
+    return (
+      x >= plot.x0 - KNOT_SNAP_PX && x <= plot.x1 + KNOT_SNAP_PX && y >= plot.top && y < plot.bottom
+    );
   };
   const pointer = (data.pointer = new BasisPlotPointer(view, {
     inPlot,
@@ -501,9 +576,13 @@ export function setup(ui) {
       const cells = { support: el("span"), value: el("span", { class: "sl-cell-value" }) };
       cells.exact = el("span", { class: "sl-cell-decimal" });
       const name = t("bsplineBasis.rowName", { name: basisName(p, i), point: `P${subscript(i)}` });
-      cells.row = legendRow(pointer, i, name,
+      cells.row = legendRow(
+        pointer,
+        i,
+        name,
         el("td", { dataset: { cell: "support" } }, cells.support),
-        el("td", { dataset: { cell: "value" } }, cells.value, cells.exact));
+        el("td", { dataset: { cell: "value" } }, cells.value, cells.exact),
+      );
       rows.push(cells);
     }
     sumValue = el("span", { class: "sl-cell-value" });
@@ -511,7 +590,15 @@ export function setup(ui) {
     const sumCell = el("td", { dataset: { cell: "value" } }, sumValue);
     const sumRow = el("tr", { dataset: { index: "sum" } }, sumHead, el("td", {}), sumCell);
     const head = el("tr", {}, column("colFunction"), column("colSupport"), column("colValue"));
-    values.table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((r) => r.row), sumRow));
+    values.table.replaceChildren(
+      el("thead", {}, head),
+      el(
+        "tbody",
+        {},
+        rows.map((r) => r.row),
+        sumRow,
+      ),
+    );
   }
 
   return {
@@ -528,7 +615,10 @@ export function setup(ui) {
       const hi = highlighted(s, d);
       rows.forEach((cells, i) => {
         const ends = { a: kt(s.knots[i]), b: kt(s.knots[i + p + 1]) };
-        setText(cells.support, t("bsplineBasis.supportCell", { i: subscript(i), j: subscript(i + p + 1), ...ends }));
+        setText(
+          cells.support,
+          t("bsplineBasis.supportCell", { i: subscript(i), j: subscript(i + p + 1), ...ends }),
+        );
         setText(cells.value, fmt(d.values[i]));
         const f = simpleFraction(d.values[i]);
         setText(cells.exact, f && f.den > 1 ? `= ${fractionText(f)}` : "");
@@ -536,7 +626,13 @@ export function setup(ui) {
       });
       setText(sumValue, fmt(d.sum));
       const k = d.table.span;
-      const span = { k, a: kt(s.knots[k]), b: kt(s.knots[k + 1]), kSub: subscript(k), k1Sub: subscript(k + 1) };
+      const span = {
+        k,
+        a: kt(s.knots[k]),
+        b: kt(s.knots[k + 1]),
+        kSub: subscript(k),
+        k1Sub: subscript(k + 1),
+      };
       triangle.show(p, k, d.table.levels, t("bsplineBasis.triangleCaption", { u: uText, ...span }));
     },
     destroy: () => pointer.reset(),

@@ -45,7 +45,9 @@ const SMALL = 1e-3;
 /** Height of the band at the top kept for the conic's name and the key, CSS px at text scale 1. */
 const LEGEND_PX = 52;
 /** The key under the conic's name: the parabola drawn for comparison. */
-const KEY = Object.freeze([Object.freeze({ style: (theme) => theme.compareCurve[2], label: "conics.legendParabola" })]);
+const KEY = Object.freeze([
+  Object.freeze({ style: (theme) => theme.compareCurve[2], label: "conics.legendParabola" }),
+]);
 const KINDS = Object.freeze(["ellipse", "parabola", "hyperbola"]);
 
 /**
@@ -53,7 +55,13 @@ const KINDS = Object.freeze(["ellipse", "parabola", "hyperbola"]);
  * than the circle it becomes at w₁ = sin θ = 2/√13 ≈ 0.555.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 3], [4, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 3],
+      [4, 0],
+    ].map(Object.freeze),
+  ),
   w1: 0.5,
 });
 
@@ -147,7 +155,8 @@ function smallText(x) {
 const relationOf = (kind) => (kind === "ellipse" ? "<" : kind === "parabola" ? "=" : ">");
 
 /** "w₁ = 0.500; shape factor k = w₁²/(w₀w₂) = 0.250 < 1". */
-const shapeText = (w1, kind) => t("conics.shape", { w: fmt(w1), k: fmt(w1 * w1), relation: relationOf(kind) });
+const shapeText = (w1, kind) =>
+  t("conics.shape", { w: fmt(w1), k: fmt(w1 * w1), relation: relationOf(kind) });
 
 /**
  * Makes the arc circular: P₂ slides along the ray P₁P₂ until |P₁P₂| = |P₁P₀| (the triangle
@@ -157,7 +166,10 @@ function makeCircular(ui) {
   const [p0, p1, p2] = ui.state.points;
   const a = Math.hypot(p0[0] - p1[0], p0[1] - p1[1]);
   const b = Math.hypot(p2[0] - p1[0], p2[1] - p1[1]);
-  const q = b > 0 && a !== b ? [p1[0] + ((p2[0] - p1[0]) * a) / b, p1[1] + ((p2[1] - p1[1]) * a) / b] : [p2[0], p2[1]];
+  const q =
+    b > 0 && a !== b
+      ? [p1[0] + ((p2[0] - p1[0]) * a) / b, p1[1] + ((p2[1] - p1[1]) * a) / b]
+      : [p2[0], p2[1]];
   let w;
   try {
     const arc = ui.sl.circularArcBezier(flatten([p0, p1, q]));
@@ -222,7 +234,12 @@ export const controls = [
       }),
     }),
     actions([
-      { name: "make-circular", label: "conics.makeCircular", title: "conics.makeCircular.title", run: makeCircular },
+      {
+        name: "make-circular",
+        label: "conics.makeCircular",
+        title: "conics.makeCircular.title",
+        run: makeCircular,
+      },
     ]),
   ),
 ];
@@ -281,7 +298,14 @@ export function draw(r, v, s, d) {
   r.point(sx, sy, theme.pointOnCurve);
   r.text(t("conics.shoulder"), sx + 9 * r.scale, sy, theme.labelPoint, "left", "bottom");
 
-  r.text(kindLabel(d.conic, "conics.figureCircle"), 12 * r.scale, 18 * r.scale, theme.labelBold, "left", "middle");
+  r.text(
+    kindLabel(d.conic, "conics.figureCircle"),
+    12 * r.scale,
+    18 * r.scale,
+    theme.labelBold,
+    "left",
+    "middle",
+  );
   drawLegend(r, KEY, 12, 42);
 }
 
@@ -323,7 +347,11 @@ export function label(s, d) {
     w: fmt(s.w1),
     k: fmt(s.w1 * s.w1),
     circle: circular
-      ? t("conics.ariaCircle", { r: fmt(tri.radius, 2), x: fmt(tri.centre[0], 2), y: fmt(tri.centre[1], 2) })
+      ? t("conics.ariaCircle", {
+          r: fmt(tri.radius, 2),
+          x: fmt(tri.centre[0], 2),
+          y: fmt(tri.centre[1], 2),
+        })
       : "",
     sx: fmt(shoulder[0], 2),
     sy: fmt(shoulder[1], 2),
@@ -337,7 +365,11 @@ export function setup(ui) {
     cells[name] = el("td", { dataset: { kind: name }, text: t(`conics.kind.${name}`) });
     return el("tr", {}, cells[name], el("td", { text: t(`conics.rule.${name}`) }));
   });
-  const head = el("tr", {}, ["kind", "rule"].map((c) => el("th", { scope: "col", text: t(`conics.column.${c}`) })));
+  const head = el(
+    "tr",
+    {},
+    ["kind", "rule"].map((c) => el("th", { scope: "col", text: t(`conics.column.${c}`) })),
+  );
   const { title, wrap } = titledTable("conics", {
     caption: t("conics.tableCaption"),
     children: [el("thead", {}, head), el("tbody", {}, rows)],

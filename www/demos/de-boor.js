@@ -10,12 +10,26 @@
  *   α_j^r = (u − u_{j+k−p}) / (u_{j+1+k−r} − u_{j+k−p}),   r = 1 … p, j = r … p;   C(u) = d_p^p.
  */
 import { field, checkNumber, checkNumbers } from "../lib/validate.js";
-import { slider, checkbox, pointButtons, readout, actions, numberList, group } from "../lib/panel.js";
+import {
+  slider,
+  checkbox,
+  pointButtons,
+  readout,
+  actions,
+  numberList,
+  group,
+} from "../lib/panel.js";
 import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
 import { fmt, subscript, superscript, degreeName, MAX_EXACT_DENOMINATOR } from "../lib/format.js";
-import { simpleFraction, exactFraction, fractionText, fractionTex, allIntegers } from "../lib/format.js";
+import {
+  simpleFraction,
+  exactFraction,
+  fractionText,
+  fractionTex,
+  allIntegers,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -35,7 +49,17 @@ export const section = 3;
  * p + 1 zeros, 1 … n − p, p + 1 copies of n − p + 1), at u = 5/4 in the span [u₄, u₅) = [1, 2).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 7], [8, 9], [10, 1], [16, 0], [18, 7], [23, 6]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 7],
+      [8, 9],
+      [10, 1],
+      [16, 0],
+      [18, 7],
+      [23, 6],
+    ].map(Object.freeze),
+  ),
   degree: 3,
   knots: Object.freeze([0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4]),
   u: 1.25,
@@ -76,16 +100,20 @@ function checkKnots(s, name) {
   const m = count + p + 1;
   checkNumbers(s, name, { min: 0, max: Infinity });
   const knots = s[name];
-  if (knots.length !== m) throw new Error(t("deBoor.error.knotCount", { expected: m, count, p, got: knots.length }));
+  if (knots.length !== m)
+    throw new Error(t("deBoor.error.knotCount", { expected: m, count, p, got: knots.length }));
   let run = 0;
   for (let i = 0; i < knots.length; i++) {
     if (i > 0 && knots[i] < knots[i - 1]) {
-      throw new Error(t("deBoor.error.knotOrder", { index: i, value: knots[i], previous: knots[i - 1] }));
+      throw new Error(
+        t("deBoor.error.knotOrder", { index: i, value: knots[i], previous: knots[i - 1] }),
+      );
     }
   }
   for (let i = 0; i < knots.length; i++) {
     run = i > 0 && knots[i] === knots[i - 1] ? run + 1 : 1;
-    if (run > p + 1) throw new Error(t("deBoor.error.multiplicity", { value: knots[i], max: p + 1 }));
+    if (run > p + 1)
+      throw new Error(t("deBoor.error.multiplicity", { value: knots[i], max: p + 1 }));
   }
   const [a, b] = domainOf(knots, p);
   if (!(a < b)) throw new Error(t("deBoor.error.domain", { a, b, p, n1: count }));
@@ -207,7 +235,8 @@ function exactText(s, d) {
   const p = s.degree;
   const f = simpleFraction(s.u);
   const exact = f && allIntegers(s.points.flat()) && allIntegers(s.knots) ? f : null;
-  const alphaFraction = (alpha) => (exact ? exactFraction(alpha.value, exact.den * alpha.width) : null);
+  const alphaFraction = (alpha) =>
+    exact ? exactFraction(alpha.value, exact.den * alpha.width) : null;
   const dens = [new Array(p + 1).fill(1)];
   for (let level = 1; level <= p; level++) {
     const row = [];
@@ -252,17 +281,23 @@ export const compute = {
   numbers: [[...SHAPE, "u"], exactText],
   spans: [SHAPE, (s, d) => d.curve.spans().length],
   knotStrip: [["knots"], knotStrip],
-  captions: [[...SHAPE, "u"], (s, d) => ({
-    span: t("deBoor.spanCaption", { k: subscript(d.span), k1: subscript(d.span + 1) }),
-    u: t("deBoor.uCaption", { u: numberText(s.u) }),
-  })],
+  captions: [
+    [...SHAPE, "u"],
+    (s, d) => ({
+      span: t("deBoor.spanCaption", { k: subscript(d.span), k1: subscript(d.span + 1) }),
+      u: t("deBoor.uCaption", { u: numberText(s.u) }),
+    }),
+  ],
 };
 
 // ------------------------------------------------------------------ the panel
 
 /** The button that puts the clamped uniform knots back. */
 const CLAMPED = Object.freeze({
-  name: "clamped-knots", label: "deBoor.control.clamped", title: "deBoor.control.clamped.title", run: resetKnots,
+  name: "clamped-knots",
+  label: "deBoor.control.clamped",
+  title: "deBoor.control.clamped.title",
+  run: resetKnots,
 });
 
 const uStep = (s) => {
@@ -285,13 +320,20 @@ export const controls = [
       label: "deBoor.control.u",
       range: domain,
       step: (a, b) => (b - a) * U_RESOLUTION,
-      player: { stepBackTitle: "deBoor.control.stepBack.title", stepTitle: "deBoor.control.stepForward.title" },
+      player: {
+        stepBackTitle: "deBoor.control.stepBack.title",
+        stepTitle: "deBoor.control.stepForward.title",
+      },
     }),
-    readout("span", (s, d) => {
-      const k = d.span;
-      const [uk, uk1] = [numberText(s.knots[k]), numberText(s.knots[k + 1])];
-      return t("deBoor.span", { k, ks: subscript(k), ks1: subscript(k + 1), uk, uk1 });
-    }, { kind: "readout", live: true, data: (s, d) => ({ span: String(d.span) }) }),
+    readout(
+      "span",
+      (s, d) => {
+        const k = d.span;
+        const [uk, uk1] = [numberText(s.knots[k]), numberText(s.knots[k + 1])];
+        return t("deBoor.span", { k, ks: subscript(k), ks1: subscript(k + 1), uk, uk1 });
+      },
+      { kind: "readout", live: true, data: (s, d) => ({ span: String(d.span) }) },
+    ),
   ),
   group(
     null,
@@ -310,7 +352,8 @@ export const controls = [
     numberList("knots", {
       label: "deBoor.control.knots",
       format: (u) => numberText(u),
-      help: (s) => t("deBoor.knotsHelp", { m: s.knots.length, count: s.points.length, p: s.degree }),
+      help: (s) =>
+        t("deBoor.knotsHelp", { m: s.knots.length, count: s.points.length, p: s.degree }),
       apply: typedKnots,
     }),
     actions([CLAMPED]),
@@ -318,7 +361,11 @@ export const controls = [
   group(
     null,
     readout("degree", (s, d) => {
-      return t("deBoor.degree", { p: s.degree, count: s.points.length, segments: tp("deBoor.spans", d.spans) });
+      return t("deBoor.degree", {
+        p: s.degree,
+        count: s.points.length,
+        segments: tp("deBoor.spans", d.spans),
+      });
     }),
     pointButtons("points", {
       min: MIN_POINTS,
@@ -369,12 +416,25 @@ export function draw(r, v, s, d) {
   }
   placer.reset();
   placer.points = s.points;
-  if (s.construction) drawLevels(r, v, tri, p, centre, p <= LABEL_LEVELS_MAX_DEGREE ? labels : null, placer);
+  if (s.construction)
+    drawLevels(r, v, tri, p, centre, p <= LABEL_LEVELS_MAX_DEGREE ? labels : null, placer);
   d.handles.draw(r, v);
   const apex = levelStart(p, p);
   r.point(v.sx(tri[2 * apex]), v.sy(tri[2 * apex + 1]), theme.pointOnCurve);
   const radius = theme.pointOnCurve.radius * r.scale;
-  placer.place(r, v, tri, p, p, 0, t("deBoor.pointLabel"), centre, theme.labelPoint, radius, s.points);
+  placer.place(
+    r,
+    v,
+    tri,
+    p,
+    p,
+    0,
+    t("deBoor.pointLabel"),
+    centre,
+    theme.labelPoint,
+    radius,
+    s.points,
+  );
   drawStrip(r, s, d, theme);
 }
 
@@ -420,7 +480,8 @@ function drawStrip(r, s, d, theme) {
       r.text(texts[i], x, y + (TICK + 4) * sc, theme.labelSmall, "center", "top");
       lastRight = x + half;
     }
-    if (multiplicity[i]) r.text(multiplicity[i], x, y - (TICK + 3) * sc, theme.labelSmall, "center", "bottom");
+    if (multiplicity[i])
+      r.text(multiplicity[i], x, y - (TICK + 3) * sc, theme.labelSmall, "center", "bottom");
   }
   // The span's name above the shaded span; u marked on the line.
   r.text(d.captions.span, (xs0 + xs1) / 2, strip.top + 4 * sc, theme.labelSmall, "center", "top");
@@ -474,9 +535,15 @@ export function label(s, d) {
   const k = d.span;
   const apex = 2 * levelStart(p, p);
   return t("deBoor.aria", {
-    kind: degreeName(p), count: s.points.length, knots: s.knots.map((u) => numberText(u)).join(" "), u: fmt(s.u), k,
-    uk: numberText(s.knots[k]), uk1: numberText(s.knots[k + 1]),
-    x: fmt(d.triangle[apex], 2), y: fmt(d.triangle[apex + 1], 2),
+    kind: degreeName(p),
+    count: s.points.length,
+    knots: s.knots.map((u) => numberText(u)).join(" "),
+    u: fmt(s.u),
+    k,
+    uk: numberText(s.knots[k]),
+    uk1: numberText(s.knots[k + 1]),
+    x: fmt(d.triangle[apex], 2),
+    y: fmt(d.triangle[apex + 1], 2),
   });
 }
 
@@ -503,7 +570,16 @@ export function setup(ui) {
         };
         cells.push(spans);
         const dataset = { level: String(level), index: String(j) };
-        row.push(el("td", { dataset }, spans.name, spans.exact, spans.decimal, level > 0 ? spans.alpha : null));
+        row.push(
+          el(
+            "td",
+            { dataset },
+            spans.name,
+            spans.exact,
+            spans.decimal,
+            level > 0 ? spans.alpha : null,
+          ),
+        );
       }
       rows.push(el("tr", {}, row));
     }
@@ -524,13 +600,18 @@ export function setup(ui) {
           const x = d.triangle[2 * c];
           const y = d.triangle[2 * c + 1];
           const decimals = `(${fmt(x)}, ${fmt(y)})`;
-          const exact = num.exact ? `(${num.coord(x, level, i, false)}, ${num.coord(y, level, i, false)})` : decimals;
+          const exact = num.exact
+            ? `(${num.coord(x, level, i, false)}, ${num.coord(y, level, i, false)})`
+            : decimals;
           const spans = cells[c];
           const name = `d${subscript(j)}${superscript(level)} = `;
           setText(spans.name, level === 0 ? `${name}P${subscript(j + k - p)} ` : name);
           setText(spans.exact, exact);
           // Decimals underneath only when they say something the exact value does not.
-          setText(spans.decimal, exact === decimals || /^\(-?\d+, -?\d+\)$/.test(exact) ? "" : `≈ ${decimals}`);
+          setText(
+            spans.decimal,
+            exact === decimals || /^\(-?\d+, -?\d+\)$/.test(exact) ? "" : `≈ ${decimals}`,
+          );
           if (level > 0) {
             const alpha = d.alphas[level - 1][i];
             setText(spans.alpha, t("deBoor.alphaCell", { value: num.alpha(alpha, false) }));

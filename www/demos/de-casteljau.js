@@ -31,7 +31,14 @@ const LABEL_LEVELS_MAX_DEGREE = 4;
 
 /** The worked example of the Greek notes (syllabus §2): P(1/4) = (29/16, 23/16). */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 2],
+      [6, 4],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   t: 0.25,
   construction: true,
 });
@@ -59,7 +66,9 @@ export const controls = [
   group(null, slider("t", { label: "control.t", min: 0, max: 1, step: 0.001, player: true })),
   group(
     null,
-    readout("degree", (s) => t("deCasteljau.degree", { n: s.points.length - 1, count: s.points.length })),
+    readout("degree", (s) =>
+      t("deCasteljau.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
     pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
   ),
   group(null, checkbox("construction", { label: "control.construction" })),
@@ -82,12 +91,24 @@ export function draw(r, v, s, d) {
   flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
   r.paint(theme.curve);
   screenCentroid(v, s.points, centre);
-  if (s.construction) drawLevels(r, v, d.triangle, n, centre, n <= LABEL_LEVELS_MAX_DEGREE ? labels : null);
+  if (s.construction)
+    drawLevels(r, v, d.triangle, n, centre, n <= LABEL_LEVELS_MAX_DEGREE ? labels : null);
   d.handles.draw(r, v);
   // P(t) = p₀ⁿ, the apex, labelled beside the last leg (away from the polygon).
   const apex = levelStart(n, n);
   r.point(v.sx(d.triangle[2 * apex]), v.sy(d.triangle[2 * apex + 1]), theme.pointOnCurve);
-  legLabel(r, v, d.triangle, n, n, 0, t("deCasteljau.pointLabel"), centre, theme.labelPoint, theme.pointOnCurve.radius * r.scale);
+  legLabel(
+    r,
+    v,
+    d.triangle,
+    n,
+    n,
+    0,
+    t("deCasteljau.pointLabel"),
+    centre,
+    theme.labelPoint,
+    theme.pointOnCurve.radius * r.scale,
+  );
 }
 
 /** The recurrence, the Bernstein form with the core's weights, the point (exact when it can be). */
@@ -98,8 +119,12 @@ export function formula(s, d) {
   const y = d.triangle[apex + 1];
   const num = exactNumbers(s.t, s.points.flat());
   const weights = [];
-  for (let i = 0; i <= n; i++) weights.push(`${num.value(d.sl.bernstein(n, i, s.t), n, true)}\\,P_{${i}}`);
-  const approx = num.exact && (!Number.isInteger(x) || !Number.isInteger(y)) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
+  for (let i = 0; i <= n; i++)
+    weights.push(`${num.value(d.sl.bernstein(n, i, s.t), n, true)}\\,P_{${i}}`);
+  const approx =
+    num.exact && (!Number.isInteger(x) || !Number.isInteger(y))
+      ? `\\approx (${fmt(x)},\\ ${fmt(y)})`
+      : "";
   return [
     `p_i^{r} = (1-t)\\,p_i^{r-1} + t\\,p_{i+1}^{r-1},\\quad r = 1,\\dots,${n},\\quad t = ${num.param(true)}`,
     `P(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_i = ${weights.join(" + ")}`,
@@ -111,7 +136,13 @@ export function formula(s, d) {
 export function label(s, d) {
   const n = s.points.length - 1;
   const apex = 2 * levelStart(n, n);
-  return t("deCasteljau.aria", { kind: degreeName(n), count: n + 1, t: fmt(s.t), x: fmt(d.triangle[apex], 2), y: fmt(d.triangle[apex + 1], 2) });
+  return t("deCasteljau.aria", {
+    kind: degreeName(n),
+    count: n + 1,
+    t: fmt(s.t),
+    x: fmt(d.triangle[apex], 2),
+    y: fmt(d.triangle[apex + 1], 2),
+  });
 }
 
 /** The table of the triangle: one row per level r, cells p_i^r (fraction and decimals). */
@@ -128,10 +159,19 @@ export function setup(ui) {
     for (let level = 0; level <= n; level++) {
       const row = [el("th", { scope: "row", text: t("deCasteljau.tableLevel", { r: level }) })];
       for (let i = 0; i <= n - level; i++) {
-        const name = level === 0 ? `P${subscript(i)} = ` : `p${subscript(i)}${superscript(level)} = `;
+        const name =
+          level === 0 ? `P${subscript(i)} = ` : `p${subscript(i)}${superscript(level)} = `;
         const spans = valueSpans();
         cells.push(spans);
-        row.push(el("td", { dataset: { level: String(level), index: String(i) } }, el("span", { class: "sl-cell-name", text: name }), spans.exact, spans.decimal));
+        row.push(
+          el(
+            "td",
+            { dataset: { level: String(level), index: String(i) } },
+            el("span", { class: "sl-cell-name", text: name }),
+            spans.exact,
+            spans.decimal,
+          ),
+        );
       }
       rows.push(el("tr", {}, row));
     }

@@ -45,13 +45,35 @@ const TEXT_MARGIN_PX = 12;
 const ARROW_LABEL_GAP_PX = 4;
 
 // Styles of this demo's own marks (theme hues are the same in light and dark mode).
-const VELOCITY_STYLE = Object.freeze({ stroke: HUES.vermillion, width: 2.5, cap: "round", join: "round" });
-const NORMAL_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 2, cap: "round", join: "round" });
+const VELOCITY_STYLE = Object.freeze({
+  stroke: HUES.vermillion,
+  width: 2.5,
+  cap: "round",
+  join: "round",
+});
+const NORMAL_STYLE = Object.freeze({
+  stroke: HUES.reddishPurple,
+  width: 2,
+  cap: "round",
+  join: "round",
+});
 const CIRCLE_STYLE = Object.freeze({ stroke: HUES.orange, width: 1.5 });
 const CENTRE_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
-const HODOGRAPH_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.curve, join: "round", cap: "round" });
-const HODOGRAPH_POLYGON_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.polygon, dash: POLYGON_DASH });
-const HODOGRAPH_POINT_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: RADIUS.constructionPoint + 0.5 });
+const HODOGRAPH_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.curve,
+  join: "round",
+  cap: "round",
+});
+const HODOGRAPH_POLYGON_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.polygon,
+  dash: POLYGON_DASH,
+});
+const HODOGRAPH_POINT_STYLE = Object.freeze({
+  fill: HUES.bluishGreen,
+  radius: RADIUS.constructionPoint + 0.5,
+});
 
 /**
  * The worked example of the Greek notes (syllabus §2) at t = 3/4, where it bends most visibly
@@ -59,7 +81,14 @@ const HODOGRAPH_POINT_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: RA
  * P′(1) = (6, −6); the hodograph (drawn at 1/3 scale) sits to the right with its origin O at (11, 2).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 2],
+      [6, 4],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   t: 0.75,
   hodographOrigin: Object.freeze([11, 2]),
 });
@@ -121,7 +150,8 @@ function wholeCurve(s, curve) {
 /** P(t), P′(t), P″(t) and the signed curvature κ(t); `straight` when 1/|κ| is beyond reason. */
 function valuesAt(curve, tt, whole) {
   const kappa = curve.curvature(tt);
-  const straight = Number.isFinite(kappa) && 1 / Math.abs(kappa) > STRAIGHT_RADIUS_FACTOR * whole.polygonSize;
+  const straight =
+    Number.isFinite(kappa) && 1 / Math.abs(kappa) > STRAIGHT_RADIUS_FACTOR * whole.polygonSize;
   const kappaText = Number.isFinite(kappa) ? fmt(kappa) : "∞";
   const radiusText = !Number.isFinite(kappa) ? "0" : straight ? "∞" : fmt(1 / Math.abs(kappa));
   return {
@@ -157,7 +187,9 @@ export const controls = [
   ),
   group(
     null,
-    readout("degree", (s) => t("derivatives.degree", { n: s.points.length - 1, count: s.points.length })),
+    readout("degree", (s) =>
+      t("derivatives.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
     pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
   ),
 ];
@@ -176,13 +208,17 @@ export const figure = {
     }
     return b;
   },
-  handles: { field: "points", extra: [{ field: "hodographOrigin", label: "derivatives.originLabel" }] },
+  handles: {
+    field: "points",
+    extra: [{ field: "hodographOrigin", label: "derivatives.originLabel" }],
+  },
 };
 
 /** Labels "3(P₁−P₀)" of the hodograph's control points, made once per (n, i). */
 const hodographLabels = [];
 function hodographLabel(i, n) {
-  return (hodographLabels[n * (MAX_POINTS + 1) + i] ??= `${n}(P${subscript(i + 1)}−P${subscript(i)})`);
+  return (hodographLabels[n * (MAX_POINTS + 1) + i] ??=
+    `${n}(P${subscript(i + 1)}−P${subscript(i)})`);
 }
 
 /** Labels an arrow at its tip, continuing its direction. */
@@ -226,9 +262,19 @@ function drawHodograph(r, v, s, d) {
   r.lineTo(v.sx(ox), top);
   r.paint(theme.helper);
   const narrow = v.width < NARROW_CANVAS_PX * r.scale;
-  const captionWidth = narrow ? Math.max(right - left, HODOGRAPH_CAPTION_MIN_PX * r.scale) : Infinity;
+  const captionWidth = narrow
+    ? Math.max(right - left, HODOGRAPH_CAPTION_MIN_PX * r.scale)
+    : Infinity;
   const captionY = top - TEXT_MARGIN_PX * r.scale;
-  drawCaption(r, d.whole.hodographCaption, left, captionY, theme.labelSmall, captionWidth, "bottom");
+  drawCaption(
+    r,
+    d.whole.hodographCaption,
+    left,
+    captionY,
+    theme.labelSmall,
+    captionWidth,
+    "bottom",
+  );
 
   hodographPath(r, v, points, n, ox, oy, scale);
   r.paint(HODOGRAPH_POLYGON_STYLE);
@@ -245,7 +291,16 @@ function drawHodograph(r, v, s, d) {
     const length = Math.hypot(x - cx, y - cy);
     const dx = length < 1 ? 0 : (x - cx) / length;
     const dy = length < 1 ? -1 : (y - cy) / length;
-    placeLabel(r, hodographLabel(i, n), x, y, dx, dy, HODOGRAPH_POINT_STYLE.radius * r.scale, theme.labelSmall);
+    placeLabel(
+      r,
+      hodographLabel(i, n),
+      x,
+      y,
+      dx,
+      dy,
+      HODOGRAPH_POINT_STYLE.radius * r.scale,
+      theme.labelSmall,
+    );
   }
   // The hodograph at t is P′(t).
   const { d1 } = d.at;
@@ -284,7 +339,16 @@ function drawCurvature(r, v, d, px, py) {
   arrow(r, px, py, tipX, tipY, NORMAL_STYLE);
   // Beside the tip, on the side the curve comes from (clear of the arrow and the circle).
   const gap = ARROW_LABEL_GAP_PX * r.scale;
-  placeLabel(r, t("derivatives.normalLabel"), tipX, tipY, -d1[0] / speed, d1[1] / speed, gap, r.theme.labelSmall);
+  placeLabel(
+    r,
+    t("derivatives.normalLabel"),
+    tipX,
+    tipY,
+    -d1[0] / speed,
+    d1[1] / speed,
+    gap,
+    r.theme.labelSmall,
+  );
   return straight ? t("derivatives.straight") : null;
 }
 
@@ -312,12 +376,29 @@ export function draw(r, v, s, d) {
   const speed = Math.hypot(d1[0], d1[1]);
   const radius = theme.pointOnCurve.radius * r.scale;
   if (speed > 0) {
-    placeLabel(r, t("derivatives.pointLabel"), px, py, d1[1] / speed, d1[0] / speed, radius, theme.labelPoint);
+    placeLabel(
+      r,
+      t("derivatives.pointLabel"),
+      px,
+      py,
+      d1[1] / speed,
+      d1[0] / speed,
+      radius,
+      theme.labelPoint,
+    );
   }
 
   const margin = TEXT_MARGIN_PX * r.scale;
   const width = v.width - 2 * margin;
-  drawCaption(r, d.whole.scaleCaption, margin, v.height - margin, theme.labelSmall, width, "bottom");
+  drawCaption(
+    r,
+    d.whole.scaleCaption,
+    margin,
+    v.height - margin,
+    theme.labelSmall,
+    width,
+    "bottom",
+  );
   if (caption) drawCaption(r, caption, margin, margin, theme.labelBold, width, "top");
 }
 
@@ -340,7 +421,9 @@ export function formula(s, d) {
   const legs = [];
   for (let i = 0; i < n; i++) {
     const b = num.value(d.sl.bernstein(n - 1, i, s.t), n - 1, true);
-    legs.push(`${b}\\,(${short(pts[i + 1][0] - pts[i][0])},\\ ${short(pts[i + 1][1] - pts[i][1])})`);
+    legs.push(
+      `${b}\\,(${short(pts[i + 1][0] - pts[i][0])},\\ ${short(pts[i + 1][1] - pts[i][1])})`,
+    );
   }
   const tTex = num.param(true);
   const speed = fmt(Math.hypot(d1[0], d1[1]));
@@ -387,7 +470,9 @@ export function setup(ui) {
     return el("tr", {}, el("th", { scope: "row", text: t(`derivatives.row.${key}`) }), cells[key]);
   });
   const hodographBody = el("tbody");
-  const { title, wrap } = titledTable("derivatives", { children: [el("tbody", {}, rows), hodographBody] });
+  const { title, wrap } = titledTable("derivatives", {
+    children: [el("tbody", {}, rows), hodographBody],
+  });
   ui.ctx.slots.details.append(title, wrap);
   let hodographCells = [];
 

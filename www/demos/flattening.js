@@ -30,10 +30,38 @@ export const MAX_TOLERANCE = 1;
  * segments.
  */
 export const PRESETS = Object.freeze({
-  s: Object.freeze([[0, 0], [2, 6], [6, -2], [8, 4]].map(Object.freeze)),
-  loop: Object.freeze([[1, 0], [10, 6], [-2, 6], [7, 0]].map(Object.freeze)),
-  cusp: Object.freeze([[1, 0], [7, 6], [1, 6], [7, 0]].map(Object.freeze)),
-  straight: Object.freeze([[0, 0], [3, 1], [5, 1], [8, 2]].map(Object.freeze)),
+  s: Object.freeze(
+    [
+      [0, 0],
+      [2, 6],
+      [6, -2],
+      [8, 4],
+    ].map(Object.freeze),
+  ),
+  loop: Object.freeze(
+    [
+      [1, 0],
+      [10, 6],
+      [-2, 6],
+      [7, 0],
+    ].map(Object.freeze),
+  ),
+  cusp: Object.freeze(
+    [
+      [1, 0],
+      [7, 6],
+      [1, 6],
+      [7, 0],
+    ].map(Object.freeze),
+  ),
+  straight: Object.freeze(
+    [
+      [0, 0],
+      [3, 1],
+      [5, 1],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
 });
 
 /**
@@ -81,7 +109,10 @@ function segmentCount(polyline) {
 
 /** The polylines for ε and ε/2; throws only for a far too small ε on a huge curve. */
 function flattenBoth(curve, tolerance) {
-  return { polyline: curve.flatten(tolerance), halfCount: segmentCount(curve.flatten(tolerance / 2)) };
+  return {
+    polyline: curve.flatten(tolerance),
+    halfCount: segmentCount(curve.flatten(tolerance / 2)),
+  };
 }
 
 /** The curve, and its polylines for the state's ε (so a refused ε refuses the state). */
@@ -119,7 +150,11 @@ export const compute = {
   ],
   countLabel: [
     ["points", "tolerance"],
-    (s, d) => t("flattening.countLabel", { count: segmentCount(d.flattened.polyline), tolerance: formatTolerance(s.tolerance) }),
+    (s, d) =>
+      t("flattening.countLabel", {
+        count: segmentCount(d.flattened.polyline),
+        tolerance: formatTolerance(s.tolerance),
+      }),
   ],
 };
 
@@ -134,11 +169,17 @@ const preset = (key) => ({
 export const controls = [
   group(
     null,
-    readout("segments", (s, d) => tp("flattening.segments", segmentCount(d.flattened.polyline)), { kind: "readout" }),
+    readout("segments", (s, d) => tp("flattening.segments", segmentCount(d.flattened.polyline)), {
+      kind: "readout",
+    }),
     readout("half", (s, d) => {
       const count = segmentCount(d.flattened.polyline);
       const ratio = count > 0 ? fmt(d.flattened.halfCount / count, 2) : "?";
-      return t("flattening.half", { tolerance: formatTolerance(s.tolerance / 2), count: d.flattened.halfCount, ratio });
+      return t("flattening.half", {
+        tolerance: formatTolerance(s.tolerance / 2),
+        count: d.flattened.halfCount,
+        ratio,
+      });
     }),
   ),
   group(
@@ -152,7 +193,10 @@ export const controls = [
       log: true,
       format: formatTolerance,
       // The range moves in powers of ten: keep two significant digits; typed values as typed.
-      round: (v, typed) => (typed ? v : Math.min(MAX_TOLERANCE, Math.max(MIN_TOLERANCE, Number(v.toPrecision(SLIDER_DIGITS))))),
+      round: (v, typed) =>
+        typed
+          ? v
+          : Math.min(MAX_TOLERANCE, Math.max(MIN_TOLERANCE, Number(v.toPrecision(SLIDER_DIGITS)))),
       error: "flattening.badTolerance",
     }),
     checkbox("band", { label: "flattening.band" }),
@@ -187,10 +231,18 @@ export function draw(r, v, s, d) {
   r.paint(theme.curve);
   flatPath(r, v, polyline, 0, vertices);
   r.paint(theme.levelStroke[0]);
-  for (let k = 0; k < vertices; k++) r.point(v.sx(polyline[2 * k]), v.sy(polyline[2 * k + 1]), theme.levelPoint[0]);
+  for (let k = 0; k < vertices; k++)
+    r.point(v.sx(polyline[2 * k]), v.sy(polyline[2 * k + 1]), theme.levelPoint[0]);
   d.handles.draw(r, v);
   // The count in the corner, so projections and exports carry it too.
-  r.text(d.countLabel, COUNT_LABEL_INSET * r.scale, COUNT_LABEL_INSET * r.scale, theme.label, "left", "top");
+  r.text(
+    d.countLabel,
+    COUNT_LABEL_INSET * r.scale,
+    COUNT_LABEL_INSET * r.scale,
+    theme.label,
+    "left",
+    "top",
+  );
 }
 
 /**
@@ -204,7 +256,8 @@ export function formula(s, d) {
   const cx = x3 - x0;
   const cy = y3 - y0;
   const chord = Math.hypot(cx, cy);
-  const distance = ([x, y]) => (chord > 0 ? Math.abs(cx * (y3 - y) - cy * (x3 - x)) / chord : Math.hypot(x - x0, y - y0));
+  const distance = ([x, y]) =>
+    chord > 0 ? Math.abs(cx * (y3 - y) - cy * (x3 - x)) / chord : Math.hypot(x - x0, y - y0);
   const d1 = distance(s.points[1]);
   const d2 = distance(s.points[2]);
   const flat = Math.max(d1, d2) <= s.tolerance;

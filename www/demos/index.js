@@ -14,28 +14,95 @@
 import { t } from "../lib/strings.js";
 
 /** All demos, in the order the gallery shows them within their section. */
-export const demos = Object.freeze([
-  { id: "de-casteljau", section: 2, strings: "deCasteljau", load: () => import("./de-casteljau.js") },
-  { id: "bernstein", section: 2, strings: "bernstein", load: () => import("./bernstein.js") },
-  { id: "subdivision", section: 2, strings: "subdivision", load: () => import("./subdivision.js") },
-  { id: "flattening", section: 2, strings: "flattening", load: () => import("./flattening.js") },
-  { id: "line-intersection", section: 2, strings: "lineIntersection", load: () => import("./line-intersection.js") },
-  { id: "joining", section: 2, strings: "joining", load: () => import("./joining.js") },
-  { id: "bezier-properties", section: 2, strings: "bezierProperties", load: () => import("./bezier-properties.js") },
-  { id: "derivatives", section: 2, strings: "derivatives", load: () => import("./derivatives.js") },
-  { id: "bspline-basis", section: 3, strings: "bsplineBasis", load: () => import("./bspline-basis.js") },
-  { id: "de-boor", section: 3, strings: "deBoor", load: () => import("./de-boor.js") },
-  { id: "knot-vectors", section: 3, strings: "knotVectors", load: () => import("./knot-vectors.js") },
-  { id: "local-control", section: 3, strings: "localControl", load: () => import("./local-control.js") },
-  { id: "knot-insertion", section: 3, strings: "knotInsertion", load: () => import("./knot-insertion.js") },
-  { id: "multiplicity", section: 3, strings: "multiplicity", load: () => import("./multiplicity.js") },
-  { id: "matrix-form", section: 3, strings: "matrixForm", load: () => import("./matrix-form.js") },
-  { id: "weights", section: 4, strings: "weights", load: () => import("./weights.js") },
-  { id: "conics", section: 4, strings: "conics", load: () => import("./conics.js") },
-  { id: "nurbs-circle", section: 4, strings: "nurbsCircle", load: () => import("./nurbs-circle.js") },
-  { id: "projective", section: 4, strings: "projective", load: () => import("./projective.js") },
-  { id: "negative-weights", section: 4, strings: "negativeWeights", load: () => import("./negative-weights.js") },
-].map(Object.freeze));
+export const demos = Object.freeze(
+  [
+    {
+      id: "de-casteljau",
+      section: 2,
+      strings: "deCasteljau",
+      load: () => import("./de-casteljau.js"),
+    },
+    { id: "bernstein", section: 2, strings: "bernstein", load: () => import("./bernstein.js") },
+    {
+      id: "subdivision",
+      section: 2,
+      strings: "subdivision",
+      load: () => import("./subdivision.js"),
+    },
+    { id: "flattening", section: 2, strings: "flattening", load: () => import("./flattening.js") },
+    {
+      id: "line-intersection",
+      section: 2,
+      strings: "lineIntersection",
+      load: () => import("./line-intersection.js"),
+    },
+    { id: "joining", section: 2, strings: "joining", load: () => import("./joining.js") },
+    {
+      id: "bezier-properties",
+      section: 2,
+      strings: "bezierProperties",
+      load: () => import("./bezier-properties.js"),
+    },
+    {
+      id: "derivatives",
+      section: 2,
+      strings: "derivatives",
+      load: () => import("./derivatives.js"),
+    },
+    {
+      id: "bspline-basis",
+      section: 3,
+      strings: "bsplineBasis",
+      load: () => import("./bspline-basis.js"),
+    },
+    { id: "de-boor", section: 3, strings: "deBoor", load: () => import("./de-boor.js") },
+    {
+      id: "knot-vectors",
+      section: 3,
+      strings: "knotVectors",
+      load: () => import("./knot-vectors.js"),
+    },
+    {
+      id: "local-control",
+      section: 3,
+      strings: "localControl",
+      load: () => import("./local-control.js"),
+    },
+    {
+      id: "knot-insertion",
+      section: 3,
+      strings: "knotInsertion",
+      load: () => import("./knot-insertion.js"),
+    },
+    {
+      id: "multiplicity",
+      section: 3,
+      strings: "multiplicity",
+      load: () => import("./multiplicity.js"),
+    },
+    {
+      id: "matrix-form",
+      section: 3,
+      strings: "matrixForm",
+      load: () => import("./matrix-form.js"),
+    },
+    { id: "weights", section: 4, strings: "weights", load: () => import("./weights.js") },
+    { id: "conics", section: 4, strings: "conics", load: () => import("./conics.js") },
+    {
+      id: "nurbs-circle",
+      section: 4,
+      strings: "nurbsCircle",
+      load: () => import("./nurbs-circle.js"),
+    },
+    { id: "projective", section: 4, strings: "projective", load: () => import("./projective.js") },
+    {
+      id: "negative-weights",
+      section: 4,
+      strings: "negativeWeights",
+      load: () => import("./negative-weights.js"),
+    },
+  ].map(Object.freeze),
+);
 
 /** The manifest entry of demo `id`, or undefined (no module is loaded). */
 export function findDemo(id) {

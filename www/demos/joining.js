@@ -35,8 +35,22 @@ export const RULES = Object.freeze(["none", "C0", "C1", "G1", "C2"]);
  * checker reads "C¹, G¹" at the start.
  */
 export const defaultState = Object.freeze({
-  left: Object.freeze([[0, 0], [1, 3], [3, 3], [4, 1]].map(Object.freeze)),
-  right: Object.freeze([[4, 1], [5, -1], [7, 0], [8, 2]].map(Object.freeze)),
+  left: Object.freeze(
+    [
+      [0, 0],
+      [1, 3],
+      [3, 3],
+      [4, 1],
+    ].map(Object.freeze),
+  ),
+  right: Object.freeze(
+    [
+      [4, 1],
+      [5, -1],
+      [7, 0],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   rule: "C1",
 });
 
@@ -64,9 +78,24 @@ const RIGHT_INTERVAL = [1, 2];
 const JOINT_T = 1;
 
 // Styles of this demo's own marks (theme hues are the same in light and dark mode).
-const RIGHT_CURVE_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.curve, join: "round", cap: "round" });
-const LEFT_ARROW_STYLE = Object.freeze({ stroke: HUES.orange, width: 4, cap: "round", join: "round" });
-const RIGHT_ARROW_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 2, cap: "round", join: "round" });
+const RIGHT_CURVE_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.curve,
+  join: "round",
+  cap: "round",
+});
+const LEFT_ARROW_STYLE = Object.freeze({
+  stroke: HUES.orange,
+  width: 4,
+  cap: "round",
+  join: "round",
+});
+const RIGHT_ARROW_STYLE = Object.freeze({
+  stroke: HUES.reddishPurple,
+  width: 2,
+  cap: "round",
+  join: "round",
+});
 /** Arrow label styles per theme (their halo is the theme's background), made once per theme. */
 const labelStyles = new WeakMap();
 function arrowLabelStyles(theme) {
@@ -79,7 +108,12 @@ function arrowLabelStyles(theme) {
         weight: "bold",
         halo: theme.background,
       }),
-      right: Object.freeze({ fill: HUES.reddishPurple, size: FONT_SIZE.small, weight: "bold", halo: theme.background }),
+      right: Object.freeze({
+        fill: HUES.reddishPurple,
+        size: FONT_SIZE.small,
+        weight: "bold",
+        halo: theme.background,
+      }),
     };
     labelStyles.set(theme, styles);
   }
@@ -103,9 +137,19 @@ export const fields = {
 class Pieces {
   constructor(sl, state) {
     this.sl = sl;
-    this.left = sl.BezierCurve.withInterval(flatten(state.left), 2, LEFT_INTERVAL[0], LEFT_INTERVAL[1]);
+    this.left = sl.BezierCurve.withInterval(
+      flatten(state.left),
+      2,
+      LEFT_INTERVAL[0],
+      LEFT_INTERVAL[1],
+    );
     try {
-      this.right = sl.BezierCurve.withInterval(flatten(state.right), 2, RIGHT_INTERVAL[0], RIGHT_INTERVAL[1]);
+      this.right = sl.BezierCurve.withInterval(
+        flatten(state.right),
+        2,
+        RIGHT_INTERVAL[0],
+        RIGHT_INTERVAL[1],
+      );
     } catch (err) {
       this.left.free();
       throw err;
@@ -202,14 +246,20 @@ const samplesOf = (piece) => piece.sampleUniform(CURVE_SAMPLES);
 
 /** What the core returns: both pieces' samples, and the joint. */
 export const compute = {
-  samples: [["left", "right"], (s, { pieces }) => ({ left: samplesOf(pieces.left), right: samplesOf(pieces.right) })],
+  samples: [
+    ["left", "right"],
+    (s, { pieces }) => ({ left: samplesOf(pieces.left), right: samplesOf(pieces.right) }),
+  ],
   joint: [["left", "right"], (s, d) => jointOf(d.sl, d.pieces)],
 };
 
 export const controls = [
   group(
     "joining.ruleLegend",
-    choice("rule", { options: RULES.map((rule) => ({ value: rule, label: `joining.rule.${rule}` })), rebuild: true }),
+    choice("rule", {
+      options: RULES.map((rule) => ({ value: rule, label: `joining.rule.${rule}` })),
+      rebuild: true,
+    }),
   ),
   group(
     "joining.checkerLegend",
@@ -287,8 +337,14 @@ export function draw(r, v, s, d) {
     const bx = Q[1][0];
     const by = Q[1][1];
     r.beginPath();
-    r.moveTo(v.sx(ax - (bx - ax) * TANGENT_LINE_OVERSHOOT), v.sy(ay - (by - ay) * TANGENT_LINE_OVERSHOOT));
-    r.lineTo(v.sx(bx + (bx - ax) * TANGENT_LINE_OVERSHOOT), v.sy(by + (by - ay) * TANGENT_LINE_OVERSHOOT));
+    r.moveTo(
+      v.sx(ax - (bx - ax) * TANGENT_LINE_OVERSHOOT),
+      v.sy(ay - (by - ay) * TANGENT_LINE_OVERSHOOT),
+    );
+    r.lineTo(
+      v.sx(bx + (bx - ax) * TANGENT_LINE_OVERSHOOT),
+      v.sy(by + (by - ay) * TANGENT_LINE_OVERSHOOT),
+    );
     r.paint(theme.helper);
   }
   if (s.rule === "C2") {
@@ -300,7 +356,16 @@ export function draw(r, v, s, d) {
     r.lineTo(v.sx(Q[2][0]), v.sy(Q[2][1]));
     r.paint(theme.helper);
     r.point(v.sx(dx), v.sy(dy), D_POINT_STYLE);
-    placeLabel(r, t("joining.pointD"), v.sx(dx), v.sy(dy), 0, -1, D_POINT_STYLE.radius * r.scale, theme.labelSmall);
+    placeLabel(
+      r,
+      t("joining.pointD"),
+      v.sx(dx),
+      v.sy(dy),
+      0,
+      -1,
+      D_POINT_STYLE.radius * r.scale,
+      theme.labelSmall,
+    );
   }
 
   // Control polygons.
@@ -346,7 +411,15 @@ export function draw(r, v, s, d) {
   const margin = TEXT_MARGIN_PX * r.scale;
   r.text(d.joint.text, margin, margin, theme.labelBold, "left", "top");
   const captionWidth = v.width - 2 * margin;
-  drawCaption(r, t("joining.arrowCaption"), margin, v.height - margin, theme.labelSmall, captionWidth, "bottom");
+  drawCaption(
+    r,
+    t("joining.arrowCaption"),
+    margin,
+    v.height - margin,
+    theme.labelSmall,
+    captionWidth,
+    "bottom",
+  );
 }
 
 /**
@@ -425,17 +498,24 @@ function orderTex(letter, k) {
   return k === Infinity ? `\\text{${letter}}^{\\infty}` : `\\text{${letter}}^{${k}}`;
 }
 
-
 /** Each condition with the numbers, "=" or "≠" as the checker found it; λ for G1; the verdict. */
 export function formula(s, d) {
   const P = s.left;
   const Q = s.right;
-  const { dLeft, dRight, ddLeft, ddRight, verdict: { c, g } } = d.joint;
+  const {
+    dLeft,
+    dRight,
+    ddLeft,
+    ddRight,
+    verdict: { c, g },
+  } = d.joint;
   const rel = (holds) => (holds ? "\\;=\\;" : "\\;\\neq\\;");
   const tex = (x, y) => `(${short(x)},\\ ${short(y)})`.replace(/-/g, "{-}");
   const n = DEGREE;
   const lines = [`\\text{${t("joining.formula.rule")}}\\quad ${ruleTex(s.rule)}`];
-  lines.push(`\\text{C}^0:\\ P_{${n}} = ${tex(P[3][0], P[3][1])} ${rel(c >= 0)} Q_0 = ${tex(Q[0][0], Q[0][1])}`);
+  lines.push(
+    `\\text{C}^0:\\ P_{${n}} = ${tex(P[3][0], P[3][1])} ${rel(c >= 0)} Q_0 = ${tex(Q[0][0], Q[0][1])}`,
+  );
   lines.push(
     `\\text{C}^1:\\ ${n}(P_{${n}} - P_{${n - 1}}) = ${tex(dLeft[0], dLeft[1])} ${rel(c >= 1)} ` +
       `${n}(Q_1 - Q_0) = ${tex(dRight[0], dRight[1])}`,
@@ -454,7 +534,8 @@ export function formula(s, d) {
   } else {
     lines.push(`\\text{G}^1:\\ \\text{${t("joining.formula.notG1")}}`);
   }
-  const found = c < 0 ? `\\text{${t("joining.formula.notC0")}}` : `${orderTex("C", c)},\\ ${orderTex("G", g)}`;
+  const found =
+    c < 0 ? `\\text{${t("joining.formula.notC0")}}` : `${orderTex("C", c)},\\ ${orderTex("G", g)}`;
   lines.push(`\\text{${t("joining.formula.checker")}}\\ ${found}`);
   return lines;
 }
@@ -463,7 +544,12 @@ export function formula(s, d) {
 export function label(s, d) {
   const { dLeft, dRight, text } = d.joint;
   const rule = t(`joining.rule.${s.rule}`);
-  return t("joining.aria", { rule, verdict: text, dp: pair(dLeft[0], dLeft[1]), dq: pair(dRight[0], dRight[1]) });
+  return t("joining.aria", {
+    rule,
+    verdict: text,
+    dp: pair(dLeft[0], dLeft[1]),
+    dq: pair(dRight[0], dRight[1]),
+  });
 }
 
 /** The table of what the rules compare (differences, the core's derivatives at the joint); the core's refusals. */

@@ -46,7 +46,16 @@ export const section = 3;
  * u = 5/2 is ready to insert next.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [1, 4], [4, 5], [6, 1], [9, 2], [10, 5]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [1, 4],
+      [4, 5],
+      [6, 1],
+      [9, 2],
+      [10, 5],
+    ].map(Object.freeze),
+  ),
   degree: 2,
   knots: Object.freeze([0, 0, 0, 1, 2, 3, 4, 4, 4]),
   inserted: Object.freeze([1.5]),
@@ -87,7 +96,8 @@ export const fields = {
     checkNumber(s, name, { min: MIN_DEGREE, max: MAX_DEGREE, integer: true });
     const count = s.points.length;
     const p = s.degree;
-    if (count < p + 1) throw new Error(t("knotInsertion.error.tooFewPoints", { min: p + 1, p, count }));
+    if (count < p + 1)
+      throw new Error(t("knotInsertion.error.tooFewPoints", { min: p + 1, p, count }));
   },
   knots(s, name) {
     const m = s.points.length + s.degree + 1;
@@ -102,7 +112,8 @@ export const fields = {
     checkNumbers(s, name, { min: 0, max: MAX_INSERTED });
     const [a, b] = domain(s);
     for (const value of s.inserted) {
-      if (value < a || value > b) throw new Error(t("knotInsertion.error.insertedRange", { value, a, b }));
+      if (value < a || value > b)
+        throw new Error(t("knotInsertion.error.insertedRange", { value, a, b }));
     }
   },
   u: field.number((s) => {
@@ -121,7 +132,8 @@ export const fields = {
  */
 function deriveCurves(base, inserted) {
   if (inserted.length === 0) return { previous: base, current: base };
-  const previous = inserted.length > 1 ? base.refine(Float64Array.from(inserted.slice(0, -1))) : base;
+  const previous =
+    inserted.length > 1 ? base.refine(Float64Array.from(inserted.slice(0, -1))) : base;
   try {
     return { previous, current: previous.insertKnot(inserted[inserted.length - 1], 1) };
   } catch (err) {
@@ -135,7 +147,8 @@ function refineInto(m, inserted) {
   const next = deriveCurves(m.base, inserted);
   for (const curve of m.refined) curve.free();
   m.refined.length = 0;
-  for (const curve of new Set([next.previous, next.current])) if (curve !== m.base) m.refined.push(curve);
+  for (const curve of new Set([next.previous, next.current]))
+    if (curve !== m.base) m.refined.push(curve);
   m.curves.previous = next.previous;
   m.curves.current = next.current;
 }
@@ -168,7 +181,12 @@ function boehm(s, d) {
   const preview = s.inserted.length === 0;
   const at = preview ? s.u : s.inserted[s.inserted.length - 1];
   const { span: k, alphas: values } = d.curves.previous.insertionAlphas(at);
-  return { preview, s: at, k, alphas: values.map((value, m) => ({ i: k - s.degree + 1 + m, value })) };
+  return {
+    preview,
+    s: at,
+    k,
+    alphas: values.map((value, m) => ({ i: k - s.degree + 1 + m, value })),
+  };
 }
 
 /** Each Bézier segment's control points (`toBezier()`), when they are shown. */
@@ -184,7 +202,8 @@ function segments(s, d) {
 /** A weighted sum of the drawn samples (`data-curve-sum`): insertion must leave it unchanged. */
 function checksum(samples) {
   let sum = 0;
-  for (let j = 0; j < CURVE_SAMPLES; j++) sum += (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
+  for (let j = 0; j < CURVE_SAMPLES; j++)
+    sum += (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
   return sum;
 }
 
@@ -235,15 +254,22 @@ function badU(text, s) {
 
 const ACTIONS = [
   {
-    name: "insert", label: "knotInsertion.control.insert", title: "knotInsertion.control.insert.title",
-    run: (ui) => insertAll(ui, [ui.state.u]), disabled: (s) => s.inserted.length >= MAX_INSERTED,
+    name: "insert",
+    label: "knotInsertion.control.insert",
+    title: "knotInsertion.control.insert.title",
+    run: (ui) => insertAll(ui, [ui.state.u]),
+    disabled: (s) => s.inserted.length >= MAX_INSERTED,
   },
   {
-    name: "refine-all", label: "knotInsertion.control.refine", title: "knotInsertion.control.refine.title",
+    name: "refine-all",
+    label: "knotInsertion.control.refine",
+    title: "knotInsertion.control.refine.title",
     run: (ui) => insertAll(ui, spanMidpoints(ui)),
   },
   {
-    name: "reset-knots", label: "knotInsertion.control.reset", title: "knotInsertion.control.reset.title",
+    name: "reset-knots",
+    label: "knotInsertion.control.reset",
+    title: "knotInsertion.control.reset.title",
     run: (ui) => ui.state.inserted.length > 0 && ui.replace({ ...ui.state, inserted: [] }),
     disabled: (s) => s.inserted.length === 0,
   },
@@ -254,7 +280,11 @@ const pointCount = (d) => d.currentPoints.length / 2;
 
 export const controls = [
   parameterStrip("u", {
-    height: STRIP_PX, margin: STRIP_MARGIN, step: U_STEP, range: domain, over: (ui) => ui.data.hover.set(-1),
+    height: STRIP_PX,
+    margin: STRIP_MARGIN,
+    step: U_STEP,
+    range: domain,
+    over: (ui) => ui.data.hover.set(-1),
   }),
   group(
     null,
@@ -263,19 +293,29 @@ export const controls = [
   ),
   group(
     null,
-    readout("count", (s, d) => t("knotInsertion.readout", { count: pointCount(d), knots: d.currentKnots.length }), {
-      kind: "readout",
-      live: true,
-      data: (s, d) => ({
-        points: String(pointCount(d)),
-        knots: String(d.currentKnots.length),
-        curveSum: String(d.curveSum),
-      }),
-    }),
+    readout(
+      "count",
+      (s, d) => t("knotInsertion.readout", { count: pointCount(d), knots: d.currentKnots.length }),
+      {
+        kind: "readout",
+        live: true,
+        data: (s, d) => ({
+          points: String(pointCount(d)),
+          knots: String(d.currentKnots.length),
+          curveSum: String(d.curveSum),
+        }),
+      },
+    ),
     checkbox("bezier", { label: "knotInsertion.control.bezier" }),
-    readout("segments", (s, d) => {
-      return s.bezier ? tp("knotInsertion.segments", d.segments.length) : t("knotInsertion.segmentsOff");
-    }, { data: (s, d) => ({ segments: s.bezier ? String(d.segments.length) : null }) }),
+    readout(
+      "segments",
+      (s, d) => {
+        return s.bezier
+          ? tp("knotInsertion.segments", d.segments.length)
+          : t("knotInsertion.segmentsOff");
+      },
+      { data: (s, d) => ({ segments: s.bezier ? String(d.segments.length) : null }) },
+    ),
   ),
 ];
 
@@ -292,12 +332,22 @@ const stylesFor = themed((theme) => ({
   ghost: Object.freeze({ ...theme.polygon, strokeAlpha: GHOST_ALPHA }),
   strong: Object.freeze({ stroke: theme.text, width: WIDTH.construction, join: "round" }),
   q: Object.freeze({
-    fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint,
+    fill: theme.text,
+    stroke: theme.background,
+    width: WIDTH.helper,
+    radius: RADIUS.constructionPoint,
   }),
   qNew: Object.freeze({
-    fill: HUES.vermillion, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.pointOnCurve,
+    fill: HUES.vermillion,
+    stroke: theme.background,
+    width: WIDTH.helper,
+    radius: RADIUS.pointOnCurve,
   }),
-  hover: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction, radius: RADIUS.handleHover }),
+  hover: Object.freeze({
+    stroke: HUES.vermillion,
+    width: WIDTH.construction,
+    radius: RADIUS.handleHover,
+  }),
   tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
   insertedTick: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.split }),
 }));
@@ -327,7 +377,8 @@ export function draw(r, v, s, d) {
       flatPath(r, v, pts);
       r.paint(theme.levelStroke[colour]);
       const style = theme.levelPoint[colour];
-      for (let j = 0; j < pts.length / 2; j++) r.point(v.sx(pts[2 * j]), v.sy(pts[2 * j + 1]), style);
+      for (let j = 0; j < pts.length / 2; j++)
+        r.point(v.sx(pts[2 * j]), v.sy(pts[2 * j + 1]), style);
     }
   } else if (inserted) {
     const count = q.length / 2;
@@ -342,7 +393,17 @@ export function draw(r, v, s, d) {
       const x = v.sx(q[2 * i]);
       const y = v.sy(q[2 * i + 1]);
       r.point(x, y, st.qNew);
-      labelOffLeg(r, v, d.previousPoints, qLabel(i), x, y, i, theme.labelPoint, st.qNew.radius * r.scale);
+      labelOffLeg(
+        r,
+        v,
+        d.previousPoints,
+        qLabel(i),
+        x,
+        y,
+        i,
+        theme.labelPoint,
+        st.qNew.radius * r.scale,
+      );
     }
   }
   // Where Insert would insert: C(u) on the curve, a ring (the filled vermillion dots are new points).
@@ -411,10 +472,12 @@ export function formula(s, d) {
   const { preview, s: at, k, alphas } = d.last;
   const U = d.previousKnots;
   const q = d.currentPoints;
-  const alphaTex = alphas.map(({ i, value }) => {
-    const ratio = `\\frac{${knotText(at)} - ${knotText(U[i])}}{${knotText(U[i + p])} - ${knotText(U[i])}}`;
-    return `\\alpha_{${i}} = ${ratio} = ${numberText(value, true)}`;
-  }).join(",\\quad ");
+  const alphaTex = alphas
+    .map(({ i, value }) => {
+      const ratio = `\\frac{${knotText(at)} - ${knotText(U[i])}}{${knotText(U[i + p])} - ${knotText(U[i])}}`;
+      return `\\alpha_{${i}} = ${ratio} = ${numberText(value, true)}`;
+    })
+    .join(",\\quad ");
   const previewTex = preview ? `\\text{${t("knotInsertion.formula.preview")}}\\ ` : "";
   const spanTex = `[${numberText(U[k], true)}, ${numberText(U[k + 1], true)})`;
   const lines = [
@@ -438,7 +501,10 @@ export function formula(s, d) {
 export function label(s, d) {
   const { preview, s: at, alphas } = d.last;
   return t(preview ? "knotInsertion.ariaNone" : "knotInsertion.aria", {
-    kind: degreeName(s.degree), count: d.currentPoints.length / 2, knots: d.currentKnots.length, s: knotText(at),
+    kind: degreeName(s.degree),
+    count: d.currentPoints.length / 2,
+    knots: d.currentKnots.length,
+    s: knotText(at),
     alphas: alphas.map(({ value }) => fmt(value)).join(", "),
     segments: s.bezier ? tp("knotInsertion.ariaSegments", d.segments.length) : "",
   });
@@ -448,27 +514,50 @@ const knotList = (values) => Array.from(values, knotText).join(", ");
 
 /** The knot vectors before and after, the α used, the insertions so far (under the figure). */
 const LISTS = [
-  readout("knots-before", (s, d) => {
-    const { preview, s: at } = d.last;
-    if (preview) return t("knotInsertion.knotsNow", { knots: knotList(d.currentKnots) });
-    return t("knotInsertion.knotsBefore", { s: knotText(at), knots: knotList(d.previousKnots) });
-  }, { data: (s, d) => ({ knots: Array.from(d.previousKnots, knotText).join(",") }) }),
-  readout("knots-after", (s, d) => {
-    if (d.last.preview) return t("knotInsertion.knotsNone");
-    return t("knotInsertion.knotsAfter", { knots: knotList(d.currentKnots) });
-  }, { data: (s, d) => ({ knots: d.last.preview ? "" : Array.from(d.currentKnots, knotText).join(",") }) }),
-  readout("alphas", (s, d) => {
-    const { preview, s: at, alphas } = d.last;
-    const list = alphas.map(({ i, value }) => {
-      const f = simpleFraction(value);
-      return `α${subscript(i)} = ${f ? `${fractionText(f)} (${fmt(value)})` : fmt(value)}`;
-    }).join(", ");
-    if (preview) return t("knotInsertion.alphasPreview", { s: knotText(at), alphas: list });
-    return t("knotInsertion.alphasUsed", { alphas: list });
-  }, { data: (s, d) => ({ alphas: d.last.alphas.map(({ value }) => String(value)).join(",") }) }),
-  readout("inserted", (s) => (s.inserted.length
-    ? t("knotInsertion.insertedList", { count: s.inserted.length, knots: s.inserted.map(knotText).join(", ") })
-    : t("knotInsertion.insertedNone"))),
+  readout(
+    "knots-before",
+    (s, d) => {
+      const { preview, s: at } = d.last;
+      if (preview) return t("knotInsertion.knotsNow", { knots: knotList(d.currentKnots) });
+      return t("knotInsertion.knotsBefore", { s: knotText(at), knots: knotList(d.previousKnots) });
+    },
+    { data: (s, d) => ({ knots: Array.from(d.previousKnots, knotText).join(",") }) },
+  ),
+  readout(
+    "knots-after",
+    (s, d) => {
+      if (d.last.preview) return t("knotInsertion.knotsNone");
+      return t("knotInsertion.knotsAfter", { knots: knotList(d.currentKnots) });
+    },
+    {
+      data: (s, d) => ({
+        knots: d.last.preview ? "" : Array.from(d.currentKnots, knotText).join(","),
+      }),
+    },
+  ),
+  readout(
+    "alphas",
+    (s, d) => {
+      const { preview, s: at, alphas } = d.last;
+      const list = alphas
+        .map(({ i, value }) => {
+          const f = simpleFraction(value);
+          return `α${subscript(i)} = ${f ? `${fractionText(f)} (${fmt(value)})` : fmt(value)}`;
+        })
+        .join(", ");
+      if (preview) return t("knotInsertion.alphasPreview", { s: knotText(at), alphas: list });
+      return t("knotInsertion.alphasUsed", { alphas: list });
+    },
+    { data: (s, d) => ({ alphas: d.last.alphas.map(({ value }) => String(value)).join(",") }) },
+  ),
+  readout("inserted", (s) =>
+    s.inserted.length
+      ? t("knotInsertion.insertedList", {
+          count: s.inserted.length,
+          knots: s.inserted.map(knotText).join(", "),
+        })
+      : t("knotInsertion.insertedNone"),
+  ),
 ];
 
 /**
@@ -514,7 +603,12 @@ export function setup(ui) {
       const { preview, s: at, k, alphas } = d.last;
       const p = s.degree;
       const q = d.currentPoints;
-      setText(title, preview ? t("knotInsertion.tableEmpty") : t("knotInsertion.tableCaption", { s: knotText(at) }));
+      setText(
+        title,
+        preview
+          ? t("knotInsertion.tableEmpty")
+          : t("knotInsertion.tableCaption", { s: knotText(at) }),
+      );
       const rows = [];
       for (let i = 0; !preview && i < q.length / 2; i++) {
         const alpha = alphas.find((a) => a.i === i);
@@ -525,10 +619,18 @@ export function setup(ui) {
           const [a, b] = [numberText(1 - alpha.value), numberText(alpha.value)];
           rule = `${Q} = ${a} P${subscript(i - 1)} + ${b} P${subscript(i)}`;
         }
-        rows.push(el("tr", { class: alpha ? "sl-highlight" : undefined },
-          el("th", { scope: "row", text: Q }),
-          el("td", { text: rule }),
-          el("td", { dataset: { index: String(i) }, text: `(${fmt(q[2 * i])}, ${fmt(q[2 * i + 1])})` })));
+        rows.push(
+          el(
+            "tr",
+            { class: alpha ? "sl-highlight" : undefined },
+            el("th", { scope: "row", text: Q }),
+            el("td", { text: rule }),
+            el("td", {
+              dataset: { index: String(i) },
+              text: `(${fmt(q[2 * i])}, ${fmt(q[2 * i + 1])})`,
+            }),
+          ),
+        );
       }
       table.replaceChildren(el("tbody", {}, rows));
     },

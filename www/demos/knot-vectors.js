@@ -27,7 +27,16 @@ export const section = 3;
 
 /** Six integer points and a cubic: clamped knots 0 0 0 0 1 2 3 3 3 3 (syllabus §3 conventions). */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 1], [2, 6], [7, 7], [11, 4], [9, 0], [4, -1]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 1],
+      [2, 6],
+      [7, 7],
+      [11, 4],
+      [9, 0],
+      [4, -1],
+    ].map(Object.freeze),
+  ),
   degree: 3,
   spacing: "uniform",
   clamped: true,
@@ -58,7 +67,8 @@ export const fields = {
   degree(s, name) {
     checkNumber(s, name, { min: 1, max: MAX_DEGREE, integer: true });
     const count = s.points.length;
-    if (s.degree > count - 1) throw new Error(t("knotVectors.error.degree", { p: s.degree, count }));
+    if (s.degree > count - 1)
+      throw new Error(t("knotVectors.error.degree", { p: s.degree, count }));
   },
   spacing: field.choice(SPACINGS),
   clamped: field.boolean(),
@@ -81,7 +91,9 @@ export const derive = {
     const made = [];
     try {
       made.push(clampedCurve(sl, s));
-      made.push(new sl.BSplineCurve(flat, 2, s.degree, sl.knotVector(flat, 2, s.degree, "uniform")));
+      made.push(
+        new sl.BSplineCurve(flat, 2, s.degree, sl.knotVector(flat, 2, s.degree, "uniform")),
+      );
       made.push(sl.BSplineCurve.closed(flat, 2, s.degree));
     } catch (err) {
       for (const curve of made) curve.free();
@@ -107,11 +119,22 @@ export const derive = {
 
 /** What the core returns per curve: samples, knots, domain [a, b] and the end points C(a), C(b). */
 export const compute = {
-  shown: [["points", "degree", "spacing"], (s, d) => d.curves.map((curve) => {
-    const [a, b] = curve.domain();
-    const samples = curve.sampleUniform(CURVE_SAMPLES);
-    return { samples, knots: Array.from(curve.knots()), a, b, start: curve.evaluate(a), end: curve.evaluate(b) };
-  })],
+  shown: [
+    ["points", "degree", "spacing"],
+    (s, d) =>
+      d.curves.map((curve) => {
+        const [a, b] = curve.domain();
+        const samples = curve.sampleUniform(CURVE_SAMPLES);
+        return {
+          samples,
+          knots: Array.from(curve.knots()),
+          a,
+          b,
+          start: curve.evaluate(a),
+          end: curve.evaluate(b),
+        };
+      }),
+  ],
 };
 
 /** Degree p (on release): 1 … min(MAX_DEGREE, n). */
@@ -121,22 +144,34 @@ function setDegree(ui, p) {
   if (p !== ui.state.degree) replaceOrReport(ui, { ...ui.state, degree: p });
 }
 
-const showBox = (kind) => checkbox(kind, { label: `knotVectors.show.${kind}`, name: `show-${kind}` });
+const showBox = (kind) =>
+  checkbox(kind, { label: `knotVectors.show.${kind}`, name: `show-${kind}` });
 
 export const controls = [
-  group(null, slider("degree", {
-    label: "knotVectors.control.degree",
-    min: 1,
-    max: MAX_DEGREE,
-    step: 1,
-    format: (v) => String(Math.round(v)),
-    set: (ui, value, final) => final && setDegree(ui, Math.round(value)),
-    error: (text, s) => t("knotVectors.degreeRange", { value: text, max: Math.min(MAX_DEGREE, s.points.length - 1) }),
-  })),
-  group("knotVectors.control.spacing", choice("spacing", {
-    options: SPACINGS.map((value) => ({ value, label: `knotVectors.spacing.${value}` })),
-    set: (ui, spacing) => spacing !== ui.state.spacing && replaceOrReport(ui, { ...ui.state, spacing }),
-  })),
+  group(
+    null,
+    slider("degree", {
+      label: "knotVectors.control.degree",
+      min: 1,
+      max: MAX_DEGREE,
+      step: 1,
+      format: (v) => String(Math.round(v)),
+      set: (ui, value, final) => final && setDegree(ui, Math.round(value)),
+      error: (text, s) =>
+        t("knotVectors.degreeRange", {
+          value: text,
+          max: Math.min(MAX_DEGREE, s.points.length - 1),
+        }),
+    }),
+  ),
+  group(
+    "knotVectors.control.spacing",
+    choice("spacing", {
+      options: SPACINGS.map((value) => ({ value, label: `knotVectors.spacing.${value}` })),
+      set: (ui, spacing) =>
+        spacing !== ui.state.spacing && replaceOrReport(ui, { ...ui.state, spacing }),
+    }),
+  ),
   group("knotVectors.control.show", ...KINDS.map(showBox)),
   group(
     null,
@@ -226,7 +261,14 @@ export function draw(r, v, s, d) {
     r.moveTo(x, y);
     r.lineTo(x + LEGEND_SWATCH * sc, y);
     r.paint(theme.compareCurve[c]);
-    r.text(d.legend.labels[c], x + (LEGEND_SWATCH + LEGEND_GAP) * sc, y, theme.labelSmall, "left", "middle");
+    r.text(
+      d.legend.labels[c],
+      x + (LEGEND_SWATCH + LEGEND_GAP) * sc,
+      y,
+      theme.labelSmall,
+      "left",
+      "middle",
+    );
   }
   if (bottom > 0) {
     r.beginPath();
@@ -271,15 +313,23 @@ export function formula(s, d) {
     lines.push(`U_{${tex(s.spacing)}}:\\ u_0 = \\dots = u_{p} = 0,\\quad ${sum}\\ \\ ${range}`);
     lines.push(`${tex("legs")}\\ ${legs.join(",\\ ")}`);
   }
-  lines.push(`\\phantom{U} = (${d.shown[0].knots.map(knotText).join(",\\,")}),\\quad n = ${n},\\ p = ${p}`);
+  lines.push(
+    `\\phantom{U} = (${d.shown[0].knots.map(knotText).join(",\\,")}),\\quad n = ${n},\\ p = ${p}`,
+  );
   const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${p}, ${n + 1}]`;
-  lines.push(`U_{${tex("unclamped")}}:\\ u_i = i,\\ i = 0,\\dots,n+p+1 = ${n + p + 1};\\quad ${domain}`);
+  lines.push(
+    `U_{${tex("unclamped")}}:\\ u_i = i,\\ i = 0,\\dots,n+p+1 = ${n + p + 1};\\quad ${domain}`,
+  );
   const closedKnots = `u_i = i,\\ i = 0,\\dots,${n + 2 * p + 1}`;
   const closedPoints = `P_0,\\dots,P_{${n}},\\,P_0,\\dots,P_{${p - 1}}`;
-  lines.push(`U_{${tex("closed")}}:\\ ${closedPoints};\\ ${closedKnots};\\quad C^{${p - 1}}\\ ${tex("seam")}`);
+  lines.push(
+    `U_{${tex("closed")}}:\\ ${closedPoints};\\ ${closedKnots};\\quad C^{${p - 1}}\\ ${tex("seam")}`,
+  );
   const { c0, u0, p0 } = starts(s, d);
   const clampedStart = `C_{${tex("clamped")}}(u_{${p}}) = ${c0} ${c0 === p0 ? "= P_0" : "\\ne P_0"}`;
-  lines.push(`${clampedStart},\\qquad C_{${tex("unclamped")}}(u_{${p}}) = ${u0} ${u0 === p0 ? "= P_0" : "\\ne P_0"}`);
+  lines.push(
+    `${clampedStart},\\qquad C_{${tex("unclamped")}}(u_{${p}}) = ${u0} ${u0 === p0 ? "= P_0" : "\\ne P_0"}`,
+  );
   return lines;
 }
 
@@ -287,13 +337,22 @@ export function formula(s, d) {
 function starts(s, d) {
   const [c, u] = d.shown;
   const [x0, y0] = s.points[0];
-  return { c0: pointText(c.start[0], c.start[1]), u0: pointText(u.start[0], u.start[1]), p0: pointText(x0, y0) };
+  return {
+    c0: pointText(c.start[0], c.start[1]),
+    u0: pointText(u.start[0], u.start[1]),
+    p0: pointText(x0, y0),
+  };
 }
 
 /** "cubic B-splines with 6 control points; clamped knots …; the clamped curve starts at …". */
 export function label(s, d) {
   const clamped = d.shown[0].knots.map(knotText).join(" ");
-  return t("knotVectors.aria", { kind: degreeName(s.degree), count: s.points.length, clamped, ...starts(s, d) });
+  return t("knotVectors.aria", {
+    kind: degreeName(s.degree),
+    count: s.points.length,
+    clamped,
+    ...starts(s, d),
+  });
 }
 
 /**
@@ -304,19 +363,40 @@ export function setup(ui) {
   // A taller figure than the default 16:10.
   ui.ctx.slots.figure.style.aspectRatio = "3 / 2";
   const legend = (ui.data.legend = newLegend());
-  const { title, table, wrap } = titledTable("knot-vectors", { caption: t("knotVectors.tableCaption") });
+  const { title, table, wrap } = titledTable("knot-vectors", {
+    caption: t("knotVectors.tableCaption"),
+  });
   const rows = KINDS.map((kind, index) => {
     const cells = {};
-    for (const key of ["knots", "domain", "start", "end"]) cells[key] = el("td", { dataset: { cell: key } });
+    for (const key of ["knots", "domain", "start", "end"])
+      cells[key] = el("td", { dataset: { cell: key } });
     const name = el("span", { class: "sl-cell-name", text: legend.labels[index] });
-    const row = el("tr", { dataset: { curve: kind } },
-      el("th", { scope: "row" }, name, el("span", { class: "sl-cell-decimal", text: t(`knotVectors.style.${kind}`) })),
-      cells.knots, cells.domain, cells.start, cells.end);
+    const row = el(
+      "tr",
+      { dataset: { curve: kind } },
+      el(
+        "th",
+        { scope: "row" },
+        name,
+        el("span", { class: "sl-cell-decimal", text: t(`knotVectors.style.${kind}`) }),
+      ),
+      cells.knots,
+      cells.domain,
+      cells.start,
+      cells.end,
+    );
     return { row, cells, name };
   });
   const column = (key) => el("th", { scope: "col", text: t(`knotVectors.column.${key}`) });
   const columns = ["curve", "knots", "domain", "start", "end"].map(column);
-  table.append(el("thead", {}, el("tr", {}, columns)), el("tbody", {}, rows.map((r) => r.row)));
+  table.append(
+    el("thead", {}, el("tr", {}, columns)),
+    el(
+      "tbody",
+      {},
+      rows.map((r) => r.row),
+    ),
+  );
   ui.ctx.slots.details.append(title, wrap);
 
   return {
@@ -329,7 +409,9 @@ export function setup(ui) {
       if (legend.labels[0] !== first || legend.widths[0] === 0) {
         legend.labels[0] = first;
         const r = ui.view.renderer;
-        legend.labels.forEach((text, c) => (legend.widths[c] = r.measure(text, r.theme.labelSmall) / r.scale));
+        legend.labels.forEach(
+          (text, c) => (legend.widths[c] = r.measure(text, r.theme.labelSmall) / r.scale),
+        );
       }
       setText(rows[0].name, legend.labels[0]);
       const p0 = s.points[0];

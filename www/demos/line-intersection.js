@@ -55,8 +55,20 @@ const BOX_STRIDE = 6;
  * times too. `depth` = MAX_DEPTH shows every level.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, -2], [3, 4], [9, -4], [12, 2]].map(Object.freeze)),
-  line: Object.freeze([[0, 1], [12, -1]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, -2],
+      [3, 4],
+      [9, -4],
+      [12, 2],
+    ].map(Object.freeze),
+  ),
+  line: Object.freeze(
+    [
+      [0, 1],
+      [12, -1],
+    ].map(Object.freeze),
+  ),
   depth: MAX_DEPTH,
 });
 
@@ -64,7 +76,8 @@ export const defaultState = Object.freeze({
 function lineField(state, name) {
   field.points({ min: LINE_HANDLES, max: LINE_HANDLES })(state, name);
   const [[ax, ay], [bx, by]] = state[name];
-  if (ax === bx && ay === by) throw new Error(t("lineIntersection.sameLinePoints", { x: ax, y: ay }));
+  if (ax === bx && ay === by)
+    throw new Error(t("lineIntersection.sameLinePoints", { x: ax, y: ay }));
 }
 
 export const fields = {
@@ -136,7 +149,8 @@ const shownDepth = (s, d) => Math.min(s.depth, d.found.deepest);
 function depthControl() {
   return {
     build(ui) {
-      const set = (value, final) => ui.set("depth", value >= ui.data.found.deepest ? MAX_DEPTH : value, final);
+      const set = (value, final) =>
+        ui.set("depth", value >= ui.data.found.deepest ? MAX_DEPTH : value, final);
       const control = slider({
         label: t("lineIntersection.depth"),
         inputLabel: t("lineIntersection.depth.input", { max: MAX_DEPTH }),
@@ -147,7 +161,8 @@ function depthControl() {
         value: ui.state.depth,
         format: (v) => String(Math.round(v)),
         onChange: (value, final) => set(Math.round(value), final),
-        onError: (text) => ui.status(t("lineIntersection.badDepth", { value: text, max: MAX_DEPTH }), "error"),
+        onError: (text) =>
+          ui.status(t("lineIntersection.badDepth", { value: text, max: MAX_DEPTH }), "error"),
       });
       const stepBy = (direction) => {
         const depth = shownDepth(ui.state, ui.data) + direction;
@@ -189,7 +204,10 @@ function countText(s, d) {
 
 /** Variation diminishing: the line crosses the curve at most as often as the control polygon. */
 function crossingsText(s, d) {
-  return t("lineIntersection.crossings", { polygon: d.found.polygonCrossings, curve: d.found.roots.length });
+  return t("lineIntersection.crossings", {
+    polygon: d.found.polygonCrossings,
+    curve: d.found.roots.length,
+  });
 }
 
 /** Boxes up to the shown depth: visited, hit, pruned. */
@@ -204,7 +222,14 @@ function boxesText(s, d) {
     if (boxes[k + 5] === 1) hit += 1;
   }
   const deepest = d.found.deepest;
-  return t("lineIntersection.boxes", { depth, deepest, visited, hit, pruned: visited - hit, tolerance: BOX_TOLERANCE });
+  return t("lineIntersection.boxes", {
+    depth,
+    deepest,
+    visited,
+    hit,
+    pruned: visited - hit,
+    tolerance: BOX_TOLERANCE,
+  });
 }
 
 export const controls = [
@@ -327,7 +352,10 @@ export function formula(s, d) {
   const { roots, polygonCrossings } = d.found;
   const [[ax, ay], [bx, by]] = s.line;
   const pointTex = (x, y) => `(${coord(x)},\\ ${coord(y)})`;
-  const rootsTex = roots.length === 0 ? "\\varnothing" : `\\{${Array.from(roots, (root) => fmt(root)).join(",\\ ")}\\}`;
+  const rootsTex =
+    roots.length === 0
+      ? "\\varnothing"
+      : `\\{${Array.from(roots, (root) => fmt(root)).join(",\\ ")}\\}`;
   const text = (key) => `\\text{${t(`lineIntersection.formula.${key}`)}}`;
   return [
     `d(P) = \\frac{(B - A) \\times (P - A)}{\\lvert B - A \\rvert}, \\qquad ` +
@@ -361,15 +389,25 @@ export function setup(ui) {
     const cells = [];
     const rows = [];
     for (let k = 0; k < count; k++) {
-      const row = { t: el("td", { dataset: { field: "t" } }), point: el("td", { dataset: { field: "point" } }) };
+      const row = {
+        t: el("td", { dataset: { field: "t" } }),
+        point: el("td", { dataset: { field: "point" } }),
+      };
       cells.push(row);
       const name = el("th", { scope: "row", text: `t${subscript(k + 1)}` });
       rows.push(el("tr", { dataset: { root: String(k) } }, name, row.t, row.point));
     }
-    const head = el("thead", {}, el("tr", {},
-      el("th", { scope: "col", text: t("lineIntersection.tableRoot") }),
-      el("th", { scope: "col", text: "t" }),
-      el("th", { scope: "col", text: t("lineIntersection.tablePoint") })));
+    const head = el(
+      "thead",
+      {},
+      el(
+        "tr",
+        {},
+        el("th", { scope: "col", text: t("lineIntersection.tableRoot") }),
+        el("th", { scope: "col", text: "t" }),
+        el("th", { scope: "col", text: t("lineIntersection.tablePoint") }),
+      ),
+    );
     table.hidden = count === 0;
     table.replaceChildren(head, el("tbody", {}, rows));
     return cells;
@@ -379,7 +417,8 @@ export function setup(ui) {
   return {
     update(s, d) {
       const { roots, points, error } = d.found;
-      if (error && d.found !== reported) ui.status(t("lineIntersection.failed", { message: error }), "error");
+      if (error && d.found !== reported)
+        ui.status(t("lineIntersection.failed", { message: error }), "error");
       reported = d.found;
       const count = roots.length;
       const caption = t("lineIntersection.tableCaption", { tolerance: ROOT_TOLERANCE });
@@ -389,7 +428,10 @@ export function setup(ui) {
         // Exact fractions too when t is a simple one (1/3, 1/2 …): the hand-made cases read so.
         const fraction = simpleFraction(roots[k]);
         const decimals = fmt(roots[k]);
-        setText(cells[k].t, fraction && fraction.den > 1 ? `${decimals} = ${fractionText(fraction)}` : decimals);
+        setText(
+          cells[k].t,
+          fraction && fraction.den > 1 ? `${decimals} = ${fractionText(fraction)}` : decimals,
+        );
         setText(cells[k].point, `(${fmt(points[2 * k])}, ${fmt(points[2 * k + 1])})`);
       }
     },

@@ -60,7 +60,19 @@ const SPAN_SHADE = 1.6;
  * k = 5, whose active points P₂ … P₅ have the uniform weights 1/48, 23/48, 23/48, 1/48.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 1], [1, 4], [3, 5], [5, 2], [7, 0], [9, 3], [11, 5], [13, 3], [14, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 1],
+      [1, 4],
+      [3, 5],
+      [5, 2],
+      [7, 0],
+      [9, 3],
+      [11, 5],
+      [13, 3],
+      [14, 0],
+    ].map(Object.freeze),
+  ),
   degree: 3,
   u: 2.5,
   point: 4,
@@ -119,7 +131,14 @@ function support(s, d) {
     else outside += value;
   }
   const closing = hi === b ? "]" : ")";
-  return { lo, hi, samples: d.curve.sample(us), inside, outside, range: [knotText(lo), `${knotText(hi)}${closing}`] };
+  return {
+    lo,
+    hi,
+    samples: d.curve.sample(us),
+    inside,
+    outside,
+    range: [knotText(lo), `${knotText(hi)}${closing}`],
+  };
 }
 
 /** The span k of u, the basis there, C(u), the active points P_{k−p} … P_k and their hull. */
@@ -127,7 +146,13 @@ function atU(s, d) {
   const k = d.curve.span(s.u);
   const active = [];
   for (let i = k - s.degree; i <= k; i++) active.push(i);
-  return { k, active, basis: d.curve.basis(s.u), point: d.curve.evaluate(s.u), hull: convexHull(s.points, active) };
+  return {
+    k,
+    active,
+    basis: d.curve.basis(s.u),
+    point: d.curve.evaluate(s.u),
+    hull: convexHull(s.points, active),
+  };
 }
 
 /** What the core returns, recomputed when its fields changed. */
@@ -146,35 +171,52 @@ const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), r
 const names = (indices) => indices.map((i) => `P${subscript(i)}`).join(", ");
 
 export const controls = [
-  parameterStrip("u", { height: STRIP_PX, margin: STRIP_MARGIN, step: U_STEP, range: (s, d) => d.domain }),
+  parameterStrip("u", {
+    height: STRIP_PX,
+    margin: STRIP_MARGIN,
+    step: U_STEP,
+    range: (s, d) => d.domain,
+  }),
   group(
     null,
     slider("u", { label: "localControl.control.u", range: (s, d) => d.domain, step: U_STEP }),
-    readout("span", (s, d) => t("localControl.readout.span", { k: d.at.k, names: names(d.at.active) }), {
-      kind: "readout",
-      live: true,
-      data: (s, d) => ({
-        span: String(d.at.k),
-        active: d.at.active.join(" "),
-        hullVertices: String(d.at.hull.length),
-        wholeHullVertices: String(d.wholeHull.length),
-      }),
-    }),
+    readout(
+      "span",
+      (s, d) => t("localControl.readout.span", { k: d.at.k, names: names(d.at.active) }),
+      {
+        kind: "readout",
+        live: true,
+        data: (s, d) => ({
+          span: String(d.at.k),
+          active: d.at.active.join(" "),
+          hullVertices: String(d.at.hull.length),
+          wholeHullVertices: String(d.wholeHull.length),
+        }),
+      },
+    ),
     readout("hull", (s, d) => tp("localControl.readout.hull", d.at.hull.length)),
   ),
   group(
     null,
-    slider("point", { label: "localControl.control.point", range: (s) => [0, s.points.length - 1], ...INTEGER }),
-    readout("support", (s, d) => {
-      const [lo, hi] = d.support.range;
-      return t("localControl.readout.support", { name: `P${subscript(s.point)}`, lo, hi });
-    }, {
-      data: (s, { support: { lo, hi, inside, outside } }) => ({
-        support: `${lo},${hi}`,
-        insideSum: String(inside),
-        outsideSum: String(outside),
-      }),
+    slider("point", {
+      label: "localControl.control.point",
+      range: (s) => [0, s.points.length - 1],
+      ...INTEGER,
     }),
+    readout(
+      "support",
+      (s, d) => {
+        const [lo, hi] = d.support.range;
+        return t("localControl.readout.support", { name: `P${subscript(s.point)}`, lo, hi });
+      },
+      {
+        data: (s, { support: { lo, hi, inside, outside } }) => ({
+          support: `${lo},${hi}`,
+          insideSum: String(inside),
+          outsideSum: String(outside),
+        }),
+      },
+    ),
   ),
   group(
     null,
@@ -213,7 +255,10 @@ export const figure = {
 /** The knot joints on the curve and the knot ticks on the strip. */
 const stylesFor = themed((theme) => ({
   dot: Object.freeze({
-    fill: theme.text, stroke: theme.background, width: WIDTH.helper, radius: RADIUS.constructionPoint,
+    fill: theme.text,
+    stroke: theme.background,
+    width: WIDTH.helper,
+    radius: RADIUS.constructionPoint,
   }),
   tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
 }));
@@ -248,7 +293,8 @@ export function draw(r, v, s, d) {
   r.paint(theme.basisBand[colour]);
   flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
   r.paint(theme.curve);
-  for (let j = 0; j < d.marks.values.length; j++) r.point(v.sx(d.joints[2 * j]), v.sy(d.joints[2 * j + 1]), styles.dot);
+  for (let j = 0; j < d.marks.values.length; j++)
+    r.point(v.sx(d.joints[2 * j]), v.sy(d.joints[2 * j + 1]), styles.dot);
   const lit = s.points[s.point];
   r.point(v.sx(lit[0]), v.sy(lit[1]), theme.basisRing[colour]);
   d.handles.draw(r, v);
@@ -266,7 +312,16 @@ export function draw(r, v, s, d) {
   const dy = py - cy / d.at.active.length;
   const length = Math.hypot(dx, dy);
   const [ux, uy] = length < 1 ? [0, -1] : [dx / length, dy / length];
-  placeLabel(r, t("localControl.pointLabel"), px, py, ux, uy, theme.pointOnCurve.radius * r.scale, theme.labelPoint);
+  placeLabel(
+    r,
+    t("localControl.pointLabel"),
+    px,
+    py,
+    ux,
+    uy,
+    theme.pointOnCurve.radius * r.scale,
+    theme.labelPoint,
+  );
 
   drawStrip(r, s, d, theme, styles, colour);
 }
@@ -317,7 +372,8 @@ export function formula(s, d) {
   const terms = d.at.active.map((j) => `${value(basis[j], true)}\\,P_{${j}}`);
   const [x, y] = point;
   const inexact = !Number.isInteger(x) || !Number.isInteger(y);
-  const approx = num.exact && inexact && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
+  const approx =
+    num.exact && inexact && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
   const [lo, hi] = d.support.range;
   const only = t("localControl.formula.only");
   const vertices = tp("localControl.formula.vertices", d.at.hull.length);
@@ -338,8 +394,16 @@ export function label(s, d) {
   const [lo, hi] = d.support.range;
   const { k, active, point, hull } = d.at;
   return t("localControl.aria", {
-    kind: degreeName(s.degree), count: s.points.length, name: `P${subscript(s.point)}`, lo, hi,
-    u: fmt(s.u), k, names: names(active), x: fmt(point[0], 2), y: fmt(point[1], 2),
+    kind: degreeName(s.degree),
+    count: s.points.length,
+    name: `P${subscript(s.point)}`,
+    lo,
+    hi,
+    u: fmt(s.u),
+    k,
+    names: names(active),
+    x: fmt(point[0], 2),
+    y: fmt(point[1], 2),
     hull: tp("localControl.vertices", hull.length),
   });
 }
@@ -353,10 +417,13 @@ export function setup(ui) {
 
   function build(n, p) {
     shape = `${n}/${p}`;
-    const head = el("tr", {},
+    const head = el(
+      "tr",
+      {},
       el("th", { scope: "col", text: t("localControl.table.point") }),
       el("th", { scope: "col", text: t("localControl.table.value", { p: subscript(p) }) }),
-      el("th", { scope: "col", text: t("localControl.table.support") }));
+      el("th", { scope: "col", text: t("localControl.table.support") }),
+    );
     rows = [];
     for (let j = 0; j <= n; j++) {
       const value = el("td", { dataset: { index: String(j), column: "value" } });
@@ -364,7 +431,14 @@ export function setup(ui) {
       const row = el("tr", {}, el("th", { scope: "row", text: `P${subscript(j)}` }), value, range);
       rows.push({ row, value, range });
     }
-    table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows.map((row) => row.row)));
+    table.replaceChildren(
+      el("thead", {}, head),
+      el(
+        "tbody",
+        {},
+        rows.map((row) => row.row),
+      ),
+    );
   }
 
   return {

@@ -12,7 +12,14 @@ import { field, checkNumber } from "../lib/validate.js";
 import { slider, choice, pointButtons, readout, group } from "../lib/panel.js";
 import { placeLabel } from "../lib/handles.js";
 import { CurvePicker } from "../lib/curve-picker.js";
-import { fmt, subscript, simpleFraction, fractionText, fractionTex, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  fractionText,
+  fractionTex,
+  degreeName,
+} from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -28,7 +35,16 @@ export const section = 3;
 
 /** Six integer points, a uniform quadratic (the Croatian notes' example size), segment 2 at t = 1/2. */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 5], [6, 6], [8, 1], [12, 0], [14, 5]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 5],
+      [6, 6],
+      [8, 1],
+      [12, 0],
+      [14, 5],
+    ].map(Object.freeze),
+  ),
   degree: 2,
   knots: "uniform",
   segment: 2,
@@ -79,7 +95,9 @@ export const derive = {
   from: ["points", "degree", "knots"],
   build(s, sl) {
     const flat = flatten(s.points);
-    return { curve: new sl.BSplineCurve(flat, 2, s.degree, sl.knotVector(flat, 2, s.degree, s.knots)) };
+    return {
+      curve: new sl.BSplineCurve(flat, 2, s.degree, sl.knotVector(flat, 2, s.degree, s.knots)),
+    };
   },
   moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
 };
@@ -136,13 +154,19 @@ const numberTex = (x) => numberText(x, true);
 const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
 
 export const controls = [
-  group("matrixForm.control.degree", choice("degree", {
-    options: DEGREES.map((p) => ({ value: p, label: `matrixForm.degree.${p}` })),
-    refuse: (p, s) => (p > s.points.length - 1 ? degreeError(p, s.points.length) : null),
-  })),
-  group("matrixForm.control.knots", choice("knots", {
-    options: KNOT_KINDS.map((value) => ({ value, label: `matrixForm.knots.${value}` })),
-  })),
+  group(
+    "matrixForm.control.degree",
+    choice("degree", {
+      options: DEGREES.map((p) => ({ value: p, label: `matrixForm.degree.${p}` })),
+      refuse: (p, s) => (p > s.points.length - 1 ? degreeError(p, s.points.length) : null),
+    }),
+  ),
+  group(
+    "matrixForm.control.knots",
+    choice("knots", {
+      options: KNOT_KINDS.map((value) => ({ value, label: `matrixForm.knots.${value}` })),
+    }),
+  ),
   group(
     null,
     slider("segment", {
@@ -151,19 +175,37 @@ export const controls = [
       ...INTEGER,
       error: (value, s) => t("matrixForm.segmentRange", { value, max: segmentCount(s) }),
     }),
-    slider("t", { label: "matrixForm.control.t", input: "control.t.input", min: 0, max: 1, step: T_STEP }),
-    readout("periodic", (s, d) => {
-      return t(d.segment.same ? "matrixForm.periodic.yes" : "matrixForm.periodic.no", { i: s.segment });
-    }, {
-      kind: "readout", live: true, data: (s, d) => ({ periodic: String(d.segment.same) }),
+    slider("t", {
+      label: "matrixForm.control.t",
+      input: "control.t.input",
+      min: 0,
+      max: 1,
+      step: T_STEP,
     }),
+    readout(
+      "periodic",
+      (s, d) => {
+        return t(d.segment.same ? "matrixForm.periodic.yes" : "matrixForm.periodic.no", {
+          i: s.segment,
+        });
+      },
+      {
+        kind: "readout",
+        live: true,
+        data: (s, d) => ({ periodic: String(d.segment.same) }),
+      },
+    ),
   ),
   group(
     null,
-    readout("degree", (s, d) => t("matrixForm.degree", {
-      p: s.degree, count: s.points.length, segments: tp("matrixForm.segments", segmentCount(s)),
-      knots: Array.from(d.knots, (u) => numberText(u)).join(" "),
-    })),
+    readout("degree", (s, d) =>
+      t("matrixForm.degree", {
+        p: s.degree,
+        count: s.points.length,
+        segments: tp("matrixForm.segments", segmentCount(s)),
+        knots: Array.from(d.knots, (u) => numberText(u)).join(" "),
+      }),
+    ),
     pointButtons("points", {
       min: (s) => Math.max(MIN_POINTS, s.degree + 1),
       max: MAX_POINTS,
@@ -218,7 +260,16 @@ export function draw(r, v, s, d) {
     dy = -dy;
   }
   r.point(px, py, theme.pointOnCurve);
-  placeLabel(r, d.pointLabel, px, py, dx, dy, theme.pointOnCurve.radius * r.scale, theme.labelPoint);
+  placeLabel(
+    r,
+    d.pointLabel,
+    px,
+    py,
+    dx,
+    dy,
+    theme.pointOnCurve.radius * r.scale,
+    theme.labelPoint,
+  );
 }
 
 /**
@@ -227,7 +278,8 @@ export function draw(r, v, s, d) {
  */
 function commonDenominator(matrix) {
   for (let den = 1; den <= MAX_FACTOR; den++) {
-    if (matrix.every((m) => Math.abs(m * den - Math.round(m * den)) < MATRIX_TOLERANCE * den)) return den;
+    if (matrix.every((m) => Math.abs(m * den - Math.round(m * den)) < MATRIX_TOLERANCE * den))
+      return den;
   }
   return 0;
 }
@@ -249,7 +301,12 @@ export function formula(s, d) {
   const { factor, entries } = shownMatrix(s, d);
   const rowsTex = [];
   for (let row = 0; row < size; row++) {
-    rowsTex.push(entries.slice(row * size, (row + 1) * size).map(numberTex).join(" & "));
+    rowsTex.push(
+      entries
+        .slice(row * size, (row + 1) * size)
+        .map(numberTex)
+        .join(" & "),
+    );
   }
   const matrix = (rows) => `\\begin{bmatrix} ${rows} \\end{bmatrix}`;
   const mTex = `${factor > 1 ? `\\frac{1}{${factor}}` : ""}${matrix(rowsTex.join(" \\\\ "))}`;
@@ -280,8 +337,13 @@ export function formula(s, d) {
 export function label(s, d) {
   const [x, y] = d.at.point;
   return t("matrixForm.aria", {
-    kind: degreeName(s.degree), knots: t(`matrixForm.knots.${s.knots}`), count: s.points.length, i: s.segment,
-    t: fmt(s.t), x: fmt(x, 2), y: fmt(y, 2),
+    kind: degreeName(s.degree),
+    knots: t(`matrixForm.knots.${s.knots}`),
+    count: s.points.length,
+    i: s.segment,
+    t: fmt(s.t),
+    x: fmt(x, 2),
+    y: fmt(y, 2),
     periodic: d.segment.same ? t("matrixForm.aria.periodic") : t("matrixForm.aria.notPeriodic"),
   });
 }
@@ -297,9 +359,17 @@ export function setup(ui) {
   const result = titledTable("result", {
     caption: t("matrixForm.resultCaption"),
     children: [
-      el("tbody", {},
+      el(
+        "tbody",
+        {},
         el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.product") }), productCell),
-        el("tr", {}, el("th", { scope: "row", text: t("matrixForm.result.evaluate") }), evaluateCell)),
+        el(
+          "tr",
+          {},
+          el("th", { scope: "row", text: t("matrixForm.result.evaluate") }),
+          evaluateCell,
+        ),
+      ),
     ],
   });
   ui.ctx.slots.details.append(title, wrap, result.title, result.wrap);

@@ -42,7 +42,18 @@ const P = 3;
  * enough to merge one of them up to multiplicity 4 (a break between two Bézier pieces).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [1, 3], [3, 4], [4, 1], [6, 4], [7, 1], [9, 3], [10, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [1, 3],
+      [3, 4],
+      [4, 1],
+      [6, 4],
+      [7, 1],
+      [9, 3],
+      [10, 0],
+    ].map(Object.freeze),
+  ),
   knots: Object.freeze([0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5]),
   repeatPoint: 4,
   repeatTimes: 1,
@@ -70,7 +81,8 @@ const curveCount = (s) => s.points.length + s.repeatTimes - 1;
 
 export const fields = {
   points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
-  repeatPoint: (s, name) => checkNumber(s, name, { min: 0, max: s.points.length - 1, integer: true }),
+  repeatPoint: (s, name) =>
+    checkNumber(s, name, { min: 0, max: s.points.length - 1, integer: true }),
   repeatTimes: field.number({ min: 1, max: MAX_REPEAT, integer: true }),
   knots: knotsField({ count: curveCount, degree: () => P }),
 };
@@ -97,7 +109,9 @@ function expandedPoints(state) {
 /** The curve on the repeated points, in wasm; a dragged point moves all its copies in place. */
 export const derive = {
   from: ["points", "knots", "repeatPoint", "repeatTimes"],
-  build: (s, sl) => ({ curve: new sl.BSplineCurve(expandedPoints(s), 2, P, Float64Array.from(s.knots)) }),
+  build: (s, sl) => ({
+    curve: new sl.BSplineCurve(expandedPoints(s), 2, P, Float64Array.from(s.knots)),
+  }),
   moved(m, i, xy, s) {
     const copies = i === s.repeatPoint ? s.repeatTimes : 1;
     for (let c = 0; c < copies; c++) m.curve.setControlPoint(expandedIndex(s, i) + c, xy);
@@ -126,7 +140,14 @@ function measure(s, d) {
   const spans = curve.spans(); // span index k of each segment: [u_k, u_{k+1}]
   const placed = [];
   for (let k = 0; k < pieces.length; k++) {
-    placed.push(sl.BezierCurve.withInterval(pieces[k].controlPoints(), 2, knots[spans[k]], knots[spans[k] + 1]));
+    placed.push(
+      sl.BezierCurve.withInterval(
+        pieces[k].controlPoints(),
+        2,
+        knots[spans[k]],
+        knots[spans[k] + 1],
+      ),
+    );
     pieces[k].free();
   }
   const joints = [];
@@ -134,7 +155,9 @@ function measure(s, d) {
     const knot = knots[spans[k + 1]];
     const { c, g } = sl.jointContinuity(placed[k], placed[k + 1]);
     joints.push({
-      knot, c, g,
+      knot,
+      c,
+      g,
       left: Array.from(placed[k].evaluate(knot)),
       right: Array.from(placed[k + 1].evaluate(knot)),
       speed: Array.from(curve.derivative(knot, 1)),
@@ -181,7 +204,9 @@ function findStudied(s, d) {
     const joint = jointAt(d, knots[pick]);
     const through = passesThrough(s, joint);
     const u = knotText(knots[pick]);
-    const label = through ? t("multiplicity.throughLabel", { u, point: through }) : t("multiplicity.pointLabel", { u });
+    const label = through
+      ? t("multiplicity.throughLabel", { u, point: through })
+      : t("multiplicity.pointLabel", { u });
     knot = { a, b, value: knots[pick], r: b - a + 1, joint, through, label };
   }
   let repeat = null;
@@ -241,7 +266,10 @@ const repeatChoice = {
     const control = radios({
       name: "repeat",
       value: String(ui.state.repeatTimes),
-      options: [1, 2, 3].map((k) => ({ value: String(k), label: t("multiplicity.repeatOption", { k }) })),
+      options: [1, 2, 3].map((k) => ({
+        value: String(k),
+        label: t("multiplicity.repeatOption", { k }),
+      })),
       onChange(value) {
         const s = ui.state;
         const j = ui.handles.selected >= 0 ? ui.handles.selected : s.repeatPoint;
@@ -267,14 +295,24 @@ export const controls = [
   }),
   group(
     "multiplicity.knotLegend",
-    readout("knot", (s, d) => {
-      const k = d.studied.knot;
-      if (!k) return t("multiplicity.noKnot");
-      const guaranteed = continuityText(P - k.r < 0 ? -1 : P - k.r);
-      const names = knotNames(k.a, k.b);
-      const measured = measuredText(k.joint);
-      return t("multiplicity.knotReadout", { names, u: knotText(k.value), r: k.r, guaranteed, measured });
-    }, { kind: "readout" }),
+    readout(
+      "knot",
+      (s, d) => {
+        const k = d.studied.knot;
+        if (!k) return t("multiplicity.noKnot");
+        const guaranteed = continuityText(P - k.r < 0 ? -1 : P - k.r);
+        const names = knotNames(k.a, k.b);
+        const measured = measuredText(k.joint);
+        return t("multiplicity.knotReadout", {
+          names,
+          u: knotText(k.value),
+          r: k.r,
+          guaranteed,
+          measured,
+        });
+      },
+      { kind: "readout" },
+    ),
     readout("knot-note", (s, d) => {
       const k = d.studied.knot;
       if (!k?.through) return t("multiplicity.knotHint");
@@ -299,7 +337,8 @@ export const controls = [
         name: "reset-knots",
         label: "multiplicity.resetKnots",
         title: "multiplicity.resetKnots.title",
-        run: (ui) => setKnots(ui, uniformKnots(ui, ui.state), true, RULER) && ui.data.ruler.forgetPointer(),
+        run: (ui) =>
+          setKnots(ui, uniformKnots(ui, ui.state), true, RULER) && ui.data.ruler.forgetPointer(),
       },
     ]),
   ),
@@ -312,7 +351,12 @@ export const controls = [
       if (s.repeatTimes === 1) return t("multiplicity.repeatNone", { point: points });
       if (!rep) return t("multiplicity.repeatEnd", { points });
       const u = knotText(s.knots[rep.k]);
-      return t("multiplicity.repeatReadout", { points, k: subscript(rep.k), u, measured: measuredText(rep.joint) });
+      return t("multiplicity.repeatReadout", {
+        points,
+        k: subscript(rep.k),
+        u,
+        measured: measuredText(rep.joint),
+      });
     }),
     readout("repeat-note", () => t("multiplicity.repeatHint")),
   ),
@@ -356,7 +400,14 @@ export function draw(r, v, s, d) {
     r.point(v.sx(jt.right[0]), v.sy(jt.right[1]), theme.levelPoint[1]);
     if (jt === studied?.joint) continue;
     const offset = 6 * r.scale;
-    r.text(jt.label, v.sx(jt.right[0]) + offset, v.sy(jt.right[1]) + offset, theme.labelSmall, "left", "top");
+    r.text(
+      jt.label,
+      v.sx(jt.right[0]) + offset,
+      v.sy(jt.right[1]) + offset,
+      theme.labelSmall,
+      "left",
+      "top",
+    );
   }
   d.handles.draw(r, v);
   if (studied?.joint) {
@@ -396,8 +447,12 @@ export function formula(s, d) {
     for (let i = k.a; i <= k.b; i++) idx.push(`u_{${i}}`);
     const jt = k.joint;
     const measured = jt ? (jt.c < 0 ? `\\text{${t("knotRuler.break")}}` : cTex(jt)) : "";
-    const through = k.through ? ` = ${k.through.replace(/P(\S+)/, (m) => `P_{${fromSubscript(m.slice(1))}}`)}` : "";
-    const at = jt ? `C(${knotText(k.value)}) = (${fmt(jt.right[0])},\\ ${fmt(jt.right[1])})${through}` : "";
+    const through = k.through
+      ? ` = ${k.through.replace(/P(\S+)/, (m) => `P_{${fromSubscript(m.slice(1))}}`)}`
+      : "";
+    const at = jt
+      ? `C(${knotText(k.value)}) = (${fmt(jt.right[0])},\\ ${fmt(jt.right[1])})${through}`
+      : "";
     const value = jt && jt.c >= 0 ? `,\\quad ${at}` : "";
     const rule = g < 0 ? `\\text{${t("multiplicity.formulaBreak")}}` : `C^{3-${k.r}} = C^{${g}}`;
     const head = `${idx.join(" = ")} = ${knotText(k.value)}:\\quad r = ${k.r}`;
@@ -406,7 +461,10 @@ export function formula(s, d) {
   const rep = d.studied.repeat;
   if (s.repeatTimes > 1 && rep?.joint) {
     const jt = rep.joint;
-    const names = d.names[s.repeatPoint].replace(/P([₀-₉]+)/g, (m, sub) => `P_{${fromSubscript(sub)}}`);
+    const names = d.names[s.repeatPoint].replace(
+      /P([₀-₉]+)/g,
+      (m, sub) => `P_{${fromSubscript(sub)}}`,
+    );
     const speed = `C'(u_{${rep.k}}) = (${fmt(jt.speed[0])},\\ ${fmt(jt.speed[1])})`;
     lines.push(`${names}:\\quad ${speed},\\quad ${measuredWord}\\ ${cTex(jt)}`);
   }
@@ -426,10 +484,16 @@ export function label(s, d) {
     count: s.knots.length - P - 1,
     knots: s.knots.map(knotText).join(", "),
     list,
-    repeat: s.repeatTimes > 1
-      ? t("multiplicity.ariaRepeat", { points: d.names[s.repeatPoint], measured: measuredText(rep?.joint) })
+    repeat:
+      s.repeatTimes > 1
+        ? t("multiplicity.ariaRepeat", {
+            points: d.names[s.repeatPoint],
+            measured: measuredText(rep?.joint),
+          })
+        : "",
+    through: k?.through
+      ? t("multiplicity.ariaThrough", { u: knotText(k.value), point: k.through })
       : "",
-    through: k?.through ? t("multiplicity.ariaThrough", { u: knotText(k.value), point: k.through }) : "",
   });
 }
 
@@ -452,10 +516,12 @@ export function setup(ui) {
   };
   const notesCells = [];
   const notesRows = NOTES_TABLE.map((row, k) => {
-    const cells = row.map((text, column) => el("td", {
-      dataset: { column: column === 0 ? "points" : "knots", multiplicity: String(k + 1) },
-      text: column === 1 && k === 3 ? t("multiplicity.notesBreak") : text,
-    }));
+    const cells = row.map((text, column) =>
+      el("td", {
+        dataset: { column: column === 0 ? "points" : "knots", multiplicity: String(k + 1) },
+        text: column === 1 && k === 3 ? t("multiplicity.notesBreak") : text,
+      }),
+    );
     notesCells.push(cells);
     const head = el("th", { scope: "row", text: String(k + 1) });
     return el("tr", { dataset: { multiplicity: String(k + 1) } }, head, cells);
@@ -464,7 +530,10 @@ export function setup(ui) {
   const columns = (...keys) => el("tr", {}, keys.map(column));
   const notes = titledTable("notes", {
     caption: t("multiplicity.notesCaption"),
-    children: [el("thead", {}, columns("colMultiplicity", "colPoints", "colKnots")), el("tbody", {}, notesRows)],
+    children: [
+      el("thead", {}, columns("colMultiplicity", "colPoints", "colKnots")),
+      el("tbody", {}, notesRows),
+    ],
   });
   const knotsTable = titledTable("knots", { caption: t("multiplicity.knotsCaption") });
   ui.ctx.slots.details.append(notes.title, notes.wrap, knotsTable.title, knotsTable.wrap);
@@ -474,7 +543,10 @@ export function setup(ui) {
       const studied = d.studied.knot;
       const knotRow = studied ? Math.min(studied.r, 4) : 0;
       for (let k = 0; k < 4; k++) {
-        notesCells[k][0].classList.toggle("sl-highlight", s.repeatTimes > 1 && k + 1 === s.repeatTimes);
+        notesCells[k][0].classList.toggle(
+          "sl-highlight",
+          s.repeatTimes > 1 && k + 1 === s.repeatTimes,
+        );
         notesCells[k][1].classList.toggle("sl-highlight", k + 1 === knotRow);
       }
       const rows = d.continuity.map((entry) => {
@@ -487,17 +559,27 @@ export function setup(ui) {
           const sides = { left: pair(jt.left), right: pair(jt.right) };
           point = jt.c >= 0 ? sides.right : t("multiplicity.pointBreak", sides);
         }
-        const row = el("tr", { dataset: { knot: knotText(entry.knot) } },
+        const row = el(
+          "tr",
+          { dataset: { knot: knotText(entry.knot) } },
           el("th", { scope: "row", text: `${knotNames(a, b)} = ${knotText(entry.knot)}` }),
           el("td", { dataset: { cell: "multiplicity" }, text: String(entry.multiplicity) }),
           el("td", { dataset: { cell: "guaranteed" }, text: continuityText(entry.continuity) }),
           el("td", { dataset: { cell: "measured" }, text: measuredText(jt) }),
           el("td", { dataset: pointData, text: point }),
-          el("td", { dataset: { cell: "through" }, text: passesThrough(s, jt) || "—" }));
+          el("td", { dataset: { cell: "through" }, text: passesThrough(s, jt) || "—" }),
+        );
         if (studied && entry.knot === studied.value) row.classList.add("sl-highlight");
         return row;
       });
-      const head = columns("colKnot", "colR", "colGuaranteed", "colMeasured", "colPoint", "colThrough");
+      const head = columns(
+        "colKnot",
+        "colR",
+        "colGuaranteed",
+        "colMeasured",
+        "colPoint",
+        "colThrough",
+      );
       knotsTable.table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
     },
   };

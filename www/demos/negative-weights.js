@@ -29,7 +29,13 @@ export const section = 4;
  * P(1/2) = (P₀ + 2w₁P₁ + P₂)/(2 + 2w₁) = (2, 6).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 3], [4, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 3],
+      [4, 0],
+    ].map(Object.freeze),
+  ),
   w1: -2,
 });
 
@@ -115,9 +121,15 @@ export const derive = {
 /** What is drawn and said: the samples, the poles, P(1/2), whether the curve leaves its hull. */
 export const compute = {
   /** The core's teaching data: homogeneous samples, the roots of w(t), the pole directions. */
-  teaching: [["points", "w1"], (s, d) => d.sl.rationalPoles(flatten(s.points), 2, weightsOf(s), HOM_SAMPLES)],
+  teaching: [
+    ["points", "w1"],
+    (s, d) => d.sl.rationalPoles(flatten(s.points), 2, weightsOf(s), HOM_SAMPLES),
+  ],
   hom: [["points", "w1"], (s, d) => d.teaching.samples],
-  samples: [["points", "w1"], (s, d) => (d.library.refusal ? null : d.library.curve.sampleUniform(CURVE_SAMPLES))],
+  samples: [
+    ["points", "w1"],
+    (s, d) => (d.library.refusal ? null : d.library.curve.sampleUniform(CURVE_SAMPLES)),
+  ],
   /** The roots, and the range of the sampled w(t) (the plot's scale). */
   poles: [
     ["points", "w1"],
@@ -153,7 +165,8 @@ export const compute = {
       for (let k = 0; k < HOM_SAMPLES; k++) {
         const w = d.hom[3 * k + 2];
         if (Math.abs(w) <= ZERO_W) continue;
-        if (!inTriangle(d.hom[3 * k] / w, d.hom[3 * k + 1] / w, s.points, HULL_TOLERANCE)) return true;
+        if (!inTriangle(d.hom[3 * k] / w, d.hom[3 * k + 1] / w, s.points, HULL_TOLERANCE))
+          return true;
       }
       return false;
     },
@@ -166,7 +179,7 @@ export const compute = {
       const lo = Math.min(0, minW);
       const hi = Math.max(1, maxW);
       const pad = PLOT_PAD * (hi - lo);
-      return { lo: lo - pad, hi: hi + pad, loLabel: fmt(minW < 0 ? minW : 0, 2) };
+      return { lo: lo - pad, hi: hi + pad, loLabel: fmt(Math.min(minW, 0), 2) };
     },
   ],
 };
@@ -183,47 +196,68 @@ export const controls = [
       step: W1_STEP,
       error: "negativeWeights.badWeight",
     }),
-    actions(PRESETS.map((w) => ({
-      name: `w1-${w}`,
-      label: "negativeWeights.preset",
-      params: { w: String(w).replace("-", "−") },
-      run: (ui) => ui.set("w1", w),
-    }))),
+    actions(
+      PRESETS.map((w) => ({
+        name: `w1-${w}`,
+        label: "negativeWeights.preset",
+        params: { w: String(w).replace("-", "−") },
+        run: (ui) => ui.set("w1", w),
+      })),
+    ),
   ),
   group(
     "negativeWeights.libraryLegend",
-    readout("library", (s, d) => {
-      const { refusal } = d.library;
-      return refusal ? t("negativeWeights.libraryRefuses", { message: refusal }) : t("negativeWeights.libraryAccepts");
-    }, { live: true, data: (s, d) => ({ refused: String(!!d.library.refusal) }) }),
+    readout(
+      "library",
+      (s, d) => {
+        const { refusal } = d.library;
+        return refusal
+          ? t("negativeWeights.libraryRefuses", { message: refusal })
+          : t("negativeWeights.libraryAccepts");
+      },
+      { live: true, data: (s, d) => ({ refused: String(!!d.library.refusal) }) },
+    ),
   ),
   group(
     "negativeWeights.resultLegend",
-    readout("poles", (s, d) => {
-      const { count } = d.poles;
-      return count ? tp("negativeWeights.poles", count, { list: poleList(d) }) : t("negativeWeights.noPoles");
-    }, {
-      kind: "readout",
-      data: (s, d) => ({
-        poles: String(d.poles.count),
-        poleTs: Array.from(d.poles.ts).join(","),
-        poleDirections: Array.from(d.poles.directions).join(","),
-        minW: String(d.poles.minW),
-      }),
-    }),
-    readout("hull", (s, d) => t(d.outsideHull ? "negativeWeights.outside" : "negativeWeights.inside"), {
-      data: (s, d) => ({
-        outsideHull: String(d.outsideHull),
-        middle: d.middle ? `${d.middle[0]},${d.middle[1]}` : "",
-      }),
-    }),
+    readout(
+      "poles",
+      (s, d) => {
+        const { count } = d.poles;
+        return count
+          ? tp("negativeWeights.poles", count, { list: poleList(d) })
+          : t("negativeWeights.noPoles");
+      },
+      {
+        kind: "readout",
+        data: (s, d) => ({
+          poles: String(d.poles.count),
+          poleTs: Array.from(d.poles.ts).join(","),
+          poleDirections: Array.from(d.poles.directions).join(","),
+          minW: String(d.poles.minW),
+        }),
+      },
+    ),
+    readout(
+      "hull",
+      (s, d) => t(d.outsideHull ? "negativeWeights.outside" : "negativeWeights.inside"),
+      {
+        data: (s, d) => ({
+          outsideHull: String(d.outsideHull),
+          middle: d.middle ? `${d.middle[0]},${d.middle[1]}` : "",
+        }),
+      },
+    ),
   ),
 ];
 
 const insetScratch = [0, 0, 0, 0];
 
 function plotHeight(height) {
-  return Math.max(Math.round(height * PLOT_FRACTION), Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)));
+  return Math.max(
+    Math.round(height * PLOT_FRACTION),
+    Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)),
+  );
 }
 
 export const figure = {
@@ -286,7 +320,15 @@ export function draw(r, v, s, d) {
   // The caption first: marks drawn later stay on top of its halo.
   const accepted = d.samples !== null;
   const caption = t(accepted ? "negativeWeights.figureAccepted" : "negativeWeights.figureRefused");
-  drawCaption(r, caption, 12 * k, 16 * k, accepted ? theme.labelSmall : theme.labelBold, r.width - 24 * k, "middle");
+  drawCaption(
+    r,
+    caption,
+    12 * k,
+    16 * k,
+    accepted ? theme.labelSmall : theme.labelBold,
+    r.width - 24 * k,
+    "middle",
+  );
 
   exits.clear();
   if (accepted) {
@@ -314,7 +356,14 @@ export function draw(r, v, s, d) {
   if (d.middle) {
     const [mx, my] = d.middle;
     r.point(v.sx(mx), v.sy(my), theme.pointOnCurve);
-    r.text(t("negativeWeights.middleLabel"), v.sx(mx) + 9 * k, v.sy(my), theme.labelPoint, "left", "middle");
+    r.text(
+      t("negativeWeights.middleLabel"),
+      v.sx(mx) + 9 * k,
+      v.sy(my),
+      theme.labelPoint,
+      "left",
+      "middle",
+    );
   }
   drawPlot(r, theme, w, h, d);
 }
@@ -363,10 +412,25 @@ function drawPlot(r, theme, w, h, d) {
   const left = plot.x0 - (TICK_PX + 2) * s;
   r.text("0", left, zero, theme.labelSmall, "right", "middle");
   r.text("1", left, pty(1), theme.labelSmall, "right", "middle");
-  if (plot.lo < -PLOT_PAD) r.text(d.plotRange.loLabel, left, plot.y0, theme.labelSmall, "right", "middle");
-  r.text(t("negativeWeights.tickHalf"), ptx(0.5), zero + (TICK_PX + 2) * s, theme.labelSmall, "center", "top");
+  if (plot.lo < -PLOT_PAD)
+    r.text(d.plotRange.loLabel, left, plot.y0, theme.labelSmall, "right", "middle");
+  r.text(
+    t("negativeWeights.tickHalf"),
+    ptx(0.5),
+    zero + (TICK_PX + 2) * s,
+    theme.labelSmall,
+    "center",
+    "top",
+  );
   r.text(t("negativeWeights.axisT"), plot.x1 + 4 * s, zero, theme.labelSmall, "left", "middle");
-  r.text(t("negativeWeights.plotTitle"), plot.x0 + 6 * s, plot.top + 8 * s, theme.labelSmall, "left", "top");
+  r.text(
+    t("negativeWeights.plotTitle"),
+    plot.x0 + 6 * s,
+    plot.top + 8 * s,
+    theme.labelSmall,
+    "left",
+    "top",
+  );
 
   // w(t) = W of the homogeneous samples: solid where positive, dashed where negative.
   const hom = d.hom;
@@ -435,7 +499,9 @@ export function label(s, d) {
     p1,
     p2,
     w: fmt(s.w1, 2),
-    verdict: refusal ? t("negativeWeights.ariaRefused", { message: refusal }) : t("negativeWeights.ariaAccepted"),
+    verdict: refusal
+      ? t("negativeWeights.ariaRefused", { message: refusal })
+      : t("negativeWeights.ariaAccepted"),
     poles: count
       ? t("negativeWeights.ariaPoles", { count, list: poleList(d) })
       : t("negativeWeights.ariaNoPoles", { min: fmt(minW, 2) }),

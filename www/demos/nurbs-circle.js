@@ -61,7 +61,8 @@ export const defaultState = Object.freeze({
 /** A length in [LENGTH_MIN, LENGTH_MAX], refused first when it is not > 0. */
 function length(state, name) {
   checkNumber(state, name);
-  if (state[name] <= 0) throw new Error(t("nurbsCircle.notPositive", { field: name, value: state[name] }));
+  if (state[name] <= 0)
+    throw new Error(t("nurbsCircle.notPositive", { field: name, value: state[name] }));
   checkNumber(state, name, { min: LENGTH_MIN, max: LENGTH_MAX });
 }
 const angle = field.number({ min: -ANGLE_MAX, max: ANGLE_MAX });
@@ -92,7 +93,8 @@ function buildCurve(sl, s) {
   const [cx, cy] = s.points[0];
   const start = s.start * RADIANS;
   const sweep = s.sweep * RADIANS;
-  if (!s.ellipse) return isFull(s) ? sl.circle(cx, cy, s.radius) : sl.circularArc(cx, cy, s.radius, start, sweep);
+  if (!s.ellipse)
+    return isFull(s) ? sl.circle(cx, cy, s.radius) : sl.circularArc(cx, cy, s.radius, start, sweep);
   const rotation = s.rotation * RADIANS;
   if (isFull(s)) return sl.ellipse(cx, cy, s.rx, s.ry, rotation);
   const c = Math.cos(rotation);
@@ -138,11 +140,15 @@ export const derive = {
     const weights = curve.weights();
     const knots = curve.knots();
     const distinct = [];
-    for (const u of knots) if (distinct.length === 0 || u !== distinct[distinct.length - 1]) distinct.push(u);
+    for (const u of knots)
+      if (distinct.length === 0 || u !== distinct[distinct.length - 1]) distinct.push(u);
     const last = base.length - 2;
-    const closed = Math.abs(base[0] - base[last]) <= EXACT_WEIGHT && Math.abs(base[1] - base[last + 1]) <= EXACT_WEIGHT;
+    const closed =
+      Math.abs(base[0] - base[last]) <= EXACT_WEIGHT &&
+      Math.abs(base[1] - base[last + 1]) <= EXACT_WEIGHT;
     const weightLabels = Array.from(weights, (w, i) => {
-      const name = i === 0 && closed ? `P₀ = P${subscript(weights.length - 1)}` : `P${subscript(i)}`;
+      const name =
+        i === 0 && closed ? `P₀ = P${subscript(weights.length - 1)}` : `P${subscript(i)}`;
       return `${name}: w = ${weightText(w)}`;
     });
     return {
@@ -178,7 +184,10 @@ function measure(s, samples) {
   let worst = 0;
   if (!s.ellipse) {
     for (let k = 0; k < SAMPLES; k++) {
-      worst = Math.max(worst, Math.abs(Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy) - s.radius));
+      worst = Math.max(
+        worst,
+        Math.abs(Math.hypot(samples[2 * k] - cx, samples[2 * k + 1] - cy) - s.radius),
+      );
     }
     return worst;
   }
@@ -229,7 +238,8 @@ const angleSlider = (name, refuse) =>
     refuse,
   });
 /** A zero sweep is refused before it reaches the core (the last good curve stays). */
-const refuseZero = (v) => (v === 0 ? t("nurbsCircle.refused", { message: t("nurbsCircle.zeroSweep") }) : null);
+const refuseZero = (v) =>
+  v === 0 ? t("nurbsCircle.refused", { message: t("nurbsCircle.zeroSweep") }) : null;
 const counted = (s, d) => d.controls.length / 2;
 /** The readout of the measurement: "nurbsCircle.errorCircle" or "…errorEllipse" (and its `Note`). */
 const errorKey = (s) => (s.ellipse ? "nurbsCircle.errorEllipse" : "nurbsCircle.errorCircle");
@@ -239,7 +249,12 @@ export const controls = [
   shownWhen((s) => !s.ellipse, group("nurbsCircle.circleLegend", lengthSlider("radius"))),
   shownWhen(
     (s) => s.ellipse,
-    group("nurbsCircle.ellipseLegend", lengthSlider("rx"), lengthSlider("ry"), angleSlider("rotation")),
+    group(
+      "nurbsCircle.ellipseLegend",
+      lengthSlider("rx"),
+      lengthSlider("ry"),
+      angleSlider("rotation"),
+    ),
   ),
   group(
     "nurbsCircle.arcLegend",
@@ -265,9 +280,14 @@ export const controls = [
     readout("count", (s, d) => t("nurbsCircle.count", { count: counted(s, d), pieces: d.pieces }), {
       data: (s, d) => ({ points: String(counted(s, d)), pieces: String(d.pieces) }),
     }),
-    readout("knots", (s, d) => t("nurbsCircle.knots", { knots: Array.from(d.knots, (u) => knotText(u)).join(", ") }), {
-      data: (s, d) => ({ knots: Array.from(d.knots, (u) => knotText(u)).join(" ") }),
-    }),
+    readout(
+      "knots",
+      (s, d) =>
+        t("nurbsCircle.knots", { knots: Array.from(d.knots, (u) => knotText(u)).join(", ") }),
+      {
+        data: (s, d) => ({ knots: Array.from(d.knots, (u) => knotText(u)).join(" ") }),
+      },
+    ),
   ),
 ];
 
@@ -300,7 +320,10 @@ function drawWeights(r, v, s, d) {
   for (let i = 0; i < count; i++) {
     const x = v.sx(controls[2 * i]);
     const y = v.sy(controls[2 * i + 1]);
-    const repeat = i === count - 1 && Math.abs(x - v.sx(controls[0])) < 0.5 && Math.abs(y - v.sy(controls[1])) < 0.5;
+    const repeat =
+      i === count - 1 &&
+      Math.abs(x - v.sx(controls[0])) < 0.5 &&
+      Math.abs(y - v.sy(controls[1])) < 0.5;
     r.point(x, y, theme.basisPoint[i % theme.basisPoint.length]);
     if (repeat) continue;
     const length = Math.hypot(x - cx, y - cy) || 1;
@@ -383,7 +406,11 @@ export function formula(s, d) {
 export function label(s, d) {
   const [x, y] = s.points[0];
   const shape = s.ellipse
-    ? t("nurbsCircle.ariaEllipse", { rx: fmt(s.rx, 2), ry: fmt(s.ry, 2), rotation: fmt(s.rotation, 1) })
+    ? t("nurbsCircle.ariaEllipse", {
+        rx: fmt(s.rx, 2),
+        ry: fmt(s.ry, 2),
+        rotation: fmt(s.rotation, 1),
+      })
     : t("nurbsCircle.ariaCircle", { r: fmt(s.radius, 2) });
   const arc = isFull(s)
     ? t("nurbsCircle.ariaFull")
@@ -406,7 +433,15 @@ export function setup(ui) {
   const { title, table, wrap } = titledTable("nurbs-circle");
   ui.ctx.slots.details.append(title, wrap);
   const columns = ["i", t("nurbsCircle.column.point"), t("nurbsCircle.column.weight")];
-  const head = el("thead", {}, el("tr", {}, columns.map((text) => el("th", { scope: "col", text }))));
+  const head = el(
+    "thead",
+    {},
+    el(
+      "tr",
+      {},
+      columns.map((text) => el("th", { scope: "col", text })),
+    ),
+  );
   let cells = [];
 
   function build(count) {

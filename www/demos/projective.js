@@ -34,9 +34,23 @@ export const SIZE = 4;
  * w′ = w·(1 + y/4) and the mapped weights are 9/8, 15/8, 9/8, 15/8.
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0.5, 0.5], [1, 3.5], [3, 0.5], [3.5, 3.5]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0.5, 0.5],
+      [1, 3.5],
+      [3, 0.5],
+      [3.5, 3.5],
+    ].map(Object.freeze),
+  ),
   weights: Object.freeze([1, 1, 1, 1]),
-  corners: Object.freeze([[6, 0], [12, 0], [10.5, 4], [7.5, 4]].map(Object.freeze)),
+  corners: Object.freeze(
+    [
+      [6, 0],
+      [12, 0],
+      [10.5, 4],
+      [7.5, 4],
+    ].map(Object.freeze),
+  ),
 });
 
 /** Number of control points (a cubic). */
@@ -60,7 +74,9 @@ const LEGEND_PX = 70;
 const SQUARE = Object.freeze([0, 0, SIZE, 0, SIZE, SIZE, 0, SIZE]);
 const SQUARE_LABELS = Object.freeze(["S₀", "S₁", "S₂", "S₃"]);
 /** Handles: the control points P₀ … P₃, then the corners Q₀ … Q₃. */
-const HANDLE_LABELS = Object.freeze(["P", "Q"].flatMap((name) => [0, 1, 2, 3].map((i) => `${name}${subscript(i)}`)));
+const HANDLE_LABELS = Object.freeze(
+  ["P", "Q"].flatMap((name) => [0, 1, 2, 3].map((i) => `${name}${subscript(i)}`)),
+);
 
 export const fields = {
   points: field.points({ min: POINTS, max: POINTS }),
@@ -71,14 +87,17 @@ export const fields = {
       const wi = `w${subscript(i)}`;
       if (w <= 0) throw new Error(t("projective.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
-        throw new Error(t("projective.weightRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }));
+        throw new Error(
+          t("projective.weightRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+        );
       }
     });
   },
   /** Four corners that define a perspective map (no three on a line). */
   corners(s, name) {
     field.points({ min: 4, max: 4 })(s, name);
-    if (!squareToQuad(s.corners, SIZE).every(Number.isFinite)) throw new Error(t("projective.degenerate"));
+    if (!squareToQuad(s.corners, SIZE).every(Number.isFinite))
+      throw new Error(t("projective.degenerate"));
   },
 };
 
@@ -110,7 +129,11 @@ export const derive = {
       return false;
     }
     const j = i - POINTS;
-    const trial = squareToQuad(s.corners.map((c, k) => (k === j ? xy : c)), SIZE, m.trial);
+    const trial = squareToQuad(
+      s.corners.map((c, k) => (k === j ? xy : c)),
+      SIZE,
+      m.trial,
+    );
     if (!trial.every(Number.isFinite)) {
       ui.status(t("projective.degenerate"), "error");
       m.refusal.shown = true;
@@ -171,7 +194,10 @@ export const compute = {
   squareVisible: [["corners"], (s, d) => squareIsFinite(d.matrix)],
   mappedLabels: [
     ["points", "weights", "corners"],
-    (s, d) => Array.from(d.mappedWeights, (w, i) => t("projective.mappedLabel", { i: subscript(i), w: mappedText(w) })),
+    (s, d) =>
+      Array.from(d.mappedWeights, (w, i) =>
+        t("projective.mappedLabel", { i: subscript(i), w: mappedText(w) }),
+      ),
   ],
 };
 
@@ -180,7 +206,12 @@ function invarianceCheck({ source, image, naiveSamples, matrix }) {
   const pointwise = new Float64Array(2 * SAMPLES);
   let ab = 0;
   for (let k = 0; k < SAMPLES; k++) {
-    const p = applyHomography(matrix, source[2 * k], source[2 * k + 1], pointwise.subarray(2 * k, 2 * k + 2));
+    const p = applyHomography(
+      matrix,
+      source[2 * k],
+      source[2 * k + 1],
+      pointwise.subarray(2 * k, 2 * k + 2),
+    );
     ab = Math.max(ab, Math.hypot(p[0] - image[2 * k], p[1] - image[2 * k + 1]));
   }
   let ac = 0;
@@ -201,7 +232,12 @@ function squareIsFinite(matrix) {
 /** The parallelogram spanned by Q₀, Q₁, Q₃ (an affine map: the contrast curve then coincides). */
 function makeAffine(ui) {
   const [q0, q1, , q3] = ui.state.corners;
-  const corners = [[q0[0], q0[1]], [q1[0], q1[1]], [q1[0] + q3[0] - q0[0], q1[1] + q3[1] - q0[1]], [q3[0], q3[1]]];
+  const corners = [
+    [q0[0], q0[1]],
+    [q1[0], q1[1]],
+    [q1[0] + q3[0] - q0[0], q1[1] + q3[1] - q0[1]],
+    [q3[0], q3[1]],
+  ];
   const shown = ui.data.refusal.shown;
   try {
     ui.replace({ ...ui.state, corners });
@@ -215,14 +251,29 @@ function makeAffine(ui) {
 export const controls = [
   group(
     "projective.resultLegend",
-    readout("gaps", (s, d) => t("projective.gaps", { ab: smallText(d.check.ab), ac: smallText(d.check.ac) }), {
-      live: true,
-      data: (s, d) => ({ gapAb: String(d.check.ab), gapAc: String(d.check.ac) }),
-    }),
-    readout("mapped-weights", (s, d) => t("projective.mappedWeights", { weights: mappedList(d).join(", ") }), {
-      data: (s, d) => ({ weights: Array.from(d.mappedWeights).join(",") }),
-    }),
-    actions([{ name: "affine", label: "projective.affine", title: "projective.affine.title", run: makeAffine }]),
+    readout(
+      "gaps",
+      (s, d) => t("projective.gaps", { ab: smallText(d.check.ab), ac: smallText(d.check.ac) }),
+      {
+        live: true,
+        data: (s, d) => ({ gapAb: String(d.check.ab), gapAc: String(d.check.ac) }),
+      },
+    ),
+    readout(
+      "mapped-weights",
+      (s, d) => t("projective.mappedWeights", { weights: mappedList(d).join(", ") }),
+      {
+        data: (s, d) => ({ weights: Array.from(d.mappedWeights).join(",") }),
+      },
+    ),
+    actions([
+      {
+        name: "affine",
+        label: "projective.affine",
+        title: "projective.affine.title",
+        run: makeAffine,
+      },
+    ]),
   ),
   group(
     "projective.weightsLegend",
@@ -264,7 +315,8 @@ export function draw(r, v, s, d) {
   flatPath(r, v, d.image, 0, SAMPLES);
   r.paint(theme.curve);
   const dots = d.check.pointwise;
-  for (let j = 0; j < SAMPLES; j += DOT_EVERY) r.point(v.sx(dots[2 * j]), v.sy(dots[2 * j + 1]), theme.levelPoint[0]);
+  for (let j = 0; j < SAMPLES; j += DOT_EVERY)
+    r.point(v.sx(dots[2 * j]), v.sy(dots[2 * j + 1]), theme.levelPoint[0]);
   // Mapped control points, labelled with their new weights on the side away from the polygon's
   // middle; not on a phone (the key names the dashed curve, the panel lists the weights).
   const labelled = v.width >= NARROW_CANVAS_PX * k;
@@ -276,7 +328,14 @@ export function draw(r, v, s, d) {
     r.point(x, y, theme.comparePoint[0]);
     const left = controls[2 * i] < mx;
     if (labelled) {
-      r.text(d.mappedLabels[i], x + (left ? -8 : 8) * k, y, theme.labelSmall, left ? "right" : "left", "middle");
+      r.text(
+        d.mappedLabels[i],
+        x + (left ? -8 : 8) * k,
+        y,
+        theme.labelSmall,
+        left ? "right" : "left",
+        "middle",
+      );
     }
   }
   // The contrast curve's name at its middle sample.
@@ -284,7 +343,14 @@ export function draw(r, v, s, d) {
   const naive = d.naiveSamples;
   if (labelled) {
     const x = v.sx(naive[2 * mid]) + 10 * k;
-    r.text(t("projective.naiveLabel"), x, v.sy(naive[2 * mid + 1]), theme.labelSmall, "left", "middle");
+    r.text(
+      t("projective.naiveLabel"),
+      x,
+      v.sy(naive[2 * mid + 1]),
+      theme.labelSmall,
+      "left",
+      "middle",
+    );
   }
 
   d.handles.draw(r, v);
@@ -332,7 +398,14 @@ function drawSquares(r, v, d) {
     const dx = (x > 0 ? 6 : -6) * s;
     const dy = (y > 0 ? -6 : 6) * s;
     const align = x > 0 ? "left" : "right";
-    r.text(SQUARE_LABELS[k], v.sx(x) + dx, v.sy(y) + dy, theme.labelSmall, align, y > 0 ? "bottom" : "top");
+    r.text(
+      SQUARE_LABELS[k],
+      v.sx(x) + dx,
+      v.sy(y) + dy,
+      theme.labelSmall,
+      align,
+      y > 0 ? "bottom" : "top",
+    );
   }
 }
 

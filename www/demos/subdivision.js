@@ -13,7 +13,14 @@ import { field } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group } from "../lib/panel.js";
 import { placeLabel, placeLabelFrom } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, subscript, superscript, degreeName, exactNumbers, fractionTex } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  superscript,
+  degreeName,
+  exactNumbers,
+  fractionTex,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
@@ -46,7 +53,14 @@ const LEVEL_POINTS_MAX = 3;
 
 /** The worked example of the Greek notes (syllabus §2), split in the middle. */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [2, 2], [6, 4], [8, 2]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [2, 2],
+      [6, 4],
+      [8, 2],
+    ].map(Object.freeze),
+  ),
   t: 0.5,
   levels: 0,
   triangle: true,
@@ -117,8 +131,16 @@ function labelsOf(n, split, previous) {
   const handles = [];
   for (let i = 0; i <= n; i++) handles.push(p(i));
   if (split) {
-    handles[0] = t("subdivision.firstLabel", { p: p(0), l: `L${subscript(0)}`, r: `R${subscript(0)}` });
-    handles[n] = t("subdivision.lastLabel", { p: p(n), l: `L${subscript(0)}`, r: `R${subscript(n)}` });
+    handles[0] = t("subdivision.firstLabel", {
+      p: p(0),
+      l: `L${subscript(0)}`,
+      r: `R${subscript(0)}`,
+    });
+    handles[n] = t("subdivision.lastLabel", {
+      p: p(n),
+      l: `L${subscript(0)}`,
+      r: `R${subscript(n)}`,
+    });
   }
   const left = [];
   const right = [];
@@ -171,7 +193,9 @@ export const controls = [
   ),
   group(
     null,
-    readout("degree", (s) => t("subdivision.degree", { n: s.points.length - 1, count: s.points.length })),
+    readout("degree", (s) =>
+      t("subdivision.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
     pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
   ),
 ];
@@ -256,8 +280,26 @@ export function draw(r, v, s, d) {
   screenCentroid(v, s.points, centre);
   if (showSplit && n <= LABEL_MAX_DEGREE) {
     for (let i = 1; i < n; i++) {
-      labelOutward(r, v, d.labels.left[i], left, i, n, theme.labelSmall, theme.splitLeftPoint.radius * r.scale);
-      labelOutward(r, v, d.labels.right[i], right, i, n, theme.labelSmall, theme.splitRightPoint.radius * r.scale);
+      labelOutward(
+        r,
+        v,
+        d.labels.left[i],
+        left,
+        i,
+        n,
+        theme.labelSmall,
+        theme.splitLeftPoint.radius * r.scale,
+      );
+      labelOutward(
+        r,
+        v,
+        d.labels.right[i],
+        right,
+        i,
+        n,
+        theme.labelSmall,
+        theme.splitRightPoint.radius * r.scale,
+      );
     }
   }
   // The split point P(t0) = l_n = r_0.
@@ -297,11 +339,19 @@ function labelOutward(r, v, text, flat, i, n, style, radius) {
 function levelCounts(s, d) {
   const perPiece = s.points.length;
   const polygons = d.pieces.length / (2 * perPiece);
-  return { k: s.levels, polygons, total: polygons * perPiece, distinct: polygons * (perPiece - 1) + 1 };
+  return {
+    k: s.levels,
+    polygons,
+    total: polygons * perPiece,
+    distinct: polygons * (perPiece - 1) + 1,
+  };
 }
 
 function levelsNote(s, d) {
-  return t(s.levels === 0 ? "subdivision.levelsNote0" : "subdivision.levelsNote", levelCounts(s, d));
+  return t(
+    s.levels === 0 ? "subdivision.levelsNote0" : "subdivision.levelsNote",
+    levelCounts(s, d),
+  );
 }
 
 /**
@@ -320,7 +370,8 @@ export function formula(s, d) {
   const f = exactNumbers(s.t, []).exact;
   const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmt(1 - s.t);
   const coordinate = (value) => num.value(value, n, true);
-  const pointTex = (flat, i) => `\\left(${coordinate(flat[2 * i])},\\ ${coordinate(flat[2 * i + 1])}\\right)`;
+  const pointTex = (flat, i) =>
+    `\\left(${coordinate(flat[2 * i])},\\ ${coordinate(flat[2 * i + 1])}\\right)`;
   const list = (flat) => Array.from({ length: n + 1 }, (_, i) => pointTex(flat, i)).join(",\\ ");
   const { k, polygons, total } = levelCounts(s, d);
   const polygonWord = `\\text{${tp("subdivision.formulaPolygons", polygons)}}`;
@@ -343,7 +394,16 @@ export function label(s, d) {
   const levels = k === 0 ? "" : t("subdivision.ariaLevels", { k, polygons, total });
   const x = fmt(right[0], 2);
   const y = fmt(right[1], 2);
-  return t("subdivision.aria", { kind: degreeName(n), count: n + 1, t: fmt(s.t), n: subscript(n), x, y }) + levels;
+  return (
+    t("subdivision.aria", {
+      kind: degreeName(n),
+      count: n + 1,
+      t: fmt(s.t),
+      n: subscript(n),
+      x,
+      y,
+    }) + levels
+  );
 }
 
 // ------------------------------------------------------------ the table
@@ -352,20 +412,40 @@ export function label(s, d) {
 export function setup(ui) {
   const details = detailsTable(ui, "subdivision", (n, table) => {
     const columns = ["colIndex", "colLeft", "colRight"];
-    const head = el("tr", {}, columns.map((key) => el("th", { scope: "col", text: t(`subdivision.${key}`) })));
+    const head = el(
+      "tr",
+      {},
+      columns.map((key) => el("th", { scope: "col", text: t(`subdivision.${key}`) })),
+    );
     const cell = (side, i, name, spans) => {
       const nameSpan = el("span", { class: "sl-cell-name", text: name });
-      return el("td", { dataset: { side, index: String(i) } }, nameSpan, spans.exact, spans.decimal);
+      return el(
+        "td",
+        { dataset: { side, index: String(i) } },
+        nameSpan,
+        spans.exact,
+        spans.decimal,
+      );
     };
     const cells = [];
     const rows = [];
     for (let i = 0; i <= n; i++) {
       const row = { left: valueSpans(), right: valueSpans() };
       cells.push(row);
-      rows.push(el("tr", {},
-        el("th", { scope: "row", text: String(i) }),
-        cell("left", i, `l${subscript(i)} = p${subscript(0)}${superscript(i)} = `, row.left),
-        cell("right", i, `r${subscript(i)} = p${subscript(i)}${superscript(n - i)} = `, row.right)));
+      rows.push(
+        el(
+          "tr",
+          {},
+          el("th", { scope: "row", text: String(i) }),
+          cell("left", i, `l${subscript(i)} = p${subscript(0)}${superscript(i)} = `, row.left),
+          cell(
+            "right",
+            i,
+            `r${subscript(i)} = p${subscript(i)}${superscript(n - i)} = `,
+            row.right,
+          ),
+        ),
+      );
     }
     table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
     return cells;

@@ -15,7 +15,14 @@
 import { field, checkNumbers } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, actions, group } from "../lib/panel.js";
 import { weightSliders, weightText } from "../lib/weight-sliders.js";
-import { fmt, subscript, simpleFraction, exactFraction, fractionText, fractionTex } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  exactFraction,
+  fractionText,
+  fractionTex,
+} from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -37,7 +44,14 @@ export const section = 4;
  * 3/8, 1/8, so P(1/2) = (0·1 + 1·9 + 4·3 + 5·1, 0 + 3·9 + 3·3 + 0)/14 = (13/7, 18/7).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze([[0, 0], [1, 3], [4, 3], [5, 0]].map(Object.freeze)),
+  points: Object.freeze(
+    [
+      [0, 0],
+      [1, 3],
+      [4, 3],
+      [5, 0],
+    ].map(Object.freeze),
+  ),
   weights: Object.freeze([1, 3, 1, 1]),
   t: 0.5,
   homogeneous: true,
@@ -76,7 +90,9 @@ export const fields = {
       const wi = `w${subscript(i)}`;
       if (w <= 0) throw new Error(t("weights.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
-        throw new Error(t("weights.outOfRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }));
+        throw new Error(
+          t("weights.outOfRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+        );
       }
     });
   },
@@ -129,7 +145,11 @@ export const compute = {
     (s, d) => {
       rayTs[RAY_TS.length] = s.t;
       const points = d.curve.sample(rayTs);
-      return { points, hom: d.homogeneous.sample(rayTs), point: points.subarray(2 * RAY_TS.length) };
+      return {
+        points,
+        hom: d.homogeneous.sample(rayTs),
+        point: points.subarray(2 * RAY_TS.length),
+      };
     },
   ],
   ghostPoint: [["points", "t"], (s, d) => d.ghost.evaluate(s.t)],
@@ -158,7 +178,10 @@ export const compute = {
   ],
   pointLabels: [
     ["t"],
-    (s) => ({ point: t("weights.pointLabel", { t: tText(s) }), ghost: t("weights.ghostPointLabel", { t: tText(s) }) }),
+    (s) => ({
+      point: t("weights.pointLabel", { t: tText(s) }),
+      ghost: t("weights.ghostPointLabel", { t: tText(s) }),
+    }),
   ],
 };
 
@@ -189,7 +212,10 @@ function scaleAll(ui) {
     return;
   }
   setAllWeights(ui, (w) => w * factor);
-  ui.status(t("weights.scaled", { factor: factor > 1 ? `× ${factor}` : `÷ ${1 / factor}` }), "info");
+  ui.status(
+    t("weights.scaled", { factor: factor > 1 ? `× ${factor}` : `÷ ${1 / factor}` }),
+    "info",
+  );
 }
 
 export const controls = [
@@ -210,18 +236,32 @@ export const controls = [
   group(
     null,
     slider("t", { label: "control.t", min: 0, max: 1, step: T_SLIDER_STEP }),
-    readout("curve", (s, d) => {
-      const [x, y] = d.rays.point;
-      return t("weights.readout", { t: tText(s), x: fmt(x), y: fmt(y), gap: gapText(d.maxGap) });
-    }, {
-      live: true,
-      data: (s, d) => ({ point: `${d.rays.point[0]},${d.rays.point[1]}`, maxGap: String(d.maxGap) }),
-    }),
+    readout(
+      "curve",
+      (s, d) => {
+        const [x, y] = d.rays.point;
+        return t("weights.readout", { t: tText(s), x: fmt(x), y: fmt(y), gap: gapText(d.maxGap) });
+      },
+      {
+        live: true,
+        data: (s, d) => ({
+          point: `${d.rays.point[0]},${d.rays.point[1]}`,
+          maxGap: String(d.maxGap),
+        }),
+      },
+    ),
   ),
   group(
     null,
-    readout("degree", (s) => t("weights.degree", { n: s.points.length - 1, count: s.points.length })),
-    pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings, companions: { weights: 1 } }),
+    readout("degree", (s) =>
+      t("weights.degree", { n: s.points.length - 1, count: s.points.length }),
+    ),
+    pointButtons("points", {
+      min: MIN_POINTS,
+      max: MAX_POINTS,
+      prefix: strings,
+      companions: { weights: 1 },
+    }),
   ),
   group(null, checkbox("homogeneous", { label: "weights.showHomogeneous" })),
 ];
@@ -276,8 +316,22 @@ export function draw(r, v, s, d) {
   // Labels below/above the two points, on the side away from each other.
   const below = py >= gy;
   const gap = 12 * r.scale;
-  r.text(d.pointLabels.point, px, py + (below ? gap : -gap), theme.labelPoint, "center", below ? "top" : "bottom");
-  r.text(d.pointLabels.ghost, gx, gy + (below ? -gap : gap), theme.labelSmall, "center", below ? "bottom" : "top");
+  r.text(
+    d.pointLabels.point,
+    px,
+    py + (below ? gap : -gap),
+    theme.labelPoint,
+    "center",
+    below ? "top" : "bottom",
+  );
+  r.text(
+    d.pointLabels.ghost,
+    gx,
+    gy + (below ? -gap : gap),
+    theme.labelSmall,
+    "center",
+    below ? "bottom" : "top",
+  );
 
   drawKey(r, KEY);
   if (s.homogeneous) drawHomogeneousInset(r, d.inset);
@@ -344,7 +398,9 @@ export function setup(ui) {
     rows = [];
     const body = [];
     for (let i = 0; i < count; i++) {
-      const cells = Object.fromEntries(columns.map((c) => [c, el("td", { dataset: { column: c } })]));
+      const cells = Object.fromEntries(
+        columns.map((c) => [c, el("td", { dataset: { column: c } })]),
+      );
       rows.push(cells);
       const name = el("th", { scope: "row", text: `P${subscript(i)}` });
       body.push(el("tr", { dataset: { index: String(i) } }, name, Object.values(cells)));
@@ -364,7 +420,10 @@ export function setup(ui) {
         const distance = Math.hypot(x - px, y - py);
         setText(cells.point, `(${fmt(px)}, ${fmt(py)})`);
         setText(cells.weight, weightText(s.weights[i]));
-        setText(cells.homogeneous, `(${fmt(h[3 * i])}, ${fmt(h[3 * i + 1])}, ${fmt(h[3 * i + 2])})`);
+        setText(
+          cells.homogeneous,
+          `(${fmt(h[3 * i])}, ${fmt(h[3 * i + 1])}, ${fmt(h[3 * i + 2])})`,
+        );
         setText(cells.share, fmt(d.shares[i]));
         setText(cells.distance, fmt(distance));
         cells.distance.dataset.value = String(distance);

@@ -30,7 +30,10 @@ function parseNumber(text) {
 
 /** Numbers separated by commas and/or spaces. */
 function parseList(text) {
-  const parts = text.trim().split(/[\s,]+/).filter(Boolean);
+  const parts = text
+    .trim()
+    .split(/[\s,]+/)
+    .filter(Boolean);
   return parts.map(parseNumber);
 }
 
@@ -50,7 +53,8 @@ function parsePoints(text) {
 /** Reads one attribute value shaped like `example`. */
 export function parseAttribute(text, example) {
   if (typeof example === "number") return parseNumber(text);
-  if (typeof example === "boolean") return text === "" || text === "true" || text === "on" || text === "yes";
+  if (typeof example === "boolean")
+    return text === "" || text === "true" || text === "on" || text === "yes";
   if (typeof example === "string") return text;
   if (Array.isArray(example) && Array.isArray(example[0])) return parsePoints(text);
   if (Array.isArray(example)) return parseList(text);

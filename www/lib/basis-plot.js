@@ -23,47 +23,53 @@ export class BasisPlotPointer {
    *   this one goes ahead of, when the plot is made after them; `first: true` ahead of all
    *   interactors added before it (the handles of a declarative demo, made before its `setup`).
    */
-  constructor(view, { inPlot, graphAt, pick, press = () => {}, enter = () => {}, before = null, first = false }) {
+  constructor(
+    view,
+    { inPlot, graphAt, pick, press = () => {}, enter = () => {}, before = null, first = false },
+  ) {
     this.view = view;
     /** The function under the pointer in the plot, or -1. */
     this.plotHover = -1;
     /** The function of the hovered legend row, or -1. */
     this.rowHover = -1;
     this.dragging = false;
-    view.addInteractor({
-      pointerDown: (event, x, y) => {
-        if (!inPlot(x, y)) return false;
-        press();
-        this.dragging = true;
-        this.plotHover = graphAt(x, y);
-        pick(x, false);
-        return true;
+    view.addInteractor(
+      {
+        pointerDown: (event, x, y) => {
+          if (!inPlot(x, y)) return false;
+          press();
+          this.dragging = true;
+          this.plotHover = graphAt(x, y);
+          pick(x, false);
+          return true;
+        },
+        pointerMove: (event, x) => {
+          if (this.dragging) pick(x, false);
+        },
+        pointerUp: (event, x) => {
+          if (!this.dragging) return;
+          this.dragging = false;
+          pick(x, true);
+        },
+        hover: (x, y) => {
+          const inside = inPlot(x, y);
+          const i = inside ? graphAt(x, y) : -1;
+          if (inside) enter();
+          if (i !== this.plotHover) {
+            this.plotHover = i;
+            view.requestDraw();
+          }
+          return inside ? "col-resize" : null;
+        },
+        leave: () => {
+          if (this.plotHover >= 0) {
+            this.plotHover = -1;
+            view.requestDraw();
+          }
+        },
       },
-      pointerMove: (event, x) => {
-        if (this.dragging) pick(x, false);
-      },
-      pointerUp: (event, x) => {
-        if (!this.dragging) return;
-        this.dragging = false;
-        pick(x, true);
-      },
-      hover: (x, y) => {
-        const inside = inPlot(x, y);
-        const i = inside ? graphAt(x, y) : -1;
-        if (inside) enter();
-        if (i !== this.plotHover) {
-          this.plotHover = i;
-          view.requestDraw();
-        }
-        return inside ? "col-resize" : null;
-      },
-      leave: () => {
-        if (this.plotHover >= 0) {
-          this.plotHover = -1;
-          view.requestDraw();
-        }
-      },
-    }, { before, first });
+      { before, first },
+    );
   }
 
   /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */
@@ -162,7 +168,12 @@ export function drawPlotFrame(r, plot, labels = null) {
 export function legendRow(pointer, i, name, ...cells) {
   const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
   swatch.style.background = CYCLE[i % CYCLE.length];
-  const row = el("tr", { tabindex: "0", dataset: { index: String(i) } }, el("th", { scope: "row" }, swatch, name), ...cells);
+  const row = el(
+    "tr",
+    { tabindex: "0", dataset: { index: String(i) } },
+    el("th", { scope: "row" }, swatch, name),
+    ...cells,
+  );
   const enter = () => pointer.setRowHover(i);
   const leave = () => pointer.setRowHover(-1);
   row.addEventListener("pointerenter", enter);
@@ -182,7 +193,8 @@ export function drawGraphs(r, values, functions, count, x, y, highlight) {
   for (let i = 0; i < functions; i++) {
     if (i !== highlight) drawGraph(r, values, i, count, x, y, theme.basisStroke[i % cycle]);
   }
-  if (highlight >= 0) drawGraph(r, values, highlight, count, x, y, theme.basisHover[highlight % cycle]);
+  if (highlight >= 0)
+    drawGraph(r, values, highlight, count, x, y, theme.basisHover[highlight % cycle]);
 }
 
 /**

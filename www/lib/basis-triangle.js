@@ -51,7 +51,10 @@ export class BasisTriangleTable {
         }
         const value = el("span", { class: "sl-cell-value" });
         level.push(value);
-        const name = el("span", { class: "sl-cell-name", text: `N${subscript(i)},${subscript(r)} = ` });
+        const name = el("span", {
+          class: "sl-cell-name",
+          text: `N${subscript(i)},${subscript(r)} = `,
+        });
         cells.push(el("td", { dataset: { r: String(r), i: String(i) } }, name, value));
       }
       this.cells.push(level);

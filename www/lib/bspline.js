@@ -113,7 +113,13 @@ export function parameterField({ error, knots = "knots", degree = STATE_DEGREE }
  * fell outside (an end knot dragged). `final` commits (undo step, URL), `merge` joins nudges.
  */
 export function setKnots(ui, knots, final = true, options = {}) {
-  const { field = "knots", param = "u", count = STATE_COUNT, degree = STATE_DEGREE, merge = null } = options;
+  const {
+    field = "knots",
+    param = "u",
+    count = STATE_COUNT,
+    degree = STATE_DEGREE,
+    merge = null,
+  } = options;
   const message = knotsRefusal(count(ui.state), degree(ui.state), knots);
   if (message) {
     ui.status(t("status.rejected", { message }), "error");

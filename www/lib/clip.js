@@ -73,7 +73,7 @@ export function projectedPath(r, v, hom, count, zeroW, box, exits) {
   for (let k = 0; k + 1 < count; k++) {
     const wa = hom[3 * k + 2];
     const wb = hom[3 * k + 5];
-    if (Math.abs(wa) <= zeroW || Math.abs(wb) <= zeroW || (wa > 0) !== (wb > 0)) {
+    if (Math.abs(wa) <= zeroW || Math.abs(wb) <= zeroW || wa > 0 !== wb > 0) {
       pen = false;
       continue;
     }

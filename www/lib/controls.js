@@ -19,7 +19,8 @@ export function el(tag, props = {}, ...children) {
     if (key === "class") node.className = value;
     else if (key === "text") node.textContent = value;
     else if (key === "dataset") Object.assign(node.dataset, value);
-    else if (key.startsWith("on") && typeof value === "function") node.addEventListener(key.slice(2), value);
+    else if (key.startsWith("on") && typeof value === "function")
+      node.addEventListener(key.slice(2), value);
     else if (key in node && typeof value !== "string") node[key] = value;
     else node.setAttribute(key, value === true ? "" : value);
   }
@@ -47,16 +48,46 @@ export function setText(node, text) {
  * @param {boolean} [o.log] logarithmic slider (min > 0): the range moves in log10 of the value
  *   with `step` in log10 units; `min`, `max`, `value` and what onChange gets stay plain values.
  */
-export function slider({ label, inputLabel, min, max, step, value, onChange, onError, format = fmt, name, badNumber, log = false }) {
+export function slider({
+  label,
+  inputLabel,
+  min,
+  max,
+  step,
+  value,
+  onChange,
+  onError,
+  format = fmt,
+  name,
+  badNumber,
+  log = false,
+}) {
   const id = uid("range");
   /** Value ↔ range position (the identity unless `log`). */
   const toRange = log ? Math.log10 : (v) => v;
   const fromRange = log ? (p) => 10 ** p : (p) => p;
-  const range = el("input", { type: "range", id, min: String(toRange(min)), max: String(toRange(max)), step: String(step), value: String(toRange(value)) });
-  const box = el("input", { type: "text", inputmode: "decimal", class: "sl-value", "aria-label": inputLabel, size: "6", value: format(value) });
-  const row = el("div", { class: "sl-control sl-slider", dataset: name ? { control: name } : undefined },
+  const range = el("input", {
+    type: "range",
+    id,
+    min: String(toRange(min)),
+    max: String(toRange(max)),
+    step: String(step),
+    value: String(toRange(value)),
+  });
+  const box = el("input", {
+    type: "text",
+    inputmode: "decimal",
+    class: "sl-value",
+    "aria-label": inputLabel,
+    size: "6",
+    value: format(value),
+  });
+  const row = el(
+    "div",
+    { class: "sl-control sl-slider", dataset: name ? { control: name } : undefined },
     el("label", { for: id, text: label }),
-    el("div", { class: "sl-slider-row" }, range, box));
+    el("div", { class: "sl-slider-row" }, range, box),
+  );
 
   const typing = () => document.activeElement === box || box.getRootNode().activeElement === box;
   /** The value shown (unsnapped: a log slider's range position is rounded to its step). */
@@ -139,13 +170,23 @@ export function checkbox({ label, checked, onChange, name }) {
   const id = uid("check");
   const input = el("input", { type: "checkbox", id, checked });
   input.addEventListener("change", () => onChange(input.checked));
-  const row = el("div", { class: "sl-control sl-check", dataset: name ? { control: name } : undefined }, input, el("label", { for: id, text: label }));
+  const row = el(
+    "div",
+    { class: "sl-control sl-check", dataset: name ? { control: name } : undefined },
+    input,
+    el("label", { for: id, text: label }),
+  );
   return { element: row, input, set: (v) => (input.checked = v) };
 }
 
 /** A titled group of controls. */
 export function group(title, ...children) {
-  return el("fieldset", { class: "sl-group" }, title ? el("legend", { text: title }) : null, ...children);
+  return el(
+    "fieldset",
+    { class: "sl-group" },
+    title ? el("legend", { text: title }) : null,
+    ...children,
+  );
 }
 
 /**
@@ -163,14 +204,29 @@ export function radios({ options, value, onChange, name }) {
   const inputs = [];
   const rows = options.map((option) => {
     const id = uid("radio");
-    const input = el("input", { type: "radio", id, name: groupName, value: option.value, checked: option.value === value });
+    const input = el("input", {
+      type: "radio",
+      id,
+      name: groupName,
+      value: option.value,
+      checked: option.value === value,
+    });
     input.addEventListener("change", () => {
       if (input.checked) onChange(option.value);
     });
     inputs.push(input);
-    return el("div", { class: "sl-control sl-check", dataset: { choice: option.value } }, input, el("label", { for: id, text: option.label }));
+    return el(
+      "div",
+      { class: "sl-control sl-check", dataset: { choice: option.value } },
+      input,
+      el("label", { for: id, text: option.label }),
+    );
   });
-  const element = el("div", { class: "sl-radios", role: "radiogroup", dataset: name ? { control: name } : undefined }, rows);
+  const element = el(
+    "div",
+    { class: "sl-radios", role: "radiogroup", dataset: name ? { control: name } : undefined },
+    rows,
+  );
   return {
     element,
     inputs,

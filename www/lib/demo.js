@@ -36,7 +36,8 @@ export function isDeclarative(demo) {
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
-  if (state === null || typeof state !== "object" || Array.isArray(state)) throw new Error(t("error.notObject"));
+  if (state === null || typeof state !== "object" || Array.isArray(state))
+    throw new Error(t("error.notObject"));
   for (const name of Object.keys(state)) {
     if (!(name in demo.fields)) throw new Error(t("error.unknownField", { field: name }));
   }
@@ -244,7 +245,12 @@ export function mountDeclared(demo, initialState, ctx) {
     const list =
       handleFields.length === 1 && !accept
         ? pointHandles(() => work[handleFields[0]], moved, label)
-        : pointListsHandles(handleFields.length, (k) => work[handleFields[k]], offer, label ?? pointLabel);
+        : pointListsHandles(
+            handleFields.length,
+            (k) => work[handleFields[k]],
+            offer,
+            label ?? pointLabel,
+          );
     const extraPoints = handleSpec.extra ?? [];
     const listed = () => list.count();
     ui.handles = new Handles(view, {

@@ -24,7 +24,12 @@ const SVG_DECIMALS = 2;
 const NO_DASH = Object.freeze([]);
 
 /** Canvas `textBaseline` / SVG `dominant-baseline` for each vertical anchor we use. */
-const SVG_BASELINE = { middle: "central", top: "hanging", bottom: "text-after-edge", alphabetic: "alphabetic" };
+const SVG_BASELINE = {
+  middle: "central",
+  top: "hanging",
+  bottom: "text-after-edge",
+  alphabetic: "alphabetic",
+};
 const SVG_ANCHOR = { left: "start", center: "middle", right: "end" };
 
 /** Labels of anchors inside the frame keep this far from its edges (CSS px). */
@@ -59,7 +64,13 @@ function keepLabelInside(r, string, style, x, y, align, baseline) {
   if (!(x >= 0 && x <= frameWidth && y >= 0 && y <= frameHeight)) return labelAt;
   const height = style.size * r.scale;
   const reach = string.length * height + LABEL_MARGIN;
-  if (x >= reach && x <= frameWidth - reach && y >= height + LABEL_MARGIN && y <= frameHeight - height - LABEL_MARGIN) return labelAt;
+  if (
+    x >= reach &&
+    x <= frameWidth - reach &&
+    y >= height + LABEL_MARGIN &&
+    y <= frameHeight - height - LABEL_MARGIN
+  )
+    return labelAt;
   const width = r.measure(string, style);
   labelAt[0] += shiftInside(x - width * (ALIGN_LEFT[align] ?? 0), width, frameWidth);
   labelAt[1] += shiftInside(y - height * (BASELINE_ABOVE[baseline] ?? 0.5), height, frameHeight);
@@ -107,13 +118,25 @@ export class CanvasRenderer {
   /** Ends the frame (nothing to flush on a canvas). */
   end() {}
 
-  beginPath() { this.context.beginPath(); }
-  moveTo(x, y) { this.context.moveTo(x, y); }
-  lineTo(x, y) { this.context.lineTo(x, y); }
-  closePath() { this.context.closePath(); }
-  rect(x, y, w, h) { this.context.rect(x, y, w, h); }
+  beginPath() {
+    this.context.beginPath();
+  }
+  moveTo(x, y) {
+    this.context.moveTo(x, y);
+  }
+  lineTo(x, y) {
+    this.context.lineTo(x, y);
+  }
+  closePath() {
+    this.context.closePath();
+  }
+  rect(x, y, w, h) {
+    this.context.rect(x, y, w, h);
+  }
   /** Same arguments as CanvasRenderingContext2D.arc (angles in radians, y down). */
-  arc(x, y, r, a0, a1, counterClockwise = false) { this.context.arc(x, y, r, a0, a1, counterClockwise); }
+  arc(x, y, r, a0, a1, counterClockwise = false) {
+    this.context.arc(x, y, r, a0, a1, counterClockwise);
+  }
 
   /** Adds a full circle of radius `r` to the path. */
   circle(x, y, r) {
@@ -298,16 +321,22 @@ export class SvgRecorder {
     const attrs = [`d="${this._d}"`];
     if (style.fill) {
       attrs.push(`fill="${style.fill}"`);
-      if (style.alpha !== undefined && style.alpha !== 1) attrs.push(`fill-opacity="${style.alpha}"`);
+      if (style.alpha !== undefined && style.alpha !== 1)
+        attrs.push(`fill-opacity="${style.alpha}"`);
     } else {
       attrs.push('fill="none"');
     }
     if (style.stroke) {
-      attrs.push(`stroke="${style.stroke}"`, `stroke-width="${num((style.width ?? 1) * this.scale)}"`);
+      attrs.push(
+        `stroke="${style.stroke}"`,
+        `stroke-width="${num((style.width ?? 1) * this.scale)}"`,
+      );
       if (style.join) attrs.push(`stroke-linejoin="${style.join}"`);
       if (style.cap) attrs.push(`stroke-linecap="${style.cap}"`);
-      if (style.dash) attrs.push(`stroke-dasharray="${style.dash.map((d) => num(d * this.scale)).join(" ")}"`);
-      if (style.strokeAlpha !== undefined && style.strokeAlpha !== 1) attrs.push(`stroke-opacity="${style.strokeAlpha}"`);
+      if (style.dash)
+        attrs.push(`stroke-dasharray="${style.dash.map((d) => num(d * this.scale)).join(" ")}"`);
+      if (style.strokeAlpha !== undefined && style.strokeAlpha !== 1)
+        attrs.push(`stroke-opacity="${style.strokeAlpha}"`);
     }
     this._parts.push(`<path ${attrs.join(" ")}/>`);
   }
@@ -330,7 +359,12 @@ export class SvgRecorder {
     ];
     if (style.weight) attrs.push(`font-weight="${style.weight}"`);
     if (style.halo) {
-      attrs.push(`stroke="${style.halo}"`, `stroke-width="${num(HALO_WIDTH * this.scale)}"`, 'stroke-linejoin="round"', 'paint-order="stroke"');
+      attrs.push(
+        `stroke="${style.halo}"`,
+        `stroke-width="${num(HALO_WIDTH * this.scale)}"`,
+        'stroke-linejoin="round"',
+        'paint-order="stroke"',
+      );
     }
     this._parts.push(`<text ${attrs.join(" ")}>${escapeXml(string)}</text>`);
   }

@@ -20,7 +20,13 @@ export function figureToSvg(view) {
  * The figure of `view` on a new canvas at `scale` × its CSS size, in `theme` (exports keep the
  * light theme's white background; gallery thumbnails follow the reader's).
  */
-export function figureToCanvas(view, scale = PNG_SCALE, width = view.width, height = view.height, theme = LIGHT_THEME) {
+export function figureToCanvas(
+  view,
+  scale = PNG_SCALE,
+  width = view.width,
+  height = view.height,
+  theme = LIGHT_THEME,
+) {
   const canvas = document.createElement("canvas");
   canvas.width = Math.round(width * scale);
   canvas.height = Math.round(height * scale);

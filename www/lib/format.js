@@ -115,7 +115,8 @@ export function exactNumbers(parameter, inputs) {
   return {
     exact,
     /** The parameter: "1/4" (or TeX \tfrac{1}{4}) when exact, else 3 decimals. */
-    param: (tex = false) => (exact ? (tex ? fractionTex(exact) : fractionText(exact)) : fmt(parameter)),
+    param: (tex = false) =>
+      exact ? (tex ? fractionTex(exact) : fractionText(exact)) : fmt(parameter),
     /** x after `level` steps: a fraction over (a divisor of) den^level when exact, else decimals. */
     value(x, level, tex = false, den = exact ? exact.den ** level : 1) {
       const g = exact ? exactFraction(x, den) : null;

@@ -93,7 +93,11 @@ export class FormulaPanel {
       changed.push(div);
       if (this._katex) {
         try {
-          this._katex.render(tex, div, { displayMode: true, throwOnError: false, output: "htmlAndMathml" });
+          this._katex.render(tex, div, {
+            displayMode: true,
+            throwOnError: false,
+            output: "htmlAndMathml",
+          });
           return;
         } catch {
           // fall through to plain text
@@ -116,7 +120,10 @@ export class FormulaPanel {
     lines.forEach((div, i) => {
       const [clientWidth, scrollWidth] = widths[i];
       if (clientWidth > 0 && scrollWidth > clientWidth + 1) {
-        const scale = Math.max(MIN_FIT_SCALE, Math.floor((1000 * clientWidth) / scrollWidth) / 1000);
+        const scale = Math.max(
+          MIN_FIT_SCALE,
+          Math.floor((1000 * clientWidth) / scrollWidth) / 1000,
+        );
         div.style.fontSize = `${scale}em`;
       }
     });

@@ -47,9 +47,12 @@ export function boundsOf(points, out = null) {
  * when they are collinear. O(n log n) for the few points of a demo.
  */
 export function convexHull(points, indices = points.map((_, i) => i)) {
-  const order = indices.slice().sort((a, b) => points[a][0] - points[b][0] || points[a][1] - points[b][1]);
+  const order = indices
+    .slice()
+    .sort((a, b) => points[a][0] - points[b][0] || points[a][1] - points[b][1]);
   const cross = (o, a, b) =>
-    (points[a][0] - points[o][0]) * (points[b][1] - points[o][1]) - (points[a][1] - points[o][1]) * (points[b][0] - points[o][0]);
+    (points[a][0] - points[o][0]) * (points[b][1] - points[o][1]) -
+    (points[a][1] - points[o][1]) * (points[b][0] - points[o][0]);
   const chain = (list) => {
     const out = [];
     for (const i of list) {

@@ -195,7 +195,11 @@ export class Handles {
   /** Says in the live region, politely, `key` ("{label} … ({x}, {y})") for handle i where it is now. */
   _announce(key, i) {
     this.source.get(i, this._q);
-    this.announcer.textContent = t(key, { label: this.source.label(i), x: formatNumber(this._q[0]), y: formatNumber(this._q[1]) });
+    this.announcer.textContent = t(key, {
+      label: this.source.label(i),
+      x: formatNumber(this._q[0]),
+      y: formatNumber(this._q[1]),
+    });
   }
 
   /** Index of the handle under canvas point (x, y), or -1. */
@@ -252,7 +256,8 @@ export class Handles {
     this.source.commit("drag", i, null);
     if (i < this.source.count()) {
       this.source.get(i, this._p);
-      if (this._p[0] !== this._dragStart[0] || this._p[1] !== this._dragStart[1]) this._announce("handles.moved", i);
+      if (this._p[0] !== this._dragStart[0] || this._p[1] !== this._dragStart[1])
+        this._announce("handles.moved", i);
     }
     this.view.requestDraw();
   }
@@ -309,10 +314,16 @@ export class Handles {
 
   _focus(event) {
     // Keyboard focus selects a handle; a click on the figure (pan, or a drag) does not.
-    if (this.selected >= 0 || this.source.count() === 0 || !this.view.canvas.matches(":focus-visible")) return;
+    if (
+      this.selected >= 0 ||
+      this.source.count() === 0 ||
+      !this.view.canvas.matches(":focus-visible")
+    )
+      return;
     // Arriving backwards (Shift+Tab from an element after the canvas) selects the last handle.
     const from = event.relatedTarget;
-    const fromAfter = from && this.view.canvas.compareDocumentPosition(from) & Node.DOCUMENT_POSITION_FOLLOWING;
+    const fromAfter =
+      from && this.view.canvas.compareDocumentPosition(from) & Node.DOCUMENT_POSITION_FOLLOWING;
     this.select(fromAfter ? this.source.count() - 1 : 0);
   }
 
@@ -403,11 +414,25 @@ export class Handles {
       const y = view.sy(this._p[1]);
       signature = signature * 31 + x * 7 + y * 13;
       const style =
-        i === this.selected ? theme.handleSelected : i === this.hovered || i === this.dragging ? theme.handleHover : theme.handle;
+        i === this.selected
+          ? theme.handleSelected
+          : i === this.hovered || i === this.dragging
+            ? theme.handleHover
+            : theme.handle;
       r.point(x, y, style);
-      this._drawLabel(r, view, i, n, x, y, i === this.selected ? theme.labelBold : theme.label, style.radius * r.scale);
+      this._drawLabel(
+        r,
+        view,
+        i,
+        n,
+        x,
+        y,
+        i === this.selected ? theme.labelBold : theme.label,
+        style.radius * r.scale,
+      );
     }
-    if (this.dragging < 0 && signature !== this._published && r === view.renderer) this._publish(n, signature);
+    if (this.dragging < 0 && signature !== this._published && r === view.renderer)
+      this._publish(n, signature);
   }
 
   /**
@@ -427,8 +452,8 @@ export class Handles {
   _drawLine(r, view, [x0, y0, x1, y1], style) {
     const px0 = view.sx(x0);
     const py0 = view.sy(y0);
-    let dx = view.sx(x1) - px0;
-    let dy = view.sy(y1) - py0;
+    const dx = view.sx(x1) - px0;
+    const dy = view.sy(y1) - py0;
     const length = Math.hypot(dx, dy);
     if (length < DIRECTION_EPSILON) return;
     const reach = (view.width + view.height) / length; // far enough to cross the whole canvas
@@ -503,7 +528,8 @@ export function placeLabel(r, text, x, y, dx, dy, radius, style) {
   const gap = radius + LABEL_GAP_PX * r.scale;
   const tx = x + dx * gap;
   const ty = y + dy * gap;
-  const align = dx > LABEL_ALIGN_THRESHOLD ? "left" : dx < -LABEL_ALIGN_THRESHOLD ? "right" : "center";
+  const align =
+    dx > LABEL_ALIGN_THRESHOLD ? "left" : dx < -LABEL_ALIGN_THRESHOLD ? "right" : "center";
   // Vertical: shift by half a line in the direction's vertical sense so the text clears the point.
   const shift = dy * (style.size * r.scale) * 0.5;
   r.text(text, tx, ty + shift, style, align, "middle");

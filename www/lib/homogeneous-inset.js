@@ -50,7 +50,10 @@ export function insetOnRight(width, height) {
 
 /** Width (on the right) or height (at the bottom) of the inset's strip, CSS px. */
 export function insetSize(extent) {
-  return Math.max(Math.round(extent * INSET_FRACTION), Math.min(INSET_MIN_PX, Math.round(extent / 2)));
+  return Math.max(
+    Math.round(extent * INSET_FRACTION),
+    Math.min(INSET_MIN_PX, Math.round(extent / 2)),
+  );
 }
 
 /** The inset's strip (CSS px), its camera, and the plane's box [x0, y0, x1, y1] (scratch). */
@@ -71,7 +74,13 @@ function layoutInset(r, p, maxW) {
   const h = p.homPoints;
   let xyExtent = 0;
   for (let i = 0; i < pts.length; i++) {
-    xyExtent = Math.max(xyExtent, Math.abs(h[3 * i]), Math.abs(h[3 * i + 1]), Math.abs(pts[i][0]), Math.abs(pts[i][1]));
+    xyExtent = Math.max(
+      xyExtent,
+      Math.abs(h[3 * i]),
+      Math.abs(h[3 * i + 1]),
+      Math.abs(pts[i][0]),
+      Math.abs(pts[i][1]),
+    );
   }
   camera.reset((W_EXTENT * Math.max(xyExtent, 1)) / maxW);
   for (let i = 0; i < pts.length; i++) camera.include(h[3 * i], h[3 * i + 1], h[3 * i + 2]);
@@ -88,7 +97,12 @@ function layoutInset(r, p, maxW) {
   camera.include(plane[0], plane[3], 1);
   camera.include(0, 0, maxW * AXIS_OVERSHOOT); // the w axis' tip
   const m = INSET_MARGIN;
-  camera.fit(inset.x0 + m.left * scale, inset.y0 + m.top * scale, width - m.right * scale, height - m.bottom * scale);
+  camera.fit(
+    inset.x0 + m.left * scale,
+    inset.y0 + m.top * scale,
+    width - m.right * scale,
+    height - m.bottom * scale,
+  );
 }
 
 /** moveTo / lineTo of the space point (X, Y, W) through the camera. */
@@ -121,7 +135,14 @@ export function drawHomogeneousInset(r, p) {
   if (inset.right) r.lineTo(inset.x0, inset.y1);
   else r.lineTo(inset.x1, inset.y0);
   r.paint(theme.axis);
-  r.text(t(`${p.prefix}.insetTitle`), inset.x0 + 10 * k, inset.y0 + 8 * k, theme.labelSmall, "left", "top");
+  r.text(
+    t(`${p.prefix}.insetTitle`),
+    inset.x0 + 10 * k,
+    inset.y0 + 8 * k,
+    theme.labelSmall,
+    "left",
+    "top",
+  );
 
   // Axes from the origin O.
   const ox = camera.sx(0, 0, 0);
@@ -137,9 +158,30 @@ export function drawHomogeneousInset(r, p) {
   to(r, true, 0, 0, 0);
   to(r, false, 0, 0, top);
   r.paint(theme.axis);
-  r.text(t(`${p.prefix}.axisX`), camera.sx(ax, 0, 0) + 4 * k, oy, theme.labelSmall, "left", "middle");
-  r.text(t(`${p.prefix}.axisY`), camera.sx(0, ay, 0) + 4 * k, camera.sy(0, ay, 0), theme.labelSmall, "left", "bottom");
-  r.text(t(`${p.prefix}.axisW`), ox - 5 * k, camera.sy(0, 0, top), theme.labelSmall, "right", "middle");
+  r.text(
+    t(`${p.prefix}.axisX`),
+    camera.sx(ax, 0, 0) + 4 * k,
+    oy,
+    theme.labelSmall,
+    "left",
+    "middle",
+  );
+  r.text(
+    t(`${p.prefix}.axisY`),
+    camera.sx(0, ay, 0) + 4 * k,
+    camera.sy(0, ay, 0),
+    theme.labelSmall,
+    "left",
+    "bottom",
+  );
+  r.text(
+    t(`${p.prefix}.axisW`),
+    ox - 5 * k,
+    camera.sy(0, 0, top),
+    theme.labelSmall,
+    "right",
+    "middle",
+  );
   r.text(t(`${p.prefix}.origin`), ox - 5 * k, oy, theme.labelSmall, "right", "middle");
 
   // The plane w = 1, and on it the control polygon and the rational curve (the projection).
@@ -151,7 +193,14 @@ export function drawHomogeneousInset(r, p) {
   r.closePath();
   r.paint(theme.helperFill);
   const px = camera.sx(plane[2], plane[1], 1) + 4 * k;
-  r.text(t(`${p.prefix}.plane`), px, camera.sy(plane[2], plane[1], 1), theme.labelSmall, "left", "top");
+  r.text(
+    t(`${p.prefix}.plane`),
+    px,
+    camera.sy(plane[2], plane[1], 1),
+    theme.labelSmall,
+    "left",
+    "top",
+  );
   r.beginPath();
   for (let i = 0; i <= n; i++) to(r, i === 0, pts[i][0], pts[i][1], 1);
   r.paint(theme.polygon);
@@ -183,7 +232,14 @@ export function drawHomogeneousInset(r, p) {
     const x = camera.sx(h[3 * i], h[3 * i + 1], h[3 * i + 2]);
     const y = camera.sy(h[3 * i], h[3 * i + 1], h[3 * i + 2]);
     r.point(x, y, theme.splitLeftPoint);
-    r.text((HOMOGENEOUS_LABELS[i] ??= `P${subscript(i)}ʷ`), x, y - 7 * k, theme.labelSmall, "center", "bottom");
+    r.text(
+      (HOMOGENEOUS_LABELS[i] ??= `P${subscript(i)}ʷ`),
+      x,
+      y - 7 * k,
+      theme.labelSmall,
+      "center",
+      "bottom",
+    );
   }
   // Ray ends: the point on the plane and the homogeneous point, the current t in vermillion.
   const q = p.rayPoints;

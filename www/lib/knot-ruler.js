@@ -73,13 +73,31 @@ function stylesOf(theme) {
       domainEdge: Object.freeze({ stroke: HUES.blue, width: 2 }),
       range: Object.freeze({ fill: HUES.vermillion, alpha: 0.55 }),
       rangeEdge: Object.freeze({ stroke: HUES.vermillion, width: 1.5 }),
-      knot: Object.freeze({ fill: theme.handleFill, stroke: theme.handleOutline, width: WIDTH.handleOutline }),
+      knot: Object.freeze({
+        fill: theme.handleFill,
+        stroke: theme.handleOutline,
+        width: WIDTH.handleOutline,
+      }),
       knotSelected: Object.freeze({ fill: theme.handleFill, stroke: HUES.vermillion, width: 2.5 }),
       label: theme.labelSmall,
       labelBold: theme.labelBold,
-      continuity: Object.freeze({ fill: theme.text, size: FONT_SIZE.label, weight: "bold", halo: theme.background }),
-      broken: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: theme.background }),
-      domainLabel: Object.freeze({ fill: HUES.blue, size: FONT_SIZE.small, halo: theme.background }),
+      continuity: Object.freeze({
+        fill: theme.text,
+        size: FONT_SIZE.label,
+        weight: "bold",
+        halo: theme.background,
+      }),
+      broken: Object.freeze({
+        fill: HUES.vermillion,
+        size: FONT_SIZE.label,
+        weight: "bold",
+        halo: theme.background,
+      }),
+      domainLabel: Object.freeze({
+        fill: HUES.blue,
+        size: FONT_SIZE.small,
+        halo: theme.background,
+      }),
     });
     styleCache.set(theme, s);
   }
@@ -214,7 +232,10 @@ export class KnotRuler {
   /** Height of the band in CSS px at text scale `scale` (enough for p + 1 stacked knots). */
   height(scale = 1) {
     const p = this.source.degree();
-    return Math.round((ROW_CONTINUITY + (p + 1) * STACK_PX + GAP_LINE + ROW_VALUE + ROW_DOMAIN + PAD_BOTTOM) * scale);
+    return Math.round(
+      (ROW_CONTINUITY + (p + 1) * STACK_PX + GAP_LINE + ROW_VALUE + ROW_DOMAIN + PAD_BOTTOM) *
+        scale,
+    );
   }
 
   /**
@@ -481,7 +502,13 @@ export class KnotRuler {
     const i = this.selected;
     if (i < 0) {
       // Tab from the last control point walks on into the knots.
-      if (event.key === "Tab" && !event.shiftKey && handles && handles.selected >= 0 && handles.selected === handles.source.count() - 1) {
+      if (
+        event.key === "Tab" &&
+        !event.shiftKey &&
+        handles &&
+        handles.selected >= 0 &&
+        handles.selected === handles.source.count() - 1
+      ) {
         this.select(0);
         this._consume(event);
       }
@@ -644,14 +671,28 @@ export class KnotRuler {
         const entry = findEntry(continuity, knots[a]);
         if (entry) {
           const style = entry.continuity < 0 ? st.broken : st.continuity;
-          r.text(this._continuityLabel(entry.continuity), x, lineY - r0 * STACK_PX * sc - 3 * sc, style, "center", "bottom");
+          r.text(
+            this._continuityLabel(entry.continuity),
+            x,
+            lineY - r0 * STACK_PX * sc - 3 * sc,
+            style,
+            "center",
+            "bottom",
+          );
         }
       }
       a = b + 1;
     }
 
     // The domain's caption under the values.
-    r.text(this._domainCaption(knots, p, n), (d0 + d1) / 2, valueY + ROW_VALUE * sc, st.domainLabel, "center", "top");
+    r.text(
+      this._domainCaption(knots, p, n),
+      (d0 + d1) / 2,
+      valueY + ROW_VALUE * sc,
+      st.domainLabel,
+      "center",
+      "top",
+    );
 
     // The knots: squares stacked upwards, labelled uᵢ on the right.
     const c = this._centre;
@@ -662,7 +703,14 @@ export class KnotRuler {
       r.beginPath();
       r.rect(c[0] - h, c[1] - h, 2 * h, 2 * h);
       r.paint(i === this.selected ? st.knotSelected : st.knot);
-      r.text(this._knotLabel(i), c[0] + h + 3 * sc, c[1], i === this.selected ? st.labelBold : st.label, "left", "middle");
+      r.text(
+        this._knotLabel(i),
+        c[0] + h + 3 * sc,
+        c[1],
+        i === this.selected ? st.labelBold : st.label,
+        "left",
+        "middle",
+      );
     }
 
     if (this.dragging < 0 && r === this.view.renderer) this._publish(knots);
@@ -699,7 +747,10 @@ export class KnotRuler {
     const key = u * 16 + multiplicity; // multiplicity ≤ 16 never collides for a fixed u
     let text = this._valueLabels.get(key);
     if (text === undefined) {
-      text = multiplicity > 1 ? t("knotRuler.valueMultiple", { u: knotText(u), r: multiplicity }) : knotText(u);
+      text =
+        multiplicity > 1
+          ? t("knotRuler.valueMultiple", { u: knotText(u), r: multiplicity })
+          : knotText(u);
       this._valueLabels.set(key, text);
     }
     return text;
@@ -723,7 +774,12 @@ export class KnotRuler {
       this._domainB = b;
       this._domainP = p;
       this._domainN = n;
-      this._domainLabel = t("knotRuler.domain", { p: subscript(p), n1: subscript(n + 1), a: knotText(a), b: knotText(b) });
+      this._domainLabel = t("knotRuler.domain", {
+        p: subscript(p),
+        n1: subscript(n + 1),
+        a: knotText(a),
+        b: knotText(b),
+      });
     }
     return this._domainLabel;
   }
@@ -786,8 +842,12 @@ export function knotRuler(field, o = {}) {
           setKnots(ui, next, false, options);
         },
         commit: (kind, i, merge) => ui.commit(merge),
-        raise: o.refused ? (i) => multiplicity(i, raiseMultiplicity(ui.state[field], i, degree(ui.state))) : undefined,
-        lower: o.refused ? (i) => multiplicity(i, lowerMultiplicity(ui.state[field], i)) : undefined,
+        raise: o.refused
+          ? (i) => multiplicity(i, raiseMultiplicity(ui.state[field], i, degree(ui.state)))
+          : undefined,
+        lower: o.refused
+          ? (i) => multiplicity(i, lowerMultiplicity(ui.state[field], i))
+          : undefined,
         pick: o.pick ? (u, final) => o.pick(ui, u, final) : undefined,
         select: (i) => {
           o.select?.(ui, i);

@@ -6,7 +6,15 @@
  * `ui.set(field, value, final)`, and `sync` shows the field's value after any change (undo,
  * reset, link, playback), so no demo syncs its sliders by hand. Labels are strings.js keys.
  */
-import { slider as sliderElement, checkbox as checkboxElement, radios, button, group as fieldset, el, setText } from "./controls.js";
+import {
+  slider as sliderElement,
+  checkbox as checkboxElement,
+  radios,
+  button,
+  group as fieldset,
+  el,
+  setText,
+} from "./controls.js";
 import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
 import { parseNumberInput } from "./format.js";
@@ -84,7 +92,10 @@ export function slider(field, o) {
         },
         onError: (text) => {
           const [a, b] = range();
-          const message = typeof o.error === "function" ? o.error(text, ui.state) : t(o.error ?? "control.badNumber", { value: text, min: a, max: b, field });
+          const message =
+            typeof o.error === "function"
+              ? o.error(text, ui.state)
+              : t(o.error ?? "control.badNumber", { value: text, min: a, max: b, field });
           ui.status(message, "error");
         },
       });
@@ -125,7 +136,12 @@ export function slider(field, o) {
 export function checkbox(field, { label, name = field }) {
   return {
     build(ui) {
-      const box = checkboxElement({ label: t(label), name, checked: ui.state[field], onChange: (on) => ui.set(field, on) });
+      const box = checkboxElement({
+        label: t(label),
+        name,
+        checked: ui.state[field],
+        onChange: (on) => ui.set(field, on),
+      });
       return { element: box.element, sync: (state) => box.set(state[field]) };
     },
   };
@@ -140,7 +156,10 @@ export function checkbox(field, { label, name = field }) {
  * choice the model is built from (a rule it enforces on the state): the new state is built
  * first (`ui.replace`) and recorded only when the core accepts it.
  */
-export function choice(field, { options, name = field, refuse = null, set = null, rebuild = false }) {
+export function choice(
+  field,
+  { options, name = field, refuse = null, set = null, rebuild = false },
+) {
   return {
     build(ui) {
       const choose = (value) => {
@@ -189,8 +208,20 @@ export function choice(field, { options, name = field, refuse = null, set = null
  * point gets the value given, a removed point takes its entry along.
  */
 export function pointButtons(field, o) {
-  const { min, max, prefix, minKey = `${prefix}.minPoints`, maxKey = `${prefix}.maxPoints`, params = () => ({}) } = o;
-  const { addTitle = "control.addPoint.title", removeTitle = "control.removePoint.title", adjust = null, more = [] } = o;
+  const {
+    min,
+    max,
+    prefix,
+    minKey = `${prefix}.minPoints`,
+    maxKey = `${prefix}.maxPoints`,
+    params = () => ({}),
+  } = o;
+  const {
+    addTitle = "control.addPoint.title",
+    removeTitle = "control.removePoint.title",
+    adjust = null,
+    more = [],
+  } = o;
   const { companions = {} } = o;
   const least = typeof min === "function" ? min : () => min;
   return {
@@ -220,7 +251,8 @@ export function pointButtons(field, o) {
         const done = o.apply ? o.apply(ui, next.points) : replace(next.points, lists);
         if (done) ui.handles?.select(next.index);
       };
-      const refuse = (key, limits) => ui.status(t(key, { ...ui.state, ...limits, ...params(ui.state) }), "error");
+      const refuse = (key, limits) =>
+        ui.status(t(key, { ...ui.state, ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
@@ -234,9 +266,26 @@ export function pointButtons(field, o) {
         },
       };
       const selected = () => ui.handles?.selected ?? -1;
-      const addButton = button({ label: t("control.addPoint"), title: t(addTitle), name: "add-point", onClick: () => ui.pointList.add(selected()) });
-      const removeButton = button({ label: t("control.removePoint"), title: t(removeTitle), name: "remove-point", onClick: () => ui.pointList.remove(selected()) });
-      const others = more.map((a) => button({ label: t(a.label), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
+      const addButton = button({
+        label: t("control.addPoint"),
+        title: t(addTitle),
+        name: "add-point",
+        onClick: () => ui.pointList.add(selected()),
+      });
+      const removeButton = button({
+        label: t("control.removePoint"),
+        title: t(removeTitle),
+        name: "remove-point",
+        onClick: () => ui.pointList.remove(selected()),
+      });
+      const others = more.map((a) =>
+        button({
+          label: t(a.label),
+          title: a.title ? t(a.title) : undefined,
+          name: a.name,
+          onClick: () => a.run(ui),
+        }),
+      );
       return {
         element: el("div", { class: "sl-button-row" }, addButton, removeButton, ...others),
         sync(state) {
@@ -260,7 +309,11 @@ export function readout(name, text, { kind = "note", live = false, data = null }
   return {
     build(ui) {
       const className = kind === "readout" ? "sl-readout" : "sl-note";
-      const node = el("p", { class: className, dataset: name ? { info: name } : null, "aria-live": live ? "polite" : null });
+      const node = el("p", {
+        class: className,
+        dataset: name ? { info: name } : null,
+        "aria-live": live ? "polite" : null,
+      });
       let keys = [];
       return {
         element: node,
@@ -304,7 +357,14 @@ export function shownWhen(when, item) {
 export function actions(list, { title = null } = {}) {
   return {
     build(ui) {
-      const buttons = list.map((a) => button({ label: t(a.label, a.params), title: a.title ? t(a.title) : undefined, name: a.name, onClick: () => a.run(ui) }));
+      const buttons = list.map((a) =>
+        button({
+          label: t(a.label, a.params),
+          title: a.title ? t(a.title) : undefined,
+          name: a.name,
+          onClick: () => a.run(ui),
+        }),
+      );
       const row = el("div", { class: "sl-button-row" }, buttons);
       return {
         element: title ? fieldset(t(title), row) : row,
@@ -326,17 +386,27 @@ export function actions(list, { title = null } = {}) {
  * `apply(ui, values)` (default `ui.set(field, values)`) gets the list. The box is not rewritten
  * while it has the focus.
  */
-export function numberList(field, { label, name = field, format = String, help = null, apply = null }) {
+export function numberList(
+  field,
+  { label, name = field, format = String, help = null, apply = null },
+) {
   return {
     build(ui) {
       const id = `sl-${name}-${Math.random().toString(36).slice(2, 8)}`;
       const input = el("input", {
-        type: "text", id, class: "sl-value sl-wide", inputmode: "decimal", spellcheck: "false",
+        type: "text",
+        id,
+        class: "sl-value sl-wide",
+        inputmode: "decimal",
+        spellcheck: "false",
         "aria-describedby": help ? `${id}-help` : null,
       });
       const note = help ? el("p", { class: "sl-note", id: `${id}-help` }) : null;
       const read = () => {
-        const parts = input.value.trim().split(/[\s,;]+/).filter(Boolean);
+        const parts = input.value
+          .trim()
+          .split(/[\s,;]+/)
+          .filter(Boolean);
         const values = parts.map(parseNumberInput);
         const bad = parts.find((part, i) => !Number.isFinite(values[i]));
         if (bad !== undefined) ui.status(t("control.badNumber", { value: bad }), "error");
@@ -347,8 +417,14 @@ export function numberList(field, { label, name = field, format = String, help =
       input.addEventListener("keydown", (event) => {
         if (event.key === "Enter") read();
       });
-      const focused = () => document.activeElement === input || input.getRootNode().activeElement === input;
-      const row = el("div", { class: "sl-control", dataset: { control: name } }, el("label", { for: id, text: t(label) }), input);
+      const focused = () =>
+        document.activeElement === input || input.getRootNode().activeElement === input;
+      const row = el(
+        "div",
+        { class: "sl-control", dataset: { control: name } },
+        el("label", { for: id, text: t(label) }),
+        input,
+      );
       return {
         element: fragment(row, ...(note ? [note] : [])),
         sync(state) {

@@ -35,7 +35,9 @@ export function knotMarks(knots) {
       counts.push(1);
     }
   }
-  const labels = values.map((value, j) => (counts[j] > 1 ? `${knotText(value)} ×${counts[j]}` : knotText(value)));
+  const labels = values.map((value, j) =>
+    counts[j] > 1 ? `${knotText(value)} ×${counts[j]}` : knotText(value),
+  );
   return { values: Float64Array.from(values), counts, labels };
 }
 
@@ -121,28 +123,31 @@ export class ParameterStrip {
     this.scale = 1;
     /** True while a press in the band is being dragged. */
     this.dragging = false;
-    view.addInteractor({
-      pointerDown: (event, x, y) => {
-        if (!this.contains(x, y)) return false;
-        o.press?.();
-        this.dragging = true;
-        pick(this.uAt(x), false);
-        return true;
+    view.addInteractor(
+      {
+        pointerDown: (event, x, y) => {
+          if (!this.contains(x, y)) return false;
+          o.press?.();
+          this.dragging = true;
+          pick(this.uAt(x), false);
+          return true;
+        },
+        pointerMove: (event, x) => {
+          if (this.dragging) pick(this.uAt(x), false);
+        },
+        pointerUp: (event, x) => {
+          if (!this.dragging) return;
+          this.dragging = false;
+          pick(this.uAt(x), true);
+        },
+        hover: (x, y) => {
+          if (!this.contains(x, y)) return null;
+          over();
+          return "col-resize";
+        },
       },
-      pointerMove: (event, x) => {
-        if (this.dragging) pick(this.uAt(x), false);
-      },
-      pointerUp: (event, x) => {
-        if (!this.dragging) return;
-        this.dragging = false;
-        pick(this.uAt(x), true);
-      },
-      hover: (x, y) => {
-        if (!this.contains(x, y)) return null;
-        over();
-        return "col-resize";
-      },
-    }, before);
+      before,
+    );
   }
 
   /** Lays the band out for a canvas of width × height CSS px at (lecture) scale `scale`. */
@@ -177,7 +182,6 @@ export class ParameterStrip {
     const [lo, hi] = this.clampTo();
     return Math.min(hi, Math.max(lo, lo + Math.round((raw - lo) / step) * step));
   }
-
 
   /** Canvas y of a row `row` CSS px (at scale 1) below the band's top (after `layout`). */
   y(row) {

@@ -41,16 +41,19 @@ export class Player {
    * @param {string} [o.stepBackTitle] @param {string} [o.stepTitle] tooltips of the step buttons.
    * @param {boolean} [o.autoplay] start playing at once — unless `prefers-reduced-motion`.
    */
-  constructor(view, {
-    get,
-    set,
-    stopped = () => {},
-    range = () => UNIT_RANGE,
-    playable = true,
-    autoplay = false,
-    stepBackTitle = t("control.stepBack.title"),
-    stepTitle = t("control.stepForward.title"),
-  }) {
+  constructor(
+    view,
+    {
+      get,
+      set,
+      stopped = () => {},
+      range = () => UNIT_RANGE,
+      playable = true,
+      autoplay = false,
+      stepBackTitle = t("control.stepBack.title"),
+      stepTitle = t("control.stepForward.title"),
+    },
+  ) {
     this.view = view;
     this.get = get;
     this.set = set;
@@ -59,11 +62,34 @@ export class Player {
     this.playing = false;
     this.lastTime = 0;
     this.frameId = 0;
-    this.backButton = button({ label: t("control.stepBack"), title: stepBackTitle, name: "step-back", onClick: () => this.step(-1) });
-    this.forwardButton = button({ label: t("control.stepForward"), title: stepTitle, name: "step", onClick: () => this.step(1) });
-    this.playButton = playable ? button({ label: t("control.play"), name: "play", pressed: false, onClick: () => this.toggle() }) : null;
+    this.backButton = button({
+      label: t("control.stepBack"),
+      title: stepBackTitle,
+      name: "step-back",
+      onClick: () => this.step(-1),
+    });
+    this.forwardButton = button({
+      label: t("control.stepForward"),
+      title: stepTitle,
+      name: "step",
+      onClick: () => this.step(1),
+    });
+    this.playButton = playable
+      ? button({
+          label: t("control.play"),
+          name: "play",
+          pressed: false,
+          onClick: () => this.toggle(),
+        })
+      : null;
     /** The button row to place in the side panel: step back, play/pause, step. */
-    this.element = el("div", { class: "sl-button-row" }, this.backButton, this.playButton, this.forwardButton);
+    this.element = el(
+      "div",
+      { class: "sl-button-row" },
+      this.backButton,
+      this.playButton,
+      this.forwardButton,
+    );
 
     this.tick = (now) => {
       if (!this.playing) return;

@@ -72,7 +72,8 @@ export function pointListActions({ ctx, work, view, handles, min, max, strings, 
     handles.select(next.index);
     ctx.commit(work);
   };
-  const refuse = (kind, limit) => ctx.status(tp(`${strings}.${kind}Points`, limit, { [kind]: limit }), "error");
+  const refuse = (kind, limit) =>
+    ctx.status(tp(`${strings}.${kind}Points`, limit, { [kind]: limit }), "error");
   return {
     /** Adds a point after handle i (at the end when none is selected). */
     add(i) {
@@ -92,7 +93,17 @@ export function pointListActions({ ctx, work, view, handles, min, max, strings, 
 /** The "Add point" and "Remove point" buttons: `add(i)` / `remove(i)` on the `selected()` handle. */
 export function pointButtons({ add, remove, selected }) {
   return {
-    addButton: button({ label: t("control.addPoint"), title: t("control.addPoint.title"), name: "add-point", onClick: () => add(selected()) }),
-    removeButton: button({ label: t("control.removePoint"), title: t("control.removePoint.title"), name: "remove-point", onClick: () => remove(selected()) }),
+    addButton: button({
+      label: t("control.addPoint"),
+      title: t("control.addPoint.title"),
+      name: "add-point",
+      onClick: () => add(selected()),
+    }),
+    removeButton: button({
+      label: t("control.removePoint"),
+      title: t("control.removePoint.title"),
+      name: "remove-point",
+      onClick: () => remove(selected()),
+    }),
   };
 }

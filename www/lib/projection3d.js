@@ -51,7 +51,10 @@ export class ObliqueCamera {
    */
   fit(x0, y0, x1, y1, minExtent = 1e-9) {
     const { u0, u1, v0, v1 } = this;
-    this.k = Math.min((x1 - x0) / Math.max(u1 - u0, minExtent), (y1 - y0) / Math.max(v1 - v0, minExtent));
+    this.k = Math.min(
+      (x1 - x0) / Math.max(u1 - u0, minExtent),
+      (y1 - y0) / Math.max(v1 - v0, minExtent),
+    );
     this.ox = (x0 + x1) / 2 - ((u0 + u1) / 2) * this.k;
     this.oy = (y0 + y1) / 2 + ((v0 + v1) / 2) * this.k;
   }

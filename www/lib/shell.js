@@ -54,7 +54,11 @@ export function validateState(demo, candidate) {
  * @param {string} [options.headingLevel] "h1" on the playground page, "h2" in embeds.
  * @returns {{ state: object, accept: Function, status: Function, destroy: Function, figure: View | null, element: HTMLElement }}
  */
-export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2" }) {
+export function mountDemo(
+  root,
+  demo,
+  { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2" },
+) {
   const prefix = demo.strings;
   const history = new History(state);
   let figure = null;
@@ -68,42 +72,135 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
   const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
   const formula = el("div", { class: "sl-formula" });
   const details = el("div", { class: "sl-details" });
-  const fileInput = el("input", { type: "file", accept: ".json,application/json", hidden: true, class: "sl-import-input", "aria-hidden": "true", tabindex: "-1" });
+  const fileInput = el("input", {
+    type: "file",
+    accept: ".json,application/json",
+    hidden: true,
+    class: "sl-import-input",
+    "aria-hidden": "true",
+    tabindex: "-1",
+  });
 
   const buttons = {
-    undo: button({ label: t("toolbar.undo"), title: t("toolbar.undo.title"), name: "undo", onClick: () => undo() }),
-    redo: button({ label: t("toolbar.redo"), title: t("toolbar.redo.title"), name: "redo", onClick: () => redo() }),
-    reset: button({ label: t("toolbar.reset"), title: t("toolbar.reset.title"), name: "reset", onClick: () => reset() }),
-    fit: button({ label: t("toolbar.fit"), title: t("toolbar.fit.title"), name: "fit", onClick: () => fit() }),
-    lecture: button({ label: t("toolbar.lecture"), title: t("toolbar.lecture.title"), name: "lecture", pressed: false, onClick: () => toggleLecture() }),
-    share: button({ label: t("toolbar.share"), title: t("toolbar.share.title"), name: "share", onClick: () => share() }),
-    svg: button({ label: t("toolbar.svg"), title: t("toolbar.svg.title"), name: "export-svg", onClick: () => exportSvg() }),
-    png: button({ label: t("toolbar.png"), title: t("toolbar.png.title"), name: "export-png", onClick: () => exportPng() }),
-    json: button({ label: t("toolbar.json"), title: t("toolbar.json.title"), name: "export-json", onClick: () => exportState() }),
-    import: button({ label: t("toolbar.import"), title: t("toolbar.import.title"), name: "import", onClick: () => fileInput.click() }),
+    undo: button({
+      label: t("toolbar.undo"),
+      title: t("toolbar.undo.title"),
+      name: "undo",
+      onClick: () => undo(),
+    }),
+    redo: button({
+      label: t("toolbar.redo"),
+      title: t("toolbar.redo.title"),
+      name: "redo",
+      onClick: () => redo(),
+    }),
+    reset: button({
+      label: t("toolbar.reset"),
+      title: t("toolbar.reset.title"),
+      name: "reset",
+      onClick: () => reset(),
+    }),
+    fit: button({
+      label: t("toolbar.fit"),
+      title: t("toolbar.fit.title"),
+      name: "fit",
+      onClick: () => fit(),
+    }),
+    lecture: button({
+      label: t("toolbar.lecture"),
+      title: t("toolbar.lecture.title"),
+      name: "lecture",
+      pressed: false,
+      onClick: () => toggleLecture(),
+    }),
+    share: button({
+      label: t("toolbar.share"),
+      title: t("toolbar.share.title"),
+      name: "share",
+      onClick: () => share(),
+    }),
+    svg: button({
+      label: t("toolbar.svg"),
+      title: t("toolbar.svg.title"),
+      name: "export-svg",
+      onClick: () => exportSvg(),
+    }),
+    png: button({
+      label: t("toolbar.png"),
+      title: t("toolbar.png.title"),
+      name: "export-png",
+      onClick: () => exportPng(),
+    }),
+    json: button({
+      label: t("toolbar.json"),
+      title: t("toolbar.json.title"),
+      name: "export-json",
+      onClick: () => exportState(),
+    }),
+    import: button({
+      label: t("toolbar.import"),
+      title: t("toolbar.import.title"),
+      name: "import",
+      onClick: () => fileInput.click(),
+    }),
   };
-  const toolbar = el("div", { class: "sl-toolbar", role: "toolbar", "aria-label": t("toolbar.label") },
-    el("span", { class: "sl-tool-group" }, buttons.undo, buttons.redo, buttons.reset, buttons.fit, buttons.lecture),
+  const toolbar = el(
+    "div",
+    { class: "sl-toolbar", role: "toolbar", "aria-label": t("toolbar.label") },
+    el(
+      "span",
+      { class: "sl-tool-group" },
+      buttons.undo,
+      buttons.redo,
+      buttons.reset,
+      buttons.fit,
+      buttons.lecture,
+    ),
     el("span", { class: "sl-tool-group" }, buttons.share),
-    el("span", { class: "sl-tool-group" }, el("span", { class: "sl-tool-label", text: t("toolbar.export") }), buttons.svg, buttons.png, buttons.json),
-    el("span", { class: "sl-tool-group" }, buttons.import, fileInput));
+    el(
+      "span",
+      { class: "sl-tool-group" },
+      el("span", { class: "sl-tool-label", text: t("toolbar.export") }),
+      buttons.svg,
+      buttons.png,
+      buttons.json,
+    ),
+    el("span", { class: "sl-tool-group" }, buttons.import, fileInput),
+  );
 
   const tryItems = [];
-  for (let i = 1; i <= MAX_TRY_ITEMS && has(`${prefix}.try${i}`); i++) tryItems.push(el("li", { text: t(`${prefix}.try${i}`) }));
+  for (let i = 1; i <= MAX_TRY_ITEMS && has(`${prefix}.try${i}`); i++)
+    tryItems.push(el("li", { text: t(`${prefix}.try${i}`) }));
   const about =
     mode === "page"
-      ? el("section", { class: "sl-about" },
-          el("h3", { text: t("shell.whatYouSee") }), el("p", { text: t(`${prefix}.whatYouSee`) }),
-          el("h3", { text: t("shell.tryThis") }), el("ul", {}, tryItems))
+      ? el(
+          "section",
+          { class: "sl-about" },
+          el("h3", { text: t("shell.whatYouSee") }),
+          el("p", { text: t(`${prefix}.whatYouSee`) }),
+          el("h3", { text: t("shell.tryThis") }),
+          el("ul", {}, tryItems),
+        )
       : null;
 
-  const element = el("section", { class: `sl-demo sl-mode-${mode}`, dataset: { demo: demo.id } },
-    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: t(`${prefix}.title`) }), toolbar),
-    el("div", { class: "sl-body" },
+  const element = el(
+    "section",
+    { class: `sl-demo sl-mode-${mode}`, dataset: { demo: demo.id } },
+    el(
+      "header",
+      { class: "sl-head" },
+      el(headingLevel, { class: "sl-title", text: t(`${prefix}.title`) }),
+      toolbar,
+    ),
+    el(
+      "div",
+      { class: "sl-body" },
       el("div", { class: "sl-figure-wrap" }, figureHost, help),
       panel,
-      el("div", { class: "sl-below" }, status, formula, details)),
-    about);
+      el("div", { class: "sl-below" }, status, formula, details),
+    ),
+    about,
+  );
   root.replaceChildren(element);
   ensureKatexStyles(root.getRootNode ? root.getRootNode() : document);
 
@@ -112,7 +209,8 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
     clearTimeout(statusTimer);
     status.textContent = message;
     status.dataset.kind = kind;
-    if (kind === "info" && message) statusTimer = setTimeout(() => (status.textContent = ""), INFO_MESSAGE_MS);
+    if (kind === "info" && message)
+      statusTimer = setTimeout(() => (status.textContent = ""), INFO_MESSAGE_MS);
   }
 
   // ------------------------------------------------------------------ state plumbing
@@ -242,7 +340,8 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
     const name = file.name;
     try {
       const candidate = parseJsonFile(await file.text(), demo.id);
-      if (accept(candidate, { errorKey: "status.badImport", name })) showStatus(t("status.imported", { name }));
+      if (accept(candidate, { errorKey: "status.badImport", name }))
+        showStatus(t("status.imported", { name }));
     } catch (err) {
       showStatus(t("status.badImport", { name, message: err.message }), "error");
     }
@@ -300,7 +399,9 @@ export function mountDemo(root, demo, { sl, state, mode = "page", onCommit = () 
     status: showStatus,
   };
 
-  const instance = isDeclarative(demo) ? mountDeclared(demo, history.current, ctx) : demo.mount(element, history.current, ctx);
+  const instance = isDeclarative(demo)
+    ? mountDeclared(demo, history.current, ctx)
+    : demo.mount(element, history.current, ctx);
   syncWindow();
   refreshButtons();
 

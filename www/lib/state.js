@@ -64,7 +64,9 @@ export function parseHash(hash) {
 
 /** The hash that opens demo `id` with `state`. */
 export function buildHash(id, state) {
-  return state ? `#demo=${encodeURIComponent(id)}&s=${encodeState(state)}` : `#demo=${encodeURIComponent(id)}`;
+  return state
+    ? `#demo=${encodeURIComponent(id)}&s=${encodeState(state)}`
+    : `#demo=${encodeURIComponent(id)}`;
 }
 
 /** The JSON file text of a state: `{ version, demo, state }`, pretty-printed. */
@@ -83,8 +85,12 @@ export function parseJsonFile(text, id) {
   } catch (err) {
     throw new Error(t("error.badJson", { message: err.message }));
   }
-  if (data === null || typeof data !== "object" || Array.isArray(data)) throw new Error(t("error.notObject"));
-  if (data.version !== STATE_VERSION) throw new Error(t("error.version", { version: JSON.stringify(data.version), expected: STATE_VERSION }));
+  if (data === null || typeof data !== "object" || Array.isArray(data))
+    throw new Error(t("error.notObject"));
+  if (data.version !== STATE_VERSION)
+    throw new Error(
+      t("error.version", { version: JSON.stringify(data.version), expected: STATE_VERSION }),
+    );
   if (data.demo !== id) throw new Error(t("error.wrongDemo", { found: data.demo, expected: id }));
   return data.state;
 }

@@ -21,7 +21,11 @@ let nextId = 0;
 export function titledTable(name, { caption, children = [] } = {}) {
   nextId += 1;
   const title = el("p", { class: "sl-table-title", id: `sl-table-${nextId}`, text: caption });
-  const table = el("table", { class: "sl-table", dataset: { table: name }, "aria-labelledby": title.id }, children);
+  const table = el(
+    "table",
+    { class: "sl-table", dataset: { table: name }, "aria-labelledby": title.id },
+    children,
+  );
   return { title, table, wrap: el("div", { class: "sl-table-wrap" }, table) };
 }
 
@@ -50,7 +54,10 @@ export function detailsTable(ui, name, build) {
 
 /** The two spans of a value cell: `exact` (a fraction, or the decimals) and `decimal` under it. */
 export function valueSpans() {
-  return { exact: el("span", { class: "sl-cell-value" }), decimal: el("span", { class: "sl-cell-decimal" }) };
+  return {
+    exact: el("span", { class: "sl-cell-value" }),
+    decimal: el("span", { class: "sl-cell-decimal" }),
+  };
 }
 
 /**

@@ -19,7 +19,12 @@ export const HUES = Object.freeze({
 });
 
 /** Construction levels (de Casteljau, de Boor, Aitken) and per-point colours cycle through these. */
-export const CYCLE = Object.freeze([HUES.orange, HUES.bluishGreen, HUES.reddishPurple, HUES.skyBlue]);
+export const CYCLE = Object.freeze([
+  HUES.orange,
+  HUES.bluishGreen,
+  HUES.reddishPurple,
+  HUES.skyBlue,
+]);
 
 /** Stroke widths in CSS px (ui.md "Colours" table). */
 export const WIDTH = Object.freeze({
@@ -49,7 +54,8 @@ export const RADIUS = Object.freeze({
 export const FONT_SIZE = Object.freeze({ label: 15, small: 14 });
 
 /** Font stack shared by canvas text and SVG `<text>`, so exports match the screen. */
-export const FONT_FAMILY = 'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
+export const FONT_FAMILY =
+  'system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif';
 
 /** Dash pattern of the control polygon, in CSS px. */
 export const POLYGON_DASH = Object.freeze([5, 4]);
@@ -102,29 +108,83 @@ const DARK = Object.freeze({
  * renderer (draw.js): `stroke`, `fill`, `width`, `dash`, `alpha`, `radius`, `font` fields.
  */
 function makeTheme(base) {
-  const levelStroke = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.construction }));
-  const levelPoint = CYCLE.map((colour) => Object.freeze({ fill: colour, radius: RADIUS.constructionPoint }));
-  const basisStroke = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.construction, join: "round" }));
-  const basisHover = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisHover, join: "round" }));
-  const basisRing = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisRing, radius: RADIUS.basisRing }));
-  const basisBand = CYCLE.map((colour) => Object.freeze({ stroke: colour, width: WIDTH.basisBand, join: "round", cap: "round" }));
-  const basisPoint = CYCLE.map((colour) => Object.freeze({ fill: colour, stroke: base.background, width: 1, radius: RADIUS.constructionPoint }));
+  const levelStroke = CYCLE.map((colour) =>
+    Object.freeze({ stroke: colour, width: WIDTH.construction }),
+  );
+  const levelPoint = CYCLE.map((colour) =>
+    Object.freeze({ fill: colour, radius: RADIUS.constructionPoint }),
+  );
+  const basisStroke = CYCLE.map((colour) =>
+    Object.freeze({ stroke: colour, width: WIDTH.construction, join: "round" }),
+  );
+  const basisHover = CYCLE.map((colour) =>
+    Object.freeze({ stroke: colour, width: WIDTH.basisHover, join: "round" }),
+  );
+  const basisRing = CYCLE.map((colour) =>
+    Object.freeze({ stroke: colour, width: WIDTH.basisRing, radius: RADIUS.basisRing }),
+  );
+  const basisBand = CYCLE.map((colour) =>
+    Object.freeze({ stroke: colour, width: WIDTH.basisBand, join: "round", cap: "round" }),
+  );
+  const basisPoint = CYCLE.map((colour) =>
+    Object.freeze({
+      fill: colour,
+      stroke: base.background,
+      width: 1,
+      radius: RADIUS.constructionPoint,
+    }),
+  );
   return Object.freeze({
     ...base,
     curve: Object.freeze({ stroke: HUES.blue, width: WIDTH.curve, join: "round", cap: "round" }),
     polygon: Object.freeze({ stroke: base.polygon, width: WIDTH.polygon, dash: POLYGON_DASH }),
-    handle: Object.freeze({ fill: base.handleFill, stroke: base.handleOutline, width: WIDTH.handleOutline, radius: RADIUS.handle }),
-    handleHover: Object.freeze({ fill: base.handleFill, stroke: base.handleOutline, width: WIDTH.handleOutline, radius: RADIUS.handleHover }),
-    handleSelected: Object.freeze({ fill: base.handleFill, stroke: HUES.vermillion, width: 2.5, radius: RADIUS.handleHover }),
-    pointOnCurve: Object.freeze({ fill: HUES.vermillion, stroke: base.background, width: 1, radius: RADIUS.pointOnCurve }),
+    handle: Object.freeze({
+      fill: base.handleFill,
+      stroke: base.handleOutline,
+      width: WIDTH.handleOutline,
+      radius: RADIUS.handle,
+    }),
+    handleHover: Object.freeze({
+      fill: base.handleFill,
+      stroke: base.handleOutline,
+      width: WIDTH.handleOutline,
+      radius: RADIUS.handleHover,
+    }),
+    handleSelected: Object.freeze({
+      fill: base.handleFill,
+      stroke: HUES.vermillion,
+      width: 2.5,
+      radius: RADIUS.handleHover,
+    }),
+    pointOnCurve: Object.freeze({
+      fill: HUES.vermillion,
+      stroke: base.background,
+      width: 1,
+      radius: RADIUS.pointOnCurve,
+    }),
     levelStroke: Object.freeze(levelStroke),
     levelPoint: Object.freeze(levelPoint),
     helper: Object.freeze({ stroke: base.helper, width: WIDTH.helper, dash: HELPER_DASH }),
-    helperFill: Object.freeze({ fill: base.helper, alpha: HELPER_FILL_ALPHA, stroke: base.helper, width: WIDTH.helper }),
+    helperFill: Object.freeze({
+      fill: base.helper,
+      alpha: HELPER_FILL_ALPHA,
+      stroke: base.helper,
+      width: WIDTH.helper,
+    }),
     label: Object.freeze({ fill: base.text, size: FONT_SIZE.label, halo: base.background }),
-    labelBold: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
+    labelBold: Object.freeze({
+      fill: HUES.vermillion,
+      size: FONT_SIZE.label,
+      weight: "bold",
+      halo: base.background,
+    }),
     labelSmall: Object.freeze({ fill: base.text, size: FONT_SIZE.small, halo: base.background }),
-    labelPoint: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.label, weight: "bold", halo: base.background }),
+    labelPoint: Object.freeze({
+      fill: HUES.vermillion,
+      size: FONT_SIZE.label,
+      weight: "bold",
+      halo: base.background,
+    }),
     // Basis functions and their control points share a colour of CYCLE (index i mod CYCLE.length).
     basisStroke: Object.freeze(basisStroke),
     basisHover: Object.freeze(basisHover),
@@ -139,17 +199,48 @@ function makeTheme(base) {
     // The two halves of a subdivided curve: left solid, right dashed (never colour alone).
     splitLeft: Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.split }),
     splitRight: Object.freeze({ stroke: HUES.reddishPurple, width: WIDTH.split, dash: SPLIT_DASH }),
-    splitLeftPoint: Object.freeze({ fill: HUES.bluishGreen, stroke: base.background, width: 1, radius: RADIUS.splitPoint }),
-    splitRightPoint: Object.freeze({ fill: HUES.reddishPurple, stroke: base.background, width: 1, radius: RADIUS.splitPoint }),
+    splitLeftPoint: Object.freeze({
+      fill: HUES.bluishGreen,
+      stroke: base.background,
+      width: 1,
+      radius: RADIUS.splitPoint,
+    }),
+    splitRightPoint: Object.freeze({
+      fill: HUES.reddishPurple,
+      stroke: base.background,
+      width: 1,
+      radius: RADIUS.splitPoint,
+    }),
     // A stretch of the curve singled out (a segment, a span): a wide translucent band under it.
-    highlightBand: Object.freeze({ stroke: HUES.blue, width: WIDTH.highlightBand, strokeAlpha: 0.25, join: "round", cap: "round" }),
+    highlightBand: Object.freeze({
+      stroke: HUES.blue,
+      width: WIDTH.highlightBand,
+      strokeAlpha: 0.25,
+      join: "round",
+      cap: "round",
+    }),
     // Curves compared in one figure: blue solid, bluish green dashed, reddish purple dotted.
     compareCurve: Object.freeze(
       [HUES.blue, HUES.bluishGreen, HUES.reddishPurple].map((colour, i) =>
-        Object.freeze({ stroke: colour, width: WIDTH.curve, join: "round", cap: i === 1 ? "butt" : "round", ...(COMPARE_DASH[i] ? { dash: COMPARE_DASH[i] } : {}) })),
+        Object.freeze({
+          stroke: colour,
+          width: WIDTH.curve,
+          join: "round",
+          cap: i === 1 ? "butt" : "round",
+          ...(COMPARE_DASH[i] ? { dash: COMPARE_DASH[i] } : {}),
+        }),
+      ),
     ),
     comparePoint: Object.freeze(
-      [HUES.blue, HUES.bluishGreen, HUES.reddishPurple].map((colour) => Object.freeze({ fill: colour, stroke: base.background, width: 1, radius: RADIUS.splitPoint }))),
+      [HUES.blue, HUES.bluishGreen, HUES.reddishPurple].map((colour) =>
+        Object.freeze({
+          fill: colour,
+          stroke: base.background,
+          width: 1,
+          radius: RADIUS.splitPoint,
+        }),
+      ),
+    ),
   });
 }
 

@@ -65,8 +65,33 @@ export function drawLevels(r, v, triangle, n, centre, labels = null, placer = nu
       r.point(x, y, style);
       if (!labels) continue;
       const text = labels.get(j, level);
-      if (placer) placer.place(r, v, triangle, n, level, j, text, centre, theme.labelSmall, style.radius * r.scale, placer.points);
-      else legLabel(r, v, triangle, n, level, j, text, centre, theme.labelSmall, style.radius * r.scale);
+      if (placer)
+        placer.place(
+          r,
+          v,
+          triangle,
+          n,
+          level,
+          j,
+          text,
+          centre,
+          theme.labelSmall,
+          style.radius * r.scale,
+          placer.points,
+        );
+      else
+        legLabel(
+          r,
+          v,
+          triangle,
+          n,
+          level,
+          j,
+          text,
+          centre,
+          theme.labelSmall,
+          style.radius * r.scale,
+        );
     }
     offset += count;
   }
@@ -130,9 +155,24 @@ export function screenCentroid(v, points, out) {
  * bonus in px for the plain normals; a label's centre is probed `LABEL_PROBE_PX` from its point.
  */
 const LABEL_DIRECTIONS = Object.freeze([
-  1, 0, 4, -1, 0, 4,
-  Math.SQRT1_2, Math.SQRT1_2, 0, Math.SQRT1_2, -Math.SQRT1_2, 0,
-  -Math.SQRT1_2, Math.SQRT1_2, 0, -Math.SQRT1_2, -Math.SQRT1_2, 0,
+  1,
+  0,
+  4,
+  -1,
+  0,
+  4,
+  Math.SQRT1_2,
+  Math.SQRT1_2,
+  0,
+  Math.SQRT1_2,
+  -Math.SQRT1_2,
+  0,
+  -Math.SQRT1_2,
+  Math.SQRT1_2,
+  0,
+  -Math.SQRT1_2,
+  -Math.SQRT1_2,
+  0,
 ]);
 const LABEL_PROBE_PX = 14;
 
@@ -179,10 +219,16 @@ export class LegLabelPlacer {
       const qy = y + dy * reach;
       let score = Infinity;
       for (let k = 0; k < all; k++) {
-        if (k !== self) score = Math.min(score, Math.hypot(v.sx(triangle[2 * k]) - qx, v.sy(triangle[2 * k + 1]) - qy));
+        if (k !== self)
+          score = Math.min(
+            score,
+            Math.hypot(v.sx(triangle[2 * k]) - qx, v.sy(triangle[2 * k + 1]) - qy),
+          );
       }
-      for (const [px, py] of points) score = Math.min(score, Math.hypot(v.sx(px) - qx, v.sy(py) - qy));
-      for (let k = 0; k < this.count; k++) score = Math.min(score, Math.hypot(this.placed[2 * k] - qx, this.placed[2 * k + 1] - qy));
+      for (const [px, py] of points)
+        score = Math.min(score, Math.hypot(v.sx(px) - qx, v.sy(py) - qy));
+      for (let k = 0; k < this.count; k++)
+        score = Math.min(score, Math.hypot(this.placed[2 * k] - qx, this.placed[2 * k + 1] - qy));
       score += LABEL_DIRECTIONS[c + 2] * r.scale;
       if (score > bestScore) {
         bestScore = score;

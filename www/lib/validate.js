@@ -8,13 +8,19 @@ import { t } from "./strings.js";
 
 /** Shows a value in an error message without flooding it. */
 function show(value) {
-  const text = typeof value === "string" ? t("format.quoted", { value }) : typeof value === "number" ? String(value) : JSON.stringify(value);
+  const text =
+    typeof value === "string"
+      ? t("format.quoted", { value })
+      : typeof value === "number"
+        ? String(value)
+        : JSON.stringify(value);
   return text === undefined ? String(value) : text.length > 40 ? `${text.slice(0, 37)}…` : text;
 }
 
 /** Throws unless `state` is a plain object whose fields are all listed in `allowed`. */
 export function checkObject(state, allowed) {
-  if (state === null || typeof state !== "object" || Array.isArray(state)) throw new Error(t("error.notObject"));
+  if (state === null || typeof state !== "object" || Array.isArray(state))
+    throw new Error(t("error.notObject"));
   for (const field of Object.keys(state)) {
     if (!allowed.includes(field)) throw new Error(t("error.unknownField", { field }));
   }
@@ -26,33 +32,47 @@ function present(state, field) {
 }
 
 /** Throws unless `state[field]` is a finite number in [min, max] (and an integer if asked). */
-export function checkNumber(state, field, { min = -Infinity, max = Infinity, integer = false } = {}) {
+export function checkNumber(
+  state,
+  field,
+  { min = -Infinity, max = Infinity, integer = false } = {},
+) {
   const value = present(state, field);
-  if (typeof value !== "number" || !Number.isFinite(value)) throw new Error(t("error.notFinite", { field, value: show(value) }));
-  if (integer && !Number.isInteger(value)) throw new Error(t("error.notInteger", { field, value: show(value) }));
-  if (value < min || value > max) throw new Error(t("error.range", { field, min, max, value: show(value) }));
+  if (typeof value !== "number" || !Number.isFinite(value))
+    throw new Error(t("error.notFinite", { field, value: show(value) }));
+  if (integer && !Number.isInteger(value))
+    throw new Error(t("error.notInteger", { field, value: show(value) }));
+  if (value < min || value > max)
+    throw new Error(t("error.range", { field, min, max, value: show(value) }));
 }
 
 /** Throws unless `state[field]` is a boolean. */
 export function checkBoolean(state, field) {
   const value = present(state, field);
-  if (typeof value !== "boolean") throw new Error(t("error.notBoolean", { field, value: show(value) }));
+  if (typeof value !== "boolean")
+    throw new Error(t("error.notBoolean", { field, value: show(value) }));
 }
 
 /** Throws unless `state[field]` is one of the strings in `choices`. */
 export function checkChoice(state, field, choices) {
   const value = present(state, field);
-  if (!choices.includes(value)) throw new Error(t("error.notString", { field, choices: choices.join(", "), value: show(value) }));
+  if (!choices.includes(value))
+    throw new Error(
+      t("error.notString", { field, choices: choices.join(", "), value: show(value) }),
+    );
 }
 
 /** Throws unless `state[field]` is a list of [x, y] pairs of finite numbers, min..max of them. */
 export function checkPoints(state, field, { min = 0, max = Infinity } = {}) {
   const value = present(state, field);
   if (!Array.isArray(value)) throw new Error(t("error.notArray", { field }));
-  if (value.length < min || value.length > max) throw new Error(t("error.count", { field, min, max, count: value.length }));
+  if (value.length < min || value.length > max)
+    throw new Error(t("error.count", { field, min, max, count: value.length }));
   value.forEach((point, index) => {
-    if (!Array.isArray(point) || point.length !== 2) throw new Error(t("error.pointShape", { field, index }));
-    if (!point.every((c) => typeof c === "number" && Number.isFinite(c))) throw new Error(t("error.pointFinite", { field, index }));
+    if (!Array.isArray(point) || point.length !== 2)
+      throw new Error(t("error.pointShape", { field, index }));
+    if (!point.every((c) => typeof c === "number" && Number.isFinite(c)))
+      throw new Error(t("error.pointFinite", { field, index }));
   });
 }
 
@@ -60,9 +80,11 @@ export function checkPoints(state, field, { min = 0, max = Infinity } = {}) {
 export function checkNumbers(state, field, { min = 0, max = Infinity } = {}) {
   const value = present(state, field);
   if (!Array.isArray(value)) throw new Error(t("error.notArray", { field }));
-  if (value.length < min || value.length > max) throw new Error(t("error.count", { field, min, max, count: value.length }));
+  if (value.length < min || value.length > max)
+    throw new Error(t("error.count", { field, min, max, count: value.length }));
   value.forEach((v) => {
-    if (typeof v !== "number" || !Number.isFinite(v)) throw new Error(t("error.notFinite", { field, value: show(v) }));
+    if (typeof v !== "number" || !Number.isFinite(v))
+      throw new Error(t("error.notFinite", { field, value: show(v) }));
   });
 }
 
@@ -85,7 +107,8 @@ export function checkWindow(win) {
  */
 export const field = Object.freeze({
   /** `options` may be a function of the state: `field.number((s) => ({ min: 0, max: s.points.length - 1 }))`. */
-  number: (options) => (state, name) => checkNumber(state, name, typeof options === "function" ? options(state) : options),
+  number: (options) => (state, name) =>
+    checkNumber(state, name, typeof options === "function" ? options(state) : options),
   boolean: () => (state, name) => checkBoolean(state, name),
   choice: (choices) => (state, name) => checkChoice(state, name, choices),
   points: (options) => (state, name) => checkPoints(state, name, options),

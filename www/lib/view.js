@@ -72,7 +72,17 @@ export class View {
    *   grows with it), e.g. a plot drawn in screen space below the figure; the window is shown
    *   whole and centred in the rest. Default: none.
    */
-  constructor(host, { draw, bounds = null, onWindowChange = null, label = "", wheelNeedsModifier = false, insets = null }) {
+  constructor(
+    host,
+    {
+      draw,
+      bounds = null,
+      onWindowChange = null,
+      label = "",
+      wheelNeedsModifier = false,
+      insets = null,
+    },
+  ) {
     this.host = host;
     this.insets = insets;
     this.drawFigure = draw;
@@ -94,7 +104,10 @@ export class View {
     this.pixelRatio = window.devicePixelRatio || 1;
     this.theme = currentTheme();
     this.lecture = false;
-    this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), { pixelRatio: this.pixelRatio, theme: this.theme });
+    this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), {
+      pixelRatio: this.pixelRatio,
+      theme: this.theme,
+    });
 
     // Window centre and half extents (world units), and the derived transform.
     this._cx = 0;
@@ -163,7 +176,7 @@ export class View {
    */
   fit(bounds = this.bounds?.()) {
     if (!bounds) return this.getWindow();
-    let [x0, y0, x1, y1] = bounds;
+    const [x0, y0, x1, y1] = bounds;
     const pad = FIT_PADDING * Math.max(x1 - x0, y1 - y0, MIN_FIT_EXTENT);
     const win = [x0 - pad, y0 - pad, x1 + pad, y1 + pad].map(roundWindowValue);
     this.setWindow(win);
@@ -172,7 +185,8 @@ export class View {
 
   /** Computes the transform for a canvas of w × h CSS px. */
   _layout(w, h) {
-    const [top, right, bottom, left] = this.insets?.(w || 1, h || 1, this.renderer?.scale ?? 1) ?? NO_INSETS;
+    const [top, right, bottom, left] =
+      this.insets?.(w || 1, h || 1, this.renderer?.scale ?? 1) ?? NO_INSETS;
     const width = Math.max(1, (w || 1) - left - right);
     const height = Math.max(1, (h || 1) - top - bottom);
     this._scale = Math.min(width / (2 * this._hw), height / (2 * this._hh));
@@ -255,7 +269,13 @@ export class View {
     const pixelWidth = devicePixels ? devicePixels.inlineSize : Math.round(w * dpr);
     const pixelHeight = devicePixels ? devicePixels.blockSize : Math.round(h * dpr);
     const ratio = w > 0 ? pixelWidth / w : dpr;
-    if (w === this.width && h === this.height && pixelWidth === this.canvas.width && pixelHeight === this.canvas.height) return;
+    if (
+      w === this.width &&
+      h === this.height &&
+      pixelWidth === this.canvas.width &&
+      pixelHeight === this.canvas.height
+    )
+      return;
     this.width = w;
     this.height = h;
     this.pixelRatio = ratio;
@@ -286,7 +306,10 @@ export class View {
   /** Canvas CSS px of a pointer event (border included, as the canvas box starts after it). */
   eventPosition(event) {
     const rect = this.canvas.getBoundingClientRect();
-    return [event.clientX - rect.left - this.canvas.clientLeft, event.clientY - rect.top - this.canvas.clientTop];
+    return [
+      event.clientX - rect.left - this.canvas.clientLeft,
+      event.clientY - rect.top - this.canvas.clientTop,
+    ];
   }
 
   _listen() {
@@ -307,7 +330,11 @@ export class View {
 
     this._resizeObserver = new ResizeObserver((entries) => {
       const entry = entries[entries.length - 1];
-      this._resize(entry.contentRect.width, entry.contentRect.height, entry.devicePixelContentBoxSize?.[0] ?? null);
+      this._resize(
+        entry.contentRect.width,
+        entry.contentRect.height,
+        entry.devicePixelContentBoxSize?.[0] ?? null,
+      );
     });
     try {
       this._resizeObserver.observe(this.canvas, { box: "device-pixel-content-box" });
@@ -449,7 +476,8 @@ export class View {
   destroy() {
     this._destroyed = true;
     clearTimeout(this._wheelTimer);
-    for (const [type, handler] of Object.entries(this._handlers)) this.canvas.removeEventListener(type, handler);
+    for (const [type, handler] of Object.entries(this._handlers))
+      this.canvas.removeEventListener(type, handler);
     this._resizeObserver.disconnect();
     this._dprQuery?.removeEventListener("change", this._dprHandler);
     this._stopTheme();

@@ -17,7 +17,10 @@ let loaded = null;
  * `i8x16.splat`, `i8x16.popcnt`). The package is built with SIMD128 (.cargo/config.toml), which
  * browsers run since Chrome 91, Firefox 89 and Safari 16.4; an older one cannot compile it.
  */
-const SIMD_PROBE = new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11]);
+const SIMD_PROBE = new Uint8Array([
+  0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15,
+  253, 98, 11,
+]);
 
 /** Set on the Error `loadWasm` rejects with when the browser has no WebAssembly SIMD. */
 export const NO_SIMD = "no-simd";
@@ -49,7 +52,9 @@ export function loadedWasm() {
 
 /** What to tell the reader when `loadWasm` failed with `err`. */
 export function loadFailureMessage(err) {
-  return err?.code === NO_SIMD ? err.message : t("app.wasmFailed", { message: err?.message ?? String(err) });
+  return err?.code === NO_SIMD
+    ? err.message
+    : t("app.wasmFailed", { message: err?.message ?? String(err) });
 }
 
 /**

@@ -47,7 +47,8 @@ export function weightRings(ui, { min, max }) {
     const { points, weights } = ui.state;
     for (let i = points.length - 1; i >= 0; i--) {
       const d = Math.hypot(x - view.sx(points[i][0]), y - view.sy(points[i][1]));
-      if (d > inner && Math.abs(d - ringRadius(weights[i]) * view.renderer.scale) <= slack) return i;
+      if (d > inner && Math.abs(d - ringRadius(weights[i]) * view.renderer.scale) <= slack)
+        return i;
     }
     return -1;
   };
