@@ -77,7 +77,7 @@ lint: lint-js
 	cargo clippy --lib --target $(WASM_TARGET) -- -D warnings
 
 lint-js: npm-deps
-	$(BIOME) check $(JS_DIRS)
+	$(BIOME) check --error-on-warnings $(JS_DIRS)
 
 format: npm-deps
 	$(BIOME) check --write $(JS_DIRS)

@@ -542,11 +542,11 @@ try {
               `${entry.id}: ${field} ${JSON.stringify(demo[field])} in the module, ${JSON.stringify(entry[field])} in the manifest`,
             );
         }
-        // The declarative contract (lib/demo.js): state, fields, model and drawing.
-        const exports =
-          "mount" in demo
-            ? ["defaultState", "validate", "mount"]
-            : ["defaultState", "fields", "derive", "draw"];
+        // The declarative contract (lib/demo.js): no mount/update, no title at import.
+        const exports = ["defaultState", "fields", "derive", "draw"];
+        for (const old of ["mount", "validate", "title", "summary"]) {
+          if (old in demo) found.push(`${entry.id}: an old-style ${old} export`);
+        }
         for (const name of exports)
           if (!(name in demo)) found.push(`${entry.id}: no ${name} export`);
       }
@@ -594,6 +594,47 @@ try {
       JSON.stringify(["/demos/de-casteljau.js", "/demos/index.js"]),
       "demo modules requested",
     );
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("the lib/README example is a whole demo that mounts and draws", async () => {
+    // The code block of www/lib/README.md's contract section, served as a demo module.
+    const readme = readFileSync(join(ROOT, "www/lib/README.md"), "utf8");
+    const section = readme.slice(readme.indexOf("## The demo module contract"));
+    const start = section.indexOf("```js\n") + 6;
+    const code = section.slice(start, section.indexOf("\n```", start));
+    const moduleUrl = `${base}/demos/readme-example.js`;
+    await page.goto(`${base}/index.html`);
+    await page.route(moduleUrl, (route) =>
+      route.fulfill({ contentType: "text/javascript", body: code }),
+    );
+    try {
+      const shown = await page.evaluate(async () => {
+        const demo = await import("./demos/readme-example.js");
+        const { mountDemo, validateState } = await import("./lib/shell.js");
+        const { loadWasm } = await import("./lib/wasm.js");
+        const sl = await loadWasm();
+        const host = document.createElement("div");
+        document.body.append(host);
+        const state = validateState(demo, structuredClone(demo.defaultState));
+        const mounted = mountDemo(host, demo, { sl, state, shareUrl: () => "" });
+        await new Promise((resolve) => setTimeout(resolve, 300));
+        const result = {
+          handles: host.querySelector(".sl-figure").dataset.handles,
+          formula: host.querySelector(".sl-formula").textContent,
+          label: host.querySelector("canvas").getAttribute("aria-label"),
+        };
+        mounted.destroy();
+        host.remove();
+        return result;
+      });
+      assert(shown.handles?.length > 0, "the example has handles");
+      assert(shown.formula.includes("1.813"), `P(1/4) in the formula: ${shown.formula}`);
+      assert(shown.label.includes("0.25"), `t in the label: ${shown.label}`);
+    } finally {
+      await page.unroute(moduleUrl);
+    }
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });

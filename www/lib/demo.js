@@ -29,11 +29,6 @@ import { FormulaPanel } from "./formula.js";
 import { Handles, pointHandles, pointLabel, pointListsHandles } from "./handles.js";
 import { t } from "./strings.js";
 
-/** True for a module written to this contract (rather than an old-style `mount`). */
-export function isDeclarative(demo) {
-  return typeof demo.mount !== "function" && typeof demo.draw === "function";
-}
-
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
   if (state === null || typeof state !== "object" || Array.isArray(state))

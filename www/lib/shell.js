@@ -14,7 +14,7 @@ import { checkWindow } from "./validate.js";
 import { el, button } from "./controls.js";
 import { t, has } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
-import { isDeclarative, mountDeclared, validateDeclared } from "./demo.js";
+import { mountDeclared, validateDeclared } from "./demo.js";
 
 /** Info messages clear themselves after this many ms; errors stay until replaced. */
 const INFO_MESSAGE_MS = 8000;
@@ -26,7 +26,7 @@ const MAX_TRY_ITEMS = 6;
  * naming the bad field. `view` is the shell's own field and is checked here.
  */
 export function validateState(demo, candidate) {
-  const validate = isDeclarative(demo) ? (s) => validateDeclared(demo, s) : demo.validate;
+  const validate = (s) => validateDeclared(demo, s);
   let state = candidate;
   if (state !== null && typeof state === "object" && !Array.isArray(state)) {
     state = { ...structuredClone(demo.defaultState), ...state };
@@ -399,9 +399,7 @@ export function mountDemo(
     status: showStatus,
   };
 
-  const instance = isDeclarative(demo)
-    ? mountDeclared(demo, history.current, ctx)
-    : demo.mount(element, history.current, ctx);
+  const instance = mountDeclared(demo, history.current, ctx);
   syncWindow();
   refreshButtons();
 

@@ -58,25 +58,6 @@ export function loadFailureMessage(err) {
 }
 
 /**
- * Builds a new wasm object with `build()` — first, before the old one is freed, since the core
- * may refuse the input. On a refusal (the constructor throws) the reason goes to the status line
- * (`ctx.status`) and the result is null; the demo then keeps its old object and state:
- *
- *   const built = buildOrReport(() => new sl.BSplineCurve(flatten(next.points), 2, p, knots), ctx);
- *   if (!built) return false;
- *   curve.free();
- *   curve = built;
- */
-export function buildOrReport(build, ctx) {
-  try {
-    return build();
-  } catch (err) {
-    ctx.status(t("status.rejected", { message: err.message }), "error");
-    return null;
-  }
-}
-
-/**
  * A declarative demo's `ui.replace(next)` (demo.js: the model is built first), or, when the
  * core refuses `next`, its reason in the status line and nothing changed. Returns true when
  * replaced.
