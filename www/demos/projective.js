@@ -15,7 +15,7 @@ import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, distanceToPolyline } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
-import { drawKey } from "../lib/key.js";
+import { drawCornerLegend } from "../lib/legend.js";
 import { squareToQuad, applyHomography, denominator } from "../lib/homography.js";
 import { scaledInsets, NARROW_CANVAS_PX } from "../lib/view.js";
 
@@ -290,9 +290,9 @@ export const figure = {
 
 /** The key: (a) solid, (b) dots, (c) dashed. */
 const KEY = Object.freeze([
-  { text: "projective.legendMapped", stroke: (theme) => theme.curve },
-  { text: "projective.legendPointwise", dots: (theme) => theme.levelPoint[0] },
-  { text: "projective.legendNaive", stroke: (theme) => theme.compareCurve[1] },
+  { label: "projective.legendMapped", style: (theme) => theme.curve },
+  { label: "projective.legendPointwise", dots: (theme) => theme.levelPoint[0] },
+  { label: "projective.legendNaive", style: (theme) => theme.compareCurve[1] },
 ]);
 const mapScratch = new Float64Array(2);
 
@@ -354,7 +354,7 @@ export function draw(r, v, s, d) {
   }
 
   d.handles.draw(r, v);
-  drawKey(r, KEY);
+  drawCornerLegend(r, KEY);
 }
 
 /** The source square with its grid and labels, and (when H keeps it finite) its image. */

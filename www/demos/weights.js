@@ -26,7 +26,7 @@ import {
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
-import { drawKey } from "../lib/key.js";
+import { drawCornerLegend } from "../lib/legend.js";
 import { weightRings, drawWeightRings } from "../lib/weight-rings.js";
 import { el, setText } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
@@ -284,8 +284,8 @@ export const figure = {
 
 /** The key: the rational curve (solid blue) and the polynomial ghost (dotted). */
 const KEY = Object.freeze([
-  { text: "weights.legendRational", stroke: (theme) => theme.curve },
-  { text: "weights.legendPolynomial", stroke: (theme) => theme.compareCurve[2] },
+  { label: "weights.legendRational", style: (theme) => theme.curve },
+  { label: "weights.legendPolynomial", style: (theme) => theme.compareCurve[2] },
 ]);
 
 /** The polygon, the weight rings, the ghost and the curve, P(t) and the ghost's point, the inset. */
@@ -333,7 +333,7 @@ export function draw(r, v, s, d) {
     below ? "bottom" : "top",
   );
 
-  drawKey(r, KEY);
+  drawCornerLegend(r, KEY);
   if (s.homogeneous) drawHomogeneousInset(r, d.inset);
 }
 
