@@ -71,7 +71,7 @@ test-wasm: tools
 test-e2e: build chromium
 	node tests/e2e/run.mjs
 
-lint: lint-js
+lint: lint-js rust-target
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	cargo clippy --lib --target $(WASM_TARGET) -- -D warnings
