@@ -1,7 +1,8 @@
 /**
  * The Cox–de Boor recurrence as TeX lines for a formula panel. The definition:
  *   N_{i,0}(u) = 1 on [u_i, u_{i+1}), 0 otherwise;
- *   N_{i,p}(u) = (u − u_i)/(u_{i+p} − u_i) N_{i,p−1}(u) + (u_{i+p+1} − u)/(u_{i+p+1} − u_{i+1}) N_{i+1,p−1}(u),
+ *   N_{i,p}(u) = (u − u_i)/(u_{i+p} − u_i) N_{i,p−1}(u)
+ *              + (u_{i+p+1} − u)/(u_{i+p+1} − u_{i+1}) N_{i+1,p−1}(u),
  * with 0/0 := 0 (a side whose knot difference vanishes is dropped); and one step of it with the
  * live numbers: the two ratios at u, the values N_{i,p−1}(u), N_{i+1,p−1}(u) of the row below
  * (from the core's `basisTable(u)`) and the result N_{i,p}(u) (the core's `basis(u)`).
