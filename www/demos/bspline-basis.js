@@ -27,21 +27,22 @@ import {
   clampInto,
 } from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
-import { BasisPlotPointer, drawGraph, drawPlotFrame, legendRow } from "../lib/basis-plot.js";
+import { BasisPlotPointer, drawGraph, drawPlotFrame } from "../lib/basis-plot.js";
 import { placeLabelAway } from "../lib/handles.js";
-import { radios, el, setText } from "../lib/controls.js";
-import {
-  fmt,
-  subscript,
-  superscript,
-  simpleFraction,
-  fractionText,
-  degreeName,
-} from "../lib/format.js";
-import { CYCLE } from "../lib/theme.js";
+import { fmt, subscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
+import { CYCLE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { boundsOf, nearestGraph } from "../lib/geometry.js";
-import { titledTable } from "../lib/table.js";
+import {
+  drawAxisLabels,
+  drawKnotLines,
+  drawPeakNames,
+  peakSamples,
+} from "../lib/basis-plot-marks.js";
+import { degreeButtons } from "../lib/degree-buttons.js";
+import { BasisValuesTable } from "../lib/basis-values-table.js";
+import { coxDeBoorDefinition, coxDeBoorStep } from "../lib/cox-de-boor-formula.js";
+import { continuityText } from "../lib/continuity.js";
 import { BasisTriangleTable } from "../lib/basis-triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
@@ -92,8 +93,6 @@ const PLOT_MARGIN = Object.freeze({ top: 38, bottom: 8 });
 const PLOT_HOVER_PX = 14;
 /** Pressing in the plot snaps u to a knot this close (CSS px). */
 const KNOT_SNAP_PX = 6;
-/** Length of a tick mark on the value axis, CSS px. */
-const TICK_PX = 5;
 /** Basis functions are named at their peaks up to this many (beyond, the names crowd). */
 const NAME_LABELS_MAX = 10;
 /** Fill opacity of the highlighted support in the plot. */
@@ -118,21 +117,11 @@ export const derive = {
   moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
 };
 
-/** Sample index of each N_i's maximum (where its name goes). */
-function peaks(basis, count) {
-  const peak = new Int32Array(count);
-  for (let i = 0; i < count; i++) {
-    for (let k = 1; k < SAMPLES; k++)
-      if (basis[i * SAMPLES + k] > basis[i * SAMPLES + peak[i]]) peak[i] = k;
-  }
-  return peak;
-}
-
 const BASIS = ["degree", "knots"];
 /** What the core returns: every N_{i,p} sampled, the continuity, the curve, the values at u. */
 export const compute = {
   basis: [BASIS, (s, d) => d.curve.basisCurves(SAMPLES)], // i-major: every N_{i,p} at SAMPLES u values
-  peaks: [BASIS, (s, d) => peaks(d.basis, s.points.length)],
+  peaks: [BASIS, (s, d) => peakSamples(d.basis, s.points.length, SAMPLES)],
   continuity: [BASIS, (s, d) => d.curve.knotContinuity()],
   domain: [BASIS, (s, d) => d.curve.domain()],
   samples: [["points", ...BASIS], (s, d) => d.curve.sampleUniform(SAMPLES)],
@@ -147,42 +136,6 @@ export const compute = {
       return t("bsplineBasis.marker", { u: f && f.den > 1 ? fractionText(f) : knotText(s.u) });
     },
   ],
-};
-
-/** The degree buttons: 1 … 5, those above n disabled; a new degree gets clamped uniform knots. */
-const degreeButtons = {
-  build(ui) {
-    const options = [];
-    for (let p = MIN_DEGREE; p <= MAX_DEGREE; p++) {
-      options.push({
-        value: String(p),
-        label: t("bsplineBasis.degreeOption", { p, kind: degreeName(p) }),
-      });
-    }
-    const control = radios({
-      name: "degree",
-      value: String(ui.state.degree),
-      options,
-      onChange(value) {
-        const p = Number(value);
-        const s = ui.state;
-        if (p === s.degree) return;
-        if (s.points.length < p + 1)
-          ui.status(t("bsplineBasis.minPoints", { min: p + 1, degree: p }), "error");
-        else replaceOrReport(ui, withClampedKnots(ui.sl, { ...s, degree: p }));
-        control.set(String(ui.state.degree));
-      },
-    });
-    control.element.classList.add("sl-button-row");
-    return {
-      element: control.element,
-      sync(s) {
-        control.set(String(s.degree));
-        for (const input of control.inputs)
-          input.disabled = Number(input.value) > s.points.length - 1;
-      },
-    };
-  },
 };
 
 /** u clamped into the domain, snapped to a knot within KNOT_SNAP_PX on the ruler, else to the slider's step. */
@@ -203,7 +156,10 @@ export const controls = [
       t(`bsplineBasis.multiplicity.${error}`, { i: subscript(i), max: s.degree + 1 }),
     pick: (ui, u, final) => ui.set("u", snapToKnot(ui.state, ui.data, u), final),
   }),
-  group("bsplineBasis.degreeLegend", degreeButtons),
+  group(
+    "bsplineBasis.degreeLegend",
+    degreeButtons({ prefix: strings, min: MIN_DEGREE, max: MAX_DEGREE }),
+  ),
   group(
     null,
     slider("u", {
@@ -274,18 +230,10 @@ function layoutBands(d, width, height, scale) {
   plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value 1
 }
 
-/** Styles of the plot that the theme does not have, made once per theme. */
-const supportStyles = new WeakMap();
-function supportFill(theme) {
-  let list = supportStyles.get(theme);
-  if (!list) {
-    list = Object.freeze(
-      CYCLE.map((colour) => Object.freeze({ fill: colour, alpha: SUPPORT_ALPHA })),
-    );
-    supportStyles.set(theme, list);
-  }
-  return list;
-}
+/** Styles of the plot that the theme does not have: the supports' fills. */
+const supportFill = themed(() =>
+  CYCLE.map((colour) => Object.freeze({ fill: colour, alpha: SUPPORT_ALPHA })),
+);
 
 /** "N₃,₂" (cached per degree and index). */
 const basisNames = [];
@@ -344,32 +292,12 @@ export function draw(r, v, s, d) {
     r.rect(a, plot.y1, Math.max(0, b - a), plot.y0 - plot.y1);
     r.paint(supportFill(theme)[hi % cycle]);
   }
-  // A line at each distinct knot in the domain.
-  r.beginPath();
-  for (let a = 0; a < knots.length; a++) {
-    if (knots[a] < u0 || knots[a] > u1 || (a > 0 && knots[a] === knots[a - 1])) continue;
-    r.moveTo(ruler.px(knots[a]), plot.y1);
-    r.lineTo(ruler.px(knots[a]), plot.y0);
-  }
-  r.paint(theme.helper);
-  const tick = (TICK_PX + 2) * sc;
-  r.text(
-    t("bsplineBasis.axisValue0"),
-    plot.x0 - tick,
-    plot.y0,
-    theme.labelSmall,
-    "right",
-    "middle",
-  );
-  r.text(
-    t("bsplineBasis.axisValue1"),
-    plot.x0 - tick,
-    plot.y1,
-    theme.labelSmall,
-    "right",
-    "middle",
-  );
-  r.text(t("bsplineBasis.axisU"), plot.x1 + tick, plot.y0, theme.labelSmall, "left", "middle");
+  drawKnotLines(r, plot, knots, u0, u1, (u) => ruler.px(u));
+  drawAxisLabels(r, plot, {
+    zero: "bsplineBasis.axisValue0",
+    one: "bsplineBasis.axisValue1",
+    parameter: "bsplineBasis.axisU",
+  });
 
   // The basis functions, from the core's table (highlighted one last, on top).
   const sampleX = (k) => ruler.px(sampleU(k));
@@ -385,20 +313,8 @@ export function draw(r, v, s, d) {
   r.paint(theme.marker);
   // Names at the peaks.
   if (n + 1 <= NAME_LABELS_MAX) {
-    for (let i = 0; i <= n; i++) {
-      const k = d.peaks[i];
-      const align = k === 0 ? "left" : k === SAMPLES - 1 ? "right" : "center";
-      const dx = (k === 0 ? 4 : k === SAMPLES - 1 ? -4 : 0) * sc;
-      const style = i === hi ? theme.labelBold : theme.labelSmall;
-      r.text(
-        basisName(p, i),
-        sampleX(k) + dx,
-        py(d.basis[i * SAMPLES + k]) - 4 * sc,
-        style,
-        align,
-        "bottom",
-      );
-    }
+    const name = (i) => basisName(p, i);
+    drawPeakNames(r, d.basis, d.peaks, n + 1, SAMPLES, sampleX, py, name, hi);
   }
   // The values N_{i,p}(u) as dots on the marker, and its label.
   for (let i = 0; i <= n; i++)
@@ -429,42 +345,28 @@ export function formula(s, d) {
   const knots = s.knots;
   const kt = knotText;
   const k = d.table.span;
-  const uText = kt(s.u);
   const uTex = uTexOf(s.u);
   const values = d.values;
   const hi = highlighted(s, d);
   const focus = hi >= 0 ? hi : argmax(values, n);
-  // N_{i,r}(u) from the core's triangle (zero outside k − r … k).
-  const level = (r, i) => {
-    const j = i - (k - r);
-    return j >= 0 && j <= r ? d.table.levels[r][j] : 0;
+  // N_{i,p−1}(u) from the core's triangle (zero outside k − p + 1 … k).
+  const below = (i) => {
+    const j = i - (k - p + 1);
+    return j >= 0 && j <= p - 1 ? d.table.levels[p - 1][j] : 0;
   };
-  // One side of the recurrence: (num / den) N_{i, p−1}(u), or 0 when den = 0 (0/0 := 0).
-  const side = (num, den, i, numTex, denTex) => {
-    if (den === 0) return { part: "0", numbers: "0" };
-    const part = `\\frac{${numTex}}{${denTex}}\\,N_{${i},${p - 1}}(${uTex})`;
-    return { part, numbers: `${fmt(num / den)}\\cdot ${fmt(level(p - 1, i))}` };
-  };
-  const [a, b, c, e] = [knots[focus], knots[focus + p], knots[focus + 1], knots[focus + p + 1]];
-  const left = side(s.u - a, b - a, focus, `${uText}-${kt(a)}`, `${kt(b)}-${kt(a)}`);
-  const right = side(e - s.u, e - c, focus + 1, `${kt(e)}-${uText}`, `${kt(e)}-${kt(c)}`);
+  const step = coxDeBoorStep({ knots, u: s.u, uTex, p, i: focus, below, value: values[focus] });
   const active = [];
   const weighted = [];
   for (let i = Math.max(0, k - p); i <= Math.min(n, k); i++) {
     active.push(fmt(values[i]));
     weighted.push(`${fmt(values[i])}\\,P_{${i}}`);
   }
-  const otherwise = `\\text{${t("bsplineBasis.formulaOtherwise")}}`;
-  const zero = `N_{i,0}(u) = \\begin{cases} 1 & u_i \\le u < u_{i+1} \\\\ 0 & ${otherwise} \\end{cases}`;
-  const recurrence =
-    "N_{i,p}(u) = \\frac{u-u_i}{u_{i+p}-u_i}\\,N_{i,p-1}(u) + \\frac{u_{i+p+1}-u}{u_{i+p+1}-u_{i+1}}\\,N_{i+1,p-1}(u)";
   const point = `(${fmt(d.point[0])},\\ ${fmt(d.point[1])})`;
   const span = `[u_{${k}}, u_{${k + 1}}) = [${kt(knots[k])}, ${kt(knots[k + 1])})`;
-  const numbers = `${left.numbers} + ${right.numbers}`;
   return [
-    `${zero},\\qquad ${recurrence},\\quad \\tfrac{0}{0} := 0`,
+    coxDeBoorDefinition(`\\text{${t("bsplineBasis.formulaOtherwise")}}`),
     `U = [${knots.map(kt).join(",\\ ")}],\\qquad u = ${uTex} \\in ${span}`,
-    `N_{${focus},${p}}(${uTex}) = ${left.part} + ${right.part} = ${numbers} = ${fmt(values[focus])}`,
+    step,
     `\\sum_{i=0}^{${n}} N_{i,${p}}(${uTex}) = ${active.join(" + ")} = ${fmt(d.sum)}`,
     `C(u) = \\sum_{i=0}^{${n}} N_{i,${p}}(u)\\,P_i,\\qquad C(${uTex}) = ${weighted.join(" + ")} = ${point}`,
   ];
@@ -493,9 +395,7 @@ export function label(s, d) {
   const k = d.table.span;
   const nonZero = [];
   d.values.forEach((value, i) => value > 0 && nonZero.push(`${basisName(p, i)} = ${fmt(value)}`));
-  const continuityText = (e) =>
-    e.continuity < 0 ? t("knotRuler.break") : `C${superscript(e.continuity)}`;
-  const joints = d.continuity.map((e) => `${kt(e.knot)}: ${continuityText(e)}`);
+  const joints = d.continuity.map((e) => `${kt(e.knot)}: ${continuityText(e.continuity)}`);
   const continuity = joints.length
     ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") })
     : "";
@@ -561,70 +461,17 @@ export function setup(ui) {
     ui.touch("highlight");
   });
 
-  const values = titledTable("basis");
+  const values = new BasisValuesTable(strings, pointer, basisName);
   const triangle = new BasisTriangleTable(strings);
   ui.ctx.slots.details.append(values.title, values.wrap, triangle.title, triangle.wrap);
-  let valuesShape = ""; // "count/p" the values table was built for
-  let rows = []; // per i: { row, support, value, exact }
-  let sumValue = null;
-
-  /** Rebuilds the values table for n + 1 functions of degree p. */
-  function buildValues(n, p) {
-    const column = (key) => el("th", { scope: "col", text: t(`bsplineBasis.${key}`) });
-    rows = [];
-    for (let i = 0; i <= n; i++) {
-      const cells = { support: el("span"), value: el("span", { class: "sl-cell-value" }) };
-      cells.exact = el("span", { class: "sl-cell-decimal" });
-      const name = t("bsplineBasis.rowName", { name: basisName(p, i), point: `P${subscript(i)}` });
-      cells.row = legendRow(
-        pointer,
-        i,
-        name,
-        el("td", { dataset: { cell: "support" } }, cells.support),
-        el("td", { dataset: { cell: "value" } }, cells.value, cells.exact),
-      );
-      rows.push(cells);
-    }
-    sumValue = el("span", { class: "sl-cell-value" });
-    const sumHead = el("th", { scope: "row", text: t("bsplineBasis.sumRow") });
-    const sumCell = el("td", { dataset: { cell: "value" } }, sumValue);
-    const sumRow = el("tr", { dataset: { index: "sum" } }, sumHead, el("td", {}), sumCell);
-    const head = el("tr", {}, column("colFunction"), column("colSupport"), column("colValue"));
-    values.table.replaceChildren(
-      el("thead", {}, head),
-      el(
-        "tbody",
-        {},
-        rows.map((r) => r.row),
-        sumRow,
-      ),
-    );
-  }
 
   return {
     update(s, d) {
-      const n = s.points.length - 1;
       const p = s.degree;
       const kt = knotText;
       const uText = kt(s.u);
-      if (valuesShape !== `${n + 1}/${p}`) {
-        valuesShape = `${n + 1}/${p}`;
-        buildValues(n, p);
-      }
-      setText(values.title, t("bsplineBasis.tableCaption", { p, u: uText }));
-      const hi = highlighted(s, d);
-      rows.forEach((cells, i) => {
-        const ends = { a: kt(s.knots[i]), b: kt(s.knots[i + p + 1]) };
-        setText(
-          cells.support,
-          t("bsplineBasis.supportCell", { i: subscript(i), j: subscript(i + p + 1), ...ends }),
-        );
-        setText(cells.value, fmt(d.values[i]));
-        const f = simpleFraction(d.values[i]);
-        setText(cells.exact, f && f.den > 1 ? `= ${fractionText(f)}` : "");
-        cells.row.classList.toggle("sl-highlight", i === hi);
-      });
-      setText(sumValue, fmt(d.sum));
+      const caption = t("bsplineBasis.tableCaption", { p, u: uText });
+      values.show(p, s.knots, d.values, d.sum, highlighted(s, d), caption);
       const k = d.table.span;
       const span = {
         k,

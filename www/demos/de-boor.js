@@ -19,23 +19,17 @@ import {
   numberList,
   group,
 } from "../lib/panel.js";
-import { parameterStrip, knotMarks } from "../lib/param-strip.js";
+import { parameterStrip } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
-import { fmt, subscript, superscript, degreeName, MAX_EXACT_DENOMINATOR } from "../lib/format.js";
-import {
-  simpleFraction,
-  exactFraction,
-  fractionText,
-  fractionTex,
-  allIntegers,
-} from "../lib/format.js";
+import { fmt, fractionOrDecimals, subscript, degreeName } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { drawLevels, levelStart, LevelLabels, LegLabelPlacer } from "../lib/triangle.js";
-import { titledTable } from "../lib/table.js";
-import { el, setText } from "../lib/controls.js";
+import { DeBoorTable } from "../lib/de-boor-table.js";
+import { alphasByLevel, deBoorExact } from "../lib/de-boor-exact.js";
+import { drawKnotSpanStrip, knotSpanLabels } from "../lib/knot-span-strip.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "de-boor";
@@ -81,13 +75,6 @@ const LABEL_LEVELS_MAX_DEGREE = 4;
 const STRIP_PX = 78;
 const STRIP_MARGIN = 30;
 const LINE_ROW = 34;
-/** Half-heights of a knot tick, of the shaded span and of the u marker; label gaps. */
-const TICK = 7;
-const SPAN_HALF = 11;
-const MARKER_HALF = 15;
-const LABEL_GAP = 6;
-/** An estimate of a digit's width in em (tick labels that would touch are left out). */
-const CHAR_EM = 0.62;
 /** Presses count down to this far below the line and beyond its ends (CSS px). */
 const STRIP_HIT_PX = 22;
 
@@ -197,90 +184,25 @@ export const derive = {
 };
 
 /** A number as short text (or TeX): integers plain, simple fractions as a/b, else 3 decimals. */
-function numberText(x, tex = false) {
-  if (Number.isInteger(x)) return String(x);
-  const f = simpleFraction(x);
-  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
-}
-
-/**
- * The core's α of every step (`deBoorAlphas(u)`: [r, j, lo, hi, u_hi − u_lo, α] per step, level
- * by level, j ascending), grouped by level r for display.
- */
-function alphasByLevel(s, d) {
-  const data = d.curve.deBoorAlphas(s.u);
-  const levels = [];
-  for (let a = 0; a < data.length; a += 6) {
-    const level = data[a];
-    if (levels.length < level) levels.push([]);
-    const [j, lo, hi, width, value] = data.subarray(a + 1, a + 6);
-    levels[level - 1].push({ j, lo, hi, width, value });
-  }
-  return levels;
-}
-
-/** Greatest common divisor / least common multiple of positive integers (fraction display). */
-function gcd(a, b) {
-  while (b) [a, b] = [b, a % b];
-  return a;
-}
-const lcm = (a, b) => (a / gcd(a, b)) * b;
-
-/**
- * Exact text when u is a simple fraction and every point and knot is an integer: α_j^r has a
- * denominator dividing den(u)·(u_hi − u_lo), and a level-r point's divides the lcm of its two
- * parents' times its α's (the bound is tracked per cell; beyond MAX_EXACT_DENOMINATOR, decimals).
- */
-function exactText(s, d) {
-  const p = s.degree;
-  const f = simpleFraction(s.u);
-  const exact = f && allIntegers(s.points.flat()) && allIntegers(s.knots) ? f : null;
-  const alphaFraction = (alpha) =>
-    exact ? exactFraction(alpha.value, exact.den * alpha.width) : null;
-  const dens = [new Array(p + 1).fill(1)];
-  for (let level = 1; level <= p; level++) {
-    const row = [];
-    for (let i = 0; i <= p - level; i++) {
-      const g = alphaFraction(d.alphas[level - 1][i]);
-      const bound = g ? lcm(dens[level - 1][i], dens[level - 1][i + 1]) * g.den : Infinity;
-      row.push(bound <= MAX_EXACT_DENOMINATOR ? bound : Infinity);
-    }
-    dens.push(row);
-  }
-  const asText = (g, tex) => (tex ? fractionTex(g) : fractionText(g));
-  return {
-    exact,
-    /** Point i of level r's coordinate. */
-    coord(value, level, i, tex) {
-      const den = dens[level][i];
-      const g = exact && Number.isFinite(den) ? exactFraction(value, den) : null;
-      return g ? asText(g, tex) : fmt(value);
-    },
-    alpha(alpha, tex) {
-      const g = alphaFraction(alpha);
-      return g ? asText(g, tex) : fmt(alpha.value);
-    },
-    apexExact: Number.isFinite(dens[p][0]),
-  };
-}
-
-/** Distinct knots, their value labels and multiplicity labels (for the strip). */
-function knotStrip(s) {
-  const { values, counts } = knotMarks(s.knots);
-  const labels = Array.from(values, (u) => numberText(u));
-  const multiplicity = counts.map((r) => (r > 1 ? t("deBoor.multiplicity", { r }) : ""));
-  return { values, labels, multiplicity };
-}
+const numberText = fractionOrDecimals;
 
 const SHAPE = ["points", "degree", "knots"];
+/**
+ * What the core returns: the samples, the triangle at u (level by level), the span k, the α of
+ * every step by level; the exact text of its numbers when u is a simple fraction and the points
+ * and knots are integers (lib/de-boor-exact.js); the knot strip's labels and captions.
+ */
 export const compute = {
   samples: [SHAPE, (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
   triangle: [[...SHAPE, "u"], (s, d) => d.curve.deBoor(s.u)],
   span: [[...SHAPE, "u"], (s, d) => d.curve.span(s.u)],
-  alphas: [[...SHAPE, "u"], alphasByLevel],
-  numbers: [[...SHAPE, "u"], exactText],
+  alphas: [[...SHAPE, "u"], (s, d) => alphasByLevel(d.curve.deBoorAlphas(s.u))],
+  numbers: [
+    [...SHAPE, "u"],
+    (s, d) => deBoorExact(s.u, [...s.points.flat(), ...s.knots], s.degree, d.alphas),
+  ],
   spans: [SHAPE, (s, d) => d.curve.spans().length],
-  knotStrip: [["knots"], knotStrip],
+  knotStrip: [["knots"], (s) => knotSpanLabels(s.knots, (r) => t("deBoor.multiplicity", { r }))],
   captions: [
     [...SHAPE, "u"],
     (s, d) => ({
@@ -435,63 +357,21 @@ export function draw(r, v, s, d) {
     radius,
     s.points,
   );
-  drawStrip(r, s, d, theme);
+  drawStrip(r, s, d);
 }
 
 /** The knot vector on a line: domain solid, outside dashed, the active span shaded, u marked. */
-function drawStrip(r, s, d, theme) {
-  const strip = d.strip;
-  strip.layout(r.width, r.height, r.scale);
-  const sc = r.scale;
-  const y = strip.y(LINE_ROW);
-  const [a, b] = domain(s);
-  // Separator between the figure and the strip.
-  r.beginPath();
-  r.moveTo(0, strip.top);
-  r.lineTo(r.width, strip.top);
-  r.paint(theme.helper);
-  // The active span [u_k, u_{k+1}).
-  const xs0 = strip.px(s.knots[d.span]);
-  const xs1 = strip.px(s.knots[d.span + 1]);
-  r.beginPath();
-  r.rect(xs0, y - SPAN_HALF * sc, xs1 - xs0, 2 * SPAN_HALF * sc);
-  r.paint(theme.helperFill);
-  // The knot line: outside the domain dashed, the domain solid.
-  r.beginPath();
-  r.moveTo(strip.x0, y);
-  r.lineTo(strip.x1, y);
-  r.paint(theme.helper);
-  r.beginPath();
-  r.moveTo(strip.px(a), y);
-  r.lineTo(strip.px(b), y);
-  r.paint(theme.axis);
-  // Ticks, values below (those that would touch the previous one left out), multiplicities above.
-  const { values, labels: texts, multiplicity } = d.knotStrip;
-  let lastRight = -Infinity;
-  const digit = theme.labelSmall.size * sc * CHAR_EM;
-  for (let i = 0; i < values.length; i++) {
-    const x = strip.px(values[i]);
-    r.beginPath();
-    r.moveTo(x, y - TICK * sc);
-    r.lineTo(x, y + TICK * sc);
-    r.paint(theme.axis);
-    const half = (texts[i].length * digit) / 2;
-    if (x - half > lastRight + LABEL_GAP * sc) {
-      r.text(texts[i], x, y + (TICK + 4) * sc, theme.labelSmall, "center", "top");
-      lastRight = x + half;
-    }
-    if (multiplicity[i])
-      r.text(multiplicity[i], x, y - (TICK + 3) * sc, theme.labelSmall, "center", "bottom");
-  }
-  // The span's name above the shaded span; u marked on the line.
-  r.text(d.captions.span, (xs0 + xs1) / 2, strip.top + 4 * sc, theme.labelSmall, "center", "top");
-  const xu = strip.px(s.u);
-  r.beginPath();
-  r.moveTo(xu, y - MARKER_HALF * sc);
-  r.lineTo(xu, y + MARKER_HALF * sc);
-  r.paint(theme.marker);
-  r.point(xu, y, theme.pointOnCurve);
-  r.text(d.captions.u, xu, y + (MARKER_HALF + 14) * sc, theme.labelPoint, "center", "top");
+function drawStrip(r, s, d) {
+  d.strip.layout(r.width, r.height, r.scale);
+  drawKnotSpanStrip(r, d.strip, {
+    knots: s.knots,
+    span: d.span,
+    domain: domain(s),
+    u: s.u,
+    marks: d.knotStrip,
+    captions: d.captions,
+    lineRow: LINE_ROW,
+  });
 }
 
 // ------------------------------------------------------------------ formula, label, table
@@ -547,78 +427,15 @@ export function label(s, d) {
   });
 }
 
-/** The table: one row per level r, cells d_j^r (fraction and decimals) with the α that made them. */
+/** The table: one row per level r, cells d_j^r (fraction and decimals) with the α that made them (lib/de-boor-table.js). */
 export function setup(ui) {
   ui.ctx.slots.figure.style.aspectRatio = "4 / 3"; // the curve and the knot strip share the figure
-  const { title, table, wrap } = titledTable("de-boor");
-  ui.ctx.slots.details.append(title, wrap);
-  let degree = -1;
-  let cells = [];
-
-  function build(p) {
-    degree = p;
-    cells = [];
-    const rows = [];
-    for (let level = 0; level <= p; level++) {
-      const row = [el("th", { scope: "row", text: t("deBoor.tableLevel", { r: level }) })];
-      for (let j = level; j <= p; j++) {
-        const spans = {
-          name: el("span", { class: "sl-cell-name" }),
-          exact: el("span", { class: "sl-cell-value" }),
-          decimal: el("span", { class: "sl-cell-decimal" }),
-          alpha: el("span", { class: "sl-cell-decimal" }),
-        };
-        cells.push(spans);
-        const dataset = { level: String(level), index: String(j) };
-        row.push(
-          el(
-            "td",
-            { dataset },
-            spans.name,
-            spans.exact,
-            spans.decimal,
-            level > 0 ? spans.alpha : null,
-          ),
-        );
-      }
-      rows.push(el("tr", {}, row));
-    }
-    table.replaceChildren(el("tbody", {}, rows));
-  }
-
+  const table = new DeBoorTable(strings);
+  ui.ctx.slots.details.append(table.title, table.wrap);
   return {
     update(s, d) {
-      const p = s.degree;
-      const k = d.span;
-      const num = d.numbers;
-      if (degree !== p) build(p);
-      setText(title, t("deBoor.tableCaption", { u: numberText(s.u), k }));
-      let c = 0;
-      for (let level = 0; level <= p; level++) {
-        for (let i = 0; i <= p - level; i++, c++) {
-          const j = level + i;
-          const x = d.triangle[2 * c];
-          const y = d.triangle[2 * c + 1];
-          const decimals = `(${fmt(x)}, ${fmt(y)})`;
-          const exact = num.exact
-            ? `(${num.coord(x, level, i, false)}, ${num.coord(y, level, i, false)})`
-            : decimals;
-          const spans = cells[c];
-          const name = `d${subscript(j)}${superscript(level)} = `;
-          setText(spans.name, level === 0 ? `${name}P${subscript(j + k - p)} ` : name);
-          setText(spans.exact, exact);
-          // Decimals underneath only when they say something the exact value does not.
-          setText(
-            spans.decimal,
-            exact === decimals || /^\(-?\d+, -?\d+\)$/.test(exact) ? "" : `≈ ${decimals}`,
-          );
-          if (level > 0) {
-            const alpha = d.alphas[level - 1][i];
-            setText(spans.alpha, t("deBoor.alphaCell", { value: num.alpha(alpha, false) }));
-            spans.alpha.dataset.alpha = fmt(alpha.value);
-          }
-        }
-      }
+      const caption = t("deBoor.tableCaption", { u: numberText(s.u), k: d.span });
+      table.show(s.degree, d.span, d.triangle, d.alphas, d.numbers, caption);
     },
   };
 }

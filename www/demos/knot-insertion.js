@@ -22,15 +22,18 @@ import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { bsplineCurve, domainOf } from "../lib/bspline.js";
 import { knotText } from "../lib/knot-ruler.js";
 import { placeLabel } from "../lib/handles.js";
-import { fmt, subscript, degreeName, parseNumberInput } from "../lib/format.js";
-import { simpleFraction, fractionText, fractionTex } from "../lib/format.js";
+import { fmt, subscript, degreeName, parseNumberInput, fractionOrDecimals } from "../lib/format.js";
+import { simpleFraction, fractionText } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
-import { CurvePicker } from "../lib/curve-picker.js";
-import { titledTable } from "../lib/table.js";
+import { CurvePicker, HoveredSample } from "../lib/curve-picker.js";
+import { curveChecksum } from "../lib/curve-checksum.js";
+import { InsertionTable } from "../lib/insertion-table.js";
+import { refineInto } from "../lib/refined-curves.js";
+import { labelOffLeg } from "../lib/leg-label.js";
+import { knotListText, knotVectorReadout } from "../lib/knot-readout.js";
 import { flatPath } from "../lib/draw.js";
-import { el, setText } from "../lib/controls.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "knot-insertion";
@@ -125,34 +128,6 @@ export const fields = {
 
 // ------------------------------------------------------------------ the curves, from the core
 
-/**
- * The curves a state shows, asked from the core: `previous` before the last insertion
- * (`refine` of the others) and `current` after it (`insertKnot(last, 1)`); both are `base`
- * itself when nothing was inserted. Throws (after freeing what it made) when the core refuses.
- */
-function deriveCurves(base, inserted) {
-  if (inserted.length === 0) return { previous: base, current: base };
-  const previous =
-    inserted.length > 1 ? base.refine(Float64Array.from(inserted.slice(0, -1))) : base;
-  try {
-    return { previous, current: previous.insertKnot(inserted[inserted.length - 1], 1) };
-  } catch (err) {
-    if (previous !== base) previous.free();
-    throw err;
-  }
-}
-
-/** Puts the curves for `inserted` into the model in place: `refined` holds those the model owns. */
-function refineInto(m, inserted) {
-  const next = deriveCurves(m.base, inserted);
-  for (const curve of m.refined) curve.free();
-  m.refined.length = 0;
-  for (const curve of new Set([next.previous, next.current]))
-    if (curve !== m.base) m.refined.push(curve);
-  m.curves.previous = next.previous;
-  m.curves.current = next.current;
-}
-
 /** The original curve and the refined ones; an original point dragged asks for them again. */
 export const derive = {
   from: ["points", "degree", "knots", "inserted"],
@@ -199,18 +174,11 @@ function segments(s, d) {
   });
 }
 
-/** A weighted sum of the drawn samples (`data-curve-sum`): insertion must leave it unchanged. */
-function checksum(samples) {
-  let sum = 0;
-  for (let j = 0; j < CURVE_SAMPLES; j++)
-    sum += (j + 1) * (samples[2 * j] + Math.SQRT2 * samples[2 * j + 1]);
-  return sum;
-}
-
 const ALL = ["points", "degree", "knots", "inserted"];
 export const compute = {
   samples: [ALL, (s, d) => d.curves.current.sampleUniform(CURVE_SAMPLES)],
-  curveSum: [ALL, (s, d) => checksum(d.samples)],
+  // A checksum of the drawn samples (`data-curve-sum`): insertion must leave it unchanged.
+  curveSum: [ALL, (s, d) => curveChecksum(d.samples, CURVE_SAMPLES)],
   currentPoints: [ALL, (s, d) => d.curves.current.controlPoints()],
   previousPoints: [ALL, (s, d) => d.curves.previous.controlPoints()],
   currentKnots: [ALL, (s, d) => d.curves.current.knots()],
@@ -393,17 +361,8 @@ export function draw(r, v, s, d) {
       const x = v.sx(q[2 * i]);
       const y = v.sy(q[2 * i + 1]);
       r.point(x, y, st.qNew);
-      labelOffLeg(
-        r,
-        v,
-        d.previousPoints,
-        qLabel(i),
-        x,
-        y,
-        i,
-        theme.labelPoint,
-        st.qNew.radius * r.scale,
-      );
+      const radius = st.qNew.radius * r.scale;
+      labelOffLeg(r, v, d.previousPoints, qLabel(i), x, y, i, theme.labelPoint, radius);
     }
   }
   // Where Insert would insert: C(u) on the curve, a ring (the filled vermillion dots are new points).
@@ -416,32 +375,6 @@ export function draw(r, v, s, d) {
     placeLabel(r, hover.label, x, y, 0, -1, st.hover.radius * r.scale, theme.labelPoint);
   }
   drawStrip(r, s, d, theme, st);
-}
-
-/**
- * Labels new point Q_i beside the leg P_{i−1}P_i of the polygon before the insertion (Q_i
- * lies on it), on the side away from the polygon's centroid.
- */
-function labelOffLeg(r, v, P, text, x, y, i, style, radius) {
-  let nx = v.sy(P[2 * i + 1]) - v.sy(P[2 * i - 1]);
-  let ny = v.sx(P[2 * i]) - v.sx(P[2 * i - 2]);
-  const length = Math.hypot(nx, ny);
-  if (length < 1) {
-    nx = 0;
-    ny = -1;
-  } else {
-    nx /= length;
-    ny /= length;
-  }
-  let cx = 0;
-  let cy = 0;
-  const count = P.length / 2;
-  for (let j = 0; j < count; j++) {
-    cx += v.sx(P[2 * j]);
-    cy += v.sy(P[2 * j + 1]);
-  }
-  const away = (x - cx / count) * nx + (y - cy / count) * ny < 0 ? -1 : 1;
-  placeLabel(r, text, x, y, away * nx, away * ny, radius, style);
 }
 
 /** The parameter line under the figure: the knots as ticks (inserted ones longer, vermillion) and u. */
@@ -461,10 +394,7 @@ function drawStrip(r, s, d, theme, st) {
 // ------------------------------------------------------------------ formula, lists, table, label
 
 /** A number as text (or TeX): a simple fraction when it is one, else 3 decimals. */
-function numberText(value, tex = false) {
-  const f = simpleFraction(value);
-  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(value);
-}
+const numberText = fractionOrDecimals;
 
 /** Boehm's rule with the live α (the Q values come from the core's new polygon). */
 export function formula(s, d) {
@@ -510,30 +440,25 @@ export function label(s, d) {
   });
 }
 
-const knotList = (values) => Array.from(values, knotText).join(", ");
-
 /** The knot vectors before and after, the α used, the insertions so far (under the figure). */
 const LISTS = [
-  readout(
+  knotVectorReadout(
     "knots-before",
     (s, d) => {
       const { preview, s: at } = d.last;
-      if (preview) return t("knotInsertion.knotsNow", { knots: knotList(d.currentKnots) });
-      return t("knotInsertion.knotsBefore", { s: knotText(at), knots: knotList(d.previousKnots) });
+      if (preview) return t("knotInsertion.knotsNow", { knots: knotListText(d.currentKnots) });
+      const knots = knotListText(d.previousKnots);
+      return t("knotInsertion.knotsBefore", { s: knotText(at), knots });
     },
-    { data: (s, d) => ({ knots: Array.from(d.previousKnots, knotText).join(",") }) },
+    (s, d) => d.previousKnots,
   ),
-  readout(
+  knotVectorReadout(
     "knots-after",
     (s, d) => {
       if (d.last.preview) return t("knotInsertion.knotsNone");
-      return t("knotInsertion.knotsAfter", { knots: knotList(d.currentKnots) });
+      return t("knotInsertion.knotsAfter", { knots: knotListText(d.currentKnots) });
     },
-    {
-      data: (s, d) => ({
-        knots: d.last.preview ? "" : Array.from(d.currentKnots, knotText).join(","),
-      }),
-    },
+    (s, d) => (d.last.preview ? null : d.currentKnots),
   ),
   readout(
     "alphas",
@@ -567,8 +492,8 @@ const LISTS = [
  */
 export function setup(ui) {
   const lists = LISTS.map((part) => part.build(ui));
-  const { title, table, wrap } = titledTable("knot-insertion");
-  ui.ctx.slots.details.append(...lists.map((part) => part.element), title, wrap);
+  const table = new InsertionTable();
+  ui.ctx.slots.details.append(...lists.map((part) => part.element), table.title, table.wrap);
 
   const view = ui.view;
   const sampleU = (j) => {
@@ -576,16 +501,9 @@ export function setup(ui) {
     return a + ((b - a) * j) / (CURVE_SAMPLES - 1);
   };
   /** The sample under the pointer (a click inserts its u), shared with draw. */
-  const hover = {
-    index: -1,
-    label: "",
-    set(j) {
-      if (j === hover.index) return;
-      hover.index = j;
-      hover.label = j >= 0 ? t("knotInsertion.hoverLabel", { u: knotText(sampleU(j)) }) : "";
-      view.requestDraw();
-    },
-  };
+  const hover = new HoveredSample(view, (j) =>
+    t("knotInsertion.hoverLabel", { u: knotText(sampleU(j)) }),
+  );
   ui.data.hover = hover;
   new CurvePicker(view, {
     samples: () => ui.data.samples,
@@ -601,38 +519,10 @@ export function setup(ui) {
     update(s, d) {
       lists.forEach((part) => part.sync(s, d));
       const { preview, s: at, k, alphas } = d.last;
-      const p = s.degree;
-      const q = d.currentPoints;
-      setText(
-        title,
-        preview
-          ? t("knotInsertion.tableEmpty")
-          : t("knotInsertion.tableCaption", { s: knotText(at) }),
-      );
-      const rows = [];
-      for (let i = 0; !preview && i < q.length / 2; i++) {
-        const alpha = alphas.find((a) => a.i === i);
-        const Q = `Q${subscript(i)}`;
-        let rule = `${Q} = P${subscript(i - 1)}`;
-        if (i <= k - p) rule = `${Q} = P${subscript(i)}`;
-        else if (alpha) {
-          const [a, b] = [numberText(1 - alpha.value), numberText(alpha.value)];
-          rule = `${Q} = ${a} P${subscript(i - 1)} + ${b} P${subscript(i)}`;
-        }
-        rows.push(
-          el(
-            "tr",
-            { class: alpha ? "sl-highlight" : undefined },
-            el("th", { scope: "row", text: Q }),
-            el("td", { text: rule }),
-            el("td", {
-              dataset: { index: String(i) },
-              text: `(${fmt(q[2 * i])}, ${fmt(q[2 * i + 1])})`,
-            }),
-          ),
-        );
-      }
-      table.replaceChildren(el("tbody", {}, rows));
+      const caption = preview
+        ? t("knotInsertion.tableEmpty")
+        : t("knotInsertion.tableCaption", { s: knotText(at) });
+      table.show(d.currentPoints, s.degree, k, alphas, caption, preview);
     },
   };
 }

@@ -21,10 +21,14 @@ import { readout, actions, group } from "../lib/panel.js";
 import { knotRuler, stackOf, knotText } from "../lib/knot-ruler.js";
 import { knotsField, clampedKnots, setKnots, domainOf } from "../lib/bspline.js";
 import { radios, el } from "../lib/controls.js";
-import { fmt, subscript, superscript } from "../lib/format.js";
+import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
+import { measuredJoints } from "../lib/joint-continuity.js";
+import { JointsTable } from "../lib/joints-table.js";
+import { continuityText, measuredText } from "../lib/continuity.js";
+import { knotListText, knotNames } from "../lib/knot-readout.js";
 import { pointsPath } from "../lib/draw.js";
 import { replaceOrReport } from "../lib/wasm.js";
 
@@ -131,41 +135,11 @@ export const compute = {
 
 /**
  * The measured continuity at every distinct interior knot: Bézier segments from `toBezier()`
- * placed on their spans, compared pairwise with `jointContinuity`.
+ * placed on their spans, compared pairwise with `jointContinuity` (lib/joint-continuity.js).
  */
 function measure(s, d) {
-  const { sl, curve } = d;
-  const knots = s.knots;
-  const pieces = curve.toBezier();
-  const spans = curve.spans(); // span index k of each segment: [u_k, u_{k+1}]
-  const placed = [];
-  for (let k = 0; k < pieces.length; k++) {
-    placed.push(
-      sl.BezierCurve.withInterval(
-        pieces[k].controlPoints(),
-        2,
-        knots[spans[k]],
-        knots[spans[k] + 1],
-      ),
-    );
-    pieces[k].free();
-  }
-  const joints = [];
-  for (let k = 0; k + 1 < placed.length; k++) {
-    const knot = knots[spans[k + 1]];
-    const { c, g } = sl.jointContinuity(placed[k], placed[k + 1]);
-    joints.push({
-      knot,
-      c,
-      g,
-      left: Array.from(placed[k].evaluate(knot)),
-      right: Array.from(placed[k + 1].evaluate(knot)),
-      speed: Array.from(curve.derivative(knot, 1)),
-      label: t("multiplicity.jointLabel", { u: knotText(knot) }),
-    });
-  }
-  for (const piece of placed) piece.free();
-  return joints;
+  const label = (u) => t("multiplicity.jointLabel", { u: knotText(u) });
+  return measuredJoints(d.sl, d.curve, s.knots, label);
 }
 
 const jointAt = (d, u) => d.joints.find((j) => j.knot === u) ?? null;
@@ -235,25 +209,6 @@ function pointName(s, j) {
   const names = [];
   for (let c = 0; c < copies; c++) names.push(`P${subscript(expandedIndex(s, j) + c)}`);
   return names.join(" = ");
-}
-
-/** "C²", "C⁰", "C∞", or the break word for continuity k (−1). */
-function continuityText(k) {
-  if (k === Infinity) return "C∞";
-  return k < 0 ? t("knotRuler.break") : `C${superscript(k)}`;
-}
-
-/** "C¹ G¹", "break", or "—" without a joint. */
-function measuredText(jt) {
-  if (!jt) return "—";
-  return jt.c < 0 ? t("knotRuler.break") : `${continuityText(jt.c)} G${superscript(jt.g)}`;
-}
-
-/** "u₅ = u₆ = u₇". */
-function knotNames(a, b) {
-  const list = [];
-  for (let i = a; i <= b; i++) list.push(`u${subscript(i)}`);
-  return list.join(" = ");
 }
 
 /** The knots, replaced by the core's clamped uniform vector for the state's repeated points. */
@@ -482,7 +437,7 @@ export function label(s, d) {
   const rep = d.studied.repeat;
   return t("multiplicity.aria", {
     count: s.knots.length - P - 1,
-    knots: s.knots.map(knotText).join(", "),
+    knots: knotListText(s.knots),
     list,
     repeat:
       s.repeatTimes > 1
@@ -495,11 +450,6 @@ export function label(s, d) {
       ? t("multiplicity.ariaThrough", { u: knotText(k.value), point: k.through })
       : "",
   });
-}
-
-/** "(6.000, 4.000)". */
-function pair([x, y]) {
-  return `(${fmt(x)}, ${fmt(y)})`;
 }
 
 /**
@@ -535,7 +485,7 @@ export function setup(ui) {
       el("tbody", {}, notesRows),
     ],
   });
-  const knotsTable = titledTable("knots", { caption: t("multiplicity.knotsCaption") });
+  const knotsTable = new JointsTable(strings);
   ui.ctx.slots.details.append(notes.title, notes.wrap, knotsTable.title, knotsTable.wrap);
 
   return {
@@ -549,38 +499,9 @@ export function setup(ui) {
         );
         notesCells[k][1].classList.toggle("sl-highlight", k + 1 === knotRow);
       }
-      const rows = d.continuity.map((entry) => {
-        const jt = jointAt(d, entry.knot);
-        const [a, b] = stackOf(s.knots, s.knots.indexOf(entry.knot));
-        let point = "—";
-        let pointData = { cell: "point" };
-        if (jt) {
-          pointData = { cell: "point", x: String(jt.right[0]), y: String(jt.right[1]) };
-          const sides = { left: pair(jt.left), right: pair(jt.right) };
-          point = jt.c >= 0 ? sides.right : t("multiplicity.pointBreak", sides);
-        }
-        const row = el(
-          "tr",
-          { dataset: { knot: knotText(entry.knot) } },
-          el("th", { scope: "row", text: `${knotNames(a, b)} = ${knotText(entry.knot)}` }),
-          el("td", { dataset: { cell: "multiplicity" }, text: String(entry.multiplicity) }),
-          el("td", { dataset: { cell: "guaranteed" }, text: continuityText(entry.continuity) }),
-          el("td", { dataset: { cell: "measured" }, text: measuredText(jt) }),
-          el("td", { dataset: pointData, text: point }),
-          el("td", { dataset: { cell: "through" }, text: passesThrough(s, jt) || "—" }),
-        );
-        if (studied && entry.knot === studied.value) row.classList.add("sl-highlight");
-        return row;
-      });
-      const head = columns(
-        "colKnot",
-        "colR",
-        "colGuaranteed",
-        "colMeasured",
-        "colPoint",
-        "colThrough",
-      );
-      knotsTable.table.replaceChildren(el("thead", {}, head), el("tbody", {}, rows));
+      const jointOf = (u) => jointAt(d, u);
+      const through = (jt) => passesThrough(s, jt);
+      knotsTable.show(s.knots, d.continuity, jointOf, through, studied?.value);
     },
   };
 }

@@ -69,3 +69,24 @@ export class CurvePicker {
     });
   }
 }
+
+/**
+ * The drawn sample under the pointer (what a click would pick), for the figure to mark: `index`
+ * (-1: none) and its cached `label(j)`; `set(j)` (a `CurvePicker`'s press / hover) redraws the
+ * view only when the sample changed.
+ */
+export class HoveredSample {
+  constructor(view, label) {
+    this.view = view;
+    this.labelOf = label;
+    this.index = -1;
+    this.label = "";
+  }
+
+  set(j) {
+    if (j === this.index) return;
+    this.index = j;
+    this.label = j >= 0 ? this.labelOf(j) : "";
+    this.view.requestDraw();
+  }
+}

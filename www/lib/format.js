@@ -131,3 +131,12 @@ export function shortNumber(v) {
   const r = Math.round(v);
   return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
 }
+
+/**
+ * A number as short text (or TeX with `tex`): a simple fraction when it is one (integers plain,
+ * "3/2", \tfrac{3}{2}), else `DECIMALS` decimals — knots and parameters in sentences and formulas.
+ */
+export function fractionOrDecimals(x, tex = false) {
+  const f = simpleFraction(x);
+  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
+}
