@@ -131,3 +131,14 @@ export function shortNumber(v) {
   const r = Math.round(v);
   return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
 }
+
+/**
+ * The binomial coefficient C(n, i) = n! / (i! (n − i)!), as the product Π_{k=1}^{i} (n − i + k) / k
+ * rounded to the integer: for writing a formula out (Bernstein's B_i^n), never for evaluating a
+ * curve (the core does that).
+ */
+export function binomial(n, i) {
+  let c = 1;
+  for (let k = 1; k <= i; k++) c = (c * (n - i + k)) / k;
+  return Math.round(c);
+}

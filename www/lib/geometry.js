@@ -15,6 +15,17 @@ export function flatten(points) {
 }
 
 /**
+ * The points' bounding box (`boundsOf`) grown on each side by `roomX` × its width left and right
+ * and `roomY` × its height below and above: room for the handles' labels around a fitted curve.
+ */
+export function paddedBounds(points, roomX, roomY) {
+  const [x0, y0, x1, y1] = boundsOf(points);
+  const padX = roomX * (x1 - x0);
+  const padY = roomY * (y1 - y0);
+  return [x0 - padX, y0 - padY, x1 + padX, y1 + padY];
+}
+
+/**
  * [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull),
  * written into `out` when given (no allocation while drawing).
  */
