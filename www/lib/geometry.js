@@ -132,3 +132,19 @@ export function inTriangle(x, y, points, tolerance) {
   const eps = -tolerance * scale;
   return d0 >= eps && d1 >= eps && d2 >= eps;
 }
+
+/**
+ * The largest distance max_k |a_k − b_k| between two flat sample lists [x0, y0, …] of the same
+ * length taken at the same parameters — or, with `reversed`, max_k |a_k − b_{m−1−k}| (m samples:
+ * a curve against a reversed one, R(1 − t) against P(t)). A check that two curves agree, reported
+ * beside the core's results; not a curve algorithm.
+ */
+export function largestGap(a, b, reversed = false) {
+  const count = a.length / 2;
+  let distance = 0;
+  for (let k = 0; k < count; k++) {
+    const j = reversed ? count - 1 - k : k;
+    distance = Math.max(distance, Math.hypot(a[2 * k] - b[2 * j], a[2 * k + 1] - b[2 * j + 1]));
+  }
+  return distance;
+}
