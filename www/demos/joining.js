@@ -12,14 +12,14 @@
  */
 import { field } from "../lib/validate.js";
 import { choice, readout, group } from "../lib/panel.js";
-import { placeLabel } from "../lib/handles.js";
+import { placeLabel, placeLabelBeside } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, superscript } from "../lib/format.js";
-import { HUES, WIDTH, RADIUS, FONT_SIZE } from "../lib/theme.js";
+import { fmt, shortNumber, orderText, orderTex } from "../lib/format.js";
+import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
-import { pointsPath, flatPath, arrow, drawCaption } from "../lib/draw.js";
+import { pointsPath, flatPath, arrow, drawCaption, extendedSegmentPath } from "../lib/draw.js";
 
 export const id = "joining";
 /** Prefix of this demo's keys in strings.js. */
@@ -97,28 +97,20 @@ const RIGHT_ARROW_STYLE = Object.freeze({
   join: "round",
 });
 /** Arrow label styles per theme (their halo is the theme's background), made once per theme. */
-const labelStyles = new WeakMap();
-function arrowLabelStyles(theme) {
-  let styles = labelStyles.get(theme);
-  if (!styles) {
-    styles = {
-      left: Object.freeze({
-        fill: theme.name === "dark" ? HUES.orange : "#A86F00",
-        size: FONT_SIZE.small,
-        weight: "bold",
-        halo: theme.background,
-      }),
-      right: Object.freeze({
-        fill: HUES.reddishPurple,
-        size: FONT_SIZE.small,
-        weight: "bold",
-        halo: theme.background,
-      }),
-    };
-    labelStyles.set(theme, styles);
-  }
-  return styles;
-}
+const arrowLabelStyles = themed((theme) => ({
+  left: Object.freeze({
+    fill: theme.name === "dark" ? HUES.orange : "#A86F00",
+    size: FONT_SIZE.small,
+    weight: "bold",
+    halo: theme.background,
+  }),
+  right: Object.freeze({
+    fill: HUES.reddishPurple,
+    size: FONT_SIZE.small,
+    weight: "bold",
+    halo: theme.background,
+  }),
+}));
 const MARK_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
 const D_POINT_STYLE = Object.freeze({ fill: HUES.reddishPurple, radius: RADIUS.constructionPoint });
 
@@ -231,7 +223,7 @@ function jointOf(sl, { left, right }) {
       ? t("joining.verdict.broken")
       : verdict.c === Infinity
         ? t("joining.verdict.infinite")
-        : t("joining.verdict", { c: order("C", verdict.c), g: order("G", verdict.g) });
+        : t("joining.verdict", { c: orderText("C", verdict.c), g: orderText("G", verdict.g) });
   return {
     dLeft: left.derivative(JOINT_T, 1),
     dRight: right.derivative(JOINT_T, 1),
@@ -332,19 +324,7 @@ export function draw(r, v, s, d) {
   // Helper geometry of the rule: the tangent line P₂–P₃–Q₁ (C1, G1, C2) and for C2 the
   // A-frame P₁ → D = 2P₂ − P₁ → Q₂ (D = 2Q₁ − Q₂ exactly when the joint is C2).
   if (s.rule === "C1" || s.rule === "G1" || s.rule === "C2") {
-    const ax = P[2][0];
-    const ay = P[2][1];
-    const bx = Q[1][0];
-    const by = Q[1][1];
-    r.beginPath();
-    r.moveTo(
-      v.sx(ax - (bx - ax) * TANGENT_LINE_OVERSHOOT),
-      v.sy(ay - (by - ay) * TANGENT_LINE_OVERSHOOT),
-    );
-    r.lineTo(
-      v.sx(bx + (bx - ax) * TANGENT_LINE_OVERSHOOT),
-      v.sy(by + (by - ay) * TANGENT_LINE_OVERSHOOT),
-    );
+    extendedSegmentPath(r, v, P[2], Q[1], TANGENT_LINE_OVERSHOOT);
     r.paint(theme.helper);
   }
   if (s.rule === "C2") {
@@ -402,8 +382,12 @@ export function draw(r, v, s, d) {
   arrow(r, jx - lx, jy - ly, jx, jy, LEFT_ARROW_STYLE);
   arrow(r, qx, qy, qx + rx, qy + ry, RIGHT_ARROW_STYLE);
   const labelStyle = arrowLabelStyles(theme);
-  arrowLabel(r, t("joining.leftArrow"), jx - lx / 2, jy - ly / 2, lx, ly, 1, labelStyle.left);
-  arrowLabel(r, t("joining.rightArrow"), qx + rx / 2, qy + ry / 2, rx, ry, -1, labelStyle.right);
+  // P′ labelled on its arrow's left, Q′ on its right (apart even when the arrows are collinear).
+  const offset = ARROW_LABEL_OFFSET_PX * r.scale;
+  const leftText = t("joining.leftArrow");
+  const rightText = t("joining.rightArrow");
+  placeLabelBeside(r, leftText, jx - lx / 2, jy - ly / 2, lx, ly, 1, offset, labelStyle.left);
+  placeLabelBeside(r, rightText, qx + rx / 2, qy + ry / 2, rx, ry, -1, offset, labelStyle.right);
 
   d.handles.draw(r, v);
 
@@ -420,21 +404,6 @@ export function draw(r, v, s, d) {
     captionWidth,
     "bottom",
   );
-}
-
-/**
- * Labels an arrow beside its middle: P′ on the arrow's left, Q′ on its right (so the two
- * labels never sit on top of each other when the arrows are collinear).
- */
-function arrowLabel(r, text, mx, my, dx, dy, side, style) {
-  const length = Math.hypot(dx, dy);
-  let nx = 0;
-  let ny = -side;
-  if (length >= 1) {
-    nx = (side * dy) / length;
-    ny = (-side * dx) / length;
-  }
-  placeLabel(r, text, mx, my, nx, ny, ARROW_LABEL_OFFSET_PX * r.scale, style);
 }
 
 // ------------------------------------------------------------ helpers, formula, label, table
@@ -477,25 +446,9 @@ function ruleTex(rule) {
   }
 }
 
-/** A number as short text: integers without decimals, else 3 decimals. */
-function short(v) {
-  const r = Math.round(v);
-  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
-}
-
 /** "(x, y)" with short numbers. */
 function pair(x, y) {
-  return `(${short(x)}, ${short(y)})`;
-}
-
-/** "C¹" / "C∞" for a continuity order. */
-function order(letter, k) {
-  return k === Infinity ? `${letter}∞` : `${letter}${superscript(k)}`;
-}
-
-/** TeX "C^{1}" / "C^{\infty}". */
-function orderTex(letter, k) {
-  return k === Infinity ? `\\text{${letter}}^{\\infty}` : `\\text{${letter}}^{${k}}`;
+  return `(${shortNumber(x)}, ${shortNumber(y)})`;
 }
 
 /** Each condition with the numbers, "=" or "≠" as the checker found it; λ for G1; the verdict. */
@@ -510,7 +463,7 @@ export function formula(s, d) {
     verdict: { c, g },
   } = d.joint;
   const rel = (holds) => (holds ? "\\;=\\;" : "\\;\\neq\\;");
-  const tex = (x, y) => `(${short(x)},\\ ${short(y)})`.replace(/-/g, "{-}");
+  const tex = (x, y) => `(${shortNumber(x)},\\ ${shortNumber(y)})`.replace(/-/g, "{-}");
   const n = DEGREE;
   const lines = [`\\text{${t("joining.formula.rule")}}\\quad ${ruleTex(s.rule)}`];
   lines.push(

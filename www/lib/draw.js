@@ -434,6 +434,19 @@ export function indexedPolygonPath(r, view, points, indices) {
   r.closePath();
 }
 
+/**
+ * Starts a new path: the segment from world point a to b extended beyond both ends by
+ * `overshoot` × its length, a − o(b − a) to b + o(b − a) (a tangent line through a and b).
+ * Paint it with `r.paint(style)`.
+ */
+export function extendedSegmentPath(r, view, a, b, overshoot) {
+  const [ax, ay] = a;
+  const [bx, by] = b;
+  r.beginPath();
+  r.moveTo(view.sx(ax - (bx - ax) * overshoot), view.sy(ay - (by - ay) * overshoot));
+  r.lineTo(view.sx(bx + (bx - ax) * overshoot), view.sy(by + (by - ay) * overshoot));
+}
+
 /** A dot with `style` at every vertex of a flat world array [x0, y0, x1, y1, …]. */
 export function flatDots(r, view, flat, style) {
   for (let k = 0; k < flat.length; k += 2) r.point(view.sx(flat[k]), view.sy(flat[k + 1]), style);

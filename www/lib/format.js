@@ -142,3 +142,13 @@ export function binomial(n, i) {
   for (let k = 1; k <= i; k++) c = (c * (n - i + k)) / k;
   return Math.round(c);
 }
+
+/** A continuity order as text, "C¹" / "G²" / "C∞" (k = Infinity): `letter` and k in superscript. */
+export function orderText(letter, k) {
+  return k === Infinity ? `${letter}∞` : `${letter}${superscript(k)}`;
+}
+
+/** The same in TeX: "\\text{C}^{1}", "\\text{C}^{\\infty}". */
+export function orderTex(letter, k) {
+  return k === Infinity ? `\\text{${letter}}^{\\infty}` : `\\text{${letter}}^{${k}}`;
+}
