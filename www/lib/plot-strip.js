@@ -102,3 +102,18 @@ export class PlotStrip {
     }
   }
 }
+
+/**
+ * The strip itself (canvas px): its background from `plot.top` to `plot.bottom` across the whole
+ * canvas (covering anything panned into it) and the line along its top edge.
+ */
+export function drawPlotStrip(r, plot) {
+  const theme = r.theme;
+  r.beginPath();
+  r.rect(0, plot.top, r.width, plot.bottom - plot.top);
+  r.paint(theme.plotBackground);
+  r.beginPath();
+  r.moveTo(0, plot.top);
+  r.lineTo(r.width, plot.top);
+  r.paint(theme.axis);
+}
