@@ -420,6 +420,21 @@ export function flatPath(r, view, flat, from = 0, to = flat.length / 2) {
 }
 
 /**
+ * Starts a new path: the polyline through O + s·v_k for the first `count` vectors v_k of a flat
+ * world array [x0, y0, x1, y1, …], drawn from the origin O = (ox, oy) at scale s (a hodograph
+ * beside its curve). Paint it with `r.paint(style)`. Allocates nothing.
+ */
+export function vectorsPath(r, view, flat, count, ox, oy, s) {
+  r.beginPath();
+  for (let k = 0; k < count; k++) {
+    const x = view.sx(ox + s * flat[2 * k]);
+    const y = view.sy(oy + s * flat[2 * k + 1]);
+    if (k === 0) r.moveTo(x, y);
+    else r.lineTo(x, y);
+  }
+}
+
+/**
  * Starts a new path: the closed polygon through `points[indices[0]]`, `points[indices[1]]`, …
  * (world [x, y] points, e.g. a convex hull's vertices from geometry.js `convexHull`). Paint it
  * with `r.paint(style)`. Allocates nothing.

@@ -601,3 +601,15 @@ export function placeLabelBeside(r, text, mx, my, dx, dy, side, offset, style) {
   }
   placeLabel(r, text, mx, my, nx, ny, offset, style);
 }
+
+/**
+ * Labels an arrow from (x0, y0) to (x1, y1) (screen px) at its tip, continuing its direction,
+ * `gap` px beyond it; nothing when the arrow is shorter than a pixel (no direction).
+ */
+export function placeLabelAtTip(r, text, x0, y0, x1, y1, gap, style) {
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) return;
+  placeLabel(r, text, x1, y1, dx / length, dy / length, gap, style);
+}
