@@ -28,7 +28,7 @@ import {
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, paddedBounds, nearestGraph } from "../lib/geometry.js";
-import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { detailsTable, headerRow, valueSpans, setValueSpans } from "../lib/table.js";
 import {
   BasisPlotPointer,
   drawBand,
@@ -323,15 +323,7 @@ function drawPlot(r, s, d) {
   }
 
   // The marker at t, with the weights B_i^n(t) as dots.
-  const mx = plot.x(s.t);
-  r.beginPath();
-  r.moveTo(mx, plot.y1 - 2 * r.scale);
-  r.lineTo(mx, plot.y0);
-  r.paint(theme.marker);
-  for (let i = 0; i <= n; i++)
-    r.point(mx, py(d.weights.values[i]), theme.basisPoint[i % theme.basisPoint.length]);
-  const markerAlign = s.t < 0.1 ? "left" : s.t > 0.9 ? "right" : "center";
-  r.text(d.marker, mx, plot.y1 - 4 * r.scale, theme.labelPoint, markerAlign, "bottom");
+  plot.drawMarker(r, s.t, d.marker, d.weights.values, theme.basisPoint);
 }
 
 // ------------------------------------------------------------ formula, notes, label
@@ -482,12 +474,7 @@ export function setup(ui) {
     } = ui.data;
     pointer.setRowHover(-1); // the hovered row, if any, is gone
     const rows = [];
-    const columns = ["colFunction", "colValue", "colMirror", "colPeak"];
-    const head = el(
-      "tr",
-      {},
-      columns.map((key) => el("th", { scope: "col", text: t(`bernstein.${key}`) })),
-    );
+    const head = headerRow("bernstein.", ["colFunction", "colValue", "colMirror", "colPeak"]);
     for (let i = 0; i <= n; i++) {
       const cells = { value: valueSpans(), mirror: valueSpans() };
       const peakValue = exactFraction(peakValues[i], n ** n) ?? exactFraction(peakValues[i], 1);

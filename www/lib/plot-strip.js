@@ -82,6 +82,24 @@ export class PlotStrip {
   }
 
   /**
+   * The marker at parameter u: a line across the box (from just above y1 to y0), a dot at
+   * y(values[i]) for every value, in `styles[i mod length]` (one per graph), and `text` above it,
+   * aligned to stay inside near the ends (left below u = 0.1, right above 0.9).
+   */
+  drawMarker(r, u, text, values, styles) {
+    const theme = r.theme;
+    const mx = this.x(u);
+    r.beginPath();
+    r.moveTo(mx, this.y1 - 2 * r.scale);
+    r.lineTo(mx, this.y0);
+    r.paint(theme.marker);
+    for (let i = 0; i < values.length; i++)
+      r.point(mx, this.y(values[i]), styles[i % styles.length]);
+    const align = u < 0.1 ? "left" : u > 0.9 ? "right" : "center";
+    r.text(text, mx, this.y1 - 4 * r.scale, theme.labelPoint, align, "bottom");
+  }
+
+  /**
    * Ticks at u = i/n (i = 0 … n) below the parameter axis, `tick` CSS px long (at scale 1), and
    * under them `labels[i]`, every k-th one with the smallest k that keeps them `minGap` CSS px
    * apart (the last one always, a neighbour too close to it left out).
