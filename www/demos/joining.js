@@ -18,7 +18,7 @@ import { fmt, shortNumber, orderText, orderTex } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
-import { titledTable } from "../lib/table.js";
+import { namedRows, titledTable } from "../lib/table.js";
 import { pointsPath, flatPath, arrow, drawCaption, extendedSegmentPath } from "../lib/draw.js";
 
 export const id = "joining";
@@ -508,11 +508,7 @@ export function label(s, d) {
 /** The table of what the rules compare (differences, the core's derivatives at the joint); the core's refusals. */
 export function setup(ui) {
   const rowKeys = ["p3-p2", "q1-q0", "dp", "dq", "ddp", "ddq"];
-  const cells = {};
-  const rows = rowKeys.map((key) => {
-    cells[key] = el("td", { dataset: { vector: key } });
-    return el("tr", {}, el("th", { scope: "row", text: t(`joining.row.${key}`) }), cells[key]);
-  });
+  const { rows, cells } = namedRows("joining.row.", rowKeys, "vector");
   const caption = t("joining.tableCaption");
   const { title, wrap } = titledTable("joining", { caption, children: [el("tbody", {}, rows)] });
   ui.ctx.slots.details.append(title, wrap);
