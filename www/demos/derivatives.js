@@ -17,7 +17,7 @@ import { placeLabel, placeLabelAtTip, placeLabelFrom } from "../lib/handles.js";
 import { flatPath, pointsPath, arrow, drawCaption, vectorsPath } from "../lib/draw.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
-import { titledTable } from "../lib/table.js";
+import { namedRows, titledTable } from "../lib/table.js";
 
 export const id = "derivatives";
 /** Prefix of this demo's keys in strings.js. */
@@ -438,11 +438,7 @@ const pair = (p) => `(${short(p[0])}, ${short(p[1])})`;
 
 /** The table: the values at t, the end velocities, the arc length, the hodograph's points. */
 export function setup(ui) {
-  const cells = {};
-  const rows = QUANTITIES.map((key) => {
-    cells[key] = el("td", { dataset: { quantity: key } });
-    return el("tr", {}, el("th", { scope: "row", text: t(`derivatives.row.${key}`) }), cells[key]);
-  });
+  const { rows, cells } = namedRows("derivatives.row.", QUANTITIES, "quantity");
   const hodographBody = el("tbody");
   const { title, wrap } = titledTable("derivatives", {
     children: [el("tbody", {}, rows), hodographBody],
