@@ -17,8 +17,9 @@ import { el, setText } from "../lib/controls.js";
 import { fmt, shortNumber, orderText, orderTex } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
+import { boundsOf } from "../lib/geometry.js";
 import { namedRows, titledTable } from "../lib/table.js";
+import { JoinedPieces } from "../lib/joined-pieces.js";
 import { pointsPath, flatPath, arrow, drawCaption, extendedSegmentPath } from "../lib/draw.js";
 
 export const id = "joining";
@@ -72,8 +73,7 @@ const TEXT_MARGIN_PX = 12;
 const ARROW_LABEL_OFFSET_PX = 14;
 
 /** Interval of each piece: P on [0, 1], Q on [1, 2] (the joint at t = 1). */
-const LEFT_INTERVAL = [0, 1];
-const RIGHT_INTERVAL = [1, 2];
+const INTERVALS = Object.freeze({ left: Object.freeze([0, 1]), right: Object.freeze([1, 2]) });
 /** The global parameter at the joint. */
 const JOINT_T = 1;
 
@@ -121,66 +121,10 @@ export const fields = {
 };
 
 /**
- * The two wasm pieces, P on [0, 1] and Q on [1, 2]. `follow` re-establishes the rule with the
- * core (`joinBezier`): the following piece is replaced by the one it returns (the other copy is
- * freed at once) and its points are written into the state. `error` keeps the core's message
- * when it could not (G1 with P₂ = P₃: no tangent to follow), for `setup` to show.
- */
-class Pieces {
-  constructor(sl, state) {
-    this.sl = sl;
-    this.left = sl.BezierCurve.withInterval(
-      flatten(state.left),
-      2,
-      LEFT_INTERVAL[0],
-      LEFT_INTERVAL[1],
-    );
-    try {
-      this.right = sl.BezierCurve.withInterval(
-        flatten(state.right),
-        2,
-        RIGHT_INTERVAL[0],
-        RIGHT_INTERVAL[1],
-      );
-    } catch (err) {
-      this.left.free();
-      throw err;
-    }
-    this.error = null;
-  }
-
-  follow(state, adjust) {
-    const [l, r] = this.sl.joinBezier(this.left, this.right, state.rule, adjust);
-    const keep = adjust === "right" ? r : l;
-    (adjust === "right" ? l : r).free();
-    this[adjust].free();
-    this[adjust] = keep;
-    const flat = keep.controlPoints();
-    const points = state[adjust];
-    for (let i = 0; i < points.length; i++) {
-      points[i][0] = flat[2 * i];
-      points[i][1] = flat[2 * i + 1];
-    }
-  }
-
-  /** `follow`, keeping the core's message instead of throwing. */
-  tryFollow(state, adjust) {
-    try {
-      this.follow(state, adjust);
-    } catch (err) {
-      this.error = err.message;
-    }
-  }
-
-  free() {
-    this.left.free();
-    this.right.free();
-  }
-}
-
-/**
- * The pieces of a state. When its points break its rule (a link, a file, a new rule), the
- * right piece follows (the syllabus form); a state that obeys its rule stays exactly as it is.
+ * The pieces of a state, in wasm (lib/joined-pieces.js: P on [0, 1], Q on [1, 2], a piece made to
+ * follow the rule by the core's `joinBezier`; `error` keeps the core's message for `setup`).
+ * When its points break its rule (a link, a file, a new rule), the right piece follows (the
+ * syllabus form); a state that obeys its rule stays exactly as it is.
  * When the core cannot establish the rule, the state is refused (the last one stays), except
  * the first one, shown as it is with the core's message.
  * Moving handle i re-establishes the rule: a point of the left piece (or Q₃) makes the right
@@ -190,7 +134,7 @@ class Pieces {
 export const derive = {
   from: ["left", "right", "rule"],
   build(s, sl, { first = false } = {}) {
-    const pieces = new Pieces(sl, s);
+    const pieces = new JoinedPieces(sl, s, INTERVALS);
     if (s.rule !== "none" && !satisfies(s.rule, sl.jointContinuity(pieces.left, pieces.right))) {
       if (first) {
         pieces.tryFollow(s, "right");
