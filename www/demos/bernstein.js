@@ -24,18 +24,20 @@ import {
   fractionTex,
   exactNumbers,
   degreeName,
+  binomial,
 } from "../lib/format.js";
-import { CYCLE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf, nearestGraph } from "../lib/geometry.js";
-import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
+import { flatten, paddedBounds, nearestGraph } from "../lib/geometry.js";
+import { detailsTable, headerRow, valueSpans, setValueSpans } from "../lib/table.js";
 import {
   BasisPlotPointer,
   drawBand,
   drawGraphs,
   drawPlotFrame,
   followHighlight,
+  legendRow,
 } from "../lib/basis-plot.js";
+import { PlotStrip } from "../lib/plot-strip.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bernstein";
@@ -57,14 +59,16 @@ const LABEL_ROOM = 0.08;
 /** Slider resolution for t. */
 const T_SLIDER_STEP = 0.001;
 /**
- * The plot takes this fraction of the canvas height, below the curve; at least PLOT_MIN_PX,
- * but never more than PLOT_FRACTION_SHORT of a short canvas (gallery thumbnails).
+ * The plot below the curve (CSS px): t from x0 to x1, value 0 at y0 and 1 at y1. Its strip takes
+ * 0.4 of the canvas height, at least 150 px, but never more than 0.55 of a short canvas (gallery
+ * thumbnails); the margins of the frame inside it hold the labels.
  */
-const PLOT_FRACTION = 0.4;
-const PLOT_MIN_PX = 150;
-const PLOT_FRACTION_SHORT = 0.55;
-/** Margins of the plot frame inside its strip, CSS px at scale 1 (labels live there). */
-const PLOT_MARGIN = Object.freeze({ top: 30, right: 22, bottom: 34, left: 40 });
+const plot = new PlotStrip({
+  fraction: 0.4,
+  minPx: 150,
+  shortFraction: 0.55,
+  margin: Object.freeze({ top: 30, right: 22, bottom: 34, left: 40 }),
+});
 /** Tick labels i/n on the t axis only while they are at least this far apart (CSS px). */
 const TICK_LABEL_MIN_GAP = 34;
 /** Curve names B_i^n are written at the peaks up to this degree (beyond, they crowd). */
@@ -186,48 +190,17 @@ export const controls = [
 ];
 
 export const figure = {
-  bounds: (s) => paddedBounds(s.points, LABEL_ROOM),
+  bounds: (s) => paddedBounds(s.points, 0, LABEL_ROOM),
   insets: (width, height) => {
-    insetScratch[2] = plotHeight(height);
+    insetScratch[2] = plot.height(height);
     return insetScratch;
   },
   handles: { field: "points" },
 };
 
-// ------------------------------------------------------------ the plot's frame
-
 const insetScratch = [0, 0, 0, 0];
-/** The plot frame (CSS px): t from x0 to x1, value 0 at y0 and 1 at y1; the strip from top to bottom. */
-const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0, bottom: 0 };
-
-/** Height of the plot strip: PLOT_FRACTION of the canvas, at least PLOT_MIN_PX while that leaves the curve half. */
-function plotHeight(height) {
-  return Math.max(
-    Math.round(height * PLOT_FRACTION),
-    Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)),
-  );
-}
-
-/** Lays out the plot frame for a canvas of width × height CSS px at text scale `scale`. */
-function layoutPlot(width, height, scale) {
-  plot.top = height - plotHeight(height);
-  plot.bottom = height;
-  plot.x0 = PLOT_MARGIN.left * scale;
-  plot.x1 = width - PLOT_MARGIN.right * scale;
-  plot.y0 = height - PLOT_MARGIN.bottom * scale; // value 0 (y down on screen)
-  plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value 1
-}
-
-const px = (tValue) => plot.x0 + tValue * (plot.x1 - plot.x0);
-const py = (value) => plot.y0 - value * (plot.y0 - plot.y1);
-const sampleX = (k) => px(k / (SAMPLES - 1));
-
-/** The points' bounding box (the curve lies in their convex hull), taller by `room` × the height above and below. */
-function paddedBounds(points, room) {
-  const [x0, y0, x1, y1] = boundsOf(points);
-  const pad = room * (y1 - y0);
-  return [x0, y0 - pad, x1, y1 + pad];
-}
+const py = (value) => plot.y(value);
+const sampleX = (k) => plot.x(k / (SAMPLES - 1));
 
 // ------------------------------------------------------------ drawing
 
@@ -294,7 +267,7 @@ function drawPlot(r, s, d) {
   const n = s.points.length - 1;
   const hi = d.highlight;
   const { values: basis, peakValues } = d.basis;
-  layoutPlot(r.width, r.height, r.scale);
+  plot.layout(r.width, r.height, r.scale);
   drawPlotFrame(r, plot, {
     zero: t("bernstein.axisValue0"),
     one: t("bernstein.axisValue1"),
@@ -310,25 +283,7 @@ function drawPlot(r, s, d) {
   );
 
   // Ticks at i/n, labelled while the labels keep TICK_LABEL_MIN_GAP apart (the last one always).
-  const tickGap = (plot.x1 - plot.x0) / n;
-  const labelEvery = Math.max(1, Math.ceil((TICK_LABEL_MIN_GAP * r.scale) / tickGap));
-  r.beginPath();
-  for (let i = 0; i <= n; i++) {
-    r.moveTo(px(i / n), plot.y0);
-    r.lineTo(px(i / n), plot.y0 + TICK_PX * r.scale);
-  }
-  r.paint(theme.axis);
-  for (let i = 0; i <= n; i++) {
-    if (i !== n && (i % labelEvery !== 0 || n - i < labelEvery)) continue;
-    r.text(
-      d.labels.ticks[i],
-      px(i / n),
-      plot.y0 + (TICK_PX + 2) * r.scale,
-      theme.labelSmall,
-      "center",
-      "top",
-    );
-  }
+  plot.drawTicks(r, n, d.labels.ticks, { tick: TICK_PX, minGap: TICK_LABEL_MIN_GAP });
 
   // The basis functions from the core's table, and their names at the peaks (B_0 left, B_n right).
   drawGraphs(r, basis, n + 1, SAMPLES, sampleX, py, hi);
@@ -339,7 +294,7 @@ function drawPlot(r, s, d) {
       const style = i === hi ? theme.labelBold : theme.labelSmall;
       r.text(
         d.labels.names[i],
-        px(i / n) + nudge(i, 4),
+        plot.x(i / n) + nudge(i, 4),
         py(peakValues[i]) - 5 * r.scale,
         style,
         align(i),
@@ -350,7 +305,7 @@ function drawPlot(r, s, d) {
 
   // The highlighted function's maximum at t = i/n.
   if (hi >= 0) {
-    const x = px(hi / n);
+    const x = plot.x(hi / n);
     const y = py(peakValues[hi]);
     r.beginPath();
     r.moveTo(x, y);
@@ -368,15 +323,7 @@ function drawPlot(r, s, d) {
   }
 
   // The marker at t, with the weights B_i^n(t) as dots.
-  const mx = px(s.t);
-  r.beginPath();
-  r.moveTo(mx, plot.y1 - 2 * r.scale);
-  r.lineTo(mx, plot.y0);
-  r.paint(theme.marker);
-  for (let i = 0; i <= n; i++)
-    r.point(mx, py(d.weights.values[i]), theme.basisPoint[i % theme.basisPoint.length]);
-  const markerAlign = s.t < 0.1 ? "left" : s.t > 0.9 ? "right" : "center";
-  r.text(d.marker, mx, plot.y1 - 4 * r.scale, theme.labelPoint, markerAlign, "bottom");
+  plot.drawMarker(r, s.t, d.marker, d.weights.values, theme.basisPoint);
 }
 
 // ------------------------------------------------------------ formula, notes, label
@@ -386,13 +333,6 @@ function drawPlot(r, s, d) {
  * are then k / bⁿ (`weights.value(w, n)`), and so is P(t) when the control points are integers.
  */
 const weightNumbers = (s) => exactNumbers(s.t, []);
-
-/** Binomial coefficient C(n, i), for the formula panel only (the weights come from the core). */
-function binomial(n, i) {
-  let c = 1;
-  for (let k = 1; k <= i; k++) c = (c * (n - i + k)) / k;
-  return Math.round(c);
-}
 
 /**
  * The definition, one function written out with its numbers (the highlighted one, else the one
@@ -497,25 +437,18 @@ export function setup(ui) {
   const view = ui.view;
   ui.ctx.slots.figure.classList.add("sl-figure-tall"); // the curve and the plot share it
   const inPlot = (x, y) => {
-    layoutPlot(view.width, view.height, view.renderer.scale);
-    const slack = TICK_SNAP_PX;
-    return (
-      x >= plot.x0 - slack && x <= plot.x1 + slack && y >= plot.y1 - slack && y <= plot.y0 + slack
-    );
+    plot.layout(view.width, view.height, view.renderer.scale);
+    return plot.contains(x, y, TICK_SNAP_PX);
   };
-  const rawT = (x) => Math.min(1, Math.max(0, (x - plot.x0) / (plot.x1 - plot.x0)));
   /** t under canvas x in the plot: snapped to a tick i/n nearby, else to the slider's step. */
   const tAtPixel = (x) => {
-    layoutPlot(view.width, view.height, view.renderer.scale);
-    const n = ui.state.points.length - 1;
-    const tick = Math.round(rawT(x) * n);
-    if (Math.abs(px(tick / n) - x) <= TICK_SNAP_PX) return tick / n;
-    return Number((Math.round(rawT(x) / T_SLIDER_STEP) * T_SLIDER_STEP).toFixed(3));
+    plot.layout(view.width, view.height, view.renderer.scale);
+    return plot.snappedParameter(x, ui.state.points.length - 1, TICK_SNAP_PX, T_SLIDER_STEP);
   };
   const pointer = new BasisPlotPointer(view, {
     inPlot,
     graphAt: (x, y) => {
-      const k = Math.round(rawT(x) * (SAMPLES - 1));
+      const k = Math.round(plot.parameterAt(x) * (SAMPLES - 1));
       return nearestGraph(
         ui.data.basis.values,
         ui.state.points.length,
@@ -541,12 +474,7 @@ export function setup(ui) {
     } = ui.data;
     pointer.setRowHover(-1); // the hovered row, if any, is gone
     const rows = [];
-    const columns = ["colFunction", "colValue", "colMirror", "colPeak"];
-    const head = el(
-      "tr",
-      {},
-      columns.map((key) => el("th", { scope: "col", text: t(`bernstein.${key}`) })),
-    );
+    const head = headerRow("bernstein.", ["colFunction", "colValue", "colMirror", "colPeak"]);
     for (let i = 0; i <= n; i++) {
       const cells = { value: valueSpans(), mirror: valueSpans() };
       const peakValue = exactFraction(peakValues[i], n ** n) ?? exactFraction(peakValues[i], 1);
@@ -554,27 +482,14 @@ export function setup(ui) {
         t: labels.ticks[i],
         value: peakValue ? fractionText(peakValue) : fmt(peakValues[i]),
       });
-      const swatch = el("span", { class: "sl-swatch", "aria-hidden": "true" });
-      swatch.style.background = CYCLE[i % CYCLE.length];
-      cells.row = el(
-        "tr",
-        { tabindex: "0", dataset: { index: String(i) } },
-        el(
-          "th",
-          { scope: "row" },
-          swatch,
-          t("bernstein.rowName", { b: labels.names[i], p: `P${subscript(i)}` }),
-        ),
+      cells.row = legendRow(
+        pointer,
+        i,
+        t("bernstein.rowName", { b: labels.names[i], p: `P${subscript(i)}` }),
         el("td", { dataset: { cell: "value" } }, cells.value.exact, cells.value.decimal),
         el("td", { dataset: { cell: "mirror" } }, cells.mirror.exact, cells.mirror.decimal),
         el("td", { dataset: { cell: "peak" }, text: peakText }),
       );
-      const enter = () => pointer.setRowHover(i);
-      const leave = () => pointer.setRowHover(-1);
-      cells.row.addEventListener("pointerenter", enter);
-      cells.row.addEventListener("pointerleave", leave);
-      cells.row.addEventListener("focus", enter);
-      cells.row.addEventListener("blur", leave);
       rows.push(cells);
     }
     const sum = valueSpans();

@@ -20,8 +20,16 @@ import {
 } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf, convexHull } from "../lib/geometry.js";
-import { flatPath, pointsPath } from "../lib/draw.js";
+import { flatten, boundsOf, convexHull, largestGap } from "../lib/geometry.js";
+import { affineMap, affineMatrix, centroid } from "../lib/affine-map.js";
+import {
+  chevron,
+  flatDots,
+  flatPath,
+  indexedPolygonPath,
+  linePath,
+  pointsPath,
+} from "../lib/draw.js";
 import { el, setText } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
 
@@ -49,9 +57,6 @@ const MAPPED_DOTS = 17;
 const DOT_TS = new Float64Array(MAPPED_DOTS).map((_, k) => k / (MAPPED_DOTS - 1));
 /** Direction chevrons along the curve and the reversed curve, at these parameters. */
 const ARROW_TS = Object.freeze([0.2, 0.6]);
-/** Chevron size (CSS px) and half-angle (radians). */
-const CHEVRON_PX = 11;
-const CHEVRON_ANGLE = 0.5;
 /** Distance (model units) within which `intersectLine` reports a hit. */
 const INTERSECT_TOLERANCE = 1e-9;
 
@@ -146,47 +151,22 @@ export const derive = {
   moved: (m, i, xy) => m.curve.setControlPoint(i, xy),
 };
 
-/** The 2×2 matrix R(θ)·s·H(k) of the affine map: rotation, uniform scale, shear along x. */
-function affineMatrix(s) {
-  const angle = (s.rotation * Math.PI) / 180;
-  const c = Math.cos(angle);
-  const sin = Math.sin(angle);
-  const k = s.shear;
-  const f = s.scale;
-  // R·(f·H) with H = [[1, k], [0, 1]].
-  return [f * c, f * (c * k - sin), f * sin, f * (sin * k + c)];
-}
-
 /**
  * Affine invariance: the control points mapped by Φ(x) = c + A(x − c) (c: their centroid) make
  * the second curve in the core; samples of the original, mapped the same way in JS (the dots),
  * must lie on it. `distance`: the largest gap between the two at the same t.
  */
 function affine(s, d) {
-  const pts = s.points;
-  const matrix = affineMatrix(s);
-  const centre = [0, 0];
-  for (const [x, y] of pts) {
-    centre[0] += x / pts.length;
-    centre[1] += y / pts.length;
-  }
-  const map = (x, y) => [
-    centre[0] + matrix[0] * (x - centre[0]) + matrix[1] * (y - centre[1]),
-    centre[1] + matrix[2] * (x - centre[0]) + matrix[3] * (y - centre[1]),
-  ];
-  const points = pts.map(([x, y]) => map(x, y));
+  // A = R(θ)·f·H(k): rotation, uniform scale, shear along x.
+  const matrix = affineMatrix(s.rotation, s.scale, s.shear);
+  const centre = centroid(s.points);
+  const map = affineMap(matrix, centre);
+  const points = s.points.map(([x, y]) => map(x, y));
   points.forEach((q, i) => d.mapped.setControlPoint(i, Float64Array.from(q)));
   const original = d.curve.sample(DOT_TS);
-  const onMapped = d.mapped.sample(DOT_TS);
   const dots = new Float64Array(2 * MAPPED_DOTS);
-  let distance = 0;
-  for (let k = 0; k < MAPPED_DOTS; k++) {
-    dots.set(map(original[2 * k], original[2 * k + 1]), 2 * k);
-    distance = Math.max(
-      distance,
-      Math.hypot(dots[2 * k] - onMapped[2 * k], dots[2 * k + 1] - onMapped[2 * k + 1]),
-    );
-  }
+  for (let k = 0; k < MAPPED_DOTS; k++) dots.set(map(original[2 * k], original[2 * k + 1]), 2 * k);
+  const distance = largestGap(dots, d.mapped.sample(DOT_TS));
   return { matrix, centre, points, samples: d.mapped.sampleUniform(CURVE_SAMPLES), dots, distance };
 }
 
@@ -195,16 +175,7 @@ function reversed(s, d) {
   const curve = d.curve.reversed();
   const samples = curve.sampleUniform(CURVE_SAMPLES);
   curve.free();
-  let distance = 0;
-  for (let k = 0; k < CURVE_SAMPLES; k++) {
-    const j = CURVE_SAMPLES - 1 - k;
-    const gap = Math.hypot(
-      d.samples[2 * k] - samples[2 * j],
-      d.samples[2 * k + 1] - samples[2 * j + 1],
-    );
-    distance = Math.max(distance, gap);
-  }
-  return { samples, distance };
+  return { samples, distance: largestGap(d.samples, samples, true) };
 }
 
 /** Degree elevation: `elevate()` applied `elevations` times; the points after one and after all. */
@@ -461,61 +432,15 @@ export const figure = {
   handles: { field: "points", extra: [lineHandle(0), lineHandle(1)] },
 };
 
-/** The infinite line through the two line handles, across the whole canvas. */
-function drawLine(r, v, [a, b]) {
-  const px = v.sx(a[0]);
-  const py = v.sy(a[1]);
-  const dx = v.sx(b[0]) - px;
-  const dy = v.sy(b[1]) - py;
-  const length = Math.hypot(dx, dy);
-  if (length < 1e-9) return;
-  const reach = (v.width + v.height) / length + 1;
-  r.beginPath();
-  r.moveTo(px - dx * reach, py - dy * reach);
-  r.lineTo(px + dx * reach, py + dy * reach);
-  r.paint(LINE_STYLE);
-}
-
-/** A chevron at sample k of a flat sample list, pointing to the next sample (direction of t). */
-function chevron(r, v, flat, k, style) {
-  const k0 = Math.max(0, Math.min(k, CURVE_SAMPLES - 2));
-  const x = v.sx(flat[2 * k0]);
-  const y = v.sy(flat[2 * k0 + 1]);
-  let dx = v.sx(flat[2 * k0 + 2]) - x;
-  let dy = v.sy(flat[2 * k0 + 3]) - y;
-  const length = Math.hypot(dx, dy);
-  if (length < 1e-9) return;
-  dx /= length;
-  dy /= length;
-  const size = CHEVRON_PX * r.scale;
-  const c = Math.cos(CHEVRON_ANGLE);
-  const s = Math.sin(CHEVRON_ANGLE);
-  r.beginPath();
-  r.moveTo(x - size * (dx * c - dy * s), y - size * (dy * c + dx * s));
-  r.lineTo(x, y);
-  r.lineTo(x - size * (dx * c + dy * s), y - size * (dy * c - dx * s));
-  r.paint(style);
-}
-
-/** Flat points as dots. */
-function dotsOf(r, v, flat, style) {
-  for (let k = 0; k < flat.length; k += 2) r.point(v.sx(flat[k]), v.sy(flat[k + 1]), style);
-}
-
 /** The hull or the line under the curve and its polygon; the property's own marks over them. */
 export function draw(r, v, s, d) {
   const theme = r.theme;
   if (s.property === "hull" && d.hull.length > 0) {
-    r.beginPath();
-    for (const i of d.hull) {
-      const [x, y] = s.points[i];
-      if (i === d.hull[0]) r.moveTo(v.sx(x), v.sy(y));
-      else r.lineTo(v.sx(x), v.sy(y));
-    }
-    r.closePath();
+    indexedPolygonPath(r, v, s.points, d.hull);
     r.paint(theme.helperFill);
   }
-  if (s.property === "variation") drawLine(r, v, s.line);
+  // The infinite line through the two line handles, across the whole canvas.
+  if (s.property === "variation" && linePath(r, v, s.line[0], s.line[1])) r.paint(LINE_STYLE);
   pointsPath(r, v, s.points);
   r.paint(theme.polygon);
   flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
@@ -528,7 +453,7 @@ export function draw(r, v, s, d) {
     flatPath(r, v, d.affine.samples, 0, CURVE_SAMPLES);
     r.paint(MAPPED_CURVE_STYLE);
     for (const q of d.affine.points) r.point(v.sx(q[0]), v.sy(q[1]), MAPPED_POINT_STYLE);
-    dotsOf(r, v, d.affine.dots, DOT_STYLE);
+    flatDots(r, v, d.affine.dots, DOT_STYLE);
   } else if (s.property === "reversed") {
     flatPath(r, v, d.reversed.samples, 0, CURVE_SAMPLES);
     r.paint(REVERSED_STYLE);
@@ -539,9 +464,9 @@ export function draw(r, v, s, d) {
   } else if (s.property === "elevation" && s.elevations > 0) {
     flatPath(r, v, d.elevation.points);
     r.paint(theme.levelStroke[0]);
-    dotsOf(r, v, d.elevation.points, theme.levelPoint[0]);
+    flatDots(r, v, d.elevation.points, theme.levelPoint[0]);
   } else if (s.property === "variation" && d.variation.hits) {
-    dotsOf(r, v, d.variation.hits, theme.pointOnCurve);
+    flatDots(r, v, d.variation.hits, theme.pointOnCurve);
   }
   d.handles.draw(r, v);
 }

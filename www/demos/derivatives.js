@@ -13,11 +13,11 @@ import { exactNumbers, exactFraction, fractionTex } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
-import { placeLabel } from "../lib/handles.js";
-import { flatPath, pointsPath, arrow, drawCaption } from "../lib/draw.js";
+import { placeLabel, placeLabelAtTip, placeLabelFrom } from "../lib/handles.js";
+import { flatPath, pointsPath, arrow, drawCaption, vectorsPath } from "../lib/draw.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
-import { titledTable } from "../lib/table.js";
+import { namedRows, titledTable } from "../lib/table.js";
 
 export const id = "derivatives";
 /** Prefix of this demo's keys in strings.js. */
@@ -222,23 +222,8 @@ function hodographLabel(i, n) {
 }
 
 /** Labels an arrow at its tip, continuing its direction. */
-function labelBeside(r, text, x0, y0, x1, y1, style) {
-  const dx = x1 - x0;
-  const dy = y1 - y0;
-  const length = Math.hypot(dx, dy);
-  if (length < 1) return;
-  placeLabel(r, text, x1, y1, dx / length, dy / length, ARROW_LABEL_GAP_PX * r.scale, style);
-}
-
-/** The polyline through a flat list of hodograph vectors, drawn from O at scale s. */
-function hodographPath(r, v, flat, count, ox, oy, s) {
-  r.beginPath();
-  for (let k = 0; k < count; k++) {
-    const x = v.sx(ox + s * flat[2 * k]);
-    const y = v.sy(oy + s * flat[2 * k + 1]);
-    if (k === 0) r.moveTo(x, y);
-    else r.lineTo(x, y);
-  }
+function labelAtTip(r, text, x0, y0, x1, y1, style) {
+  placeLabelAtTip(r, text, x0, y0, x1, y1, ARROW_LABEL_GAP_PX * r.scale, style);
 }
 
 /**
@@ -276,9 +261,9 @@ function drawHodograph(r, v, s, d) {
     "bottom",
   );
 
-  hodographPath(r, v, points, n, ox, oy, scale);
+  vectorsPath(r, v, points, n, ox, oy, scale);
   r.paint(HODOGRAPH_POLYGON_STYLE);
-  hodographPath(r, v, samples, CURVE_SAMPLES, ox, oy, scale);
+  vectorsPath(r, v, samples, CURVE_SAMPLES, ox, oy, scale);
   r.paint(HODOGRAPH_STYLE);
   const cx = v.sx(ox + (box[0] + box[2]) / 2);
   const cy = v.sy(oy + (box[1] + box[3]) / 2);
@@ -288,19 +273,8 @@ function drawHodograph(r, v, s, d) {
     r.point(x, y, HODOGRAPH_POINT_STYLE);
     if (narrow) continue;
     // Labelled away from the hodograph's middle.
-    const length = Math.hypot(x - cx, y - cy);
-    const dx = length < 1 ? 0 : (x - cx) / length;
-    const dy = length < 1 ? -1 : (y - cy) / length;
-    placeLabel(
-      r,
-      hodographLabel(i, n),
-      x,
-      y,
-      dx,
-      dy,
-      HODOGRAPH_POINT_STYLE.radius * r.scale,
-      theme.labelSmall,
-    );
+    const radius = HODOGRAPH_POINT_STYLE.radius * r.scale;
+    placeLabelFrom(r, hodographLabel(i, n), x, y, cx, cy, theme.labelSmall, radius);
   }
   // The hodograph at t is P′(t).
   const { d1 } = d.at;
@@ -308,7 +282,7 @@ function drawHodograph(r, v, s, d) {
   const hy = v.sy(oy + scale * d1[1]);
   arrow(r, v.sx(ox), v.sy(oy), hx, hy, VELOCITY_STYLE);
   r.point(hx, hy, theme.pointOnCurve);
-  labelBeside(r, t("derivatives.velocityLabel"), v.sx(ox), v.sy(oy), hx, hy, theme.labelPoint);
+  labelAtTip(r, t("derivatives.velocityLabel"), v.sx(ox), v.sy(oy), hx, hy, theme.labelPoint);
 }
 
 /**
@@ -369,7 +343,7 @@ export function draw(r, v, s, d) {
   const vx = v.sx(point[0] + scale * d1[0]);
   const vy = v.sy(point[1] + scale * d1[1]);
   arrow(r, px, py, vx, vy, VELOCITY_STYLE);
-  labelBeside(r, t("derivatives.velocityLabel"), px, py, vx, vy, theme.labelPoint);
+  labelAtTip(r, t("derivatives.velocityLabel"), px, py, vx, vy, theme.labelPoint);
 
   d.handles.draw(r, v);
   r.point(px, py, theme.pointOnCurve);
@@ -464,11 +438,7 @@ const pair = (p) => `(${short(p[0])}, ${short(p[1])})`;
 
 /** The table: the values at t, the end velocities, the arc length, the hodograph's points. */
 export function setup(ui) {
-  const cells = {};
-  const rows = QUANTITIES.map((key) => {
-    cells[key] = el("td", { dataset: { quantity: key } });
-    return el("tr", {}, el("th", { scope: "row", text: t(`derivatives.row.${key}`) }), cells[key]);
-  });
+  const { rows, cells } = namedRows("derivatives.row.", QUANTITIES, "quantity");
   const hodographBody = el("tbody");
   const { title, wrap } = titledTable("derivatives", {
     children: [el("tbody", {}, rows), hodographBody],

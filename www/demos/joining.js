@@ -12,14 +12,16 @@
  */
 import { field } from "../lib/validate.js";
 import { choice, readout, group } from "../lib/panel.js";
-import { placeLabel } from "../lib/handles.js";
+import { placeLabel, placeLabelBeside } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, superscript } from "../lib/format.js";
-import { HUES, WIDTH, RADIUS, FONT_SIZE } from "../lib/theme.js";
+import { fmt, shortNumber } from "../lib/format.js";
+import { orderText, orderTex } from "../lib/continuity.js";
+import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
-import { titledTable } from "../lib/table.js";
-import { pointsPath, flatPath, arrow, drawCaption } from "../lib/draw.js";
+import { boundsOf } from "../lib/geometry.js";
+import { namedRows, titledTable } from "../lib/table.js";
+import { JoinedPieces } from "../lib/joined-pieces.js";
+import { pointsPath, flatPath, arrow, drawCaption, extendedSegmentPath } from "../lib/draw.js";
 
 export const id = "joining";
 /** Prefix of this demo's keys in strings.js. */
@@ -72,8 +74,7 @@ const TEXT_MARGIN_PX = 12;
 const ARROW_LABEL_OFFSET_PX = 14;
 
 /** Interval of each piece: P on [0, 1], Q on [1, 2] (the joint at t = 1). */
-const LEFT_INTERVAL = [0, 1];
-const RIGHT_INTERVAL = [1, 2];
+const INTERVALS = Object.freeze({ left: Object.freeze([0, 1]), right: Object.freeze([1, 2]) });
 /** The global parameter at the joint. */
 const JOINT_T = 1;
 
@@ -97,28 +98,20 @@ const RIGHT_ARROW_STYLE = Object.freeze({
   join: "round",
 });
 /** Arrow label styles per theme (their halo is the theme's background), made once per theme. */
-const labelStyles = new WeakMap();
-function arrowLabelStyles(theme) {
-  let styles = labelStyles.get(theme);
-  if (!styles) {
-    styles = {
-      left: Object.freeze({
-        fill: theme.name === "dark" ? HUES.orange : "#A86F00",
-        size: FONT_SIZE.small,
-        weight: "bold",
-        halo: theme.background,
-      }),
-      right: Object.freeze({
-        fill: HUES.reddishPurple,
-        size: FONT_SIZE.small,
-        weight: "bold",
-        halo: theme.background,
-      }),
-    };
-    labelStyles.set(theme, styles);
-  }
-  return styles;
-}
+const arrowLabelStyles = themed((theme) => ({
+  left: Object.freeze({
+    fill: theme.name === "dark" ? HUES.orange : "#A86F00",
+    size: FONT_SIZE.small,
+    weight: "bold",
+    halo: theme.background,
+  }),
+  right: Object.freeze({
+    fill: HUES.reddishPurple,
+    size: FONT_SIZE.small,
+    weight: "bold",
+    halo: theme.background,
+  }),
+}));
 const MARK_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
 const D_POINT_STYLE = Object.freeze({ fill: HUES.reddishPurple, radius: RADIUS.constructionPoint });
 
@@ -129,66 +122,10 @@ export const fields = {
 };
 
 /**
- * The two wasm pieces, P on [0, 1] and Q on [1, 2]. `follow` re-establishes the rule with the
- * core (`joinBezier`): the following piece is replaced by the one it returns (the other copy is
- * freed at once) and its points are written into the state. `error` keeps the core's message
- * when it could not (G1 with P₂ = P₃: no tangent to follow), for `setup` to show.
- */
-class Pieces {
-  constructor(sl, state) {
-    this.sl = sl;
-    this.left = sl.BezierCurve.withInterval(
-      flatten(state.left),
-      2,
-      LEFT_INTERVAL[0],
-      LEFT_INTERVAL[1],
-    );
-    try {
-      this.right = sl.BezierCurve.withInterval(
-        flatten(state.right),
-        2,
-        RIGHT_INTERVAL[0],
-        RIGHT_INTERVAL[1],
-      );
-    } catch (err) {
-      this.left.free();
-      throw err;
-    }
-    this.error = null;
-  }
-
-  follow(state, adjust) {
-    const [l, r] = this.sl.joinBezier(this.left, this.right, state.rule, adjust);
-    const keep = adjust === "right" ? r : l;
-    (adjust === "right" ? l : r).free();
-    this[adjust].free();
-    this[adjust] = keep;
-    const flat = keep.controlPoints();
-    const points = state[adjust];
-    for (let i = 0; i < points.length; i++) {
-      points[i][0] = flat[2 * i];
-      points[i][1] = flat[2 * i + 1];
-    }
-  }
-
-  /** `follow`, keeping the core's message instead of throwing. */
-  tryFollow(state, adjust) {
-    try {
-      this.follow(state, adjust);
-    } catch (err) {
-      this.error = err.message;
-    }
-  }
-
-  free() {
-    this.left.free();
-    this.right.free();
-  }
-}
-
-/**
- * The pieces of a state. When its points break its rule (a link, a file, a new rule), the
- * right piece follows (the syllabus form); a state that obeys its rule stays exactly as it is.
+ * The pieces of a state, in wasm (lib/joined-pieces.js: P on [0, 1], Q on [1, 2], a piece made to
+ * follow the rule by the core's `joinBezier`; `error` keeps the core's message for `setup`).
+ * When its points break its rule (a link, a file, a new rule), the right piece follows (the
+ * syllabus form); a state that obeys its rule stays exactly as it is.
  * When the core cannot establish the rule, the state is refused (the last one stays), except
  * the first one, shown as it is with the core's message.
  * Moving handle i re-establishes the rule: a point of the left piece (or Q₃) makes the right
@@ -198,7 +135,7 @@ class Pieces {
 export const derive = {
   from: ["left", "right", "rule"],
   build(s, sl, { first = false } = {}) {
-    const pieces = new Pieces(sl, s);
+    const pieces = new JoinedPieces(sl, s, INTERVALS);
     if (s.rule !== "none" && !satisfies(s.rule, sl.jointContinuity(pieces.left, pieces.right))) {
       if (first) {
         pieces.tryFollow(s, "right");
@@ -231,7 +168,7 @@ function jointOf(sl, { left, right }) {
       ? t("joining.verdict.broken")
       : verdict.c === Infinity
         ? t("joining.verdict.infinite")
-        : t("joining.verdict", { c: order("C", verdict.c), g: order("G", verdict.g) });
+        : t("joining.verdict", { c: orderText("C", verdict.c), g: orderText("G", verdict.g) });
   return {
     dLeft: left.derivative(JOINT_T, 1),
     dRight: right.derivative(JOINT_T, 1),
@@ -332,19 +269,7 @@ export function draw(r, v, s, d) {
   // Helper geometry of the rule: the tangent line P₂–P₃–Q₁ (C1, G1, C2) and for C2 the
   // A-frame P₁ → D = 2P₂ − P₁ → Q₂ (D = 2Q₁ − Q₂ exactly when the joint is C2).
   if (s.rule === "C1" || s.rule === "G1" || s.rule === "C2") {
-    const ax = P[2][0];
-    const ay = P[2][1];
-    const bx = Q[1][0];
-    const by = Q[1][1];
-    r.beginPath();
-    r.moveTo(
-      v.sx(ax - (bx - ax) * TANGENT_LINE_OVERSHOOT),
-      v.sy(ay - (by - ay) * TANGENT_LINE_OVERSHOOT),
-    );
-    r.lineTo(
-      v.sx(bx + (bx - ax) * TANGENT_LINE_OVERSHOOT),
-      v.sy(by + (by - ay) * TANGENT_LINE_OVERSHOOT),
-    );
+    extendedSegmentPath(r, v, P[2], Q[1], TANGENT_LINE_OVERSHOOT);
     r.paint(theme.helper);
   }
   if (s.rule === "C2") {
@@ -402,8 +327,12 @@ export function draw(r, v, s, d) {
   arrow(r, jx - lx, jy - ly, jx, jy, LEFT_ARROW_STYLE);
   arrow(r, qx, qy, qx + rx, qy + ry, RIGHT_ARROW_STYLE);
   const labelStyle = arrowLabelStyles(theme);
-  arrowLabel(r, t("joining.leftArrow"), jx - lx / 2, jy - ly / 2, lx, ly, 1, labelStyle.left);
-  arrowLabel(r, t("joining.rightArrow"), qx + rx / 2, qy + ry / 2, rx, ry, -1, labelStyle.right);
+  // P′ labelled on its arrow's left, Q′ on its right (apart even when the arrows are collinear).
+  const offset = ARROW_LABEL_OFFSET_PX * r.scale;
+  const leftText = t("joining.leftArrow");
+  const rightText = t("joining.rightArrow");
+  placeLabelBeside(r, leftText, jx - lx / 2, jy - ly / 2, lx, ly, 1, offset, labelStyle.left);
+  placeLabelBeside(r, rightText, qx + rx / 2, qy + ry / 2, rx, ry, -1, offset, labelStyle.right);
 
   d.handles.draw(r, v);
 
@@ -420,21 +349,6 @@ export function draw(r, v, s, d) {
     captionWidth,
     "bottom",
   );
-}
-
-/**
- * Labels an arrow beside its middle: P′ on the arrow's left, Q′ on its right (so the two
- * labels never sit on top of each other when the arrows are collinear).
- */
-function arrowLabel(r, text, mx, my, dx, dy, side, style) {
-  const length = Math.hypot(dx, dy);
-  let nx = 0;
-  let ny = -side;
-  if (length >= 1) {
-    nx = (side * dy) / length;
-    ny = (-side * dx) / length;
-  }
-  placeLabel(r, text, mx, my, nx, ny, ARROW_LABEL_OFFSET_PX * r.scale, style);
 }
 
 // ------------------------------------------------------------ helpers, formula, label, table
@@ -477,25 +391,9 @@ function ruleTex(rule) {
   }
 }
 
-/** A number as short text: integers without decimals, else 3 decimals. */
-function short(v) {
-  const r = Math.round(v);
-  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
-}
-
 /** "(x, y)" with short numbers. */
 function pair(x, y) {
-  return `(${short(x)}, ${short(y)})`;
-}
-
-/** "C¹" / "C∞" for a continuity order. */
-function order(letter, k) {
-  return k === Infinity ? `${letter}∞` : `${letter}${superscript(k)}`;
-}
-
-/** TeX "C^{1}" / "C^{\infty}". */
-function orderTex(letter, k) {
-  return k === Infinity ? `\\text{${letter}}^{\\infty}` : `\\text{${letter}}^{${k}}`;
+  return `(${shortNumber(x)}, ${shortNumber(y)})`;
 }
 
 /** Each condition with the numbers, "=" or "≠" as the checker found it; λ for G1; the verdict. */
@@ -510,7 +408,7 @@ export function formula(s, d) {
     verdict: { c, g },
   } = d.joint;
   const rel = (holds) => (holds ? "\\;=\\;" : "\\;\\neq\\;");
-  const tex = (x, y) => `(${short(x)},\\ ${short(y)})`.replace(/-/g, "{-}");
+  const tex = (x, y) => `(${shortNumber(x)},\\ ${shortNumber(y)})`.replace(/-/g, "{-}");
   const n = DEGREE;
   const lines = [`\\text{${t("joining.formula.rule")}}\\quad ${ruleTex(s.rule)}`];
   lines.push(
@@ -555,11 +453,7 @@ export function label(s, d) {
 /** The table of what the rules compare (differences, the core's derivatives at the joint); the core's refusals. */
 export function setup(ui) {
   const rowKeys = ["p3-p2", "q1-q0", "dp", "dq", "ddp", "ddq"];
-  const cells = {};
-  const rows = rowKeys.map((key) => {
-    cells[key] = el("td", { dataset: { vector: key } });
-    return el("tr", {}, el("th", { scope: "row", text: t(`joining.row.${key}`) }), cells[key]);
-  });
+  const { rows, cells } = namedRows("joining.row.", rowKeys, "vector");
   const caption = t("joining.tableCaption");
   const { title, wrap } = titledTable("joining", { caption, children: [el("tbody", {}, rows)] });
   ui.ctx.slots.details.append(title, wrap);

@@ -16,6 +16,7 @@ import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf, inTriangle } from "../lib/geometry.js";
 import { drawCaption, pointsPath } from "../lib/draw.js";
 import { projectedPath, ExitMarks } from "../lib/clip.js";
+import { PlotStrip, drawPlotStrip } from "../lib/plot-strip.js";
 
 export const id = "negative-weights";
 /** Prefix of this demo's keys in strings.js. */
@@ -56,11 +57,16 @@ const ZERO_W = 1e-12;
 const MAX_EXITS = 8;
 /** A sample this far (model units, relative to the triangle) outside the hull counts as outside. */
 const HULL_TOLERANCE = 1e-9;
-/** The plot of w(t): PLOT_FRACTION of the canvas height (at least PLOT_MIN_PX, at most PLOT_FRACTION_SHORT). */
-const PLOT_FRACTION = 0.34;
-const PLOT_MIN_PX = 140;
-const PLOT_FRACTION_SHORT = 0.5;
-const PLOT_MARGIN = Object.freeze({ top: 30, right: 24, bottom: 30, left: 50 });
+/**
+ * The plot of w(t) below the figure (CSS px; y0 is the value lo, y1 the value hi): its strip is
+ * 0.34 of the canvas height, at least 140 px, at most half a short canvas.
+ */
+const plot = new PlotStrip({
+  fraction: 0.34,
+  minPx: 140,
+  shortFraction: 0.5,
+  margin: Object.freeze({ top: 30, right: 24, bottom: 30, left: 50 }),
+});
 /** Extra room above and below the plotted values, as a fraction of their range. */
 const PLOT_PAD = 0.1;
 /** Length of tick marks, vertical distance between pole labels in the plot, CSS px. */
@@ -253,13 +259,6 @@ export const controls = [
 
 const insetScratch = [0, 0, 0, 0];
 
-function plotHeight(height) {
-  return Math.max(
-    Math.round(height * PLOT_FRACTION),
-    Math.min(PLOT_MIN_PX, Math.round(height * PLOT_FRACTION_SHORT)),
-  );
-}
-
 export const figure = {
   /** The triangle, P(1/2) and the projected curve near the triangle. */
   bounds(s, d) {
@@ -290,14 +289,13 @@ export const figure = {
   /** The caption line at the top, the plot of w(t) at the bottom. */
   insets(width, height) {
     insetScratch[0] = CAPTION_BAND_PX;
-    insetScratch[2] = plotHeight(height);
+    insetScratch[2] = plot.height(height);
     return insetScratch;
   },
   handles: { field: "points", label: (i) => HANDLE_LABELS[i] },
 };
 
-/** The plot's box (CSS px; y0 is the value lo, y1 the value hi) and the path's exits (scratch). */
-const plot = { x0: 0, y0: 0, x1: 0, y1: 0, top: 0, lo: 0, hi: 1 };
+/** The path's exits (scratch). */
 const exits = new ExitMarks(MAX_EXITS);
 const clipBox = new Float64Array(4);
 
@@ -308,7 +306,9 @@ export function draw(r, v, s, d) {
   const w = r.width;
   const h = r.height;
   const k = r.scale;
-  layoutPlot(w, h, k, d);
+  plot.layout(w, h, k);
+  plot.lo = d.plotRange.lo;
+  plot.hi = d.plotRange.hi;
 
   // The convex hull (the control triangle) and the control polygon.
   pointsPath(r, v, pts);
@@ -365,58 +365,39 @@ export function draw(r, v, s, d) {
       "middle",
     );
   }
-  drawPlot(r, theme, w, h, d);
+  drawPlot(r, theme, d);
 }
 
 // ------------------------------------------------------------ the plot of w(t)
-function layoutPlot(width, height, scale, d) {
-  plot.top = height - plotHeight(height);
-  plot.x0 = PLOT_MARGIN.left * scale;
-  plot.x1 = width - PLOT_MARGIN.right * scale;
-  plot.y0 = height - PLOT_MARGIN.bottom * scale; // value lo
-  plot.y1 = plot.top + PLOT_MARGIN.top * scale; // value hi
-  plot.lo = d.plotRange.lo;
-  plot.hi = d.plotRange.hi;
-}
-
-const ptx = (tValue) => plot.x0 + tValue * (plot.x1 - plot.x0);
-const pty = (value) => plot.y0 - ((value - plot.lo) / (plot.hi - plot.lo)) * (plot.y0 - plot.y1);
-
 /** The band under the figure: axes, w = 1, w(t) (solid where positive, dashed where negative), the poles. */
-function drawPlot(r, theme, w, h, d) {
+function drawPlot(r, theme, d) {
   const s = r.scale;
-  r.beginPath();
-  r.rect(0, plot.top, w, h - plot.top);
-  r.paint(theme.plotBackground);
-  r.beginPath();
-  r.moveTo(0, plot.top);
-  r.lineTo(w, plot.top);
-  r.paint(theme.axis);
+  drawPlotStrip(r, plot);
 
   // Axes: t from 0 to 1 along w = 0, the value axis on the left.
-  const zero = pty(0);
+  const zero = plot.y(0);
   r.beginPath();
   r.moveTo(plot.x0, plot.y1);
   r.lineTo(plot.x0, plot.y0);
   r.moveTo(plot.x0, zero);
   r.lineTo(plot.x1, zero);
   for (let k = 0; k <= 2; k++) {
-    r.moveTo(ptx(k / 2), zero);
-    r.lineTo(ptx(k / 2), zero + TICK_PX * s);
+    r.moveTo(plot.x(k / 2), zero);
+    r.lineTo(plot.x(k / 2), zero + TICK_PX * s);
   }
   r.paint(theme.axis);
   r.beginPath();
-  r.moveTo(plot.x0, pty(1));
-  r.lineTo(plot.x1, pty(1));
+  r.moveTo(plot.x0, plot.y(1));
+  r.lineTo(plot.x1, plot.y(1));
   r.paint(theme.helper);
   const left = plot.x0 - (TICK_PX + 2) * s;
   r.text("0", left, zero, theme.labelSmall, "right", "middle");
-  r.text("1", left, pty(1), theme.labelSmall, "right", "middle");
+  r.text("1", left, plot.y(1), theme.labelSmall, "right", "middle");
   if (plot.lo < -PLOT_PAD)
     r.text(d.plotRange.loLabel, left, plot.y0, theme.labelSmall, "right", "middle");
   r.text(
     t("negativeWeights.tickHalf"),
-    ptx(0.5),
+    plot.x(0.5),
     zero + (TICK_PX + 2) * s,
     theme.labelSmall,
     "center",
@@ -444,8 +425,8 @@ function drawPlot(r, theme, w, h, d) {
         pen = false;
         continue;
       }
-      if (!pen) r.moveTo(ptx(k / (HOM_SAMPLES - 1)), pty(wa));
-      r.lineTo(ptx((k + 1) / (HOM_SAMPLES - 1)), pty(hom[3 * k + 5]));
+      if (!pen) r.moveTo(plot.x(k / (HOM_SAMPLES - 1)), plot.y(wa));
+      r.lineTo(plot.x((k + 1) / (HOM_SAMPLES - 1)), plot.y(hom[3 * k + 5]));
       pen = true;
     }
     r.paint(pass === 0 ? theme.curve : theme.splitRight);
@@ -454,7 +435,7 @@ function drawPlot(r, theme, w, h, d) {
   // The poles on the t axis; labels point inward (toward t = 1/2), one line apart.
   const poles = d.poles.ts;
   for (let j = 0; j < poles.length; j++) {
-    const x = ptx(poles[j]);
+    const x = plot.x(poles[j]);
     r.beginPath();
     r.moveTo(x, plot.y1);
     r.lineTo(x, plot.y0);

@@ -8,6 +8,7 @@
  */
 import { el } from "./controls.js";
 import { CYCLE } from "./theme.js";
+import { drawPlotStrip } from "./plot-strip.js";
 
 /** The pointer in a basis plot and the highlight it and the legend table set. */
 export class BasisPlotPointer {
@@ -138,13 +139,7 @@ export function drawGraph(r, values, i, count, x, y, style) {
  */
 export function drawPlotFrame(r, plot, labels = null) {
   const theme = r.theme;
-  r.beginPath();
-  r.rect(0, plot.top, r.width, plot.bottom - plot.top);
-  r.paint(theme.plotBackground);
-  r.beginPath();
-  r.moveTo(0, plot.top);
-  r.lineTo(r.width, plot.top);
-  r.paint(theme.axis);
+  drawPlotStrip(r, plot);
   r.beginPath();
   r.moveTo(plot.x0, plot.y1);
   r.lineTo(plot.x0, plot.y0);

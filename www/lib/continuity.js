@@ -8,14 +8,25 @@
 import { superscript } from "./format.js";
 import { t } from "./strings.js";
 
+/** A continuity order as text, "C¹" / "G²" / "C∞" (k = Infinity): `letter` and k in superscript. */
+export function orderText(letter, k) {
+  return k === Infinity ? `${letter}∞` : `${letter}${superscript(k)}`;
+}
+
+/** The same in TeX: "\\text{C}^{1}", "\\text{C}^{\\infty}". */
+export function orderTex(letter, k) {
+  return k === Infinity ? `\\text{${letter}}^{\\infty}` : `\\text{${letter}}^{${k}}`;
+}
+
 /** "C²", "C⁰", "C∞", or the break word for continuity k < 0. */
 export function continuityText(k) {
-  if (k === Infinity) return "C∞";
-  return k < 0 ? t("knotRuler.break") : `C${superscript(k)}`;
+  return k < 0 ? t("knotRuler.break") : orderText("C", k);
 }
 
 /** "C¹ G¹" for a measured joint `{ c, g }`, the break word when c < 0, "—" without a joint. */
 export function measuredText(joint) {
   if (!joint) return "—";
-  return joint.c < 0 ? t("knotRuler.break") : `${continuityText(joint.c)} G${superscript(joint.g)}`;
+  return joint.c < 0
+    ? t("knotRuler.break")
+    : `${continuityText(joint.c)} ${orderText("G", joint.g)}`;
 }

@@ -419,6 +419,102 @@ export function flatPath(r, view, flat, from = 0, to = flat.length / 2) {
   }
 }
 
+/**
+ * Starts a new path: the polyline through O + s·v_k for the first `count` vectors v_k of a flat
+ * world array [x0, y0, x1, y1, …], drawn from the origin O = (ox, oy) at scale s (a hodograph
+ * beside its curve). Paint it with `r.paint(style)`. Allocates nothing.
+ */
+export function vectorsPath(r, view, flat, count, ox, oy, s) {
+  r.beginPath();
+  for (let k = 0; k < count; k++) {
+    const x = view.sx(ox + s * flat[2 * k]);
+    const y = view.sy(oy + s * flat[2 * k + 1]);
+    if (k === 0) r.moveTo(x, y);
+    else r.lineTo(x, y);
+  }
+}
+
+/**
+ * Starts a new path: the closed polygon through `points[indices[0]]`, `points[indices[1]]`, …
+ * (world [x, y] points, e.g. a convex hull's vertices from geometry.js `convexHull`). Paint it
+ * with `r.paint(style)`. Allocates nothing.
+ */
+export function indexedPolygonPath(r, view, points, indices) {
+  r.beginPath();
+  for (let k = 0; k < indices.length; k++) {
+    const q = points[indices[k]];
+    if (k === 0) r.moveTo(view.sx(q[0]), view.sy(q[1]));
+    else r.lineTo(view.sx(q[0]), view.sy(q[1]));
+  }
+  r.closePath();
+}
+
+/**
+ * Starts a new path: the segment from world point a to b extended beyond both ends by
+ * `overshoot` × its length, a − o(b − a) to b + o(b − a) (a tangent line through a and b).
+ * Paint it with `r.paint(style)`.
+ */
+export function extendedSegmentPath(r, view, a, b, overshoot) {
+  const [ax, ay] = a;
+  const [bx, by] = b;
+  r.beginPath();
+  r.moveTo(view.sx(ax - (bx - ax) * overshoot), view.sy(ay - (by - ay) * overshoot));
+  r.lineTo(view.sx(bx + (bx - ax) * overshoot), view.sy(by + (by - ay) * overshoot));
+}
+
+/** A dot with `style` at every vertex of a flat world array [x0, y0, x1, y1, …]. */
+export function flatDots(r, view, flat, style) {
+  for (let k = 0; k < flat.length; k += 2) r.point(view.sx(flat[k]), view.sy(flat[k + 1]), style);
+}
+
+/**
+ * Starts a new path: the whole line through world points a and b, a + s·(b − a), drawn across
+ * the canvas (|s| up to (width + height) / |b − a| + 1 in CSS px, past every edge). Returns
+ * false, with no path, when a and b meet on screen (no direction). Paint it with `r.paint(style)`.
+ */
+export function linePath(r, view, a, b) {
+  const px = view.sx(a[0]);
+  const py = view.sy(a[1]);
+  const dx = view.sx(b[0]) - px;
+  const dy = view.sy(b[1]) - py;
+  const length = Math.hypot(dx, dy);
+  if (length < 1e-9) return false;
+  const reach = (view.width + view.height) / length + 1;
+  r.beginPath();
+  r.moveTo(px - dx * reach, py - dy * reach);
+  r.lineTo(px + dx * reach, py + dy * reach);
+  return true;
+}
+
+/** Chevrons showing a curve's direction: arm length (CSS px at scale 1) and half-angle (radians). */
+export const CHEVRON_PX = 11;
+export const CHEVRON_ANGLE = 0.5;
+
+/**
+ * Paints a chevron (an arrow head without its shaft) at vertex k of flat world samples
+ * [x0, y0, …], pointing along the chord to vertex k + 1 — the direction of increasing parameter
+ * (k is clamped to the last chord); nothing where the chord has no length on screen.
+ */
+export function chevron(r, view, flat, k, style) {
+  const k0 = Math.max(0, Math.min(k, flat.length / 2 - 2));
+  const x = view.sx(flat[2 * k0]);
+  const y = view.sy(flat[2 * k0 + 1]);
+  let dx = view.sx(flat[2 * k0 + 2]) - x;
+  let dy = view.sy(flat[2 * k0 + 3]) - y;
+  const length = Math.hypot(dx, dy);
+  if (length < 1e-9) return;
+  dx /= length;
+  dy /= length;
+  const size = CHEVRON_PX * r.scale;
+  const c = Math.cos(CHEVRON_ANGLE);
+  const s = Math.sin(CHEVRON_ANGLE);
+  r.beginPath();
+  r.moveTo(x - size * (dx * c - dy * s), y - size * (dy * c + dx * s));
+  r.lineTo(x, y);
+  r.lineTo(x - size * (dx * c + dy * s), y - size * (dy * c - dx * s));
+  r.paint(style);
+}
+
 /** Arrow heads: length (CSS px at scale 1) and half-angle (radians). */
 export const ARROW_HEAD_PX = 10;
 export const ARROW_HEAD_ANGLE = 0.45;

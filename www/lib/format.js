@@ -140,3 +140,14 @@ export function fractionOrDecimals(x, tex = false) {
   const f = simpleFraction(x);
   return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
 }
+
+/**
+ * The binomial coefficient C(n, i) = n! / (i! (n − i)!), as the product Π_{k=1}^{i} (n − i + k) / k
+ * rounded to the integer: for writing a formula out (Bernstein's B_i^n), never for evaluating a
+ * curve (the core does that).
+ */
+export function binomial(n, i) {
+  let c = 1;
+  for (let k = 1; k <= i; k++) c = (c * (n - i + k)) / k;
+  return Math.round(c);
+}

@@ -15,6 +15,17 @@ export function flatten(points) {
 }
 
 /**
+ * The points' bounding box (`boundsOf`) grown on each side by `roomX` × its width left and right
+ * and `roomY` × its height below and above: room for the handles' labels around a fitted curve.
+ */
+export function paddedBounds(points, roomX, roomY) {
+  const [x0, y0, x1, y1] = boundsOf(points);
+  const padX = roomX * (x1 - x0);
+  const padY = roomY * (y1 - y0);
+  return [x0 - padX, y0 - padY, x1 + padX, y1 + padY];
+}
+
+/**
  * [xmin, ymin, xmax, ymax] of a list of [x, y] points (a curve lies in its control points' hull),
  * written into `out` when given (no allocation while drawing).
  */
@@ -120,4 +131,20 @@ export function inTriangle(x, y, points, tolerance) {
   const d2 = ((x0 - x2) * (y - y2) - (x - x2) * (y0 - y2)) * Math.sign(area || 1);
   const eps = -tolerance * scale;
   return d0 >= eps && d1 >= eps && d2 >= eps;
+}
+
+/**
+ * The largest distance max_k |a_k − b_k| between two flat sample lists [x0, y0, …] of the same
+ * length taken at the same parameters — or, with `reversed`, max_k |a_k − b_{m−1−k}| (m samples:
+ * a curve against a reversed one, R(1 − t) against P(t)). A check that two curves agree, reported
+ * beside the core's results; not a curve algorithm.
+ */
+export function largestGap(a, b, reversed = false) {
+  const count = a.length / 2;
+  let distance = 0;
+  for (let k = 0; k < count; k++) {
+    const j = reversed ? count - 1 - k : k;
+    distance = Math.max(distance, Math.hypot(a[2 * k] - b[2 * j], a[2 * k + 1] - b[2 * j + 1]));
+  }
+  return distance;
 }

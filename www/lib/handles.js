@@ -584,3 +584,32 @@ export function placeLabelAway(r, view, points, text, x, y, style, radius) {
   }
   placeLabel(r, text, x, y, dx, dy, radius, style);
 }
+
+/**
+ * Labels a vector drawn from its middle (mx, my) with screen direction (dx, dy) (y down) on one
+ * side of it: its left for `side` = 1, its right for −1 — the unit normal side·(dy, −dx)/|d|,
+ * straight up or down when it is shorter than a pixel — `offset` px away. Two collinear arrows
+ * labelled on opposite sides never put their labels on top of each other.
+ */
+export function placeLabelBeside(r, text, mx, my, dx, dy, side, offset, style) {
+  const length = Math.hypot(dx, dy);
+  let nx = 0;
+  let ny = -side;
+  if (length >= 1) {
+    nx = (side * dy) / length;
+    ny = (-side * dx) / length;
+  }
+  placeLabel(r, text, mx, my, nx, ny, offset, style);
+}
+
+/**
+ * Labels an arrow from (x0, y0) to (x1, y1) (screen px) at its tip, continuing its direction,
+ * `gap` px beyond it; nothing when the arrow is shorter than a pixel (no direction).
+ */
+export function placeLabelAtTip(r, text, x0, y0, x1, y1, gap, style) {
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const length = Math.hypot(dx, dy);
+  if (length < 1) return;
+  placeLabel(r, text, x1, y1, dx / length, dy / length, gap, style);
+}

@@ -9,6 +9,7 @@
  *   setText(title, t("deCasteljau.tableCaption", { t: "1/4" }));
  */
 import { el, setText } from "./controls.js";
+import { t } from "./strings.js";
 
 let nextId = 0;
 
@@ -50,6 +51,29 @@ export function detailsTable(ui, name, build) {
       return cells;
     },
   };
+}
+
+/** A header row: a `<th scope="col">` per key, reading `t(prefix + key)`. */
+export function headerRow(prefix, keys) {
+  return el(
+    "tr",
+    {},
+    keys.map((key) => el("th", { scope: "col", text: t(`${prefix}${key}`) })),
+  );
+}
+
+/**
+ * A table of named values, one row per key: `<th scope="row">` reading `t(prefix + key)`, then
+ * an empty `<td>` with the data attribute `attribute` (a dataset name: "quantity" →
+ * `data-quantity`) set to the key. Returns `{ rows, cells }`, the cells by key, for the demo to fill.
+ */
+export function namedRows(prefix, keys, attribute) {
+  const cells = {};
+  const rows = keys.map((key) => {
+    cells[key] = el("td", { dataset: { [attribute]: key } });
+    return el("tr", {}, el("th", { scope: "row", text: t(`${prefix}${key}`) }), cells[key]);
+  });
+  return { rows, cells };
 }
 
 /** The two spans of a value cell: `exact` (a fraction, or the decimals) and `decimal` under it. */
