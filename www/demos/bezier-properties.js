@@ -284,7 +284,7 @@ const PROPERTY = {
     formula: (s, d, n) => [
       `R_i = P_{${n} - i}:\\quad R(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_{${n}-i} = \\sum_{j=0}^{${n}} ` +
         `B_{${n}-j}^{${n}}(t)\\,P_j = \\sum_{j=0}^{${n}} B_j^{${n}}(1-t)\\,P_j = P(1-t)`,
-      `B_j^{n}(t) = B_{n-j}^{n}(1-t),\\quad \\text{e.g. } ` +
+      `B_j^{n}(t) = B_{n-j}^{n}(1-t),\\quad \\text{${t("bezierProperties.formula.forExample")} } ` +
         `B_0^{${n}}(\\tfrac14) = ${fmt(d.sl.bernstein(n, 0, 0.25))} = ` +
         `B_{${n}}^{${n}}(\\tfrac34)`,
       `\\max_{t}\\ |R(1-t) - P(t)| = ${fmt(d.reversed.distance)}\\quad ` +

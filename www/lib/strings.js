@@ -433,6 +433,7 @@ const EN = {
   "bezierProperties.formula.hullVertices": "hull vertices",
   "bezierProperties.formula.because": "because",
   "bezierProperties.formula.samples": "samples",
+  "bezierProperties.formula.forExample": "e.g.",
   "bezierProperties.formula.points": "control points",
   "bezierProperties.formula.lineCurve": "line ∩ curve",
   "bezierProperties.formula.linePolygon": "line ∩ polygon",
