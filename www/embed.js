@@ -3,8 +3,9 @@
  * page. Load this file as a module (`<script type="module" src=".../embed.js">`); put as many
  * elements on the page as you like. Each lives in its own shadow root (the page's CSS does not
  * leak in), the wasm package is loaded once per page, and a demo starts only when it comes
- * near the viewport, and then loads only its own demo module. Attributes are the demo's state fields (see lib/attributes.js); changing
- * an attribute later updates the figure. `view="xmin ymin xmax ymax"` fixes the window.
+ * near the viewport, and then loads only its own demo module. Attributes are the demo's state
+ * fields (see lib/attributes.js); changing an attribute later updates the figure.
+ * `view="xmin ymin xmax ymax"` fixes the window.
  */
 import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
@@ -21,7 +22,10 @@ const START_MARGIN = "200px";
 const HOST_CSS = `
 :host { display: block; margin: 1rem 0; }
 :host([hidden]) { display: none; }
-.sl-embed-placeholder { min-height: 16rem; display: grid; place-items: center; border: 1px dashed #8a8a8a; border-radius: 6px; color: #5a5a5a; font: 15px system-ui, sans-serif; }
+.sl-embed-placeholder {
+  min-height: 16rem; display: grid; place-items: center; border: 1px dashed #8a8a8a;
+  border-radius: 6px; color: #5a5a5a; font: 15px system-ui, sans-serif;
+}
 .sl-embed-error { color: #d55e00; font: 600 15px system-ui, sans-serif; }
 .sl-embed-error::before { content: "⚠ "; }
 `;

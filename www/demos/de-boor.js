@@ -427,7 +427,10 @@ export function label(s, d) {
   });
 }
 
-/** The table: one row per level r, cells d_j^r (fraction and decimals) with the α that made them (lib/de-boor-table.js). */
+/**
+ * The table: one row per level r, cells d_j^r (fraction and decimals) with the α that made them
+ * (lib/de-boor-table.js).
+ */
 export function setup(ui) {
   ui.ctx.slots.figure.style.aspectRatio = "4 / 3"; // the curve and the knot strip share the figure
   const table = new DeBoorTable(strings);

@@ -128,7 +128,8 @@ export function formula(s, d) {
   return [
     `p_i^{r} = (1-t)\\,p_i^{r-1} + t\\,p_{i+1}^{r-1},\\quad r = 1,\\dots,${n},\\quad t = ${num.param(true)}`,
     `P(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_i = ${weights.join(" + ")}`,
-    `P(${num.param(true)}) = p_0^{${n}} = \\left(${num.value(x, n, true)},\\ ${num.value(y, n, true)}\\right) ${approx}`,
+    `P(${num.param(true)}) = p_0^{${n}} = ` +
+      `\\left(${num.value(x, n, true)},\\ ${num.value(y, n, true)}\\right) ${approx}`,
   ];
 }
 

@@ -267,11 +267,16 @@ export function formula(s, d) {
   const half = d.flattened.halfCount;
   const ratio = count > 0 ? fmt(half / count, 2) : "?";
   const segments = t("flattening.formula.segments");
+  const verdict = flat ? "flattening.formula.flat" : "flattening.formula.split";
   return [
-    `d_i = \\frac{\\lvert (P_3 - P_0) \\times (P_3 - P_i) \\rvert}{\\lvert P_3 - P_0 \\rvert} \\le \\varepsilon, \\quad i = 1, 2, \\qquad \\varepsilon = ${eps}`,
-    `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmt(d1)},\\ d_2 = ${fmt(d2)}\\ ${flat ? "\\le" : ">"}\\ \\varepsilon \\;\\Rightarrow\\; \\text{${t(flat ? "flattening.formula.flat" : "flattening.formula.split")}}`,
+    `d_i = \\frac{\\lvert (P_3 - P_0) \\times (P_3 - P_i) \\rvert}{\\lvert P_3 - P_0 \\rvert} ` +
+      `\\le \\varepsilon, \\quad i = 1, 2, \\qquad \\varepsilon = ${eps}`,
+    `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmt(d1)},\\ d_2 = ${fmt(d2)}\\ ` +
+      `${flat ? "\\le" : ">"}\\ \\varepsilon \\;\\Rightarrow\\; \\text{${t(verdict)}}`,
     `\\text{${t("flattening.formula.until")}}`,
-    `\\varepsilon = ${eps}:\\ \\mathbf{${count}}\\ \\text{${segments}};\\qquad \\tfrac{\\varepsilon}{2} = ${halfEps}:\\ \\mathbf{${half}}\\ \\text{${segments}} \\quad (\\times ${ratio} \\approx \\sqrt{2})`,
+    `\\varepsilon = ${eps}:\\ \\mathbf{${count}}\\ \\text{${segments}};\\qquad ` +
+      `\\tfrac{\\varepsilon}{2} = ${halfEps}:\\ \\mathbf{${half}}\\ \\text{${segments}} ` +
+      `\\quad (\\times ${ratio} \\approx \\sqrt{2})`,
   ];
 }
 

@@ -73,7 +73,10 @@ export class BasisPlotPointer {
     );
   }
 
-  /** The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or selected one; -1 for none. */
+  /**
+   * The highlighted function: plot hover, then table row, then `handles`' dragged, hovered or
+   * selected one; -1 for none.
+   */
   highlighted(handles) {
     if (this.plotHover >= 0) return this.plotHover;
     if (this.rowHover >= 0) return this.rowHover;

@@ -2,21 +2,40 @@
  * The declarative demo contract: a demo module says *what* it shows and what can be changed;
  * this runtime does the wiring that every demo used to write by hand.
  *
- * A declarative demo module exports (besides `id`, `strings`, `section`, `defaultState`):
+ * A declarative demo module exports (besides `id`, `strings`, `section`, `defaultState`; the
+ * table in lib/README.md shows them with a whole example):
  *
- * | export | what |
- * |---|---|
- * | `fields` | `{ name: check }` — one checker per state field (`validate.js` `field.*`); the state's validation |
- * | `check(state)` | optional: rules across fields (throw an Error naming the field) |
- * | `adjust(state)` | optional: after a change by the reader (`ui.set`, `ui.replace`), brings fields that depend on others back into range in place (u into a domain that shrank with the degree) |
- * | `derive` | `{ from: [fields], build(state, sl, { first }) → model, moved?(model, i, xy, state, ui), weighted?(model, i, w, state, ui), inPlace? }`: the wasm objects. `build` runs when a field in `from` changed (or the state came from outside; it gets a copy it may bring into line; `first` at mount, where there is no last good state to keep); every value of the model with a `free()` is freed when it is replaced. `moved` updates the model in place while a handle is dragged (`setControlPoint`), instead of a rebuild; `weighted` likewise for `ui.setWeight(i, w)` (`setWeight`; a weight slider); `inPlace: { field: (model, state, ui) }` takes a change of that field into the model in place (a slider dragged through values), instead of a rebuild |
- * | `compute` | `{ name: [[fields], (state, data, ui) → value] }`: what the core returns for drawing, recomputed only when one of those fields (or the model) changed, at most once per frame. `data` holds the model's and the computed values by name |
- * | `controls` | the side panel, top to bottom: descriptors from `panel.js` (`slider`, `checkbox`, `choice`, `pointButtons`, `readout`, `actions`, `group` …) bound to state fields |
- * | `figure` | `{ bounds(state, data), insets?(w, h, scale, state, data), handles?: { field, label?(i, state, data), constraint?(i, state, data), accept?(i, x, y, state), select?(i, ui), polygon?, extra? } }`: the View (see view.js) and its handles on the list of `[x, y]` points in `state[field]` (`select` hears the handle selected, -1 for none). With several fields, `field: [a, b]`, the handles run over the lists in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the point is written: returning `false` refuses the move (the point stays); `accept` may refuse a move before that. `polygon: false`: the handles do not form a polygon (label placement). `extra: [{ field, index?, label, when?(state), accept?(state, x, y) }]` adds handles after the lists' on other points (`state[field]` or `state[field][index]`; label: a strings.js key), shown while `when` holds |
- * | `draw(r, view, state, data)` | the figure, on canvas and SVG alike; allocates nothing |
- * | `formula(state, data)` | optional: the formula panel's TeX lines (only changed lines are typeset) |
- * | `label(state, data)` | optional: the figure's accessible name |
- * | `setup(ui)` | optional escape hatch: builds what is particular to the demo (a table, an extra pointer tool) and returns `{ update?(state, data), destroy?() }` |
+ * - `fields`: `{ name: check }`, one checker per state field (`validate.js` `field.*`), the
+ *   state's validation; `check(state)` optional rules across fields (throw naming the field).
+ * - `adjust(state)`: optional; after a change by the reader (`ui.set`, `ui.replace`), brings
+ *   fields that depend on others back into range in place (u into a domain that shrank).
+ * - `derive`: `{ from, build(state, sl, { first }), moved?, weighted?, inPlace? }`, the wasm
+ *   objects. `build` runs when a field in `from` changed, or the state came from outside (it
+ *   gets a copy it may bring into line; `first` at mount, where there is no last good state);
+ *   every value of the model with a `free()` is freed when it is replaced.
+ *   `moved(model, i, xy, state, ui)` updates the model in place while a handle is dragged
+ *   (`setControlPoint`) instead of a rebuild; `weighted(model, i, w, state, ui)` likewise for
+ *   `ui.setWeight(i, w)`; `inPlace: { field: (model, state, ui) }` takes a change of that field
+ *   into the model in place (a slider dragged through values).
+ * - `compute`: `{ name: [[fields], (state, data, ui) → value] }`, what the core returns for
+ *   drawing, recomputed only when one of those fields (or the model) changed, once per frame.
+ *   `data` holds the model's and the computed values by name, `sl` and `handles`.
+ * - `controls`: the side panel, top to bottom: panel.js descriptors bound to state fields, and
+ *   figure parts (`knotRuler`, `parameterStrip`).
+ * - `figure`: `{ bounds(state, data), insets?(w, h, scale, state, data), handles? }`, the View
+ *   and its handles on the `[x, y]` points of `state[field]`. `handles`: `{ field, label?(i,
+ *   state, data), constraint?(i, state, data), accept?(i, x, y, state), select?(i, ui),
+ *   polygon?, extra? }`. With several fields, `field: [a, b]`, the handles run over the lists
+ *   in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the
+ *   point is written: returning `false` refuses the move; `accept` may refuse it before that.
+ *   `polygon: false`: the handles form no polygon (label placement). `extra: [{ field, index?,
+ *   label, when?(state), accept?(state, x, y) }]` adds handles on other points (`state[field]`
+ *   or `state[field][index]`; label a strings.js key), shown while `when` holds.
+ * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
+ * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
+ *   changed lines are typeset) and the figure's accessible name.
+ * - `setup(ui)`: optional; what is particular to the demo (a table, an extra pointer tool);
+ *   returns `{ update?(state, data), destroy?() }`.
  *
  * Changes flow one way: a control, handle or tool calls `ui.set(field, value, final)`; the field
  * is marked changed; before the next frame the runtime rebuilds the model if `derive.from`

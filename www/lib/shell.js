@@ -52,7 +52,8 @@ export function validateState(demo, candidate) {
  * @param {(state: object) => void} [options.onCommit] after every recorded change (page: URL hash).
  * @param {(state: object) => string} options.shareUrl the link that restores a state.
  * @param {string} [options.headingLevel] "h1" on the playground page, "h2" in embeds.
- * @returns {{ state: object, accept: Function, status: Function, destroy: Function, figure: View | null, element: HTMLElement }}
+ * @returns {{ state: object, accept: Function, status: Function, destroy: Function,
+ *   figure: View | null, element: HTMLElement }}
  */
 export function mountDemo(
   root,

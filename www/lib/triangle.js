@@ -19,7 +19,10 @@ export function levelStart(n, level) {
 
 /** Cached level labels such as "p₀¹" (de Casteljau) or "d₃²" (de Boor). */
 export class LevelLabels {
-  /** @param {string} letter the point letter. @param {(i: number, level: number) => number} [index] the subscript shown. */
+  /**
+   * @param {string} letter the point letter.
+   * @param {(i: number, level: number) => number} [index] the subscript shown.
+   */
   constructor(letter, index = (i) => i) {
     this.letter = letter;
     this.index = index;
