@@ -10,8 +10,10 @@
  * P(i/n). The plot comes from one `bernsteinBasis(n, count)` call per degree, the curve from
  * `sampleUniform`, the weights from `bernstein(n, i, t)`: nothing is evaluated in JS.
  */
+import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, pointButtons, readout, group } from "../lib/panel.js";
+import { BEZIER_POINTS } from "../lib/point-list.js";
 import { placeLabelAway } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
 import {
@@ -41,14 +43,9 @@ import { PlotStrip } from "../lib/plot-strip.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bernstein";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "bernstein";
-/** Syllabus section. */
 export const section = 2;
 
-/** Fewest and most control points (degree 1 … 10). */
-export const MIN_POINTS = 2;
-export const MAX_POINTS = 11;
 /**
  * Samples along the curve and along each basis function: the same count, so sample k of both
  * is at the same t = k / (SAMPLES − 1) (the highlighted band on the curve uses that).
@@ -86,19 +83,12 @@ const TICK_PX = 5;
 
 /** The worked example of the Greek notes (syllabus §2) at t = 1/4: weights 27/64, 27/64, 9/64, 1/64. */
 export const defaultState = Object.freeze({
-  points: Object.freeze(
-    [
-      [0, 0],
-      [2, 2],
-      [6, 4],
-      [8, 2],
-    ].map(Object.freeze),
-  ),
+  points: NOTES_CUBIC,
   t: 0.25,
 });
 
 export const fields = {
-  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  points: field.points(BEZIER_POINTS),
   t: field.number({ min: 0, max: 1 }),
 };
 
@@ -181,7 +171,7 @@ export const controls = [
     readout("degree", (s) =>
       t("bernstein.degree", { n: s.points.length - 1, count: s.points.length }),
     ),
-    pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
+    pointButtons("points", { ...BEZIER_POINTS, prefix: strings }),
   ),
   group(
     null,

@@ -7,6 +7,7 @@
  * polygon of the control points (`convexHull` in lib/geometry.js), the 2×2 matrix applied to
  * points, and the distances reported as checks.
  */
+import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, choice, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
 import {
@@ -18,7 +19,7 @@ import {
   fractionTex,
   allIntegers,
 } from "../lib/format.js";
-import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
+import { HUES, WIDTH, SECOND_CURVE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, convexHull, largestGap } from "../lib/geometry.js";
 import { affineMap, affineMatrix, centroid } from "../lib/affine-map.js";
@@ -34,9 +35,7 @@ import { el, setText } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
 
 export const id = "bezier-properties";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "bezierProperties";
-/** Syllabus section. */
 export const section = 2;
 
 /** The properties, in the order of the radio buttons. */
@@ -61,21 +60,6 @@ const ARROW_TS = Object.freeze([0.2, 0.6]);
 const INTERSECT_TOLERANCE = 1e-9;
 
 // Styles of this demo's own marks (theme hues are the same in light and dark mode).
-const MAPPED_CURVE_STYLE = Object.freeze({
-  stroke: HUES.bluishGreen,
-  width: WIDTH.curve,
-  join: "round",
-  cap: "round",
-});
-const MAPPED_POLYGON_STYLE = Object.freeze({
-  stroke: HUES.bluishGreen,
-  width: WIDTH.polygon,
-  dash: POLYGON_DASH,
-});
-const MAPPED_POINT_STYLE = Object.freeze({
-  fill: HUES.bluishGreen,
-  radius: RADIUS.constructionPoint,
-});
 const DOT_STYLE = Object.freeze({ fill: HUES.vermillion, radius: 2.5 });
 const REVERSED_DASH = Object.freeze([8, 6]);
 const REVERSED_STYLE = Object.freeze({
@@ -104,14 +88,7 @@ const LINE_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
  * y = 3, which crosses the polygon twice and misses the curve (its highest point is y = 2√2 ≈ 2.83).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze(
-    [
-      [0, 0],
-      [2, 2],
-      [6, 4],
-      [8, 2],
-    ].map(Object.freeze),
-  ),
+  points: NOTES_CUBIC,
   property: "hull",
   rotation: 20,
   scale: 0.8,
@@ -449,10 +426,10 @@ export function draw(r, v, s, d) {
   if (s.property === "affine") {
     // The mapped polygon and curve (green) and the mapped samples of the original (dots).
     pointsPath(r, v, d.affine.points);
-    r.paint(MAPPED_POLYGON_STYLE);
+    r.paint(SECOND_CURVE.polygon);
     flatPath(r, v, d.affine.samples, 0, CURVE_SAMPLES);
-    r.paint(MAPPED_CURVE_STYLE);
-    for (const q of d.affine.points) r.point(v.sx(q[0]), v.sy(q[1]), MAPPED_POINT_STYLE);
+    r.paint(SECOND_CURVE.curve);
+    for (const q of d.affine.points) r.point(v.sx(q[0]), v.sy(q[1]), SECOND_CURVE.point);
     flatDots(r, v, d.affine.dots, DOT_STYLE);
   } else if (s.property === "reversed") {
     flatPath(r, v, d.reversed.samples, 0, CURVE_SAMPLES);

@@ -47,9 +47,7 @@ import { BasisTriangleTable } from "../lib/basis-triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "bspline-basis";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "bsplineBasis";
-/** Syllabus section. */
 export const section = 3;
 
 /**

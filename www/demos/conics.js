@@ -20,9 +20,7 @@ import { el } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
 
 export const id = "conics";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "conics";
-/** Syllabus section. */
 export const section = 4;
 
 /** Range of w₁ (a logarithmic slider). */

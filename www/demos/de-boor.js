@@ -33,9 +33,7 @@ import { drawKnotSpanStrip, knotSpanLabels } from "../lib/knot-span-strip.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "de-boor";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "deBoor";
-/** Syllabus section. */
 export const section = 3;
 
 /**

@@ -5,8 +5,10 @@
  * the triangle and the samples are what the core returns (`compute`); `draw` and `formula`
  * read them. Everything else (undo, links, files, syncing the slider) is the shell's.
  */
+import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group } from "../lib/panel.js";
+import { BEZIER_POINTS } from "../lib/point-list.js";
 import { fmt, subscript, superscript, degreeName, exactNumbers } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -16,14 +18,9 @@ import { el, setText } from "../lib/controls.js";
 import { titledTable, valueSpans, setValueSpans } from "../lib/table.js";
 
 export const id = "de-casteljau";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "deCasteljau";
-/** Syllabus section. */
 export const section = 2;
 
-/** Fewest and most control points (degree 1 … 10). */
-export const MIN_POINTS = 2;
-export const MAX_POINTS = 11;
 /** Points sampled along the curve for drawing. */
 const CURVE_SAMPLES = 256;
 /** Intermediate points are labelled up to this degree (beyond, labels crowd; the table has them). */
@@ -31,20 +28,13 @@ const LABEL_LEVELS_MAX_DEGREE = 4;
 
 /** The worked example of the Greek notes (syllabus §2): P(1/4) = (29/16, 23/16). */
 export const defaultState = Object.freeze({
-  points: Object.freeze(
-    [
-      [0, 0],
-      [2, 2],
-      [6, 4],
-      [8, 2],
-    ].map(Object.freeze),
-  ),
+  points: NOTES_CUBIC,
   t: 0.25,
   construction: true,
 });
 
 export const fields = {
-  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  points: field.points(BEZIER_POINTS),
   t: field.number({ min: 0, max: 1 }),
   construction: field.boolean(),
 };
@@ -69,7 +59,7 @@ export const controls = [
     readout("degree", (s) =>
       t("deCasteljau.degree", { n: s.points.length - 1, count: s.points.length }),
     ),
-    pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
+    pointButtons("points", { ...BEZIER_POINTS, prefix: strings }),
   ),
   group(null, checkbox("construction", { label: "control.construction" })),
 ];

@@ -6,11 +6,12 @@
  * n(P_{i+1} − P_i) — with the same vector P′(t) drawn from the hodograph's origin O (a handle of
  * its own). All numbers come from the core (`derivative`, `curvature`, `hodograph`, `arcLength`).
  */
+import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, pointButtons, readout, group } from "../lib/panel.js";
 import { fmt, subscript, shortNumber as short, degreeName } from "../lib/format.js";
 import { exactNumbers, exactFraction, fractionTex } from "../lib/format.js";
-import { HUES, WIDTH, RADIUS, POLYGON_DASH } from "../lib/theme.js";
+import { HUES, RADIUS, SECOND_CURVE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
 import { placeLabel, placeLabelAtTip, placeLabelFrom } from "../lib/handles.js";
@@ -20,9 +21,7 @@ import { el, setText } from "../lib/controls.js";
 import { namedRows, titledTable } from "../lib/table.js";
 
 export const id = "derivatives";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "derivatives";
-/** Syllabus section. */
 export const section = 2;
 
 /** Fewest and most control points (degree 2 … 8: the hodograph is then a curve, not a point). */
@@ -59,19 +58,9 @@ const NORMAL_STYLE = Object.freeze({
 });
 const CIRCLE_STYLE = Object.freeze({ stroke: HUES.orange, width: 1.5 });
 const CENTRE_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
-const HODOGRAPH_STYLE = Object.freeze({
-  stroke: HUES.bluishGreen,
-  width: WIDTH.curve,
-  join: "round",
-  cap: "round",
-});
-const HODOGRAPH_POLYGON_STYLE = Object.freeze({
-  stroke: HUES.bluishGreen,
-  width: WIDTH.polygon,
-  dash: POLYGON_DASH,
-});
+/** The hodograph's points, a little larger than construction points (they carry labels). */
 const HODOGRAPH_POINT_STYLE = Object.freeze({
-  fill: HUES.bluishGreen,
+  ...SECOND_CURVE.point,
   radius: RADIUS.constructionPoint + 0.5,
 });
 
@@ -81,14 +70,7 @@ const HODOGRAPH_POINT_STYLE = Object.freeze({
  * P′(1) = (6, −6); the hodograph (drawn at 1/3 scale) sits to the right with its origin O at (11, 2).
  */
 export const defaultState = Object.freeze({
-  points: Object.freeze(
-    [
-      [0, 0],
-      [2, 2],
-      [6, 4],
-      [8, 2],
-    ].map(Object.freeze),
-  ),
+  points: NOTES_CUBIC,
   t: 0.75,
   hodographOrigin: Object.freeze([11, 2]),
 });
@@ -262,9 +244,9 @@ function drawHodograph(r, v, s, d) {
   );
 
   vectorsPath(r, v, points, n, ox, oy, scale);
-  r.paint(HODOGRAPH_POLYGON_STYLE);
+  r.paint(SECOND_CURVE.polygon);
   vectorsPath(r, v, samples, CURVE_SAMPLES, ox, oy, scale);
-  r.paint(HODOGRAPH_STYLE);
+  r.paint(SECOND_CURVE.curve);
   const cx = v.sx(ox + (box[0] + box[2]) / 2);
   const cy = v.sy(oy + (box[1] + box[3]) / 2);
   for (let i = 0; i < n; i++) {

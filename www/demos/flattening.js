@@ -13,9 +13,7 @@ import { flatPath, pointsPath } from "../lib/draw.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "flattening";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "flattening";
-/** Syllabus section. */
 export const section = 2;
 
 /** Smallest and largest tolerance ε (world units); the slider is logarithmic between them. */

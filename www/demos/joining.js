@@ -24,9 +24,7 @@ import { JoinedPieces } from "../lib/joined-pieces.js";
 import { pointsPath, flatPath, arrow, drawCaption, extendedSegmentPath } from "../lib/draw.js";
 
 export const id = "joining";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "joining";
-/** Syllabus section. */
 export const section = 2;
 
 /** The rules offered, in the order of the radio buttons ("none": nothing is enforced). */

@@ -37,9 +37,7 @@ import { flatPath } from "../lib/draw.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "knot-insertion";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "knotInsertion";
-/** Syllabus section. */
 export const section = 3;
 
 /**

@@ -20,9 +20,7 @@ import { el, setText } from "../lib/controls.js";
 import { replaceOrReport } from "../lib/wasm.js";
 
 export const id = "knot-vectors";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "knotVectors";
-/** Syllabus section. */
 export const section = 3;
 
 /** Six integer points and a cubic: clamped knots 0 0 0 0 1 2 3 3 3 3 (syllabus §3 conventions). */

@@ -22,9 +22,7 @@ import { detailsTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
 
 export const id = "line-intersection";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "lineIntersection";
-/** Syllabus section. */
 export const section = 2;
 
 /** Deepest level of the core's box recursion (MAX_INTERSECTION_DEPTH in src/bezier/intersect.rs). */

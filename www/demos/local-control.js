@@ -29,9 +29,7 @@ import { el, setText } from "../lib/controls.js";
 import { scaledInsets } from "../lib/view.js";
 
 export const id = "local-control";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "localControl";
-/** Syllabus section. */
 export const section = 3;
 
 /** Degrees offered (the clamped knot vector needs at least degree + 1 points). */

@@ -28,9 +28,7 @@ import { flatPath, pointsPath } from "../lib/draw.js";
 import { el, setText } from "../lib/controls.js";
 
 export const id = "matrix-form";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "matrixForm";
-/** Syllabus section. */
 export const section = 3;
 
 /** Six integer points, a uniform quadratic (the Croatian notes' example size), segment 2 at t = 1/2. */

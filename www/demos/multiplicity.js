@@ -33,9 +33,7 @@ import { pointsPath } from "../lib/draw.js";
 import { replaceOrReport } from "../lib/wasm.js";
 
 export const id = "multiplicity";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "multiplicity";
-/** Syllabus section. */
 export const section = 3;
 
 /** The degree: the notes' table is for cubics. */

@@ -19,9 +19,7 @@ import { projectedPath, ExitMarks } from "../lib/clip.js";
 import { PlotStrip, drawPlotStrip } from "../lib/plot-strip.js";
 
 export const id = "negative-weights";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "negativeWeights";
-/** Syllabus section. */
 export const section = 4;
 
 /**

@@ -18,9 +18,7 @@ import { el, setText } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
 
 export const id = "nurbs-circle";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "nurbsCircle";
-/** Syllabus section. */
 export const section = 4;
 
 /** Ranges of the sliders (lengths in model units, angles in degrees). */

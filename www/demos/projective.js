@@ -20,9 +20,7 @@ import { squareToQuad, applyHomography, denominator } from "../lib/homography.js
 import { scaledInsets, NARROW_CANVAS_PX } from "../lib/view.js";
 
 export const id = "projective";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "projective";
-/** Syllabus section. */
 export const section = 4;
 
 /** Side of the source square [0, SIZE]²; its corners S₀ … S₃ go to Q₀ … Q₃. */

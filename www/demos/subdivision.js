@@ -9,8 +9,10 @@
  * A "levels" control repeats the split at 1/2: after k levels the 2^k polygons (from
  * 2^k − 1 `split(0.5)` calls, every intermediate wasm object freed) hug the curve.
  */
+import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group } from "../lib/panel.js";
+import { BEZIER_POINTS } from "../lib/point-list.js";
 import { placeLabel, placeLabelFrom } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
 import {
@@ -28,14 +30,9 @@ import { screenCentroid } from "../lib/triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 
 export const id = "subdivision";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "subdivision";
-/** Syllabus section. */
 export const section = 2;
 
-/** Fewest and most control points (degree 1 … 10). */
-export const MIN_POINTS = 2;
-export const MAX_POINTS = 11;
 /** Repeated subdivision at 1/2: at most this many levels (2^6 = 64 polygons). */
 export const MAX_LEVELS = 6;
 /** Repeated subdivision always splits at this parameter. */
@@ -53,21 +50,14 @@ const LEVEL_POINTS_MAX = 3;
 
 /** The worked example of the Greek notes (syllabus §2), split in the middle. */
 export const defaultState = Object.freeze({
-  points: Object.freeze(
-    [
-      [0, 0],
-      [2, 2],
-      [6, 4],
-      [8, 2],
-    ].map(Object.freeze),
-  ),
+  points: NOTES_CUBIC,
   t: 0.5,
   levels: 0,
   triangle: true,
 });
 
 export const fields = {
-  points: field.points({ min: MIN_POINTS, max: MAX_POINTS }),
+  points: field.points(BEZIER_POINTS),
   t: field.number({ min: 0, max: 1 }),
   levels: field.number({ min: 0, max: MAX_LEVELS, integer: true }),
   triangle: field.boolean(),
@@ -196,7 +186,7 @@ export const controls = [
     readout("degree", (s) =>
       t("subdivision.degree", { n: s.points.length - 1, count: s.points.length }),
     ),
-    pointButtons("points", { min: MIN_POINTS, max: MAX_POINTS, prefix: strings }),
+    pointButtons("points", { ...BEZIER_POINTS, prefix: strings }),
   ),
 ];
 

@@ -33,9 +33,7 @@ import { titledTable } from "../lib/table.js";
 import { drawHomogeneousInset, insetOnRight, insetSize } from "../lib/homogeneous-inset.js";
 
 export const id = "weights";
-/** Prefix of this demo's keys in strings.js. */
 export const strings = "weights";
-/** Syllabus section. */
 export const section = 4;
 
 /**

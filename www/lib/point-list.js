@@ -6,6 +6,13 @@
  */
 import { roundToView } from "./handles.js";
 
+/**
+ * Fewest and most control points of a Bézier demo: degree 1 … 10 (the core allows more, but
+ * the construction's labels and tables crowd beyond); `field.points(BEZIER_POINTS)` and
+ * `pointButtons("points", { ...BEZIER_POINTS, prefix })`.
+ */
+export const BEZIER_POINTS = Object.freeze({ min: 2, max: 11 });
+
 /** A point appended after the last goes this fraction of the last leg further on. */
 export const APPEND_FRACTION = 0.5;
 

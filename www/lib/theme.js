@@ -60,6 +60,21 @@ export const FONT_FAMILY =
 /** Dash pattern of the control polygon, in CSS px. */
 export const POLYGON_DASH = Object.freeze([5, 4]);
 
+/**
+ * A second curve beside the first, with its own control polygon and points (a hodograph, the
+ * image of the curve under a map): bluish green, the same in light and dark mode.
+ */
+export const SECOND_CURVE = Object.freeze({
+  curve: Object.freeze({
+    stroke: HUES.bluishGreen,
+    width: WIDTH.curve,
+    join: "round",
+    cap: "round",
+  }),
+  polygon: Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.polygon, dash: POLYGON_DASH }),
+  point: Object.freeze({ fill: HUES.bluishGreen, radius: RADIUS.constructionPoint }),
+});
+
 /** Dash pattern of the right half of a subdivided curve's control polygon, in CSS px. */
 export const SPLIT_DASH = Object.freeze([7, 4]);
 
