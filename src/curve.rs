@@ -131,3 +131,45 @@ pub trait ControlPolygon: ParamCurve {
         BoundingBox::of_points(&self.control_points())
     }
 }
+
+/// Implements [`ParamCurve`] and [`ControlPolygon`] for a curve type `$ty<C>` with the same
+/// fields and inherent methods as `BezierCurve` and `BSplineCurve` (`homogeneous`, `rational`;
+/// `evaluate`, `sample_into`, `sample_uniform_into`), the domain given by its method `$domain`.
+macro_rules! impl_curve_traits {
+    ($ty:ident, $domain:ident) => {
+        impl<C: $crate::geom::Cartesian> $crate::curve::ParamCurve for $ty<C> {
+            type Point = C;
+
+            fn domain(&self) -> (f64, f64) {
+                $ty::$domain(self)
+            }
+
+            fn evaluate(&self, t: f64) -> $crate::error::Result<C> {
+                $ty::evaluate(self, t)
+            }
+
+            fn sample_into(&self, params: &[f64], out: &mut [f64]) -> $crate::error::Result<()> {
+                $ty::sample_into(self, params, out)
+            }
+
+            fn sample_uniform_into(
+                &self,
+                count: usize,
+                out: &mut [f64],
+            ) -> $crate::error::Result<()> {
+                $ty::sample_uniform_into(self, count, out)
+            }
+        }
+
+        impl<C: $crate::geom::Cartesian> $crate::curve::ControlPolygon for $ty<C> {
+            fn homogeneous_points(&self) -> &[C::Homogeneous] {
+                &self.homogeneous
+            }
+
+            fn is_rational(&self) -> bool {
+                self.rational
+            }
+        }
+    };
+}
+pub(crate) use impl_curve_traits;

@@ -1,7 +1,7 @@
 //! The Bernstein polynomials as checked values and as plotted curves (syllabus §1).
 
 use super::bernstein;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_in_range, Error, Result};
 use crate::geom::{MAX_DEGREE, MAX_SAMPLES};
 
 /// `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`, with the arguments checked: the checked twin of
@@ -17,15 +17,7 @@ use crate::geom::{MAX_DEGREE, MAX_SAMPLES};
 /// ```
 pub fn try_bernstein(n: usize, i: usize, t: f64) -> Result<f64> {
     check_basis_degree(n, i)?;
-    check_finite(|| "t".into(), t)?;
-    if !(0.0..=1.0).contains(&t) {
-        return Err(Error::ParameterOutOfRange {
-            name: "t",
-            value: t,
-            min: 0.0,
-            max: 1.0,
-        });
-    }
+    check_in_range("t", t, (0.0, 1.0))?;
     Ok(bernstein(n, i, t))
 }
 

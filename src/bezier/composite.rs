@@ -344,16 +344,7 @@ impl<C: Cartesian> CompositeCurve<C> {
     /// Index of the piece that owns `t`: pieces are closed on the left, so at a joint the
     /// right piece is used (right-continuity), except at the very end.
     pub fn piece_index(&self, t: f64) -> Result<usize> {
-        let (a, b) = self.domain();
-        crate::error::check_finite(|| "t".into(), t)?;
-        if t < a || t > b {
-            return Err(Error::ParameterOutOfRange {
-                name: "t",
-                value: t,
-                min: a,
-                max: b,
-            });
-        }
+        crate::error::check_in_range("t", t, self.domain())?;
         Ok(self
             .pieces
             .partition_point(|p| p.b <= t)

@@ -2,7 +2,8 @@
 //! the in-place edits of a drag.
 
 use super::{BezierCurve, MAX_DEGREE};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_in_range, Error, Result};
+use crate::geom::check::{check_point_edit, check_weight_edit};
 use crate::geom::{check_all_finite, check_weights, Cartesian};
 use crate::prelude::*;
 
@@ -100,15 +101,7 @@ impl<C: Cartesian> BezierCurve<C> {
 
     /// The local parameter `s = (t − a)/(b − a)` of `t`, checked to lie in `[a, b]`.
     pub fn local_parameter(&self, t: f64) -> Result<f64> {
-        check_finite(|| "t".into(), t)?;
-        if t < self.a || t > self.b {
-            return Err(Error::ParameterOutOfRange {
-                name: "t",
-                value: t,
-                min: self.a,
-                max: self.b,
-            });
-        }
+        check_in_range("t", t, (self.a, self.b))?;
         Ok(self.to_local(t))
     }
 
@@ -147,13 +140,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// # Errors
     /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
     pub fn set_control_point(&mut self, i: usize, p: C) -> Result<()> {
-        let count = self.homogeneous.len();
-        if i >= count {
-            return Err(Error::IndexOutOfRange { index: i, count });
-        }
-        for k in 0..C::DIM {
-            check_finite(|| format!("coordinate {k} of the new point"), p.coord(k))?;
-        }
+        check_point_edit(i, self.homogeneous.len(), p)?;
         let w = C::weight_of(self.homogeneous[i]);
         self.homogeneous[i] = p.to_homogeneous(w);
         Ok(())
@@ -165,14 +152,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// # Errors
     /// [`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::NonPositiveWeight`].
     pub fn set_weight(&mut self, i: usize, w: f64) -> Result<()> {
-        let count = self.homogeneous.len();
-        if i >= count {
-            return Err(Error::IndexOutOfRange { index: i, count });
-        }
-        check_finite(|| format!("weight {i}"), w)?;
-        if w <= 0.0 {
-            return Err(Error::NonPositiveWeight { index: i, value: w });
-        }
+        check_weight_edit(i, self.homogeneous.len(), w)?;
         let p = self.project(self.homogeneous[i]);
         self.homogeneous[i] = p.to_homogeneous(w);
         self.rational = self.homogeneous.iter().any(|&h| C::weight_of(h) != 1.0);
@@ -180,33 +160,4 @@ impl<C: Cartesian> BezierCurve<C> {
     }
 }
 
-impl<C: Cartesian> ParamCurve for BezierCurve<C> {
-    type Point = C;
-
-    /// The interval `[a, b]` (see [`BezierCurve::interval`]).
-    fn domain(&self) -> (f64, f64) {
-        self.interval()
-    }
-
-    fn evaluate(&self, t: f64) -> Result<C> {
-        BezierCurve::evaluate(self, t)
-    }
-
-    fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
-        BezierCurve::sample_into(self, ts, out)
-    }
-
-    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
-        BezierCurve::sample_uniform_into(self, count, out)
-    }
-}
-
-impl<C: Cartesian> ControlPolygon for BezierCurve<C> {
-    fn homogeneous_points(&self) -> &[C::Homogeneous] {
-        &self.homogeneous
-    }
-
-    fn is_rational(&self) -> bool {
-        self.rational
-    }
-}
+crate::curve::impl_curve_traits!(BezierCurve, interval);

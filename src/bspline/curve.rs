@@ -3,6 +3,7 @@
 
 use super::{BSplineCurve, KnotVector};
 use crate::error::{check_finite, Error, Result};
+use crate::geom::check::{check_point_edit, check_weight_edit};
 use crate::geom::{check_weights, Cartesian, MAX_DEGREE};
 use crate::prelude::*;
 
@@ -121,13 +122,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// # Errors
     /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
     pub fn set_control_point(&mut self, i: usize, p: C) -> Result<()> {
-        let count = self.homogeneous.len();
-        if i >= count {
-            return Err(Error::IndexOutOfRange { index: i, count });
-        }
-        for k in 0..C::DIM {
-            check_finite(|| format!("coordinate {k} of the new point"), p.coord(k))?;
-        }
+        check_point_edit(i, self.homogeneous.len(), p)?;
         for j in self.copies_of(i) {
             let w = C::weight_of(self.homogeneous[j]);
             self.homogeneous[j] = p.to_homogeneous(w);
@@ -140,14 +135,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// # Errors
     /// [`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::NonPositiveWeight`].
     pub fn set_weight(&mut self, i: usize, w: f64) -> Result<()> {
-        let count = self.homogeneous.len();
-        if i >= count {
-            return Err(Error::IndexOutOfRange { index: i, count });
-        }
-        check_finite(|| format!("weight {i}"), w)?;
-        if w <= 0.0 {
-            return Err(Error::NonPositiveWeight { index: i, value: w });
-        }
+        check_weight_edit(i, self.homogeneous.len(), w)?;
         for j in self.copies_of(i) {
             let p = self.project(self.homogeneous[j]);
             self.homogeneous[j] = p.to_homogeneous(w);
@@ -186,32 +174,4 @@ pub(crate) fn check_degree(degree: usize, points: usize) -> Result<()> {
     Ok(())
 }
 
-impl<C: Cartesian> ParamCurve for BSplineCurve<C> {
-    type Point = C;
-
-    fn domain(&self) -> (f64, f64) {
-        BSplineCurve::domain(self)
-    }
-
-    fn evaluate(&self, u: f64) -> Result<C> {
-        BSplineCurve::evaluate(self, u)
-    }
-
-    fn sample_into(&self, us: &[f64], out: &mut [f64]) -> Result<()> {
-        BSplineCurve::sample_into(self, us, out)
-    }
-
-    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
-        BSplineCurve::sample_uniform_into(self, count, out)
-    }
-}
-
-impl<C: Cartesian> ControlPolygon for BSplineCurve<C> {
-    fn homogeneous_points(&self) -> &[C::Homogeneous] {
-        &self.homogeneous
-    }
-
-    fn is_rational(&self) -> bool {
-        self.rational
-    }
-}
+crate::curve::impl_curve_traits!(BSplineCurve, domain);

@@ -1,6 +1,6 @@
 //! Validated knot vectors, span search and multiplicity (syllabus §3).
 
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_in_range, Error, Result};
 
 /// A non-decreasing knot vector `u_0..u_m` (`m = n + p + 1`) for degree `p` and `n + 1` control
 /// points, whose domain `[u_p, u_{n+1}]` is not empty and where no value repeats more than
@@ -96,17 +96,7 @@ impl KnotVector {
     /// As [`KnotVector::check_parameter`], the parameter called `name` in the error (`"v"` for a
     /// surface's second direction).
     pub fn check_named(&self, name: &'static str, u: f64) -> Result<f64> {
-        check_finite(|| name.into(), u)?;
-        let (a, b) = self.domain();
-        if u < a || u > b {
-            return Err(Error::ParameterOutOfRange {
-                name,
-                value: u,
-                min: a,
-                max: b,
-            });
-        }
-        Ok(u)
+        check_in_range(name, u, self.domain())
     }
 
     /// The span index `k` with `u_k <= u < u_{k+1}` and `p <= k <= n`; at the end of the domain

@@ -2,7 +2,7 @@
 //! `C(x) = [x^p … x 1] M [P_{k−p} … P_k]^T` (the Croatian notes, syllabus §3).
 
 use super::BSplineCurve;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_in_range, Error, Result};
 use crate::geom::{Cartesian, Point};
 use crate::prelude::*;
 
@@ -103,15 +103,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// [`Error::NotFinite`] for a NaN or infinite `t`, [`Error::ParameterOutOfRange`] outside
     /// `[0, 1]`, and the errors of `segment_matrix` for a bad `k`.
     pub fn evaluate_matrix_form(&self, k: usize, t: f64) -> Result<MatrixFormPoint<C>> {
-        check_finite(|| "t".into(), t)?;
-        if !(0.0..=1.0).contains(&t) {
-            return Err(Error::ParameterOutOfRange {
-                name: "t",
-                value: t,
-                min: 0.0,
-                max: 1.0,
-            });
-        }
+        check_in_range("t", t, (0.0, 1.0))?;
         let m = self.segment_matrix(k, true)?;
         let p = self.degree();
         let monomials: Vec<f64> = (0..=p).map(|r| t.powi((p - r) as i32)).collect();

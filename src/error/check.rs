@@ -22,3 +22,22 @@ pub(crate) fn check_tolerance(value: f64) -> Result<f64> {
         Err(Error::InvalidTolerance { value })
     }
 }
+
+/// Checks that the parameter called `name` is finite and in the closed interval `[min, max]`
+/// ([`Error::NotFinite`] or [`Error::ParameterOutOfRange`] naming it); gives it back.
+pub(crate) fn check_in_range(
+    name: &'static str,
+    value: f64,
+    (min, max): (f64, f64),
+) -> Result<f64> {
+    check_finite(|| name.into(), value)?;
+    if value < min || value > max {
+        return Err(Error::ParameterOutOfRange {
+            name,
+            value,
+            min,
+            max,
+        });
+    }
+    Ok(value)
+}

@@ -8,7 +8,7 @@ mod check;
 mod code;
 mod message;
 
-pub(crate) use check::{check_finite, check_tolerance};
+pub(crate) use check::{check_finite, check_in_range, check_tolerance};
 
 /// Everything that can go wrong when building or querying a curve.
 ///

@@ -67,6 +67,31 @@ pub fn check_dim(dim: usize) -> Result<usize> {
     }
 }
 
+/// Checks the in-place move of control point `i` (of `count`) to `p`: the index, then every
+/// coordinate finite ([`Error::IndexOutOfRange`], [`Error::NotFinite`]).
+pub(crate) fn check_point_edit<P: Point>(i: usize, count: usize, p: P) -> Result<()> {
+    if i >= count {
+        return Err(Error::IndexOutOfRange { index: i, count });
+    }
+    for k in 0..P::DIM {
+        check_finite(|| format!("coordinate {k} of the new point"), p.coord(k))?;
+    }
+    Ok(())
+}
+
+/// Checks setting weight `i` (of `count`) to `w`: the index, then `w` finite and > 0
+/// ([`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::NonPositiveWeight`]).
+pub(crate) fn check_weight_edit(i: usize, count: usize, w: f64) -> Result<()> {
+    if i >= count {
+        return Err(Error::IndexOutOfRange { index: i, count });
+    }
+    check_finite(|| format!("weight {i}"), w)?;
+    if w <= 0.0 {
+        return Err(Error::NonPositiveWeight { index: i, value: w });
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

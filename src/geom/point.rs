@@ -41,6 +41,21 @@ pub trait Point:
     }
 }
 
+/// `min_by_coord` and `max_by_coord` as the type's own `min` and `max` (per coordinate for the
+/// glam vectors, plain for `f64`).
+macro_rules! min_max_by_coord {
+    () => {
+        #[inline]
+        fn min_by_coord(self, other: Self) -> Self {
+            self.min(other)
+        }
+        #[inline]
+        fn max_by_coord(self, other: Self) -> Self {
+            self.max(other)
+        }
+    };
+}
+
 macro_rules! impl_point {
     ($t:ty, $dim:expr) => {
         impl Point for $t {
@@ -63,14 +78,7 @@ macro_rules! impl_point {
             fn write_to(&self, out: &mut [f64]) {
                 self.write_to_slice(&mut out[..$dim]);
             }
-            #[inline]
-            fn min_by_coord(self, other: Self) -> Self {
-                self.min(other)
-            }
-            #[inline]
-            fn max_by_coord(self, other: Self) -> Self {
-                self.max(other)
-            }
+            min_max_by_coord!();
             #[inline]
             fn dot_with(self, other: Self) -> f64 {
                 self.dot(other)
@@ -101,14 +109,7 @@ impl Point for f64 {
     fn write_to(&self, out: &mut [f64]) {
         out[0] = *self;
     }
-    #[inline]
-    fn min_by_coord(self, other: Self) -> Self {
-        self.min(other)
-    }
-    #[inline]
-    fn max_by_coord(self, other: Self) -> Self {
-        self.max(other)
-    }
+    min_max_by_coord!();
     #[inline]
     fn dot_with(self, other: Self) -> f64 {
         self * other
@@ -147,45 +148,33 @@ pub trait Cartesian: Point {
     fn cross_norm(a: Self, b: Self) -> f64;
 }
 
-impl Cartesian for DVec2 {
-    type Homogeneous = DVec3;
-    #[inline]
-    fn to_homogeneous(self, w: f64) -> DVec3 {
-        DVec3::new(self.x * w, self.y * w, w)
-    }
-    #[inline]
-    fn numerator(h: DVec3) -> DVec2 {
-        h.truncate()
-    }
-    #[inline]
-    fn weight_of(h: DVec3) -> f64 {
-        h.z
-    }
-    #[inline]
-    fn cross_norm(a: DVec2, b: DVec2) -> f64 {
-        a.perp_dot(b)
-    }
+/// [`Cartesian`] for the glam vector `$t` with homogeneous type `$h` (the weight in its field
+/// `$w`); `|a, b| cross` is `cross_norm`.
+macro_rules! impl_cartesian {
+    ($t:ty, $h:ty, $w:ident, |$a:ident, $b:ident| $cross:expr) => {
+        impl Cartesian for $t {
+            type Homogeneous = $h;
+            #[inline]
+            fn to_homogeneous(self, w: f64) -> $h {
+                (self * w).extend(w)
+            }
+            #[inline]
+            fn numerator(h: $h) -> $t {
+                h.truncate()
+            }
+            #[inline]
+            fn weight_of(h: $h) -> f64 {
+                h.$w
+            }
+            #[inline]
+            fn cross_norm($a: $t, $b: $t) -> f64 {
+                $cross
+            }
+        }
+    };
 }
-
-impl Cartesian for DVec3 {
-    type Homogeneous = DVec4;
-    #[inline]
-    fn to_homogeneous(self, w: f64) -> DVec4 {
-        (self * w).extend(w)
-    }
-    #[inline]
-    fn numerator(h: DVec4) -> DVec3 {
-        h.truncate()
-    }
-    #[inline]
-    fn weight_of(h: DVec4) -> f64 {
-        h.w
-    }
-    #[inline]
-    fn cross_norm(a: DVec3, b: DVec3) -> f64 {
-        a.cross(b).length()
-    }
-}
+impl_cartesian!(DVec2, DVec3, z, |a, b| a.perp_dot(b));
+impl_cartesian!(DVec3, DVec4, w, |a, b| a.cross(b).length());
 
 /// The `k`-th derivative of a rational curve from the derivatives `A^(0..=k)` of its homogeneous
 /// curve (`k = homogeneous_derivs.len() − 1`), by the quotient rule

@@ -13,10 +13,11 @@ use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
 use crate::prelude::*;
 use glam::{DVec2, DVec3};
-use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
 curve_enum!(BezierCurve);
+
+class_curve_methods!(BezierCurve for JsBezierCurve over BezierCurve, parameter t, parameters ts);
 
 /// Points as one flat array of `P::DIM` numbers each.
 pub(crate) fn flatten_points<P: Point>(points: &[P]) -> Vec<f64> {
@@ -115,77 +116,10 @@ impl JsBezierCurve {
         Ok(JsBezierCurve::wrap(inner))
     }
 
-    /// Degree n (number of control points − 1).
-    #[wasm_bindgen(getter)]
-    pub fn degree(&self) -> usize {
-        with_curve!(&self.inner, c => c.degree())
-    }
-
-    /// Dimension: 2 or 3.
-    #[wasm_bindgen(getter)]
-    pub fn dim(&self) -> usize {
-        super::ClassCurve::dim(&self.inner)
-    }
-
-    /// True when some weight differs from 1.
-    #[wasm_bindgen(getter)]
-    pub fn rational(&self) -> bool {
-        with_curve!(&self.inner, c => c.is_rational())
-    }
-
     /// The parameter interval `[a, b]` (default `[0, 1]`).
     pub fn domain(&self) -> Vec<f64> {
         let (a, b) = with_curve!(&self.inner, c => c.interval());
         vec![a, b]
-    }
-
-    /// The point at t (Float64Array of dim numbers).
-    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
-        Ok(with_curve!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
-    }
-
-    /// The derivative of the given order at t (order 0 = the point; above the degree of a
-    /// polynomial curve, the zero vector).
-    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
-        let order = whole("order", order)?;
-        Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
-    }
-
-    /// Points at every t of `ts`, flat (ts.length·dim numbers), in one pass.
-    pub fn sample(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<Vec<f64>, JsError> {
-        let ts = &*numbers("ts", &ts)?;
-        super::sample(&self.inner, ts)
-    }
-
-    /// `count` points at equally spaced parameters over the whole interval, ends included.
-    #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
-        let count = whole("count", count)?;
-        super::sample_uniform(&self.inner, count)
-    }
-
-    /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
-    /// returned as a `Float64Array` view of it: no copy and no new array per call, for
-    /// redrawing many points every frame. The view is overwritten by the next `…View` call on
-    /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
-    /// `slice()` it to keep it.
-    #[wasm_bindgen(js_name = sampleUniformView)]
-    pub fn sample_uniform_view(&mut self, count: f64) -> Result<Float64Array, JsError> {
-        let count = whole("count", count)?;
-        super::sample_uniform_view(&self.inner, &mut self.view, count)
-    }
-
-    /// `sample(ts)` into this curve's view buffer (see `sampleUniformView`).
-    #[wasm_bindgen(js_name = sampleView)]
-    pub fn sample_view(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<Float64Array, JsError> {
-        let ts = &*numbers("ts", &ts)?;
-        super::sample_view(&self.inner, &mut self.view, ts)
     }
 
     /// de Casteljau's triangle at t: every level concatenated, the control points first;
@@ -241,45 +175,6 @@ impl JsBezierCurve {
         Ok(JsBezierCurve::wrap(
             map_curve!(&self.inner, c => c.hodograph()?),
         ))
-    }
-
-    /// A copy of this curve (a new wasm object; free it too).
-    #[wasm_bindgen(js_name = clone)]
-    pub fn clone_curve(&self) -> JsBezierCurve {
-        JsBezierCurve::wrap(self.inner.clone())
-    }
-
-    /// The control points, flat.
-    #[wasm_bindgen(js_name = controlPoints)]
-    pub fn control_points(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => flatten_points(&c.control_points()))
-    }
-
-    /// The weights (all 1 for a polynomial curve).
-    pub fn weights(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => c.weights())
-    }
-
-    /// The homogeneous control points `(w·P, w)`, flat with dim + 1 numbers per point.
-    #[wasm_bindgen(js_name = homogeneousPoints)]
-    pub fn homogeneous_points(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => flatten_points(c.homogeneous_points()))
-    }
-
-    /// Moves control point i in place (the drag path); `point` has dim numbers.
-    #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(
-        &mut self,
-        i: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-    ) -> Result<(), JsError> {
-        super::set_control_point(&mut self.inner, i, &point)
-    }
-
-    /// Sets weight i (> 0) in place.
-    #[wasm_bindgen(js_name = setWeight)]
-    pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
-        super::set_weight(&mut self.inner, i, w)
     }
 
     /// Polyline vertices (flat, both ends included) within `tolerance` of the curve.
@@ -358,11 +253,6 @@ impl JsBezierCurve {
         Ok(with_curve!(&self.inner, c => c.arc_length(accuracy))?)
     }
 
-    /// Curvature at t: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity at a cusp.
-    pub fn curvature(&self, t: f64) -> Result<f64, JsError> {
-        Ok(with_curve!(&self.inner, c => c.curvature(t))?)
-    }
-
     /// The tight bounding box of the curve: `[minX, minY, (minZ,) maxX, maxY, (maxZ)]`.
     #[wasm_bindgen(js_name = boundingBox)]
     pub fn bounding_box(&self) -> Vec<f64> {
@@ -370,32 +260,6 @@ impl JsBezierCurve {
             let b = c.bounding_box();
             flatten_points(&[b.min, b.max])
         })
-    }
-}
-
-impl JsBezierCurve {
-    fn wrap(inner: Curve) -> Self {
-        JsBezierCurve {
-            inner,
-            view: Vec::new(),
-        }
-    }
-
-    /// Wraps a core 2D curve.
-    pub(crate) fn from_2d(c: BezierCurve<DVec2>) -> Self {
-        JsBezierCurve::wrap(Curve::D2(c))
-    }
-
-    /// Wraps a core 3D curve.
-    pub(crate) fn from_3d(c: BezierCurve<DVec3>) -> Self {
-        JsBezierCurve::wrap(Curve::D3(c))
-    }
-
-    pub(crate) fn curve_2d(&self, operation: &'static str) -> Result<&BezierCurve<DVec2>, Error> {
-        match &self.inner {
-            Curve::D2(c) => Ok(c),
-            Curve::D3(_) => Err(Error::Needs2D { operation, dim: 3 }),
-        }
     }
 }
 

@@ -7,11 +7,12 @@ use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::prelude::*;
 use glam::{DVec2, DVec3};
-use js_sys::Float64Array;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 curve_enum!(BSplineCurve);
+
+class_curve_methods!(BSplineCurve for JsBSplineCurve over BSplineCurve, parameter u, parameters us);
 
 /// A polynomial or rational (NURBS) B-spline curve in 2D or 3D on its domain `[u_p, u_{n+1}]`.
 #[wasm_bindgen(js_name = BSplineCurve)]
@@ -86,24 +87,6 @@ impl JsBSplineCurve {
         Ok(JsBSplineCurve::wrap(inner))
     }
 
-    /// Degree p.
-    #[wasm_bindgen(getter)]
-    pub fn degree(&self) -> usize {
-        with_curve!(&self.inner, c => c.degree())
-    }
-
-    /// Dimension: 2 or 3.
-    #[wasm_bindgen(getter)]
-    pub fn dim(&self) -> usize {
-        super::ClassCurve::dim(&self.inner)
-    }
-
-    /// True when some weight differs from 1.
-    #[wasm_bindgen(getter)]
-    pub fn rational(&self) -> bool {
-        with_curve!(&self.inner, c => c.is_rational())
-    }
-
     /// For a closed curve, how many trailing control points repeat the first ones (0 if open).
     #[wasm_bindgen(getter)]
     pub fn wrapped(&self) -> usize {
@@ -132,43 +115,6 @@ impl JsBSplineCurve {
         Ok(with_curve!(&self.inner, c => c.span(u))?)
     }
 
-    /// The control points, flat.
-    #[wasm_bindgen(js_name = controlPoints)]
-    pub fn control_points(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => flatten_points(&c.control_points()))
-    }
-
-    /// The weights (all 1 for a polynomial curve).
-    pub fn weights(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => c.weights())
-    }
-
-    /// The homogeneous control points `(w·P, w)`, flat with dim + 1 numbers each.
-    #[wasm_bindgen(js_name = homogeneousPoints)]
-    pub fn homogeneous_points(&self) -> Vec<f64> {
-        with_curve!(&self.inner, c => flatten_points(c.homogeneous_points()))
-    }
-
-    /// The point at u.
-    pub fn evaluate(&self, u: f64) -> Result<Vec<f64>, JsError> {
-        Ok(with_curve!(&self.inner, c => flatten_points(&[c.evaluate(u)?])))
-    }
-
-    /// The derivative of the given order at u (zero above the degree of a polynomial curve).
-    pub fn derivative(&self, u: f64, order: f64) -> Result<Vec<f64>, JsError> {
-        let order = whole("order", order)?;
-        Ok(with_curve!(&self.inner, c => flatten_points(&[c.derivative(u, order)?])))
-    }
-
-    /// Points at every u of `us`, flat, walking the spans once for sorted input.
-    pub fn sample(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
-    ) -> Result<Vec<f64>, JsError> {
-        let us = &*numbers("us", &us)?;
-        super::sample(&self.inner, us)
-    }
-
     /// The derivative of the given order at every u of `us`, flat (us.length·dim numbers), in
     /// one pass: the batched form of `derivative(u, order)`.
     #[wasm_bindgen(js_name = sampleDerivatives)]
@@ -182,34 +128,6 @@ impl JsBSplineCurve {
         let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
         Ok(out)
-    }
-
-    /// `count` points at equally spaced u over the domain, ends included.
-    #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
-        let count = whole("count", count)?;
-        super::sample_uniform(&self.inner, count)
-    }
-
-    /// `sampleUniform(count)` written into a buffer this curve keeps in the wasm memory and
-    /// returned as a `Float64Array` view of it: no copy and no new array per call, for
-    /// redrawing many points every frame. The view is overwritten by the next `…View` call on
-    /// this curve and detached (length 0) when the wasm memory grows; read it at once, or
-    /// `slice()` it to keep it.
-    #[wasm_bindgen(js_name = sampleUniformView)]
-    pub fn sample_uniform_view(&mut self, count: f64) -> Result<Float64Array, JsError> {
-        let count = whole("count", count)?;
-        super::sample_uniform_view(&self.inner, &mut self.view, count)
-    }
-
-    /// `sample(us)` into this curve's view buffer (see `sampleUniformView`).
-    #[wasm_bindgen(js_name = sampleView)]
-    pub fn sample_view(
-        &mut self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
-    ) -> Result<Float64Array, JsError> {
-        let us = &*numbers("us", &us)?;
-        super::sample_view(&self.inner, &mut self.view, us)
     }
 
     /// `N_{i,p}(u)` for i = 0..n.
@@ -372,60 +290,6 @@ impl JsBSplineCurve {
             out.extend(flatten_points(&[form.point]));
             out
         }))
-    }
-
-    /// Moves control point i in place (a closed curve's repeated copy follows).
-    #[wasm_bindgen(js_name = setControlPoint)]
-    pub fn set_control_point(
-        &mut self,
-        i: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-    ) -> Result<(), JsError> {
-        super::set_control_point(&mut self.inner, i, &point)
-    }
-
-    /// Sets weight i (> 0) in place.
-    #[wasm_bindgen(js_name = setWeight)]
-    pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
-        super::set_weight(&mut self.inner, i, w)
-    }
-
-    /// Curvature at u: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity at a cusp.
-    pub fn curvature(&self, u: f64) -> Result<f64, JsError> {
-        Ok(with_curve!(&self.inner, c => c.curvature(u))?)
-    }
-
-    /// A copy of this curve (a new wasm object; free it too).
-    #[wasm_bindgen(js_name = clone)]
-    pub fn clone_curve(&self) -> JsBSplineCurve {
-        JsBSplineCurve::wrap(self.inner.clone())
-    }
-}
-
-impl JsBSplineCurve {
-    fn wrap(inner: Curve) -> Self {
-        JsBSplineCurve {
-            inner,
-            view: Vec::new(),
-        }
-    }
-
-    /// Wraps a core 2D curve.
-    pub(crate) fn from_2d(c: BSplineCurve<DVec2>) -> Self {
-        JsBSplineCurve::wrap(Curve::D2(c))
-    }
-
-    /// Wraps a core 3D curve.
-    pub(crate) fn from_3d(c: BSplineCurve<DVec3>) -> Self {
-        JsBSplineCurve::wrap(Curve::D3(c))
-    }
-
-    /// The 2D curve, or an error naming the operation.
-    pub(crate) fn curve_2d(&self, operation: &'static str) -> Result<&BSplineCurve<DVec2>, Error> {
-        match &self.inner {
-            Curve::D2(c) => Ok(c),
-            Curve::D3(_) => Err(Error::Needs2D { operation, dim: 3 }),
-        }
     }
 }
 

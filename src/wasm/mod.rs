@@ -11,71 +11,8 @@
     clippy::indexing_slicing
 )]
 
-/// Runs `$body` with `$c` bound to the curve of either dimension of a `Curve` enum (`D2`,
-/// `D3`; see [`curve_enum!`]).
-macro_rules! with_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => $body,
-            Curve::D3($c) => $body,
-        }
-    };
-}
-
-/// Maps a curve of either dimension to a curve of the same dimension.
-macro_rules! map_curve {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => Curve::D2($body),
-            Curve::D3($c) => Curve::D3($body),
-        }
-    };
-}
-
-/// Defines `enum Curve { D2(Ty<DVec2>), D3(Ty<DVec3>) }`, the 2D or 3D core curve behind one JS
-/// class, and implements [`ClassCurve`] for it.
-macro_rules! curve_enum {
-    ($ty:ident) => {
-        /// A 2D or 3D curve behind one JS class.
-        #[derive(Clone)]
-        enum Curve {
-            D2($ty<DVec2>),
-            D3($ty<DVec3>),
-        }
-
-        impl_class_curve!();
-    };
-}
-
-/// Implements [`ClassCurve`] for the `Curve` enum (`D2`, `D3`) of the module it is invoked in.
-macro_rules! impl_class_curve {
-    () => {
-        impl super::ClassCurve for Curve {
-            fn dim(&self) -> usize {
-                match self {
-                    Curve::D2(_) => 2,
-                    Curve::D3(_) => 3,
-                }
-            }
-
-            fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error> {
-                with_curve!(self, c => c.sample_into(params, out))
-            }
-
-            fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error> {
-                with_curve!(self, c => c.sample_uniform_into(count, out))
-            }
-
-            fn set_control_point(&mut self, i: usize, coords: &[f64]) -> Result<(), Error> {
-                with_curve!(self, c => c.set_control_point(i, $crate::wasm::bezier::point_from(coords)?))
-            }
-
-            fn set_weight(&mut self, i: usize, w: f64) -> Result<(), Error> {
-                with_curve!(self, c => c.set_weight(i, w))
-            }
-        }
-    };
-}
+#[macro_use]
+mod class;
 
 pub mod bezier;
 pub mod bspline;
@@ -107,77 +44,6 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
         offset,
         length,
     ))
-}
-
-/// A curve of either dimension behind a JS class: what the method bodies shared by
-/// `BezierCurve` and `BSplineCurve` need (sampling and the in-place edits of a drag).
-pub(crate) trait ClassCurve {
-    /// 2 or 3.
-    fn dim(&self) -> usize;
-    /// The points at `params`, flat, into `out` (`params.len() · dim` numbers).
-    fn sample_into(&self, params: &[f64], out: &mut [f64]) -> Result<(), Error>;
-    /// `count` points at equally spaced parameters over the domain, flat, into `out`.
-    fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<(), Error>;
-    /// Moves control point i to the point with coordinates `coords` (dim numbers), in place.
-    fn set_control_point(&mut self, i: usize, coords: &[f64]) -> Result<(), Error>;
-    /// Sets weight i (> 0) in place.
-    fn set_weight(&mut self, i: usize, w: f64) -> Result<(), Error>;
-}
-
-/// `setControlPoint(i, point)`: the drag path, in place.
-pub(crate) fn set_control_point(
-    curve: &mut impl ClassCurve,
-    i: f64,
-    point: &JsValue,
-) -> Result<(), JsError> {
-    let point = numbers("point", point)?;
-    curve.set_control_point(whole("i", i)?, &point)?;
-    Ok(())
-}
-
-/// `setWeight(i, w)`, in place.
-pub(crate) fn set_weight(curve: &mut impl ClassCurve, i: f64, w: f64) -> Result<(), JsError> {
-    curve.set_weight(whole("i", i)?, w)?;
-    Ok(())
-}
-
-/// `sample(params)`: a new array of `params.length · dim` numbers.
-pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>, JsError> {
-    let mut out = vec![0.0; params.len().saturating_mul(curve.dim())];
-    curve.sample_into(params, &mut out)?;
-    Ok(out)
-}
-
-/// `sampleUniform(count)`: a new array of `count · dim` numbers.
-pub(crate) fn sample_uniform(curve: &impl ClassCurve, count: usize) -> Result<Vec<f64>, JsError> {
-    check_count(count)?;
-    let mut out = vec![0.0; count * curve.dim()];
-    curve.sample_uniform_into(count, &mut out)?;
-    Ok(out)
-}
-
-/// `sampleView(params)`: `sample(params)` written into `buffer` (the curve's own) and returned
-/// as a view of it (see [`memory_view`]). On an error the buffer keeps its allocation.
-pub(crate) fn sample_view(
-    curve: &impl ClassCurve,
-    buffer: &mut Vec<f64>,
-    params: &[f64],
-) -> Result<Float64Array, JsError> {
-    buffer.resize(params.len().saturating_mul(curve.dim()), 0.0);
-    curve.sample_into(params, buffer)?;
-    memory_view(buffer)
-}
-
-/// `sampleUniformView(count)`: `sampleUniform(count)` into `buffer`, as [`sample_view`].
-pub(crate) fn sample_uniform_view(
-    curve: &impl ClassCurve,
-    buffer: &mut Vec<f64>,
-    count: usize,
-) -> Result<Float64Array, JsError> {
-    check_count(count)?;
-    buffer.resize(count * curve.dim(), 0.0);
-    curve.sample_uniform_into(count, buffer)?;
-    memory_view(buffer)
 }
 
 /// What an array argument must be, for [`numbers`].
@@ -264,18 +130,6 @@ pub(crate) fn whole(what: &str, value: f64) -> Result<usize, JsError> {
         }
         .into())
     }
-}
-
-/// Rejects a sample count above [`crate::geom::MAX_SAMPLES`].
-pub(crate) fn check_count(count: usize) -> Result<(), Error> {
-    if count > crate::geom::MAX_SAMPLES {
-        return Err(Error::TooLarge {
-            what: "count",
-            value: count,
-            max: crate::geom::MAX_SAMPLES,
-        });
-    }
-    Ok(())
 }
 
 /// The crate version, e.g. `"0.1.0"`.

@@ -4,8 +4,9 @@ use super::bezier::flatten_points;
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
 use super::{numbers, whole};
+use crate::bspline::BSplineCurve;
 use crate::error::Error;
-use crate::geom::{check_dim, points_from_flat};
+use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::rational;
 use glam::{DMat3, DVec2, DVec3};
 use wasm_bindgen::prelude::*;
@@ -67,21 +68,28 @@ pub fn ellipse_arc(
         .into());
     }
     Ok(match crate::geom::check_dim(center.len())? {
-        2 => JsBSplineCurve::from_2d(rational::ellipse_arc(
-            DVec2::from_slice(center),
-            DVec2::from_slice(axis_x),
-            DVec2::from_slice(axis_y),
-            start,
-            sweep,
-        )?),
-        _ => JsBSplineCurve::from_3d(rational::ellipse_arc(
-            DVec3::from_slice(center),
-            DVec3::from_slice(axis_x),
-            DVec3::from_slice(axis_y),
-            start,
-            sweep,
-        )?),
+        2 => JsBSplineCurve::from_2d(ellipse_arc_flat(center, axis_x, axis_y, start, sweep)?),
+        _ => JsBSplineCurve::from_3d(ellipse_arc_flat(center, axis_x, axis_y, start, sweep)?),
     })
+}
+
+/// [`rational::ellipse_arc`] on the center and axes given flat (`C::DIM` numbers each).
+// Inlined into both arms: a call here measured 100 bytes more in the optimised wasm.
+#[inline(always)]
+fn ellipse_arc_flat<C: Cartesian>(
+    center: &[f64],
+    axis_x: &[f64],
+    axis_y: &[f64],
+    start: f64,
+    sweep: f64,
+) -> Result<BSplineCurve<C>, Error> {
+    rational::ellipse_arc(
+        C::from_slice(center),
+        C::from_slice(axis_x),
+        C::from_slice(axis_y),
+        start,
+        sweep,
+    )
 }
 
 /// `circularArcBezier(points)`: the rational quadratic Bézier of an isosceles control
@@ -117,37 +125,30 @@ fn matrix(m: &[f64]) -> Result<DMat3, Error> {
     Ok(DMat3::from_cols_array(rows).transpose())
 }
 
-#[wasm_bindgen(js_class = BezierCurve)]
-impl JsBezierCurve {
-    /// `projectiveMap(matrix)`: the image under the projective map given as 9 numbers row by
-    /// row, acting on homogeneous (x, y, 1) (2D curves); a rational curve with new weights.
-    #[wasm_bindgen(js_name = projectiveMap)]
-    pub fn projective_map(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
-    ) -> Result<JsBezierCurve, JsError> {
-        let m = matrix(&numbers("m", &m)?)?;
-        Ok(JsBezierCurve::from_2d(rational::projective_map_bezier(
-            self.curve_2d("projectiveMap")?,
-            &m,
-        )?))
-    }
+/// `projectiveMap(matrix)` on each JS class `$js` (Rust `$ty`): the 2D curve mapped by `$map`.
+macro_rules! projective_map_method {
+    ($($(#[doc = $doc:literal])* $js:ident for $ty:ident by $map:path;)*) => {$(
+        #[wasm_bindgen(js_class = $js)]
+        impl $ty {
+            $(#[doc = $doc])*
+            #[wasm_bindgen(js_name = projectiveMap)]
+            pub fn projective_map(
+                &self,
+                #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
+            ) -> Result<$ty, JsError> {
+                let m = matrix(&numbers("m", &m)?)?;
+                Ok($ty::from_2d($map(self.curve_2d("projectiveMap")?, &m)?))
+            }
+        }
+    )*};
 }
 
-#[wasm_bindgen(js_class = BSplineCurve)]
-impl JsBSplineCurve {
+projective_map_method! {
+    /// `projectiveMap(matrix)`: the image under the projective map given as 9 numbers row by
+    /// row, acting on homogeneous (x, y, 1) (2D curves); a rational curve with new weights.
+    BezierCurve for JsBezierCurve by rational::projective_map_bezier;
     /// `projectiveMap(matrix)`: as `BezierCurve.projectiveMap`, same knots.
-    #[wasm_bindgen(js_name = projectiveMap)]
-    pub fn projective_map(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
-    ) -> Result<JsBSplineCurve, JsError> {
-        let m = matrix(&numbers("m", &m)?)?;
-        Ok(JsBSplineCurve::from_2d(rational::projective_map_bspline(
-            self.curve_2d("projectiveMap")?,
-            &m,
-        )?))
-    }
+    BSplineCurve for JsBSplineCurve by rational::projective_map_bspline;
 }
 
 /// `rationalPoles(points, dim, weights, count)`: a TEACHING function for the negative-weights
