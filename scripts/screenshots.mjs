@@ -8,19 +8,9 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { fileURLToPath } from "node:url";
 import { startServer } from "./serve.mjs";
+import { CHROMIUM, CHROMIUM_ARGS } from "./chromium.mjs";
 
 const OUT = fileURLToPath(new URL("../screenshots/", import.meta.url));
-const ARGS = [
-  "--headless",
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-  "--disable-quic",
-  "--no-first-run",
-  "--enable-unsafe-swiftshader",
-];
 const DESKTOP = { width: 1280, height: 900 };
 const PHONE = { width: 390, height: 844 };
 const narrow = process.argv.includes("--narrow");
@@ -43,8 +33,8 @@ const written = [];
 for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, PHONE]] : [])]) {
   const profile = mkdtempSync(join(tmpdir(), "splinelab-shots-"));
   const context = await chromium.launchPersistentContext(profile, {
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    args: ARGS,
+    executablePath: CHROMIUM,
+    args: [...CHROMIUM_ARGS],
     viewport,
     deviceScaleFactor: scale,
   });

@@ -15,19 +15,8 @@ import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
 import { fuzzApi } from "./api-fuzz.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
+import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 
-const CHROMIUM = process.env.CHROMIUM ?? "/usr/bin/chromium";
-const ARGS = [
-  "--headless",
-  "--no-sandbox",
-  "--disable-gpu",
-  "--disable-background-networking",
-  "--disable-component-update",
-  "--disable-sync",
-  "--disable-quic",
-  "--no-first-run",
-  "--enable-unsafe-swiftshader",
-];
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
 const TEST_TIMEOUT_MS = 30_000;
@@ -496,7 +485,7 @@ async function launchWorker() {
   const profile = mkdtempSync(join(tmpdir(), "splinelab-e2e-"));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: CHROMIUM,
-    args: ARGS,
+    args: [...CHROMIUM_ARGS],
     viewport: VIEWPORT,
     deviceScaleFactor: 1,
     acceptDownloads: true,

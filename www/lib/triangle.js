@@ -41,6 +41,9 @@ export class LevelLabels {
   }
 }
 
+/** Labels each point beside its leg, with no memory of the others (`legLabel`). */
+const BESIDE_THE_LEG = Object.freeze({ place: legLabel, points: null });
+
 /**
  * Draws levels 1 … n − 1 of `triangle` (flat [x, y, …]) with their points, and labels them
  * with `labels.get(i, level)` when `labels` is given. `centre` is [x, y] in canvas px: labels go
@@ -48,6 +51,7 @@ export class LevelLabels {
  * (LegLabelPlacer, its `points` set to the control points) labels also keep clear of each other.
  */
 export function drawLevels(r, v, triangle, n, centre, labels = null, placer = null) {
+  const labeller = placer ?? BESIDE_THE_LEG;
   const theme = r.theme;
   let offset = n + 1; // level 1 starts after the n + 1 points of level 0
   for (let level = 1; level < n; level++) {
@@ -68,33 +72,19 @@ export function drawLevels(r, v, triangle, n, centre, labels = null, placer = nu
       r.point(x, y, style);
       if (!labels) continue;
       const text = labels.get(j, level);
-      if (placer)
-        placer.place(
-          r,
-          v,
-          triangle,
-          n,
-          level,
-          j,
-          text,
-          centre,
-          theme.labelSmall,
-          style.radius * r.scale,
-          placer.points,
-        );
-      else
-        legLabel(
-          r,
-          v,
-          triangle,
-          n,
-          level,
-          j,
-          text,
-          centre,
-          theme.labelSmall,
-          style.radius * r.scale,
-        );
+      labeller.place(
+        r,
+        v,
+        triangle,
+        n,
+        level,
+        j,
+        text,
+        centre,
+        theme.labelSmall,
+        style.radius * r.scale,
+        labeller.points,
+      );
     }
     offset += count;
   }
