@@ -69,8 +69,8 @@ function freeModel(model) {
 }
 
 /**
- * Mounts a declarative demo in the shell's slots; returns `{ update(state), destroy() }` as an
- * old-style `mount` does.
+ * Mounts a declarative demo in the shell's slots; returns `{ update(state), destroy() }`: the
+ * shell calls `update` with every outside state (undo, reset, link, file) and `destroy` once.
  */
 export function mountDeclared(demo, initialState, ctx) {
   const { sl } = ctx;
