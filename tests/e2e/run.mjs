@@ -990,6 +990,32 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("a11y: the knot ruler announces a selected knot and a committed nudge", async () => {
+    const h = await openDemo(page, base, "bspline-basis");
+    const canvas = h.canvas();
+    const live = page.locator(".sl-figure .sl-announcer");
+    await page.evaluate(() => document.activeElement?.blur());
+    let focused = false;
+    for (let k = 0; k < 60 && !focused; k++) {
+      await page.keyboard.press("Tab");
+      focused = await canvas.evaluate((c) => document.activeElement === c);
+    }
+    assert(focused, "Tab reaches the figure");
+    // End selects the last control point; Tab from it walks on into the knots.
+    await page.keyboard.press("End");
+    equal(await live.textContent(), "P₅ selected, (8, 0)", "the last control point");
+    await page.keyboard.press("Tab");
+    equal(await live.textContent(), "knot u₀ selected, 0", "Tab enters the knots");
+    for (let k = 0; k < 3; k++) await page.keyboard.press("Tab");
+    equal(await live.textContent(), "knot u₃ selected, 1", "Tab walks the knots");
+    await page.keyboard.press("Shift+ArrowRight");
+    const moved = await live.textContent();
+    const [, u] = moved.match(/^knot u₃ moved to (\d+(?:\.\d+)?)$/) ?? [];
+    assert(Number(u) > 1 && Number(u) <= 2, `announced after the nudge: ${moved}`);
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("embed example: two independent demos in shadow roots", async () => {
     await page.goto(`${base}/embed-example.html`);
     const a = demoHelpers(page, "spline-lab#worked ");

@@ -195,11 +195,18 @@ export class Handles {
   /** Says in the live region, politely, `key` ("{label} … ({x}, {y})") for handle i where it is now. */
   _announce(key, i) {
     this.source.get(i, this._q);
-    this.announcer.textContent = t(key, {
-      label: this.source.label(i),
-      x: formatNumber(this._q[0]),
-      y: formatNumber(this._q[1]),
-    });
+    this.announce(
+      t(key, {
+        label: this.source.label(i),
+        x: formatNumber(this._q[0]),
+        y: formatNumber(this._q[1]),
+      }),
+    );
+  }
+
+  /** Says `text` in the figure's polite live region (a chained tool, e.g. the knot ruler). */
+  announce(text) {
+    this.announcer.textContent = text;
   }
 
   /** Index of the handle under canvas point (x, y), or -1. */

@@ -25,7 +25,7 @@
 import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, NUDGE_MERGE_MS } from "./handles.js";
 import { HUES, WIDTH, FONT_SIZE } from "./theme.js";
 import { subscript, superscript } from "./format.js";
-import { t } from "./strings.js";
+import { formatNumber, t } from "./strings.js";
 import { setKnots } from "./bspline.js";
 
 /** Default ends of the ruler line inside the canvas (left, right), CSS px at text scale 1. */
@@ -315,7 +315,18 @@ export class KnotRuler {
     this.selected = next;
     if (next >= 0) this.source.handles?.select(-1);
     this.source.select?.(next);
+    if (next >= 0) this._announce("knotRuler.selected", next);
     this.view.requestDraw();
+  }
+
+  /**
+   * Says `key` ("{label} … {u}") for knot i where it is now, in the live region of the chained
+   * handles (on commit, never per frame; without handles there is no live region).
+   */
+  _announce(key, i) {
+    const u = this.source.knots()[i];
+    if (u !== undefined)
+      this.source.handles?.announce(t(key, { label: this._knotLabel(i), u: formatNumber(u) }));
   }
 
   /** Forgets hover and drag state (the knot vector was replaced, e.g. by undo). */
@@ -410,6 +421,7 @@ export class KnotRuler {
     if (this._moved) {
       this._lastTap.index = -1;
       this.source.commit("drag", i, null);
+      this._announce("knotRuler.moved", i);
     } else {
       // A tap; two on the same knot in quick succession raise its multiplicity.
       const now = performance.now();
@@ -553,6 +565,7 @@ export class KnotRuler {
         this._lastNudge.index = i;
         this._lastNudge.time = now;
         this.source.commit("key", i, `knot-nudge-${this._lastNudge.group}`);
+        this._announce("knotRuler.moved", i);
         break;
       }
       case "Enter":

@@ -505,6 +505,8 @@ const EN = {
 
   // Demo: bspline-basis (strings of www/demos/bspline-basis.js; keys start with the demo's `strings` prefix)
   // (and the knot ruler of lib/knot-ruler.js, shared by the B-spline demos: keys "knotRuler.*")
+  "knotRuler.selected": "knot {label} selected, {u}",
+  "knotRuler.moved": "knot {label} moved to {u}",
   "knotRuler.valueMultiple": "{u} (×{r})",
   "knotRuler.break": "break",
   "knotRuler.domain": "domain [u{p}, u{n1}] = [{a}, {b}]",
