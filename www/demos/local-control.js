@@ -23,7 +23,7 @@ import { CYCLE, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf, convexHull } from "../lib/geometry.js";
 import { bsplineCurve, clampedKnots } from "../lib/bspline.js";
-import { flatPath, pointsPath } from "../lib/draw.js";
+import { flatPath, indexedPolygonPath, pointsPath } from "../lib/draw.js";
 import { titledTable } from "../lib/table.js";
 import { el, setText } from "../lib/controls.js";
 import { scaledInsets } from "../lib/view.js";
@@ -261,17 +261,6 @@ const stylesFor = themed((theme) => ({
   tick: Object.freeze({ stroke: theme.text, width: WIDTH.construction }),
 }));
 
-/** Adds the closed polygon through `points[indices[…]]` to a new path. */
-function polygonPath(r, v, points, indices) {
-  r.beginPath();
-  for (let k = 0; k < indices.length; k++) {
-    const q = points[indices[k]];
-    if (k === 0) r.moveTo(v.sx(q[0]), v.sy(q[1]));
-    else r.lineTo(v.sx(q[0]), v.sy(q[1]));
-  }
-  r.closePath();
-}
-
 /**
  * The hulls (whole polygon outlined, active points filled), the polygon, the lit range as a
  * band in P_i's colour, the curve and its knot joints, the handles, C(u) labelled away from the
@@ -281,9 +270,9 @@ export function draw(r, v, s, d) {
   const theme = r.theme;
   const styles = stylesFor(theme);
   const colour = s.point % CYCLE.length;
-  polygonPath(r, v, s.points, d.wholeHull);
+  indexedPolygonPath(r, v, s.points, d.wholeHull);
   r.paint(theme.helper);
-  polygonPath(r, v, s.points, d.at.hull);
+  indexedPolygonPath(r, v, s.points, d.at.hull);
   r.paint(theme.helperFill);
   pointsPath(r, v, s.points);
   r.paint(theme.polygon);

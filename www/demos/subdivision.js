@@ -24,7 +24,7 @@ import {
   fractionTex,
 } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
-import { flatten, boundsOf } from "../lib/geometry.js";
+import { flatten, paddedBounds } from "../lib/geometry.js";
 import { detailsTable, valueSpans, setValueSpans } from "../lib/table.js";
 import { screenCentroid } from "../lib/triangle.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -191,16 +191,9 @@ export const controls = [
 ];
 
 export const figure = {
-  bounds: (s) => paddedBounds(s.points, END_LABEL_ROOM),
+  bounds: (s) => paddedBounds(s.points, END_LABEL_ROOM, 0), // widened left and right
   handles: { field: "points", label: (i, s, d) => d.labels.handles[i] },
 };
-
-/** The points' bounding box (the curve lies in their convex hull), widened left and right by `room` × the width. */
-function paddedBounds(points, room) {
-  const [x0, y0, x1, y1] = boundsOf(points);
-  const pad = room * (x1 - x0);
-  return [x0 - pad, y0, x1 + pad, y1];
-}
 
 // ------------------------------------------------------------ drawing
 

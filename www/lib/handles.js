@@ -544,6 +544,30 @@ export function placeLabel(r, text, x, y, dx, dy, radius, style) {
 
 /** Gap between a point's edge and its label, CSS px. */
 const LABEL_GAP_PX = 5;
+/** A segment shorter than this (canvas px) has no direction: its normal is taken as above left. */
+const DEGENERATE_SEGMENT_PX = 1;
+
+/**
+ * Writes into `out` [nx, ny] the unit normal (canvas px) of the segment from (ax, ay) to
+ * (bx, by), turned so that it points from the centre (cx, cy) towards (x, y): the side of a
+ * polygon's leg away from the polygon, where a label on the leg stays clear of both.
+ */
+export function normalAwayFrom(ax, ay, bx, by, x, y, cx, cy, out) {
+  let nx = ay - by;
+  let ny = bx - ax;
+  const length = Math.hypot(nx, ny);
+  if (length < DEGENERATE_SEGMENT_PX) {
+    nx = -Math.SQRT1_2;
+    ny = -Math.SQRT1_2;
+  } else {
+    nx /= length;
+    ny /= length;
+  }
+  const away = (x - cx) * nx + (y - cy) * ny < 0 ? -1 : 1;
+  out[0] = away * nx;
+  out[1] = away * ny;
+  return out;
+}
 /** |dx| above this aligns the label's near edge to the point; below, the label is centred. */
 const LABEL_ALIGN_THRESHOLD = 0.35;
 

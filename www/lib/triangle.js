@@ -5,11 +5,8 @@
  * label beside the leg of the level below that the point divides, on the side away from the
  * construction.
  */
-import { placeLabel } from "./handles.js";
+import { normalAwayFrom, placeLabel } from "./handles.js";
 import { subscript, superscript } from "./format.js";
-
-/** Below this length (canvas px) a leg has no direction: its label goes above left. */
-const DEGENERATE_LEG_PX = 1;
 
 /** Index (in points) where `level` starts in a triangle whose level 0 has n + 1 points. */
 export function levelStart(n, level) {
@@ -109,25 +106,14 @@ const normal = new Float64Array(4);
  */
 function legNormal(v, triangle, n, level, j, centre, out) {
   const p = levelStart(n, level) + j;
-  const x = v.sx(triangle[2 * p]);
-  const y = v.sy(triangle[2 * p + 1]);
   const a = levelStart(n, level - 1) + j;
-  let nx = v.sy(triangle[2 * a + 1]) - v.sy(triangle[2 * a + 3]);
-  let ny = v.sx(triangle[2 * a + 2]) - v.sx(triangle[2 * a]);
-  const length = Math.hypot(nx, ny);
-  if (length < DEGENERATE_LEG_PX) {
-    nx = -Math.SQRT1_2;
-    ny = -Math.SQRT1_2;
-  } else {
-    nx /= length;
-    ny /= length;
-  }
-  const away = (x - centre[0]) * nx + (y - centre[1]) * ny < 0 ? -1 : 1;
-  out[0] = away * nx;
-  out[1] = away * ny;
-  out[2] = x;
-  out[3] = y;
-  return out;
+  out[2] = v.sx(triangle[2 * p]);
+  out[3] = v.sy(triangle[2 * p + 1]);
+  const ax = v.sx(triangle[2 * a]);
+  const ay = v.sy(triangle[2 * a + 1]);
+  const bx = v.sx(triangle[2 * a + 2]);
+  const by = v.sy(triangle[2 * a + 3]);
+  return normalAwayFrom(ax, ay, bx, by, out[2], out[3], centre[0], centre[1], out);
 }
 
 /** Writes the canvas-px centroid of `points` ([[x, y], …]) into `out` and returns it. */
