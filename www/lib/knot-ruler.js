@@ -24,9 +24,10 @@
  */
 import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, NUDGE_MERGE_MS } from "./handles.js";
 import { HUES, WIDTH, FONT_SIZE } from "./theme.js";
-import { subscript, superscript } from "./format.js";
+import { subscript } from "./format.js";
 import { formatNumber, t } from "./strings.js";
 import { setKnots } from "./bspline.js";
+import { continuityText } from "./continuity.js";
 
 /** Default ends of the ruler line inside the canvas (left, right), CSS px at text scale 1. */
 export const RULER_LEFT = 40;
@@ -772,7 +773,7 @@ export class KnotRuler {
   _continuityLabel(k) {
     let text = this._continuityLabels.get(k);
     if (text === undefined) {
-      text = k < 0 ? t("knotRuler.break") : `C${superscript(k)}`;
+      text = continuityText(k);
       this._continuityLabels.set(k, text);
     }
     return text;
