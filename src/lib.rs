@@ -19,6 +19,7 @@ pub mod bspline;
 pub mod curve;
 pub mod error;
 pub mod geom;
+pub mod interp;
 mod platform;
 pub mod rational;
 pub mod surface;

@@ -65,6 +65,15 @@ impl Error {
             Error::NotWholeNumber { .. } => "not-whole-number",
             Error::Needs2D { .. } => "needs-2d",
             Error::AllWeightsZero { .. } => "all-weights-zero",
+            Error::ParamCount { .. } => "param-count",
+            Error::ParamsNotIncreasing { .. } => "params-not-increasing",
+            Error::MissingArgument { .. } => "missing-argument",
+            Error::ArgumentLength { .. } => "argument-length",
+            Error::NotClosed { .. } => "not-closed",
+            Error::AlphaOutOfRange { .. } => "alpha-out-of-range",
+            Error::ControlCountOutOfRange { .. } => "control-count-out-of-range",
+            Error::SchoenbergWhitney { .. } => "schoenberg-whitney",
+            Error::SingularSystem { .. } => "singular-system",
         }
     }
 }

@@ -325,6 +325,60 @@ impl fmt::Display for Error {
                 f,
                 "all {count} weights are 0: the denominator w(t) = Σ w_i B_i(t) is 0 for every t, so there is no curve"
             ),
+            Error::ParamCount { params, points } => write!(
+                f,
+                "params must have one value per point ({points}), got {params}"
+            ),
+            Error::ParamsNotIncreasing {
+                index,
+                value,
+                previous,
+            } => write!(
+                f,
+                "params must increase strictly: t_{index} = {} is not above t_{} = {}",
+                Num(*value),
+                index - 1,
+                Num(*previous)
+            ),
+            Error::MissingArgument { name, needed_by } => {
+                write!(f, "{needed_by} needs {name}, which was not given")
+            }
+            Error::ArgumentLength {
+                name,
+                expected,
+                got,
+            } => write!(f, "{name} must have {expected} numbers, got {got}"),
+            Error::NotClosed { last } => write!(
+                f,
+                "periodic interpolation needs the last point (point {last}) equal to the first"
+            ),
+            Error::AlphaOutOfRange { value } => write!(
+                f,
+                "alpha = {} is outside [0, 1] (0 uniform, 0.5 centripetal, 1 chord)",
+                Num(*value)
+            ),
+            Error::ControlCountOutOfRange { count, min, max } => write!(
+                f,
+                "count = {count} control points is outside [degree + 1, number of points] = [{min}, {max}]"
+            ),
+            Error::SchoenbergWhitney {
+                index,
+                param,
+                lo,
+                hi,
+                degree,
+            } => write!(
+                f,
+                "the interpolation system is singular: t_{index} = {} must lie inside the support (u_{index}, u_{}) = ({}, {}) of N_{index},{degree} (Schoenberg–Whitney condition)",
+                Num(*param),
+                index + degree + 1,
+                Num(*lo),
+                Num(*hi)
+            ),
+            Error::SingularSystem { what, row } => write!(
+                f,
+                "{what} is singular: elimination met a zero pivot in row {row}"
+            ),
         }
     }
 }

@@ -443,6 +443,84 @@ pub enum Error {
         /// Number of weights.
         count: usize,
     },
+    /// Interpolation parameters and data points of different counts:
+    /// `interp::lagrange(&three_points, &[0.0, 1.0])`.
+    ParamCount {
+        /// Number of parameters given.
+        params: usize,
+        /// Number of data points.
+        points: usize,
+    },
+    /// Interpolation parameters that do not strictly increase (`t_i ≤ t_{i−1}`):
+    /// `interp::lagrange(&points, &[0.0, 1.0, 1.0])`.
+    ParamsNotIncreasing {
+        /// Index `i` of the first parameter not above its predecessor.
+        index: usize,
+        /// `t_i`.
+        value: f64,
+        /// `t_{i−1}`.
+        previous: f64,
+    },
+    /// An argument the chosen option needs was not given: a clamped cubic spline without its
+    /// end tangents.
+    MissingArgument {
+        /// The missing argument ("startTangent").
+        name: &'static str,
+        /// What needs it ("the \"clamped\" end condition").
+        needed_by: &'static str,
+    },
+    /// An array argument of the wrong length: tangents for 4 points of dim 2 need 8 numbers.
+    ArgumentLength {
+        /// The argument's name ("tangents", "startDerivative").
+        name: &'static str,
+        /// The length it must have.
+        expected: usize,
+        /// The length given.
+        got: usize,
+    },
+    /// Periodic interpolation needs the last data point equal to the first (as scipy's
+    /// `CubicSpline(bc_type="periodic")`).
+    NotClosed {
+        /// Index of the last point.
+        last: usize,
+    },
+    /// The exponent α of a parametrisation `|Δp|^α` or of Catmull–Rom outside `[0, 1]`.
+    AlphaOutOfRange {
+        /// The value given.
+        value: f64,
+    },
+    /// A least-squares fit asked for a number of control points outside
+    /// `[degree + 1, number of data points]`.
+    ControlCountOutOfRange {
+        /// The count asked for.
+        count: usize,
+        /// The smallest count allowed (`p + 1`).
+        min: usize,
+        /// The largest count allowed (the number of data points).
+        max: usize,
+    },
+    /// Explicit knots that break the Schoenberg–Whitney condition, so the interpolation system
+    /// is singular: parameter `t_index` must lie where basis function `N_{index,p}` is non-zero,
+    /// `u_index < t_index < u_{index+p+1}` (or equal at a clamped end).
+    SchoenbergWhitney {
+        /// Index of the parameter (and of the basis function).
+        index: usize,
+        /// The parameter `t_index`.
+        param: f64,
+        /// `u_index`.
+        lo: f64,
+        /// `u_{index+p+1}`.
+        hi: f64,
+        /// The degree `p`.
+        degree: usize,
+    },
+    /// A linear system met a zero pivot: its matrix is singular (or too close to it).
+    SingularSystem {
+        /// Which system ("the cubic spline's tangent system").
+        what: &'static str,
+        /// The row where elimination stopped.
+        row: usize,
+    },
 }
 
 impl std::error::Error for Error {

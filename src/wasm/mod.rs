@@ -16,6 +16,7 @@ mod class;
 
 pub mod bezier;
 pub mod bspline;
+pub mod interp;
 pub mod rational;
 pub mod surface;
 

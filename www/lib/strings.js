@@ -12,6 +12,15 @@
  * `formatNumber` (`Intl.NumberFormat` of the active language).
  */
 
+// Section 5's demos keep their strings in one file each (www/lib/strings/<id>.js).
+import { LAGRANGE } from "./strings/lagrange.js";
+import { HERMITE } from "./strings/hermite.js";
+import { CARDINAL } from "./strings/cardinal.js";
+import { CUBIC_SPLINE } from "./strings/cubic-spline.js";
+import { PARAMETRIZATION } from "./strings/parametrization.js";
+import { BSPLINE_INTERPOLATION } from "./strings/bspline-interpolation.js";
+import { INTERPOLATE_APPROXIMATE } from "./strings/interpolate-approximate.js";
+
 const EN = {
   // Application and gallery
   "app.name": "splinelab",
@@ -1158,6 +1167,13 @@ const EN = {
   "negativeWeights.ariaNoPoles": "w(t) stays positive (smallest value {min})",
   "negativeWeights.ariaOutside": "the curve leaves its convex hull",
   "negativeWeights.ariaInside": "the curve stays in its convex hull",
+  ...LAGRANGE,
+  ...HERMITE,
+  ...CARDINAL,
+  ...CUBIC_SPLINE,
+  ...PARAMETRIZATION,
+  ...BSPLINE_INTERPOLATION,
+  ...INTERPOLATE_APPROXIMATE,
 };
 
 const locales = { en: EN };

@@ -1,0 +1,1 @@
+//! The interpolation family (syllabus §5) for JavaScript.
