@@ -73,6 +73,7 @@ impl Error {
             Error::AlphaOutOfRange { .. } => "alpha-out-of-range",
             Error::ControlCountOutOfRange { .. } => "control-count-out-of-range",
             Error::SchoenbergWhitney { .. } => "schoenberg-whitney",
+            Error::TooFewDataPoints { .. } => "too-few-data-points",
             Error::SingularSystem { .. } => "singular-system",
         }
     }

@@ -375,6 +375,11 @@ impl fmt::Display for Error {
                 Num(*lo),
                 Num(*hi)
             ),
+            Error::TooFewDataPoints { needed, got, what } => write!(
+                f,
+                "{what} needs at least {needed} data point{}, got {got}",
+                if *needed == 1 { "" } else { "s" }
+            ),
             Error::SingularSystem { what, row } => write!(
                 f,
                 "{what} is singular: elimination met a zero pivot in row {row}"

@@ -514,6 +514,15 @@ pub enum Error {
         /// The degree `p`.
         degree: usize,
     },
+    /// Too few data points for an interpolation or approximation: `interp::lagrange(&[p], &[0.0])`.
+    TooFewDataPoints {
+        /// Minimum number of data points needed.
+        needed: usize,
+        /// Number of data points given.
+        got: usize,
+        /// What needs them ("a cubic spline", "a degree-3 interpolating B-spline").
+        what: &'static str,
+    },
     /// A linear system met a zero pivot: its matrix is singular (or too close to it).
     SingularSystem {
         /// Which system ("the cubic spline's tangent system").
