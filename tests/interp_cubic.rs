@@ -567,6 +567,9 @@ fn closed_catmull_rom_wraps() {
     assert_eq!(c.tangents()[0], c.tangents()[4]);
     // By symmetry the tangent at (0, 0) points along the diagonal of its neighbours.
     assert_close2(c.tangents()[0], DVec2::new(0.5, -0.5), 1e-15, "m_0");
+    // The same cycle with its first point repeated at the end gives the same spline.
+    let repeated = pts2(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0), (0.0, 0.0)]);
+    assert_eq!(CubicSpline::catmull_rom(repeated, 1.0, true).unwrap(), c);
 }
 
 #[test]

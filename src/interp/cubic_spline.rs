@@ -206,9 +206,10 @@ impl<C: Cartesian> CubicSpline<C> {
     }
 
     /// The Catmull–Rom spline with parameters `Σ |Δp|^α` (0 uniform, 0.5 centripetal, 1 chord)
-    /// and Barry–Goldman tangents (`catmullRom`). `closed`: the points are a cycle (do not
-    /// repeat the first); the spline stores them with the first repeated at the end, so it has
-    /// `count + 1` points and `count` pieces, and returns to the start with the same tangent.
+    /// and Barry–Goldman tangents (`catmullRom`). `closed`: the points are a cycle; the spline
+    /// stores them with the first repeated at the end, so it has `count + 1` points and `count`
+    /// pieces, and returns to the start with the same tangent (a cycle given with its first
+    /// point already repeated at the end, more than 3 points, is taken as that cycle).
     ///
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`Error::AlphaOutOfRange`],
@@ -216,6 +217,10 @@ impl<C: Cartesian> CubicSpline<C> {
     /// also compares the last with the first).
     pub fn catmull_rom(mut points: Vec<C>, alpha: f64, closed: bool) -> Result<Self> {
         let min = if closed { 3 } else { 2 };
+        if closed && points.len() > min && points.first() == points.last() {
+            // The cycle given with its first point repeated: the repeat is the closing point.
+            points.pop();
+        }
         check_point_count(points.len(), min, "a Catmull–Rom spline")?;
         let kind = Parameterization::from_alpha(alpha)?;
         if closed {

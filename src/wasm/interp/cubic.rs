@@ -156,8 +156,9 @@ fn build_catmull_rom<C: Cartesian>(
 /// uniform, 0.5 centripetal, 1 chord) and Barry–Goldman tangents
 /// `m_i = (p_i − p_{i−1})/Δ_{i−1} − (p_{i+1} − p_{i−1})/(Δ_{i−1} + Δ_i) + (p_{i+1} − p_i)/Δ_i`;
 /// open ends use the phantoms `2p_0 − p_1` and `2p_n − p_{n−1}`. `closed`: the points are a
-/// cycle (do not repeat the first; at least 3): the spline appends the first point, so
-/// `points()` has one more point than given and `pieceCount` equals the count given.
+/// cycle (at least 3): the spline appends the first point, so `points()` has one more point
+/// than given and `pieceCount` equals the count given (a cycle that already repeats its first
+/// point at the end, with more than 3 points, is taken as it is).
 #[wasm_bindgen(js_name = catmullRom)]
 pub fn catmull_rom(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
