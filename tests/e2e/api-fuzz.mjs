@@ -217,6 +217,8 @@ export async function fuzzApi({ seedValue, iterations }) {
       "cubicSpline",
       "ellipse",
       "ellipseArc",
+      "hermiteBasis",
+      "hermiteBezier",
       "hermiteSpline",
       "jointContinuity",
       "joinBezier",
