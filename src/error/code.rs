@@ -75,6 +75,8 @@ impl Error {
             Error::SchoenbergWhitney { .. } => "schoenberg-whitney",
             Error::TooFewDataPoints { .. } => "too-few-data-points",
             Error::SingularSystem { .. } => "singular-system",
+            Error::ConflictingOptions { .. } => "conflicting-options",
+            Error::KnotsNotClamped { .. } => "knots-not-clamped",
         }
     }
 }

@@ -7,3 +7,13 @@
 //! B-spline interpolation and least-squares approximation of any degree. Every interpolant
 //! converts to the earlier families (Bézier pieces, a B-spline) so drawing, flattening, arc
 //! length and continuity checks reuse them.
+
+pub mod banded;
+pub mod global;
+pub mod least_squares;
+
+pub use global::{
+    interpolate_bspline, interpolation_system, InterpolationOptions, InterpolationSystem, RowKind,
+    MAX_INTERPOLATION_DEGREE, MAX_SYSTEM_SIZE,
+};
+pub use least_squares::approximate_bspline;

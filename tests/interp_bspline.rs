@@ -1,0 +1,541 @@
+//! Global B-spline interpolation, least squares and closed interpolation against independent
+//! expectations: the Croatian notes' worked example solved by hand, the defining equations
+//! (`C(t_i) = p_i`, `C'(t_0) = D_0`, the normal equations, `C^{p−1}` at a closed seam) checked
+//! with the curve's own evaluation and basis, a dense solve written here, and fixtures from
+//! scipy (`tests/fixtures/make_interp_bspline_fixtures.py`). Runs natively and in Node.
+
+mod common;
+
+use common::*;
+use splinelab::interp::global::knots;
+use splinelab::interp::{
+    self, approximate_bspline, interpolate_bspline, interpolation_system, InterpolationOptions,
+    RowKind,
+};
+use splinelab::prelude::*;
+use splinelab::{BSplineCurve, DVec2, DVec3, Error};
+#[cfg(target_arch = "wasm32")]
+use wasm_bindgen_test::wasm_bindgen_test as test;
+
+/// Random increasing parameters (gaps in [0.3, 1.7]) and points in [−10, 10]².
+fn random_data(rng: &mut Rng, count: usize) -> (Vec<DVec2>, Vec<f64>) {
+    let mut t = 0.0;
+    let mut params = Vec::with_capacity(count);
+    let mut points = Vec::with_capacity(count);
+    for _ in 0..count {
+        params.push(t);
+        t += rng.range(0.3, 1.7);
+        points.push(rng.point2(10.0));
+    }
+    (points, params)
+}
+
+fn options2() -> InterpolationOptions<DVec2> {
+    InterpolationOptions::default()
+}
+
+/// The largest coordinate of the points: the scale for relative tolerances.
+fn scale(points: &[DVec2]) -> f64 {
+    points
+        .iter()
+        .fold(1.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()))
+}
+
+// --- The Croatian notes' example (lines 240–300): p = 2, five points at 0..4, a start
+// derivative, knots 0 0 0 1 2 3 4 4 4, six unknowns r_0 … r_5. -------------------------------
+
+fn croatian_data() -> (Vec<DVec2>, Vec<f64>, InterpolationOptions<DVec2>) {
+    let points = pts2(&[(0.0, 0.0), (2.0, 4.0), (4.0, 2.0), (6.0, 6.0), (8.0, 0.0)]);
+    let params = vec![0.0, 1.0, 2.0, 3.0, 4.0];
+    let options = InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]),
+        start_derivative: Some(DVec2::new(2.0, 8.0)),
+        ..options2()
+    };
+    (points, params, options)
+}
+
+#[test]
+fn croatian_example_matrix_is_the_notes_six_by_six() {
+    let (points, params, options) = croatian_data();
+    let s = interpolation_system(&points, 2, &params, &options).unwrap();
+    #[rustfmt::skip]
+    let notes = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+        -2.0, 2.0, 0.0, 0.0, 0.0, 0.0,
+        0.0, 0.5, 0.5, 0.0, 0.0, 0.0,
+        0.0, 0.0, 0.5, 0.5, 0.0, 0.0,
+        0.0, 0.0, 0.0, 0.5, 0.5, 0.0,
+        0.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    assert_eq!(s.size, 6);
+    assert_eq!(s.matrix, notes);
+    assert_eq!(
+        s.rows,
+        [
+            RowKind::Point,
+            RowKind::StartDerivative,
+            RowKind::Point,
+            RowKind::Point,
+            RowKind::Point,
+            RowKind::Point
+        ]
+    );
+    assert_eq!(s.knots, [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0]);
+    assert_eq!(
+        s.rhs,
+        pts2(&[
+            (0.0, 0.0),
+            (2.0, 8.0),
+            (2.0, 4.0),
+            (4.0, 2.0),
+            (6.0, 6.0),
+            (8.0, 0.0)
+        ])
+    );
+}
+
+#[test]
+fn croatian_example_solution_by_hand() {
+    // r_0 = p_0 = (0, 0); −2r_0 + 2r_1 = D_0 = (2, 8) → r_1 = (1, 4);
+    // (r_1 + r_2)/2 = p_1 = (2, 4) → r_2 = (3, 4); (r_2 + r_3)/2 = (4, 2) → r_3 = (5, 0);
+    // (r_3 + r_4)/2 = (6, 6) → r_4 = (7, 12); r_5 = p_4 = (8, 0).
+    let hand = pts2(&[
+        (0.0, 0.0),
+        (1.0, 4.0),
+        (3.0, 4.0),
+        (5.0, 0.0),
+        (7.0, 12.0),
+        (8.0, 0.0),
+    ]);
+    let (points, params, options) = croatian_data();
+    let s = interpolation_system(&points, 2, &params, &options).unwrap();
+    for (i, (&got, &want)) in s.solution.iter().zip(&hand).enumerate() {
+        assert_close2(got, want, 1e-14, &format!("r_{i}"));
+    }
+    let c = interpolate_bspline(&points, 2, &params, &options).unwrap();
+    assert_eq!(c.control_points().len(), 6);
+    for (i, (&got, &want)) in c.control_points().iter().zip(&hand).enumerate() {
+        assert_close2(got, want, 1e-14, &format!("P_{i}"));
+    }
+    assert_close2(
+        c.derivative(0.0, 1).unwrap(),
+        DVec2::new(2.0, 8.0),
+        1e-13,
+        "C'(0)",
+    );
+}
+
+// --- The defining equations on random data. ---------------------------------------------------
+
+#[test]
+fn interpolation_conditions_hold_for_degrees_1_to_10() {
+    let mut rng = Rng::new(7);
+    for p in 1..=10 {
+        for extra in [0, 1, 5, 17] {
+            let (points, params) = random_data(&mut rng, p + 1 + extra);
+            let c = interpolate_bspline(&points, p, &params, &options2()).unwrap();
+            let tol = 1e-12 * scale(&points);
+            for (i, (&t, &q)) in params.iter().zip(&points).enumerate() {
+                assert_close2(
+                    c.evaluate(t).unwrap(),
+                    q,
+                    tol,
+                    &format!("p = {p}, C(t_{i})"),
+                );
+            }
+            assert_eq!(c.domain(), (params[0], *params.last().unwrap()));
+        }
+    }
+}
+
+#[test]
+fn derivative_conditions_hold() {
+    let mut rng = Rng::new(11);
+    for p in 1..=10 {
+        for (start, end) in [(true, false), (false, true), (true, true)] {
+            let count = (p + 1).max(3) + 2;
+            let (points, params) = random_data(&mut rng, count);
+            let d0 = rng.point2(5.0);
+            let d1 = rng.point2(5.0);
+            let options = InterpolationOptions {
+                start_derivative: start.then_some(d0),
+                end_derivative: end.then_some(d1),
+                ..options2()
+            };
+            let c = interpolate_bspline(&points, p, &params, &options).unwrap();
+            let extra = usize::from(start) + usize::from(end);
+            assert_eq!(c.control_points().len(), count + extra, "p = {p}");
+            let tol = 1e-12 * scale(&points).max(5.0);
+            for (i, (&t, &q)) in params.iter().zip(&points).enumerate() {
+                assert_close2(
+                    c.evaluate(t).unwrap(),
+                    q,
+                    tol,
+                    &format!("p = {p}, C(t_{i})"),
+                );
+            }
+            let (a, b) = c.domain();
+            if start {
+                assert_close2(
+                    c.derivative(a, 1).unwrap(),
+                    d0,
+                    tol,
+                    &format!("p = {p} C'(t_0)"),
+                );
+            }
+            if end {
+                assert_close2(
+                    c.derivative(b, 1).unwrap(),
+                    d1,
+                    tol,
+                    &format!("p = {p} C'(t_n)"),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn degree_one_is_the_polyline() {
+    let points = pts2(&[(0.0, 0.0), (1.0, 3.0), (4.0, 1.0), (5.0, 5.0)]);
+    let params = [0.0, 1.0, 3.0, 4.0];
+    let c = interpolate_bspline(&points, 1, &params, &options2()).unwrap();
+    assert_eq!(c.control_points(), points);
+    assert_eq!(c.knots().as_slice(), [0.0, 0.0, 1.0, 3.0, 4.0, 4.0]);
+    assert_close2(
+        c.evaluate(2.0).unwrap(),
+        DVec2::new(2.5, 2.0),
+        1e-15,
+        "C(2)",
+    );
+}
+
+#[test]
+fn works_in_3d() {
+    let points = [
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 2.0, 3.0),
+        DVec3::new(3.0, 1.0, -1.0),
+        DVec3::new(4.0, 4.0, 2.0),
+    ];
+    let params = [0.0, 1.0, 2.5, 3.0];
+    let c = interpolate_bspline(&points, 3, &params, &InterpolationOptions::default()).unwrap();
+    for (&t, &q) in params.iter().zip(&points) {
+        assert_close3(c.evaluate(t).unwrap(), q, 1e-13, "C(t_i)");
+    }
+}
+
+#[test]
+fn default_knots_satisfy_schoenberg_whitney_for_random_params() {
+    // The sites are the params, t_0 repeated for a start derivative and t_n for an end one; the
+    // condition u_i < τ_i < u_{i+p+1} (equal only at a clamped end) is checked here directly.
+    let mut rng = Rng::new(3);
+    for _ in 0..2000 {
+        let p = 1 + (rng.next_u64() % 10) as usize;
+        let start = rng.next_u64().is_multiple_of(2);
+        let end = rng.next_u64().is_multiple_of(2);
+        let d = usize::from(start) + usize::from(end);
+        let count = 2.max(p + 1 - d) + (rng.next_u64() % 8) as usize;
+        let mut params = vec![rng.range(-5.0, 5.0)];
+        for _ in 1..count {
+            // Gaps spanning six orders of magnitude.
+            let gap = 10f64.powf(rng.range(-3.0, 3.0));
+            params.push(params.last().unwrap() + gap);
+        }
+        let u = knots::averaging_knots(&params, p, start, end);
+        let mut sites = params.clone();
+        if start {
+            sites.insert(0, params[0]);
+        }
+        if end {
+            sites.push(params[count - 1]);
+        }
+        assert_eq!(u.len(), sites.len() + p + 1);
+        let (a, b) = (u[p], u[sites.len()]);
+        assert_eq!((a, b), (params[0], params[count - 1]));
+        for (i, &tau) in sites.iter().enumerate() {
+            let lo_ok = u[i] < tau || (u[i] == a && tau == a);
+            let hi_ok = tau < u[i + p + 1] || (u[i + p + 1] == b && tau == b);
+            assert!(
+                lo_ok && hi_ok,
+                "p = {p}, start {start}, end {end}, i = {i}: τ = {tau} vs ({}, {}); knots {u:?}",
+                u[i],
+                u[i + p + 1]
+            );
+        }
+        // Non-decreasing, and no knot repeated more than p + 1 times.
+        assert!(u.windows(2).all(|w| w[0] <= w[1]), "{u:?}");
+        assert!(u.windows(p + 2).all(|w| w[0] < w[p + 1]), "{u:?}");
+    }
+}
+
+#[test]
+fn moderate_random_spacing_solves_for_every_degree() {
+    let mut rng = Rng::new(4);
+    for _ in 0..300 {
+        let p = 1 + (rng.next_u64() % 10) as usize;
+        let start = rng.next_u64().is_multiple_of(2);
+        let end = rng.next_u64().is_multiple_of(2);
+        let d = usize::from(start) + usize::from(end);
+        let count = 2.max(p + 1 - d) + (rng.next_u64() % 8) as usize;
+        let mut params = vec![0.0];
+        for _ in 1..count {
+            let gap = 10f64.powf(rng.range(-0.5, 0.5));
+            params.push(params.last().unwrap() + gap);
+        }
+        let points: Vec<DVec2> = (0..count).map(|_| rng.point2(1.0)).collect();
+        let options = InterpolationOptions {
+            start_derivative: start.then_some(DVec2::new(1.0, 0.0)),
+            end_derivative: end.then_some(DVec2::new(0.0, 1.0)),
+            ..options2()
+        };
+        let c = interpolate_bspline(&points, p, &params, &options).unwrap();
+        for (&t, &q) in params.iter().zip(&points) {
+            assert_close2(c.evaluate(t).unwrap(), q, 1e-10, &format!("p = {p}"));
+        }
+    }
+}
+
+#[test]
+fn schoenberg_whitney_violations_are_refused() {
+    let points = pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 1.0), (4.0, 0.0)]);
+    let params = [0.0, 1.0, 2.0, 3.0, 4.0];
+    // Quadratic, 5 control points, interior knots 0.25 and 0.5: N_1's support (0, 0.5) misses
+    // t_1 = 1.
+    let options = InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 0.25, 0.5, 4.0, 4.0, 4.0]),
+        ..options2()
+    };
+    let e = interpolate_bspline(&points, 2, &params, &options).unwrap_err();
+    assert_eq!(
+        e,
+        Error::SchoenbergWhitney {
+            index: 1,
+            param: 1.0,
+            lo: 0.0,
+            hi: 0.5,
+            degree: 2
+        }
+    );
+    assert!(e.to_string().contains("singular"), "{e}");
+    // Knots of the wrong count.
+    let options = InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 0.0, 4.0, 4.0, 4.0, 4.0]),
+        ..options2()
+    };
+    let e = interpolate_bspline(&points, 3, &params, &options).unwrap_err();
+    assert!(matches!(e, Error::KnotCount { expected: 9, .. }), "{e:?}");
+}
+
+// --- Least squares. ---------------------------------------------------------------------------
+
+#[test]
+fn least_squares_with_every_point_is_the_interpolant() {
+    let mut rng = Rng::new(5);
+    for p in 1..=5 {
+        let (points, params) = random_data(&mut rng, p + 6);
+        let fit = approximate_bspline(&points, p, points.len(), &params, None).unwrap();
+        let interp = interpolate_bspline(&points, p, &params, &options2()).unwrap();
+        assert_eq!(fit.knots(), interp.knots());
+        let tol = 1e-11 * scale(&points);
+        for (a, b) in fit.control_points().iter().zip(interp.control_points()) {
+            assert_close2(*a, b, tol, &format!("p = {p}"));
+        }
+    }
+}
+
+#[test]
+fn least_squares_ends_are_exact_and_the_residual_is_orthogonal() {
+    let mut rng = Rng::new(9);
+    for p in 1..=6 {
+        for count in [p + 1, p + 2, p + 5] {
+            let (points, params) = random_data(&mut rng, p + 12);
+            let c = approximate_bspline(&points, p, count, &params, None).unwrap();
+            let cp = c.control_points();
+            assert_eq!(cp.len(), count);
+            let m = points.len() - 1;
+            assert_eq!(cp[0], points[0]);
+            assert_eq!(cp[count - 1], points[m]);
+            assert_close2(c.evaluate(params[m]).unwrap(), points[m], 1e-12, "end");
+            // Normal equations: Σ_k N_i(t_k) (C(t_k) − Q_k) = 0 for each interior unknown i.
+            let mut sums = vec![DVec2::ZERO; count];
+            let mut weights = vec![0.0f64; count];
+            for k in 1..m {
+                let basis = c.basis(params[k]).unwrap();
+                let r = c.evaluate(params[k]).unwrap() - points[k];
+                for (i, &b) in basis.iter().enumerate() {
+                    sums[i] += r * b;
+                    weights[i] += b.abs() * r.length();
+                }
+            }
+            for i in 1..count - 1 {
+                assert!(
+                    sums[i].length() <= 1e-11 * (1.0 + weights[i]) * scale(&points),
+                    "p = {p}, count {count}: (Nᵀ(NP − R))_{i} = {}",
+                    sums[i]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn least_squares_count_out_of_range_is_refused() {
+    let mut rng = Rng::new(1);
+    let (points, params) = random_data(&mut rng, 6);
+    for count in [3, 7] {
+        let e = approximate_bspline(&points, 3, count, &params, None).unwrap_err();
+        assert_eq!(
+            e,
+            Error::ControlCountOutOfRange {
+                count,
+                min: 4,
+                max: 6
+            }
+        );
+    }
+}
+
+// --- Closed curves. -----------------------------------------------------------------------------
+
+fn closed_data(rng: &mut Rng, distinct: usize) -> (Vec<DVec2>, Vec<f64>) {
+    let (mut points, mut params) = random_data(rng, distinct + 1);
+    points[distinct] = points[0];
+    params[distinct] = params[distinct - 1] + 1.0;
+    (points, params)
+}
+
+#[test]
+fn closed_curves_interpolate_and_join_with_c_p_minus_1() {
+    let mut rng = Rng::new(21);
+    for p in 1..=10 {
+        for distinct in [p.max(2), p + 3, 2 * p + 9] {
+            let (points, params) = closed_data(&mut rng, distinct);
+            let options = InterpolationOptions {
+                closed: true,
+                ..options2()
+            };
+            let c = interpolate_bspline(&points, p, &params, &options).unwrap();
+            assert_eq!(c.wrapped(), p);
+            let (a, b) = c.domain();
+            assert_eq!((a, b), (params[0], params[distinct]));
+            let tol = 1e-11 * scale(&points);
+            for (i, (&t, &q)) in params.iter().zip(&points).enumerate() {
+                assert_close2(
+                    c.evaluate(t).unwrap(),
+                    q,
+                    tol,
+                    &format!("p = {p}, C(t_{i})"),
+                );
+            }
+            for order in 1..p {
+                let (d0, d1) = (
+                    c.derivative(a, order).unwrap(),
+                    c.derivative(b, order).unwrap(),
+                );
+                let size = d0.length().max(d1.length()).max(1.0);
+                assert_close2(
+                    d0,
+                    d1,
+                    1e-9 * size,
+                    &format!("p = {p}, N = {distinct}: C^({order}) at the seam"),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn closed_needs_the_last_point_equal_to_the_first() {
+    let points = pts2(&[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (0.0, 1e-9)]);
+    let options = InterpolationOptions {
+        closed: true,
+        ..options2()
+    };
+    let e = interpolate_bspline(&points, 3, &[0.0, 1.0, 2.0, 3.0, 4.0], &options).unwrap_err();
+    assert_eq!(e, Error::NotClosed { last: 4 });
+}
+
+// --- The banded solve against a dense solve written here. -------------------------------------
+
+/// Gaussian elimination with partial pivoting on a dense matrix (rows `n × n`, one right side).
+fn dense_solve(mut a: Vec<f64>, mut b: Vec<f64>, n: usize) -> Vec<f64> {
+    for c in 0..n {
+        let r = (c..n)
+            .max_by(|&x, &y| a[x * n + c].abs().total_cmp(&a[y * n + c].abs()))
+            .unwrap();
+        for j in 0..n {
+            a.swap(c * n + j, r * n + j);
+        }
+        b.swap(c, r);
+        for r in c + 1..n {
+            let f = a[r * n + c] / a[c * n + c];
+            for j in c..n {
+                a[r * n + j] -= f * a[c * n + j];
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    let mut x = vec![0.0; n];
+    for i in (0..n).rev() {
+        let s: f64 = (i + 1..n).map(|j| a[i * n + j] * x[j]).sum();
+        x[i] = (b[i] - s) / a[i * n + i];
+    }
+    x
+}
+
+#[test]
+fn banded_solve_matches_a_dense_solve() {
+    let mut rng = Rng::new(13);
+    for p in 1..=7 {
+        for closed in [false, true] {
+            let (points, params) = if closed {
+                closed_data(&mut rng, p + 8)
+            } else {
+                random_data(&mut rng, p + 8)
+            };
+            let options = InterpolationOptions {
+                start_derivative: (!closed).then_some(DVec2::new(3.0, -1.0)),
+                end_derivative: (!closed && p > 1).then_some(DVec2::new(-2.0, 2.0)),
+                closed,
+                ..options2()
+            };
+            let s = interpolation_system(&points, p, &params, &options).unwrap();
+            for k in 0..2 {
+                let rhs: Vec<f64> = s.rhs.iter().map(|v| v.to_array()[k]).collect();
+                let x = dense_solve(s.matrix.clone(), rhs, s.size);
+                for (i, (&xi, sol)) in x.iter().zip(&s.solution).enumerate() {
+                    assert_close(
+                        sol.to_array()[k],
+                        xi,
+                        1e-11 * (1.0 + xi.abs()),
+                        &format!("p = {p}, closed {closed}: x_{i}[{k}]"),
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn system_above_64_unknowns_is_too_large() {
+    let mut rng = Rng::new(2);
+    let (points, params) = random_data(&mut rng, 65);
+    let e = interpolation_system(&points, 3, &params, &options2()).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::TooLarge {
+                value: 65,
+                max: 64,
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    assert!(interp::interpolate_bspline(&points, 3, &params, &options2()).is_ok());
+}
+
+#[allow(dead_code)]
+fn unused(_: BSplineCurve<DVec2>) {}
