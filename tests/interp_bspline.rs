@@ -539,3 +539,123 @@ fn system_above_64_unknowns_is_too_large() {
 
 #[allow(dead_code)]
 fn unused(_: BSplineCurve<DVec2>) {}
+
+// --- scipy fixtures (tests/fixtures/make_interp_bspline_fixtures.py). ---------------------------
+
+/// One fixture case as read from the file.
+#[derive(Default)]
+struct Case {
+    kind: String,
+    degree: usize,
+    count: usize,
+    params: Vec<f64>,
+    points: Vec<DVec2>,
+    derivs: Vec<f64>,
+    knots: Vec<f64>,
+    control: Vec<DVec2>,
+    values: Vec<(f64, DVec2)>,
+}
+
+impl Case {
+    /// Our curve for the case, with default knots (the fixture's knots were computed by the
+    /// script from the same rules, or by scipy for periodic curves).
+    fn ours(&self) -> BSplineCurve<DVec2> {
+        let (p, d) = (self.degree, &self.derivs);
+        let start = matches!(self.kind.as_str(), "start" | "both").then(|| DVec2::new(d[0], d[1]));
+        let end = matches!(self.kind.as_str(), "end" | "both").then(|| DVec2::new(d[2], d[3]));
+        if self.kind == "lsq" {
+            return approximate_bspline(&self.points, p, self.count, &self.params, None).unwrap();
+        }
+        let options = InterpolationOptions {
+            start_derivative: start,
+            end_derivative: end,
+            closed: self.kind == "periodic",
+            ..options2()
+        };
+        interpolate_bspline(&self.points, p, &self.params, &options).unwrap()
+    }
+
+    fn check(&self) -> usize {
+        let what = format!("{} p = {} count {}", self.kind, self.degree, self.count);
+        let c = self.ours();
+        let size = scale(&self.points).max(scale(&self.control));
+        let knots = c.knots().as_slice();
+        assert_eq!(knots.len(), self.knots.len(), "{what}: knots");
+        // scipy makes a periodic linear spline as the open polyline (knots x_0, x…, x_n, its
+        // special case for k = 1); only the two outermost knots differ from the periodic ones,
+        // and they do not act on the domain.
+        let outer = usize::from(self.kind == "periodic" && self.degree == 1);
+        let inner = outer..knots.len() - outer;
+        for (i, (&a, &b)) in knots[inner.clone()]
+            .iter()
+            .zip(&self.knots[inner])
+            .enumerate()
+        {
+            assert_close(
+                a,
+                b,
+                1e-13 * (1.0 + b.abs()),
+                &format!("{what}: u_{}", i + outer),
+            );
+        }
+        let cp = c.control_points();
+        assert_eq!(cp.len(), self.control.len(), "{what}: control points");
+        for (i, (&a, &b)) in cp.iter().zip(&self.control).enumerate() {
+            assert_close2(a, b, 1e-12 * size, &format!("{what}: P_{i}"));
+        }
+        for &(u, v) in &self.values {
+            assert_close2(
+                c.evaluate(u).unwrap(),
+                v,
+                1e-12 * size,
+                &format!("{what}: C({u})"),
+            );
+        }
+        cp.len() + self.values.len()
+    }
+}
+
+#[test]
+fn fixtures_from_scipy_make_interp_spline_and_numpy_least_squares() {
+    let text = include_str!("fixtures/interp_bspline_scipy.txt");
+    let mut cases: Vec<Case> = Vec::new();
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
+        let mut words = line.split_whitespace();
+        let tag = words.next().unwrap();
+        if tag == "case" {
+            let kind = words.next().unwrap().to_string();
+            let degree = words.next().unwrap().parse().unwrap();
+            let count = words.next().unwrap().parse().unwrap();
+            cases.push(Case {
+                kind,
+                degree,
+                count,
+                ..Case::default()
+            });
+            continue;
+        }
+        let nums: Vec<f64> = words.map(|w| w.parse().unwrap()).collect();
+        let case = cases.last_mut().unwrap();
+        let pairs =
+            |v: &[f64]| -> Vec<DVec2> { v.chunks(2).map(|c| DVec2::new(c[0], c[1])).collect() };
+        match tag {
+            "params" => case.params = nums,
+            "points" => case.points = pairs(&nums),
+            "derivs" => case.derivs = nums,
+            "knots" => case.knots = nums,
+            "control" => case.control = pairs(&nums),
+            "value" => case.values.push((nums[0], DVec2::new(nums[1], nums[2]))),
+            other => panic!("unknown fixture line {other}"),
+        }
+    }
+    let kinds: std::collections::BTreeSet<&str> = cases.iter().map(|c| c.kind.as_str()).collect();
+    assert_eq!(
+        kinds.into_iter().collect::<Vec<_>>(),
+        ["both", "end", "interp", "lsq", "periodic", "start"]
+    );
+    let checked: usize = cases.iter().map(Case::check).sum();
+    assert!(checked > 1000, "only {checked} fixture values");
+}
