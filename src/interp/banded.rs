@@ -93,9 +93,7 @@ impl AlmostBanded {
     pub fn add(&mut self, i: usize, j: usize, value: f64) -> bool {
         match self.slot(i, j) {
             Some((true, s)) => self.edge[s] += value,
-            Some((false, s)) if j + self.lower <= i + self.lower + self.upper => {
-                self.band[s] += value
-            }
+            Some((false, s)) if j <= i + self.upper => self.band[s] += value,
             _ => return false,
         }
         true

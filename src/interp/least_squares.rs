@@ -12,7 +12,7 @@
 
 use super::banded::SymmetricBanded;
 use super::global::knots::{check_schoenberg_whitney_subsequence, least_squares_knots};
-use super::global::{check_interpolation_degree, check_params, check_points};
+use super::global::{check_interpolation_degree, check_params, check_point_cap, check_points};
 use crate::bspline::{basis_functions, BSplineCurve, BasisScratch, KnotVector};
 use crate::error::{Error, Result};
 use crate::geom::Cartesian;
@@ -23,6 +23,7 @@ use crate::geom::Cartesian;
 ///
 /// # Errors
 /// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
+/// [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`] points,
 /// [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors ([`Error::ParamCount`],
 /// [`Error::NotFinite`], [`Error::ParamsNotIncreasing`]), [`Error::ControlCountOutOfRange`]
 /// (`count` outside `[p + 1, m + 1]`), the errors of [`KnotVector::new`] for `count` control
@@ -37,6 +38,7 @@ pub fn approximate_bspline<C: Cartesian>(
 ) -> Result<BSplineCurve<C>> {
     check_points(points)?;
     check_interpolation_degree(degree)?;
+    check_point_cap(points.len())?;
     let p = degree;
     let needed = 2.max(p + 1);
     if points.len() < needed {

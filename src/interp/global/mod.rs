@@ -24,6 +24,10 @@ use system::Collocation;
 /// The highest degree interpolation and least squares accept (the syllabus' 1–10).
 pub const MAX_INTERPOLATION_DEGREE: usize = 10;
 
+/// The most data points interpolation and least squares accept: the banded factor takes up to
+/// `(3p + 1)·8` bytes per row (248 MB at this cap for `p = 10`), inside wasm's 4 GB.
+pub const MAX_INTERPOLATION_POINTS: usize = 1 << 20;
+
 /// The largest system [`interpolation_system`] writes out dense.
 pub const MAX_SYSTEM_SIZE: usize = 64;
 
@@ -82,7 +86,8 @@ const WHAT: &str = "the B-spline interpolation system";
 ///
 /// # Errors
 /// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooFewDataPoints`] (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
+/// [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points, [`Error::TooFewDataPoints`]
+/// (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
 /// [`Error::ParamCount`], [`Error::NotFinite`] (params), [`Error::ParamsNotIncreasing`],
 /// [`Error::ConflictingOptions`] (closed with derivatives or knots), [`Error::NotFinite`]
 /// (derivatives), [`Error::NotClosed`], the knot errors of [`KnotVector::new`], a parameter
@@ -141,6 +146,7 @@ pub(crate) fn check_data<C: Cartesian>(
 ) -> Result<()> {
     check_points(points)?;
     check_interpolation_degree(degree)?;
+    check_point_cap(points.len())?;
     let (needed, what) = if closed {
         (
             3.max(degree + 1),
@@ -157,6 +163,18 @@ pub(crate) fn check_data<C: Cartesian>(
             needed,
             got: points.len(),
             what,
+        });
+    }
+    Ok(())
+}
+
+/// Checks the number of data points against [`MAX_INTERPOLATION_POINTS`] ([`Error::TooLarge`]).
+pub(crate) fn check_point_cap(count: usize) -> Result<()> {
+    if count > MAX_INTERPOLATION_POINTS {
+        return Err(Error::TooLarge {
+            what: "number of data points",
+            value: count,
+            max: MAX_INTERPOLATION_POINTS,
         });
     }
     Ok(())
