@@ -246,6 +246,25 @@ pub(crate) fn check_params_in_domain(params: &[f64], knots: &KnotVector) -> Resu
     Ok(())
 }
 
+/// The first option `closed` excludes, with the reason.
+fn conflict_with_closed<C>(
+    options: &InterpolationOptions<C>,
+) -> Option<(&'static str, &'static str)> {
+    const NO_ENDS: &str = "a closed curve has no ends";
+    if options.start_derivative.is_some() {
+        Some(("startDerivative", NO_ENDS))
+    } else if options.end_derivative.is_some() {
+        Some(("endDerivative", NO_ENDS))
+    } else if options.knots.is_some() {
+        Some((
+            "knots",
+            "a closed curve's knots are the periodic ones computed from the params",
+        ))
+    } else {
+        None
+    }
+}
+
 /// A validated interpolation problem: knots, rows and right sides.
 struct Setup {
     knots: KnotVector,
@@ -266,20 +285,11 @@ impl Setup {
         check_data(points, degree, derivatives, options.closed)?;
         check_params(params, points.len())?;
         if options.closed {
-            let conflict = if options.start_derivative.is_some() {
-                Some("startDerivative")
-            } else if options.end_derivative.is_some() {
-                Some("endDerivative")
-            } else if options.knots.is_some() {
-                Some("knots")
-            } else {
-                None
-            };
-            if let Some(first) = conflict {
+            if let Some((first, reason)) = conflict_with_closed(options) {
                 return Err(Error::ConflictingOptions {
                     first,
                     second: "closed",
-                    reason: "a closed curve has no ends, and its knots are periodic (computed)",
+                    reason,
                 });
             }
             return closed::setup(points, degree, params);
