@@ -237,6 +237,27 @@ fn errors_name_the_value() {
         closed
     ))
     .contains("point 4"));
+    assert_eq!(
+        message(approximate_bspline(
+            arr(&POINTS[..4]),
+            2.0,
+            3.0,
+            4.0,
+            arr(&PARAMS[..2]),
+            JsValue::UNDEFINED
+        )),
+        "a least-squares B-spline of this degree (p + 1, at least 2) needs at least 4 data points, got 2"
+    );
+    assert_eq!(
+        message(interpolate_bspline(
+            arr(&POINTS[..4]),
+            2.0,
+            3.0,
+            arr(&PARAMS[..2]),
+            JsValue::UNDEFINED
+        )),
+        "an interpolating B-spline of this degree (p + 1 − end derivatives, at least 2) needs at least 4 data points, got 2"
+    );
 }
 
 #[test]
