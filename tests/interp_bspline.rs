@@ -903,3 +903,25 @@ fn least_squares_in_3d_with_two_control_points_is_the_chord() {
     let c = approximate_bspline(&points, 1, 2, &[0.0, 1.0, 2.0, 3.0], None).unwrap();
     assert_eq!(c.control_points(), vec![points[0], points[3]]);
 }
+
+#[test]
+fn least_squares_default_knots_leave_a_parameter_for_every_basis_function() {
+    // NURBS Book eq. 9.69 puts a parameter in every knot span, so some increasing choice of
+    // parameters satisfies Schoenberg–Whitney and the normal equations are positive definite.
+    let mut rng = Rng::new(23);
+    for _ in 0..2000 {
+        let p = 1 + (rng.next_u64() % 10) as usize;
+        let points = p + 1 + (rng.next_u64() % 30) as usize;
+        let count = p + 1 + (rng.next_u64() % (points - p) as u64) as usize;
+        let mut params = vec![0.0];
+        for _ in 1..points {
+            let gap = 10f64.powf(rng.range(-2.0, 2.0));
+            params.push(params.last().unwrap() + gap);
+        }
+        let u = knots::least_squares_knots(&params, p, count);
+        assert_eq!(u.len(), count + p + 1);
+        assert!(u.windows(2).all(|w| w[0] <= w[1]), "{u:?}");
+        knots::check_schoenberg_whitney_subsequence(&u, p, count, &params)
+            .unwrap_or_else(|e| panic!("p = {p}, {points} points, count {count}: {e}"));
+    }
+}
