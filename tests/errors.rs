@@ -708,6 +708,67 @@ fn cubic_lagrange_too_large() {
     );
 }
 
+// --- Global B-spline interpolation and least squares (interp::global, interp::least_squares).
+
+/// Five points at 0..4 for the interpolation variants.
+fn interp_data() -> (Vec<DVec2>, Vec<f64>) {
+    (
+        pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 1.0), (4.0, 0.0)]),
+        vec![0.0, 1.0, 2.0, 3.0, 4.0],
+    )
+}
+
+#[test]
+fn control_count_out_of_range() {
+    let (points, params) = interp_data();
+    fails(
+        splinelab::interp::approximate_bspline(&points, 3, 6, &params, None),
+        "control-count-out-of-range",
+        &["count = 6 control points", "[4, 5]"],
+    );
+}
+
+#[test]
+fn schoenberg_whitney() {
+    let (points, params) = interp_data();
+    let options = splinelab::interp::InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 0.25, 0.5, 4.0, 4.0, 4.0]),
+        ..Default::default()
+    };
+    fails(
+        splinelab::interp::interpolate_bspline(&points, 2, &params, &options),
+        "schoenberg-whitney",
+        &["singular", "t_1 = 1", "(u_1, u_4) = (0, 0.5)", "N_1,2"],
+    );
+}
+
+#[test]
+fn conflicting_options() {
+    let (mut points, params) = interp_data();
+    points[4] = points[0];
+    let options = splinelab::interp::InterpolationOptions {
+        closed: true,
+        start_derivative: Some(DVec2::new(1.0, 0.0)),
+        ..Default::default()
+    };
+    fails(
+        splinelab::interp::interpolate_bspline(&points, 2, &params, &options),
+        "conflicting-options",
+        &["startDerivative cannot be combined with closed"],
+    );
+}
+
+#[test]
+fn knots_not_clamped() {
+    let (points, params) = interp_data();
+    let knots = [0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 4.0];
+    fails(
+        splinelab::interp::approximate_bspline(&points, 2, 5, &params, Some(&knots)),
+        "knots-not-clamped",
+        &["first p+1 = 3 knots must equal 0"],
+    );
+}
+
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {

@@ -92,6 +92,14 @@ impl<C: Cartesian> BSplineCurve<C> {
         Ok(curve)
     }
 
+    /// Marks the last `wrap` control points as copies of the first `wrap` (which the caller has
+    /// made equal, with knots whose gaps repeat with the period): a closed curve built by
+    /// periodic interpolation, whose edits then keep the copies equal.
+    pub(crate) fn with_wrapped(mut self, wrap: usize) -> Self {
+        self.wrap = wrap.min(self.homogeneous.len() / 2);
+        self
+    }
+
     /// Degree `p`.
     pub fn degree(&self) -> usize {
         self.knots.degree()

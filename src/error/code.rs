@@ -76,6 +76,8 @@ impl Error {
             Error::TooFewDataPoints { .. } => "too-few-data-points",
             Error::SingularSystem { .. } => "singular-system",
             Error::SplineKind { .. } => "spline-kind",
+            Error::ConflictingOptions { .. } => "conflicting-options",
+            Error::KnotsNotClamped { .. } => "knots-not-clamped",
         }
     }
 }

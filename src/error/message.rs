@@ -392,6 +392,17 @@ impl fmt::Display for Error {
                 f,
                 "{operation} works on splines built by {needs}; this one was built by {got}"
             ),
+            Error::ConflictingOptions {
+                first,
+                second,
+                reason,
+            } => write!(f, "{first} cannot be combined with {second}: {reason}"),
+            Error::KnotsNotClamped { end, param, degree } => write!(
+                f,
+                "a least-squares fit with exact ends needs clamped knots: the {end} p+1 = {} knots must equal {}",
+                degree + 1,
+                Num(*param)
+            ),
         }
     }
 }

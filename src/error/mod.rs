@@ -541,6 +541,27 @@ pub enum Error {
         /// The construction of this spline ("cubicSpline").
         got: &'static str,
     },
+    /// Two options that exclude each other were both given: `closed` with `startDerivative`
+    /// (a closed curve has no ends) in `interp::interpolate_bspline`.
+    ConflictingOptions {
+        /// The first option.
+        first: &'static str,
+        /// The option it cannot be combined with.
+        second: &'static str,
+        /// Why ("a closed curve has no ends").
+        reason: &'static str,
+    },
+    /// A least-squares fit whose ends are interpolated needs clamped knots: the first `p + 1`
+    /// knots equal to `t_0` and the last `p + 1` equal to `t_m`
+    /// (`interp::approximate_bspline` with explicit knots `0 0 1 2 …` for degree 2).
+    KnotsNotClamped {
+        /// `"first"` or `"last"`.
+        end: &'static str,
+        /// The end parameter the knots must equal (`t_0` or `t_m`).
+        param: f64,
+        /// The degree `p`.
+        degree: usize,
+    },
 }
 
 impl std::error::Error for Error {

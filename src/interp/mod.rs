@@ -24,3 +24,12 @@ pub use lagrange::{LagrangeCurve, MAX_LAGRANGE_POINTS};
 pub use params::{check_params, check_point_count, ParamChoice};
 pub use tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
 pub use tridiagonal::{solve_cyclic, solve_tridiagonal, Tridiagonal};
+pub mod banded;
+pub mod global;
+pub mod least_squares;
+
+pub use global::{
+    interpolate_bspline, interpolation_system, InterpolationOptions, InterpolationSystem, RowKind,
+    MAX_INTERPOLATION_DEGREE, MAX_INTERPOLATION_POINTS, MAX_SYSTEM_SIZE,
+};
+pub use least_squares::approximate_bspline;

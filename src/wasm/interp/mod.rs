@@ -1,11 +1,13 @@
 //! The interpolation family (syllabus §5) for JavaScript.
 
 mod cubic;
+mod global;
 mod hermite;
 mod lagrange;
 mod spline;
 
 pub use cubic::{bessel_spline, cardinal_spline, catmull_rom, cubic_spline, hermite_spline};
+pub use global::{approximate_bspline, bspline_interpolation_system, interpolate_bspline};
 pub use hermite::{hermite_basis_js, hermite_bezier};
 pub use lagrange::{lagrange, JsLagrangeCurve};
 pub use spline::JsCubicSpline;
@@ -35,6 +37,17 @@ impl ParamArg {
         } else {
             Ok(ParamArg::Values(super::numbers("params", value)?))
         }
+    }
+
+    /// The parameters for `points` (checked by [`crate::interp::check_params`], or computed by
+    /// `parameterize`), for the functions that keep no recipe (the B-spline fits).
+    fn resolve<P: Point>(&self, points: &[P]) -> Result<Vec<f64>, Error> {
+        match self {
+            ParamArg::Values(v) => ParamChoice::Given(v.clone()),
+            ParamArg::Kind(s) => ParamChoice::Spacing(Parameterization::parse(s)?),
+            ParamArg::Alpha(a) => ParamChoice::Spacing(Parameterization::from_alpha(*a)?),
+        }
+        .resolve(points)
     }
 
     /// The parameter choice (errors for an unknown kind or α outside [0, 1]).

@@ -1,0 +1,144 @@
+//! Least-squares B-spline approximation with the ends interpolated (NURBS Book §9.4.1): the
+//! curve of degree `p` with `n + 1` control points that passes through the first and last data
+//! point and comes closest to the others in the sum of squared distances.
+//!
+//! With data `Q_0 … Q_m` at parameters `t_0 … t_m`, `P_0 = Q_0` and `P_n = Q_m` (clamped knots),
+//! `R_k = Q_k − N_{0,p}(t_k) Q_0 − N_{n,p}(t_k) Q_m` for `k = 1..m−1`, and the interior control
+//! points `P_1 … P_{n−1}` minimise `Σ_k |R_k − Σ_i N_{i,p}(t_k) P_i|²`: the normal equations
+//! `(Nᵀ N) P = Nᵀ R` with `N_{ki} = N_{i,p}(t_k)` (`k = 1..m−1`, `i = 1..n−1`). `Nᵀ N` is
+//! symmetric, banded (`|i − j| ≤ p`) and positive definite when the Schoenberg–Whitney
+//! condition holds for some subsequence of the parameters, so banded Cholesky solves it in
+//! O(m·p² + n·p²). Default knots by eq. 9.68–9.69 ([`super::global::knots`]).
+
+use super::banded::SymmetricBanded;
+use super::global::knots::{check_schoenberg_whitney_subsequence, least_squares_knots};
+use super::global::{check_interpolation_degree, check_params, check_point_cap, check_points};
+use crate::bspline::{basis_functions, BSplineCurve, BasisScratch, KnotVector};
+use crate::error::{Error, Result};
+use crate::geom::Cartesian;
+
+/// The least-squares B-spline with `count` control points through the first and last of
+/// `points` (see the module doc); `knots` (optional) must be clamped at `t_0` and `t_m`.
+/// With `count` equal to the number of points it is the interpolant with averaging knots.
+///
+/// # Errors
+/// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
+/// [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`] points,
+/// [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors ([`Error::ParamCount`],
+/// [`Error::NotFinite`], [`Error::ParamsNotIncreasing`]), [`Error::ControlCountOutOfRange`]
+/// (`count` outside `[p + 1, m + 1]`), the errors of [`KnotVector::new`] for `count` control
+/// points, [`Error::KnotsNotClamped`], [`Error::SchoenbergWhitney`] (no parameter for some
+/// basis function), and [`Error::SingularSystem`] from Cholesky.
+pub fn approximate_bspline<C: Cartesian>(
+    points: &[C],
+    degree: usize,
+    count: usize,
+    params: &[f64],
+    knots: Option<&[f64]>,
+) -> Result<BSplineCurve<C>> {
+    check_fit_data(points, degree)?;
+    let p = degree;
+    check_params(params, points.len())?;
+    if count < p + 1 || count > points.len() {
+        return Err(Error::ControlCountOutOfRange {
+            count,
+            min: p + 1,
+            max: points.len(),
+        });
+    }
+    let m = points.len() - 1;
+    let n = count - 1;
+    let knots = match knots {
+        Some(k) => {
+            let knots = KnotVector::new(k.to_vec(), p, count)?;
+            check_clamped(knots.as_slice(), p, params[0], params[m])?;
+            check_schoenberg_whitney_subsequence(knots.as_slice(), p, count, params)?;
+            knots
+        }
+        None => KnotVector::new(least_squares_knots(params, p, count), p, count)?,
+    };
+    let (first, last) = (points[0], points[m]);
+    let mut control = vec![C::ZERO; count];
+    control[0] = first;
+    control[n] = last;
+    if n >= 2 {
+        let unknowns = n - 1;
+        let dim = C::DIM;
+        let mut normal = SymmetricBanded::new(unknowns, p);
+        let mut rhs = vec![0.0; unknowns * dim];
+        let mut basis = vec![0.0; p + 1];
+        let mut scratch = BasisScratch::default();
+        let mut span = p;
+        for k in 1..m {
+            let t = params[k];
+            span = knots.span_from(t, span);
+            basis_functions(knots.as_slice(), span, t, p, &mut basis, &mut scratch, None);
+            let lo = span - p;
+            // R_k = Q_k − N_0(t_k) Q_0 − N_n(t_k) Q_m.
+            let mut r = points[k];
+            for (j, &b) in basis.iter().enumerate() {
+                if lo + j == 0 {
+                    r = r - first * b;
+                } else if lo + j == n {
+                    r = r - last * b;
+                }
+            }
+            for (a, &ba) in basis.iter().enumerate() {
+                let i = lo + a;
+                if i == 0 || i == n || ba == 0.0 {
+                    continue;
+                }
+                for c in 0..dim {
+                    rhs[(i - 1) * dim + c] += ba * r.coord(c);
+                }
+                for (b, &bb) in basis.iter().enumerate().skip(a) {
+                    let j = lo + b;
+                    if j != 0 && j != n {
+                        normal.add(i - 1, j - 1, ba * bb);
+                    }
+                }
+            }
+        }
+        normal.solve_cholesky(&mut rhs, dim, "the least-squares normal equations")?;
+        for (i, chunk) in rhs.chunks(dim).enumerate() {
+            control[i + 1] = C::from_slice(chunk);
+        }
+    }
+    BSplineCurve::new(control, p, knots.as_slice().to_vec(), None)
+}
+
+/// The checks on the data before the parameters: finite coordinates, the degree, the number
+/// of points (at most [`super::MAX_INTERPOLATION_POINTS`], at least `max(2, p + 1)`).
+pub(crate) fn check_fit_data<C: Cartesian>(points: &[C], degree: usize) -> Result<()> {
+    check_points(points)?;
+    check_interpolation_degree(degree)?;
+    check_point_cap(points.len())?;
+    let needed = 2.max(degree + 1);
+    if points.len() < needed {
+        return Err(Error::TooFewDataPoints {
+            needed,
+            got: points.len(),
+            what: "a least-squares B-spline of this degree (p + 1, at least 2)",
+        });
+    }
+    Ok(())
+}
+
+/// Checks the first `p + 1` knots equal `a = t_0` and the last `p + 1` equal `b = t_m`.
+fn check_clamped(knots: &[f64], p: usize, a: f64, b: f64) -> Result<()> {
+    if knots[..=p].iter().any(|&u| u != a) {
+        return Err(Error::KnotsNotClamped {
+            end: "first",
+            param: a,
+            degree: p,
+        });
+    }
+    if knots[knots.len() - p - 1..].iter().any(|&u| u != b) {
+        return Err(Error::KnotsNotClamped {
+            end: "last",
+            param: b,
+            degree: p,
+        });
+    }
+    Ok(())
+}
