@@ -38,6 +38,7 @@ import {
 import { drawCornerLegend, LEGEND_ROW_PX } from "../lib/legend.js";
 import { SECOND_CURVE, HELPER_DASH, themed } from "../lib/theme.js";
 import { replaceOrReport } from "../lib/wasm.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { BasisPlotPointer, followHighlight } from "../lib/basis-plot.js";
 import { SignedBasisPlot } from "../lib/signed-basis-plot.js";
 import { PARAM_KINDS, withTIn } from "../lib/data-params.js";
@@ -293,7 +294,9 @@ export function draw(r, v, s, d) {
   placer.points = s.points;
   if (s.construction) {
     drawExtensions(r, v, d.triangle, fitIn(d).params, s.t, n);
-    const named = n <= LABEL_LEVELS_MAX_DEGREE ? labels : null;
+    // On a phone the labels crowd: the table names every point.
+    const narrow = v.width < NARROW_CANVAS_PX * r.scale;
+    const named = n <= LABEL_LEVELS_MAX_DEGREE && !narrow ? labels : null;
     drawLevels(r, v, d.triangle, n, centre, named, placer);
   }
   d.handles.draw(r, v);
@@ -305,6 +308,10 @@ export function draw(r, v, s, d) {
   const radius = theme.pointOnCurve.radius * r.scale;
   const text = t("lagrange.pointLabel");
   placer.place(r, v, d.triangle, n, n, 0, text, centre, theme.labelPoint, radius, s.points);
+  // The key's band (the figure's top inset) covers whatever runs into it: a wild polynomial.
+  r.beginPath();
+  r.rect(0, 0, r.width, LEGEND_BAND * r.scale);
+  r.paint(theme.plotBackground);
   drawCornerLegend(r, LEGEND);
   drawPlot(r, s, d);
 }

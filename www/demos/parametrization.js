@@ -36,6 +36,7 @@ import { SpeedPlot } from "../lib/speed-plot.js";
 import { ParametrizationTable, parametrizationFormula } from "../lib/parametrization-text.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { replaceOrReport } from "../lib/wasm.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 
 export const id = "parametrization";
 export const strings = "parametrization";
@@ -58,11 +59,15 @@ const ALPHA_STEP = 0.01;
 /** Fitting room for labels and overshoots (fractions of the points' box). */
 const ROOM_X = 0.1;
 const ROOM_Y = 0.2;
-/** The key: two columns of two rows in the top-left corner (CSS px). */
+/**
+ * The key in the top-left corner (CSS px): two columns of two rows, the second column closer on
+ * a phone-width canvas (below NARROW_CANVAS_PX).
+ */
 const LEGEND_X = 12;
 const LEGEND_Y = 16;
 const LEGEND_ROW = 21;
 const LEGEND_COLUMN = 230;
+const LEGEND_COLUMN_NARROW = 178;
 const LEGEND_BAND = 2 * LEGEND_ROW + 10;
 /** A press in the plot snaps to s = 0, 1/16, …, 1 within this many CSS px. */
 const SNAP_PX = 5;
@@ -283,9 +288,10 @@ export function draw(r, v, s, d) {
   }
   d.handles.draw(r, v);
   for (let c = 0; c < shown; c++) r.point(v.sx(d.at[c][0]), v.sy(d.at[c][1]), points[c]);
-  const column = Math.min(LEGEND_COLUMN, (r.width / r.scale - 2 * LEGEND_X) / 2);
+  const narrow = r.width < NARROW_CANVAS_PX * r.scale;
+  const rightX = LEGEND_X + (narrow ? LEGEND_COLUMN_NARROW : LEGEND_COLUMN);
   drawLegend(r, LEFT_KEY, LEGEND_X, LEGEND_Y, { row: LEGEND_ROW });
-  drawLegend(r, s.alphaCurve ? RIGHT_KEY : RIGHT_KEY_NO_ALPHA, LEGEND_X + column, LEGEND_Y, {
+  drawLegend(r, s.alphaCurve ? RIGHT_KEY : RIGHT_KEY_NO_ALPHA, rightX, LEGEND_Y, {
     row: LEGEND_ROW,
   });
   plot.layout(r.width, r.height, r.scale, d.shown, shown);

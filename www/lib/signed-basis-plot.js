@@ -77,8 +77,9 @@ export class SignedBasisPlot {
 
   /**
    * The strip, the value axis with 0 and 1 labelled (and the range's ends when beyond them), the
-   * zero line, a dashed line at 1, the parameter axis with a tick at every `ticks[i]` (normalised
-   * data parameters) labelled `labels[i]` while labels keep apart, and `axisName` at its end.
+   * zero line, a dashed line at 1 with a dot at (s_i, 1) in the colour of L_i (each is 1 at its
+   * own node), the parameter axis with a tick at every `ticks[i]` (normalised data parameters)
+   * labelled `labels[i]` while labels keep apart, and `axisName` at its end.
    */
   drawFrame(r, ticks, labels, axisName) {
     const theme = r.theme;
@@ -137,6 +138,9 @@ export class SignedBasisPlot {
     }
     if (axisName)
       r.text(axisName, p.x1 + (TICK_PX + 2) * s, y0, theme.labelSmall, "left", "middle");
+    // L_i(t_i) = 1: a dot in the function's colour where it touches 1 at its own node.
+    for (let i = 0; i < ticks.length; i++)
+      r.point(p.x(ticks[i]), p.y(1), theme.basisPoint[i % theme.basisPoint.length]);
   }
 
   /** "3" or "≥ 3" at a range end that cut graphs off. */

@@ -17,7 +17,7 @@ const ROW_PX = 11;
 const TICK_PX = 8;
 const SWATCH_PX = 30;
 /** The margins of the plot's box in its strip (CSS px): the value labels left, the rows below. */
-const MARGIN_TOP = 28;
+const MARGIN_TOP = 42;
 const MARGIN_RIGHT = 24;
 const MARGIN_LEFT = 50;
 const AXIS_LABEL_PX = 18;
@@ -83,7 +83,7 @@ export class SpeedPlot {
     const lx = p.x0 - 6 * sc;
     r.text("0", lx, p.y0, theme.labelSmall, "right", "middle");
     r.text(String(Number(p.hi.toPrecision(3))), lx, p.y1, theme.labelSmall, "right", "middle");
-    r.text(names.speed, p.x1, p.y1 - 4 * sc, theme.labelSmall, "right", "bottom");
+    r.text(names.speed, p.x0 - 6 * sc, p.top + 4 * sc, theme.labelSmall, "left", "top");
     for (let c = count - 1; c >= 0; c--) {
       const speed = shown[c].speed;
       const last = speed.length - 1;
@@ -113,8 +113,9 @@ export class SpeedPlot {
     }
     const below = p.y0 + (4 + count * ROW_PX + 2) * sc;
     r.text("0", p.x0, below, theme.labelSmall, "center", "top");
+    // The axis name after "0", the marker's line stopping above it.
     r.text("1", p.x1, below, theme.labelSmall, "center", "top");
-    r.text(names.s, (p.x0 + p.x1) / 2, below, theme.labelSmall, "center", "top");
+    r.text(names.s, p.x0 + 16 * sc, below, theme.labelSmall, "left", "top");
     // The marker: a line through graphs and rows at s, a dot on each graph.
     const mx = p.x(s);
     r.beginPath();
