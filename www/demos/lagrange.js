@@ -18,9 +18,9 @@
  * From the core: the curves' samples (`sampleUniform`), the triangle (`aitken(t)`), the basis
  * at t (`basis(t)`) and the basis graphs — L_i is the polynomial through the data δ_ij, so each
  * pair L_i, L_{i+1} is one `lagrange(…).sampleUniform` through the 2D points (δ_ij, δ_{i+1,j}),
- * asked again only when the parameters change. The core has no in-place move for a Lagrange
- * curve: a drag rebuilds it (n ≤ 15, cheap); the spline moves in place (`setPoint`) while the
- * parameters stay (uniform), and both are rebuilt with new chord or centripetal parameters.
+ * asked again only when the parameters change. A drag at uniform parameters moves both curves
+ * in place (`setPoint`); chord or centripetal parameters follow the points, and the
+ * Lagrange curve's `setPoint` keeps its parameters, so both are rebuilt with the new ones.
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
@@ -139,10 +139,9 @@ export const derive = {
   moved(m, i, xy, s, ui) {
     const fit = m.holder.fit;
     if (s.params === "uniform") {
+      // The parameters stay: both curves move in place.
       fit.spline.setPoint(i, xy);
-      const next = ui.sl.lagrange(flatten(s.points), 2, fit.params);
-      fit.lagrange.free();
-      fit.lagrange = next;
+      fit.lagrange.setPoint(i, xy);
       return;
     }
     try {

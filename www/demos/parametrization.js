@@ -20,9 +20,9 @@
  * in the plot) shows each curve's point at the same s.
  *
  * From the core: samples (`sampleUniform`), speeds (one batched `sampleDerivatives(ts, 1)` per
- * curve), parameters (`params()`), points at s (`evaluate`). A drag moves the uniform curve in
- * place (`setPoint`: its parameters do not change); the others get new parameters from the
- * moved points, so they are rebuilt (four small solves per frame).
+ * curve), parameters (`params()`), points at s (`evaluate`). Each curve is made with its kind
+ * (or α) instead of a parameter list, so a drag moves it in place: `setPoint` recomputes the
+ * parameters from the moved points and re-solves.
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
@@ -126,20 +126,22 @@ export const fields = {
   s: field.number({ min: 0, max: 1 }),
 };
 
-/** One interpolant through `flat` with exponent α (a kind name for the named ones). */
+/**
+ * One interpolant through `flat` with exponent α: the parameters are given as the kind (or α),
+ * so the core computes them from the points — and again after every `setPoint`.
+ */
 function curveOf(sl, flat, kind, s) {
   const alpha = kind === "alpha" ? s.alpha : ALPHA_OF[kind];
   if (s.method === "catmull-rom") return sl.catmullRom(flat, 2, alpha);
-  const params = sl.parameterize(flat, 2, kind === "alpha" ? alpha : kind);
-  return sl.cubicSpline(flat, 2, params, "natural");
+  return sl.cubicSpline(flat, 2, kind === "alpha" ? alpha : kind, "natural");
 }
 
-/** The curves of KINDS from index `from` on (all or none: a refusal frees those made). */
-function curvesOf(sl, s, from = 0) {
+/** The curves of KINDS (all or none: a refusal frees those made). */
+function curvesOf(sl, s) {
   const flat = flatten(s.points);
   const made = [];
   try {
-    for (const kind of KINDS.slice(from)) made.push(curveOf(sl, flat, kind, s));
+    for (const kind of KINDS) made.push(curveOf(sl, flat, kind, s));
   } catch (err) {
     for (const curve of made) curve.free();
     throw err;
@@ -148,25 +150,20 @@ function curvesOf(sl, s, from = 0) {
 }
 
 /**
- * The model: `curves` (one per KINDS entry; an array, so a drag may put new ones in place) and
- * `refusal` (a rebuild refused during a drag — repeated points under chord spacing).
+ * The model: `curves` (one per KINDS entry) and `refusal` (a move the core refused during a
+ * drag — a repeated point under chord spacing — for the status line). A drag moves every curve
+ * in place: `setPoint` recomputes its parameters from the moved points and re-solves.
  */
 export const derive = {
   from: ["points", "method", "alpha"],
   build: (s, sl) => ({ curves: curvesOf(sl, s), refusal: { message: null } }),
-  moved(m, i, xy, s, ui) {
-    let next;
-    try {
-      next = curvesOf(ui.sl, s, 1);
-    } catch (err) {
-      m.refusal.message = err.message;
-      return;
-    }
-    // The uniform curve keeps its parameters: moved in place; the others are the new ones.
-    m.curves[0].setPoint(i, xy);
-    for (let c = 1; c < KINDS.length; c++) {
-      m.curves[c].free();
-      m.curves[c] = next[c - 1];
+  moved(m, i, xy) {
+    for (const curve of m.curves) {
+      try {
+        curve.setPoint(i, xy);
+      } catch (err) {
+        m.refusal.message = err.message;
+      }
     }
   },
 };
