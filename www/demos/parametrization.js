@@ -244,7 +244,7 @@ export const figure = {
   bounds: (s) => paddedBounds(s.points, ROOM_X, ROOM_Y),
   insets(width, height, scale) {
     insetScratch[0] = LEGEND_BAND * scale;
-    insetScratch[2] = plot.height(height);
+    insetScratch[2] = plot.height(height, scale);
     return insetScratch;
   },
   handles: { field: "points", label: (i) => `p${subscript(i)}` },

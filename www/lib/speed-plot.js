@@ -21,6 +21,9 @@ const MARGIN_TOP = 42;
 const MARGIN_RIGHT = 24;
 const MARGIN_LEFT = 50;
 const AXIS_LABEL_PX = 18;
+/** The plot's box keeps at least this height (CSS px × text scale), within MAX_FRACTION of the canvas. */
+const MIN_BOX_PX = 70;
+const MAX_FRACTION = 0.6;
 
 /** Solid thin copies of the curve styles for the tick marks. */
 const tickStyles = new WeakMap();
@@ -28,6 +31,7 @@ const tickStyles = new WeakMap();
 export class SpeedPlot {
   /** `{ fraction, minPx, shortFraction }` as `PlotStrip`'s; `rows`: most tick rows drawn. */
   constructor({ fraction, minPx, shortFraction, rows }) {
+    this.rows = rows;
     this.strip = new PlotStrip({
       fraction,
       minPx,
@@ -41,14 +45,23 @@ export class SpeedPlot {
     });
   }
 
-  /** Height of the strip in a canvas `height` CSS px tall (the View's bottom inset). */
-  height(height) {
-    return this.strip.height(height);
+  /**
+   * Height of the strip in a canvas `height` CSS px tall at text scale `scale` (the View's
+   * bottom inset): `PlotStrip`'s, grown in lecture mode so that the box keeps MIN_BOX_PX
+   * between its scaled margins.
+   */
+  height(height, scale = 1) {
+    const margins = MARGIN_TOP + this.rows * ROW_PX + AXIS_LABEL_PX + 4;
+    const needed = Math.round((margins + MIN_BOX_PX) * scale);
+    return Math.max(this.strip.height(height), Math.min(needed, Math.round(height * MAX_FRACTION)));
   }
 
   /** Lays the strip out; the value range is [0, largest speed of the first `count` curves]. */
   layout(width, height, scale, shown, count) {
-    this.strip.layout(width, height, scale);
+    const p = this.strip;
+    p.layout(width, height, scale);
+    p.top = height - this.height(height, scale);
+    p.y1 = p.top + MARGIN_TOP * scale;
     let hi = 0;
     for (let c = 0; c < count; c++) for (const v of shown[c].speed) if (v > hi) hi = v;
     this.strip.lo = 0;
