@@ -207,7 +207,8 @@ export class LagrangeTables {
       sum += value;
       const cells = this.rows[i];
       setText(cells.param, shortNumber(fit.params[i]));
-      setValueSpans(cells.value, num.basis(value, n), fmt(value));
+      const exact = num.basis(value, n);
+      setValueSpans(cells.value, exact, /^-?\d+$/.test(exact) ? exact : fmt(value));
       setText(cells.point, `(${shortNumber(s.points[i][0])}, ${shortNumber(s.points[i][1])})`);
       cells.row.classList.toggle("sl-highlight", i === d.highlight);
       cells.row.classList.toggle("sl-negative", value < 0);

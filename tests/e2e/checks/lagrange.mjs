@@ -142,4 +142,34 @@ export default [
       );
     },
   ],
+  [
+    "a press on the plot at the tick of t₂ = 2 puts P(t) on p₂, L = (0, 0, 1, 0, 0)",
+    async (page, h, _base, { assert, equal, settle }) => {
+      // The plot's box runs from 44 px to width − 24 px (signed-basis-plot.js margins); t_2 = 2 is
+      // the middle of [0, 4]. Its bottom margin is 30 px: press 50 px above the canvas bottom.
+      const box = await h.canvas().boundingBox();
+      const x = box.x + 44 + (box.width - 44 - 24) / 2;
+      await page.mouse.click(x + 2, box.y + box.height - 50);
+      await settle(page);
+      equal(
+        await page.locator('[data-control="t"] .sl-value').inputValue(),
+        "2.000",
+        "t snapped to t₂",
+      );
+      // At a node Aitken's apex is the data point: p₀⁴ = p₂ = (6, 4); L_2(2) = 1, the others 0.
+      assert((await cell(page, 4, 0).textContent()).includes("(6, 4)"), "apex = p₂");
+      for (const [i, value] of ["0", "0", "1", "0", "0"].entries())
+        equal((await basisValue(page, i).textContent()).trim(), value, `L${i}(2)`);
+    },
+  ],
+  [
+    "hovering a row of the basis table highlights it",
+    async (page, _h, _base, { assert, settle }) => {
+      const row = page.locator('table[data-table="lagrange-basis"] tr[data-index="3"]');
+      await row.hover();
+      await settle(page);
+      await settle(page);
+      assert(await row.evaluate((r) => r.classList.contains("sl-highlight")), "row 3 highlighted");
+    },
+  ],
 ];

@@ -120,4 +120,16 @@ export default [
       assert(/“alpha”/.test(status) && status.includes("2"), `status: ${status}`);
     },
   ],
+  [
+    "a press in the speed plot sets s, snapped to a sixteenth",
+    async (page, h, _base, { equal, settle }) => {
+      // The plot's box runs from 50 px to width − 24 px (speed-plot.js margins); press at a
+      // quarter of it, inside the tick rows (30 px above the canvas bottom).
+      const box = await h.canvas().boundingBox();
+      const x = box.x + 50 + (box.width - 50 - 24) / 4;
+      await page.mouse.click(x + 1, box.y + box.height - 40);
+      await settle(page);
+      equal(await page.locator('[data-control="s"] .sl-value').inputValue(), "0.250", "s");
+    },
+  ],
 ];
