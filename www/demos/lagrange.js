@@ -18,9 +18,8 @@
  * From the core: the curves' samples (`sampleUniform`), the triangle (`aitken(t)`), the basis
  * at t (`basis(t)`) and the basis graphs — L_i is the polynomial through the data δ_ij, so each
  * pair L_i, L_{i+1} is one `lagrange(…).sampleUniform` through the 2D points (δ_ij, δ_{i+1,j}),
- * asked again only when the parameters change. A drag at uniform parameters moves both curves
- * in place (`setPoint`); chord or centripetal parameters follow the points, and the
- * Lagrange curve's `setPoint` keeps its parameters, so both are rebuilt with the new ones.
+ * asked again only when the parameters change. Both curves are given the kind of parameters, so
+ * a drag moves them in place (`setPoint`) and chord or centripetal parameters follow the points.
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
@@ -97,25 +96,35 @@ export const fields = {
   construction: field.boolean(),
 };
 
-/** The parameters, the polynomial and the natural spline of a state (the core's refusals thrown). */
+/**
+ * The polynomial and the natural spline of a state, both given the kind of parameters (the core
+ * computes them from the points, and again after every `setPoint`), and those parameters.
+ */
 function fitOf(sl, s) {
   const flat = flatten(s.points);
-  const params = sl.parameterize(flat, 2, s.params);
-  const lagrange = sl.lagrange(flat, 2, params);
+  const lagrange = sl.lagrange(flat, 2, s.params);
   let spline;
   try {
-    spline = sl.cubicSpline(flat, 2, params, "natural");
+    spline = sl.cubicSpline(flat, 2, s.params, "natural");
   } catch (err) {
     lagrange.free();
     throw err;
   }
-  return { params, domain: [params[0], params[params.length - 1]], lagrange, spline };
+  const fit = { lagrange, spline, params: null, domain: null };
+  return withParams(fit);
+}
+
+/** Reads the parameters t_i and the domain [t_0, t_n] back from the polynomial. */
+function withParams(fit) {
+  fit.params = fit.lagrange.params();
+  fit.domain = [fit.params[0], fit.params[fit.params.length - 1]];
+  return fit;
 }
 
 /**
- * The model: `holder.fit` (parameters, domain, the two curves; a drag that changes the
- * parameters puts a new fit in), `refusal` (a rebuild refused during a drag, for the status
- * line). t outside the domain is refused, naming it (links and files; the controls keep it in).
+ * The model: `holder.fit` (the two curves, their parameters and domain), `refusal` (a move the
+ * core refused during a drag — a repeated point under chord spacing — for the status line). t
+ * outside the domain is refused, naming it (links and files; the controls keep it inside).
  */
 export const derive = {
   from: ["points", "params"],
@@ -136,22 +145,19 @@ export const derive = {
     };
     return { holder, refusal: { message: null } };
   },
-  moved(m, i, xy, s, ui) {
+  /** Both curves move in place; chord or centripetal parameters follow, t stays in the domain. */
+  moved(m, i, xy, s) {
     const fit = m.holder.fit;
-    if (s.params === "uniform") {
-      // The parameters stay: both curves move in place.
+    try {
       fit.spline.setPoint(i, xy);
       fit.lagrange.setPoint(i, xy);
-      return;
-    }
-    try {
-      const next = fitOf(ui.sl, s);
-      m.holder.free();
-      m.holder.fit = next;
-      s.t = Math.min(Math.max(s.t, next.domain[0]), next.domain[1]);
     } catch (err) {
       m.refusal.message = err.message;
+      return;
     }
+    if (s.params === "uniform") return;
+    withParams(fit);
+    s.t = Math.min(Math.max(s.t, fit.domain[0]), fit.domain[1]);
   },
 };
 

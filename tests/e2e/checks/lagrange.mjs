@@ -85,8 +85,8 @@ export default [
     },
   ],
   [
-    "chord-length parameters: t_1 = √13, t keeps its place in the domain",
-    async (page, _h, _base, { assert, equal, settle }) => {
+    "chord-length parameters: t_1 = √13, t keeps its place in the domain, t_1 follows a move",
+    async (page, h, _base, { assert, equal, settle }) => {
       // Legs |(2,3)| = √13, |(4,1)| = √17, |(2,−3)| = √13, |(4,−1)| = √17: t_1 = √13 ≈ 3.606,
       // t_4 = 2(√13 + √17) ≈ 15.457; t = 3/2 was 3/8 of [0, 4]: 3/8 · 15.457 ≈ 5.796.
       await page.locator('[data-control="params"] [data-choice="chord"] input').first().check();
@@ -97,6 +97,13 @@ export default [
       equal((await last.textContent()).trim(), "15.457", "t₄");
       equal(await page.locator('[data-control="t"] .sl-value').inputValue(), "5.796", "t");
       assert(page.url().includes("s="), "state in the URL");
+      // Moving p₀ 10 px left lengthens the first leg: t₁ follows the point (in place).
+      await h.canvas().focus();
+      await page.keyboard.press("Home");
+      await page.keyboard.press("Shift+ArrowLeft");
+      await settle(page);
+      const moved = Number((await row.textContent()).trim());
+      assert(moved > 3.606, `t₁ after the move: ${moved}`);
     },
   ],
   [
