@@ -101,6 +101,13 @@ export const demos = Object.freeze(
       strings: "negativeWeights",
       load: () => import("./negative-weights.js"),
     },
+    { id: "lagrange", section: 5, strings: "lagrange", load: () => import("./lagrange.js") },
+    {
+      id: "parametrization",
+      section: 5,
+      strings: "parametrization",
+      load: () => import("./parametrization.js"),
+    },
   ].map(Object.freeze),
 );
 
