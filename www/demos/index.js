@@ -101,6 +101,8 @@ export const demos = Object.freeze(
       strings: "negativeWeights",
       load: () => import("./negative-weights.js"),
     },
+    { id: "hermite", section: 5, strings: "hermite", load: () => import("./hermite.js") },
+    { id: "cardinal", section: 5, strings: "cardinal", load: () => import("./cardinal.js") },
   ].map(Object.freeze),
 );
 
