@@ -39,17 +39,17 @@ const STEP = 0.01;
 
 /**
  * Uneven spacing: the short leg P₁P₂ between two long ones. Uniform Catmull–Rom's tangents
- * m₁ = (P₂ − P₀)/2 = (9/2, 3) and m₂ = (P₃ − P₁)/2 = (9/2, −3) are long against the chord
- * (1, 0): the Bézier points q₁ = P₁ + m₁/3 = (19/2, 7) and q₂ = P₂ − m₂/3 = (15/2, 7) cross, and
- * segment 1 loops. Centripetal (the default α = ½) does not.
+ * m₁ = (P₂ − P₀)/2 = (7/2, 4) and m₂ = (P₃ − P₁)/2 = (7/2, −4) are long against the chord
+ * (1, 0): the Bézier points q₁ = P₁ + m₁/3 = (43/6, 28/3) and q₂ = P₂ − m₂/3 = (35/6, 28/3)
+ * cross, and segment 1 loops. Centripetal (the default α = ½) does not.
  */
 export const defaultState = Object.freeze({
   points: Object.freeze(
     [
       [0, 0],
-      [8, 6],
-      [9, 6],
-      [17, 0],
+      [6, 8],
+      [7, 8],
+      [13, 0],
     ].map(Object.freeze),
   ),
   mode: "catmull-rom",
@@ -101,7 +101,8 @@ export const derive = {
 };
 
 /** One `sampleUniform` with SEGMENT_SAMPLES per segment (segment j: samples j·S … (j + 1)·S − 1). */
-const samplesOf = (spline) => (spline ? spline.sampleUniform(SEGMENT_SAMPLES * spline.pieceCount) : null);
+const samplesOf = (spline) =>
+  spline ? spline.sampleUniform(SEGMENT_SAMPLES * spline.pieceCount) : null;
 
 /** The first loop inside one segment of the uniform curve's samples (its crossing), or null. */
 function loopOf(flat, count) {
@@ -139,7 +140,10 @@ export const compute = {
   ghostSamples: [SHAPE, (s, d) => samplesOf(d.ghost)],
   tangents: [SHAPE, (s, d) => d.spline.tangents()],
   params: [SHAPE, (s, d) => d.spline.params()],
-  loop: [SHAPE, (s, d) => loopOf(d.ghost ? d.ghostSamples : isUniform(s) ? d.samples : null, segmentCount(s))],
+  loop: [
+    SHAPE,
+    (s, d) => loopOf(d.ghost ? d.ghostSamples : isUniform(s) ? d.samples : null, segmentCount(s)),
+  ],
   segment: [[...SHAPE, "segment"], segmentOf],
 };
 
@@ -156,7 +160,10 @@ export const controls = [
       (s) => !isRom(s),
       slider("tension", { label: "cardinal.control.tension", min: -1, max: 1, step: STEP }),
     ),
-    shownWhen((s) => isRom(s), slider("alpha", { label: "cardinal.control.alpha", min: 0, max: 1, step: STEP })),
+    shownWhen(
+      (s) => isRom(s),
+      slider("alpha", { label: "cardinal.control.alpha", min: 0, max: 1, step: STEP }),
+    ),
     shownWhen((s) => isRom(s), checkbox("closed", { label: "cardinal.control.closed" })),
   ),
   group(
@@ -180,7 +187,8 @@ export const controls = [
 
 /** "The uniform curve (α = 0) loops in segment 2" / "no loop". */
 function loopNote(s, d) {
-  if (d.loop) return t(isUniform(s) ? "cardinal.loopHere" : "cardinal.loopGhost", { i: d.loop.segment });
+  if (d.loop)
+    return t(isUniform(s) ? "cardinal.loopHere" : "cardinal.loopGhost", { i: d.loop.segment });
   return t(isUniform(s) ? "cardinal.noLoopHere" : "cardinal.noLoopGhost");
 }
 
@@ -193,7 +201,12 @@ export const figure = {
 
 const TANGENT_STYLE = Object.freeze({ stroke: HUES.orange, width: 2, cap: "round" });
 const LOOP_STYLE = Object.freeze({ stroke: HUES.vermillion, width: 2.5 });
-const SEGMENT_STYLE = Object.freeze({ stroke: HUES.blue, width: 10, strokeAlpha: 0.2, cap: "round" });
+const SEGMENT_STYLE = Object.freeze({
+  stroke: HUES.blue,
+  width: 10,
+  strokeAlpha: 0.2,
+  cap: "round",
+});
 const LOOP_RADIUS_PX = 12;
 const legendEntries = themed((theme) => [
   { label: "cardinal.legend.curve", style: theme.compareCurve[0] },
@@ -217,13 +230,23 @@ export function draw(r, v, s, d) {
     r.beginPath();
     r.circle(x, y, LOOP_RADIUS_PX * r.scale);
     r.paint(LOOP_STYLE);
-    r.text(t("cardinal.loopLabel"), x + (LOOP_RADIUS_PX + 4) * r.scale, y, theme.labelBold, "left", "middle");
+    r.text(
+      t("cardinal.loopLabel"),
+      x,
+      y - (LOOP_RADIUS_PX + 4) * r.scale,
+      theme.labelBold,
+      "center",
+      "bottom",
+    );
   }
   d.handles.draw(r, v);
   if (d.ghostSamples) drawLegend(r, legendEntries(theme), 12, 14);
 }
 
-/** The core's tangents as Bézier handles P_i → P_i + Δ·m_i/3 (Δ of the segment leaving P_i, the last one's at the end). */
+/**
+ * The core's tangents as Bézier handles P_i → P_i + Δ·m_i/3 (Δ of the segment leaving P_i, the
+ * last segment's at the end).
+ */
 function drawTangents(r, v, s, d) {
   const m = d.tangents;
   const params = d.params;
@@ -232,7 +255,14 @@ function drawTangents(r, v, s, d) {
     const j = Math.min(i, last - 1);
     const k = (params[j + 1] - params[j]) / 3;
     const p = s.points[i];
-    arrow(r, v.sx(p[0]), v.sy(p[1]), v.sx(p[0] + k * m[2 * i]), v.sy(p[1] + k * m[2 * i + 1]), TANGENT_STYLE);
+    arrow(
+      r,
+      v.sx(p[0]),
+      v.sy(p[1]),
+      v.sx(p[0] + k * m[2 * i]),
+      v.sy(p[1] + k * m[2 * i + 1]),
+      TANGENT_STYLE,
+    );
   }
 }
 
@@ -268,10 +298,16 @@ export function formula(s, d) {
   const c = isRom(s) ? 0 : s.tension;
   const half = c === 0;
   const M = cardinalMatrix(c).map((row) => row.map((x) => (half ? 2 * x : x)));
-  const rows = M.map((row) => row.map((x) => fractionOrDecimals(x, true)).join(" & ")).join(" \\\\ ");
+  const rows = M.map((row) => row.map((x) => fractionOrDecimals(x, true)).join(" & ")).join(
+    " \\\\ ",
+  );
   const names = [-1, 0, 1, 2].map((k) => neighbour(s, i + k)).join(" \\\\ ");
   const factor = half ? "\\tfrac{1}{2}" : "";
-  const which = isRom(s) ? (s.alpha === 0 ? "" : `\\text{${t("cardinal.formula.ghost")}}`) : `c = ${fmt(c)}`;
+  const which = isRom(s)
+    ? s.alpha === 0
+      ? ""
+      : `\\text{${t("cardinal.formula.ghost")}}`
+    : `c = ${fmt(c)}`;
   const m = d.tangents;
   const mid = d.segment.middle;
   const lines = [
@@ -279,7 +315,8 @@ export function formula(s, d) {
       ? "m_i = \\frac{P_i - P_{i-1}}{d_{i-1}} - \\frac{P_{i+1} - P_{i-1}}{d_{i-1} + d_i} + " +
         `\\frac{P_{i+1} - P_i}{d_i},\\ \\ d_i = |P_{i+1} - P_i|^{\\alpha},\\ \\alpha = ${fmt(s.alpha)}`
       : `m_i = (1 - c)\\,\\frac{P_{i+1} - P_{i-1}}{t_{i+1} - t_{i-1}},\\quad t_i = i,\\ c = ${fmt(s.tension)}`,
-    `m_{${i}} = (${fmt(m[2 * i])},\\,${fmt(m[2 * i + 1])}),\\quad m_{${i + 1}} = (${fmt(m[2 * i + 2] ?? m[0])},\\,${fmt(m[2 * i + 3] ?? m[1])})`,
+    `m_{${i}} = (${fmt(m[2 * i])},\\,${fmt(m[2 * i + 1])}),\\quad ` +
+      `m_{${i + 1}} = (${fmt(m[2 * i + 2])},\\,${fmt(m[2 * i + 3])})`,
     `P(t) = \\begin{bmatrix} t^3 & t^2 & t & 1 \\end{bmatrix} ${factor}\\begin{bmatrix} ${rows} \\end{bmatrix}` +
       `\\begin{bmatrix} ${names} \\end{bmatrix}\\ ${which}`,
     `P(\\tfrac{1}{2}) = (${fractionOrDecimals(mid[0], true)},\\ ${fractionOrDecimals(mid[1], true)})`,
@@ -322,7 +359,10 @@ export function setup(ui) {
       const m = d.tangents;
       rows.forEach((r, i) => {
         setText(r.param, fractionOrDecimals(d.params[i]));
-        setText(r.tangent, `(${fractionOrDecimals(m[2 * i])}, ${fractionOrDecimals(m[2 * i + 1])})`);
+        setText(
+          r.tangent,
+          `(${fractionOrDecimals(m[2 * i])}, ${fractionOrDecimals(m[2 * i + 1])})`,
+        );
       });
     },
   };

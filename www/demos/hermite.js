@@ -16,16 +16,23 @@ import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
 import { pointLabel, placeLabelAtTip } from "../lib/handles.js";
 import { vectorTips } from "../lib/vector-tips.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
 import { fmt, subscript, exactNumbers, shortNumber, fractionOrDecimals } from "../lib/format.js";
 import { orderText } from "../lib/continuity.js";
 import { HUES, WIDTH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
-import { flatten, paddedBounds } from "../lib/geometry.js";
+import { paddedBounds } from "../lib/geometry.js";
 import { titledTable, headerRow, valueSpans, setValueSpans } from "../lib/table.js";
-import { PlotStrip, drawPlotStrip } from "../lib/plot-strip.js";
-import { drawGraph } from "../lib/basis-plot.js";
-import { flatPath, pointsPath, arrow } from "../lib/draw.js";
+import {
+  hermiteBasisSplines,
+  basisGraphs,
+  basisAt,
+  hermitePlot,
+  drawHermitePlot,
+  HERMITE_NAMES,
+} from "../lib/hermite-basis.js";
+import { flatPath, arrow } from "../lib/draw.js";
 import {
   hermiteParts,
   partOf,
@@ -47,9 +54,8 @@ export const MAX_POINTS = 8;
 /** Range of λ = |m_k⁻| / |m_k⁺| at an unlocked point. */
 export const RATIO_MIN = 0.2;
 export const RATIO_MAX = 4;
-/** Samples per piece of the curve; samples of each basis function on [0, 1]. */
+/** Samples per piece of the curve. */
 const PIECE_SAMPLES = 64;
-const BASIS_SAMPLES = 121;
 /** Slider resolution for t and λ. */
 const T_STEP = 0.001;
 const RATIO_STEP = 0.01;
@@ -114,14 +120,7 @@ export function adjust(s) {
 export const derive = {
   from: ["points", "tangents", "unlocked", "joint", "ratio"],
   build(s, sl) {
-    const basisPoints = new Float64Array([1, 0, 0, 1]);
-    const basisTangents = new Float64Array([1, 0, 0, 1]);
-    const zero = new Float64Array(4);
-    return {
-      ...hermiteParts(sl, s),
-      basisValues: sl.hermiteSpline(basisPoints, 2, [0, 1], zero),
-      basisSlopes: sl.hermiteSpline(zero, 2, [0, 1], basisTangents),
-    };
+    return { ...hermiteParts(sl, s), ...hermiteBasisSplines(sl) };
   },
   moved: (m, i, xy) => movePoint(m, i, xy),
   inPlace: {
@@ -130,34 +129,18 @@ export const derive = {
   },
 };
 
-/** H0 … H3 at BASIS_SAMPLES values of u, function-major (the plot's `drawGraph` layout). */
-function basisGraphs(d) {
-  const a = d.basisValues.sampleUniform(BASIS_SAMPLES);
-  const b = d.basisSlopes.sampleUniform(BASIS_SAMPLES);
-  const out = new Float64Array(4 * BASIS_SAMPLES);
-  for (let k = 0; k < BASIS_SAMPLES; k++) {
-    out[k] = a[2 * k];
-    out[BASIS_SAMPLES + k] = a[2 * k + 1];
-    out[2 * BASIS_SAMPLES + k] = b[2 * k];
-    out[3 * BASIS_SAMPLES + k] = b[2 * k + 1];
-  }
-  return out;
-}
-
 /**
  * At t: the piece i, u, Δ and the piece's data (lib/hermite-parts.js `partOf`), the basis values
  * H0(u) … H3(u), P(t), and the piece's samples (its band in the figure).
  */
 function atT(s, d) {
   const at = partOf(d, s, s.t);
-  const a = d.basisValues.evaluate(at.u);
-  const b = d.basisSlopes.evaluate(at.u);
   const t0 = d.params[at.piece];
   const ts = new Float64Array(PIECE_SAMPLES);
   for (let k = 0; k < PIECE_SAMPLES; k++) ts[k] = t0 + (at.delta * k) / (PIECE_SAMPLES - 1);
   return {
     ...at,
-    basis: [a[0], a[1], b[0], b[1]],
+    basis: basisAt(d.basisValues, d.basisSlopes, at.u),
     point: at.spline.evaluate(s.t),
     pieceSamples: at.spline.sample(ts),
   };
@@ -165,8 +148,11 @@ function atT(s, d) {
 
 const SHAPE = ["points", "tangents", "unlocked", "joint", "ratio"];
 export const compute = {
-  graphs: [["points"], (s, d) => basisGraphs(d)],
-  samples: [SHAPE, (s, d) => d.splines.map((sp) => sp.sampleUniform(PIECE_SAMPLES * sp.pieceCount))],
+  graphs: [["points"], (s, d) => basisGraphs(d.basisValues, d.basisSlopes)],
+  samples: [
+    SHAPE,
+    (s, d) => d.splines.map((sp) => sp.sampleUniform(PIECE_SAMPLES * sp.pieceCount)),
+  ],
   at: [[...SHAPE, "t"], atT],
   bezierPoints: [[...SHAPE, "t"], (s, d) => pieceBezier(d, d.at.piece)],
   joints: [SHAPE, (s, d) => jointVerdicts(d.sl, d)],
@@ -224,7 +210,12 @@ export const controls = [
     ),
     shownWhen(
       (s) => s.unlocked,
-      slider("ratio", { label: "hermite.control.ratio", min: RATIO_MIN, max: RATIO_MAX, step: RATIO_STEP }),
+      slider("ratio", {
+        label: "hermite.control.ratio",
+        min: RATIO_MIN,
+        max: RATIO_MAX,
+        step: RATIO_STEP,
+      }),
     ),
     readout("joints", (s, d) => jointsNote(s, d), {
       live: true,
@@ -250,22 +241,13 @@ function figureBounds(s) {
   return paddedBounds(all, ROOM, ROOM);
 }
 
-/** The plot of H0 … H3 under the curve: u from x0 to x1, values from −0.25 to 1. */
-const plot = new PlotStrip({
-  fraction: 0.3,
-  minPx: 130,
-  shortFraction: 0.45,
-  margin: Object.freeze({ top: 26, right: 30, bottom: 26, left: 40 }),
-});
-plot.lo = -0.25;
-plot.hi = 1;
 const insetScratch = [0, 0, 0, 0];
 
 export const figure = {
   bounds: figureBounds,
   handles: { field: "points" },
   insets: (width, height) => {
-    insetScratch[2] = plot.height(height);
+    insetScratch[2] = hermitePlot.height(height);
     return insetScratch;
   },
 };
@@ -274,10 +256,13 @@ export const figure = {
 
 const INCOMING_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 2, cap: "round" });
 const TANGENT_STYLE = Object.freeze({ stroke: HUES.orange, width: 2, cap: "round" });
-const BEZIER_STYLE = Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.polygon, dash: [5, 4] });
+const BEZIER_STYLE = Object.freeze({
+  stroke: HUES.bluishGreen,
+  width: WIDTH.polygon,
+  dash: [5, 4],
+});
 const BEZIER_POINT = Object.freeze({ fill: HUES.bluishGreen, radius: 4 });
 const PIECE_STYLE = Object.freeze({ stroke: HUES.blue, width: 9, strokeAlpha: 0.2, cap: "round" });
-const BASIS_NAMES = Object.freeze(["H₀", "H₁", "H₂", "H₃"]);
 const Q_NAMES = Object.freeze(["q₀", "q₁", "q₂", "q₃"]);
 
 /** The current piece's band, the curve, the Bézier polygon, the tangent arrows, handles, P(t), the plot. */
@@ -293,7 +278,7 @@ export function draw(r, v, s, d) {
   drawTangents(r, v, s);
   d.handles.draw(r, v);
   r.point(v.sx(d.at.point[0]), v.sy(d.at.point[1]), theme.pointOnCurve);
-  drawPlot(r, s, d);
+  drawHermitePlot(r, d.graphs, d.at.u, d.at.basis, t("hermite.marker", { u: fmt(d.at.u) }));
 }
 
 function drawBezier(r, v, q) {
@@ -313,7 +298,9 @@ function drawBezier(r, v, q) {
 
 /** m₀ … m₇ and the incoming tangent's names, made once. */
 const TIP_NAMES = Object.freeze(Array.from({ length: MAX_POINTS }, (_, i) => `m${subscript(i)}`));
-const INCOMING_NAMES = Object.freeze(Array.from({ length: MAX_POINTS }, (_, i) => `m${subscript(i)}⁻`));
+const INCOMING_NAMES = Object.freeze(
+  Array.from({ length: MAX_POINTS }, (_, i) => `m${subscript(i)}⁻`),
+);
 const TIP_POINT = Object.freeze({ fill: HUES.orange, radius: 5 });
 const INCOMING_POINT = Object.freeze({ fill: HUES.reddishPurple, radius: 5 });
 const TIP_LABEL_GAP_PX = 10;
@@ -324,6 +311,7 @@ const TIP_LABEL_GAP_PX = 10;
  */
 function drawTangents(r, v, s) {
   const gap = TIP_LABEL_GAP_PX * r.scale;
+  const named = v.width >= NARROW_CANVAS_PX * r.scale; // a phone: the names would cover the points
   s.points.forEach((p, i) => {
     const m = s.tangents[i];
     const x = v.sx(p[0]);
@@ -332,58 +320,23 @@ function drawTangents(r, v, s) {
     const ty = v.sy(p[1] + TANGENT_SCALE * m[1]);
     arrow(r, x, y, tx, ty, TANGENT_STYLE);
     r.point(tx, ty, TIP_POINT);
-    placeLabelAtTip(r, TIP_NAMES[i], x, y, tx, ty, gap, r.theme.labelSmall);
+    if (named) placeLabelAtTip(r, TIP_NAMES[i], x, y, tx, ty, gap, r.theme.labelSmall);
     if (s.unlocked && i === s.joint) {
       const k = TANGENT_SCALE * s.ratio;
       const bx = v.sx(p[0] - k * m[0]);
       const by = v.sy(p[1] - k * m[1]);
       arrow(r, bx, by, x, y, INCOMING_STYLE);
       r.point(bx, by, INCOMING_POINT);
-      placeLabelAtTip(r, INCOMING_NAMES[i], x, y, bx, by, gap, r.theme.labelSmall);
+      if (named) placeLabelAtTip(r, INCOMING_NAMES[i], x, y, bx, by, gap, r.theme.labelSmall);
     }
   });
-}
-
-/** H0 … H3 over u ∈ [0, 1] from the core, the axis at 0, the marker at u with the values. */
-function drawPlot(r, s, d) {
-  const theme = r.theme;
-  plot.layout(r.width, r.height, r.scale);
-  drawPlotStrip(r, plot);
-  r.beginPath();
-  r.moveTo(plot.x0, plot.y1);
-  r.lineTo(plot.x0, plot.y0);
-  r.moveTo(plot.x0, plot.y(0));
-  r.lineTo(plot.x1, plot.y(0));
-  r.paint(theme.axis);
-  r.beginPath();
-  r.moveTo(plot.x0, plot.y(1));
-  r.lineTo(plot.x1, plot.y(1));
-  r.paint(theme.helper);
-  const left = plot.x0 - 6 * r.scale;
-  r.text("0", left, plot.y(0), theme.labelSmall, "right", "middle");
-  r.text("1", left, plot.y(1), theme.labelSmall, "right", "middle");
-  r.text(t("hermite.axisU"), plot.x1 + 6 * r.scale, plot.y(0), theme.labelSmall, "left", "middle");
-  const x = (k) => plot.x(k / (BASIS_SAMPLES - 1));
-  const y = (value) => plot.y(value);
-  for (let i = 0; i < 4; i++) drawGraph(r, d.graphs, i, BASIS_SAMPLES, x, y, theme.basisStroke[i]);
-  // Names where each graph is far from the others: H0 and H1 near their ends, H2 and H3 at their extremes.
-  const names = [
-    [0.12, 0.9],
-    [0.88, 0.9],
-    [1 / 3, 4 / 27],
-    [2 / 3, -4 / 27],
-  ];
-  names.forEach(([u, value], i) => {
-    const below = i >= 2; // H2 under its hump (H1 runs above it), H3 under its dip
-    r.text(BASIS_NAMES[i], plot.x(u), plot.y(value) + (below ? 4 : -4) * r.scale, theme.labelSmall, "center", below ? "top" : "bottom");
-  });
-  plot.drawMarker(r, d.at.u, t("hermite.marker", { u: fmt(d.at.u) }), d.at.basis, theme.basisPoint);
 }
 
 // ------------------------------------------------------------ formula, label
 
 /** (x, y) in TeX, exact where the numbers allow. */
-const pairTex = (num, x, y, level) => `\\left(${num.value(x, level, true)},\\ ${num.value(y, level, true)}\\right)`;
+const pairTex = (num, x, y, level) =>
+  `\\left(${num.value(x, level, true)},\\ ${num.value(y, level, true)}\\right)`;
 
 /** The basis, the piece's formula with its numbers, the Bézier form when shown, the unlocked joint. */
 export function formula(s, d) {
@@ -397,7 +350,8 @@ export function formula(s, d) {
     "H_0 = 2u^3-3u^2+1,\\ \\ H_1 = -2u^3+3u^2,\\ \\ H_2 = u^3-2u^2+u,\\ \\ H_3 = u^3-u^2",
     `P(t) = H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2\\,\\Delta m_{${i}} + H_3\\,\\Delta m_{${i + 1}},\\quad ` +
       `u = \\frac{t - t_{${i}}}{\\Delta} = ${uTex},\\ \\Delta = ${shortNumber(delta)}`,
-    `P(${fractionOrDecimals(s.t, true)}) = ${w[0]}\\,${vec(p0)} + ${w[1]}\\,${vec(p1)} + (${w[2]})\\,${vec(m0, delta)} + ` +
+    `P(${fractionOrDecimals(s.t, true)}) = ${w[0]}\\,${vec(p0)} + ${w[1]}\\,${vec(p1)} + ` +
+      `(${w[2]})\\,${vec(m0, delta)} + ` +
       `(${w[3]})\\,${vec(m1, delta)} = ${pairTex(num, point[0], point[1], 3)}`,
   ];
   if (s.bezier) {
@@ -411,7 +365,8 @@ export function formula(s, d) {
     const k = s.joint;
     const verdict = d.joints[k - 1] ? verdictText(d.joints[k - 1]) : "";
     lines.push(
-      `m_{${k}}^- = \\lambda\\, m_{${k}}^+,\\ \\lambda = ${fmt(s.ratio)}:\\quad \\text{${t("hermite.formula.checker")} ${verdict}}`,
+      `m_{${k}}^- = \\lambda\\, m_{${k}}^+,\\ \\lambda = ${fmt(s.ratio)}:\\quad ` +
+        `\\text{${t("hermite.formula.checker")} ${verdict}}`,
     );
   }
   return lines;
@@ -470,7 +425,7 @@ export function setup(ui) {
   vectorTips(ui, tips);
 
   const head = headerRow("hermite.col.", ["function", "polynomial", "value", "times"]);
-  const cells = BASIS_NAMES.map((name, i) => {
+  const cells = HERMITE_NAMES.map((name, i) => {
     const value = valueSpans();
     const times = el("td", { dataset: { cell: "times" } });
     const row = el(
@@ -484,7 +439,14 @@ export function setup(ui) {
     return { row, value, times };
   });
   const { title, wrap } = titledTable("hermite-basis", {
-    children: [el("thead", {}, head), el("tbody", {}, cells.map((c) => c.row))],
+    children: [
+      el("thead", {}, head),
+      el(
+        "tbody",
+        {},
+        cells.map((c) => c.row),
+      ),
+    ],
   });
   ui.ctx.slots.details.append(title, wrap);
   return {

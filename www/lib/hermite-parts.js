@@ -29,8 +29,15 @@ export function hermiteParts(sl, s) {
       params,
     };
   const k = s.joint;
-  const incoming = s.tangents.slice(0, k + 1).map((m, i) => (i === k ? [s.ratio * m[0], s.ratio * m[1]] : m));
-  const left = sl.hermiteSpline(flatten(s.points.slice(0, k + 1)), 2, params.slice(0, k + 1), flatten(incoming));
+  const incoming = s.tangents
+    .slice(0, k + 1)
+    .map((m, i) => (i === k ? [s.ratio * m[0], s.ratio * m[1]] : m));
+  const left = sl.hermiteSpline(
+    flatten(s.points.slice(0, k + 1)),
+    2,
+    params.slice(0, k + 1),
+    flatten(incoming),
+  );
   try {
     const right = sl.hermiteSpline(
       flatten(s.points.slice(k)),
@@ -101,7 +108,12 @@ export function jointVerdicts(sl, m) {
   }
   const count = m.params.length - 1;
   if (count < 2) return [];
-  const whole = new sl.CompositeBezier(new Float64Array(points), 2, new Float64Array(count).fill(3), m.params);
+  const whole = new sl.CompositeBezier(
+    new Float64Array(points),
+    2,
+    new Float64Array(count).fill(3),
+    m.params,
+  );
   try {
     return whole.continuity();
   } finally {

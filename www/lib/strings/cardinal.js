@@ -26,7 +26,8 @@ export const CARDINAL = {
   "cardinal.control.segment": "Segment i (from Pᵢ to Pᵢ₊₁)",
   "cardinal.control.segment.input": "segment index i",
   "cardinal.loopHere": "This curve loops inside segment {i}.",
-  "cardinal.loopGhost": "The uniform curve (α = 0, dashed) loops inside segment {i}; this one does not.",
+  "cardinal.loopGhost":
+    "The uniform curve (α = 0, dashed) loops inside segment {i}; this one does not.",
   "cardinal.noLoopHere": "No loop inside a segment.",
   "cardinal.noLoopGhost": "No loop inside a segment, not even for α = 0.",
   "cardinal.loopLabel": "loop",

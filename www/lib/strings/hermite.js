@@ -28,7 +28,6 @@ export const HERMITE = {
   "hermite.noJoints": "One piece: no joint to check",
   "hermite.g1Only": "G¹ only",
   "hermite.c0Only": "C⁰ only",
-  "hermite.axisU": "u",
   "hermite.marker": "u = {u}",
   "hermite.formula.checker": "core's check:",
   "hermite.col.function": "Function",

@@ -1,0 +1,110 @@
+/**
+ * The cubic Hermite basis on u ∈ [0, 1] from the core, and its plot in a strip under a figure:
+ *
+ *   H0 = 2u³ − 3u² + 1,  H1 = −2u³ + 3u²,  H2 = u³ − 2u² + u,  H3 = u³ − u²,
+ *
+ * the Hermite pieces with unit data: the 2D piece with P0 = (1, 0), P1 = (0, 1) and zero tangents
+ * is (H0(u), H1(u)); the one with zero points and m0 = (1, 0), m1 = (0, 1) is (H2(u), H3(u)).
+ * `hermiteBasisSplines(sl)` → `{ basisValues, basisSlopes }` (two `sl.hermiteSpline`s, freed with
+ * the model); `basisGraphs(values, slopes)` → H0 … H3 at BASIS_SAMPLES values of u,
+ * function-major (basis-plot.js `drawGraph`'s layout); `basisAt(values, slopes, u)` → [H0 … H3];
+ * `hermitePlot` (a PlotStrip, values from −1/4 to 1: H3 dips to −4/27; reserve its `height`
+ * with the View's insets) and `drawHermitePlot(r, graphs, u, values, markerText)`.
+ */
+import { PlotStrip, drawPlotStrip } from "./plot-strip.js";
+import { drawGraph } from "./basis-plot.js";
+
+/** Samples of each basis function on [0, 1]. */
+export const BASIS_SAMPLES = 121;
+export const HERMITE_NAMES = Object.freeze(["H₀", "H₁", "H₂", "H₃"]);
+
+/** The two core Hermite pieces whose coordinates are H0, H1 and H2, H3 (see the module doc). */
+export function hermiteBasisSplines(sl) {
+  const zero = new Float64Array(4);
+  const unit = new Float64Array([1, 0, 0, 1]);
+  const basisValues = sl.hermiteSpline(unit, 2, [0, 1], zero);
+  try {
+    return { basisValues, basisSlopes: sl.hermiteSpline(zero, 2, [0, 1], unit) };
+  } catch (err) {
+    basisValues.free();
+    throw err;
+  }
+}
+
+/** H0 … H3 at BASIS_SAMPLES values of u, function-major. */
+export function basisGraphs(values, slopes) {
+  const a = values.sampleUniform(BASIS_SAMPLES);
+  const b = slopes.sampleUniform(BASIS_SAMPLES);
+  const out = new Float64Array(4 * BASIS_SAMPLES);
+  for (let k = 0; k < BASIS_SAMPLES; k++) {
+    out[k] = a[2 * k];
+    out[BASIS_SAMPLES + k] = a[2 * k + 1];
+    out[2 * BASIS_SAMPLES + k] = b[2 * k];
+    out[3 * BASIS_SAMPLES + k] = b[2 * k + 1];
+  }
+  return out;
+}
+
+/** [H0(u), H1(u), H2(u), H3(u)] from the core. */
+export function basisAt(values, slopes, u) {
+  const a = values.evaluate(u);
+  const b = slopes.evaluate(u);
+  return [a[0], a[1], b[0], b[1]];
+}
+
+/** The plot's strip: 0.3 of the canvas, at least 130 px; u from x0 to x1, values −1/4 … 1. */
+export const hermitePlot = new PlotStrip({
+  fraction: 0.3,
+  minPx: 130,
+  shortFraction: 0.45,
+  margin: Object.freeze({ top: 26, right: 30, bottom: 26, left: 40 }),
+});
+hermitePlot.lo = -0.25;
+hermitePlot.hi = 1;
+
+/**
+ * Where each name goes, [u, value], far from the other graphs: H0 and H1 above their low ends
+ * (the marker's text owns the top edge), H2 under its hump (H1 runs above it), H3 under its dip.
+ */
+const NAME_PLACES = Object.freeze([
+  [0.75, 5 / 32],
+  [0.25, 5 / 32],
+  [1 / 3, 4 / 27],
+  [2 / 3, -4 / 27],
+]);
+/** Gap between a value label or a name and what it names, CSS px. */
+const GAP_PX = 5;
+
+/** H0 … H3 over u ∈ [0, 1], the axis at 0, the line at 1, the marker at u with the values. */
+export function drawHermitePlot(r, graphs, u, values, markerText) {
+  const theme = r.theme;
+  const plot = hermitePlot;
+  plot.layout(r.width, r.height, r.scale);
+  drawPlotStrip(r, plot);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y1);
+  r.lineTo(plot.x0, plot.y0);
+  r.moveTo(plot.x0, plot.y(0));
+  r.lineTo(plot.x1, plot.y(0));
+  r.paint(theme.axis);
+  r.beginPath();
+  r.moveTo(plot.x0, plot.y(1));
+  r.lineTo(plot.x1, plot.y(1));
+  r.paint(theme.helper);
+  const gap = GAP_PX * r.scale;
+  r.text("0", plot.x0 - gap, plot.y(0), theme.labelSmall, "right", "middle");
+  r.text("1", plot.x0 - gap, plot.y(1), theme.labelSmall, "right", "middle");
+  r.text("u", plot.x1 + gap, plot.y(0), theme.labelSmall, "left", "middle");
+  for (let i = 0; i < 4; i++)
+    drawGraph(r, graphs, i, BASIS_SAMPLES, sampleX, plotY, theme.basisStroke[i]);
+  for (let i = 0; i < 4; i++) {
+    const [at, value] = NAME_PLACES[i];
+    const below = i >= 2;
+    const y = plot.y(value) + (below ? gap : -gap);
+    r.text(HERMITE_NAMES[i], plot.x(at), y, theme.labelSmall, "center", below ? "top" : "bottom");
+  }
+  plot.drawMarker(r, u, markerText, values, theme.basisPoint);
+}
+
+const sampleX = (k) => hermitePlot.x(k / (BASIS_SAMPLES - 1));
+const plotY = (value) => hermitePlot.y(value);
