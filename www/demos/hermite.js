@@ -15,7 +15,7 @@
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
 import { pointLabel, placeLabelAtTip } from "../lib/handles.js";
-import { vectorTips } from "../lib/vector-tips.js";
+import { vectorTips, selectedVectorBox } from "../lib/vector-tips.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
 import { fmt, subscript, exactNumbers, shortNumber, fractionOrDecimals } from "../lib/format.js";
@@ -195,6 +195,10 @@ export const controls = [
       companions: { tangents: [3, 0] },
       adjust: (s) => ({ ...s, tangents: s.tangents.map((m) => m.slice()) }),
     }),
+    selectedVectorBox("tangents", {
+      label: "hermite.control.tangent",
+      error: "hermite.badTangent",
+    }),
     checkbox("bezier", { label: "hermite.control.bezier" }),
   ),
   group(
@@ -245,7 +249,8 @@ const insetScratch = [0, 0, 0, 0];
 
 export const figure = {
   bounds: figureBounds,
-  handles: { field: "points" },
+  /** A newly selected point: the tangent box shows its m_i (a change the panel syncs to). */
+  handles: { field: "points", select: (i, ui) => ui.touch("selection") },
   insets: (width, height) => {
     insetScratch[2] = hermitePlot.height(height);
     return insetScratch;

@@ -67,4 +67,24 @@ export default [
       equal(JSON.stringify((await h.handles())[1]), JSON.stringify(p1), "P₁ stays");
     },
   ],
+  [
+    "typing m₀ = (0, 0) moves P(1/2) to ½(3, 4) − ⅛(4, 0) = (1, 2)",
+    async (page, h, _base, { assert, equal, settle }) => {
+      const box = page.locator('[data-control="tangents"] .sl-value');
+      equal(await box.inputValue(), "3 6", "m₀ shown when no point is selected");
+      await box.fill("0 0");
+      await box.press("Enter");
+      await settle(page);
+      const label = await h.canvas().getAttribute("aria-label");
+      assert(/\(1(\.00)?, 2(\.00)?\)/.test(label), `aria-label: ${label}`);
+      await box.fill("nonsense");
+      await box.press("Enter");
+      equal(await h.statusKind(), "error", "a bad tangent is reported");
+      // The box follows the selected point: End selects P₃, whose m₃ = (3, −3).
+      await h.canvas().focus();
+      await page.keyboard.press("End");
+      await settle(page);
+      equal(await box.inputValue(), "3 -3", "m₃ after selecting P₃");
+    },
+  ],
 ];

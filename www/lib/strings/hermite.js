@@ -17,6 +17,8 @@ export const HERMITE = {
   "hermite.maxPoints": "this demo allows at most {max} data points",
   "hermite.count": "{count} data points, {pieces} cubic pieces",
   "hermite.local": "Piece {i}: u = {u} (Δ = {delta})",
+  "hermite.control.tangent": "Tangent m{i} of the selected point (x y)",
+  "hermite.badTangent": "a tangent is two numbers such as “3 -1/2”, got “{value}”",
   "hermite.control.bezier": "Show the Bézier form of the current piece",
   "hermite.control.joinLegend": "Joins",
   "hermite.control.unlocked": "Unlock the tangent at an interior point (G¹)",
