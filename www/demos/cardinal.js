@@ -22,7 +22,8 @@ import { t } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { titledTable, headerRow } from "../lib/table.js";
 import { flatPath, arrow } from "../lib/draw.js";
-import { drawLegend } from "../lib/legend.js";
+import { drawCornerLegend } from "../lib/legend.js";
+import { scaledInsets } from "../lib/view.js";
 import { stretchCrossing } from "../lib/polyline-loops.js";
 
 export const id = "cardinal";
@@ -192,8 +193,13 @@ function loopNote(s, d) {
   return t(isUniform(s) ? "cardinal.noLoopHere" : "cardinal.noLoopGhost");
 }
 
+/** The band at the top kept free for the key (two rows), CSS px at text scale 1. */
+const LEGEND_PX = 52;
+const legendInsets = scaledInsets(LEGEND_PX, 0, 0, 0);
+
 export const figure = {
   bounds: (s) => paddedBounds(s.points, 0.1, 0.15),
+  insets: legendInsets,
   handles: { field: "points" },
 };
 
@@ -208,10 +214,14 @@ const SEGMENT_STYLE = Object.freeze({
   cap: "round",
 });
 const LOOP_RADIUS_PX = 12;
-const legendEntries = themed((theme) => [
-  { label: "cardinal.legend.curve", style: theme.compareCurve[0] },
-  { label: "cardinal.legend.ghost", style: theme.compareCurve[1] },
-]);
+/** The key: this curve, and the uniform one when it is drawn too. */
+const legendEntries = themed((theme) => {
+  const both = [
+    { label: "cardinal.legend.curve", style: theme.compareCurve[0] },
+    { label: "cardinal.legend.ghost", style: theme.compareCurve[1] },
+  ];
+  return { both, one: both.slice(0, 1) };
+});
 
 export function draw(r, v, s, d) {
   const theme = r.theme;
@@ -240,7 +250,8 @@ export function draw(r, v, s, d) {
     );
   }
   d.handles.draw(r, v);
-  if (d.ghostSamples) drawLegend(r, legendEntries(theme), 12, 14);
+  const key = legendEntries(theme);
+  drawCornerLegend(r, d.ghostSamples ? key.both : key.one);
 }
 
 /**
@@ -303,23 +314,23 @@ export function formula(s, d) {
   );
   const names = [-1, 0, 1, 2].map((k) => neighbour(s, i + k)).join(" \\\\ ");
   const factor = half ? "\\tfrac{1}{2}" : "";
-  const which = isRom(s)
-    ? s.alpha === 0
-      ? ""
-      : `\\text{${t("cardinal.formula.ghost")}}`
-    : `c = ${fmt(c)}`;
+  const which = isRom(s) && s.alpha !== 0 ? `\\text{${t("cardinal.formula.ghost")}}` : "";
   const m = d.tangents;
   const mid = d.segment.middle;
+  const tangents =
+    `m_{${i}} = (${fmt(m[2 * i])},\\,${fmt(m[2 * i + 1])}),\\ ` +
+    `m_{${i + 1}} = (${fmt(m[2 * i + 2])},\\,${fmt(m[2 * i + 3])})`;
   const lines = [
     isRom(s)
       ? "m_i = \\frac{P_i - P_{i-1}}{d_{i-1}} - \\frac{P_{i+1} - P_{i-1}}{d_{i-1} + d_i} + " +
-        `\\frac{P_{i+1} - P_i}{d_i},\\ \\ d_i = |P_{i+1} - P_i|^{\\alpha},\\ \\alpha = ${fmt(s.alpha)}`
-      : `m_i = (1 - c)\\,\\frac{P_{i+1} - P_{i-1}}{t_{i+1} - t_{i-1}},\\quad t_i = i,\\ c = ${fmt(s.tension)}`,
-    `m_{${i}} = (${fmt(m[2 * i])},\\,${fmt(m[2 * i + 1])}),\\quad ` +
-      `m_{${i + 1}} = (${fmt(m[2 * i + 2])},\\,${fmt(m[2 * i + 3])})`,
+        "\\frac{P_{i+1} - P_i}{d_i}"
+      : "m_i = (1 - c)\\,\\frac{P_{i+1} - P_{i-1}}{t_{i+1} - t_{i-1}}",
+    isRom(s)
+      ? `d_i = |P_{i+1} - P_i|^{\\alpha},\\ \\alpha = ${fmt(s.alpha)}:\\quad ${tangents}`
+      : `t_i = i,\\ c = ${fmt(s.tension)}:\\quad ${tangents}`,
     `P(t) = \\begin{bmatrix} t^3 & t^2 & t & 1 \\end{bmatrix} ${factor}\\begin{bmatrix} ${rows} \\end{bmatrix}` +
-      `\\begin{bmatrix} ${names} \\end{bmatrix}\\ ${which}`,
-    `P(\\tfrac{1}{2}) = (${fractionOrDecimals(mid[0], true)},\\ ${fractionOrDecimals(mid[1], true)})`,
+      `\\begin{bmatrix} ${names} \\end{bmatrix}`,
+    `P(\\tfrac{1}{2}) = (${fractionOrDecimals(mid[0], true)},\\ ${fractionOrDecimals(mid[1], true)})\\quad ${which}`,
   ];
   return lines;
 }

@@ -62,7 +62,10 @@ const RATIO_STEP = 0.01;
 /** Room around the points (fractions of the box) for the arrows and labels. */
 const ROOM = 0.12;
 
-/** Four points at t = 0, 1, 2, 3 with integer tangents; t = 1/2 is the middle of the first piece. */
+/**
+ * Four points at t = 0, 1, 2, 3 with integer tangents (the first piece leaves P₀ upwards and
+ * meets P₁ level: an arc); t = 1/2 is the middle of the first piece, P(1/2) = (1, 11/4).
+ */
 export const defaultState = Object.freeze({
   points: Object.freeze(
     [
@@ -74,7 +77,7 @@ export const defaultState = Object.freeze({
   ),
   tangents: Object.freeze(
     [
-      [3, 6],
+      [0, 6],
       [4, 0],
       [3, -3],
       [3, -3],

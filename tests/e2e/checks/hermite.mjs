@@ -1,9 +1,9 @@
 // Browser checks specific to the Hermite demo (run after the generic ones by run.mjs).
-// Hand-computed from the default state: P₀ = (0, 0), P₁ = (3, 4), m₀ = (3, 6), m₁ = (4, 0),
+// Hand-computed from the default state: P₀ = (0, 0), P₁ = (3, 4), m₀ = (0, 6), m₁ = (4, 0),
 // t_i = i (Δ = 1), t = 1/2. At u = 1/2: H₀ = 2/8 − 3/4 + 1 = 1/2, H₁ = −2/8 + 3/4 = 1/2,
 // H₂ = 1/8 − 2/4 + 1/2 = 1/8, H₃ = 1/8 − 1/4 = −1/8, so
-// P(1/2) = ½(0, 0) + ½(3, 4) + ⅛(3, 6) − ⅛(4, 0) = (3/2 + 3/8 − 1/2, 2 + 3/4) = (11/8, 11/4).
-// Bézier form of piece 0: q₁ = P₀ + m₀/3 = (1, 2), q₂ = P₁ − m₁/3 = (5/3, 4).
+// P(1/2) = ½(0, 0) + ½(3, 4) + ⅛(0, 6) − ⅛(4, 0) = (3/2 − 1/2, 2 + 3/4) = (1, 11/4).
+// Bézier form of piece 0: q₁ = P₀ + m₀/3 = (0, 2), q₂ = P₁ − m₁/3 = (5/3, 4).
 const cell = (page, i) =>
   page.locator(`[data-table="hermite-basis"] tr[data-index="${i}"] td[data-cell="value"]`);
 
@@ -19,23 +19,23 @@ export default [
     },
   ],
   [
-    "P(1/2) = (11/8, 11/4) in the formula panel and the figure's label",
+    "P(1/2) = (1, 11/4) in the formula panel and the figure's label",
     async (page, h, _base, { assert }) => {
       const formula = await page.locator(".sl-formula").textContent();
       // KaTeX keeps the TeX source in the MathML annotation.
-      assert(formula.includes("{11}{8}") && formula.includes("{11}{4}"), formula);
+      assert(formula.includes("\\left(1,\\ \\tfrac{11}{4}\\right)"), formula);
       const label = await h.canvas().getAttribute("aria-label");
-      assert(label.includes("(1.38, 2.75)"), `aria-label: ${label}`);
+      assert(label.includes("(1.00, 2.75)"), `aria-label: ${label}`);
     },
   ],
   [
-    "the Bézier form of piece 0: q₁ = (1, 2), q₂ = (1.667, 4)",
+    "the Bézier form of piece 0: q₁ = (0, 2), q₂ = (5/3, 4)",
     async (page, _h, _base, { assert, settle }) => {
       await page.locator('[data-control="bezier"] input').check();
       await settle(page);
       const formula = await page.locator(".sl-formula").textContent();
-      assert(formula.includes("(1,2)") || formula.includes("(1.000,2.000)"), `q₁ in ${formula}`);
-      assert(formula.includes("1.667") && formula.includes("4.000"), `q₂ in ${formula}`);
+      assert(formula.includes("= (0.000,\\,2.000)"), `q₁ in ${formula}`);
+      assert(formula.includes("= (1.667,\\,4.000)"), `q₂ in ${formula}`);
     },
   ],
   [
@@ -71,7 +71,7 @@ export default [
     "typing m₀ = (0, 0) moves P(1/2) to ½(3, 4) − ⅛(4, 0) = (1, 2)",
     async (page, h, _base, { assert, equal, settle }) => {
       const box = page.locator('[data-control="tangents"] .sl-value');
-      equal(await box.inputValue(), "3 6", "m₀ shown when no point is selected");
+      equal(await box.inputValue(), "0 6", "m₀ shown when no point is selected");
       await box.fill("0 0");
       await box.press("Enter");
       await settle(page);

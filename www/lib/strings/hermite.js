@@ -6,7 +6,7 @@ export const HERMITE = {
   "hermite.aria":
     "Piecewise cubic Hermite curve through {count} data points; t = {t}; P(t) = ({x}, {y}); joints: {joints}",
   "hermite.whatYouSee":
-    "The blue curve passes through the data points P₀ … Pₙ at t = 0, 1, 2, …; at each point an orange arrow shows its tangent m (drawn at half length; drag its tip). Between Pᵢ and Pᵢ₊₁ the curve is H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, with the four Hermite basis functions plotted below (syllabus section 5, after the Greek notes' interpolation chapter and the Croatian notes). Sharing one tangent per point makes the curve C¹; the core's continuity check names every joint.",
+    "The blue curve passes through the data points P₀ … Pₙ at t = 0, 1, 2, …; at each point an orange arrow shows its tangent m (drawn at half its length; drag its tip). Between Pᵢ and Pᵢ₊₁ the curve is H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, with the four Hermite basis functions plotted below (syllabus section 5, after the Greek notes' interpolation chapter and the Croatian notes). Sharing one tangent per point makes the curve C¹; the core's continuity check names every joint.",
   "hermite.try1":
     "Press Play and watch the marker run along H₀ … H₃ below: at u = 1/2 the table reads H₀ = H₁ = 1/2 and H₂ = −H₃ = 1/8.",
   "hermite.try2":
