@@ -157,6 +157,7 @@ export const compute = {
     (s, d) => d.splines.map((sp) => sp.sampleUniform(PIECE_SAMPLES * sp.pieceCount)),
   ],
   at: [[...SHAPE, "t"], atT],
+  marker: [[...SHAPE, "t"], (s, d) => t("hermite.marker", { u: fmt(d.at.u) })],
   bezierPoints: [[...SHAPE, "t"], (s, d) => pieceBezier(d, d.at.piece)],
   joints: [SHAPE, (s, d) => jointVerdicts(d.sl, d)],
 };
@@ -278,7 +279,8 @@ export function draw(r, v, s, d) {
   const theme = r.theme;
   flatPath(r, v, d.at.pieceSamples); // the current piece: a translucent band under it
   r.paint(PIECE_STYLE);
-  for (const flat of d.samples) {
+  for (let k = 0; k < d.samples.length; k++) {
+    const flat = d.samples[k];
     flatPath(r, v, flat);
     r.paint(theme.curve);
   }
@@ -286,7 +288,7 @@ export function draw(r, v, s, d) {
   drawTangents(r, v, s);
   d.handles.draw(r, v);
   r.point(v.sx(d.at.point[0]), v.sy(d.at.point[1]), theme.pointOnCurve);
-  drawHermitePlot(r, d.graphs, d.at.u, d.at.basis, t("hermite.marker", { u: fmt(d.at.u) }));
+  drawHermitePlot(r, d.graphs, d.at.u, d.at.basis, d.marker);
 }
 
 function drawBezier(r, v, q) {
@@ -320,7 +322,8 @@ const TIP_LABEL_GAP_PX = 10;
 function drawTangents(r, v, s) {
   const gap = TIP_LABEL_GAP_PX * r.scale;
   const named = v.width >= NARROW_CANVAS_PX * r.scale; // a phone: the names would cover the points
-  s.points.forEach((p, i) => {
+  for (let i = 0; i < s.points.length; i++) {
+    const p = s.points[i];
     const m = s.tangents[i];
     const x = v.sx(p[0]);
     const y = v.sy(p[1]);
@@ -337,7 +340,7 @@ function drawTangents(r, v, s) {
       r.point(bx, by, INCOMING_POINT);
       if (named) placeLabelAtTip(r, INCOMING_NAMES[i], x, y, bx, by, gap, r.theme.labelSmall);
     }
-  });
+  }
 }
 
 // ------------------------------------------------------------ formula, label

@@ -87,4 +87,23 @@ export default [
       equal(await box.inputValue(), "3 -3", "m₃ after selecting P₃");
     },
   ],
+  [
+    "Play runs t along the whole curve (0 … 3), the pieces one after the other",
+    async (page, _h, _base, { assert, equal, PLAY_MS }) => {
+      const box = page.locator('[data-control="t"] .sl-value');
+      const local = page.locator('[data-info="local"]');
+      await page.locator('[data-action="play"]').click();
+      await page.waitForTimeout(3 * PLAY_MS);
+      await page.locator('[data-action="play"]').click();
+      const t = Number(await box.inputValue());
+      assert(t > 1 && t <= 3, `t = ${t}`);
+      assert(
+        (await local.textContent()).includes(`Piece ${Math.min(2, Math.floor(t))}`),
+        await local.textContent(),
+      );
+      // The step buttons go by (b − a)/16 = 3/16.
+      await page.locator('[data-action="step"]').click();
+      equal(Number(await box.inputValue()) > t, true, "a step forward");
+    },
+  ],
 ];
