@@ -14,12 +14,11 @@
  */
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
-import { pointLabel, placeLabelAtTip } from "../lib/handles.js";
+import { pointLabel, placeLabelAtTip, placeLabelBeside } from "../lib/handles.js";
 import { vectorTips, selectedVectorBox } from "../lib/vector-tips.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
 import { fmt, subscript, exactNumbers, shortNumber, fractionOrDecimals } from "../lib/format.js";
-import { orderText } from "../lib/continuity.js";
 import { HUES, WIDTH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { paddedBounds } from "../lib/geometry.js";
@@ -38,6 +37,7 @@ import {
   partOf,
   pieceBezier,
   jointVerdicts,
+  verdictText,
   movePoint,
   applyTangents,
 } from "../lib/hermite-parts.js";
@@ -160,15 +160,12 @@ export const compute = {
   marker: [[...SHAPE, "t"], (s, d) => t("hermite.marker", { u: fmt(d.at.u) })],
   bezierPoints: [[...SHAPE, "t"], (s, d) => pieceBezier(d, d.at.piece)],
   joints: [SHAPE, (s, d) => jointVerdicts(d.sl, d)],
+  /** The core's verdict at the unlocked point, written beside it in the figure. */
+  jointLabel: [
+    SHAPE,
+    (s, d) => (s.unlocked && d.joints[s.joint - 1] ? verdictText(d.joints[s.joint - 1]) : ""),
+  ],
 };
-
-/** "C¹", "G¹ only", "C⁰ only" or the break word: the core's verdict at one joint. */
-export function verdictText({ c, g }) {
-  if (c >= 1) return orderText("C", c);
-  if (c === 0 && g >= 1) return t("hermite.g1Only");
-  if (c === 0) return t("hermite.c0Only");
-  return t("knotRuler.break");
-}
 
 const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
 
@@ -285,7 +282,7 @@ export function draw(r, v, s, d) {
     r.paint(theme.curve);
   }
   if (s.bezier) drawBezier(r, v, d.bezierPoints);
-  drawTangents(r, v, s);
+  drawTangents(r, v, s, d.jointLabel);
   d.handles.draw(r, v);
   r.point(v.sx(d.at.point[0]), v.sy(d.at.point[1]), theme.pointOnCurve);
   drawHermitePlot(r, d.graphs, d.at.u, d.at.basis, d.marker);
@@ -314,12 +311,16 @@ const INCOMING_NAMES = Object.freeze(
 const TIP_POINT = Object.freeze({ fill: HUES.orange, radius: 5 });
 const INCOMING_POINT = Object.freeze({ fill: HUES.reddishPurple, radius: 5 });
 const TIP_LABEL_GAP_PX = 10;
+/** The tangent line at an unlocked point runs this fraction of the two arrows' length beyond them. */
+const LINE_OVERSHOOT = 0.25;
+/** Distance of the joint's verdict from the unlocked point, CSS px. */
+const VERDICT_OFFSET_PX = 18;
 
 /**
  * P_i → P_i + s·m_i for every point, a dot on the (draggable) tip, its name beyond it; at an
  * unlocked point also P_k − s·λ·m_k → P_k (the incoming tangent λ·m_k, its tip behind P_k).
  */
-function drawTangents(r, v, s) {
+function drawTangents(r, v, s, jointLabel) {
   const gap = TIP_LABEL_GAP_PX * r.scale;
   const named = v.width >= NARROW_CANVAS_PX * r.scale; // a phone: the names would cover the points
   for (let i = 0; i < s.points.length; i++) {
@@ -336,6 +337,22 @@ function drawTangents(r, v, s) {
       const k = TANGENT_SCALE * s.ratio;
       const bx = v.sx(p[0] - k * m[0]);
       const by = v.sy(p[1] - k * m[1]);
+      // The line both tangents keep (the incoming tip slides on it), the core's verdict beside P_k.
+      r.beginPath();
+      r.moveTo(bx - (tx - bx) * LINE_OVERSHOOT, by - (ty - by) * LINE_OVERSHOOT);
+      r.lineTo(tx + (tx - bx) * LINE_OVERSHOOT, ty + (ty - by) * LINE_OVERSHOOT);
+      r.paint(r.theme.helper);
+      placeLabelBeside(
+        r,
+        jointLabel,
+        x,
+        y,
+        tx - x,
+        ty - y,
+        -1,
+        VERDICT_OFFSET_PX * r.scale,
+        r.theme.labelBold,
+      );
       arrow(r, bx, by, x, y, INCOMING_STYLE);
       r.point(bx, by, INCOMING_POINT);
       if (named) placeLabelAtTip(r, INCOMING_NAMES[i], x, y, bx, by, gap, r.theme.labelSmall);

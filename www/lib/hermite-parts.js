@@ -10,10 +10,12 @@
  * first point of each, the parameters; `partOf(model, state, t)` → the spline that holds t (the
  * right one at the joint) and the piece's data; `pieceBezier(model, i)` → q0 … q3 of piece i from
  * the core's `toBezier()`; `jointVerdicts(sl, model)` → the core's `{ c, g }` at every interior
- * point (`CompositeBezier.continuity()` of all the pieces); `movePoint` / `applyTangents` take a
+ * point (`CompositeBezier.continuity()` of all the pieces) and `verdictText(joint)` its words ("C¹", "G¹ only"); `movePoint` / `applyTangents` take a
  * moved point / the state's tangents into the splines in place (`setPoint`, `setTangent`).
  */
 import { flatten } from "./geometry.js";
+import { orderText } from "./continuity.js";
+import { t } from "./strings.js";
 
 /** Whether the state has a G¹ point: unlocked and an interior point to unlock. */
 const split = (s) => s.unlocked && s.points.length > 2;
@@ -119,6 +121,14 @@ export function jointVerdicts(sl, m) {
   } finally {
     whole.free();
   }
+}
+
+/** "C¹", "G¹ only", "C⁰ only" or the break word: the core's verdict at one joint. */
+export function verdictText({ c, g }) {
+  if (c >= 1) return orderText("C", c);
+  if (c === 0 && g >= 1) return t("hermite.g1Only");
+  if (c === 0) return t("hermite.c0Only");
+  return t("knotRuler.break");
 }
 
 const scratch = new Float64Array(2);

@@ -1,6 +1,8 @@
 // Browser checks specific to the cardinal / Catmull–Rom demo (run after the generic ones).
 // Hand-computed from the default points P₀ = (0, 0), P₁ = (6, 8), P₂ = (7, 8), P₃ = (13, 0):
-// - centripetal (α = ½): t₁ = |P₁ − P₀|^½ = 10^½ ≈ 3.162, t₂ = t₁ + 1 ≈ 4.162;
+// - centripetal (α = ½): t₁ = |P₁ − P₀|^½ = 10^½ ≈ 3.162, t₂ = t₁ + 1 ≈ 4.162; with d₀ = √10,
+//   d₁ = 1 Barry–Goldman's m₁ = (6, 8)/√10 − (7, 8)/(√10 + 1) + (1, 0)
+//   = (1.897367 − 1.681760 + 1, 2.529822 − 1.922025) ≈ (1.216, 0.608);
 // - uniform (α = 0): m₁ = (P₂ − P₀)/2 = (7/2, 4), m₂ = (P₃ − P₁)/2 = (7/2, −4); the Bézier points
 //   q₁ = P₁ + m₁/3 = (43/6, 28/3) and q₂ = P₂ − m₂/3 = (35/6, 28/3) cross, so segment 1 loops;
 //   the matrix form at t = 1/2: [1/8 1/4 1/2 1]·M = (−1/16, 9/16, 9/16, −1/16), so
@@ -20,10 +22,11 @@ async function typeValue(page, control, value, settle) {
 
 export default [
   [
-    "centripetal parameters: t₁ = √10 ≈ 3.162, t₂ ≈ 4.162",
+    "centripetal parameters t₁ = √10 ≈ 3.162, t₂ ≈ 4.162 and tangent m₁ ≈ (1.216, 0.608)",
     async (page, _h, _base, { equal }) => {
       equal(await param(page, 1).textContent(), "3.162", "t₁");
       equal(await param(page, 2).textContent(), "4.162", "t₂");
+      equal(await tangent(page, 1).textContent(), "(1.216, 0.608)", "centripetal m₁");
     },
   ],
   [
