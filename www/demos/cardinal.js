@@ -101,11 +101,14 @@ export const derive = {
   },
 };
 
-/** One `sampleUniform` with SEGMENT_SAMPLES per segment (segment j: samples j·S … (j + 1)·S − 1). */
+/**
+ * One `sampleUniform` with SEGMENT_SAMPLES per segment, uniform in t: on a curve with t_i = i
+ * (the uniform one) segment j holds about samples j·S … (j + 1)·S − 1.
+ */
 const samplesOf = (spline) =>
   spline ? spline.sampleUniform(SEGMENT_SAMPLES * spline.pieceCount) : null;
 
-/** The first loop inside one segment of the uniform curve's samples (its crossing), or null. */
+/** The first loop inside one segment of the uniform curve's samples (`samplesOf`), with its crossing, or null. */
 function loopOf(flat, count) {
   if (!flat) return null;
   const out = [0, 0];

@@ -19,7 +19,7 @@ import { vectorTips, selectedVectorBox } from "../lib/vector-tips.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
 import { fmt, subscript, exactNumbers, shortNumber, fractionOrDecimals } from "../lib/format.js";
-import { HUES, WIDTH } from "../lib/theme.js";
+import { HUES, WIDTH, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { paddedBounds } from "../lib/geometry.js";
 import { titledTable, headerRow, valueSpans, setValueSpans } from "../lib/table.js";
@@ -46,7 +46,7 @@ export const id = "hermite";
 export const strings = "hermite";
 export const section = 5;
 
-/** A tangent m_i is drawn as the arrow P_i → P_i + TANGENT_SCALE · m_i (its tip is the handle). */
+/** A tangent m_i is drawn as the arrow P_i → P_i + TANGENT_SCALE · m_i (its tip is dragged). */
 export const TANGENT_SCALE = 0.5;
 /** Fewest and most data points. */
 export const MIN_POINTS = 2;
@@ -118,7 +118,8 @@ export function adjust(s) {
 /**
  * The model: the spline(s) (one, or two meeting at the unlocked point: lib/hermite-parts.js) and
  * the basis as two core Hermite pieces on [0, 1] with unit data, (H0, H1) and (H2, H3).
- * Drags go into them in place (`setPoint`, `setTangent`); see `setup`'s handles.
+ * Drags go into them in place: a point through `movePoint` (`setPoint`), a tangent tip (`tips`,
+ * lib/vector-tips.js) or a typed tangent through `applyTangents` (`setTangent`).
  */
 export const derive = {
   from: ["points", "tangents", "unlocked", "joint", "ratio"],
@@ -151,14 +152,18 @@ function atT(s, d) {
 
 const SHAPE = ["points", "tangents", "unlocked", "joint", "ratio"];
 export const compute = {
-  graphs: [["points"], (s, d) => basisGraphs(d.basisValues, d.basisSlopes)],
+  /** The basis graphs: made again only with a new model (they do not depend on the state). */
+  graphs: [[], (s, d) => basisGraphs(d.basisValues, d.basisSlopes)],
   samples: [
     SHAPE,
     (s, d) => d.splines.map((sp) => sp.sampleUniform(PIECE_SAMPLES * sp.pieceCount)),
   ],
   at: [[...SHAPE, "t"], atT],
   marker: [[...SHAPE, "t"], (s, d) => t("hermite.marker", { u: fmt(d.at.u) })],
-  bezierPoints: [[...SHAPE, "t"], (s, d) => pieceBezier(d, d.at.piece)],
+  bezierPoints: [
+    [...SHAPE, "t", "bezier"],
+    (s, d) => (s.bezier ? pieceBezier(d, d.at.piece) : null),
+  ],
   joints: [SHAPE, (s, d) => jointVerdicts(d.sl, d)],
   /** The core's verdict at the unlocked point, written beside it in the figure. */
   jointLabel: [
@@ -236,7 +241,7 @@ function jointsNote(s, d) {
   return t("hermite.joints", { list });
 }
 
-/** The tips of the tangent arrows (and the incoming one at an unlocked point) are in the box too. */
+/** The tips of the tangent arrows are in the box too. */
 function figureBounds(s) {
   const all = s.points.slice();
   s.points.forEach((p, i) => {
@@ -265,7 +270,7 @@ const TANGENT_STYLE = Object.freeze({ stroke: HUES.orange, width: 2, cap: "round
 const BEZIER_STYLE = Object.freeze({
   stroke: HUES.bluishGreen,
   width: WIDTH.polygon,
-  dash: [5, 4],
+  dash: POLYGON_DASH,
 });
 const BEZIER_POINT = Object.freeze({ fill: HUES.bluishGreen, radius: 4 });
 const PIECE_STYLE = Object.freeze({ stroke: HUES.blue, width: 9, strokeAlpha: 0.2, cap: "round" });
@@ -288,6 +293,7 @@ export function draw(r, v, s, d) {
   drawHermitePlot(r, d.graphs, d.at.u, d.at.basis, d.marker);
 }
 
+/** The Bézier polygon q0 q1 q2 q3 of the current piece (the core's `toBezier()`), q1 and q2 named. */
 function drawBezier(r, v, q) {
   r.beginPath();
   for (let k = 0; k < 4; k++) {

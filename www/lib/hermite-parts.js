@@ -10,8 +10,9 @@
  * first point of each, the parameters; `partOf(model, state, t)` → the spline that holds t (the
  * right one at the joint) and the piece's data; `pieceBezier(model, i)` → q0 … q3 of piece i from
  * the core's `toBezier()`; `jointVerdicts(sl, model)` → the core's `{ c, g }` at every interior
- * point (`CompositeBezier.continuity()` of all the pieces) and `verdictText(joint)` its words ("C¹", "G¹ only"); `movePoint` / `applyTangents` take a
- * moved point / the state's tangents into the splines in place (`setPoint`, `setTangent`).
+ * point (`CompositeBezier.continuity()` of all the pieces), `verdictText(joint)` its words ("C¹",
+ * "G¹ only"); `movePoint` / `applyTangents` take a moved point / the state's tangents into the
+ * splines in place (`setPoint`, `setTangent`).
  */
 import { flatten } from "./geometry.js";
 import { orderText } from "./continuity.js";
