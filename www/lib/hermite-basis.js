@@ -63,13 +63,14 @@ hermitePlot.lo = -0.25;
 hermitePlot.hi = 1;
 
 /**
- * Where each name goes, [u, value], far from the other graphs: H0 and H1 above their low ends
- * (the marker's text owns the top edge), H2 under its hump (H1 runs above it), H3 under its dip.
+ * Where each name goes, [u, H(u)], above its graph where nothing runs close above (the marker's
+ * text owns the top edge): H0 at u = 3/4, H1 at u = 0.35, H2 at u = 0.15 (H1 still below it),
+ * and H3 under its dip at u = 2/3.
  */
 const NAME_PLACES = Object.freeze([
   [0.75, 5 / 32],
-  [0.25, 5 / 32],
-  [1 / 3, 4 / 27],
+  [0.35, 0.28175],
+  [0.15, 0.108375],
   [2 / 3, -4 / 27],
 ]);
 /** Gap between a value label or a name and what it names, CSS px. */
@@ -99,7 +100,7 @@ export function drawHermitePlot(r, graphs, u, values, markerText) {
     drawGraph(r, graphs, i, BASIS_SAMPLES, sampleX, plotY, theme.basisStroke[i]);
   for (let i = 0; i < 4; i++) {
     const [at, value] = NAME_PLACES[i];
-    const below = i >= 2;
+    const below = i === 3;
     const y = plot.y(value) + (below ? gap : -gap);
     r.text(HERMITE_NAMES[i], plot.x(at), y, theme.labelSmall, "center", below ? "top" : "bottom");
   }
