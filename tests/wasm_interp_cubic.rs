@@ -299,3 +299,35 @@ fn defaults_and_spacings() {
     assert_eq!(cr.params(), centripetal);
     assert_eq!(cr.kind(), "catmullRom");
 }
+
+#[test]
+fn hermite_basis_and_bezier_form() {
+    assert_eq!(
+        interp::hermite_basis_js(0.5, None).unwrap(),
+        vec![0.5, 0.5, 0.125, -0.125]
+    );
+    assert_eq!(
+        interp::hermite_basis_js(0.0, Some(1.0)).unwrap(),
+        vec![0.0, 0.0, 1.0, 0.0]
+    );
+    assert!(message(interp::hermite_basis_js(f64::NAN, None)).contains("s is NaN"));
+    let q = interp::hermite_bezier(
+        arr(&[0.0, 0.0]),
+        arr(&[3.0, 3.0]),
+        arr(&[4.0, 1.0]),
+        arr(&[6.0, -3.0]),
+        Some(2.0),
+    )
+    .unwrap();
+    assert_eq!(q, vec![0.0, 0.0, 2.0, 2.0, 0.0, 3.0, 4.0, 1.0]);
+    assert_eq!(
+        message(interp::hermite_bezier(
+            arr(&[0.0, 0.0]),
+            arr(&[3.0]),
+            arr(&[4.0, 1.0]),
+            arr(&[6.0, -3.0]),
+            None
+        )),
+        "m0 must have 2 numbers, got 1"
+    );
+}

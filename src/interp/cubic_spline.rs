@@ -137,6 +137,17 @@ impl<C: Cartesian> CubicSpline<C> {
     /// [`Error::TooFewDataPoints`] below `end.min_points()` (2; 3 for periodic), the parameter
     /// errors of [`ParamChoice::resolve`], [`Error::NotFinite`] for a clamped tangent,
     /// [`Error::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
+    ///
+    /// ```
+    /// use splinelab::interp::{CubicSpline, EndCondition};
+    /// use splinelab::{prelude::*, DVec2};
+    /// // Natural: 2m_0 + m_1 = 3s_0, m_0 + 4m_1 + m_2 = 3(s_0 + s_1), m_1 + 2m_2 = 3s_1.
+    /// let p = vec![DVec2::new(0.0, 0.0), DVec2::new(1.0, 1.0), DVec2::new(2.0, 0.0)];
+    /// let c = CubicSpline::interpolate(p, vec![0.0, 1.0, 2.0], EndCondition::Natural).unwrap();
+    /// assert_eq!(c.evaluate(1.0).unwrap(), DVec2::new(1.0, 1.0));
+    /// assert!((c.tangents()[0] - DVec2::new(1.0, 1.5)).length() < 1e-15);
+    /// assert!(c.derivative(0.0, 2).unwrap().length() < 1e-15);
+    /// ```
     pub fn interpolate(
         points: Vec<C>,
         params: impl Into<ParamChoice>,
