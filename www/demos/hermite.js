@@ -10,7 +10,7 @@
  * Sharing m_i makes the curve C¹; "unlocking" an interior point gives it an incoming tangent
  * λ·m_k (parallel, another length): two `hermiteSpline`s meet there G¹ only. The verdict per
  * joint is the core's (`CompositeBezier.continuity()` of the pieces' `toBezier()`), the basis
- * graphs are the core's Hermite pieces with unit data, the curve the core's samples.
+ * the core's `hermiteBasis(u)`, the curve the core's samples.
  */
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
@@ -23,14 +23,7 @@ import { HUES, WIDTH, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { paddedBounds } from "../lib/geometry.js";
 import { titledTable, headerRow, valueSpans, setValueSpans } from "../lib/table.js";
-import {
-  hermiteBasisSplines,
-  basisGraphs,
-  basisAt,
-  hermitePlot,
-  drawHermitePlot,
-  HERMITE_NAMES,
-} from "../lib/hermite-basis.js";
+import { basisGraphs, hermitePlot, drawHermitePlot, HERMITE_NAMES } from "../lib/hermite-basis.js";
 import { flatPath, arrow } from "../lib/draw.js";
 import {
   hermiteParts,
@@ -116,15 +109,14 @@ export function adjust(s) {
 }
 
 /**
- * The model: the spline(s) (one, or two meeting at the unlocked point: lib/hermite-parts.js) and
- * the basis as two core Hermite pieces on [0, 1] with unit data, (H0, H1) and (H2, H3).
+ * The model: the spline(s) (one, or two meeting at the unlocked point: lib/hermite-parts.js).
  * Drags go into them in place: a point through `movePoint` (`setPoint`), a tangent tip (`tips`,
  * lib/vector-tips.js) or a typed tangent through `applyTangents` (`setTangent`).
  */
 export const derive = {
   from: ["points", "tangents", "unlocked", "joint", "ratio"],
   build(s, sl) {
-    return { ...hermiteParts(sl, s), ...hermiteBasisSplines(sl) };
+    return hermiteParts(sl, s);
   },
   moved: (m, i, xy) => movePoint(m, i, xy),
   inPlace: {
@@ -144,7 +136,7 @@ function atT(s, d) {
   for (let k = 0; k < PIECE_SAMPLES; k++) ts[k] = t0 + (at.delta * k) / (PIECE_SAMPLES - 1);
   return {
     ...at,
-    basis: basisAt(d.basisValues, d.basisSlopes, at.u),
+    basis: d.sl.hermiteBasis(at.u),
     point: at.spline.evaluate(s.t),
     pieceSamples: at.spline.sample(ts),
   };
@@ -152,8 +144,8 @@ function atT(s, d) {
 
 const SHAPE = ["points", "tangents", "unlocked", "joint", "ratio"];
 export const compute = {
-  /** The basis graphs: made again only with a new model (they do not depend on the state). */
-  graphs: [[], (s, d) => basisGraphs(d.basisValues, d.basisSlopes)],
+  /** The basis graphs (they do not depend on the state: asked of the core once). */
+  graphs: [[], (s, d) => basisGraphs(d.sl)],
   samples: [
     SHAPE,
     (s, d) => d.splines.map((sp) => sp.sampleUniform(PIECE_SAMPLES * sp.pieceCount)),

@@ -1,15 +1,12 @@
 /**
  * The cubic Hermite basis on u ∈ [0, 1] from the core, and its plot in a strip under a figure:
  *
- *   H0 = 2u³ − 3u² + 1,  H1 = −2u³ + 3u²,  H2 = u³ − 2u² + u,  H3 = u³ − u²,
+ *   H0 = 2u³ − 3u² + 1,  H1 = −2u³ + 3u²,  H2 = u³ − 2u² + u,  H3 = u³ − u²
  *
- * the Hermite pieces with unit data: the 2D piece with P0 = (1, 0), P1 = (0, 1) and zero tangents
- * is (H0(u), H1(u)); the one with zero points and m0 = (1, 0), m1 = (0, 1) is (H2(u), H3(u)).
- * `hermiteBasisSplines(sl)` → `{ basisValues, basisSlopes }` (two `sl.hermiteSpline`s, freed with
- * the model); `basisGraphs(values, slopes)` → H0 … H3 at BASIS_SAMPLES values of u,
- * function-major (basis-plot.js `drawGraph`'s layout); `basisAt(values, slopes, u)` → [H0 … H3];
- * `hermitePlot` (a PlotStrip, values from −1/4 to 1: H3 dips to −4/27; reserve its `height`
- * with the View's insets) and `drawHermitePlot(r, graphs, u, values, markerText)`.
+ * (`sl.hermiteBasis(u)` → [H0, H1, H2, H3](u)). `basisGraphs(sl)` → H0 … H3 at BASIS_SAMPLES
+ * values of u, function-major (basis-plot.js `drawGraph`'s layout), asked of the core once and
+ * kept; `hermitePlot` (a PlotStrip, values from −1/4 to 1: H3 dips to −4/27; reserve its
+ * `height` with the View's insets) and `drawHermitePlot(r, graphs, u, values, markerText)`.
  */
 import { PlotStrip, drawPlotStrip } from "./plot-strip.js";
 import { drawGraph } from "./basis-plot.js";
@@ -18,38 +15,19 @@ import { drawGraph } from "./basis-plot.js";
 export const BASIS_SAMPLES = 121;
 export const HERMITE_NAMES = Object.freeze(["H₀", "H₁", "H₂", "H₃"]);
 
-/** The two core Hermite pieces whose coordinates are H0, H1 and H2, H3 (see the module doc). */
-export function hermiteBasisSplines(sl) {
-  const zero = new Float64Array(4);
-  const unit = new Float64Array([1, 0, 0, 1]);
-  const basisValues = sl.hermiteSpline(unit, 2, [0, 1], zero);
-  try {
-    return { basisValues, basisSlopes: sl.hermiteSpline(zero, 2, [0, 1], unit) };
-  } catch (err) {
-    basisValues.free();
-    throw err;
-  }
-}
+/** The graphs, once asked of the core (they depend on nothing). */
+let graphs = null;
 
-/** H0 … H3 at BASIS_SAMPLES values of u, function-major. */
-export function basisGraphs(values, slopes) {
-  const a = values.sampleUniform(BASIS_SAMPLES);
-  const b = slopes.sampleUniform(BASIS_SAMPLES);
+/** H0 … H3 at BASIS_SAMPLES values of u ∈ [0, 1], function-major (from `sl.hermiteBasis`). */
+export function basisGraphs(sl) {
+  if (graphs) return graphs;
   const out = new Float64Array(4 * BASIS_SAMPLES);
   for (let k = 0; k < BASIS_SAMPLES; k++) {
-    out[k] = a[2 * k];
-    out[BASIS_SAMPLES + k] = a[2 * k + 1];
-    out[2 * BASIS_SAMPLES + k] = b[2 * k];
-    out[3 * BASIS_SAMPLES + k] = b[2 * k + 1];
+    const h = sl.hermiteBasis(k / (BASIS_SAMPLES - 1));
+    for (let i = 0; i < 4; i++) out[i * BASIS_SAMPLES + k] = h[i];
   }
-  return out;
-}
-
-/** [H0(u), H1(u), H2(u), H3(u)] from the core. */
-export function basisAt(values, slopes, u) {
-  const a = values.evaluate(u);
-  const b = slopes.evaluate(u);
-  return [a[0], a[1], b[0], b[1]];
+  graphs = out;
+  return graphs;
 }
 
 /** The plot's strip: 0.3 of the canvas, at least 130 px; u from x0 to x1, values −1/4 … 1. */
