@@ -370,7 +370,7 @@ export function formula(s, d) {
   const inputs = [...p0, ...p1, ...m0, ...m1, delta];
   const num = exactNumbers(u, inputs);
   const uTex = num.param(true);
-  const w = basis.map((h) => num.value(h, 3, true));
+  const w = Array.from(basis, (h) => num.value(h, 3, true));
   const vec = (p, scale = 1) => `(${shortNumber(scale * p[0])},\\,${shortNumber(scale * p[1])})`;
   const lines = [
     "H_0 = 2u^3-3u^2+1,\\ \\ H_1 = -2u^3+3u^2,\\ \\ H_2 = u^3-2u^2+u,\\ \\ H_3 = u^3-u^2",

@@ -24,6 +24,12 @@ export default [
       const formula = await page.locator(".sl-formula").textContent();
       // KaTeX keeps the TeX source in the MathML annotation.
       assert(formula.includes("\\left(1,\\ \\tfrac{11}{4}\\right)"), formula);
+      // The weights written out: ½, ½, ⅛, −⅛ (no NaN).
+      assert(
+        formula.includes("= \\tfrac{1}{2}\\,(0,\\,0) + \\tfrac{1}{2}\\,(3,\\,4) + (\\tfrac{1}{8})"),
+        formula,
+      );
+      assert(!formula.includes("NaN"), formula);
       const label = await h.canvas().getAttribute("aria-label");
       assert(label.includes("(1.00, 2.75)"), `aria-label: ${label}`);
     },
