@@ -102,6 +102,8 @@ export const demos = Object.freeze(
       load: () => import("./negative-weights.js"),
     },
     { id: "lagrange", section: 5, strings: "lagrange", load: () => import("./lagrange.js") },
+    { id: "hermite", section: 5, strings: "hermite", load: () => import("./hermite.js") },
+    { id: "cardinal", section: 5, strings: "cardinal", load: () => import("./cardinal.js") },
     {
       id: "parametrization",
       section: 5,
