@@ -101,6 +101,12 @@ export const demos = Object.freeze(
       strings: "negativeWeights",
       load: () => import("./negative-weights.js"),
     },
+    {
+      id: "cubic-spline",
+      section: 5,
+      strings: "cubicSpline",
+      load: () => import("./cubic-spline.js"),
+    },
   ].map(Object.freeze),
 );
 
