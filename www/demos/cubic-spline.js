@@ -24,7 +24,7 @@
  */
 import { field, checkPoints } from "../lib/validate.js";
 import { checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
-import { subscript, shortNumber } from "../lib/format.js";
+import { fmt, subscript, shortNumber } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { flatPath, arrow } from "../lib/draw.js";
@@ -430,6 +430,12 @@ export function label(s, d) {
 
 // ------------------------------------------------------------ the system's table
 
+/** A number in lecture mode's table: an integer plain, else two decimals. */
+function lectureNumber(v) {
+  const r = Math.round(v);
+  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v, 2);
+}
+
 /** The taller figure, the legend's measure, the refusal notes, and the table of the system. */
 export function setup(ui) {
   ui.ctx.slots.figure.classList.add("sl-figure-tall");
@@ -441,15 +447,19 @@ export function setup(ui) {
   function fill(s, d) {
     const { end, system, tangents, params } = d.main;
     const size = system.diagonal.length;
-    const maxShown = ui.view.lecture ? MAX_SHOWN_LECTURE : MAX_SHOWN;
-    const vector = (flat, i) => `(${shortNumber(flat[2 * i])}, ${shortNumber(flat[2 * i + 1])})`;
+    // Lecture mode: fewer rows, two decimals, no solved values under the unknowns (the table fits).
+    const lecturing = ui.view.lecture;
+    const maxShown = lecturing ? MAX_SHOWN_LECTURE : MAX_SHOWN;
+    const number = lecturing ? lectureNumber : shortNumber;
+    const vector = (flat, i) => `(${number(flat[2 * i])}, ${number(flat[2 * i + 1])})`;
     table.table.dataset.end = end;
     table.show({
       size,
       maxShown,
+      number,
       entry: (i, j) => systemEntry(system, size, i, j),
       unknown: (i) => `m${subscript(i)}`,
-      solution: (i) => `= ${vector(tangents, i)}`,
+      solution: (i) => (lecturing ? "" : `= ${vector(tangents, i)}`),
       rhs: (i) => vector(system.rhs, i),
       label: (i) => rowLabel(end, i, size, params.length - 1),
       highlight: (i) => i === 0 || i === size - 1,

@@ -118,7 +118,8 @@ export class SystemTable {
    * Shows a system: `size` equations, `maxShown` rows and columns at most, `entry(i, j)` → a_ij
    * (a number; zeros are shown muted), `unknown(i)` → its name, `solution(i)` → its value as text
    * (or ""), `rhs(i)` → c_i as text, `label(i)` → the equation's name, `highlight(i)` → whether
-   * row i is highlighted, `marked(i, j)` → whether cell (i, j) is marked.
+   * row i is highlighted, `marked(i, j)` → whether cell (i, j) is marked; `number(a)` → a
+   * coefficient's text (default format.js `shortNumber`).
    */
   show(o) {
     const key = `${o.size}|${o.maxShown}`;
@@ -135,7 +136,7 @@ export class SystemTable {
         if (j === ELLIPSIS) return;
         const cell = row.entries[k];
         const a = o.entry(i, j);
-        setText(cell, shortNumber(a));
+        setText(cell, (o.number ?? shortNumber)(a));
         cell.classList.toggle("sl-cell-name", a === 0);
         cell.classList.toggle("sl-highlight", Boolean(o.marked?.(i, j)));
       });

@@ -58,8 +58,8 @@ export const CUBIC_SPLINE = {
   "cubicSpline.row.start.periodic": "periodic: C″ continuous at t₀ = t{n}",
   "cubicSpline.row.end.periodic": "C″ continuous at t{last}, m{n} = m₀",
   "cubicSpline.systemEquation": "Equation",
-  "cubicSpline.systemUnknown": "Unknown",
-  "cubicSpline.systemRhs": "Right-hand side",
+  "cubicSpline.systemUnknown": "mᵢ",
+  "cubicSpline.systemRhs": "cᵢ",
   "cubicSpline.tableCaption":
     "The tridiagonal system A·m = c ({size} equations) for the tangents mᵢ = C′(tᵢ), {end} ends, {parametrization} parameters; the end rows are highlighted{hidden}",
   "cubicSpline.tableCaptionCyclic":
