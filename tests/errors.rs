@@ -8,6 +8,7 @@ use common::*;
 use splinelab::bezier::{self, BezierCurve, CompositeCurve, JoinRule};
 use splinelab::bspline::{self, BSplineCurve, KnotKind, KnotVector, Parameterization};
 use splinelab::geom::MAX_DEGREE;
+use splinelab::interp::{self, EndCondition};
 use splinelab::rational;
 use splinelab::{BSplineSurface, DMat3, DVec2, DVec3, Error};
 #[cfg(target_arch = "wasm32")]
@@ -572,6 +573,139 @@ fn codes_are_kebab_case() {
         .code()
         .chars()
         .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'));
+}
+
+// ---- Section 5's cubic family (core-cubic) ----
+
+fn cubic_data() -> Vec<DVec2> {
+    pts2(&[(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (5.0, 1.0)])
+}
+
+#[test]
+fn cubic_param_count() {
+    fails(
+        interp::LagrangeCurve::new(cubic_data(), &[0.0, 1.0]),
+        "param-count",
+        &["params must have one value per point (4), got 2"],
+    );
+}
+
+#[test]
+fn cubic_params_not_increasing() {
+    fails(
+        interp::CubicSpline::interpolate(
+            cubic_data(),
+            vec![0.0, 1.0, 0.5, 2.0],
+            EndCondition::Natural,
+        ),
+        "params-not-increasing",
+        &["t_2 = 0.5 is not above t_1 = 1"],
+    );
+}
+
+#[test]
+fn cubic_missing_argument() {
+    fails(
+        EndCondition::<DVec2>::parse("clamped", None, Some(DVec2::X)),
+        "missing-argument",
+        &["the \"clamped\" end condition needs startTangent"],
+    );
+}
+
+#[test]
+fn cubic_argument_length() {
+    fails(
+        interp::CubicSpline::hermite(cubic_data(), vec![0.0, 1.0, 2.0, 3.0], vec![DVec2::X; 3]),
+        "argument-length",
+        &["tangents must have 8 numbers, got 6"],
+    );
+}
+
+#[test]
+fn cubic_not_closed() {
+    fails(
+        interp::CubicSpline::interpolate(
+            cubic_data(),
+            vec![0.0, 1.0, 2.0, 3.0],
+            EndCondition::Periodic,
+        ),
+        "not-closed",
+        &["last point (point 3) equal to the first"],
+    );
+}
+
+#[test]
+fn cubic_alpha_out_of_range() {
+    fails(
+        interp::CubicSpline::catmull_rom(cubic_data(), -0.5, false),
+        "alpha-out-of-range",
+        &["alpha = -0.5 is outside [0, 1]"],
+    );
+    fails(
+        Parameterization::from_alpha(f64::NAN),
+        "alpha-out-of-range",
+        &["alpha = NaN"],
+    );
+}
+
+#[test]
+fn cubic_too_few_data_points() {
+    fails(
+        interp::CubicSpline::interpolate(
+            pts2(&[(0.0, 0.0), (0.0, 0.0)]),
+            vec![0.0, 1.0],
+            EndCondition::Periodic,
+        ),
+        "too-few-data-points",
+        &["a cubic spline needs at least 3 data points, got 2"],
+    );
+    fails(
+        interp::LagrangeCurve::new(pts2(&[(0.0, 0.0)]), &[0.0]),
+        "too-few-data-points",
+        &["a Lagrange curve needs at least 2 data points, got 1"],
+    );
+}
+
+#[test]
+fn cubic_singular_system() {
+    fails(
+        interp::solve_tridiagonal(&[1.0], &[1.0, 1.0], &[1.0], &[0.0, 1.0], "the test system"),
+        "singular-system",
+        &["the test system is singular: elimination met a zero pivot in row 1"],
+    );
+}
+
+#[test]
+fn cubic_spline_kind() {
+    let mut c = interp::CubicSpline::bessel(cubic_data(), vec![0.0, 1.0, 2.0, 3.0]).unwrap();
+    fails(
+        c.set_tangent(0, DVec2::X),
+        "spline-kind",
+        &["setTangent works on splines built by hermiteSpline; this one was built by besselSpline"],
+    );
+}
+
+#[test]
+fn cubic_coincident_points_alpha() {
+    fails(
+        bspline::parameterize(
+            &cubic_data()[..1].repeat(2),
+            Parameterization::from_alpha(0.3).unwrap(),
+        ),
+        "coincident-points",
+        &["points 0 and 1 coincide; alpha = 0.3 spacing"],
+    );
+}
+
+#[test]
+fn cubic_lagrange_too_large() {
+    let points = vec![DVec2::ZERO; interp::MAX_LAGRANGE_POINTS + 1];
+    let params: Vec<f64> = (0..points.len()).map(|i| i as f64).collect();
+    fails(
+        interp::LagrangeCurve::new(points, &params),
+        "too-large",
+        &["66"],
+    );
 }
 
 /// The variants only the JavaScript layer raises, through the exported functions.

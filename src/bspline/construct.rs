@@ -4,15 +4,32 @@
 use crate::error::{Error, Result};
 use crate::geom::Point;
 
-/// How parameter values (or knot gaps) are spaced.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// How parameter values (or knot gaps) are spaced: steps `|P_{i+1} − P_i|^α`.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Parameterization {
-    /// Equal steps: 0, 1, 2, …
+    /// Equal steps: 0, 1, 2, … (α = 0; repeated points allowed).
     Uniform,
-    /// Steps equal to the distances `|P_{i+1} − P_i|`.
+    /// Steps equal to the distances `|P_{i+1} − P_i|` (α = 1).
     Chord,
-    /// Steps equal to `sqrt|P_{i+1} − P_i|`.
+    /// Steps equal to `sqrt|P_{i+1} − P_i|` (α = 1/2).
     Centripetal,
+    /// Steps `|P_{i+1} − P_i|^α` for an exponent α strictly between 0 and 1 other than 1/2
+    /// (build it with [`Parameterization::from_alpha`], which names the three classic ones).
+    Alpha(f64),
+}
+
+impl std::fmt::Display for Parameterization {
+    /// `Uniform`, `Chord`, `Centripetal` (as in messages so far), or `alpha = 0.3`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Parameterization::Uniform => f.write_str("Uniform"),
+            Parameterization::Chord => f.write_str("Chord"),
+            Parameterization::Centripetal => f.write_str("Centripetal"),
+            Parameterization::Alpha(a) => {
+                write!(f, "alpha = {}", crate::platform::number_text(*a))
+            }
+        }
+    }
 }
 
 impl Parameterization {
@@ -25,20 +42,52 @@ impl Parameterization {
             _ => Err(Error::UnknownOption {
                 name: "kind",
                 value: s.into(),
-                expected: "\"uniform\", \"chord\", \"centripetal\"",
+                expected: "\"uniform\", \"chord\", \"centripetal\" (or a number alpha in [0, 1])",
             }),
+        }
+    }
+
+    /// The spacing with exponent α ∈ [0, 1]: 0 is [`Parameterization::Uniform`], 1/2
+    /// [`Parameterization::Centripetal`], 1 [`Parameterization::Chord`], anything between
+    /// [`Parameterization::Alpha`].
+    ///
+    /// # Errors
+    /// [`Error::AlphaOutOfRange`] for α outside `[0, 1]` or not a number.
+    pub fn from_alpha(alpha: f64) -> Result<Self> {
+        if !(0.0..=1.0).contains(&alpha) {
+            return Err(Error::AlphaOutOfRange { value: alpha });
+        }
+        Ok(if alpha == 0.0 {
+            Parameterization::Uniform
+        } else if alpha == 0.5 {
+            Parameterization::Centripetal
+        } else if alpha == 1.0 {
+            Parameterization::Chord
+        } else {
+            Parameterization::Alpha(alpha)
+        })
+    }
+
+    /// The exponent α of the steps `|ΔP|^α`.
+    pub fn alpha(self) -> f64 {
+        match self {
+            Parameterization::Uniform => 0.0,
+            Parameterization::Chord => 1.0,
+            Parameterization::Centripetal => 0.5,
+            Parameterization::Alpha(a) => a,
         }
     }
 
     /// The step between `a` and `b` (`None` for a zero chord, which chord and centripetal
     /// spacing cannot use).
-    fn step<P: Point>(self, a: P, b: P) -> Option<f64> {
+    pub(crate) fn step<P: Point>(self, a: P, b: P) -> Option<f64> {
         let d = (b - a).norm();
         match self {
             Parameterization::Uniform => Some(1.0),
             _ if d == 0.0 => None,
             Parameterization::Chord => Some(d),
             Parameterization::Centripetal => Some(d.sqrt()),
+            Parameterization::Alpha(a) => Some(d.powf(a)),
         }
     }
 }
@@ -74,7 +123,8 @@ impl KnotKind {
 }
 
 /// Cumulative parameters for the points, starting at 0: uniform `0, 1, 2, …`; chord: sums of
-/// `|P_{i+1} − P_i|`; centripetal: sums of their square roots.
+/// `|P_{i+1} − P_i|`; centripetal: sums of their square roots; in general sums of
+/// `|P_{i+1} − P_i|^α`.
 ///
 /// # Errors
 /// [`Error::TooFewPoints`] for fewer than 2 points; [`Error::CoincidentPoints`] naming the pair of

@@ -75,6 +75,7 @@ impl Error {
             Error::SchoenbergWhitney { .. } => "schoenberg-whitney",
             Error::TooFewDataPoints { .. } => "too-few-data-points",
             Error::SingularSystem { .. } => "singular-system",
+            Error::SplineKind { .. } => "spline-kind",
         }
     }
 }

@@ -173,7 +173,7 @@ impl fmt::Display for Error {
             ),
             Error::CoincidentPoints { index, kind } => write!(
                 f,
-                "points {index} and {} coincide; {kind:?} spacing needs distinct consecutive points",
+                "points {index} and {} coincide; {kind} spacing needs distinct consecutive points",
                 index + 1
             ),
             Error::PhantomEvenDegree { degree } => write!(
@@ -383,6 +383,14 @@ impl fmt::Display for Error {
             Error::SingularSystem { what, row } => write!(
                 f,
                 "{what} is singular: elimination met a zero pivot in row {row}"
+            ),
+            Error::SplineKind {
+                operation,
+                needs,
+                got,
+            } => write!(
+                f,
+                "{operation} works on splines built by {needs}; this one was built by {got}"
             ),
         }
     }

@@ -530,6 +530,17 @@ pub enum Error {
         /// The row where elimination stopped.
         row: usize,
     },
+    /// An operation that only splines of one construction support: `setTangent` on a spline
+    /// whose tangents are computed (`cubicSpline`, `catmullRom`, …), or `system()` on one that
+    /// solved no system.
+    SplineKind {
+        /// The operation ("setTangent").
+        operation: &'static str,
+        /// The construction that supports it ("hermiteSpline").
+        needs: &'static str,
+        /// The construction of this spline ("cubicSpline").
+        got: &'static str,
+    },
 }
 
 impl std::error::Error for Error {

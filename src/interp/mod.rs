@@ -7,3 +7,20 @@
 //! B-spline interpolation and least-squares approximation of any degree. Every interpolant
 //! converts to the earlier families (Bézier pieces, a B-spline) so drawing, flattening, arc
 //! length and continuity checks reuse them.
+
+mod cubic_eval;
+mod cubic_spline;
+mod end_conditions;
+mod hermite;
+mod lagrange;
+mod params;
+mod tangents;
+mod tridiagonal;
+
+pub use cubic_spline::{CubicSpline, TangentRule};
+pub use end_conditions::{spline_system, EndCondition, END_CONDITION_NAMES};
+pub use hermite::{hermite_basis, hermite_basis_derivative, hermite_point, hermite_to_bezier};
+pub use lagrange::{LagrangeCurve, MAX_LAGRANGE_POINTS};
+pub use params::{check_params, check_point_count, ParamChoice};
+pub use tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
+pub use tridiagonal::{solve_cyclic, solve_tridiagonal, Tridiagonal};

@@ -318,17 +318,25 @@ pub fn knot_vector(
 }
 
 /// `parameterize(points, dim, kind)`: cumulative parameters from 0; kind "uniform" | "chord" |
-/// "centripetal".
+/// "centripetal" or a number α in [0, 1]: sums of `|P_{i+1} − P_i|^α` (0 uniform, 0.5
+/// centripetal, 1 chord; repeated consecutive points are an error for α > 0).
 #[wasm_bindgen]
 pub fn parameterize(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
-    #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "string | number")] kind: JsValue,
 ) -> Result<Vec<f64>, JsError> {
     let points = &*numbers("points", &points)?;
-    let kind = &*string_arg("kind", &kind, None)?;
+    let alpha = kind.as_f64();
+    let kind = match alpha {
+        Some(_) => String::new(),
+        None => string_arg("kind", &kind, None)?,
+    };
     let dim = whole("dim", dim)?;
-    let kind = Parameterization::parse(kind)?;
+    let kind = match alpha {
+        Some(a) => Parameterization::from_alpha(a)?,
+        None => Parameterization::parse(&kind)?,
+    };
     Ok(match check_dim(dim)? {
         2 => bspline::parameterize(&flat_points::<DVec2>(points)?, kind)?,
         _ => bspline::parameterize(&flat_points::<DVec3>(points)?, kind)?,

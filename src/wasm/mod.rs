@@ -22,6 +22,7 @@ pub mod surface;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
+pub use interp::{JsCubicSpline, JsLagrangeCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
 
 use crate::error::Error;

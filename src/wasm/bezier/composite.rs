@@ -118,6 +118,22 @@ pub struct JsCompositeBezier {
     inner: Composite,
 }
 
+impl JsCompositeBezier {
+    /// Wraps a core 2D composite curve.
+    pub(crate) fn from_2d(c: CompositeCurve<DVec2>) -> Self {
+        JsCompositeBezier {
+            inner: Composite::D2(c),
+        }
+    }
+
+    /// Wraps a core 3D composite curve.
+    pub(crate) fn from_3d(c: CompositeCurve<DVec3>) -> Self {
+        JsCompositeBezier {
+            inner: Composite::D3(c),
+        }
+    }
+}
+
 #[wasm_bindgen(js_class = CompositeBezier)]
 impl JsCompositeBezier {
     /// See the class documentation.

@@ -1,1 +1,58 @@
 //! The interpolation family (syllabus §5) for JavaScript.
+
+mod cubic;
+mod lagrange;
+mod spline;
+
+pub use cubic::{bessel_spline, cardinal_spline, catmull_rom, cubic_spline, hermite_spline};
+pub use lagrange::{lagrange, JsLagrangeCurve};
+pub use spline::JsCubicSpline;
+
+use crate::bspline::Parameterization;
+use crate::error::Error;
+use crate::geom::Point;
+use crate::interp::ParamChoice;
+use wasm_bindgen::prelude::*;
+
+/// A `params` argument as read from JavaScript, before the points are checked: an array of
+/// numbers (the documented form), or, as a convenience, a spacing kind ("uniform" | "chord" |
+/// "centripetal") or an exponent α in [0, 1] for `parameterize`, computed from the points.
+enum ParamArg {
+    Values(Vec<f64>),
+    Kind(String),
+    Alpha(f64),
+}
+
+impl ParamArg {
+    /// Reads the argument: a string, a number, else an array of numbers (error naming `params`).
+    fn read(value: &JsValue) -> Result<Self, JsError> {
+        if let Some(s) = value.as_string() {
+            Ok(ParamArg::Kind(s))
+        } else if let Some(a) = value.as_f64() {
+            Ok(ParamArg::Alpha(a))
+        } else {
+            Ok(ParamArg::Values(super::numbers("params", value)?))
+        }
+    }
+
+    /// The parameter choice (errors for an unknown kind or α outside [0, 1]).
+    fn choice(self) -> Result<ParamChoice, Error> {
+        Ok(match self {
+            ParamArg::Values(v) => ParamChoice::Given(v),
+            ParamArg::Kind(s) => ParamChoice::Spacing(Parameterization::parse(&s)?),
+            ParamArg::Alpha(a) => ParamChoice::Spacing(Parameterization::from_alpha(a)?),
+        })
+    }
+}
+
+/// A vector argument of `P::DIM` numbers ([`Error::ArgumentLength`] naming it otherwise).
+fn vector_arg<P: Point>(name: &'static str, values: &[f64]) -> Result<P, Error> {
+    if values.len() != P::DIM {
+        return Err(Error::ArgumentLength {
+            name,
+            expected: P::DIM,
+            got: values.len(),
+        });
+    }
+    Ok(P::from_slice(values))
+}

@@ -1,0 +1,350 @@
+//! The piecewise cubic Hermite spline [`CubicSpline`]: data points, parameters and tangents,
+//! and the recipe its tangents came from, so a moved point re-solves in place.
+//!
+//! Piece i on `[t_i, t_{i+1}]` is the cubic Hermite interpolant of `p_i, p_{i+1}` with tangents
+//! `m_i, m_{i+1}` (`C'(t_i) = m_i` with respect to the global parameter): C1 whatever the
+//! tangents, C2 when they solve the spline system ([`super::end_conditions`]).
+
+use super::end_conditions::{spline_system, EndCondition};
+use super::params::{check_point_count, ParamChoice};
+use super::tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
+use super::tridiagonal::Tridiagonal;
+use crate::bspline::Parameterization;
+use crate::error::{check_finite, Error, Result};
+use crate::geom::check::check_point_edit;
+use crate::geom::{Cartesian, Point};
+
+/// What the system of [`CubicSpline::system`] is called in [`Error::SingularSystem`].
+const SYSTEM_NAME: &str = "the cubic spline's tangent system";
+
+/// How a [`CubicSpline`]'s tangents are found from its points and parameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TangentRule<C> {
+    /// Given tangents (`hermiteSpline`); moving a point keeps them.
+    Given,
+    /// Cardinal tangents with tension c ([`cardinal_tangents`]).
+    Cardinal {
+        /// The tension c (0: Catmull–Rom on these parameters).
+        tension: f64,
+    },
+    /// Barry–Goldman tangents ([`catmull_rom_tangents`]); closed curves wrap.
+    CatmullRom,
+    /// Bessel tangents ([`bessel_tangents`]).
+    Bessel,
+    /// The C2 spline with an end condition ([`spline_system`]).
+    Spline(EndCondition<C>),
+}
+
+impl<C> TangentRule<C> {
+    /// The JS constructor that builds a spline with this rule ("cubicSpline", …).
+    pub fn constructor(&self) -> &'static str {
+        match self {
+            TangentRule::Given => "hermiteSpline",
+            TangentRule::Cardinal { .. } => "cardinalSpline",
+            TangentRule::CatmullRom => "catmullRom",
+            TangentRule::Bessel => "besselSpline",
+            TangentRule::Spline(_) => "cubicSpline",
+        }
+    }
+}
+
+/// A piecewise cubic Hermite curve through `p_0..p_n` at `t_0 < … < t_n` with tangents
+/// `m_0..m_n` (w.r.t. the global parameter). A closed one (periodic spline, closed
+/// Catmull–Rom) has `p_n = p_0` and `m_n = m_0`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubicSpline<C: Cartesian> {
+    pub(crate) points: Vec<C>,
+    pub(crate) params: Vec<f64>,
+    pub(crate) tangents: Vec<C>,
+    rule: TangentRule<C>,
+    choice: ParamChoice,
+    closed: bool,
+    system: Option<Tridiagonal<C>>,
+}
+
+/// Tangents (and the solved system, for a C2 spline) by `rule` for the points at `params`.
+fn tangents_by<C: Cartesian>(
+    rule: &TangentRule<C>,
+    points: &[C],
+    params: &[f64],
+    closed: bool,
+    given: &[C],
+) -> Result<(Vec<C>, Option<Tridiagonal<C>>)> {
+    Ok(match rule {
+        TangentRule::Given => (given.to_vec(), None),
+        TangentRule::Cardinal { tension } => (cardinal_tangents(points, params, *tension), None),
+        TangentRule::CatmullRom => (catmull_rom_tangents(points, params, closed), None),
+        TangentRule::Bessel => (bessel_tangents(points, params), None),
+        TangentRule::Spline(end) => {
+            let system = spline_system(points, params, end);
+            let mut m = system.solve(SYSTEM_NAME)?;
+            if let EndCondition::Periodic = end {
+                m.push(m[0]);
+            }
+            (m, Some(system))
+        }
+    })
+}
+
+impl<C: Cartesian> CubicSpline<C> {
+    /// Builds a spline: point count, parameters, rule-specific checks, then the tangents.
+    fn build(
+        points: Vec<C>,
+        choice: ParamChoice,
+        rule: TangentRule<C>,
+        closed: bool,
+        given: Vec<C>,
+        min: usize,
+        what: &'static str,
+    ) -> Result<Self> {
+        check_point_count(points.len(), min, what)?;
+        let params = choice.resolve(&points)?;
+        let (tangents, system) = tangents_by(&rule, &points, &params, closed, &given)?;
+        Ok(CubicSpline {
+            points,
+            params,
+            tangents,
+            rule,
+            choice,
+            closed,
+            system,
+        })
+    }
+
+    /// The C2 cubic spline through `points` at `params` with the end condition `end`
+    /// (syllabus §5; `cubicSpline` in JS).
+    ///
+    /// # Errors
+    /// [`Error::TooFewDataPoints`] below `end.min_points()` (2; 3 for periodic), the parameter
+    /// errors of [`ParamChoice::resolve`], [`Error::NotFinite`] for a clamped tangent,
+    /// [`Error::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
+    pub fn interpolate(
+        points: Vec<C>,
+        params: impl Into<ParamChoice>,
+        end: EndCondition<C>,
+    ) -> Result<Self> {
+        let choice = params.into();
+        check_point_count(points.len(), end.min_points(), "a cubic spline")?;
+        choice.resolve(&points)?;
+        if let EndCondition::Clamped { start, end } = end {
+            check_vector("startTangent", start)?;
+            check_vector("endTangent", end)?;
+        }
+        let n = points.len() - 1;
+        let closed = matches!(end, EndCondition::Periodic);
+        if closed && points[n] != points[0] {
+            return Err(Error::NotClosed { last: n });
+        }
+        let min = end.min_points();
+        Self::build(
+            points,
+            choice,
+            TangentRule::Spline(end),
+            closed,
+            Vec::new(),
+            min,
+            "a cubic spline",
+        )
+    }
+
+    /// The C1 piecewise Hermite curve with the given tangents `m_i = C'(t_i)` (`hermiteSpline`).
+    ///
+    /// # Errors
+    /// [`Error::TooFewDataPoints`] below 2, the parameter errors, [`Error::ArgumentLength`]
+    /// (`tangents`, counted in numbers) for other than one tangent per point,
+    /// [`Error::NotFinite`] for a tangent coordinate.
+    pub fn hermite(
+        points: Vec<C>,
+        params: impl Into<ParamChoice>,
+        tangents: Vec<C>,
+    ) -> Result<Self> {
+        let choice = params.into();
+        check_point_count(points.len(), 2, "a Hermite spline")?;
+        choice.resolve(&points)?;
+        if tangents.len() != points.len() {
+            return Err(Error::ArgumentLength {
+                name: "tangents",
+                expected: points.len() * C::DIM,
+                got: tangents.len() * C::DIM,
+            });
+        }
+        for (i, m) in tangents.iter().enumerate() {
+            for k in 0..C::DIM {
+                check_finite(|| format!("tangents {}", i * C::DIM + k), m.coord(k))?;
+            }
+        }
+        Self::build(
+            points,
+            choice,
+            TangentRule::Given,
+            false,
+            tangents,
+            2,
+            "a Hermite spline",
+        )
+    }
+
+    /// The cardinal spline with tension c (`cardinalSpline`; see [`cardinal_tangents`]).
+    ///
+    /// # Errors
+    /// [`Error::TooFewDataPoints`] below 2, the parameter errors, [`Error::NotFinite`] for c.
+    pub fn cardinal(points: Vec<C>, params: impl Into<ParamChoice>, tension: f64) -> Result<Self> {
+        let choice = params.into();
+        check_point_count(points.len(), 2, "a cardinal spline")?;
+        choice.resolve(&points)?;
+        check_finite(|| "tension".into(), tension)?;
+        let rule = TangentRule::Cardinal { tension };
+        Self::build(
+            points,
+            choice,
+            rule,
+            false,
+            Vec::new(),
+            2,
+            "a cardinal spline",
+        )
+    }
+
+    /// The Catmull–Rom spline with parameters `Σ |Δp|^α` (0 uniform, 0.5 centripetal, 1 chord)
+    /// and Barry–Goldman tangents (`catmullRom`). `closed`: the points are a cycle (do not
+    /// repeat the first); the spline stores them with the first repeated at the end, so it has
+    /// `count + 1` points and `count` pieces, and returns to the start with the same tangent.
+    ///
+    /// # Errors
+    /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`Error::AlphaOutOfRange`],
+    /// [`Error::CoincidentPoints`] for α > 0 and a repeated consecutive point (a closed curve
+    /// also compares the last with the first).
+    pub fn catmull_rom(mut points: Vec<C>, alpha: f64, closed: bool) -> Result<Self> {
+        let min = if closed { 3 } else { 2 };
+        check_point_count(points.len(), min, "a Catmull–Rom spline")?;
+        let kind = Parameterization::from_alpha(alpha)?;
+        if closed {
+            points.push(points[0]);
+        }
+        let choice = ParamChoice::Spacing(kind);
+        let what = "a Catmull–Rom spline";
+        Self::build(
+            points,
+            choice,
+            TangentRule::CatmullRom,
+            closed,
+            Vec::new(),
+            min,
+            what,
+        )
+    }
+
+    /// The spline with Bessel tangents (`besselSpline`; see [`bessel_tangents`]).
+    ///
+    /// # Errors
+    /// [`Error::TooFewDataPoints`] below 2, the parameter errors.
+    pub fn bessel(points: Vec<C>, params: impl Into<ParamChoice>) -> Result<Self> {
+        let choice = params.into();
+        Self::build(
+            points,
+            choice,
+            TangentRule::Bessel,
+            false,
+            Vec::new(),
+            2,
+            "a Bessel spline",
+        )
+    }
+
+    /// The data points `p_0..p_n` (a closed spline repeats the first at the end).
+    pub fn points(&self) -> &[C] {
+        &self.points
+    }
+
+    /// The parameters `t_0 < … < t_n`.
+    pub fn params(&self) -> &[f64] {
+        &self.params
+    }
+
+    /// The tangents `m_i = C'(t_i)` with respect to the global parameter.
+    pub fn tangents(&self) -> &[C] {
+        &self.tangents
+    }
+
+    /// How the tangents were found.
+    pub fn rule(&self) -> &TangentRule<C> {
+        &self.rule
+    }
+
+    /// Whether the spline is closed (`p_n = p_0`, `m_n = m_0`).
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// Number of pieces n.
+    pub fn piece_count(&self) -> usize {
+        self.points.len() - 1
+    }
+
+    /// The domain `[t_0, t_n]`.
+    pub fn domain(&self) -> (f64, f64) {
+        (self.params[0], self.params[self.params.len() - 1])
+    }
+
+    /// The tridiagonal (or cyclic) system whose solution is the tangents, for a C2 spline
+    /// (`None` for other rules). Row i is the equation of `m_i`.
+    pub fn system(&self) -> Option<&Tridiagonal<C>> {
+        self.system.as_ref()
+    }
+
+    /// Moves data point i to `p` and recomputes what depends on it — the parameters when they
+    /// were computed from the points, the tangents by the spline's rule — in place: the drag
+    /// path, O(n). On a closed spline point 0 and point n are one point: moving either moves
+    /// both. On an error the spline is unchanged.
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::CoincidentPoints`] when the
+    /// parameters are a spacing with α > 0, [`Error::SingularSystem`].
+    pub fn set_point(&mut self, i: usize, p: C) -> Result<()> {
+        check_point_edit(i, self.points.len(), p)?;
+        let n = self.points.len() - 1;
+        let mut points = self.points.clone();
+        points[i] = p;
+        if self.closed && (i == 0 || i == n) {
+            points[0] = p;
+            points[n] = p;
+        }
+        let params = match &self.choice {
+            ParamChoice::Given(_) => self.params.clone(),
+            ParamChoice::Spacing(_) => self.choice.resolve(&points)?,
+        };
+        let (tangents, system) =
+            tangents_by(&self.rule, &points, &params, self.closed, &self.tangents)?;
+        self.points = points;
+        self.params = params;
+        self.tangents = tangents;
+        self.system = system;
+        Ok(())
+    }
+
+    /// Sets tangent i (`C'(t_i)`) of a spline with given tangents (`hermiteSpline`), in place.
+    ///
+    /// # Errors
+    /// [`Error::SplineKind`] for a spline whose tangents are computed, [`Error::IndexOutOfRange`],
+    /// [`Error::NotFinite`].
+    pub fn set_tangent(&mut self, i: usize, m: C) -> Result<()> {
+        if self.rule != TangentRule::Given {
+            return Err(Error::SplineKind {
+                operation: "setTangent",
+                needs: "hermiteSpline",
+                got: self.rule.constructor(),
+            });
+        }
+        check_point_edit(i, self.tangents.len(), m)?;
+        self.tangents[i] = m;
+        Ok(())
+    }
+}
+
+/// Checks every coordinate of a vector argument is finite ("startTangent 1 is NaN").
+fn check_vector<P: Point>(name: &'static str, v: P) -> Result<()> {
+    for k in 0..P::DIM {
+        check_finite(|| format!("{name} {k}"), v.coord(k))?;
+    }
+    Ok(())
+}
