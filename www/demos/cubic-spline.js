@@ -18,9 +18,9 @@
  * - Clamped: the arrows at P₀ and Pₙ are the end tangents drawn at a third of their piece:
  *   tip₀ = p₀ + Δ₀ m₀ / 3 (the Bézier point q₁ of the first piece) and tipₙ = pₙ + Δₙ₋₁ mₙ / 3;
  *   the state holds the tips (`tangentTips`), and an arrow rides along when its point is dragged.
- * - Drags: uniform parameters do not depend on the points, so a drag moves the point in place
- *   (`setPoint` on every spline shown); chord and centripetal parameters do, so those splines are
- *   rebuilt from the new parameters once per applied move (as knot-vectors does for its knots).
+ * - Drags move the point in place (`setPoint` on every spline shown; the core recomputes chord
+ *   or centripetal parameters); only the clamped spline under such parameters is made again,
+ *   since its tangents follow from the arrows and Δ₀, Δₙ₋₁.
  */
 import { field, checkPoints } from "../lib/validate.js";
 import { checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
@@ -30,17 +30,21 @@ import { flatten, paddedBounds } from "../lib/geometry.js";
 import { flatPath, arrow } from "../lib/draw.js";
 import { HUES, WIDTH, themed } from "../lib/theme.js";
 import { legendBand } from "../lib/legend.js";
-import { drawPlotStrip } from "../lib/plot-strip.js";
-import { PiecePlot, pieceParameters } from "../lib/piece-plot.js";
+import {
+  SplineDerivativePlots,
+  derivativeBandHeight,
+  derivativeFacts,
+  derivativeParameters,
+} from "../lib/spline-derivative-plots.js";
 import { pointLabel } from "../lib/handles.js";
 import { SystemTable } from "../lib/system-table.js";
 import {
   endRowTex,
+  endRowsNumericTex,
   interiorRowTex,
-  rowLabel,
   deltasTex,
   numericRowTex,
-  systemEntry,
+  showSplineSystem,
 } from "../lib/spline-system.js";
 
 export const id = "cubic-spline";
@@ -63,14 +67,6 @@ export const MIN_POINTS = 3;
 export const MAX_POINTS = 16;
 /** Samples along each curve (one `sampleUniform` per curve and change). */
 const CURVE_SAMPLES = 400;
-/** C″ is linear and C‴ constant on each piece: two samples per piece draw them exactly. */
-const PER_PIECE = 2;
-/** Rows and columns of the system shown at most, normally and in lecture mode. */
-const MAX_SHOWN = 9;
-const MAX_SHOWN_LECTURE = 5;
-/** The plot band: fraction of the canvas height (one plot, two plots), its least height (CSS px). */
-const PLOT_FRACTION = Object.freeze([0.3, 0.46]);
-const PLOT_MIN_PX = Object.freeze([120, 200]);
 /** Room around the points for labels, as fractions of the box. */
 const ROOM = Object.freeze([0.08, 0.12]);
 
@@ -89,7 +85,7 @@ export const defaultState = Object.freeze({
   end: "natural",
   compare: false,
   parametrization: "uniform",
-  tangentTips: Object.freeze([Object.freeze([1.5, -0.5]), Object.freeze([10.5, 4.5])]),
+  tangentTips: Object.freeze([Object.freeze([2.5, -0.5]), Object.freeze([10.5, 4.5])]),
   third: true,
 });
 
@@ -136,11 +132,9 @@ const LEGEND = Object.freeze(
 
 // ------------------------------------------------------------ the splines
 
-/** The data given to the core for end condition `end`: the points (closed for periodic), their params. */
-function dataFor(sl, s, end) {
-  const points = end === "periodic" ? [...s.points, s.points[0]] : s.points;
-  const flat = flatten(points);
-  return { flat, params: sl.parameterize(flat, 2, s.parametrization) };
+/** The points given to the core for condition `end`, flat: P₀ … Pₙ, and P₀ again when periodic. */
+function pointsFor(s, end) {
+  return flatten(end === "periodic" ? [...s.points, s.points[0]] : s.points);
 }
 
 /** The clamped tangents from the arrows' tips: m₀ = 3(tip₀ − p₀)/Δ₀, mₙ = 3(tipₙ − pₙ)/Δₙ₋₁. */
@@ -156,12 +150,16 @@ function clampedTangents(s, params) {
   ];
 }
 
-/** The core's spline for end condition `end` (throws its refusal). */
+/**
+ * The core's spline for end condition `end` (throws its refusal). The parameters are given as
+ * their kind, so the core computes them (and again on every `setPoint`); the clamped tangents
+ * need Δ₀ and Δₙ₋₁ first (`parameterize`).
+ */
 function splineFor(sl, s, end) {
-  const { flat, params } = dataFor(sl, s, end);
-  if (end !== "clamped") return sl.cubicSpline(flat, 2, params, end);
-  const [m0, mn] = clampedTangents(s, params);
-  return sl.cubicSpline(flat, 2, params, end, m0, mn);
+  const flat = pointsFor(s, end);
+  if (end !== "clamped") return sl.cubicSpline(flat, 2, s.parametrization, end);
+  const [m0, mn] = clampedTangents(s, sl.parameterize(flat, 2, s.parametrization));
+  return sl.cubicSpline(flat, 2, s.parametrization, end, m0, mn);
 }
 
 /** Every spline of `ends`, or the core's refusal (none left allocated). */
@@ -186,15 +184,11 @@ function carryTip(s, i, dx, dy) {
   s.tangentTips[k][1] += dy;
 }
 
-/** Replaces every spline of the model from the state (chord / centripetal drags). */
-function rebuildAll(m, s) {
-  try {
-    const next = splinesFor(m.sl, s, m.ends);
-    m.curves.forEach((spline) => spline.free());
-    m.curves.splice(0, m.curves.length, ...next);
-  } catch (err) {
-    m.refusal.message = err.message;
-  }
+/** Makes the model's clamped spline (index k) again from the state: its tangents are inputs. */
+function remakeClamped(m, s, k) {
+  const next = splineFor(m.sl, s, "clamped");
+  m.curves[k].free();
+  m.curves[k] = next;
 }
 
 /** The splines shown, in wasm: one, or all six when compared. */
@@ -206,6 +200,12 @@ export const derive = {
     const ends0 = [s.points[0][0], s.points[0][1], s.points[n][0], s.points[n][1]];
     return { curves: splinesFor(sl, s, ends), ends, sl, refusal: { message: null }, ends0 };
   },
+  /**
+   * A dragged point, in place: `setPoint` re-solves (and recomputes chord or centripetal
+   * parameters; on the periodic spline P₀ is both ends). The clamped spline under chord or
+   * centripetal parameters is made again, since its tangents follow from the arrows and Δ₀, Δₙ₋₁.
+   * A refusal (coincident points under chord spacing) keeps that spline and is reported.
+   */
   moved(m, i, xy, s) {
     const n = s.points.length - 1;
     if (i === 0 || i === n) {
@@ -214,21 +214,22 @@ export const derive = {
       m.ends0[at] = xy[0];
       m.ends0[at + 1] = xy[1];
     }
-    if (s.parametrization !== "uniform") return rebuildAll(m, s);
     m.curves.forEach((spline, k) => {
-      spline.setPoint(i, xy);
-      if (i === 0 && m.ends[k] === "periodic") spline.setPoint(n + 1, xy);
+      try {
+        if (m.ends[k] === "clamped" && s.parametrization !== "uniform") remakeClamped(m, s, k);
+        else spline.setPoint(i, xy);
+      } catch (err) {
+        m.refusal.message = err.message;
+      }
     });
   },
   inPlace: {
-    /** A dragged arrow: only the clamped spline is made again (its tangents are inputs). */
+    /** A dragged arrow: only the clamped spline is made again. */
     tangentTips(m, s) {
       const k = m.ends.indexOf("clamped");
       if (k < 0) return;
       try {
-        const next = splineFor(m.sl, s, "clamped");
-        m.curves[k].free();
-        m.curves[k] = next;
+        remakeClamped(m, s, k);
       } catch (err) {
         m.refusal.message = err.message;
       }
@@ -242,7 +243,7 @@ const CHANGES = ["points", "end", "compare", "parametrization", "tangentTips"];
 function chosenData(s, d) {
   const spline = d.curves[chosen(s, d)];
   const params = spline.params();
-  const ts = pieceParameters(params, PER_PIECE);
+  const ts = derivativeParameters(params);
   return {
     end: d.ends[chosen(s, d)],
     params,
@@ -254,9 +255,30 @@ function chosenData(s, d) {
   };
 }
 
+/** A number for sentences: 3 decimals at most, integers (after rounding) plain. */
+const tidy = (v) => shortNumber(Number(fmt(v)));
+const pair = ([x, y]) => `(${tidy(x)}, ${tidy(y)})`;
+const attribute = ([x, y]) => `${tidy(x)},${tidy(y)}`;
+
+/** "C″(t₀) = (0, 0), C″(t₅) = (0, 0); C‴ on the end pieces …; C‴ jumps at t₁, t₂, t₃, t₄". */
+function plotNote(s, d) {
+  const f = d.facts;
+  const n = d.main.params.length - 1;
+  const jumps = f.jumps.map((i) => `t${subscript(i)}`).join(", ");
+  return t("cubicSpline.plotNote", {
+    n: subscript(n),
+    secondStart: pair(f.secondStart),
+    secondEnd: pair(f.secondEnd),
+    thirdFirst: pair(f.thirdFirst),
+    thirdLast: pair(f.thirdLast),
+    jumps: jumps || t("cubicSpline.noJumps"),
+  });
+}
+
 export const compute = {
   samples: [CHANGES, (s, d) => d.curves.map((spline) => spline.sampleUniform(CURVE_SAMPLES))],
   main: [CHANGES, chosenData],
+  facts: [CHANGES, (s, d) => derivativeFacts(d.main)],
 };
 
 export const controls = [
@@ -278,7 +300,19 @@ export const controls = [
       rebuild: true,
     }),
   ),
-  group(null, checkbox("third", { label: "cubicSpline.control.third" })),
+  group(
+    null,
+    checkbox("third", { label: "cubicSpline.control.third" }),
+    readout("plots", plotNote, {
+      data: (s, d) => ({
+        secondStart: attribute(d.facts.secondStart),
+        secondEnd: attribute(d.facts.secondEnd),
+        thirdFirst: attribute(d.facts.thirdFirst),
+        thirdLast: attribute(d.facts.thirdLast),
+        jumps: d.facts.jumps.join(","),
+      }),
+    }),
+  ),
   group(
     null,
     readout("points", (s) =>
@@ -296,31 +330,14 @@ export const controls = [
 
 /** `next` with the arrow tips at the same offsets from its first and last points as in `before`. */
 function keepTips(before, next) {
-  const offset = (tip, p) => [tip[0] - p[0], tip[1] - p[1]];
+  const carried = (tip, from, to) => [tip[0] - from[0] + to[0], tip[1] - from[1] + to[1]];
+  const last = (state) => state.points[state.points.length - 1];
   const [a, b] = before.tangentTips;
-  const da = offset(a, before.points[0]);
-  const db = offset(b, before.points[before.points.length - 1]);
-  const p0 = next.points[0];
-  const pn = next.points[next.points.length - 1];
-  return {
-    ...next,
-    tangentTips: [
-      [p0[0] + da[0], p0[1] + da[1]],
-      [pn[0] + db[0], pn[1] + db[1]],
-    ],
-  };
+  const tips = [carried(a, before.points[0], next.points[0]), carried(b, last(before), last(next))];
+  return { ...next, tangentTips: tips };
 }
 
 const showsClamped = (s) => s.compare || s.end === "clamped";
-
-/** The plot band's height in a canvas `height` CSS px tall. */
-function plotBand(height, third) {
-  const k = third ? 1 : 0;
-  return Math.min(
-    Math.round(height * 0.6),
-    Math.max(Math.round(height * PLOT_FRACTION[k]), PLOT_MIN_PX[k]),
-  );
-}
 
 const insets = [0, 0, 0, 0];
 export const figure = {
@@ -329,7 +346,7 @@ export const figure = {
   insets(width, height, scale, s, d) {
     insets[0] =
       s.compare && d.view ? legendBand(d.view.renderer, LEGEND, width, { draw: false }) : 0;
-    insets[2] = plotBand(height, s.third);
+    insets[2] = derivativeBandHeight(height, s.third);
     return insets;
   },
   handles: {
@@ -347,8 +364,8 @@ export const figure = {
 
 // ------------------------------------------------------------ drawing
 
-const upper = new PiecePlot();
-const lower = new PiecePlot();
+const plots = new SplineDerivativePlots();
+const plotLabels = { second: "", third: "", x: "", y: "" };
 
 /** The curves (the chosen one on a band, on top), the clamped arrows, the handles, the legend, the plots. */
 export function draw(r, v, s, d) {
@@ -368,39 +385,25 @@ export function draw(r, v, s, d) {
   flatPath(r, v, d.samples[k0], 0, CURVE_SAMPLES);
   r.paint(styleOf(k0));
   if (showsClamped(s)) {
-    const n = s.points.length - 1;
-    for (const [p, tip] of [
-      [s.points[0], s.tangentTips[0]],
-      [s.points[n], s.tangentTips[1]],
-    ])
-      arrow(r, v.sx(p[0]), v.sy(p[1]), v.sx(tip[0]), v.sy(tip[1]), styles.tangent);
+    const p0 = s.points[0];
+    const pn = s.points[s.points.length - 1];
+    const [a, b] = s.tangentTips;
+    arrow(r, v.sx(p0[0]), v.sy(p0[1]), v.sx(a[0]), v.sy(a[1]), styles.tangent);
+    arrow(r, v.sx(pn[0]), v.sy(pn[1]), v.sx(b[0]), v.sy(b[1]), styles.tangent);
   }
   d.handles.draw(r, v);
   if (s.compare) legendBand(r, LEGEND, r.width);
-  drawPlots(r, s, d);
-}
-
-/** C″ (and C‴) of the chosen spline per piece, in the band under the figure, sharing the t axis. */
-function drawPlots(r, s, d) {
-  const band = plotBand(r.height, s.third);
-  const top = r.height - band;
-  drawPlotStrip(r, { top, bottom: r.height });
-  const { params, second, third, ticks } = d.main;
-  const key = [t("cubicSpline.plotX"), t("cubicSpline.plotY")];
-  const common = { dim: 2, perPiece: PER_PIECE, params, key };
-  const middle = s.third ? top + band * 0.47 : r.height;
-  upper.place(0, r.width, top, middle, r.scale, { tickLabels: !s.third });
-  upper.draw(r, { ...common, values: second, title: t("cubicSpline.plotSecond") });
-  if (s.third) {
-    lower.place(0, r.width, middle, r.height, r.scale, { tickLabels: true });
-    lower.draw(r, { ...common, values: third, title: t("cubicSpline.plotThird") });
-  }
-  (s.third ? lower : upper).drawTicks(r, params, ticks);
+  // C″ (and C‴) of the chosen spline per piece, under the figure, sharing the t axis.
+  plotLabels.second = t("cubicSpline.plotSecond");
+  plotLabels.third = t("cubicSpline.plotThird");
+  plotLabels.x = t("cubicSpline.plotX");
+  plotLabels.y = t("cubicSpline.plotY");
+  plots.draw(r, d.main, s.third, plotLabels);
 }
 
 // ------------------------------------------------------------ formula, label
 
-/** The interior row in general, the Δ's, row 1 with its numbers, and the two end rows. */
+/** The interior row in general, the Δ's, row 1 with its numbers, the end rows in general and with their numbers. */
 export function formula(s, d) {
   const { end, params, system } = d.main;
   const size = system.diagonal.length;
@@ -410,8 +413,8 @@ export function formula(s, d) {
   ];
   if (size > 2) lines.push(`i = 1:\\ ${numericRowTex(system, 1, size)}`);
   const n = params.length - 1;
-  lines.push(endRowTex(end, "start", n, system, size));
-  lines.push(endRowTex(end, "end", n, system, size));
+  lines.push(endRowTex(end, "start", n), endRowTex(end, "end", n));
+  lines.push(endRowsNumericTex(system, size));
   return lines;
 }
 
@@ -430,12 +433,6 @@ export function label(s, d) {
 
 // ------------------------------------------------------------ the system's table
 
-/** A number in lecture mode's table: an integer plain, else two decimals. */
-function lectureNumber(v) {
-  const r = Math.round(v);
-  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v, 2);
-}
-
 /** The taller figure, the legend's measure, the refusal notes, and the table of the system. */
 export function setup(ui) {
   ui.ctx.slots.figure.classList.add("sl-figure-tall");
@@ -443,37 +440,11 @@ export function setup(ui) {
   const table = new SystemTable("cubic-system", "cubicSpline.");
   ui.ctx.slots.details.append(table.title, table.wrap);
   let lecture = ui.view.lecture;
-
-  function fill(s, d) {
-    const { end, system, tangents, params } = d.main;
-    const size = system.diagonal.length;
-    // Lecture mode: fewer rows, two decimals, no solved values under the unknowns (the table fits).
-    const lecturing = ui.view.lecture;
-    const maxShown = lecturing ? MAX_SHOWN_LECTURE : MAX_SHOWN;
-    const number = lecturing ? lectureNumber : shortNumber;
-    const vector = (flat, i) => `(${number(flat[2 * i])}, ${number(flat[2 * i + 1])})`;
-    table.table.dataset.end = end;
-    table.show({
-      size,
-      maxShown,
-      number,
-      entry: (i, j) => systemEntry(system, size, i, j),
-      unknown: (i) => `m${subscript(i)}`,
-      solution: (i) => (lecturing ? "" : `= ${vector(tangents, i)}`),
-      rhs: (i) => vector(system.rhs, i),
-      label: (i) => rowLabel(end, i, size, params.length - 1),
-      highlight: (i) => i === 0 || i === size - 1,
-      // The corners of the cyclic system (periodic): a_{0,N−1} and a_{N−1,0}.
-      marked: (i, j) => end === "periodic" && size > 2 && Math.abs(i - j) === size - 1,
-    });
-    const shown = Math.min(size, maxShown);
-    table.title.textContent = t(`cubicSpline.tableCaption${end === "periodic" ? "Cyclic" : ""}`, {
-      size,
-      end: t(`cubicSpline.end.${end}`),
+  const fill = (s, d) =>
+    showSplineSystem(table, d.main, {
+      lecture: ui.view.lecture,
       parametrization: t(`cubicSpline.parametrization.${s.parametrization}`),
-      hidden: size > shown ? t("cubicSpline.tableHidden", { count: size - shown + 1 }) : "",
     });
-  }
 
   // Lecture mode changes the rows shown: checked before each frame (the shell's toggle redraws).
   ui.view.beforeFrame(() => {

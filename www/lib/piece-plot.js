@@ -15,7 +15,7 @@
  *
  *   const ts = pieceParameters(spline.params(), 2);          // C″ is linear per piece: 2 suffice
  *   const values = spline.sampleDerivatives(ts, 2);          // flat [x, y] per parameter
- *   plot.place(x0, x1, top, bottom, scale, { tickLabels: true });
+ *   plot.place(x0, x1, top, bottom, scale, true);                  // true: t labels under it
  *   plot.draw(r, { values, dim: 2, perPiece: 2, params, title: "C″(t)" });
  */
 import { CYCLE, themed } from "./theme.js";
@@ -66,6 +66,28 @@ export function pieceParameters(params, perPiece, out = null) {
   return ts;
 }
 
+/**
+ * The inner joins i (1 … pieces − 1) where a piecewise function sampled as by
+ * `pieceParameters(params, perPiece)` (flat, `dim` per sample) jumps: its limits from the left
+ * (the last sample of piece i − 1) and from the right (the first of piece i) differ by more
+ * than `tolerance` times the largest |value| (at least 1) — what the plot shows as a gap.
+ */
+export function jumpJoins(values, dim, perPiece, tolerance = 1e-9) {
+  const pieces = values.length / dim / perPiece;
+  let largest = 1;
+  for (const v of values) largest = Math.max(largest, Math.abs(v));
+  const joins = [];
+  for (let i = 1; i < pieces; i++) {
+    const left = (i * perPiece - 1) * dim;
+    const right = i * perPiece * dim;
+    let gap = 0;
+    for (let c = 0; c < dim; c++)
+      gap = Math.max(gap, Math.abs(values[right + c] - values[left + c]));
+    if (gap > tolerance * largest) joins.push(i);
+  }
+  return joins;
+}
+
 /** The smallest "nice" number (1, 2 or 5 × 10^k) at least `value` (> 0). */
 export function niceCeiling(value) {
   if (!(value > 0)) return 1;
@@ -92,7 +114,7 @@ export class PiecePlot {
    * Places the plot in the part [top, bottom] of the band (canvas px) between x0 and x1 (the
    * band's side edges); `tickLabels` leaves room under it for the t axis labels.
    */
-  place(left, right, top, bottom, scale, { tickLabels = false } = {}) {
+  place(left, right, top, bottom, scale, tickLabels = false) {
     this.top = top;
     this.bottom = bottom;
     this.tickLabels = tickLabels;

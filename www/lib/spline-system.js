@@ -19,13 +19,16 @@
  *   m_{N−1} (a corner of the cyclic matrix), likewise row N − 1 wraps to m_0.
  * The numbers in the rows shown come from the core's `system()`; nothing is solved here.
  */
-import { shortNumber, subscript } from "./format.js";
+import { fmt, shortNumber, subscript } from "./format.js";
 import { t } from "./strings.js";
 
 /** Δ's written out at most this many; more are elided in the middle. */
 const MAX_DELTAS = 8;
 
 const text = (key) => `\\text{${t(key)}}`;
+
+/** Whose end rows condition `end` has with `n` pieces: not-a-knot with 3 points is the parabola (quadratic's). */
+const rowsOf = (end, n) => (end === "not-a-knot" && n === 2 ? "quadratic" : end);
 
 /** The interior row in general (syllabus §5). */
 export function interiorRowTex() {
@@ -106,20 +109,26 @@ function endEquationTex(end, side, n) {
 }
 
 /**
- * The formula line of an end row: "start (natural): 2m₀ + m₁ = 3(p₁ − p₀)/Δ₀ ⇒ 2 m₀ + 1 m₁ =
- * (3, 9)" — the condition in general, then the row as the core built it. `n` = pieces.
+ * The formula line of an end row in general: "start: C″(t₀) = 0: 2m₀ + m₁ = 3/Δ₀ (p₁ − p₀)"
+ * (`side` "start" or "end", `n` pieces).
  */
-export function endRowTex(end, side, n, system, size) {
-  const row = side === "start" ? 0 : size - 1;
-  const name = text(`cubicSpline.tex.${side}`);
-  return `${name}:\\ ${endEquationTex(end, side, n)}\\quad\\Rightarrow\\quad ${numericRowTex(system, row, size)}`;
+export function endRowTex(condition, side, n) {
+  const end = rowsOf(condition, n);
+  return `${text(`cubicSpline.tex.${side}`)}:\\ ${endEquationTex(end, side, n)}`;
+}
+
+/** The first and last rows as the core built them: "i = 0: 2 m₀ + 1 m₁ = (3, 9); i = 5: …". */
+export function endRowsNumericTex(system, size) {
+  const row = (i) => `i = ${i}:\\ ${numericRowTex(system, i, size)}`;
+  return `${row(0)};\\qquad ${row(size - 1)}`;
 }
 
 /**
  * The label of row i (of `size`) in the system's table for condition `end` (`n` pieces):
  * the equation of an end row, "C″ continuous at tᵢ" for the others.
  */
-export function rowLabel(end, i, size, n) {
+export function rowLabel(condition, i, size, n) {
+  const end = rowsOf(condition, n);
   const sub = (k) => subscript(k);
   if (i > 0 && i < size - 1) return t("cubicSpline.row.interior", { i: sub(i) });
   const side = i === 0 ? "start" : "end";
@@ -144,4 +153,49 @@ export function systemEntry(system, size, i, j) {
   if (corners.length === 2 && i === 0 && j === size - 1) return corners[0];
   if (corners.length === 2 && i === size - 1 && j === 0) return corners[1];
   return 0;
+}
+
+/** Rows and columns of the table shown at most, normally and in lecture mode. */
+export const MAX_SHOWN = 9;
+export const MAX_SHOWN_LECTURE = 5;
+
+/** A number in lecture mode's table: an integer plain, else two decimals. */
+function lectureNumber(v) {
+  const r = Math.round(v);
+  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v, 2);
+}
+
+/**
+ * Shows the system a cubicSpline solved in a `SystemTable` (system-table.js) and its title:
+ * `main` = `{ end, system, params }` (`system()`, `params()`), the end rows highlighted and
+ * labelled with their equation, the corners of the cyclic (periodic) system marked. In lecture
+ * mode fewer rows, two decimals and no solved values under the unknowns, so the table fits.
+ * `parametrization`: the parameters' name for the title.
+ */
+export function showSplineSystem(table, { end, system, params }, { lecture, parametrization }) {
+  const size = system.diagonal.length;
+  const maxShown = lecture ? MAX_SHOWN_LECTURE : MAX_SHOWN;
+  const number = lecture ? lectureNumber : shortNumber;
+  const vector = (flat, i) => `(${number(flat[2 * i])}, ${number(flat[2 * i + 1])})`;
+  table.table.dataset.end = end;
+  table.show({
+    size,
+    maxShown,
+    number,
+    entry: (i, j) => systemEntry(system, size, i, j),
+    unknown: (i) => `m${subscript(i)}`,
+    solution: (i) => (lecture ? "" : `= ${vector(system.solution, i)}`),
+    rhs: (i) => vector(system.rhs, i),
+    label: (i) => rowLabel(end, i, size, params.length - 1),
+    highlight: (i) => i === 0 || i === size - 1,
+    // The corners of the cyclic system: a_{0,N−1} and a_{N−1,0}.
+    marked: (i, j) => end === "periodic" && size > 2 && Math.abs(i - j) === size - 1,
+  });
+  const hidden = size > maxShown ? size - maxShown + 1 : 0;
+  table.title.textContent = t(`cubicSpline.tableCaption${end === "periodic" ? "Cyclic" : ""}`, {
+    size,
+    end: t(`cubicSpline.end.${end}`),
+    parametrization,
+    hidden: hidden ? t("cubicSpline.tableHidden", { count: hidden }) : "",
+  });
 }

@@ -3,7 +3,7 @@
 //
 // The expected numbers are worked by hand from the default state: points p₀ … p₅ = (0, 0), (1, 3),
 // (4, 4), (6, 1), (9, 0), (10, 3), uniform parameters t_i = i (so every Δ_i = 1), arrow tips
-// (1.5, −0.5) at P₀ and (10.5, 4.5) at P₅.
+// (2.5, −0.5) at P₀ and (10.5, 4.5) at P₅.
 
 const cell = (page, i, j) =>
   page.locator(`[data-table="cubic-system"] td[data-row="${i}"][data-col="${j}"]`);
@@ -81,13 +81,13 @@ export default [
     },
   ],
   [
-    "clamped ends: m₀ = 3(tip₀ − p₀)/Δ₀ = (4.5, −1.5) is the first row and the solved m₀",
+    "clamped ends: m₀ = 3(tip₀ − p₀)/Δ₀ = (7.5, −1.5) is the first row and the solved m₀",
     async (page, _h, _base, { assert, equal, settle }) => {
       await choose(page, settle, "end", "clamped");
       equal(await text(cell(page, 0, 0)), "1", "a₀₀");
       equal(await text(cell(page, 0, 1)), "0", "a₀₁");
-      equal(await text(rhs(page, 0)), "(4.500, -1.500)", "c₀");
-      assert((await text(unknown(page, 0))).includes("(4.500, -1.500)"), "solved m₀");
+      equal(await text(rhs(page, 0)), "(7.500, -1.500)", "c₀");
+      assert((await text(unknown(page, 0))).includes("(7.500, -1.500)"), "solved m₀");
       // mₙ = 3(tip₅ − p₅)/Δ₄ = 3·(0.5, 1.5).
       equal(await text(rhs(page, 5)), "(1.500, 4.500)", "c₅");
       // The arrows are handles: 6 points + 2 tips.
@@ -161,6 +161,70 @@ export default [
       await settle(page);
       await settle(page);
       equal(await rows.count(), 8, "rows back at normal size");
+    },
+  ],
+  [
+    "the plots' numbers: natural C″ = 0 at both ends, quadratic C‴ = 0 on the end pieces, not-a-knot no C‴ jump at t₁, t₄",
+    async (page, _h, _base, { equal, settle }) => {
+      const note = page.locator('[data-info="plots"]');
+      const facts = () =>
+        note.evaluate((n) => ({
+          secondStart: n.dataset.secondStart,
+          secondEnd: n.dataset.secondEnd,
+          thirdFirst: n.dataset.thirdFirst,
+          thirdLast: n.dataset.thirdLast,
+          jumps: n.dataset.jumps,
+        }));
+      let f = await facts();
+      equal(f.secondStart, "0,0", "natural C″(t₀)");
+      equal(f.secondEnd, "0,0", "natural C″(t₅)");
+      equal(f.jumps, "1,2,3,4", "natural: C‴ jumps at every inner join");
+      await choose(page, settle, "end", "quadratic");
+      f = await facts();
+      equal(f.thirdFirst, "0,0", "quadratic: C‴ on the first piece");
+      equal(f.thirdLast, "0,0", "quadratic: C‴ on the last piece");
+      await choose(page, settle, "end", "not-a-knot");
+      f = await facts();
+      equal(f.jumps, "2,3", "not-a-knot: no jump at t₁ and t₄");
+    },
+  ],
+  [
+    "chord parameters on a repeated point are refused in the status line; the picture and the choice stay",
+    async (page, h, base, { assert, equal, settle, openDemo }) => {
+      const state = {
+        points: [
+          [0, 0],
+          [1, 3],
+          [1, 3],
+          [6, 1],
+          [9, 0],
+        ],
+        end: "natural",
+        compare: false,
+        parametrization: "uniform",
+        tangentTips: [
+          [2, 0],
+          [10, 1],
+        ],
+        third: true,
+      };
+      const encoded = Buffer.from(JSON.stringify(state)).toString("base64url");
+      h = await openDemo(page, base, "cubic-spline", `&s=${encoded}`);
+      const before = await h.snapshot();
+      const row = await text(rowOf(page, 0));
+      // A click (not `check`: the refused radio goes back to uniform at once).
+      await page.locator('[data-control="parametrization"] [data-choice="chord"] input').click();
+      await settle(page);
+      equal(await h.statusKind(), "error", "status kind");
+      assert((await h.status()).length > 10, `a message: ${await h.status()}`);
+      equal(await h.snapshot(), before, "picture kept");
+      equal(await text(rowOf(page, 0)), row, "table kept");
+      assert(
+        await page
+          .locator('[data-control="parametrization"] [data-choice="uniform"] input')
+          .isChecked(),
+        "uniform still chosen",
+      );
     },
   ],
 ];

@@ -33,6 +33,9 @@ export const CUBIC_SPLINE = {
   "cubicSpline.closingLabel": "P₀ = P{n}",
   "cubicSpline.tipStart": "m₀",
   "cubicSpline.tipEnd": "mₙ",
+  "cubicSpline.plotNote":
+    "C″(t₀) = {secondStart}, C″(t{n}) = {secondEnd}; C‴ = {thirdFirst} on the first piece, {thirdLast} on the last; C‴ jumps at {jumps}",
+  "cubicSpline.noJumps": "no join",
   "cubicSpline.plotX": "x",
   "cubicSpline.plotY": "y",
   "cubicSpline.plotSecond": "C″(t)",
