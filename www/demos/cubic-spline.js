@@ -85,7 +85,7 @@ export const defaultState = Object.freeze({
   end: "natural",
   compare: false,
   parametrization: "uniform",
-  tangentTips: Object.freeze([Object.freeze([2.5, -0.5]), Object.freeze([10.5, 4.5])]),
+  tangentTips: Object.freeze([Object.freeze([2.5, -0.5]), Object.freeze([11.5, 3])]),
   third: true,
 });
 
@@ -331,13 +331,26 @@ export const controls = [
 /** `next` with the arrow tips at the same offsets from its first and last points as in `before`. */
 function keepTips(before, next) {
   const carried = (tip, from, to) => [tip[0] - from[0] + to[0], tip[1] - from[1] + to[1]];
-  const last = (state) => state.points[state.points.length - 1];
   const [a, b] = before.tangentTips;
-  const tips = [carried(a, before.points[0], next.points[0]), carried(b, last(before), last(next))];
+  const tips = [
+    carried(a, before.points[0], next.points[0]),
+    carried(b, lastPoint(before), lastPoint(next)),
+  ];
   return { ...next, tangentTips: tips };
 }
 
 const showsClamped = (s) => s.compare || s.end === "clamped";
+const firstPoint = (s) => s.points[0];
+const lastPoint = (s) => s.points[s.points.length - 1];
+
+/** The world window keeps at least this share of the height left by the legend (phones). */
+const MIN_WORLD_SHARE = 0.45;
+
+/** The plots' band under the figure: as derivativeBandHeight asks, less on a short canvas. */
+function plotBand(height, legend, third) {
+  const free = Math.max(0, height - legend);
+  return Math.min(derivativeBandHeight(height, third), Math.round(free * (1 - MIN_WORLD_SHARE)));
+}
 
 const insets = [0, 0, 0, 0];
 export const figure = {
@@ -346,7 +359,7 @@ export const figure = {
   insets(width, height, scale, s, d) {
     insets[0] =
       s.compare && d.view ? legendBand(d.view.renderer, LEGEND, width, { draw: false }) : 0;
-    insets[2] = derivativeBandHeight(height, s.third);
+    insets[2] = plotBand(height, insets[0], s.third);
     return insets;
   },
   handles: {
@@ -356,8 +369,20 @@ export const figure = {
         ? t("cubicSpline.closingLabel", { n: subscript(s.points.length) })
         : pointLabel(i),
     extra: [
-      { field: "tangentTips", index: 0, label: "cubicSpline.tipStart", when: showsClamped },
-      { field: "tangentTips", index: 1, label: "cubicSpline.tipEnd", when: showsClamped },
+      {
+        field: "tangentTips",
+        index: 0,
+        label: "cubicSpline.tipStart",
+        when: showsClamped,
+        anchor: firstPoint,
+      },
+      {
+        field: "tangentTips",
+        index: 1,
+        label: "cubicSpline.tipEnd",
+        when: showsClamped,
+        anchor: lastPoint,
+      },
     ],
   },
 };
@@ -392,13 +417,13 @@ export function draw(r, v, s, d) {
     arrow(r, v.sx(pn[0]), v.sy(pn[1]), v.sx(b[0]), v.sy(b[1]), styles.tangent);
   }
   d.handles.draw(r, v);
-  if (s.compare) legendBand(r, LEGEND, r.width);
+  const legend = s.compare ? legendBand(r, LEGEND, r.width) : 0;
   // C″ (and C‴) of the chosen spline per piece, under the figure, sharing the t axis.
   plotLabels.second = t("cubicSpline.plotSecond");
   plotLabels.third = t("cubicSpline.plotThird");
   plotLabels.x = t("cubicSpline.plotX");
   plotLabels.y = t("cubicSpline.plotY");
-  plots.draw(r, d.main, s.third, plotLabels);
+  plots.draw(r, d.main, s.third, plotLabels, plotBand(r.height, legend, s.third));
 }
 
 // ------------------------------------------------------------ formula, label

@@ -63,10 +63,10 @@ export class SplineDerivativePlots {
   /**
    * Draws the band: C″ (`data.second`), and C‴ (`data.third`) under it when `third`, the t axis
    * with `data.ticks` (one label per param) under the lowest. `labels`: `{ second, third, x, y }`
-   * (the plots' titles, the names of the solid and dashed components). Allocates nothing.
+   * (the plots' titles, the names of the solid and dashed components); `band` the band's height
+   * (CSS px; default `derivativeBandHeight`, the View's insets must agree). Allocates nothing.
    */
-  draw(r, data, third, labels) {
-    const band = derivativeBandHeight(r.height, third);
+  draw(r, data, third, labels, band = derivativeBandHeight(r.height, third)) {
     const { strip, args, key } = this;
     strip.top = r.height - band;
     strip.bottom = r.height;

@@ -3,7 +3,7 @@
 //
 // The expected numbers are worked by hand from the default state: points p₀ … p₅ = (0, 0), (1, 3),
 // (4, 4), (6, 1), (9, 0), (10, 3), uniform parameters t_i = i (so every Δ_i = 1), arrow tips
-// (2.5, −0.5) at P₀ and (10.5, 4.5) at P₅.
+// (2.5, −0.5) at P₀ and (11.5, 3) at P₅.
 
 const cell = (page, i, j) =>
   page.locator(`[data-table="cubic-system"] td[data-row="${i}"][data-col="${j}"]`);
@@ -88,8 +88,8 @@ export default [
       equal(await text(cell(page, 0, 1)), "0", "a₀₁");
       equal(await text(rhs(page, 0)), "(7.500, -1.500)", "c₀");
       assert((await text(unknown(page, 0))).includes("(7.500, -1.500)"), "solved m₀");
-      // mₙ = 3(tip₅ − p₅)/Δ₄ = 3·(0.5, 1.5).
-      equal(await text(rhs(page, 5)), "(1.500, 4.500)", "c₅");
+      // mₙ = 3(tip₅ − p₅)/Δ₄ = 3·(1.5, 0).
+      equal(await text(rhs(page, 5)), "(4.500, 0)", "c₅");
       // The arrows are handles: 6 points + 2 tips.
       const handles = await page.locator(".sl-figure").getAttribute("data-handles");
       equal(handles.split(";").filter(Boolean).length, 8, "handles with the two arrows");
