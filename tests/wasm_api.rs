@@ -179,12 +179,13 @@ fn arrays_and_strings_of_the_wrong_type_are_named() {
         kind(js_sys::Object::new().into()),
         "kind must be a string, got object"
     );
+    // parameterize's kind may also be a number: the exponent alpha in [0, 1].
     assert!(message(splinelab::wasm::bspline::parameterize(
         arr(&pts),
         2.0,
         JsValue::from(7)
     ))
-    .contains("got number"));
+    .contains("alpha = 7 is outside [0, 1]"));
     // An optional string: undefined takes the default, a number is refused.
     let joined = wasm::bezier::join_bezier(
         &example(),

@@ -265,3 +265,69 @@ fn set_point_equals_a_rebuild() {
     assert_eq!(h.tangents(), changed.to_vec());
     assert!(message(h.set_point(5.0, arr(&moved))).contains("index 5 is out of range"));
 }
+
+#[test]
+fn defaults_and_spacings() {
+    // end defaults to "natural".
+    let c = interp::cubic_spline(
+        arr(&POINTS),
+        2.0,
+        arr(&PARAMS),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
+    assert_eq!(c.tangents(), natural().tangents());
+    // A Lagrange curve on a spacing recomputes its params when a point moves.
+    let mut l = interp::lagrange(arr(&POINTS), 2.0, s("chord")).unwrap();
+    l.set_point(4.0, arr(&[9.0, 3.0])).unwrap();
+    let mut moved = POINTS.to_vec();
+    moved[8] = 9.0;
+    let rebuilt = interp::lagrange(arr(&moved), 2.0, s("chord")).unwrap();
+    assert_eq!(l.params(), rebuilt.params());
+    assert_eq!(
+        l.sample_uniform(9.0).unwrap(),
+        rebuilt.sample_uniform(9.0).unwrap()
+    );
+    // cardinalSpline's tension defaults to 0; catmullRom's alpha to 0.5.
+    let card = interp::cardinal_spline(arr(&POINTS), 2.0, arr(&PARAMS), None).unwrap();
+    let card0 = interp::cardinal_spline(arr(&POINTS), 2.0, arr(&PARAMS), Some(0.0)).unwrap();
+    assert_eq!(card.tangents(), card0.tangents());
+    let cr = interp::catmull_rom(arr(&POINTS), 2.0, None, None).unwrap();
+    let centripetal = wasm::bspline::parameterize(arr(&POINTS), 2.0, s("centripetal")).unwrap();
+    assert_eq!(cr.params(), centripetal);
+    assert_eq!(cr.kind(), "catmullRom");
+}
+
+#[test]
+fn hermite_basis_and_bezier_form() {
+    assert_eq!(
+        interp::hermite_basis_js(0.5, None).unwrap(),
+        vec![0.5, 0.5, 0.125, -0.125]
+    );
+    assert_eq!(
+        interp::hermite_basis_js(0.0, Some(1.0)).unwrap(),
+        vec![0.0, 0.0, 1.0, 0.0]
+    );
+    assert!(message(interp::hermite_basis_js(f64::NAN, None)).contains("s is NaN"));
+    let q = interp::hermite_bezier(
+        arr(&[0.0, 0.0]),
+        arr(&[3.0, 3.0]),
+        arr(&[4.0, 1.0]),
+        arr(&[6.0, -3.0]),
+        Some(2.0),
+    )
+    .unwrap();
+    assert_eq!(q, vec![0.0, 0.0, 2.0, 2.0, 0.0, 3.0, 4.0, 1.0]);
+    assert_eq!(
+        message(interp::hermite_bezier(
+            arr(&[0.0, 0.0]),
+            arr(&[3.0]),
+            arr(&[4.0, 1.0]),
+            arr(&[6.0, -3.0]),
+            None
+        )),
+        "m0 must have 2 numbers, got 1"
+    );
+}

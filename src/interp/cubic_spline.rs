@@ -86,19 +86,38 @@ fn tangents_by<C: Cartesian>(
     })
 }
 
+/// The data of a spline before its tangents: points, resolved parameters and their source.
+struct Data<C> {
+    points: Vec<C>,
+    params: Vec<f64>,
+    choice: ParamChoice,
+}
+
+/// The checks every constructor starts with, in order: at least `min` points, then the
+/// parameters (given ones checked, or a spacing computed).
+fn data<C: Cartesian>(
+    points: Vec<C>,
+    choice: ParamChoice,
+    min: usize,
+    what: &'static str,
+) -> Result<Data<C>> {
+    check_point_count(points.len(), min, what)?;
+    let params = choice.resolve(&points)?;
+    Ok(Data {
+        points,
+        params,
+        choice,
+    })
+}
+
 impl<C: Cartesian> CubicSpline<C> {
-    /// Builds a spline: point count, parameters, rule-specific checks, then the tangents.
-    fn build(
-        points: Vec<C>,
-        choice: ParamChoice,
-        rule: TangentRule<C>,
-        closed: bool,
-        given: Vec<C>,
-        min: usize,
-        what: &'static str,
-    ) -> Result<Self> {
-        check_point_count(points.len(), min, what)?;
-        let params = choice.resolve(&points)?;
+    /// Finds the tangents by `rule` (`given` for [`TangentRule::Given`]) and builds the spline.
+    fn build(data: Data<C>, rule: TangentRule<C>, closed: bool, given: Vec<C>) -> Result<Self> {
+        let Data {
+            points,
+            params,
+            choice,
+        } = data;
         let (tangents, system) = tangents_by(&rule, &points, &params, closed, &given)?;
         Ok(CubicSpline {
             points,
@@ -118,33 +137,33 @@ impl<C: Cartesian> CubicSpline<C> {
     /// [`Error::TooFewDataPoints`] below `end.min_points()` (2; 3 for periodic), the parameter
     /// errors of [`ParamChoice::resolve`], [`Error::NotFinite`] for a clamped tangent,
     /// [`Error::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
+    ///
+    /// ```
+    /// use splinelab::interp::{CubicSpline, EndCondition};
+    /// use splinelab::{prelude::*, DVec2};
+    /// // Natural: 2m_0 + m_1 = 3s_0, m_0 + 4m_1 + m_2 = 3(s_0 + s_1), m_1 + 2m_2 = 3s_1.
+    /// let p = vec![DVec2::new(0.0, 0.0), DVec2::new(1.0, 1.0), DVec2::new(2.0, 0.0)];
+    /// let c = CubicSpline::interpolate(p, vec![0.0, 1.0, 2.0], EndCondition::Natural).unwrap();
+    /// assert_eq!(c.evaluate(1.0).unwrap(), DVec2::new(1.0, 1.0));
+    /// assert!((c.tangents()[0] - DVec2::new(1.0, 1.5)).length() < 1e-15);
+    /// assert!(c.derivative(0.0, 2).unwrap().length() < 1e-15);
+    /// ```
     pub fn interpolate(
         points: Vec<C>,
         params: impl Into<ParamChoice>,
         end: EndCondition<C>,
     ) -> Result<Self> {
-        let choice = params.into();
-        check_point_count(points.len(), end.min_points(), "a cubic spline")?;
-        choice.resolve(&points)?;
+        let data = data(points, params.into(), end.min_points(), "a cubic spline")?;
         if let EndCondition::Clamped { start, end } = end {
             check_vector("startTangent", start)?;
             check_vector("endTangent", end)?;
         }
-        let n = points.len() - 1;
+        let n = data.points.len() - 1;
         let closed = matches!(end, EndCondition::Periodic);
-        if closed && points[n] != points[0] {
+        if closed && data.points[n] != data.points[0] {
             return Err(Error::NotClosed { last: n });
         }
-        let min = end.min_points();
-        Self::build(
-            points,
-            choice,
-            TangentRule::Spline(end),
-            closed,
-            Vec::new(),
-            min,
-            "a cubic spline",
-        )
+        Self::build(data, TangentRule::Spline(end), closed, Vec::new())
     }
 
     /// The C1 piecewise Hermite curve with the given tangents `m_i = C'(t_i)` (`hermiteSpline`).
@@ -158,13 +177,11 @@ impl<C: Cartesian> CubicSpline<C> {
         params: impl Into<ParamChoice>,
         tangents: Vec<C>,
     ) -> Result<Self> {
-        let choice = params.into();
-        check_point_count(points.len(), 2, "a Hermite spline")?;
-        choice.resolve(&points)?;
-        if tangents.len() != points.len() {
+        let data = data(points, params.into(), 2, "a Hermite spline")?;
+        if tangents.len() != data.points.len() {
             return Err(Error::ArgumentLength {
                 name: "tangents",
-                expected: points.len() * C::DIM,
+                expected: data.points.len() * C::DIM,
                 got: tangents.len() * C::DIM,
             });
         }
@@ -173,15 +190,7 @@ impl<C: Cartesian> CubicSpline<C> {
                 check_finite(|| format!("tangents {}", i * C::DIM + k), m.coord(k))?;
             }
         }
-        Self::build(
-            points,
-            choice,
-            TangentRule::Given,
-            false,
-            tangents,
-            2,
-            "a Hermite spline",
-        )
+        Self::build(data, TangentRule::Given, false, tangents)
     }
 
     /// The cardinal spline with tension c (`cardinalSpline`; see [`cardinal_tangents`]).
@@ -189,26 +198,16 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2, the parameter errors, [`Error::NotFinite`] for c.
     pub fn cardinal(points: Vec<C>, params: impl Into<ParamChoice>, tension: f64) -> Result<Self> {
-        let choice = params.into();
-        check_point_count(points.len(), 2, "a cardinal spline")?;
-        choice.resolve(&points)?;
+        let data = data(points, params.into(), 2, "a cardinal spline")?;
         check_finite(|| "tension".into(), tension)?;
-        let rule = TangentRule::Cardinal { tension };
-        Self::build(
-            points,
-            choice,
-            rule,
-            false,
-            Vec::new(),
-            2,
-            "a cardinal spline",
-        )
+        Self::build(data, TangentRule::Cardinal { tension }, false, Vec::new())
     }
 
     /// The Catmull–Rom spline with parameters `Σ |Δp|^α` (0 uniform, 0.5 centripetal, 1 chord)
-    /// and Barry–Goldman tangents (`catmullRom`). `closed`: the points are a cycle (do not
-    /// repeat the first); the spline stores them with the first repeated at the end, so it has
-    /// `count + 1` points and `count` pieces, and returns to the start with the same tangent.
+    /// and Barry–Goldman tangents (`catmullRom`). `closed`: the points are a cycle; the spline
+    /// stores them with the first repeated at the end, so it has `count + 1` points and `count`
+    /// pieces, and returns to the start with the same tangent (a cycle given with its first
+    /// point already repeated at the end, more than 3 points, is taken as that cycle).
     ///
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`Error::AlphaOutOfRange`],
@@ -219,19 +218,19 @@ impl<C: Cartesian> CubicSpline<C> {
         check_point_count(points.len(), min, "a Catmull–Rom spline")?;
         let kind = Parameterization::from_alpha(alpha)?;
         if closed {
+            if points.len() > min && points.first() == points.last() {
+                // The cycle given with its first point repeated: the repeat closes it.
+                points.pop();
+            }
             points.push(points[0]);
         }
-        let choice = ParamChoice::Spacing(kind);
-        let what = "a Catmull–Rom spline";
-        Self::build(
+        let data = data(
             points,
-            choice,
-            TangentRule::CatmullRom,
-            closed,
-            Vec::new(),
+            ParamChoice::Spacing(kind),
             min,
-            what,
-        )
+            "a Catmull–Rom spline",
+        )?;
+        Self::build(data, TangentRule::CatmullRom, closed, Vec::new())
     }
 
     /// The spline with Bessel tangents (`besselSpline`; see [`bessel_tangents`]).
@@ -239,16 +238,8 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2, the parameter errors.
     pub fn bessel(points: Vec<C>, params: impl Into<ParamChoice>) -> Result<Self> {
-        let choice = params.into();
-        Self::build(
-            points,
-            choice,
-            TangentRule::Bessel,
-            false,
-            Vec::new(),
-            2,
-            "a Bessel spline",
-        )
+        let data = data(points, params.into(), 2, "a Bessel spline")?;
+        Self::build(data, TangentRule::Bessel, false, Vec::new())
     }
 
     /// The data points `p_0..p_n` (a closed spline repeats the first at the end).

@@ -104,7 +104,8 @@ pub(crate) fn bessel_end_tangents<P: Point>(points: &[P], params: &[f64]) -> (P,
 
 /// Bessel tangents: at every interior `t_i` the tangent of the parabola through
 /// `p_{i−1}, p_i, p_{i+1}`, `m_i = (Δ_i s_{i−1} + Δ_{i−1} s_i)/(Δ_{i−1} + Δ_i)`; at the ends that
-/// of the first and last parabola ([`bessel_end_tangents`]); 2 points give the line.
+/// of the first and last parabola (through the first and the last three points); 2 points give
+/// the line.
 pub fn bessel_tangents<P: Point>(points: &[P], params: &[f64]) -> Vec<P> {
     let n = points.len() - 1;
     let d = |i: usize| params[i + 1] - params[i];

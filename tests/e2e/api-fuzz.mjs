@@ -65,12 +65,50 @@ export async function fuzzApi({ seedValue, iterations }) {
     "left",
     "right",
     "open",
+    "natural",
+    "periodic",
+    "not-a-knot",
     "",
   ];
   /** A random valid-looking curve (its construction may still be refused: that is fine). */
   function make() {
-    const kind = pick(["bez", "bez", "bsp", "bsp", "comp", "surf", "bezsurf"]);
+    const kind = pick([
+      "bez",
+      "bez",
+      "bsp",
+      "bsp",
+      "comp",
+      "surf",
+      "bezsurf",
+      "lag",
+      "cubic",
+      "cubic",
+    ]);
     const dim = pick([2, 2, 3]);
+    if (kind === "lag" || kind === "cubic") {
+      // Interpolation (section 5): data points at increasing params, or a spacing.
+      const n = 2 + Math.floor(rnd() * 6);
+      const params =
+        rnd() < 0.6
+          ? Float64Array.from({ length: n }, (_, i) => i + rnd() * 0.9)
+          : pick(["chord", 0.5, 0]);
+      const points = arr(n * dim);
+      if (kind === "lag") return mod.lagrange(points, dim, params);
+      return pick([
+        () =>
+          mod.cubicSpline(
+            points,
+            dim,
+            params,
+            pick(["natural", "quadratic", "bessel", "not-a-knot", "periodic"]),
+          ),
+        () => mod.cubicSpline(points, dim, params, "clamped", arr(dim), arr(dim)),
+        () => mod.hermiteSpline(points, dim, params, arr(n * dim)),
+        () => mod.cardinalSpline(points, dim, params, num()),
+        () => mod.catmullRom(points, dim, rnd(), rnd() < 0.5),
+        () => mod.besselSpline(points, dim, params),
+      ])();
+    }
     const weights = (count) => (rnd() < 0.3 ? arr(count).map((x) => Math.abs(x) + 0.1) : undefined);
     if (kind === "bez") {
       const n = 1 + Math.floor(rnd() * 8);
@@ -167,17 +205,25 @@ export async function fuzzApi({ seedValue, iterations }) {
     // free functions
     const fns = [
       "arcLengths",
+      "besselSpline",
       "bernstein",
       "bernsteinBasis",
+      "cardinalSpline",
+      "catmullRom",
       "circle",
       "circularArc",
       "circularArcBezier",
       "conicKind",
+      "cubicSpline",
       "ellipse",
       "ellipseArc",
+      "hermiteBasis",
+      "hermiteBezier",
+      "hermiteSpline",
       "jointContinuity",
       "joinBezier",
       "knotVector",
+      "lagrange",
       "parameterize",
       "phantomPoints",
       "uniformSegmentMatrix",

@@ -57,9 +57,9 @@ fn build_cubic<C: Cartesian>(
     CubicSpline::interpolate(points, choice, condition)
 }
 
-/// `cubicSpline(points, dim, params, end, startTangent?, endTangent?)`: the C2 cubic spline
-/// through the points at `params` (strictly increasing, one per point; a kind string or α
-/// number computes them). `end`: "natural" | "clamped" (needs both tangents, dim numbers each,
+/// `cubicSpline(points, dim, params, end = "natural", startTangent?, endTangent?)`: the C2
+/// cubic spline through the points at `params` (strictly increasing, one per point; a kind
+/// string or α number computes them). `end`: "natural" | "clamped" (needs both tangents, dim numbers each,
 /// `C'(t_0)` and `C'(t_n)` w.r.t. the parameter) | "quadratic" | "bessel" | "not-a-knot" |
 /// "periodic" (the last point must equal the first; at least 3 points). At least 2 points;
 /// with 2, quadratic, bessel and not-a-knot give the line, with 3 not-a-knot the parabola.
@@ -69,14 +69,14 @@ pub fn cubic_spline(
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
     params: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "string")] end: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "string")] end: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")]
     start_tangent: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] end_tangent: JsValue,
 ) -> Result<JsCubicSpline, JsError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
-    let end = string_arg("end", &end, None)?;
+    let end = string_arg("end", &end, Some("natural"))?;
     let start_tangent = optional_numbers("startTangent", &start_tangent)?;
     let end_tangent = optional_numbers("endTangent", &end_tangent)?;
     let (s, e) = (start_tangent.as_deref(), end_tangent.as_deref());
@@ -156,8 +156,9 @@ fn build_catmull_rom<C: Cartesian>(
 /// uniform, 0.5 centripetal, 1 chord) and Barry–Goldman tangents
 /// `m_i = (p_i − p_{i−1})/Δ_{i−1} − (p_{i+1} − p_{i−1})/(Δ_{i−1} + Δ_i) + (p_{i+1} − p_i)/Δ_i`;
 /// open ends use the phantoms `2p_0 − p_1` and `2p_n − p_{n−1}`. `closed`: the points are a
-/// cycle (do not repeat the first; at least 3): the spline appends the first point, so
-/// `points()` has one more point than given and `pieceCount` equals the count given.
+/// cycle (at least 3): the spline appends the first point, so `points()` has one more point
+/// than given and `pieceCount` equals the count given (a cycle that already repeats its first
+/// point at the end, with more than 3 points, is taken as it is).
 #[wasm_bindgen(js_name = catmullRom)]
 pub fn catmull_rom(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,

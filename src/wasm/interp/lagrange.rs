@@ -3,7 +3,7 @@
 use super::ParamArg;
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
-use crate::interp::{check_point_count, LagrangeCurve};
+use crate::interp::{check_point_count, LagrangeCurve, ParamChoice};
 use crate::wasm::bezier::{flatten_points, point_from};
 use crate::wasm::class::check_count;
 use crate::wasm::{numbers, whole};
@@ -31,13 +31,39 @@ macro_rules! with_lagrange {
 #[wasm_bindgen(js_name = LagrangeCurve)]
 pub struct JsLagrangeCurve {
     inner: Curve,
+    /// Where the parameters came from: a spacing is recomputed when a point moves.
+    choice: ParamChoice,
 }
 
-fn build<C: Cartesian>(coords: &[f64], params: ParamArg) -> Result<LagrangeCurve<C>, Error> {
+fn build<C: Cartesian>(
+    coords: &[f64],
+    params: ParamArg,
+) -> Result<(LagrangeCurve<C>, ParamChoice), Error> {
     let points: Vec<C> = points_from_flat(coords)?;
     check_point_count(points.len(), 2, "a Lagrange curve")?;
-    let params = params.choice()?.resolve(&points)?;
-    LagrangeCurve::new(points, &params)
+    let choice = params.choice()?;
+    let params = choice.resolve(&points)?;
+    Ok((LagrangeCurve::new(points, &params)?, choice))
+}
+
+/// Moves point i of `c`: in place for given parameters, by a rebuild (new parameters and
+/// weights) when they are a spacing computed from the points. On an error `c` is unchanged.
+fn move_point<C: Cartesian>(
+    c: &mut LagrangeCurve<C>,
+    choice: &ParamChoice,
+    i: usize,
+    p: C,
+) -> Result<(), Error> {
+    match choice {
+        ParamChoice::Given(_) => c.set_point(i, p),
+        ParamChoice::Spacing(_) => {
+            let mut moved = c.clone();
+            moved.set_point(i, p)?;
+            let params = choice.resolve(moved.points())?;
+            *c = LagrangeCurve::new(moved.points().to_vec(), &params)?;
+            Ok(())
+        }
+    }
 }
 
 /// `lagrange(points, dim, params)`: the polynomial of degree ≤ n through the n + 1 points at
@@ -53,11 +79,17 @@ pub fn lagrange(
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let dim = whole("dim", dim)?;
-    let inner = match check_dim(dim)? {
-        2 => Curve::D2(build(points, params)?),
-        _ => Curve::D3(build(points, params)?),
+    let (inner, choice) = match check_dim(dim)? {
+        2 => {
+            let (c, choice) = build(points, params)?;
+            (Curve::D2(c), choice)
+        }
+        _ => {
+            let (c, choice) = build(points, params)?;
+            (Curve::D3(c), choice)
+        }
     };
-    Ok(JsLagrangeCurve { inner })
+    Ok(JsLagrangeCurve { inner, choice })
 }
 
 #[wasm_bindgen(js_class = LagrangeCurve)]
@@ -130,7 +162,8 @@ impl JsLagrangeCurve {
         Ok(with_lagrange!(&self.inner, c => flatten_points(&c.aitken(t)?)))
     }
 
-    /// Moves data point i in place (the drag path); `point` has dim numbers.
+    /// Moves data point i in place (the drag path); `point` has dim numbers. Parameters given
+    /// as a kind or α are recomputed from the moved points.
     #[wasm_bindgen(js_name = setPoint)]
     pub fn set_point(
         &mut self,
@@ -139,7 +172,8 @@ impl JsLagrangeCurve {
     ) -> Result<(), JsError> {
         let point = numbers("point", &point)?;
         let i = whole("i", i)?;
-        with_lagrange!(&mut self.inner, c => c.set_point(i, point_from(&point)?))?;
+        let choice = &self.choice;
+        with_lagrange!(&mut self.inner, c => move_point(c, choice, i, point_from(&point)?))?;
         Ok(())
     }
 }

@@ -1,10 +1,12 @@
 //! The interpolation family (syllabus §5) for JavaScript.
 
 mod cubic;
+mod hermite;
 mod lagrange;
 mod spline;
 
 pub use cubic::{bessel_spline, cardinal_spline, catmull_rom, cubic_spline, hermite_spline};
+pub use hermite::{hermite_basis_js, hermite_bezier};
 pub use lagrange::{lagrange, JsLagrangeCurve};
 pub use spline::JsCubicSpline;
 
