@@ -105,6 +105,12 @@ export const demos = Object.freeze(
     { id: "hermite", section: 5, strings: "hermite", load: () => import("./hermite.js") },
     { id: "cardinal", section: 5, strings: "cardinal", load: () => import("./cardinal.js") },
     {
+      id: "cubic-spline",
+      section: 5,
+      strings: "cubicSpline",
+      load: () => import("./cubic-spline.js"),
+    },
+    {
       id: "parametrization",
       section: 5,
       strings: "parametrization",

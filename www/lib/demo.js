@@ -29,8 +29,10 @@
  *   in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the
  *   point is written: returning `false` refuses the move; `accept` may refuse it before that.
  *   `polygon: false`: the handles form no polygon (label placement). `extra: [{ field, index?,
- *   label, when?(state), accept?(state, x, y) }]` adds handles on other points (`state[field]`
- *   or `state[field][index]`; label a strings.js key), shown while `when` holds.
+ *   label, when?(state), accept?(state, x, y), anchor?(state) }]` adds handles on other points
+ *   (`state[field]` or `state[field][index]`; label a strings.js key), shown while `when`
+ *   holds; `anchor(state)` → the [x, y] point such a handle is attached to (an arrow's foot):
+ *   its label goes beyond it, and it is no neighbour of the others in label placement.
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -193,6 +195,12 @@ export function mountDeclared(demo, initialState, ctx) {
       },
       get: (i, out) => (i < listed() ? list.get(i, out) : out.set(point(entry(i)))),
       label: (i) => (i < listed() ? list.label(i) : t(entry(i).label)),
+      anchor(i, out) {
+        const e = i < listed() ? null : entry(i);
+        if (!e?.anchor) return false;
+        out.set(e.anchor(work));
+        return true;
+      },
       move(i, x, y) {
         if (i < listed()) return list.move(i, x, y);
         const e = entry(i);

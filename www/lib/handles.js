@@ -143,6 +143,9 @@ export class Handles {
    * @param {(i: number) => void} [source.remove] Delete pressed with handle i selected.
    * @param {(i: number) => void} [source.select] selection changed (-1 for none).
    * @param {boolean} [source.polygon] handles form a polygon in index order (label placement).
+   * @param {(i: number, out: Float64Array) => boolean} [source.anchor] for a handle attached to
+   *   a point (an arrow's tip): writes that world point into out and returns true; the handle's
+   *   label is then placed away from it (beyond the tip) and the handle is no polygon neighbour.
    */
   constructor(view, source) {
     this.view = view;
@@ -158,6 +161,7 @@ export class Handles {
     this._grab = new Float64Array(2); // offset from pointer to handle centre (world)
     this._pending = new Float64Array(2);
     this._sum = new Float64Array(2); // label direction accumulator
+    this._anchor = new Float64Array(2); // an anchored handle's point (label placement)
     this._hasPending = false;
     this._lastNudge = { index: -1, time: 0, group: 0 };
     this._published = NaN;
@@ -474,13 +478,18 @@ export class Handles {
   _drawLabel(r, view, i, n, x, y, style, radius) {
     let dx = 0;
     let dy = 0;
-    if (this.polygon && n > 1) {
-      if (i > 0) this._addAway(view, i - 1, x, y);
-      if (i < n - 1) this._addAway(view, i + 1, x, y);
+    if (this._anchored(i)) {
+      dx = x - view.sx(this._anchor[0]);
+      dy = y - view.sy(this._anchor[1]);
+    } else if (this.polygon && n > 1) {
+      const previous = i > 0 && !this._anchored(i - 1);
+      const next = i < n - 1 && !this._anchored(i + 1);
+      if (previous) this._addAway(view, i - 1, x, y);
+      if (next) this._addAway(view, i + 1, x, y);
       dx = this._sum[0];
       dy = this._sum[1];
       this._sum[0] = this._sum[1] = 0;
-      if (Math.hypot(dx, dy) < 0.2 && i > 0 && i < n - 1) {
+      if (Math.hypot(dx, dy) < 0.2 && previous && next) {
         // Straight through: put the label beside the polygon, on the screen's upper side.
         this.source.get(i + 1, this._p);
         const ax = view.sx(this._p[0]) - x;
@@ -503,6 +512,11 @@ export class Handles {
       dy /= length;
     }
     placeLabel(r, this.source.label(i), x, y, dx, dy, radius, style);
+  }
+
+  /** Whether handle j is attached to a point (`source.anchor`), written into `_anchor`. */
+  _anchored(j) {
+    return this.source.anchor ? this.source.anchor(j, this._anchor) : false;
   }
 
   /** Adds the unit vector from handle j towards (x, y) to the scratch sum `_sum`. */
