@@ -26,6 +26,7 @@ import {
   uniformParams,
 } from "./inputs.mjs";
 import { dragBench } from "./drag.mjs";
+import { solveBench, splineDragBench, SOLVE_SIZES } from "./interp.mjs";
 
 const args = new Set(process.argv.slice(2));
 const QUICK = args.has("--quick");
@@ -1034,6 +1035,15 @@ if (BROWSER) {
   }
 }
 
+// ---- (h) interpolation solves, (i) spline drag frame (issue 13) --------------------------------
+process.stdout.write("(h) interpolation solves ");
+const solveSizes = QUICK ? SOLVE_SIZES.map((n) => n / 10) : SOLVE_SIZES;
+const solves = solveBench(sl, { rounds: QUICK ? 3 : 7, sizes: solveSizes });
+process.stdout.write(".\n(i) spline drag frame (Node) ");
+const splineDragNode = splineDragBench(sl, { frames: dragFrames, warmup: 10 });
+process.stdout.write(".\n");
+const splineDragChromium = dragChromium?.spline ?? (dragChromium?.error ? dragChromium : null);
+
 // ---- sizes, machine, report --------------------------------------------------------------------
 const wasmBytes = readFileSync(WASM);
 const wasm = {
@@ -1114,6 +1124,34 @@ dragLines("Chromium", dragChromium);
 lines.push(
   `    peers: not timed in (g) — the frame is the playground's path (in-place edit, resample, basis strip); bezier-js has no B-splines, rhino3dm no basis functions, and verb/nurbs evaluation speed is measured in (b)`,
 );
+lines.push("");
+lines.push("(h) interpolation through many points: median of the solve (build) time");
+for (const r of solves) {
+  lines.push(
+    `    ${pad(r.method, 52)} ${lpad(r.n.toLocaleString("en"), 9)} points ${lpad(`${r.medianMs.toFixed(2)} ms`, 11)}  max |C(t_i) − p_i| ${fmtDiff(r.maxError)}`,
+  );
+}
+const solveRatios = [...new Set(solves.map((r) => r.method))].map((method) => {
+  const [small, large] = solves.filter((r) => r.method === method);
+  return { method, ratio: large.medianMs / small.medianMs };
+});
+for (const { method, ratio } of solveRatios)
+  lines.push(
+    `    ${pad(method, 52)} ${solveSizes[1] / solveSizes[0]}× the points: ${ratio.toFixed(1)}× the time`,
+  );
+lines.push("");
+lines.push(`(i) one drag frame of a 1000-point C2 spline (${dragFrames} frames after 10 warm-up)`);
+for (const [label, d] of [
+  ["Node", splineDragNode],
+  ["Chromium", splineDragChromium],
+]) {
+  if (!d) continue;
+  if (d.error) lines.push(`    ${pad(label, 9)} failed: ${d.error}`);
+  else
+    lines.push(
+      `    ${pad(label, 9)} ${pad(d.method, 44)} median ${d.medianMs.toFixed(2)} ms, p95 ${d.p95Ms.toFixed(2)} ms, max ${d.maxMs.toFixed(2)} ms; agreement with a rebuild ${fmtDiff(d.agreement)}`,
+    );
+}
 lines.push("");
 lines.push(
   `wasm: ${wasm.bytes.toLocaleString("en")} bytes after wasm-opt, ${wasm.gzipBytes.toLocaleString("en")} bytes gzipped (-9)`,
@@ -1234,6 +1272,33 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
       c?.method ?? d?.error ?? "not run",
     );
   }
+  for (const { method, ratio } of solveRatios)
+    target(
+      `(h) ${method.split("(")[0]}: time ratio for 10× the points`,
+      ratio,
+      "≈ 10 (linear time)",
+      ratio < 20,
+      method,
+    );
+  for (const [label, d] of [
+    ["Node", splineDragNode],
+    ["Chromium", splineDragChromium],
+  ]) {
+    target(
+      `(i) spline drag frame, ${label} (median)`,
+      d?.medianMs,
+      "≤ 2 ms",
+      d?.medianMs === undefined ? null : d.medianMs <= 2,
+      d?.method ?? d?.error ?? "not run",
+    );
+  }
+  target(
+    "wasm gzipped (issue 15's budget)",
+    wasm.gzipBytes,
+    "≤ 160 KB (160,000 bytes)",
+    wasm.gzipBytes <= 160_000,
+    `${wasm.bytes} bytes raw`,
+  );
   target(
     "wasm size after wasm-opt",
     wasm.bytes,
@@ -1243,7 +1308,7 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
   );
 }
 lines.push("");
-lines.push("targets (issue 5; reported from this run, not asserted):");
+lines.push("targets (issues 5, 13 and 15; reported from this run, not asserted):");
 for (const t of targets) {
   const v =
     typeof t.value === "number" && Number.isFinite(t.value)
@@ -1275,6 +1340,7 @@ const report = {
   fallbacks,
   workloads: results,
   drag: { frames: dragFrames, node: dragNode, chromium: dragChromium },
+  interpolation: { solves, splineDrag: { node: splineDragNode, chromium: splineDragChromium } },
   wasm,
   targets,
   table: lines.join("\n"),

@@ -70,6 +70,19 @@ export async function fuzzApi({ seedValue, iterations }) {
     "not-a-knot",
     "",
   ];
+  /** A random options object for the B-spline fits (keys right or wrong). */
+  const options = () =>
+    pick([
+      undefined,
+      {},
+      { knots: sorted(Math.floor(rnd() * 14)) },
+      { startDerivative: arr(pick([1, 2, 3])) },
+      { endDerivative: arr(pick([2, 3])), startDerivative: anyArg() },
+      { closed: pick([true, false, 1, "yes"]) },
+      { knots: anyArg(), closed: true },
+      { unknownKey: 1 },
+      "options",
+    ]);
   /** A random valid-looking curve (its construction may still be refused: that is fine). */
   function make() {
     const kind = pick([
@@ -81,11 +94,12 @@ export async function fuzzApi({ seedValue, iterations }) {
       "surf",
       "bezsurf",
       "lag",
+      "fit",
       "cubic",
       "cubic",
     ]);
     const dim = pick([2, 2, 3]);
-    if (kind === "lag" || kind === "cubic") {
+    if (kind === "lag" || kind === "cubic" || kind === "fit") {
       // Interpolation (section 5): data points at increasing params, or a spacing.
       const n = 2 + Math.floor(rnd() * 6);
       const params =
@@ -94,6 +108,12 @@ export async function fuzzApi({ seedValue, iterations }) {
           : pick(["chord", 0.5, 0]);
       const points = arr(n * dim);
       if (kind === "lag") return mod.lagrange(points, dim, params);
+      if (kind === "fit") {
+        const p = pick([1, 2, 3, 5, small()]);
+        return rnd() < 0.6
+          ? mod.interpolateBSpline(points, dim, p, params, options())
+          : mod.approximateBSpline(points, dim, p, small(), params, options());
+      }
       return pick([
         () =>
           mod.cubicSpline(
@@ -224,6 +244,9 @@ export async function fuzzApi({ seedValue, iterations }) {
       "joinBezier",
       "knotVector",
       "lagrange",
+      "interpolateBSpline",
+      "approximateBSpline",
+      "bsplineInterpolationSystem",
       "parameterize",
       "phantomPoints",
       "uniformSegmentMatrix",
@@ -240,7 +263,9 @@ export async function fuzzApi({ seedValue, iterations }) {
               ? pick(strs)
               : rnd() < 0.5
                 ? obj
-                : anyArg(),
+                : rnd() < 0.3
+                  ? options()
+                  : anyArg(),
     );
     calls++;
     try {
