@@ -101,6 +101,18 @@ export const demos = Object.freeze(
       strings: "negativeWeights",
       load: () => import("./negative-weights.js"),
     },
+    {
+      id: "bspline-interpolation",
+      section: 5,
+      strings: "bsplineInterpolation",
+      load: () => import("./bspline-interpolation.js"),
+    },
+    {
+      id: "interpolate-approximate",
+      section: 5,
+      strings: "interpolateApproximate",
+      load: () => import("./interpolate-approximate.js"),
+    },
   ].map(Object.freeze),
 );
 
