@@ -35,8 +35,10 @@ import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { placeLabelFrom } from "../lib/handles.js";
-import { flatPath, arrow } from "../lib/draw.js";
-import { NARROW_CANVAS_PX } from "../lib/view.js";
+import { flatPath } from "../lib/draw.js";
+import { vectorTip, vectorArrow, tipOf } from "../lib/vector-handle.js";
+import { NARROW_CANVAS_PX, scaledInsets } from "../lib/view.js";
+import { drawCornerLegend } from "../lib/legend.js";
 import { SystemTable, exactText } from "../lib/system-table.js";
 
 export const id = "bspline-interpolation";
@@ -65,6 +67,8 @@ const FORMULA_TERMS = 4;
 const GHOST_HALF_PX = 3;
 /** Control point labels are left out above this many (the table lists them). */
 const GHOST_LABELS_MAX = 12;
+/** The key's band at the top of the figure (three rows), CSS px. */
+const LEGEND_PX = 70;
 
 /**
  * The Croatian notes' example with integer coordinates: p = (0,0) (3,4) (7,5) (11,3) (14,4),
@@ -186,6 +190,7 @@ export const compute = {
   samples: [ALL, (s, d) => d.curve.sampleUniform(CURVE_SAMPLES)],
   knots: [ALL, (s, d) => d.curve.knots()],
   control: [ALL, (s, d) => controlPointsOf(d.curve)],
+  sites: [ALL, (s, d) => sitesOf(d.system.rows, s.points.length - 1)],
 };
 
 const numberText = exactText;
@@ -193,14 +198,20 @@ const numberTex = (x) => fractionOrDecimals(Math.abs(x) < ZERO_TOLERANCE ? 0 : x
 const pairText = (x, y) => `(${numberText(x)}, ${numberText(y)})`;
 const pairTex = (x, y) => `(${numberTex(x)},\\ ${numberTex(y)})`;
 
-/** "C(1) = p₁", "C′(0) = D₀", "C′(4) = D₄": row i's condition (`k` counts the point rows). */
-function conditionText(kind, k, s, d) {
-  const n = s.points.length - 1;
-  if (kind === "start-derivative")
-    return t("bsplineInterpolation.row.start", { t: numberText(d.params[0]) });
-  if (kind === "end-derivative")
-    return t("bsplineInterpolation.row.end", { t: numberText(d.params[n]), n: subscript(n) });
-  return t("bsplineInterpolation.row.point", { t: numberText(d.params[k]), i: subscript(k) });
+/** Row i's data index: the k-th point row is p_k at t_k; derivative rows sit at t₀ and tₙ. */
+function sitesOf(rows, n) {
+  let k = 0;
+  return rows.map((kind) =>
+    kind === "start-derivative" ? 0 : kind === "end-derivative" ? n : k++,
+  );
+}
+
+/** "C(1) = p₁", "C′(0) = D₀", "C′(4) = D₄": row i's condition. */
+function conditionText(i, d) {
+  const k = d.sites[i];
+  const key =
+    { point: "row.point", "start-derivative": "row.start" }[d.system.rows[i]] ?? "row.end";
+  return t(`bsplineInterpolation.${key}`, { t: numberText(d.params[k]), i: subscript(k) });
 }
 
 export const controls = [
@@ -285,27 +296,24 @@ function derivativesNote(s) {
   return parts.length ? parts.join("; ") : t("bsplineInterpolation.noDerivatives");
 }
 
-/** Writes the tip p + D of an end derivative into `out` (world coordinates). */
-function tipAt(s, end, out) {
-  const point = end ? s.points[s.points.length - 1] : s.points[0];
-  const vector = end ? s.endDerivative : s.startDerivative;
-  out[0] = point[0] + vector[0];
-  out[1] = point[1] + vector[1];
-}
-
-/** The derivative from a dragged tip: D = tip − p, rounded like the handles' coordinates. */
-function placeTip(s, end, x, y) {
-  const point = end ? s.points[s.points.length - 1] : s.points[0];
-  const vector = end ? s.endDerivative : s.startDerivative;
-  vector[0] = Math.round((x - point[0]) * 1e6) / 1e6;
-  vector[1] = Math.round((y - point[1]) * 1e6) / 1e6;
-}
-
+/** The anchors of the two derivative arrows: p₀ and pₙ. */
+const first = (s) => s.points[0];
+const last = (s) => s.points[s.points.length - 1];
 const tipScratch = new Float64Array(2);
 
 /** Labels p₀, p₁, … of the data points (cached). */
 const DATA_LABELS = [];
 const dataLabel = (i) => (DATA_LABELS[i] ??= `p${subscript(i)}`);
+/** The end points are also control points (clamped knots): "p₀ = r₀", "p₄ = r₅" (cached). */
+const END_LABELS = new Map();
+function handleLabel(i, s) {
+  const n = s.points.length - 1;
+  if (i !== 0 && i !== n) return dataLabel(i);
+  const j = i === 0 ? 0 : n + derivativeCount(s);
+  const key = `${i},${j}`;
+  if (!END_LABELS.has(key)) END_LABELS.set(key, `${dataLabel(i)} = ${controlLabel(j)}`);
+  return END_LABELS.get(key);
+}
 /** Labels r₀, r₁, … of the control points (cached). */
 const CONTROL_LABELS = [];
 const controlLabel = (j) => (CONTROL_LABELS[j] ??= `r${subscript(j)}`);
@@ -314,40 +322,47 @@ export const figure = {
   /** The data points and the tips of the derivative arrows shown (control points may roam). */
   bounds(s) {
     const points = s.points.slice();
-    for (const end of [false, true]) {
-      if (end ? !s.useEndDerivative : !s.useStartDerivative) continue;
-      tipAt(s, end, tipScratch);
-      points.push([tipScratch[0], tipScratch[1]]);
-    }
+    if (s.useStartDerivative)
+      points.push(Array.from(tipOf(first(s), s.startDerivative, tipScratch)));
+    if (s.useEndDerivative) points.push(Array.from(tipOf(last(s), s.endDerivative, tipScratch)));
     return paddedBounds(points, 0.08, 0.15);
   },
+  insets: scaledInsets(LEGEND_PX, 0, 0, 0),
   handles: {
     field: "points",
-    label: (i) => dataLabel(i),
+    label: handleLabel,
     extra: [
-      {
+      vectorTip({
         field: "startDerivative",
         label: "bsplineInterpolation.startLabel",
         when: (s) => s.useStartDerivative,
-        at: (s, out) => tipAt(s, false, out),
-        place: (s, x, y) => placeTip(s, false, x, y),
-      },
-      {
+        anchor: first,
+      }),
+      vectorTip({
         field: "endDerivative",
         label: "bsplineInterpolation.endLabel",
         when: (s) => s.useEndDerivative,
-        at: (s, out) => tipAt(s, true, out),
-        place: (s, x, y) => placeTip(s, true, x, y),
-      },
+        anchor: last,
+      }),
     ],
   },
 };
 
 /** This demo's own marks: the derivative arrows and the ghosted control points. */
-const stylesFor = themed((theme) => ({
-  arrow: { stroke: HUES.vermillion, width: WIDTH.curve, cap: "round", join: "round" },
-  ghost: { fill: theme.polygon.stroke },
-}));
+const ARROW_STYLE = Object.freeze({
+  stroke: HUES.vermillion,
+  width: WIDTH.curve,
+  cap: "round",
+  join: "round",
+});
+const stylesFor = themed((theme) => ({ ghost: { fill: theme.polygon.stroke } }));
+
+/** The key: the interpolant, the computed control polygon, the derivative arrows. */
+const KEY = Object.freeze([
+  { label: "bsplineInterpolation.legendCurve", style: (theme) => theme.curve },
+  { label: "bsplineInterpolation.legendPolygon", style: (theme) => theme.polygon },
+  { label: "bsplineInterpolation.legendDerivative", style: ARROW_STYLE },
+]);
 
 /**
  * The ghosted control polygon and points r_j (grey squares: not handles), the curve, the
@@ -371,19 +386,8 @@ export function draw(r, v, s, d) {
   r.paint(styles.ghost);
   flatPath(r, v, d.samples, 0, CURVE_SAMPLES);
   r.paint(theme.curve);
-  for (const end of [false, true]) {
-    if (end ? !s.useEndDerivative : !s.useStartDerivative) continue;
-    const point = end ? s.points[s.points.length - 1] : s.points[0];
-    tipAt(s, end, tipScratch);
-    arrow(
-      r,
-      v.sx(point[0]),
-      v.sy(point[1]),
-      v.sx(tipScratch[0]),
-      v.sy(tipScratch[1]),
-      styles.arrow,
-    );
-  }
+  if (s.useStartDerivative) vectorArrow(r, v, first(s), s.startDerivative, ARROW_STYLE);
+  if (s.useEndDerivative) vectorArrow(r, v, last(s), s.endDerivative, ARROW_STYLE);
   // Control point labels away from the polygon's centroid; none on a phone (the table has them).
   if (v.width >= NARROW_CANVAS_PX * r.scale && control.length <= GHOST_LABELS_MAX) {
     let cx = 0;
@@ -392,13 +396,15 @@ export function draw(r, v, s, d) {
       cx += v.sx(x) / control.length;
       cy += v.sy(y) / control.length;
     }
-    for (let j = 0; j < control.length; j++) {
+    // The first and last are the end points, named on their handles ("p₀ = r₀").
+    for (let j = 1; j < control.length - 1; j++) {
       const x = v.sx(control[j][0]);
       const y = v.sy(control[j][1]);
       placeLabelFrom(r, controlLabel(j), x, y, cx, cy, theme.labelSmall, half + RADIUS.handle);
     }
   }
   d.handles.draw(r, v);
+  drawCornerLegend(r, KEY);
 }
 
 /** Σ-form of one row of A: "−2 r₀ + 2 r₁" (the non-zero entries, the first few). */
@@ -432,25 +438,12 @@ export function formula(s, d) {
   if (s.useStartDerivative) conditions.push("C'(t_0) = D_0");
   if (s.useEndDerivative) conditions.push(`C'(t_{${n}}) = D_{${n}}`);
   lines.push(conditions.join(",\\quad "));
-  // A derivative row when there is one, and the first interior point row, with their numbers.
-  const shown = [];
-  const derivative = rows.indexOf("start-derivative");
-  const fallback = rows.indexOf("end-derivative");
-  if (derivative >= 0 || fallback >= 0) shown.push(derivative >= 0 ? derivative : fallback);
-  let pointRow = -1;
-  for (let i = 0, k = 0; i < rows.length; i++) {
-    if (rows[i] !== "point") continue;
-    if (k === 1) pointRow = i;
-    k++;
-  }
-  if (pointRow >= 0) shown.push(pointRow);
+  // A derivative row when there is one, and the row of p₁, with their numbers.
+  const derivative = rows.findIndex((kind) => kind !== "point");
+  const shown = [derivative, rows.indexOf("point", 1)].filter((i) => i >= 0);
   const parts = shown.map((i) => {
-    let k = 0;
-    for (let r = 0; r < i; r++) if (rows[r] === "point") k++;
-    const head =
-      rows[i] === "point"
-        ? `C(${numberTex(d.params[k])})`
-        : `C'(${numberTex(d.params[rows[i] === "start-derivative" ? 0 : n])})`;
+    const u = numberTex(d.params[d.sites[i]]);
+    const head = rows[i] === "point" ? `C(${u})` : `C'(${u})`;
     return `${head} = ${rowTex(matrix, size, i)} = ${pairTex(rhs[2 * i], rhs[2 * i + 1])}`;
   });
   lines.push(...parts);
@@ -487,17 +480,12 @@ export function setup(ui) {
   return {
     update(s, d) {
       const { size, rows } = d.system;
-      const names = [];
-      for (let i = 0, k = 0; i < size; i++) {
-        names.push(conditionText(rows[i], k, s, d));
-        if (rows[i] === "point") k++;
-      }
       const key = d.notes ? "tableCaptionNotes" : "tableCaption";
       table.show(d.system, {
         dim: 2,
         caption: t(`bsplineInterpolation.${key}`, { size }),
         tooLarge: t("bsplineInterpolation.tableTooLarge", { size, max: TABLE_MAX_UNKNOWNS }),
-        name: (i) => names[i],
+        name: (i) => conditionText(i, d),
         kind: (i) => rows[i],
       });
     },

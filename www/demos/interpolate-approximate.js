@@ -21,6 +21,8 @@ import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { pointLabel } from "../lib/handles.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
+import { scaledInsets } from "../lib/view.js";
+import { drawCornerLegend } from "../lib/legend.js";
 
 export const id = "interpolate-approximate";
 export const strings = "interpolateApproximate";
@@ -40,6 +42,8 @@ export const PARAMS_KIND = "chord";
 const CURVE_SAMPLES = 256;
 /** Half the side of a ghosted control point's square, CSS px. */
 const GHOST_HALF_PX = 3;
+/** The key's band at the top of the figure (three rows), CSS px. */
+const LEGEND_PX = 70;
 
 /** Ten points sketching a wave, read as data, fitted by a cubic with 6 control points. */
 export const defaultState = Object.freeze({
@@ -227,17 +231,27 @@ const dataLabel = (i) => (DATA_LABELS[i] ??= `p${subscript(i)}`);
 export const figure = {
   /** The points and, as data, the fitted control points (a least-squares polygon reaches out). */
   bounds: (s, d) => paddedBounds(d.control ? s.points.concat(d.control) : s.points, 0.05, 0.1),
+  insets: scaledInsets(LEGEND_PX, 0, 0, 0),
   handles: {
     field: "points",
     label: (i, s) => (s.role === "control" ? pointLabel(i) : dataLabel(i)),
   },
 };
 
-const stylesFor = themed((theme) => ({
-  residual: { stroke: HUES.vermillion, width: WIDTH.construction },
-  foot: { fill: HUES.vermillion, radius: RADIUS.constructionPoint - 1 },
-  ghost: { fill: theme.polygon.stroke },
-}));
+const RESIDUAL_STYLE = Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction });
+const FOOT_STYLE = Object.freeze({ fill: HUES.vermillion, radius: RADIUS.constructionPoint - 1 });
+const stylesFor = themed((theme) => ({ ghost: { fill: theme.polygon.stroke } }));
+
+/** The keys: as control points (curve, their polygon), as data (curve, fitted polygon, residuals). */
+const CONTROL_KEY = Object.freeze([
+  { label: "interpolateApproximate.legendCurve", style: (theme) => theme.curve },
+  { label: "interpolateApproximate.legendGiven", style: (theme) => theme.polygon },
+]);
+const DATA_KEY = Object.freeze([
+  { label: "interpolateApproximate.legendCurve", style: (theme) => theme.curve },
+  { label: "interpolateApproximate.legendFitted", style: (theme) => theme.polygon },
+  { label: "interpolateApproximate.legendResidual", style: RESIDUAL_STYLE },
+]);
 
 /**
  * As control points: the polygon and the curve. As data: the fitted control polygon ghosted
@@ -266,11 +280,12 @@ export function draw(r, v, s, d) {
       r.moveTo(v.sx(x), v.sy(y));
       r.lineTo(v.sx(at[2 * k]), v.sy(at[2 * k + 1]));
     });
-    r.paint(styles.residual);
+    r.paint(RESIDUAL_STYLE);
     for (let k = 0; k < s.points.length; k++)
-      r.point(v.sx(at[2 * k]), v.sy(at[2 * k + 1]), styles.foot);
+      r.point(v.sx(at[2 * k]), v.sy(at[2 * k + 1]), FOOT_STYLE);
   }
   d.handles.draw(r, v);
+  drawCornerLegend(r, s.role === "control" ? CONTROL_KEY : DATA_KEY);
 }
 
 /** The curve and what its control points are: given, interpolating, or least squares. */

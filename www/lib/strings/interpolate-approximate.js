@@ -28,6 +28,10 @@ export const INTERPOLATE_APPROXIMATE = {
     "Interpolation: one control point per data point, the curve meets every pₖ (largest residual {max}).",
   "interpolateApproximate.note.leastSquares":
     "Least squares, ends exact: Σ |pₖ − C(tₖ)|² = {sum}; largest residual {max} (at p{k}).",
+  "interpolateApproximate.legendCurve": "the B-spline C(u)",
+  "interpolateApproximate.legendGiven": "control polygon: the points",
+  "interpolateApproximate.legendFitted": "control polygon rⱼ (computed)",
+  "interpolateApproximate.legendResidual": "residual pₖ − C(tₖ)",
   "interpolateApproximate.tex.control": "clamped uniform knots",
   "interpolateApproximate.whatYouSee":
     "The same points can play two parts. As control points they shape a B-spline that starts at the first, ends at the last and only approaches the rest — the approximation of the notes' interactive design. As data points (with chord-length parameters tₖ) they are met exactly by an interpolating B-spline with as many control points, or, with fewer control points, fitted in the least-squares sense with both ends exact: the short segments from each point to the curve are the residuals pₖ − C(tₖ), and the grey squares on the dashed polygon the computed control points. Syllabus section 5 (interpolation and approximation), after the Croatian and Greek notes.",
