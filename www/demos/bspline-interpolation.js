@@ -30,7 +30,7 @@ import {
 } from "../lib/panel.js";
 import { degreeButtons } from "../lib/degree-buttons.js";
 import { knotVectorReadout, knotListText } from "../lib/knot-readout.js";
-import { subscript, degreeName, fractionOrDecimals } from "../lib/format.js";
+import { subscript, degreeName, simpleFraction, fractionTex } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -194,7 +194,11 @@ export const compute = {
 };
 
 const numberText = exactText;
-const numberTex = (x) => fractionOrDecimals(Math.abs(x) < ZERO_TOLERANCE ? 0 : x, true);
+/** TeX of a number: a fraction as \tfrac, else as the table writes it. */
+const numberTex = (x) => {
+  const f = simpleFraction(x);
+  return f ? fractionTex(f) : exactText(x).replace("−", "-");
+};
 const pairText = (x, y) => `(${numberText(x)}, ${numberText(y)})`;
 const pairTex = (x, y) => `(${numberTex(x)},\\ ${numberTex(y)})`;
 

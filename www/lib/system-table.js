@@ -17,9 +17,17 @@ import { titledTable } from "./table.js";
 /** An entry closer than this to 0 is shown as 0 (round-off of the core's values). */
 const ZERO_TOLERANCE = 1e-12;
 
-/** A number as text: integers plain, simple fractions ("1/2", "−3/4"), else 3 decimals. */
+/** Below this size a non-zero entry would read "0.000" in 3 decimals: 2 significant digits. */
+const SMALL = 5e-4;
+
+/**
+ * A number as text: integers plain, simple fractions ("1/2", "−3/4"), else 3 decimals (2
+ * significant digits for small non-zero values, "0.00031", so they do not read as 0).
+ */
 export function exactText(x) {
-  return fractionOrDecimals(Math.abs(x) < ZERO_TOLERANCE ? 0 : x).replace("-", "−");
+  if (Math.abs(x) < ZERO_TOLERANCE) return "0";
+  const text = Math.abs(x) < SMALL ? x.toPrecision(2) : fractionOrDecimals(x);
+  return text.replace("-", "−");
 }
 
 /** A point of `dim` coordinates from a flat list at row i: "(1, 3/2)". */

@@ -62,5 +62,5 @@ export const BSPLINE_INTERPOLATION = {
   "bsplineInterpolation.try2":
     "Raise the degree step by step: the curve still passes through every point, but the rows get longer (each condition involves p + 1 control points) and the control polygon swings further out.",
   "bsplineInterpolation.try3":
-    "Drag p₂ far to one side with uniform parameters, then switch to chord length or centripetal: the parameters t and the knots change, and the overshoot near the long leg shrinks.",
+    "Drag p₂ far to one side, then switch the parameters from uniform to chord length or centripetal: the tᵢ and the knots in the panel follow the lengths of the legs, and the curve stops overshooting beside the long ones.",
 };

@@ -36,9 +36,9 @@ export const INTERPOLATE_APPROXIMATE = {
   "interpolateApproximate.whatYouSee":
     "The same points can play two parts. As control points they shape a B-spline that starts at the first, ends at the last and only approaches the rest — the approximation of the notes' interactive design. As data points (with chord-length parameters tₖ) they are met exactly by an interpolating B-spline with as many control points, or, with fewer control points, fitted in the least-squares sense with both ends exact: the short segments from each point to the curve are the residuals pₖ − C(tₖ), and the grey squares on the dashed polygon the computed control points. Syllabus section 5 (interpolation and approximation), after the Croatian and Greek notes.",
   "interpolateApproximate.try1":
-    "Switch between control points and data points: the curve jumps from inside the points' wave to passing through every one of them.",
+    "Switch between control points and data points: as control points the curve cuts inside every peak and touches only P₀ and P₉; as data it runs close to every point, and with the count at 10 through every one of them.",
   "interpolateApproximate.try2":
-    "As data, slide the number of control points down from 10 to 4: the curve relaxes, the residual segments grow, and the sum of squares in the panel rises step by step — the first and last points stay exact.",
+    "As data, slide the number of control points from 10 down to 4: the curve relaxes, the residual segments grow and the sum of squares climbs from 0 to about 78 — not at every single step (each count gets knots of its own), but the first and last points always stay exact.",
   "interpolateApproximate.try3":
-    "With interpolation, drag one point up sharply: the whole curve ripples. Lower the count to 5 and drag again: the fitted curve only leans towards the point.",
+    "Set the count to 10 (interpolation) and drag p₄ down sharply: the whole curve ripples to pass through it. Lower the count to 5 and drag again: the fitted curve only leans towards the point, and its residual grows instead.",
 };
