@@ -312,8 +312,8 @@ export function formula(s, d) {
   }
   return [
     `${curve},\\quad r_0 = p_0,\\ r_{${h}} = p_{${n}}`,
-    `\\min_{r_1,\\dots,r_{${h - 1}}} \\sum_{k=1}^{${n - 1}} |p_k - C(t_k)|^2 = ${fmt(d.residuals.sum)},` +
-      `\\quad \\max_k |p_k - C(t_k)| = ${fmt(d.residuals.max)}`,
+    `\\min_{r_1,\\dots,r_{${h - 1}}} \\sum_{k=1}^{${n - 1}} |p_k - C(t_k)|^2 = ${fmt(d.residuals.sum)}`,
+    `\\max_k |p_k - C(t_k)| = ${fmt(d.residuals.max)}\\ (k = ${d.residuals.worst})`,
   ];
 }
 

@@ -37,6 +37,11 @@ export default [
       const max = await residualMax(page);
       assert(max < 1e-9, `largest residual at count = 10: ${max}`);
       assert((await fit(page).textContent()).includes("Interpolation"), "the panel says so");
+      // A drag re-solves: the curve still meets every point, the dragged one included.
+      const handles = await h.handles();
+      await h.drag(handles[4], 0, 60);
+      const after = await residualMax(page);
+      assert(after < 1e-9, `largest residual after dragging p₄: ${after}`);
       assert((await h.canvas().getAttribute("aria-label")).includes("interpolation"), "aria");
     },
   ],

@@ -62,5 +62,5 @@ export const BSPLINE_INTERPOLATION = {
   "bsplineInterpolation.try2":
     "Raise the degree step by step: the curve still passes through every point, but the rows get longer (each condition involves p + 1 control points) and the control polygon swings further out.",
   "bsplineInterpolation.try3":
-    "Drag p₂ far to one side, then switch the parameters from uniform to chord length or centripetal: the tᵢ and the knots in the panel follow the lengths of the legs, and the curve stops overshooting beside the long ones.",
+    "Drag p₂ far to the right: with uniform parameters the curve swings far past p₂ and p₃. Switch to chord length: the tᵢ now grow with the legs and the swing shrinks — but D₀, a derivative with respect to t, is now far too fast for a parameter that counts length: shorten the arrow and the hook at p₀ goes away.",
 };
