@@ -659,3 +659,269 @@ fn fixtures_from_scipy_make_interp_spline_and_numpy_least_squares() {
     let checked: usize = cases.iter().map(Case::check).sum();
     assert!(checked > 1000, "only {checked} fixture values");
 }
+
+// --- More closed-curve and option cases. --------------------------------------------------------
+
+#[test]
+fn closed_uniform_cubic_rows_are_one_sixth_two_thirds_one_sixth() {
+    // Uniform params and an odd degree: scipy's periodic knots are the integers, every site is
+    // a knot, and row i holds N(t_i) = 1/6, 2/3, 1/6 in columns i, i+1, i+2 (mod N).
+    let n = 6;
+    let mut points: Vec<DVec2> = (0..n)
+        .map(|i| DVec2::new((i as f64).cos(), (i as f64).sin()))
+        .collect();
+    points.push(points[0]);
+    let params: Vec<f64> = (0..=n).map(|i| i as f64).collect();
+    let options = InterpolationOptions {
+        closed: true,
+        ..options2()
+    };
+    let s = interpolation_system(&points, 3, &params, &options).unwrap();
+    assert_eq!(s.size, n);
+    assert_eq!(s.rows, vec![RowKind::Point; n]);
+    for i in 0..n {
+        for j in 0..n {
+            let want = match (j + n - i) % n {
+                0 | 2 => 1.0 / 6.0,
+                1 => 2.0 / 3.0,
+                _ => 0.0,
+            };
+            assert_close(s.matrix[i * n + j], want, 1e-15, &format!("A[{i}][{j}]"));
+        }
+    }
+    let knots: Vec<f64> = (-3..=n as i32 + 3).map(f64::from).collect();
+    assert_eq!(s.knots, knots);
+    // The same curve as BSplineCurve::closed (uniform knots u_j = j) on the distinct control
+    // points, shifted by p = 3 in the parameter.
+    let c = interpolate_bspline(&points, 3, &params, &options).unwrap();
+    let reference = BSplineCurve::closed(s.solution.clone(), 3, None).unwrap();
+    for k in 0..=60 {
+        let t = k as f64 * 0.1;
+        assert_close2(
+            c.evaluate(t).unwrap(),
+            reference.evaluate(t + 3.0).unwrap(),
+            1e-14,
+            &format!("t = {t}"),
+        );
+    }
+}
+
+#[test]
+fn closed_curves_in_3d() {
+    let mut rng = Rng::new(31);
+    let mut points: Vec<DVec3> = (0..7).map(|_| rng.point3(4.0)).collect();
+    points.push(points[0]);
+    let params: Vec<f64> = (0..8).map(|i| i as f64 * 0.75).collect();
+    let options = InterpolationOptions {
+        closed: true,
+        ..InterpolationOptions::default()
+    };
+    let c = interpolate_bspline(&points, 4, &params, &options).unwrap();
+    for (&t, &q) in params.iter().zip(&points) {
+        assert_close3(c.evaluate(t).unwrap(), q, 1e-12, "C(t_i)");
+    }
+    let (a, b) = c.domain();
+    for order in 1..4 {
+        let (d0, d1) = (
+            c.derivative(a, order).unwrap(),
+            c.derivative(b, order).unwrap(),
+        );
+        assert_close3(
+            d0,
+            d1,
+            1e-9 * d0.length().max(1.0),
+            &format!("order {order}"),
+        );
+    }
+}
+
+#[test]
+fn explicit_knots_with_derivatives_and_params_outside_their_domain() {
+    let points = pts2(&[(0.0, 0.0), (1.0, 2.0), (3.0, 1.0), (4.0, 3.0)]);
+    let params = [0.0, 1.0, 2.0, 3.0];
+    // Cubic with both derivatives: 6 unknowns, 10 knots, interior 1 and 2.
+    let options = InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0, 3.0]),
+        start_derivative: Some(DVec2::new(1.0, 1.0)),
+        end_derivative: Some(DVec2::new(1.0, -1.0)),
+        ..options2()
+    };
+    let c = interpolate_bspline(&points, 3, &params, &options).unwrap();
+    for (&t, &q) in params.iter().zip(&points) {
+        assert_close2(c.evaluate(t).unwrap(), q, 1e-13, "C(t_i)");
+    }
+    assert_close2(
+        c.derivative(0.0, 1).unwrap(),
+        DVec2::new(1.0, 1.0),
+        1e-13,
+        "C'(0)",
+    );
+    assert_close2(
+        c.derivative(3.0, 1).unwrap(),
+        DVec2::new(1.0, -1.0),
+        1e-13,
+        "C'(3)",
+    );
+    // Knots whose domain stops at 2.5 leave t_3 = 3 outside.
+    let options = InterpolationOptions {
+        knots: Some(vec![0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 2.5, 2.5, 2.5, 2.5]),
+        ..options
+    };
+    let e = interpolate_bspline(&points, 3, &params, &options).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "params[3]: t = 3 is outside the domain [0, 2.5]"
+    );
+}
+
+#[test]
+fn degree_one_with_end_derivatives_adds_a_vertex_per_derivative() {
+    let points = pts2(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0)]);
+    let params = [0.0, 2.0, 4.0];
+    let options = InterpolationOptions {
+        start_derivative: Some(DVec2::new(0.0, 1.0)),
+        ..options2()
+    };
+    let c = interpolate_bspline(&points, 1, &params, &options).unwrap();
+    // Knots 0 0 1 2 4 4: the extra vertex at u = 1 is P_0 + 1·D_0 = (0, 1).
+    assert_eq!(c.knots().as_slice(), [0.0, 0.0, 1.0, 2.0, 4.0, 4.0]);
+    assert_eq!(
+        c.control_points(),
+        pts2(&[(0.0, 0.0), (0.0, 1.0), (2.0, 0.0), (2.0, 2.0)])
+    );
+}
+
+#[test]
+fn two_points_and_both_derivatives_make_the_cubic_hermite_curve() {
+    // Knots 0 0 0 0 1 1 1 1: the Bézier form q_1 = p_0 + D_0/3, q_2 = p_1 − D_1/3.
+    let points = pts2(&[(0.0, 0.0), (3.0, 0.0)]);
+    let options = InterpolationOptions {
+        start_derivative: Some(DVec2::new(0.0, 3.0)),
+        end_derivative: Some(DVec2::new(0.0, -3.0)),
+        ..options2()
+    };
+    let c = interpolate_bspline(&points, 3, &[0.0, 1.0], &options).unwrap();
+    let want = pts2(&[(0.0, 0.0), (0.0, 1.0), (3.0, 1.0), (3.0, 0.0)]);
+    for (a, b) in c.control_points().iter().zip(&want) {
+        assert_close2(*a, *b, 1e-15, "Bézier point");
+    }
+}
+
+#[test]
+fn validation_follows_the_documented_order() {
+    let nan = pts2(&[(0.0, f64::NAN), (1.0, 1.0)]);
+    let closed_conflict = InterpolationOptions {
+        closed: true,
+        end_derivative: Some(DVec2::ZERO),
+        ..options2()
+    };
+    // Coordinates before the degree, the degree before the point count, the count before the
+    // params, the params before the options, options before the closing point.
+    let e = interpolate_bspline(&nan, 0, &[0.0], &closed_conflict).unwrap_err();
+    assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
+    let two = pts2(&[(0.0, 0.0), (1.0, 1.0)]);
+    let e = interpolate_bspline(&two, 11, &[0.0], &closed_conflict).unwrap_err();
+    assert_eq!(
+        e,
+        Error::DegreeOutOfRange {
+            degree: 11,
+            max: 10
+        }
+    );
+    let e = interpolate_bspline(&two, 3, &[0.0], &options2()).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::TooFewDataPoints {
+                needed: 4,
+                got: 2,
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    let four = pts2(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 3.0)]);
+    let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 1.0], &closed_conflict).unwrap_err();
+    assert_eq!(
+        e,
+        Error::ParamCount {
+            params: 3,
+            points: 4
+        }
+    );
+    let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 1.0, 2.0], &closed_conflict).unwrap_err();
+    assert!(
+        matches!(e, Error::ParamsNotIncreasing { index: 2, .. }),
+        "{e:?}"
+    );
+    let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &closed_conflict).unwrap_err();
+    assert!(matches!(e, Error::ConflictingOptions { .. }), "{e:?}");
+    let closed = InterpolationOptions {
+        closed: true,
+        ..options2()
+    };
+    let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &closed).unwrap_err();
+    assert_eq!(e, Error::NotClosed { last: 3 });
+    let bad_derivative = InterpolationOptions {
+        start_derivative: Some(DVec2::new(f64::INFINITY, 0.0)),
+        ..options2()
+    };
+    let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &bad_derivative).unwrap_err();
+    assert!(
+        e.to_string().contains("startDerivative coordinate 0"),
+        "{e}"
+    );
+}
+
+#[test]
+fn least_squares_with_explicit_knots() {
+    let mut rng = Rng::new(17);
+    let (points, params) = random_data(&mut rng, 12);
+    let (a, b) = (params[0], params[11]);
+    let mid = 0.5 * (a + b);
+    // Cubic, 6 control points, interior knots at 1/3 and 1/2 of the way.
+    let knots = [a, a, a, a, a + (b - a) / 3.0, mid, b, b, b, b];
+    let c = approximate_bspline(&points, 3, 6, &params, Some(&knots)).unwrap();
+    assert_eq!(c.knots().as_slice(), knots);
+    assert_eq!(c.control_points()[0], points[0]);
+    assert_eq!(c.control_points()[5], points[11]);
+    // A knot vector whose last spans hold no parameter: N_5 = 1 only at b, so N_4 and N_5 cannot
+    // both be matched with parameters (the greedy subsequence check names N_4).
+    let crowded = [a, a, a, a, b - 1e-9, b - 5e-10, b, b, b, b];
+    let e = approximate_bspline(&points, 3, 6, &params, Some(&crowded)).unwrap_err();
+    assert!(matches!(e, Error::SchoenbergWhitney { .. }), "{e:?}");
+}
+
+#[test]
+fn least_squares_in_3d_with_two_control_points_is_the_chord() {
+    let points = [
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 5.0, 2.0),
+        DVec3::new(2.0, -1.0, 0.0),
+        DVec3::new(3.0, 3.0, 3.0),
+    ];
+    let c = approximate_bspline(&points, 1, 2, &[0.0, 1.0, 2.0, 3.0], None).unwrap();
+    assert_eq!(c.control_points(), vec![points[0], points[3]]);
+}
+
+#[test]
+fn least_squares_default_knots_leave_a_parameter_for_every_basis_function() {
+    // NURBS Book eq. 9.69 puts a parameter in every knot span, so some increasing choice of
+    // parameters satisfies Schoenberg–Whitney and the normal equations are positive definite.
+    let mut rng = Rng::new(23);
+    for _ in 0..2000 {
+        let p = 1 + (rng.next_u64() % 10) as usize;
+        let points = p + 1 + (rng.next_u64() % 30) as usize;
+        let count = p + 1 + (rng.next_u64() % (points - p) as u64) as usize;
+        let mut params = vec![0.0];
+        for _ in 1..points {
+            let gap = 10f64.powf(rng.range(-2.0, 2.0));
+            params.push(params.last().unwrap() + gap);
+        }
+        let u = knots::least_squares_knots(&params, p, count);
+        assert_eq!(u.len(), count + p + 1);
+        assert!(u.windows(2).all(|w| w[0] <= w[1]), "{u:?}");
+        knots::check_schoenberg_whitney_subsequence(&u, p, count, &params)
+            .unwrap_or_else(|e| panic!("p = {p}, {points} points, count {count}: {e}"));
+    }
+}

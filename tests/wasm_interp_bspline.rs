@@ -237,6 +237,27 @@ fn errors_name_the_value() {
         closed
     ))
     .contains("point 4"));
+    assert_eq!(
+        message(approximate_bspline(
+            arr(&POINTS[..4]),
+            2.0,
+            3.0,
+            4.0,
+            arr(&PARAMS[..2]),
+            JsValue::UNDEFINED
+        )),
+        "a least-squares B-spline of this degree (p + 1, at least 2) needs at least 4 data points, got 2"
+    );
+    assert_eq!(
+        message(interpolate_bspline(
+            arr(&POINTS[..4]),
+            2.0,
+            3.0,
+            arr(&PARAMS[..2]),
+            JsValue::UNDEFINED
+        )),
+        "an interpolating B-spline of this degree (p + 1 − end derivatives, at least 2) needs at least 4 data points, got 2"
+    );
 }
 
 #[test]
@@ -259,4 +280,72 @@ fn approximation_and_closed_curves_from_js() {
     let c = interpolate_bspline(arr(&ring), 2.0, 3.0, arr(&PARAMS), closed).unwrap();
     assert_eq!(c.wrapped(), 3);
     assert_eq!(c.domain(), [0.0, 4.0]);
+}
+
+#[test]
+fn three_dimensional_points_and_plain_arrays() {
+    let points = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 1.0, -1.0, 4.0, 4.0, 2.0];
+    let params = [0.0, 1.0, 2.5, 3.0];
+    let c =
+        interpolate_bspline(plain(&points), 3.0, 3.0, plain(&params), JsValue::UNDEFINED).unwrap();
+    for (i, &t) in params.iter().enumerate() {
+        let p = c.evaluate(t).unwrap();
+        for k in 0..3 {
+            assert!((p[k] - points[3 * i + k]).abs() < 1e-13, "C(t_{i}) = {p:?}");
+        }
+    }
+    let opts = object(&[("startDerivative", arr(&[1.0, 0.0]))]);
+    assert_eq!(
+        message(interpolate_bspline(
+            arr(&points),
+            3.0,
+            3.0,
+            arr(&params),
+            opts
+        )),
+        "startDerivative must have 3 numbers, got 2"
+    );
+    let fit = approximate_bspline(
+        arr(&points),
+        3.0,
+        1.0,
+        3.0,
+        arr(&params),
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
+    assert_eq!(fit.control_points().len(), 9);
+}
+
+#[test]
+fn closed_system_is_cyclic_and_all_point_rows() {
+    let ring = [0.0, 0.0, 2.0, 0.0, 3.0, 1.0, 2.0, 2.0, 0.0, 2.0, 0.0, 0.0];
+    let params = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
+    let closed = object(&[("closed", JsValue::TRUE)]);
+    let s = bspline_interpolation_system(arr(&ring), 2.0, 3.0, arr(&params), closed).unwrap();
+    assert_eq!(get(&s, "size").as_f64(), Some(5.0));
+    let matrix = numbers_of(&get(&s, "matrix"));
+    // Row 4 (t = 4): N = 1/6, 2/3, 1/6 in columns 4, 0, 1.
+    let sixth = 1.0 / 6.0;
+    for (j, want) in [(4, sixth), (0, 2.0 / 3.0), (1, sixth), (2, 0.0), (3, 0.0)] {
+        assert!((matrix[20 + j] - want).abs() < 1e-15, "{matrix:?}");
+    }
+    let rows = Array::from(&get(&s, "rows"));
+    assert!(rows
+        .iter()
+        .all(|r| r.as_string().as_deref() == Some("point")));
+    assert_eq!(numbers_of(&get(&s, "knots")).len(), 5 + 3 + 3 + 1);
+    // Too large: 65 unknowns.
+    let many: Vec<f64> = (0..130)
+        .map(|i| f64::from(i % 7) + f64::from(i / 2))
+        .collect();
+    let ts: Vec<f64> = (0..65).map(f64::from).collect();
+    assert!(message(bspline_interpolation_system(
+        arr(&many),
+        2.0,
+        3.0,
+        arr(&ts),
+        JsValue::UNDEFINED
+    ))
+    .contains("at most 64"));
 }

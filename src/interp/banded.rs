@@ -93,9 +93,7 @@ impl AlmostBanded {
     pub fn add(&mut self, i: usize, j: usize, value: f64) -> bool {
         match self.slot(i, j) {
             Some((true, s)) => self.edge[s] += value,
-            Some((false, s)) if j + self.lower <= i + self.lower + self.upper => {
-                self.band[s] += value
-            }
+            Some((false, s)) if j <= i + self.upper => self.band[s] += value,
             _ => return false,
         }
         true
@@ -337,6 +335,52 @@ mod tests {
                 row: 1
             }
         );
+    }
+
+    #[test]
+    fn border_columns_hold_the_corners_of_a_cyclic_matrix() {
+        // A cyclic tridiagonal matrix (1 on the diagonal, 2 above, 3 below, corners wrapping)
+        // with columns renumbered so column 0 is last: b = A x for a known x, then solve.
+        let n = 7;
+        let x: Vec<f64> = (0..n).map(|i| (i * i) as f64 - 3.0).collect();
+        let entry = |i: usize, j: usize| match (j + n - i) % n {
+            0 => 1.0,
+            1 => 2.0,
+            d if d == n - 1 => 3.0,
+            _ => 0.0,
+        };
+        let b: Vec<f64> = (0..n)
+            .map(|i| (0..n).map(|j| entry(i, j) * x[j]).sum())
+            .collect();
+        // New column c holds unknown (c + 1) mod n; border = the last 3 columns.
+        let mut a = AlmostBanded::new(n, 2, 1, 3);
+        for i in 0..n {
+            for j in 0..n {
+                let v = entry(i, j);
+                if v != 0.0 {
+                    assert!(a.add(i, (j + n - 1) % n, v), "({i}, {j})");
+                }
+            }
+        }
+        let mut rhs = b.clone();
+        a.solve(&mut rhs, 1, "test").unwrap();
+        for c in 0..n {
+            let want = x[(c + 1) % n];
+            assert!(
+                (rhs[c] - want).abs() < 1e-12,
+                "x_{}: {} vs {want}",
+                (c + 1) % n,
+                rhs[c]
+            );
+        }
+    }
+
+    #[test]
+    fn entries_outside_band_and_border_are_refused() {
+        let mut a = AlmostBanded::new(6, 1, 1, 2);
+        assert!(!a.add(0, 2, 1.0), "above the band");
+        assert!(!a.add(3, 1, 1.0), "below the band");
+        assert!(a.add(0, 4, 1.0), "border");
     }
 
     #[test]

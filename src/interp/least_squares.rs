@@ -12,7 +12,7 @@
 
 use super::banded::SymmetricBanded;
 use super::global::knots::{check_schoenberg_whitney_subsequence, least_squares_knots};
-use super::global::{check_interpolation_degree, check_params, check_points};
+use super::global::{check_interpolation_degree, check_params, check_point_cap, check_points};
 use crate::bspline::{basis_functions, BSplineCurve, BasisScratch, KnotVector};
 use crate::error::{Error, Result};
 use crate::geom::Cartesian;
@@ -23,6 +23,7 @@ use crate::geom::Cartesian;
 ///
 /// # Errors
 /// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
+/// [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`] points,
 /// [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors ([`Error::ParamCount`],
 /// [`Error::NotFinite`], [`Error::ParamsNotIncreasing`]), [`Error::ControlCountOutOfRange`]
 /// (`count` outside `[p + 1, m + 1]`), the errors of [`KnotVector::new`] for `count` control
@@ -35,17 +36,8 @@ pub fn approximate_bspline<C: Cartesian>(
     params: &[f64],
     knots: Option<&[f64]>,
 ) -> Result<BSplineCurve<C>> {
-    check_points(points)?;
-    check_interpolation_degree(degree)?;
+    check_fit_data(points, degree)?;
     let p = degree;
-    let needed = 2.max(p + 1);
-    if points.len() < needed {
-        return Err(Error::TooFewDataPoints {
-            needed,
-            got: points.len(),
-            what: "a least-squares B-spline of this degree (p + 1, at least 2)",
-        });
-    }
     check_params(params, points.len())?;
     if count < p + 1 || count > points.len() {
         return Err(Error::ControlCountOutOfRange {
@@ -113,6 +105,23 @@ pub fn approximate_bspline<C: Cartesian>(
         }
     }
     BSplineCurve::new(control, p, knots.as_slice().to_vec(), None)
+}
+
+/// The checks on the data before the parameters: finite coordinates, the degree, the number
+/// of points (at most [`super::MAX_INTERPOLATION_POINTS`], at least `max(2, p + 1)`).
+pub(crate) fn check_fit_data<C: Cartesian>(points: &[C], degree: usize) -> Result<()> {
+    check_points(points)?;
+    check_interpolation_degree(degree)?;
+    check_point_cap(points.len())?;
+    let needed = 2.max(degree + 1);
+    if points.len() < needed {
+        return Err(Error::TooFewDataPoints {
+            needed,
+            got: points.len(),
+            what: "a least-squares B-spline of this degree (p + 1, at least 2)",
+        });
+    }
+    Ok(())
 }
 
 /// Checks the first `p + 1` knots equal `a = t_0` and the last `p + 1` equal `b = t_m`.

@@ -14,6 +14,6 @@ pub mod least_squares;
 
 pub use global::{
     interpolate_bspline, interpolation_system, InterpolationOptions, InterpolationSystem, RowKind,
-    MAX_INTERPOLATION_DEGREE, MAX_SYSTEM_SIZE,
+    MAX_INTERPOLATION_DEGREE, MAX_INTERPOLATION_POINTS, MAX_SYSTEM_SIZE,
 };
 pub use least_squares::approximate_bspline;

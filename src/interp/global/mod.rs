@@ -9,6 +9,23 @@
 //! non-zeros per row) and solved in O(n·p²) by LU with partial pivoting on the band (see
 //! [`super::banded`]); knots are chosen by averaging ([`knots`]) unless given, and given knots
 //! are checked against the Schoenberg–Whitney condition, without which the system is singular.
+//!
+//! ```
+//! use splinelab::interp::{interpolation_system, InterpolationOptions, RowKind};
+//! use splinelab::DVec2;
+//! // The Croatian notes' example: five points at 0..4, degree 2, C'(0) given, knots 0 0 0 1 2 3 4 4 4.
+//! let points = [(0., 0.), (2., 4.), (4., 2.), (6., 6.), (8., 0.)].map(|(x, y)| DVec2::new(x, y));
+//! let options = InterpolationOptions {
+//!     knots: Some(vec![0., 0., 0., 1., 2., 3., 4., 4., 4.]),
+//!     start_derivative: Some(DVec2::new(2.0, 8.0)),
+//!     ..Default::default()
+//! };
+//! let s = interpolation_system(&points, 2, &[0., 1., 2., 3., 4.], &options).unwrap();
+//! assert_eq!(&s.matrix[6..12], &[-2.0, 2.0, 0.0, 0.0, 0.0, 0.0]); // −2 r_0 + 2 r_1 = D_0
+//! assert_eq!(&s.matrix[12..18], &[0.0, 0.5, 0.5, 0.0, 0.0, 0.0]); // (r_1 + r_2)/2 = p_1
+//! assert_eq!(s.rows[1], RowKind::StartDerivative);
+//! assert_eq!(s.solution[4], DVec2::new(7.0, 12.0));
+//! ```
 
 mod closed;
 pub mod knots;
@@ -23,6 +40,10 @@ use system::Collocation;
 
 /// The highest degree interpolation and least squares accept (the syllabus' 1–10).
 pub const MAX_INTERPOLATION_DEGREE: usize = 10;
+
+/// The most data points interpolation and least squares accept: the banded factor takes up to
+/// `(3p + 1)·8` bytes per row (248 MB at this cap for `p = 10`), inside wasm's 4 GB.
+pub const MAX_INTERPOLATION_POINTS: usize = 1 << 20;
 
 /// The largest system [`interpolation_system`] writes out dense.
 pub const MAX_SYSTEM_SIZE: usize = 64;
@@ -82,7 +103,8 @@ const WHAT: &str = "the B-spline interpolation system";
 ///
 /// # Errors
 /// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooFewDataPoints`] (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
+/// [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points, [`Error::TooFewDataPoints`]
+/// (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
 /// [`Error::ParamCount`], [`Error::NotFinite`] (params), [`Error::ParamsNotIncreasing`],
 /// [`Error::ConflictingOptions`] (closed with derivatives or knots), [`Error::NotFinite`]
 /// (derivatives), [`Error::NotClosed`], the knot errors of [`KnotVector::new`], a parameter
@@ -141,6 +163,7 @@ pub(crate) fn check_data<C: Cartesian>(
 ) -> Result<()> {
     check_points(points)?;
     check_interpolation_degree(degree)?;
+    check_point_cap(points.len())?;
     let (needed, what) = if closed {
         (
             3.max(degree + 1),
@@ -157,6 +180,18 @@ pub(crate) fn check_data<C: Cartesian>(
             needed,
             got: points.len(),
             what,
+        });
+    }
+    Ok(())
+}
+
+/// Checks the number of data points against [`MAX_INTERPOLATION_POINTS`] ([`Error::TooLarge`]).
+pub(crate) fn check_point_cap(count: usize) -> Result<()> {
+    if count > MAX_INTERPOLATION_POINTS {
+        return Err(Error::TooLarge {
+            what: "number of data points",
+            value: count,
+            max: MAX_INTERPOLATION_POINTS,
         });
     }
     Ok(())
@@ -228,6 +263,25 @@ pub(crate) fn check_params_in_domain(params: &[f64], knots: &KnotVector) -> Resu
     Ok(())
 }
 
+/// The first option `closed` excludes, with the reason.
+fn conflict_with_closed<C>(
+    options: &InterpolationOptions<C>,
+) -> Option<(&'static str, &'static str)> {
+    const NO_ENDS: &str = "a closed curve has no ends";
+    if options.start_derivative.is_some() {
+        Some(("startDerivative", NO_ENDS))
+    } else if options.end_derivative.is_some() {
+        Some(("endDerivative", NO_ENDS))
+    } else if options.knots.is_some() {
+        Some((
+            "knots",
+            "a closed curve's knots are the periodic ones computed from the params",
+        ))
+    } else {
+        None
+    }
+}
+
 /// A validated interpolation problem: knots, rows and right sides.
 struct Setup {
     knots: KnotVector,
@@ -248,20 +302,11 @@ impl Setup {
         check_data(points, degree, derivatives, options.closed)?;
         check_params(params, points.len())?;
         if options.closed {
-            let conflict = if options.start_derivative.is_some() {
-                Some("startDerivative")
-            } else if options.end_derivative.is_some() {
-                Some("endDerivative")
-            } else if options.knots.is_some() {
-                Some("knots")
-            } else {
-                None
-            };
-            if let Some(first) = conflict {
+            if let Some((first, reason)) = conflict_with_closed(options) {
                 return Err(Error::ConflictingOptions {
                     first,
                     second: "closed",
-                    reason: "a closed curve has no ends, and its knots are periodic (computed)",
+                    reason,
                 });
             }
             return closed::setup(points, degree, params);

@@ -64,7 +64,9 @@ impl Collocation {
     /// point row, first derivatives otherwise. `scratch` is reused between rows.
     pub fn push(&mut self, knots: &KnotVector, t: f64, kind: RowKind, scratch: &mut BasisScratch) {
         let p = self.degree;
-        let k = knots.span(t);
+        // Sites come in increasing order: start the span search at the previous row's span.
+        let hint = self.firsts.last().map_or(p, |&first| first + p);
+        let k = knots.span_from(t, hint);
         self.firsts.push(k - p);
         let start = self.values.len();
         self.values.resize(start + p + 1, 0.0);

@@ -7,6 +7,7 @@ use crate::bspline::{parameterize, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::interp::global::{check_data, check_params};
+use crate::interp::least_squares::check_fit_data;
 use crate::interp::{self, InterpolationOptions, InterpolationSystem};
 use glam::{DVec2, DVec3};
 use serde::Serialize;
@@ -218,7 +219,9 @@ fn approximate<C: Cartesian>(
     params: &ParamsArg,
     options: &RawOptions,
 ) -> Result<crate::BSplineCurve<C>, Error> {
-    let (points, params, _) = prepare::<C>(points, degree, params, options)?;
+    let points: Vec<C> = points_from_flat(points)?;
+    check_fit_data(&points, degree)?;
+    let params = params.resolve(&points)?;
     interp::approximate_bspline(&points, degree, count, &params, options.knots.as_deref())
 }
 
