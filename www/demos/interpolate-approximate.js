@@ -120,20 +120,15 @@ export const derive = {
 function residualsOf(s, d) {
   if (s.role !== "data") return null;
   const at = d.curve.sample(d.params);
+  const lengths = s.points.map(([x, y], k) => Math.hypot(x - at[2 * k], y - at[2 * k + 1]));
   let sum = 0;
-  let max = 0;
   let worst = 0;
-  s.points.forEach(([x, y], k) => {
-    const length = Math.hypot(x - at[2 * k], y - at[2 * k + 1]);
+  lengths.forEach((length, k) => {
     sum += length * length;
-    if (length > max) {
-      max = length;
-      worst = k;
-    }
+    if (length > lengths[worst]) worst = k;
   });
-  const n = s.points.length - 1;
-  const gap = (k) => Math.hypot(s.points[k][0] - at[2 * k], s.points[k][1] - at[2 * k + 1]);
-  return { at, sum, max, worst, first: gap(0), last: gap(n) };
+  const max = lengths[worst];
+  return { at, sum, max, worst, first: lengths[0], last: lengths[lengths.length - 1] };
 }
 
 /** The fitted control points as [x, y] pairs (drawn ghosted). */
