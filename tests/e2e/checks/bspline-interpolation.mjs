@@ -142,6 +142,10 @@ export default [
         (await page.locator('[data-info="knots"]').textContent()).includes("default"),
         "the readout says the knots are the core's default",
       );
+      assert(
+        await page.locator('[data-control="notesKnots"]').isHidden(),
+        "no notes' knots to tick for another set-up",
+      );
       // Syllabus §3 (derivative of a clamped B-spline at its start): C′(u_p) = p/(u_{p+1} − u₁)·(r₁ − r₀),
       // so the derivative row of A reads −3/(u₄ − u₁), 3/(u₄ − u₁), 0 … for p = 3.
       const u = after.split(",").map(Number);
