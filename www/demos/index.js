@@ -116,6 +116,18 @@ export const demos = Object.freeze(
       strings: "parametrization",
       load: () => import("./parametrization.js"),
     },
+    {
+      id: "bspline-interpolation",
+      section: 5,
+      strings: "bsplineInterpolation",
+      load: () => import("./bspline-interpolation.js"),
+    },
+    {
+      id: "interpolate-approximate",
+      section: 5,
+      strings: "interpolateApproximate",
+      load: () => import("./interpolate-approximate.js"),
+    },
   ].map(Object.freeze),
 );
 

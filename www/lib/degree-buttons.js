@@ -14,8 +14,13 @@ import { withClampedKnots } from "./bspline.js";
 /**
  * `prefix`: the demo's strings.js prefix, with `.degreeOption` ({ p, kind }) for a button's
  * label and `.minPoints` ({ min, degree }) when there are too few points for the degree.
+ * A demo whose degree is not that of a control polygon gives `limit(state)` → the largest
+ * degree the state can carry (default: the number of points − 1; interpolation with end
+ * derivatives carries one more per derivative) and `apply(ui, p)` (default: the clamped uniform
+ * knots for p, `withClampedKnots`); `.minPoints` then gets `{ min: p + 1, degree: p }` as before.
  */
-export function degreeButtons({ prefix, min, max }) {
+export function degreeButtons({ prefix, min, max, limit = null, apply = null }) {
+  const largest = limit ?? ((s) => s.points.length - 1);
   return {
     build(ui) {
       const options = [];
@@ -33,8 +38,9 @@ export function degreeButtons({ prefix, min, max }) {
           const p = Number(value);
           const s = ui.state;
           if (p === s.degree) return;
-          if (s.points.length < p + 1)
+          if (p > largest(s))
             ui.status(t(`${prefix}.minPoints`, { min: p + 1, degree: p }), "error");
+          else if (apply) apply(ui, p);
           else replaceOrReport(ui, withClampedKnots(ui.sl, { ...s, degree: p }));
           control.set(String(ui.state.degree));
         },
@@ -44,8 +50,7 @@ export function degreeButtons({ prefix, min, max }) {
         element: control.element,
         sync(s) {
           control.set(String(s.degree));
-          for (const input of control.inputs)
-            input.disabled = Number(input.value) > s.points.length - 1;
+          for (const input of control.inputs) input.disabled = Number(input.value) > largest(s);
         },
       };
     },

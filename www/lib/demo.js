@@ -29,10 +29,12 @@
  *   in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the
  *   point is written: returning `false` refuses the move; `accept` may refuse it before that.
  *   `polygon: false`: the handles form no polygon (label placement). `extra: [{ field, index?,
- *   label, when?(state), accept?(state, x, y), anchor?(state) }]` adds handles on other points
- *   (`state[field]` or `state[field][index]`; label a strings.js key), shown while `when`
- *   holds; `anchor(state)` → the [x, y] point such a handle is attached to (an arrow's foot):
- *   its label goes beyond it, and it is no neighbour of the others in label placement.
+ *   label, when?(state), accept?(state, x, y), anchor?(state), at?, place? }]` adds handles on
+ *   other points (`state[field]` or `state[field][index]`; label a strings.js key), shown while
+ *   `when` holds; `anchor(state)` → the [x, y] point such a handle is attached to (an arrow's
+ *   foot): its label goes beyond it, and it is no neighbour of the others in label placement;
+ *   `at(state, out)` / `place(state, x, y)` put a handle where the state implies (an arrow's tip
+ *   p₀ + D₀ of a vector field) and write the field back from a move.
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -178,6 +180,9 @@ export function mountDeclared(demo, initialState, ctx) {
   /**
    * The handles of the point list, then the `extra` points shown (`when(state)`, default always):
    * `state[field]` (a single point) or `state[field][index]`; `accept(state, x, y)` may refuse a move.
+   * A handle placed by the state rather than stored in it (an arrow's tip at p₀ + D₀ for a
+   * vector field D₀) gives `at(state, out)` (writes its world [x, y]) and `place(state, x, y)`
+   * (writes the field from the new position) instead.
    */
   function withExtraPoints(list, listed, extra) {
     const shown = (e) => !e.when || e.when(work);
@@ -193,7 +198,12 @@ export function mountDeclared(demo, initialState, ctx) {
         for (const e of extra) if (shown(e)) n++;
         return n;
       },
-      get: (i, out) => (i < listed() ? list.get(i, out) : out.set(point(entry(i)))),
+      get(i, out) {
+        if (i < listed()) return list.get(i, out);
+        const e = entry(i);
+        if (e.at) e.at(work, out);
+        else out.set(point(e));
+      },
       label: (i) => (i < listed() ? list.label(i) : t(entry(i).label)),
       anchor(i, out) {
         const e = i < listed() ? null : entry(i);
@@ -205,9 +215,13 @@ export function mountDeclared(demo, initialState, ctx) {
         if (i < listed()) return list.move(i, x, y);
         const e = entry(i);
         if (e.accept && !e.accept(work, x, y)) return;
-        const p = point(e);
-        p[0] = x;
-        p[1] = y;
+        if (e.place) {
+          e.place(work, x, y);
+        } else {
+          const p = point(e);
+          p[0] = x;
+          p[1] = y;
+        }
         markChanged(e.field);
       },
     };
