@@ -192,8 +192,7 @@ export class SystemTable {
         cell.classList.toggle("sl-highlight", Boolean(o.marked?.(i, j)));
       });
       setText(row.name, o.unknown(i));
-      const solution = o.solution(i);
-      setText(row.solution ?? row.value, solution);
+      setText(row.solution ?? row.value, o.solution(i)); // its own column, or under the unknown
       setText(row.rhs, o.rhs(i));
     }
   }
