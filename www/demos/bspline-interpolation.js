@@ -30,7 +30,7 @@ import {
 } from "../lib/panel.js";
 import { degreeButtons } from "../lib/degree-buttons.js";
 import { knotVectorReadout, knotListText } from "../lib/knot-readout.js";
-import { subscript, degreeName, simpleFraction, fractionTex } from "../lib/format.js";
+import { subscript, degreeName, simpleFraction, fractionTex, exactText } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -39,7 +39,7 @@ import { flatPath } from "../lib/draw.js";
 import { vectorTip, vectorArrow, tipOf } from "../lib/vector-handle.js";
 import { NARROW_CANVAS_PX, scaledInsets } from "../lib/view.js";
 import { drawCornerLegend } from "../lib/legend.js";
-import { SystemTable, exactText } from "../lib/solved-system-table.js";
+import { SystemTable, pointText } from "../lib/system-table.js";
 
 export const id = "bspline-interpolation";
 export const strings = "bsplineInterpolation";
@@ -471,25 +471,30 @@ export function label(s, d) {
 
 /** The solved system as a table (lib/system-table.js): each row named by its condition. */
 export function setup(ui) {
-  const table = new SystemTable(ui, "interpolation-system", {
-    maxSize: TABLE_MAX_UNKNOWNS,
-    unknown: controlLabel,
+  const table = new SystemTable("interpolation-system", {
     headers: {
-      condition: t("bsplineInterpolation.col.condition"),
+      label: t("bsplineInterpolation.col.condition"),
       unknown: t("bsplineInterpolation.col.unknown"),
       rhs: t("bsplineInterpolation.col.rhs"),
       solution: t("bsplineInterpolation.col.solution"),
     },
   });
+  ui.ctx.slots.details.append(...table.nodes);
   return {
     update(s, d) {
-      const { size, rows } = d.system;
+      const { size, matrix, rhs, solution, rows } = d.system;
       const key = d.notes ? "tableCaptionNotes" : "tableCaption";
-      table.show(d.system, {
-        dim: 2,
-        caption: t(`bsplineInterpolation.${key}`, { size }),
+      table.show({
+        size,
+        maxSize: TABLE_MAX_UNKNOWNS,
         tooLarge: t("bsplineInterpolation.tableTooLarge", { size, max: TABLE_MAX_UNKNOWNS }),
-        name: (i) => conditionText(i, d),
+        caption: t(`bsplineInterpolation.${key}`, { size }),
+        number: exactText,
+        entry: (i, j) => matrix[i * size + j],
+        unknown: controlLabel,
+        rhs: (i) => pointText(rhs, i, 2),
+        solution: (i) => `${controlLabel(i)} = ${pointText(solution, i, 2)}`,
+        label: (i) => conditionText(i, d),
         kind: (i) => rows[i],
       });
     },

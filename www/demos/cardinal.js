@@ -14,7 +14,16 @@
  * Croatian notes' matrix form P(t) = [t³ t² t 1] M [P_{i−1} P_i P_{i+1} P_{i+2}]ᵀ.
  */
 import { field } from "../lib/validate.js";
-import { slider, checkbox, choice, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
+import {
+  slider,
+  checkbox,
+  choice,
+  pointButtons,
+  readout,
+  group,
+  shownWhen,
+  INTEGER_SLIDER,
+} from "../lib/panel.js";
 import { el, setText } from "../lib/controls.js";
 import { fmt, subscript, shortNumber, fractionOrDecimals } from "../lib/format.js";
 import { HUES, themed } from "../lib/theme.js";
@@ -154,8 +163,6 @@ export const compute = {
 /** Whether the drawn curve is itself the notes' uniform one (cardinal with t_i = i, or α = 0). */
 const isUniform = (s) => !isRom(s) || s.alpha === 0;
 
-const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
-
 export const controls = [
   group(
     "cardinal.control.modeLegend",
@@ -175,7 +182,7 @@ export const controls = [
     slider("segment", {
       label: "cardinal.control.segment",
       range: (s) => [0, segmentCount(s) - 1],
-      ...INTEGER,
+      ...INTEGER_SLIDER,
     }),
     readout("loop", (s, d) => loopNote(s, d), {
       live: true,

@@ -462,8 +462,15 @@ export function label(s, d) {
 export function setup(ui) {
   ui.ctx.slots.figure.classList.add("sl-figure-tall");
   ui.data.view = ui.view; // the legend's labels are measured with its renderer (insets)
-  const table = new SystemTable("cubic-system", "cubicSpline.");
-  ui.ctx.slots.details.append(table.title, table.wrap);
+  const table = new SystemTable("cubic-system", {
+    headers: {
+      label: t("cubicSpline.systemEquation"),
+      unknown: t("cubicSpline.systemUnknown"),
+      rhs: t("cubicSpline.systemRhs"),
+    },
+    wrapLabels: true,
+  });
+  ui.ctx.slots.details.append(...table.nodes);
   let lecture = ui.view.lecture;
   const fill = (s, d) =>
     showSplineSystem(table, d.main, {

@@ -13,7 +13,15 @@
  * the core's `hermiteBasis(u)`, the curve the core's samples.
  */
 import { field, checkNumber } from "../lib/validate.js";
-import { slider, checkbox, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
+import {
+  slider,
+  checkbox,
+  pointButtons,
+  readout,
+  group,
+  shownWhen,
+  INTEGER_SLIDER,
+} from "../lib/panel.js";
 import { pointLabel, placeLabelAtTip, placeLabelBeside } from "../lib/handles.js";
 import { vectorTips, selectedVectorBox } from "../lib/vector-tips.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
@@ -164,8 +172,6 @@ export const compute = {
   ],
 };
 
-const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
-
 export const controls = [
   group(
     null,
@@ -207,7 +213,7 @@ export const controls = [
       slider("joint", {
         label: "hermite.control.joint",
         range: (s) => [1, Math.max(1, lastIndex(s) - 1)],
-        ...INTEGER,
+        ...INTEGER_SLIDER,
       }),
     ),
     shownWhen(

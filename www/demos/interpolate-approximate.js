@@ -13,7 +13,15 @@
  * global (every control point depends on every data point), so a drag re-solves once per frame.
  */
 import { field, checkNumber } from "../lib/validate.js";
-import { choice, slider, pointButtons, readout, group, shownWhen } from "../lib/panel.js";
+import {
+  choice,
+  slider,
+  pointButtons,
+  readout,
+  group,
+  shownWhen,
+  INTEGER_SLIDER,
+} from "../lib/panel.js";
 import { degreeButtons } from "../lib/degree-buttons.js";
 import { fmt, subscript, degreeName } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
@@ -159,8 +167,6 @@ function fitNote(s, d) {
   });
 }
 
-const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
-
 export const controls = [
   group(
     "interpolateApproximate.roleLegend",
@@ -184,7 +190,7 @@ export const controls = [
       slider("count", {
         label: "interpolateApproximate.control.count",
         range: (s) => [s.degree + 1, s.points.length],
-        ...INTEGER,
+        ...INTEGER_SLIDER,
         error: (value, s) =>
           t("interpolateApproximate.countRange", {
             value,

@@ -14,7 +14,7 @@
  * under the figure (lib/param-strip.js). Drags go through `setControlPoint`.
  */
 import { field, checkNumber } from "../lib/validate.js";
-import { slider, readout, pointButtons, group } from "../lib/panel.js";
+import { slider, readout, pointButtons, group, INTEGER_SLIDER } from "../lib/panel.js";
 import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { knotText } from "../lib/knot-ruler.js";
 import { placeLabel } from "../lib/handles.js";
@@ -164,7 +164,6 @@ export const compute = {
 };
 
 /** An integer slider: whole numbers in the box and in the state. */
-const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
 
 const names = (indices) => indices.map((i) => `P${subscript(i)}`).join(", ");
 
@@ -199,7 +198,7 @@ export const controls = [
     slider("point", {
       label: "localControl.control.point",
       range: (s) => [0, s.points.length - 1],
-      ...INTEGER,
+      ...INTEGER_SLIDER,
     }),
     readout(
       "support",
@@ -222,7 +221,7 @@ export const controls = [
       label: "localControl.control.degree",
       min: MIN_DEGREE,
       max: MAX_DEGREE,
-      ...INTEGER,
+      ...INTEGER_SLIDER,
       onRelease: true,
       refuse: (p, s) => (s.points.length < p + 1 ? tooFewPoints(p, s.points.length) : null),
     }),

@@ -9,7 +9,7 @@
  * product) and as `evaluate(u)`, so students see they agree. The curve is drawn from the core.
  */
 import { field, checkNumber } from "../lib/validate.js";
-import { slider, choice, pointButtons, readout, group } from "../lib/panel.js";
+import { slider, choice, pointButtons, readout, group, INTEGER_SLIDER } from "../lib/panel.js";
 import { placeLabel } from "../lib/handles.js";
 import { CurvePicker } from "../lib/curve-picker.js";
 import {
@@ -149,8 +149,6 @@ function numberText(x, tex = false) {
 }
 const numberTex = (x) => numberText(x, true);
 
-const INTEGER = Object.freeze({ step: 1, format: (v) => String(Math.round(v)), round: Math.round });
-
 export const controls = [
   group(
     "matrixForm.control.degree",
@@ -170,7 +168,7 @@ export const controls = [
     slider("segment", {
       label: "matrixForm.control.segment",
       range: (s) => [1, segmentCount(s)],
-      ...INTEGER,
+      ...INTEGER_SLIDER,
       error: (value, s) => t("matrixForm.segmentRange", { value, max: segmentCount(s) }),
     }),
     slider("t", {

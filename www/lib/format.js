@@ -141,6 +141,20 @@ export function fractionOrDecimals(x, tex = false) {
   return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
 }
 
+/** Below this size a non-zero number would read "0.000" in 3 decimals: 2 significant digits. */
+const SMALL = 5e-4;
+
+/**
+ * A number as text for a table of exact values (a solved system): 0 within 1e-12 (round-off),
+ * integers plain, simple fractions ("1/2", "−3/4"), else 3 decimals (2 significant digits for
+ * small non-zero values, "0.00031", so they do not read as 0); a true minus sign.
+ */
+export function exactText(x) {
+  if (Math.abs(x) < 1e-12) return "0";
+  const text = Math.abs(x) < SMALL ? x.toPrecision(2) : fractionOrDecimals(x);
+  return text.replace("-", "−");
+}
+
 /**
  * The binomial coefficient C(n, i) = n! / (i! (n − i)!), as the product Π_{k=1}^{i} (n − i + k) / k
  * rounded to the integer: for writing a formula out (Bernstein's B_i^n), never for evaluating a

@@ -27,6 +27,13 @@ function fragment(...nodes) {
   return f;
 }
 
+/** A slider's options for a whole-number field (a count, a degree): steps of 1, written and kept as integers. */
+export const INTEGER_SLIDER = Object.freeze({
+  step: 1,
+  format: (v) => String(Math.round(v)),
+  round: Math.round,
+});
+
 /**
  * A slider with a typed-value box (decimals or fractions) bound to a number field.
  * @param {string} field

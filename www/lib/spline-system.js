@@ -21,6 +21,7 @@
  */
 import { fmt, shortNumber, subscript } from "./format.js";
 import { t } from "./strings.js";
+import { pointText } from "./system-table.js";
 
 /** Δ's written out at most this many; more are elided in the middle. */
 const MAX_DELTAS = 8;
@@ -176,7 +177,7 @@ export function showSplineSystem(table, { end, system, params }, { lecture, para
   const size = system.diagonal.length;
   const maxShown = lecture ? MAX_SHOWN_LECTURE : MAX_SHOWN;
   const number = lecture ? lectureNumber : shortNumber;
-  const vector = (flat, i) => `(${number(flat[2 * i])}, ${number(flat[2 * i + 1])})`;
+  const hidden = size > maxShown ? size - maxShown + 1 : 0;
   table.table.dataset.end = end;
   table.show({
     size,
@@ -184,18 +185,17 @@ export function showSplineSystem(table, { end, system, params }, { lecture, para
     number,
     entry: (i, j) => systemEntry(system, size, i, j),
     unknown: (i) => `m${subscript(i)}`,
-    solution: (i) => (lecture ? "" : `= ${vector(system.solution, i)}`),
-    rhs: (i) => vector(system.rhs, i),
+    solution: (i) => (lecture ? "" : `= ${pointText(system.solution, i, 2, number)}`),
+    rhs: (i) => pointText(system.rhs, i, 2, number),
     label: (i) => rowLabel(end, i, size, params.length - 1),
     highlight: (i) => i === 0 || i === size - 1,
     // The corners of the cyclic system: a_{0,N−1} and a_{N−1,0}.
     marked: (i, j) => end === "periodic" && size > 2 && Math.abs(i - j) === size - 1,
-  });
-  const hidden = size > maxShown ? size - maxShown + 1 : 0;
-  table.title.textContent = t(`cubicSpline.tableCaption${end === "periodic" ? "Cyclic" : ""}`, {
-    size,
-    end: t(`cubicSpline.end.${end}`),
-    parametrization,
-    hidden: hidden ? t("cubicSpline.tableHidden", { count: hidden }) : "",
+    caption: t(`cubicSpline.tableCaption${end === "periodic" ? "Cyclic" : ""}`, {
+      size,
+      end: t(`cubicSpline.end.${end}`),
+      parametrization,
+      hidden: hidden ? t("cubicSpline.tableHidden", { count: hidden }) : "",
+    }),
   });
 }
