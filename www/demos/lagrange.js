@@ -279,7 +279,11 @@ const extensionStyles = themed((theme) =>
   [theme.helper].concat(theme.levelStroke.map((style) => ({ ...style, dash: HELPER_DASH }))),
 );
 const labels = new LevelLabels("p");
-const placer = new LegLabelPlacer();
+/** A level's label that cannot keep this far (px) from the points and other labels is left out. */
+const LABEL_CLEARANCE_PX = 16;
+const placer = new LegLabelPlacer(32, LABEL_CLEARANCE_PX);
+/** Where P(t)'s label goes: chosen before the levels' labels (they keep clear of it), drawn last. */
+const apexLabel = new Float64Array(4);
 const centre = new Float64Array(2);
 
 /** Data polygon, spline, polynomial, the triangle at t, handles, P(t) and S(t), key, plot. */
@@ -297,6 +301,9 @@ export function draw(r, v, s, d) {
   screenCentroid(v, s.points, centre);
   placer.reset();
   placer.points = s.points;
+  const radius = theme.pointOnCurve.radius * r.scale;
+  placer.choose(r, v, d.triangle, n, n, 0, centre, radius, s.points);
+  apexLabel.set(placer.chosen);
   if (s.construction) {
     drawExtensions(r, v, d.triangle, fitIn(d).params, s.t, n);
     // On a phone the labels crowd: the table names every point.
@@ -310,9 +317,7 @@ export function draw(r, v, s, d) {
   r.point(sx, sy, theme.comparePoint[1]);
   const apex = 2 * levelStart(n, n);
   r.point(v.sx(d.triangle[apex]), v.sy(d.triangle[apex + 1]), theme.pointOnCurve);
-  const radius = theme.pointOnCurve.radius * r.scale;
-  const text = t("lagrange.pointLabel");
-  placer.place(r, v, d.triangle, n, n, 0, text, centre, theme.labelPoint, radius, s.points);
+  placer.draw(r, t("lagrange.pointLabel"), theme.labelPoint, radius, apexLabel);
   // The key's band (the figure's top inset) covers whatever runs into it: a wild polynomial.
   r.beginPath();
   r.rect(0, 0, r.width, LEGEND_BAND * r.scale);

@@ -160,13 +160,21 @@ const LABEL_PROBE_PX = 14;
  * directions (the leg's two normals and the four diagonals between normal and leg), the one
  * whose label centre keeps farthest from the other triangle points, the control points and the
  * labels already placed in this frame wins, the normals slightly preferred; the side away from
- * `centre` breaks ties. `reset()` at the start of each frame; nothing is allocated per label.
+ * `centre` breaks ties. With `minClearance` (CSS px at text scale 1), a label whose best place
+ * comes nearer than that to any of them is left out (a table names every point). `reset()` at
+ * the start of each frame; nothing is allocated per label.
  */
 export class LegLabelPlacer {
-  /** @param {number} capacity most labels remembered per frame. */
-  constructor(capacity = 32) {
+  /**
+   * @param {number} capacity most labels remembered per frame.
+   * @param {number} minClearance labels that cannot keep this far (px) are left out; 0: none.
+   */
+  constructor(capacity = 32, minClearance = 0) {
     this.placed = new Float64Array(2 * capacity);
     this.count = 0;
+    this.minClearance = minClearance;
+    /** The last `choose`: the direction [dx, dy] (unit, canvas px) and the point [x, y]. */
+    this.chosen = new Float64Array(4);
   }
 
   reset() {
@@ -175,9 +183,21 @@ export class LegLabelPlacer {
 
   /**
    * Labels point j of level `level` (≥ 1) of a triangle whose level 0 has n + 1 points, keeping
-   * clear of `points` ([[x, y], …] world) too.
+   * clear of `points` ([[x, y], …] world) too; left out (false) when it cannot keep
+   * `minClearance` clear.
    */
   place(r, v, triangle, n, level, j, text, centre, style, radius, points) {
+    if (!this.choose(r, v, triangle, n, level, j, centre, radius, points, false)) return false;
+    this.draw(r, text, style, radius);
+    return true;
+  }
+
+  /**
+   * Picks the place of point j's label and remembers it, without drawing it (`draw` draws the
+   * last choice): reserve a label that must be drawn later (on top) before the others are placed.
+   * `always` ignores `minClearance`. False when the label is left out.
+   */
+  choose(r, v, triangle, n, level, j, centre, radius, points, always = true) {
     const self = levelStart(n, level) + j;
     legNormal(v, triangle, n, level, j, centre, normal);
     const nx = normal[0];
@@ -191,35 +211,51 @@ export class LegLabelPlacer {
     let bestX = nx;
     let bestY = ny;
     let bestScore = -Infinity;
+    let bestClearance = 0;
     for (let c = 0; c < LABEL_DIRECTIONS.length; c += 3) {
       const dx = LABEL_DIRECTIONS[c] * nx + LABEL_DIRECTIONS[c + 1] * lx;
       const dy = LABEL_DIRECTIONS[c] * ny + LABEL_DIRECTIONS[c + 1] * ly;
       const qx = x + dx * reach;
       const qy = y + dy * reach;
-      let score = Infinity;
+      let clearance = Infinity;
       for (let k = 0; k < all; k++) {
         if (k !== self)
-          score = Math.min(
-            score,
+          clearance = Math.min(
+            clearance,
             Math.hypot(v.sx(triangle[2 * k]) - qx, v.sy(triangle[2 * k + 1]) - qy),
           );
       }
       for (const [px, py] of points)
-        score = Math.min(score, Math.hypot(v.sx(px) - qx, v.sy(py) - qy));
+        clearance = Math.min(clearance, Math.hypot(v.sx(px) - qx, v.sy(py) - qy));
       for (let k = 0; k < this.count; k++)
-        score = Math.min(score, Math.hypot(this.placed[2 * k] - qx, this.placed[2 * k + 1] - qy));
-      score += LABEL_DIRECTIONS[c + 2] * r.scale;
+        clearance = Math.min(
+          clearance,
+          Math.hypot(this.placed[2 * k] - qx, this.placed[2 * k + 1] - qy),
+        );
+      const score = clearance + LABEL_DIRECTIONS[c + 2] * r.scale;
       if (score > bestScore) {
         bestScore = score;
+        bestClearance = clearance;
         bestX = dx;
         bestY = dy;
       }
     }
+    if (!always && bestClearance < this.minClearance * r.scale) return false;
     if (this.count < this.placed.length / 2) {
       this.placed[2 * this.count] = x + bestX * reach;
       this.placed[2 * this.count + 1] = y + bestY * reach;
       this.count += 1;
     }
-    placeLabel(r, text, x, y, bestX, bestY, radius, style);
+    const chosen = this.chosen;
+    chosen[0] = bestX;
+    chosen[1] = bestY;
+    chosen[2] = x;
+    chosen[3] = y;
+    return true;
+  }
+
+  /** Draws `text` at the last `choose`, or at a copy of an earlier one (`chosen`). */
+  draw(r, text, style, radius, chosen = this.chosen) {
+    placeLabel(r, text, chosen[2], chosen[3], chosen[0], chosen[1], radius, style);
   }
 }
