@@ -278,7 +278,28 @@ impl Setup {
         let derivatives = usize::from(options.start_derivative.is_some())
             + usize::from(options.end_derivative.is_some());
         check_data(points, degree, derivatives, options.closed)?;
-        check_params(params, points.len())?;
+        let flat_vector = |d: &Option<C>| d.map(|v| flatten(&[v]));
+        let options = InterpolationOptions {
+            knots: options.knots.clone(),
+            start_derivative: flat_vector(&options.start_derivative),
+            end_derivative: flat_vector(&options.end_derivative),
+            closed: options.closed,
+        };
+        Setup::new_flat(&flatten(points), C::DIM, degree, params, &options)
+    }
+
+    /// [`Setup::new`] after [`check_data`], on flat coordinates of dimension `dim` (the
+    /// derivatives `dim` numbers each): written once for every dimension.
+    #[inline(never)]
+    fn new_flat(
+        coords: &[f64],
+        dim: usize,
+        degree: usize,
+        params: &[f64],
+        options: &InterpolationOptions<Vec<f64>>,
+    ) -> Result<Self> {
+        let count = coords.len() / dim;
+        check_params(params, count)?;
         if options.closed {
             if let Some((first, reason)) = conflict_with_closed(options) {
                 return Err(Error::ConflictingOptions {
@@ -287,42 +308,42 @@ impl Setup {
                     reason,
                 });
             }
-            return closed::setup(points, degree, params);
+            return closed::setup(coords, dim, degree, params);
         }
         for (name, d) in [
             ("startDerivative", &options.start_derivative),
             ("endDerivative", &options.end_derivative),
         ] {
             if let Some(d) = d {
-                for k in 0..C::DIM {
-                    check_finite(|| format!("{name} coordinate {k}"), d.coord(k))?;
+                for (k, &v) in d.iter().enumerate() {
+                    check_finite(|| format!("{name} coordinate {k}"), v)?;
                 }
             }
         }
-        let (start, end) = (options.start_derivative, options.end_derivative);
-        let size = points.len() + derivatives;
+        let (start, end) = (&options.start_derivative, &options.end_derivative);
+        let size = count + usize::from(start.is_some()) + usize::from(end.is_some());
         let knots = match &options.knots {
             Some(k) => k.clone(),
             None => knots::averaging_knots(params, degree, start.is_some(), end.is_some()),
         };
         let knots = KnotVector::new(knots, degree, size)?;
         check_params_in_domain(params, &knots)?;
-        let n = points.len() - 1;
+        let n = count - 1;
         let mut sites: Vec<(f64, RowKind)> = Vec::with_capacity(size);
-        let mut values: Vec<C> = Vec::with_capacity(size);
-        for (i, (&t, &p)) in params.iter().zip(points).enumerate() {
+        let mut rhs: Vec<f64> = Vec::with_capacity(size * dim);
+        for (i, (&t, p)) in params.iter().zip(coords.chunks_exact(dim)).enumerate() {
             if i == n {
                 if let Some(d) = end {
                     sites.push((t, RowKind::EndDerivative));
-                    values.push(d);
+                    rhs.extend_from_slice(d);
                 }
             }
             sites.push((t, RowKind::Point));
-            values.push(p);
+            rhs.extend_from_slice(p);
             if i == 0 {
                 if let Some(d) = start {
                     sites.push((t, RowKind::StartDerivative));
-                    values.push(d);
+                    rhs.extend_from_slice(d);
                 }
             }
         }
@@ -336,8 +357,8 @@ impl Setup {
         Ok(Setup {
             knots,
             rows,
-            rhs: flatten(&values),
-            dim: C::DIM,
+            rhs,
+            dim,
         })
     }
 

@@ -168,7 +168,8 @@ pub fn interpolate_bspline(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
+    params: JsValue,
     #[wasm_bindgen(
         unchecked_optional_param_type = "{ knots?: Float64Array | number[]; startDerivative?: Float64Array | number[]; endDerivative?: Float64Array | number[]; closed?: boolean }"
     )]
@@ -207,7 +208,8 @@ pub fn approximate_bspline(
     dim: f64,
     degree: f64,
     count: f64,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
+    params: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "{ knots?: Float64Array | number[] }")]
     options: JsValue,
 ) -> Result<JsBSplineCurve, JsError> {
@@ -270,7 +272,8 @@ pub fn bspline_interpolation_system(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
+    params: JsValue,
     #[wasm_bindgen(
         unchecked_optional_param_type = "{ knots?: Float64Array | number[]; startDerivative?: Float64Array | number[]; endDerivative?: Float64Array | number[]; closed?: boolean }"
     )]
