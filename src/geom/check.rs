@@ -39,6 +39,7 @@ pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
 
 /// Splits a flat coordinate array into points of dimension `P::DIM`, validating count and
 /// finiteness ("coordinate 5 is NaN").
+#[inline(never)]
 pub fn points_from_flat<P: Point>(coords: &[f64]) -> Result<Vec<P>> {
     if !coords.len().is_multiple_of(P::DIM) {
         return Err(Error::CoordinateCount {

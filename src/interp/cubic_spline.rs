@@ -95,6 +95,7 @@ struct Data<C> {
 
 /// The checks every constructor starts with, in order: at least `min` points, then the
 /// parameters (given ones checked, or a spacing computed).
+#[inline(never)]
 fn data<C: Cartesian>(
     points: Vec<C>,
     choice: ParamChoice,
@@ -112,6 +113,7 @@ fn data<C: Cartesian>(
 
 impl<C: Cartesian> CubicSpline<C> {
     /// Finds the tangents by `rule` (`given` for [`TangentRule::Given`]) and builds the spline.
+    #[inline(never)]
     fn build(data: Data<C>, rule: TangentRule<C>, closed: bool, given: Vec<C>) -> Result<Self> {
         let Data {
             points,
@@ -333,6 +335,7 @@ impl<C: Cartesian> CubicSpline<C> {
 }
 
 /// Checks every coordinate of a vector argument is finite ("startTangent 1 is NaN").
+#[inline(never)]
 fn check_vector<P: Point>(name: &'static str, v: P) -> Result<()> {
     for k in 0..P::DIM {
         check_finite(|| format!("{name} {k}"), v.coord(k))?;

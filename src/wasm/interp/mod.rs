@@ -29,6 +29,7 @@ enum ParamArg {
 
 impl ParamArg {
     /// Reads the argument: a string, a number, else an array of numbers (error naming `params`).
+    #[inline(never)]
     fn read(value: &JsValue) -> Result<Self, JsError> {
         if let Some(s) = value.as_string() {
             Ok(ParamArg::Kind(s))
@@ -51,6 +52,7 @@ impl ParamArg {
     }
 
     /// The parameter choice (errors for an unknown kind or α outside [0, 1]).
+    #[inline(never)]
     fn choice(self) -> Result<ParamChoice, Error> {
         Ok(match self {
             ParamArg::Values(v) => ParamChoice::Given(v),
