@@ -39,6 +39,15 @@ pub fn approximate_bspline<C: Cartesian>(
     check_fit_data(points, degree)?;
     let coords = super::global::flatten(points);
     let (control, knots) = approximate_flat(&coords, C::DIM, degree, count, params, knots)?;
+    curve_from(&control, degree, knots)
+}
+
+/// The B-spline with the flat control points `control` (dimension `C::DIM`).
+pub(crate) fn curve_from<C: Cartesian>(
+    control: &[f64],
+    degree: usize,
+    knots: Vec<f64>,
+) -> Result<BSplineCurve<C>> {
     let control = control.chunks_exact(C::DIM).map(C::from_slice).collect();
     BSplineCurve::new(control, degree, knots, None)
 }
@@ -46,7 +55,7 @@ pub fn approximate_bspline<C: Cartesian>(
 /// [`approximate_bspline`] on flat coordinates of dimension `dim` (after [`check_fit_data`]),
 /// written once for every dimension: the control points (flat) and the knots.
 #[inline(never)]
-fn approximate_flat(
+pub(crate) fn approximate_flat(
     coords: &[f64],
     dim: usize,
     degree: usize,
@@ -133,13 +142,18 @@ fn approximate_flat(
 /// of points (at most [`super::MAX_INTERPOLATION_POINTS`], at least `max(2, p + 1)`).
 pub(crate) fn check_fit_data<C: Cartesian>(points: &[C], degree: usize) -> Result<()> {
     check_points(points)?;
+    check_fit_shape(points.len(), degree)
+}
+
+/// [`check_fit_data`] after the coordinates: the degree, then the number of points `count`.
+pub(crate) fn check_fit_shape(count: usize, degree: usize) -> Result<()> {
     check_interpolation_degree(degree)?;
-    check_point_cap(points.len())?;
+    check_point_cap(count)?;
     let needed = 2.max(degree + 1);
-    if points.len() < needed {
+    if count < needed {
         return Err(Error::TooFewDataPoints {
             needed,
-            got: points.len(),
+            got: count,
             what: "a least-squares B-spline of this degree (p + 1, at least 2)",
         });
     }

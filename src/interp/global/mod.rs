@@ -132,23 +132,14 @@ pub fn interpolation_system<C: Cartesian>(
     params: &[f64],
     options: &InterpolationOptions<C>,
 ) -> Result<InterpolationSystem<C>> {
-    let setup = Setup::new(points, degree, params, options)?;
-    let size = setup.rows.size;
-    if size > MAX_SYSTEM_SIZE {
-        return Err(Error::TooLarge {
-            what: "the interpolation system's size (unknowns)",
-            value: size,
-            max: MAX_SYSTEM_SIZE,
-        });
-    }
-    let solution = setup.solve()?;
+    let s = Setup::new(points, degree, params, options)?.system()?;
     Ok(InterpolationSystem {
-        size,
-        matrix: setup.rows.dense(),
-        rhs: setup.rhs.chunks(C::DIM).map(C::from_slice).collect(),
-        solution: solution.chunks(C::DIM).map(C::from_slice).collect(),
-        knots: setup.knots.as_slice().to_vec(),
-        rows: setup.rows.kinds.clone(),
+        size: s.size,
+        matrix: s.matrix,
+        rhs: s.rhs.chunks(C::DIM).map(C::from_slice).collect(),
+        solution: s.solution.chunks(C::DIM).map(C::from_slice).collect(),
+        knots: s.knots,
+        rows: s.rows,
     })
 }
 
@@ -162,8 +153,18 @@ pub(crate) fn check_data<C: Cartesian>(
     closed: bool,
 ) -> Result<()> {
     check_points(points)?;
+    check_data_shape(points.len(), degree, derivatives, closed)
+}
+
+/// [`check_data`] after the coordinates: the degree, then the number of points `count`.
+pub(crate) fn check_data_shape(
+    count: usize,
+    degree: usize,
+    derivatives: usize,
+    closed: bool,
+) -> Result<()> {
     check_interpolation_degree(degree)?;
-    check_point_cap(points.len())?;
+    check_point_cap(count)?;
     let (needed, what) = if closed {
         (
             3.max(degree + 1),
@@ -175,10 +176,10 @@ pub(crate) fn check_data<C: Cartesian>(
             "an interpolating B-spline of this degree (p + 1 − end derivatives, at least 2)",
         )
     };
-    if points.len() < needed {
+    if count < needed {
         return Err(Error::TooFewDataPoints {
             needed,
-            got: points.len(),
+            got: count,
             what,
         });
     }
@@ -261,7 +262,7 @@ fn conflict_with_closed<C>(
 }
 
 /// A validated interpolation problem: knots, rows and right sides.
-struct Setup {
+pub(crate) struct Setup {
     knots: KnotVector,
     rows: Collocation,
     rhs: Vec<f64>,
@@ -291,7 +292,7 @@ impl Setup {
     /// [`Setup::new`] after [`check_data`], on flat coordinates of dimension `dim` (the
     /// derivatives `dim` numbers each): written once for every dimension.
     #[inline(never)]
-    fn new_flat(
+    pub(crate) fn new_flat(
         coords: &[f64],
         dim: usize,
         degree: usize,
@@ -362,15 +363,38 @@ impl Setup {
         })
     }
 
+    /// The system solved and written out dense, right sides and solution flat
+    /// ([`Error::TooLarge`] above [`MAX_SYSTEM_SIZE`] unknowns).
+    #[inline(never)]
+    pub(crate) fn system(&self) -> Result<InterpolationSystem<f64>> {
+        let size = self.rows.size;
+        if size > MAX_SYSTEM_SIZE {
+            return Err(Error::TooLarge {
+                what: "the interpolation system's size (unknowns)",
+                value: size,
+                max: MAX_SYSTEM_SIZE,
+            });
+        }
+        let solution = self.solve()?;
+        Ok(InterpolationSystem {
+            size,
+            matrix: self.rows.dense(),
+            rhs: self.rhs.clone(),
+            solution,
+            knots: self.knots.as_slice().to_vec(),
+            rows: self.rows.kinds.clone(),
+        })
+    }
+
     /// The control points (the distinct ones for a closed curve), flat.
-    fn solve(&self) -> Result<Vec<f64>> {
+    pub(crate) fn solve(&self) -> Result<Vec<f64>> {
         let mut x = self.rhs.clone();
         self.rows.solve(&mut x, self.dim, WHAT)?;
         Ok(x)
     }
 
     /// The curve with the solved control points (wrapped for a closed curve).
-    fn curve<C: Cartesian>(&self, solution: &[f64]) -> Result<BSplineCurve<C>> {
+    pub(crate) fn curve<C: Cartesian>(&self, solution: &[f64]) -> Result<BSplineCurve<C>> {
         let distinct: Vec<C> = solution.chunks(C::DIM).map(C::from_slice).collect();
         let p = self.rows.degree;
         let knots = self.knots.as_slice().to_vec();

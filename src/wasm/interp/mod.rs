@@ -52,6 +52,19 @@ impl ParamArg {
         .resolve(points)
     }
 
+    /// [`ParamArg::resolve`] for the flat points `coords` of dimension `dim`: given values
+    /// checked against the point count, a spacing computed from the points (in 3D, z = 0 for
+    /// 2D: the same distances).
+    fn resolve_flat(&self, coords: &[f64], dim: usize) -> Result<Vec<f64>, Error> {
+        match self {
+            ParamArg::Values(v) => {
+                crate::interp::check_params(v, coords.len() / dim)?;
+                Ok(v.clone())
+            }
+            _ => self.resolve(&lift_points(coords, dim)?),
+        }
+    }
+
     /// The parameter choice (errors for an unknown kind or α outside [0, 1]).
     #[inline(never)]
     fn choice(self) -> Result<ParamChoice, Error> {
