@@ -13,11 +13,15 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
-/// The option names `interpolateBSpline` and `bsplineInterpolationSystem` accept.
-const INTERPOLATION_OPTIONS: &str = "\"knots\", \"startDerivative\", \"endDerivative\", \"closed\"";
+/// The option names `interpolateBSpline` and `bsplineInterpolationSystem` accept, and their
+/// list as the error message shows it.
+const INTERPOLATION_OPTIONS: (&[&str], &str) = (
+    &["knots", "startDerivative", "endDerivative", "closed"],
+    "\"knots\", \"startDerivative\", \"endDerivative\", \"closed\"",
+);
 
-/// The option names `approximateBSpline` accepts.
-const APPROXIMATION_OPTIONS: &str = "\"knots\"";
+/// The option names `approximateBSpline` accepts, and their list for the message.
+const APPROXIMATION_OPTIONS: (&[&str], &str) = (&["knots"], "\"knots\"");
 
 /// The options object as read from JavaScript, before the points are checked.
 #[derive(Default)]
@@ -30,9 +34,12 @@ struct RawOptions {
 
 impl RawOptions {
     /// Reads `options`: `undefined`/`null` give the defaults; otherwise a plain object whose
-    /// keys are among `allowed` ([`Error::UnknownOption`] naming the first other key), each
+    /// keys are among `allowed` (`listed` in the message) ([`Error::UnknownOption`] naming the first other key), each
     /// value of its type ([`Error::ArgumentType`]).
-    fn read(options: &JsValue, allowed: &'static str) -> Result<Self, JsError> {
+    fn read(
+        options: &JsValue,
+        (allowed, listed): (&[&str], &'static str),
+    ) -> Result<Self, JsError> {
         let mut out = RawOptions::default();
         if options.is_undefined() || options.is_null() {
             return Ok(out);
@@ -50,12 +57,11 @@ impl RawOptions {
         };
         for key in js_sys::Object::keys(object).iter() {
             let key = key.as_string().unwrap_or_default();
-            let quoted = format!("\"{key}\"");
-            if !allowed.split(", ").any(|k| k == quoted) {
+            if !allowed.contains(&key.as_str()) {
                 return Err(Error::UnknownOption {
                     name: "options",
                     value: key,
-                    expected: allowed,
+                    expected: listed,
                 }
                 .into());
             }
