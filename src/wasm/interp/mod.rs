@@ -119,10 +119,11 @@ fn lift_point(coords: &[f64], dim: usize) -> Result<DVec3, Error> {
 /// 3D points cut back to their first `dim` coordinates, flat.
 #[inline(never)]
 fn flat_points(points: &[DVec3], dim: usize) -> Vec<f64> {
-    points
-        .iter()
-        .flat_map(|p| p.to_array().into_iter().take(dim))
-        .collect()
+    let mut out = Vec::with_capacity(points.len() * dim);
+    for p in points {
+        out.extend_from_slice(p.to_array().get(..dim).unwrap_or_default());
+    }
+    out
 }
 
 /// Flat 3D coordinates cut back to their first `dim`, in place.
