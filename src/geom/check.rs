@@ -39,15 +39,22 @@ pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
 
 /// Splits a flat coordinate array into points of dimension `P::DIM`, validating count and
 /// finiteness ("coordinate 5 is NaN").
+#[inline(never)]
 pub fn points_from_flat<P: Point>(coords: &[f64]) -> Result<Vec<P>> {
-    if !coords.len().is_multiple_of(P::DIM) {
+    check_flat(coords, P::DIM)?;
+    Ok(coords.chunks_exact(P::DIM).map(P::from_slice).collect())
+}
+
+/// The checks of [`points_from_flat`] for points of dimension `dim` (≥ 1): the coordinate
+/// count a multiple of `dim`, every coordinate finite ("coordinate 5 is NaN").
+pub fn check_flat(coords: &[f64], dim: usize) -> Result<()> {
+    if !coords.len().is_multiple_of(dim) {
         return Err(Error::CoordinateCount {
             count: coords.len(),
-            dim: P::DIM,
+            dim,
         });
     }
-    check_all_finite(coords, "coordinate")?;
-    Ok(coords.chunks_exact(P::DIM).map(P::from_slice).collect())
+    check_all_finite(coords, "coordinate")
 }
 
 /// Checks every value of `values` is finite; the error names `"{what} {index}"`.

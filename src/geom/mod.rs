@@ -11,7 +11,9 @@ pub mod params;
 pub mod point;
 
 pub use bounding_box::BoundingBox;
-pub use check::{check_all_finite, check_dim, check_out_len, check_weights, points_from_flat};
+pub use check::{
+    check_all_finite, check_dim, check_flat, check_out_len, check_weights, points_from_flat,
+};
 pub use limits::{MAX_DEGREE, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 pub use params::Params;
 pub use point::{curvature, rational_derivative, Cartesian, Point};

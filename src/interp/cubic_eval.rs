@@ -119,18 +119,10 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// None in practice (the pieces are valid); the errors of [`CompositeCurve::new`].
     pub fn to_bezier(&self) -> Result<CompositeCurve<C>> {
-        let pieces = (0..self.piece_count())
-            .map(|i| {
-                let h = self.params[i + 1] - self.params[i];
-                let q = hermite_to_bezier(
-                    self.points[i],
-                    self.tangents[i],
-                    self.points[i + 1],
-                    self.tangents[i + 1],
-                    h,
-                );
-                BezierCurve::new(q.to_vec(), None)
-            })
+        let q = bezier_points(&self.points, &self.tangents, &self.params);
+        let pieces = q
+            .chunks_exact(4)
+            .map(|piece| BezierCurve::new(piece.to_vec(), None))
             .collect::<Result<Vec<_>>>()?;
         CompositeCurve::new(pieces, &self.params)
     }
@@ -147,58 +139,85 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// The errors of [`BSplineCurve::new`] (none for valid splines).
     pub fn to_bspline(&self) -> Result<BSplineCurve<C>> {
-        let n = self.piece_count();
-        let t = &self.params;
-        let inner = |i: usize| {
-            let h = t[i + 1] - t[i];
-            let [_, b1, b2, _] = hermite_to_bezier(
-                self.points[i],
-                self.tangents[i],
-                self.points[i + 1],
-                self.tangents[i + 1],
-                h,
-            );
-            (b1, b2)
-        };
-        let mut knots = vec![t[0]; 4];
-        let mut control = Vec::with_capacity(2 * n + 2);
-        control.push(self.points[0]);
-        if let TangentRule::Spline(_) = self.rule() {
-            knots.extend_from_slice(&t[1..n]);
-            let gap = |i: usize| {
-                if i < n {
-                    t[i + 1] - t[i]
-                } else {
-                    0.0
-                }
-            };
-            let mut leg_end = self.points[0];
-            for i in 0..n {
-                let (b1, b2) = inner(i);
-                let before = if i == 0 { 0.0 } else { gap(i - 1) };
-                let total = before + gap(i) + gap(i + 1);
-                let alpha = before / total;
-                let width = gap(i) / total;
-                let leg = (b2 - b1) * (1.0 / width);
-                let start = b1 - leg * alpha;
-                control.push(start);
-                leg_end = start + leg;
-            }
-            control.push(leg_end);
-        } else {
-            for &ti in &t[1..n] {
-                knots.extend_from_slice(&[ti, ti]);
-            }
-            for i in 0..n {
-                let (b1, b2) = inner(i);
-                control.push(b1);
-                control.push(b2);
-            }
-        }
-        control.push(self.points[n]);
-        knots.extend_from_slice(&[t[n]; 4]);
+        let c2 = matches!(self.rule(), TangentRule::Spline(_));
+        let (control, knots) = bspline_form(&self.points, &self.tangents, &self.params, c2);
         BSplineCurve::new(control, 3, knots, None)
     }
+}
+
+/// The Bézier points of every piece of the Hermite spline through `points` (at least 2) with
+/// `tangents` at `params`, four per piece: `[p_i, p_i + Δ_i m_i/3, p_{i+1} − Δ_i m_{i+1}/3,
+/// p_{i+1}]` ([`CubicSpline::to_bezier`]).
+pub(crate) fn bezier_points<C: Cartesian>(points: &[C], tangents: &[C], params: &[f64]) -> Vec<C> {
+    let n = points.len() - 1;
+    let mut out = Vec::with_capacity(4 * n);
+    for i in 0..n {
+        let h = params[i + 1] - params[i];
+        out.extend_from_slice(&hermite_to_bezier(
+            points[i],
+            tangents[i],
+            points[i + 1],
+            tangents[i + 1],
+            h,
+        ));
+    }
+    out
+}
+
+/// The control points and knots of [`CubicSpline::to_bspline`] for the Hermite spline through
+/// `points` with `tangents` at `params`; `c2`: single interior knots (a C2 spline), else
+/// double ones.
+pub(crate) fn bspline_form<C: Cartesian>(
+    points: &[C],
+    tangents: &[C],
+    t: &[f64],
+    c2: bool,
+) -> (Vec<C>, Vec<f64>) {
+    let n = points.len() - 1;
+    let inner = |i: usize| {
+        let h = t[i + 1] - t[i];
+        let [_, b1, b2, _] =
+            hermite_to_bezier(points[i], tangents[i], points[i + 1], tangents[i + 1], h);
+        (b1, b2)
+    };
+    let mut knots = vec![t[0]; 4];
+    let mut control = Vec::with_capacity(2 * n + 2);
+    control.push(points[0]);
+    if c2 {
+        knots.extend_from_slice(&t[1..n]);
+        let gap = |i: usize| {
+            if i < n {
+                t[i + 1] - t[i]
+            } else {
+                0.0
+            }
+        };
+        let mut leg_end = points[0];
+        for i in 0..n {
+            let (b1, b2) = inner(i);
+            let before = if i == 0 { 0.0 } else { gap(i - 1) };
+            let total = before + gap(i) + gap(i + 1);
+            let alpha = before / total;
+            let width = gap(i) / total;
+            let leg = (b2 - b1) * (1.0 / width);
+            let start = b1 - leg * alpha;
+            control.push(start);
+            leg_end = start + leg;
+        }
+        control.push(leg_end);
+    } else {
+        for &ti in &t[1..n] {
+            knots.extend_from_slice(&[ti, ti]);
+        }
+        for i in 0..n {
+            let (b1, b2) = inner(i);
+            control.push(b1);
+            control.push(b2);
+        }
+    }
+    control.push(points[n]);
+    knots.extend_from_slice(&[t[n]; 4]);
+    (control, knots)
 }
 
 impl<C: Cartesian> ParamCurve for CubicSpline<C> {

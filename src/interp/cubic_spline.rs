@@ -13,6 +13,7 @@ use crate::bspline::Parameterization;
 use crate::error::{check_finite, Error, Result};
 use crate::geom::check::check_point_edit;
 use crate::geom::{Cartesian, Point};
+use glam::DVec3;
 
 /// What the system of [`CubicSpline::system`] is called in [`Error::SingularSystem`].
 const SYSTEM_NAME: &str = "the cubic spline's tangent system";
@@ -70,11 +71,18 @@ fn tangents_by<C: Cartesian>(
     closed: bool,
     given: &[C],
 ) -> Result<(Vec<C>, Option<Tridiagonal<C>>)> {
+    let local = |rule: LocalRule| {
+        let lifted: Vec<DVec3> = points.iter().map(lift).collect();
+        let m = local_tangents(rule, &lifted, params, closed);
+        m.iter()
+            .map(|v| C::from_slice(&v.to_array()[..C::DIM]))
+            .collect()
+    };
     Ok(match rule {
         TangentRule::Given => (given.to_vec(), None),
-        TangentRule::Cardinal { tension } => (cardinal_tangents(points, params, *tension), None),
-        TangentRule::CatmullRom => (catmull_rom_tangents(points, params, closed), None),
-        TangentRule::Bessel => (bessel_tangents(points, params), None),
+        TangentRule::Cardinal { tension } => (local(LocalRule::Cardinal(*tension)), None),
+        TangentRule::CatmullRom => (local(LocalRule::CatmullRom), None),
+        TangentRule::Bessel => (local(LocalRule::Bessel), None),
         TangentRule::Spline(end) => {
             let system = spline_system(points, params, end);
             let mut m = system.solve(SYSTEM_NAME)?;
@@ -86,6 +94,32 @@ fn tangents_by<C: Cartesian>(
     })
 }
 
+/// The rules whose tangent `m_i` depends only on nearby points (no system to solve).
+#[derive(Clone, Copy)]
+enum LocalRule {
+    Cardinal(f64),
+    CatmullRom,
+    Bessel,
+}
+
+/// A point as a 3D one (z = 0 for a 2D point).
+fn lift<C: Cartesian>(p: &C) -> DVec3 {
+    let z = if C::DIM > 2 { p.coord(2) } else { 0.0 };
+    DVec3::new(p.coord(0), p.coord(1), z)
+}
+
+/// The tangents of a local rule, computed in 3D for both dimensions (each coordinate on its
+/// own, so a 2D spline's in the plane z = 0 are its own): one copy of the code. Not the drag
+/// path of a C2 spline, whose system stays in the spline's dimension.
+#[inline(never)]
+fn local_tangents(rule: LocalRule, points: &[DVec3], params: &[f64], closed: bool) -> Vec<DVec3> {
+    match rule {
+        LocalRule::Cardinal(tension) => cardinal_tangents(points, params, tension),
+        LocalRule::CatmullRom => catmull_rom_tangents(points, params, closed),
+        LocalRule::Bessel => bessel_tangents(points, params),
+    }
+}
+
 /// The data of a spline before its tangents: points, resolved parameters and their source.
 struct Data<C> {
     points: Vec<C>,
@@ -95,6 +129,7 @@ struct Data<C> {
 
 /// The checks every constructor starts with, in order: at least `min` points, then the
 /// parameters (given ones checked, or a spacing computed).
+#[inline(never)]
 fn data<C: Cartesian>(
     points: Vec<C>,
     choice: ParamChoice,
@@ -112,6 +147,7 @@ fn data<C: Cartesian>(
 
 impl<C: Cartesian> CubicSpline<C> {
     /// Finds the tangents by `rule` (`given` for [`TangentRule::Given`]) and builds the spline.
+    #[inline(never)]
     fn build(data: Data<C>, rule: TangentRule<C>, closed: bool, given: Vec<C>) -> Result<Self> {
         let Data {
             points,
@@ -333,6 +369,7 @@ impl<C: Cartesian> CubicSpline<C> {
 }
 
 /// Checks every coordinate of a vector argument is finite ("startTangent 1 is NaN").
+#[inline(never)]
 fn check_vector<P: Point>(name: &'static str, v: P) -> Result<()> {
     for k in 0..P::DIM {
         check_finite(|| format!("{name} {k}"), v.coord(k))?;

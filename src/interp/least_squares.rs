@@ -37,16 +37,43 @@ pub fn approximate_bspline<C: Cartesian>(
     knots: Option<&[f64]>,
 ) -> Result<BSplineCurve<C>> {
     check_fit_data(points, degree)?;
+    let coords = super::global::flatten(points);
+    let (control, knots) = approximate_flat(&coords, C::DIM, degree, count, params, knots)?;
+    curve_from(&control, degree, knots)
+}
+
+/// The B-spline with the flat control points `control` (dimension `C::DIM`).
+pub(crate) fn curve_from<C: Cartesian>(
+    control: &[f64],
+    degree: usize,
+    knots: Vec<f64>,
+) -> Result<BSplineCurve<C>> {
+    let control = control.chunks_exact(C::DIM).map(C::from_slice).collect();
+    BSplineCurve::new(control, degree, knots, None)
+}
+
+/// [`approximate_bspline`] on flat coordinates of dimension `dim` (after [`check_fit_data`]),
+/// written once for every dimension: the control points (flat) and the knots.
+#[inline(never)]
+pub(crate) fn approximate_flat(
+    coords: &[f64],
+    dim: usize,
+    degree: usize,
+    count: usize,
+    params: &[f64],
+    knots: Option<&[f64]>,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let points = coords.len() / dim;
     let p = degree;
-    check_params(params, points.len())?;
-    if count < p + 1 || count > points.len() {
+    check_params(params, points)?;
+    if count < p + 1 || count > points {
         return Err(Error::ControlCountOutOfRange {
             count,
             min: p + 1,
-            max: points.len(),
+            max: points,
         });
     }
-    let m = points.len() - 1;
+    let m = points - 1;
     let n = count - 1;
     let knots = match knots {
         Some(k) => {
@@ -57,30 +84,36 @@ pub fn approximate_bspline<C: Cartesian>(
         }
         None => KnotVector::new(least_squares_knots(params, p, count), p, count)?,
     };
-    let (first, last) = (points[0], points[m]);
-    let mut control = vec![C::ZERO; count];
-    control[0] = first;
-    control[n] = last;
+    let first = &coords[..dim];
+    let last = &coords[m * dim..];
+    let mut control = vec![0.0; count * dim];
+    control[..dim].copy_from_slice(first);
+    control[n * dim..].copy_from_slice(last);
     if n >= 2 {
         let unknowns = n - 1;
-        let dim = C::DIM;
         let mut normal = SymmetricBanded::new(unknowns, p);
         let mut rhs = vec![0.0; unknowns * dim];
         let mut basis = vec![0.0; p + 1];
         let mut scratch = BasisScratch::default();
         let mut span = p;
+        let mut r = [0.0; 3];
         for k in 1..m {
             let t = params[k];
             span = knots.span_from(t, span);
             basis_functions(knots.as_slice(), span, t, p, &mut basis, &mut scratch, None);
             let lo = span - p;
             // R_k = Q_k − N_0(t_k) Q_0 − N_n(t_k) Q_m.
-            let mut r = points[k];
+            let r = &mut r[..dim];
+            r.copy_from_slice(&coords[k * dim..(k + 1) * dim]);
             for (j, &b) in basis.iter().enumerate() {
                 if lo + j == 0 {
-                    r = r - first * b;
+                    for (rc, &q) in r.iter_mut().zip(first) {
+                        *rc -= q * b;
+                    }
                 } else if lo + j == n {
-                    r = r - last * b;
+                    for (rc, &q) in r.iter_mut().zip(last) {
+                        *rc -= q * b;
+                    }
                 }
             }
             for (a, &ba) in basis.iter().enumerate() {
@@ -88,8 +121,8 @@ pub fn approximate_bspline<C: Cartesian>(
                 if i == 0 || i == n || ba == 0.0 {
                     continue;
                 }
-                for c in 0..dim {
-                    rhs[(i - 1) * dim + c] += ba * r.coord(c);
+                for (c, &rc) in r.iter().enumerate() {
+                    rhs[(i - 1) * dim + c] += ba * rc;
                 }
                 for (b, &bb) in basis.iter().enumerate().skip(a) {
                     let j = lo + b;
@@ -100,24 +133,27 @@ pub fn approximate_bspline<C: Cartesian>(
             }
         }
         normal.solve_cholesky(&mut rhs, dim, "the least-squares normal equations")?;
-        for (i, chunk) in rhs.chunks(dim).enumerate() {
-            control[i + 1] = C::from_slice(chunk);
-        }
+        control[dim..n * dim].copy_from_slice(&rhs);
     }
-    BSplineCurve::new(control, p, knots.as_slice().to_vec(), None)
+    Ok((control, knots.as_slice().to_vec()))
 }
 
 /// The checks on the data before the parameters: finite coordinates, the degree, the number
 /// of points (at most [`super::MAX_INTERPOLATION_POINTS`], at least `max(2, p + 1)`).
 pub(crate) fn check_fit_data<C: Cartesian>(points: &[C], degree: usize) -> Result<()> {
     check_points(points)?;
+    check_fit_shape(points.len(), degree)
+}
+
+/// [`check_fit_data`] after the coordinates: the degree, then the number of points `count`.
+pub(crate) fn check_fit_shape(count: usize, degree: usize) -> Result<()> {
     check_interpolation_degree(degree)?;
-    check_point_cap(points.len())?;
+    check_point_cap(count)?;
     let needed = 2.max(degree + 1);
-    if points.len() < needed {
+    if count < needed {
         return Err(Error::TooFewDataPoints {
             needed,
-            got: points.len(),
+            got: count,
             what: "a least-squares B-spline of this degree (p + 1, at least 2)",
         });
     }

@@ -9,6 +9,8 @@
 //! length and continuity checks reuse them.
 
 mod cubic_eval;
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+pub(crate) use cubic_eval::{bezier_points, bspline_form};
 mod cubic_spline;
 mod end_conditions;
 mod hermite;

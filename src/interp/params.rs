@@ -41,6 +41,7 @@ impl ParamChoice {
     /// # Errors
     /// As [`check_params`], or [`Error::CoincidentPoints`] for a spacing with α > 0 and a
     /// repeated point.
+    #[inline(never)]
     pub fn resolve<P: Point>(&self, points: &[P]) -> Result<Vec<f64>> {
         match self {
             ParamChoice::Given(values) => {

@@ -7,18 +7,18 @@
 //! `N_{k−p,p}(t_i) … N_{k,p}(t_i)` in columns `(k − p) mod N … k mod N`), solved in O(N·p²).
 
 use super::system::{Collocation, RowKind};
-use super::{flatten, knots::periodic_knots, Setup};
+use super::{knots::periodic_knots, Setup};
 use crate::bspline::{BasisScratch, KnotVector};
 use crate::error::{Error, Result};
-use crate::geom::Cartesian;
 
-/// The periodic system for `points` (last = first) at `params`.
+/// The periodic system for the points `coords` (flat, dimension `dim`; last = first) at
+/// `params`.
 ///
 /// # Errors
 /// [`Error::NotClosed`] when the last point differs from the first.
-pub(super) fn setup<C: Cartesian>(points: &[C], degree: usize, params: &[f64]) -> Result<Setup> {
-    let n = points.len() - 1;
-    if points[n] != points[0] {
+pub(super) fn setup(coords: &[f64], dim: usize, degree: usize, params: &[f64]) -> Result<Setup> {
+    let n = coords.len() / dim - 1;
+    if coords[n * dim..] != coords[..dim] {
         return Err(Error::NotClosed { last: n });
     }
     let knots = KnotVector::new(periodic_knots(params, degree), degree, n + degree)?;
@@ -30,7 +30,7 @@ pub(super) fn setup<C: Cartesian>(points: &[C], degree: usize, params: &[f64]) -
     Ok(Setup {
         knots,
         rows,
-        rhs: flatten(&points[..n]),
-        dim: C::DIM,
+        rhs: coords[..n * dim].to_vec(),
+        dim,
     })
 }

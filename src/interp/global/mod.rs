@@ -132,23 +132,14 @@ pub fn interpolation_system<C: Cartesian>(
     params: &[f64],
     options: &InterpolationOptions<C>,
 ) -> Result<InterpolationSystem<C>> {
-    let setup = Setup::new(points, degree, params, options)?;
-    let size = setup.rows.size;
-    if size > MAX_SYSTEM_SIZE {
-        return Err(Error::TooLarge {
-            what: "the interpolation system's size (unknowns)",
-            value: size,
-            max: MAX_SYSTEM_SIZE,
-        });
-    }
-    let solution = setup.solve()?;
+    let s = Setup::new(points, degree, params, options)?.system()?;
     Ok(InterpolationSystem {
-        size,
-        matrix: setup.rows.dense(),
-        rhs: setup.rhs.chunks(C::DIM).map(C::from_slice).collect(),
-        solution: solution.chunks(C::DIM).map(C::from_slice).collect(),
-        knots: setup.knots.as_slice().to_vec(),
-        rows: setup.rows.kinds.clone(),
+        size: s.size,
+        matrix: s.matrix,
+        rhs: s.rhs.chunks(C::DIM).map(C::from_slice).collect(),
+        solution: s.solution.chunks(C::DIM).map(C::from_slice).collect(),
+        knots: s.knots,
+        rows: s.rows,
     })
 }
 
@@ -162,8 +153,18 @@ pub(crate) fn check_data<C: Cartesian>(
     closed: bool,
 ) -> Result<()> {
     check_points(points)?;
+    check_data_shape(points.len(), degree, derivatives, closed)
+}
+
+/// [`check_data`] after the coordinates: the degree, then the number of points `count`.
+pub(crate) fn check_data_shape(
+    count: usize,
+    degree: usize,
+    derivatives: usize,
+    closed: bool,
+) -> Result<()> {
     check_interpolation_degree(degree)?;
-    check_point_cap(points.len())?;
+    check_point_cap(count)?;
     let (needed, what) = if closed {
         (
             3.max(degree + 1),
@@ -175,10 +176,10 @@ pub(crate) fn check_data<C: Cartesian>(
             "an interpolating B-spline of this degree (p + 1 − end derivatives, at least 2)",
         )
     };
-    if points.len() < needed {
+    if count < needed {
         return Err(Error::TooFewDataPoints {
             needed,
-            got: points.len(),
+            got: count,
             what,
         });
     }
@@ -261,7 +262,7 @@ fn conflict_with_closed<C>(
 }
 
 /// A validated interpolation problem: knots, rows and right sides.
-struct Setup {
+pub(crate) struct Setup {
     knots: KnotVector,
     rows: Collocation,
     rhs: Vec<f64>,
@@ -278,7 +279,28 @@ impl Setup {
         let derivatives = usize::from(options.start_derivative.is_some())
             + usize::from(options.end_derivative.is_some());
         check_data(points, degree, derivatives, options.closed)?;
-        check_params(params, points.len())?;
+        let flat_vector = |d: &Option<C>| d.map(|v| flatten(&[v]));
+        let options = InterpolationOptions {
+            knots: options.knots.clone(),
+            start_derivative: flat_vector(&options.start_derivative),
+            end_derivative: flat_vector(&options.end_derivative),
+            closed: options.closed,
+        };
+        Setup::new_flat(&flatten(points), C::DIM, degree, params, &options)
+    }
+
+    /// [`Setup::new`] after [`check_data`], on flat coordinates of dimension `dim` (the
+    /// derivatives `dim` numbers each): written once for every dimension.
+    #[inline(never)]
+    pub(crate) fn new_flat(
+        coords: &[f64],
+        dim: usize,
+        degree: usize,
+        params: &[f64],
+        options: &InterpolationOptions<Vec<f64>>,
+    ) -> Result<Self> {
+        let count = coords.len() / dim;
+        check_params(params, count)?;
         if options.closed {
             if let Some((first, reason)) = conflict_with_closed(options) {
                 return Err(Error::ConflictingOptions {
@@ -287,42 +309,42 @@ impl Setup {
                     reason,
                 });
             }
-            return closed::setup(points, degree, params);
+            return closed::setup(coords, dim, degree, params);
         }
         for (name, d) in [
             ("startDerivative", &options.start_derivative),
             ("endDerivative", &options.end_derivative),
         ] {
             if let Some(d) = d {
-                for k in 0..C::DIM {
-                    check_finite(|| format!("{name} coordinate {k}"), d.coord(k))?;
+                for (k, &v) in d.iter().enumerate() {
+                    check_finite(|| format!("{name} coordinate {k}"), v)?;
                 }
             }
         }
-        let (start, end) = (options.start_derivative, options.end_derivative);
-        let size = points.len() + derivatives;
+        let (start, end) = (&options.start_derivative, &options.end_derivative);
+        let size = count + usize::from(start.is_some()) + usize::from(end.is_some());
         let knots = match &options.knots {
             Some(k) => k.clone(),
             None => knots::averaging_knots(params, degree, start.is_some(), end.is_some()),
         };
         let knots = KnotVector::new(knots, degree, size)?;
         check_params_in_domain(params, &knots)?;
-        let n = points.len() - 1;
+        let n = count - 1;
         let mut sites: Vec<(f64, RowKind)> = Vec::with_capacity(size);
-        let mut values: Vec<C> = Vec::with_capacity(size);
-        for (i, (&t, &p)) in params.iter().zip(points).enumerate() {
+        let mut rhs: Vec<f64> = Vec::with_capacity(size * dim);
+        for (i, (&t, p)) in params.iter().zip(coords.chunks_exact(dim)).enumerate() {
             if i == n {
                 if let Some(d) = end {
                     sites.push((t, RowKind::EndDerivative));
-                    values.push(d);
+                    rhs.extend_from_slice(d);
                 }
             }
             sites.push((t, RowKind::Point));
-            values.push(p);
+            rhs.extend_from_slice(p);
             if i == 0 {
                 if let Some(d) = start {
                     sites.push((t, RowKind::StartDerivative));
-                    values.push(d);
+                    rhs.extend_from_slice(d);
                 }
             }
         }
@@ -336,20 +358,43 @@ impl Setup {
         Ok(Setup {
             knots,
             rows,
-            rhs: flatten(&values),
-            dim: C::DIM,
+            rhs,
+            dim,
+        })
+    }
+
+    /// The system solved and written out dense, right sides and solution flat
+    /// ([`Error::TooLarge`] above [`MAX_SYSTEM_SIZE`] unknowns).
+    #[inline(never)]
+    pub(crate) fn system(&self) -> Result<InterpolationSystem<f64>> {
+        let size = self.rows.size;
+        if size > MAX_SYSTEM_SIZE {
+            return Err(Error::TooLarge {
+                what: "the interpolation system's size (unknowns)",
+                value: size,
+                max: MAX_SYSTEM_SIZE,
+            });
+        }
+        let solution = self.solve()?;
+        Ok(InterpolationSystem {
+            size,
+            matrix: self.rows.dense(),
+            rhs: self.rhs.clone(),
+            solution,
+            knots: self.knots.as_slice().to_vec(),
+            rows: self.rows.kinds.clone(),
         })
     }
 
     /// The control points (the distinct ones for a closed curve), flat.
-    fn solve(&self) -> Result<Vec<f64>> {
+    pub(crate) fn solve(&self) -> Result<Vec<f64>> {
         let mut x = self.rhs.clone();
         self.rows.solve(&mut x, self.dim, WHAT)?;
         Ok(x)
     }
 
     /// The curve with the solved control points (wrapped for a closed curve).
-    fn curve<C: Cartesian>(&self, solution: &[f64]) -> Result<BSplineCurve<C>> {
+    pub(crate) fn curve<C: Cartesian>(&self, solution: &[f64]) -> Result<BSplineCurve<C>> {
         let distinct: Vec<C> = solution.chunks(C::DIM).map(C::from_slice).collect();
         let p = self.rows.degree;
         let knots = self.knots.as_slice().to_vec();

@@ -13,6 +13,7 @@ use wasm_bindgen::prelude::*;
 
 /// Points, then at least 2 of them, then the parameters: the checks every constructor starts
 /// with.
+#[inline(never)]
 fn points_and_params<C: Cartesian>(
     coords: &[f64],
     params: ParamArg,

@@ -5,20 +5,23 @@
 use super::super::{numbers, optional_numbers, whole, JsBSplineCurve};
 use super::ParamArg;
 use crate::error::Error;
-use crate::geom::{check_dim, points_from_flat, Cartesian};
-use crate::interp::global::check_data;
-use crate::interp::least_squares::check_fit_data;
-use crate::interp::{self, InterpolationOptions, InterpolationSystem};
-use glam::{DVec2, DVec3};
+use crate::geom::{check_dim, check_flat};
+use crate::interp::global::{check_data_shape, Setup};
+use crate::interp::least_squares::{approximate_flat, check_fit_shape, curve_from};
+use crate::interp::InterpolationOptions;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
-/// The option names `interpolateBSpline` and `bsplineInterpolationSystem` accept.
-const INTERPOLATION_OPTIONS: &str = "\"knots\", \"startDerivative\", \"endDerivative\", \"closed\"";
+/// The option names `interpolateBSpline` and `bsplineInterpolationSystem` accept, and their
+/// list as the error message shows it.
+const INTERPOLATION_OPTIONS: (&[&str], &str) = (
+    &["knots", "startDerivative", "endDerivative", "closed"],
+    "\"knots\", \"startDerivative\", \"endDerivative\", \"closed\"",
+);
 
-/// The option names `approximateBSpline` accepts.
-const APPROXIMATION_OPTIONS: &str = "\"knots\"";
+/// The option names `approximateBSpline` accepts, and their list for the message.
+const APPROXIMATION_OPTIONS: (&[&str], &str) = (&["knots"], "\"knots\"");
 
 /// The options object as read from JavaScript, before the points are checked.
 #[derive(Default)]
@@ -31,9 +34,12 @@ struct RawOptions {
 
 impl RawOptions {
     /// Reads `options`: `undefined`/`null` give the defaults; otherwise a plain object whose
-    /// keys are among `allowed` ([`Error::UnknownOption`] naming the first other key), each
+    /// keys are among `allowed` (`listed` in the message) ([`Error::UnknownOption`] naming the first other key), each
     /// value of its type ([`Error::ArgumentType`]).
-    fn read(options: &JsValue, allowed: &'static str) -> Result<Self, JsError> {
+    fn read(
+        options: &JsValue,
+        (allowed, listed): (&[&str], &'static str),
+    ) -> Result<Self, JsError> {
         let mut out = RawOptions::default();
         if options.is_undefined() || options.is_null() {
             return Ok(out);
@@ -51,12 +57,11 @@ impl RawOptions {
         };
         for key in js_sys::Object::keys(object).iter() {
             let key = key.as_string().unwrap_or_default();
-            let quoted = format!("\"{key}\"");
-            if !allowed.split(", ").any(|k| k == quoted) {
+            if !allowed.contains(&key.as_str()) {
                 return Err(Error::UnknownOption {
                     name: "options",
                     value: key,
-                    expected: allowed,
+                    expected: listed,
                 }
                 .into());
             }
@@ -88,28 +93,31 @@ impl RawOptions {
         usize::from(self.start_derivative.is_some()) + usize::from(self.end_derivative.is_some())
     }
 
-    /// The core options for points of dimension `C::DIM` ([`Error::ArgumentLength`] for a
-    /// derivative of another length).
-    fn typed<C: Cartesian>(&self) -> Result<InterpolationOptions<C>, Error> {
+    /// The core options for points of dimension `dim`, derivatives flat
+    /// ([`Error::ArgumentLength`] for a derivative of another length).
+    fn typed(&self, dim: usize) -> Result<InterpolationOptions<Vec<f64>>, Error> {
         Ok(InterpolationOptions {
             knots: self.knots.clone(),
-            start_derivative: vector::<C>("startDerivative", self.start_derivative.as_deref())?,
-            end_derivative: vector::<C>("endDerivative", self.end_derivative.as_deref())?,
+            start_derivative: vector("startDerivative", &self.start_derivative, dim)?,
+            end_derivative: vector("endDerivative", &self.end_derivative, dim)?,
             closed: self.closed,
         })
     }
 }
 
-/// An optional vector of `C::DIM` numbers.
-fn vector<C: Cartesian>(name: &'static str, values: Option<&[f64]>) -> Result<Option<C>, Error> {
+/// An optional vector of `dim` numbers.
+fn vector(
+    name: &'static str,
+    values: &Option<Vec<f64>>,
+    dim: usize,
+) -> Result<Option<Vec<f64>>, Error> {
     match values {
-        None => Ok(None),
-        Some(v) if v.len() == C::DIM => Ok(Some(C::from_slice(v))),
-        Some(v) => Err(Error::ArgumentLength {
+        Some(v) if v.len() != dim => Err(Error::ArgumentLength {
             name,
-            expected: C::DIM,
+            expected: dim,
             got: v.len(),
         }),
+        _ => Ok(values.clone()),
     }
 }
 
@@ -124,37 +132,26 @@ fn type_name(value: &JsValue) -> String {
     }
 }
 
-/// Points, parameters and core options, checked.
-type Prepared<C> = (Vec<C>, Vec<f64>, InterpolationOptions<C>);
-
-/// The inputs shared by the three functions, checked in the documented order for dimension
-/// `C`: points (coordinate count, finite), degree and number of points, params, options.
-fn prepare<C: Cartesian>(
+/// The interpolation setup for the flat `points` of dimension `dim`, its inputs checked in
+/// the documented order: points (coordinate count, finite), degree and number of points,
+/// params, options. Written once for both dimensions.
+fn setup(
     points: &[f64],
+    dim: usize,
     degree: usize,
     params: &ParamArg,
     options: &RawOptions,
-) -> Result<Prepared<C>, Error> {
-    let points: Vec<C> = points_from_flat(points)?;
+) -> Result<Setup, Error> {
+    check_flat(points, dim)?;
     let derivatives = if options.closed {
         0
     } else {
         options.derivatives()
     };
-    check_data(&points, degree, derivatives, options.closed)?;
-    let params = params.resolve(&points)?;
-    let typed = options.typed::<C>()?;
-    Ok((points, params, typed))
-}
-
-fn interpolate<C: Cartesian>(
-    points: &[f64],
-    degree: usize,
-    params: &ParamArg,
-    options: &RawOptions,
-) -> Result<crate::BSplineCurve<C>, Error> {
-    let (points, params, options) = prepare::<C>(points, degree, params, options)?;
-    interp::interpolate_bspline(&points, degree, &params, &options)
+    check_data_shape(points.len() / dim, degree, derivatives, options.closed)?;
+    let params = params.resolve_flat(points, dim)?;
+    let typed = options.typed(dim)?;
+    Setup::new_flat(points, dim, degree, &params, &typed)
 }
 
 /// `interpolateBSpline(points, dim, degree, params, options?)`: the B-spline of degree 1..10
@@ -180,23 +177,14 @@ pub fn interpolate_bspline(
     let params = ParamArg::read(&params)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
-    Ok(match check_dim(dim)? {
-        2 => JsBSplineCurve::from_2d(interpolate::<DVec2>(points, degree, &params, &options)?),
-        _ => JsBSplineCurve::from_3d(interpolate::<DVec3>(points, degree, &params, &options)?),
+    let dim = check_dim(dim)?;
+    let setup = setup(points, dim, degree, &params, &options)?;
+    let solution = setup.solve()?;
+    Ok(if dim == 2 {
+        JsBSplineCurve::from_2d(setup.curve(&solution)?)
+    } else {
+        JsBSplineCurve::from_3d(setup.curve(&solution)?)
     })
-}
-
-fn approximate<C: Cartesian>(
-    points: &[f64],
-    degree: usize,
-    count: usize,
-    params: &ParamArg,
-    options: &RawOptions,
-) -> Result<crate::BSplineCurve<C>, Error> {
-    let points: Vec<C> = points_from_flat(points)?;
-    check_fit_data(&points, degree)?;
-    let params = params.resolve(&points)?;
-    interp::approximate_bspline(&points, degree, count, &params, options.knots.as_deref())
 }
 
 /// `approximateBSpline(points, dim, degree, count, params, options?)`: the least-squares
@@ -219,13 +207,16 @@ pub fn approximate_bspline(
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
     let count = whole("count", count)?;
-    Ok(match check_dim(dim)? {
-        2 => JsBSplineCurve::from_2d(approximate::<DVec2>(
-            points, degree, count, &params, &options,
-        )?),
-        _ => JsBSplineCurve::from_3d(approximate::<DVec3>(
-            points, degree, count, &params, &options,
-        )?),
+    let dim = check_dim(dim)?;
+    check_flat(points, dim)?;
+    check_fit_shape(points.len() / dim, degree)?;
+    let params = params.resolve_flat(points, dim)?;
+    let knots = options.knots.as_deref();
+    let (control, knots) = approximate_flat(points, dim, degree, count, &params, knots)?;
+    Ok(if dim == 2 {
+        JsBSplineCurve::from_2d(curve_from(&control, degree, knots)?)
+    } else {
+        JsBSplineCurve::from_3d(curve_from(&control, degree, knots)?)
     })
 }
 
@@ -238,26 +229,6 @@ struct SystemJs {
     solution: Vec<f64>,
     knots: Vec<f64>,
     rows: Vec<&'static str>,
-}
-
-fn system<C: Cartesian>(
-    points: &[f64],
-    degree: usize,
-    params: &ParamArg,
-    options: &RawOptions,
-) -> Result<SystemJs, Error> {
-    let (points, params, options) = prepare::<C>(points, degree, params, options)?;
-    let s: InterpolationSystem<C> =
-        interp::interpolation_system(&points, degree, &params, &options)?;
-    let flat = |v: &[C]| super::super::bezier::flatten_points(v);
-    Ok(SystemJs {
-        size: s.size,
-        matrix: s.matrix,
-        rhs: flat(&s.rhs),
-        solution: flat(&s.solution),
-        knots: s.knots,
-        rows: s.rows.iter().map(|r| r.as_str()).collect(),
-    })
 }
 
 /// `bsplineInterpolationSystem(points, dim, degree, params, options?)`: the system
@@ -284,9 +255,15 @@ pub fn bspline_interpolation_system(
     let params = ParamArg::read(&params)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
-    let s = match check_dim(dim)? {
-        2 => system::<DVec2>(points, degree, &params, &options)?,
-        _ => system::<DVec3>(points, degree, &params, &options)?,
+    let dim = check_dim(dim)?;
+    let s = setup(points, dim, degree, &params, &options)?.system()?;
+    let s = SystemJs {
+        size: s.size,
+        matrix: s.matrix,
+        rhs: s.rhs,
+        solution: s.solution,
+        knots: s.knots,
+        rows: s.rows.iter().map(|r| r.as_str()).collect(),
     };
     Ok(serde_wasm_bindgen::to_value(&s)?)
 }

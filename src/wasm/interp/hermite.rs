@@ -1,12 +1,11 @@
 //! The cubic Hermite basis for JavaScript: `hermiteBasis(s)` and `hermiteBezier(…)`.
 
-use super::vector_arg;
+use super::flat_points;
 use crate::error::{check_finite, Error};
-use crate::geom::{check_dim, Point};
+use crate::geom::check_dim;
 use crate::interp::{hermite_basis, hermite_basis_derivative, hermite_to_bezier};
-use crate::wasm::bezier::flatten_points;
 use crate::wasm::{numbers, whole};
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use wasm_bindgen::prelude::*;
 
 /// `hermiteBasis(s, order = 0)`: `[H0, H1, H2, H3](s)` with `H0 = 2s³ − 3s² + 1`,
@@ -30,19 +29,31 @@ pub fn hermite_basis_js(s: f64, order: Option<f64>) -> Result<Vec<f64>, JsError>
     })
 }
 
-/// The four vectors (each `P::DIM` numbers, finite) and the Bézier points.
-fn bezier_points<P: Point>(
+/// The four vectors (each `dim` numbers, finite) and the Bézier points, computed in 3D (z = 0
+/// for 2D: one copy of the code) and cut back to `dim`.
+fn bezier_points(
     args: [(&'static str, &[f64]); 4],
+    dim: usize,
     delta: f64,
 ) -> Result<Vec<f64>, Error> {
-    let mut v = [P::ZERO; 4];
+    let mut v = [DVec3::ZERO; 4];
     for (slot, (name, values)) in v.iter_mut().zip(args) {
-        *slot = vector_arg::<P>(name, values)?;
+        if values.len() != dim {
+            return Err(Error::ArgumentLength {
+                name,
+                expected: dim,
+                got: values.len(),
+            });
+        }
         crate::geom::check_all_finite(values, name)?;
+        let mut coords = [0.0; 3];
+        for (c, &x) in coords.iter_mut().zip(values) {
+            *c = x;
+        }
+        *slot = DVec3::from_array(coords);
     }
-    Ok(flatten_points(&hermite_to_bezier(
-        v[0], v[1], v[2], v[3], delta,
-    )))
+    let [p0, m0, p1, m1] = v;
+    Ok(flat_points(&hermite_to_bezier(p0, m0, p1, m1, delta), dim))
 }
 
 /// `hermiteBezier(p0, m0, p1, m1, delta = 1)`: the Bézier control points (flat, 4·dim) of the
@@ -62,8 +73,5 @@ pub fn hermite_bezier(
     let m1 = numbers("m1", &m1)?;
     let delta = check_finite(|| "delta".into(), delta.unwrap_or(1.0))?;
     let args = [("p0", &*p0), ("m0", &*m0), ("p1", &*p1), ("m1", &*m1)];
-    Ok(match check_dim(p0.len())? {
-        2 => bezier_points::<DVec2>(args, delta)?,
-        _ => bezier_points::<DVec3>(args, delta)?,
-    })
+    Ok(bezier_points(args, check_dim(p0.len())?, delta)?)
 }

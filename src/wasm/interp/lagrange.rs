@@ -1,45 +1,33 @@
 //! `lagrange(points, dim, params)` and the `LagrangeCurve` class.
 
-use super::ParamArg;
+use super::{flat_points, lift_point, lift_points, narrow, ParamArg};
 use crate::error::Error;
-use crate::geom::{check_dim, points_from_flat, Cartesian};
+use crate::geom::check_dim;
 use crate::interp::{check_point_count, LagrangeCurve, ParamChoice};
-use crate::wasm::bezier::{flatten_points, point_from};
 use crate::wasm::class::check_count;
 use crate::wasm::{numbers, whole};
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use wasm_bindgen::prelude::*;
 
-/// A 2D or 3D Lagrange curve behind the JS class.
-#[derive(Clone)]
-enum Curve {
-    D2(LagrangeCurve<DVec2>),
-    D3(LagrangeCurve<DVec3>),
-}
-
-macro_rules! with_lagrange {
-    ($curve:expr, $c:ident => $body:expr) => {
-        match $curve {
-            Curve::D2($c) => $body,
-            Curve::D3($c) => $body,
-        }
-    };
-}
-
 /// The interpolating polynomial through n + 1 points at strictly increasing parameters,
-/// evaluated in barycentric form; `aitken(t)` gives Aitken's triangle.
+/// evaluated in barycentric form; `aitken(t)` gives Aitken's triangle. A 2D curve is kept as
+/// the 3D one in the plane z = 0 (the arithmetic of x and y is the same; one copy of the code
+/// for both dimensions); what leaves it is cut back to `dim` coordinates.
 #[wasm_bindgen(js_name = LagrangeCurve)]
 pub struct JsLagrangeCurve {
-    inner: Curve,
+    inner: LagrangeCurve<DVec3>,
+    /// 2 or 3.
+    dim: usize,
     /// Where the parameters came from: a spacing is recomputed when a point moves.
     choice: ParamChoice,
 }
 
-fn build<C: Cartesian>(
+fn build(
     coords: &[f64],
+    dim: usize,
     params: ParamArg,
-) -> Result<(LagrangeCurve<C>, ParamChoice), Error> {
-    let points: Vec<C> = points_from_flat(coords)?;
+) -> Result<(LagrangeCurve<DVec3>, ParamChoice), Error> {
+    let points = lift_points(coords, dim)?;
     check_point_count(points.len(), 2, "a Lagrange curve")?;
     let choice = params.choice()?;
     let params = choice.resolve(&points)?;
@@ -48,11 +36,11 @@ fn build<C: Cartesian>(
 
 /// Moves point i of `c`: in place for given parameters, by a rebuild (new parameters and
 /// weights) when they are a spacing computed from the points. On an error `c` is unchanged.
-fn move_point<C: Cartesian>(
-    c: &mut LagrangeCurve<C>,
+fn move_point(
+    c: &mut LagrangeCurve<DVec3>,
     choice: &ParamChoice,
     i: usize,
-    p: C,
+    p: DVec3,
 ) -> Result<(), Error> {
     match choice {
         ParamChoice::Given(_) => c.set_point(i, p),
@@ -78,18 +66,9 @@ pub fn lagrange(
 ) -> Result<JsLagrangeCurve, JsError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
-    let dim = whole("dim", dim)?;
-    let (inner, choice) = match check_dim(dim)? {
-        2 => {
-            let (c, choice) = build(points, params)?;
-            (Curve::D2(c), choice)
-        }
-        _ => {
-            let (c, choice) = build(points, params)?;
-            (Curve::D3(c), choice)
-        }
-    };
-    Ok(JsLagrangeCurve { inner, choice })
+    let dim = check_dim(whole("dim", dim)?)?;
+    let (inner, choice) = build(points, dim, params)?;
+    Ok(JsLagrangeCurve { inner, dim, choice })
 }
 
 #[wasm_bindgen(js_class = LagrangeCurve)]
@@ -97,37 +76,34 @@ impl JsLagrangeCurve {
     /// Dimension: 2 or 3.
     #[wasm_bindgen(getter)]
     pub fn dim(&self) -> usize {
-        match self.inner {
-            Curve::D2(_) => 2,
-            Curve::D3(_) => 3,
-        }
+        self.dim
     }
 
     /// The degree bound n (number of points − 1).
     #[wasm_bindgen(getter)]
     pub fn degree(&self) -> usize {
-        with_lagrange!(&self.inner, c => c.degree())
+        self.inner.degree()
     }
 
     /// The domain `[t_0, t_n]`.
     pub fn domain(&self) -> Vec<f64> {
-        let (a, b) = with_lagrange!(&self.inner, c => c.domain());
+        let (a, b) = self.inner.domain();
         vec![a, b]
     }
 
     /// The parameters `t_0 … t_n`.
     pub fn params(&self) -> Vec<f64> {
-        with_lagrange!(&self.inner, c => c.params().to_vec())
+        self.inner.params().to_vec()
     }
 
     /// The data points, flat.
     pub fn points(&self) -> Vec<f64> {
-        with_lagrange!(&self.inner, c => flatten_points(c.points()))
+        flat_points(self.inner.points(), self.dim)
     }
 
     /// The point at t (dim numbers; exactly `p_i` at `t_i`).
     pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
-        Ok(with_lagrange!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
+        Ok(flat_points(&[self.inner.evaluate(t)?], self.dim))
     }
 
     /// Points at every t of `ts`, flat (ts.length·dim numbers).
@@ -136,9 +112,9 @@ impl JsLagrangeCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
         let ts = &*numbers("ts", &ts)?;
-        let mut out = vec![0.0; ts.len().saturating_mul(self.dim())];
-        with_lagrange!(&self.inner, c => c.sample_into(ts, &mut out))?;
-        Ok(out)
+        let mut out = vec![0.0; ts.len().saturating_mul(3)];
+        self.inner.sample_into(ts, &mut out)?;
+        Ok(narrow(out, self.dim))
     }
 
     /// `count` points at equally spaced t over the domain, ends included, flat.
@@ -146,20 +122,20 @@ impl JsLagrangeCurve {
     pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
         let count = whole("count", count)?;
         check_count(count)?;
-        let mut out = vec![0.0; count * self.dim()];
-        with_lagrange!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
-        Ok(out)
+        let mut out = vec![0.0; count * 3];
+        self.inner.sample_uniform_into(count, &mut out)?;
+        Ok(narrow(out, self.dim))
     }
 
     /// Every `L_i(t)`, i = 0..n (n + 1 numbers, summing to 1).
     pub fn basis(&self, t: f64) -> Result<Vec<f64>, JsError> {
-        Ok(with_lagrange!(&self.inner, c => c.basis(t))?)
+        Ok(self.inner.basis(t)?)
     }
 
     /// Aitken's triangle at t, flat: level 0 the n + 1 points, then level r = 1..n with the
     /// n + 1 − r points `p_i^r`; (n+1)(n+2)/2 points, the last is P(t).
     pub fn aitken(&self, t: f64) -> Result<Vec<f64>, JsError> {
-        Ok(with_lagrange!(&self.inner, c => flatten_points(&c.aitken(t)?)))
+        Ok(flat_points(&self.inner.aitken(t)?, self.dim))
     }
 
     /// Moves data point i in place (the drag path); `point` has dim numbers. Parameters given
@@ -172,8 +148,8 @@ impl JsLagrangeCurve {
     ) -> Result<(), JsError> {
         let point = numbers("point", &point)?;
         let i = whole("i", i)?;
-        let choice = &self.choice;
-        with_lagrange!(&mut self.inner, c => move_point(c, choice, i, point_from(&point)?))?;
+        let p = lift_point(&point, self.dim)?;
+        move_point(&mut self.inner, &self.choice, i, p)?;
         Ok(())
     }
 }

@@ -1,8 +1,11 @@
 //! The `CubicSpline` class: every piecewise cubic Hermite interpolant (C2 splines, Hermite,
 //! cardinal, Catmull–Rom, Bessel) behind one JS class.
 
+use super::flat_points;
+use crate::bezier::CompositeCurve;
+use crate::bspline::BSplineCurve;
 use crate::error::Error;
-use crate::interp::CubicSpline;
+use crate::interp::{bezier_points, bspline_form, CubicSpline, TangentRule};
 use crate::prelude::*;
 use crate::wasm::bezier::{flatten_points, point_from};
 use crate::wasm::class::check_count;
@@ -61,6 +64,18 @@ impl JsCubicSpline {
         match self.inner {
             Spline::D2(_) => 2,
             Spline::D3(_) => 3,
+        }
+    }
+
+    /// The points and tangents in 3D (z = 0 for 2D), and the parameters: the cold conversions
+    /// (`toBezier`, `toBSpline`) run on them, one copy of their code for both dimensions.
+    fn lifted(&self) -> (Vec<DVec3>, Vec<DVec3>, &[f64]) {
+        match &self.inner {
+            Spline::D2(c) => {
+                let lift = |v: &[DVec2]| v.iter().map(|p| p.extend(0.0)).collect();
+                (lift(c.points()), lift(c.tangents()), c.params())
+            }
+            Spline::D3(c) => (c.points().to_vec(), c.tangents().to_vec(), c.params()),
         }
     }
 
@@ -222,9 +237,14 @@ impl JsCubicSpline {
     /// p_{i+1}]`, breaks = params.
     #[wasm_bindgen(js_name = toBezier)]
     pub fn to_bezier(&self) -> Result<JsCompositeBezier, JsError> {
-        Ok(match &self.inner {
-            Spline::D2(c) => JsCompositeBezier::from_2d(c.to_bezier()?),
-            Spline::D3(c) => JsCompositeBezier::from_3d(c.to_bezier()?),
+        let (points, tangents, params) = self.lifted();
+        let q = flat_points(&bezier_points(&points, &tangents, params), self.dim_of());
+        let degrees = vec![3; points.len() - 1];
+        let breaks = Some(params);
+        Ok(if self.dim_of() == 2 {
+            JsCompositeBezier::from_2d(CompositeCurve::from_flat(&q, &degrees, breaks)?)
+        } else {
+            JsCompositeBezier::from_3d(CompositeCurve::from_flat(&q, &degrees, breaks)?)
         })
     }
 
@@ -233,9 +253,14 @@ impl JsCubicSpline {
     /// and 2n + 2 control points.
     #[wasm_bindgen(js_name = toBSpline)]
     pub fn to_bspline(&self) -> Result<JsBSplineCurve, JsError> {
-        Ok(match &self.inner {
-            Spline::D2(c) => JsBSplineCurve::from_2d(c.to_bspline()?),
-            Spline::D3(c) => JsBSplineCurve::from_3d(c.to_bspline()?),
+        let (points, tangents, params) = self.lifted();
+        let c2 = with_spline!(&self.inner, c => matches!(c.rule(), TangentRule::Spline(_)));
+        let (control, knots) = bspline_form(&points, &tangents, params, c2);
+        let control = flat_points(&control, self.dim_of());
+        Ok(if self.dim_of() == 2 {
+            JsBSplineCurve::from_2d(BSplineCurve::from_flat(&control, 3, knots, None)?)
+        } else {
+            JsBSplineCurve::from_3d(BSplineCurve::from_flat(&control, 3, knots, None)?)
         })
     }
 
