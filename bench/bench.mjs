@@ -1274,7 +1274,7 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
   }
   for (const { method, ratio } of solveRatios)
     target(
-      `(h) ${method.split("(")[0]}: time ratio for 10× the points`,
+      `(h) ${method.split("(")[0]}: 10× n → time ×`,
       ratio,
       "≈ 10 (linear time)",
       ratio < 20,
