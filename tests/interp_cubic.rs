@@ -602,6 +602,33 @@ fn lagrange_reproduces_polynomials_of_degree_n() {
 }
 
 #[test]
+fn lagrange_basis_curves_are_the_product_formula_i_major() {
+    // Uneven params on [1, 4]; 7 samples at t_k = 1 + k/2, which hit the nodes 1, 2.5 and 4.
+    let t = [1.0, 2.5, 3.0, 4.0];
+    let p = pts2(&[(0.0, 0.0), (1.0, 3.0), (3.0, 2.0), (4.0, -1.0)]);
+    let c = LagrangeCurve::new(p, &t).unwrap();
+    let count = 7;
+    let curves = c.basis_curves(count).unwrap();
+    assert_eq!(curves.len(), t.len() * count);
+    for k in 0..count {
+        let x = 1.0 + 0.5 * k as f64;
+        let mut sum = 0.0;
+        for i in 0..t.len() {
+            // L_i(x) = Π_{j≠i} (x − t_j)/(t_i − t_j), written out here (not the barycentric form).
+            let expected: f64 = (0..t.len())
+                .filter(|&j| j != i)
+                .map(|j| (x - t[j]) / (t[i] - t[j]))
+                .product();
+            assert_close(curves[i * count + k], expected, 1e-13, "L_i(t_k)");
+            sum += curves[i * count + k];
+        }
+        assert_close(sum, 1.0, 1e-13, "Σ L_i = 1");
+    }
+    // A cap on (n + 1)·count, not only on count.
+    assert!(c.basis_curves(1 << 23).is_err());
+}
+
+#[test]
 fn aitken_triangle_ends_at_the_polynomial() {
     let p = pts2(&[(0.0, 0.0), (1.0, 3.0), (3.0, 2.0), (4.0, -1.0)]);
     let t = [0.0, 1.0, 2.5, 4.0];

@@ -100,19 +100,26 @@ impl<C: Cartesian> LagrangeCurve<C> {
     pub fn basis(&self, t: f64) -> Result<Vec<f64>> {
         check_in_range("t", t, self.domain())?;
         let mut out = vec![0.0; self.params.len()];
+        self.basis_at(t, &mut out);
+        Ok(out)
+    }
+
+    /// Every `L_i(t)` into `out` (n + 1 values; t already checked): exactly the unit vector at a
+    /// node, else the barycentric form `L_i(t) = (w_i/(t − t_i)) / Σ_j w_j/(t − t_j)`.
+    fn basis_at(&self, t: f64, out: &mut [f64]) {
+        out.fill(0.0);
         if let Some(i) = self.node(t) {
             out[i] = 1.0;
-            return Ok(out);
+            return;
         }
         let mut sum = 0.0;
         for ((o, &w), &ti) in out.iter_mut().zip(&self.weights).zip(&self.params) {
             *o = w / (t - ti);
             sum += *o;
         }
-        for o in &mut out {
+        for o in out.iter_mut() {
             *o /= sum;
         }
-        Ok(out)
     }
 
     /// The point at t by the barycentric formula (exactly `p_i` at a node).
@@ -165,6 +172,30 @@ impl<C: Cartesian> LagrangeCurve<C> {
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         let (a, b) = self.domain();
         self.sample_params_into(Params::uniform(a, b, count), out)
+    }
+
+    /// Every basis function `L_i` at `count` equally spaced t over the domain (ends included, the
+    /// t of [`LagrangeCurve::sample_uniform_into`]), i-major: `(n + 1)·count` numbers,
+    /// `L_i(t_k)` at `i·count + k` — the basis under the curve in one call (as
+    /// `BSplineCurve::basis_curves`).
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] when `(n + 1)·count` exceeds the sample cap.
+    pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>> {
+        let functions = self.params.len();
+        let total = count.saturating_mul(functions);
+        check_out_len(total, total, 1)?;
+        let (a, b) = self.domain();
+        let params = Params::uniform(a, b, count);
+        let mut out = vec![0.0; total];
+        let mut values = vec![0.0; functions];
+        for k in 0..count {
+            self.basis_at(params.get(k).clamp(a, b), &mut values);
+            for (i, &v) in values.iter().enumerate() {
+                out[i * count + k] = v;
+            }
+        }
+        Ok(out)
     }
 
     /// Aitken's triangle at t: level 0 the points `p_i^0 = p_i`, then for r = 1..n the

@@ -162,29 +162,15 @@ export const derive = {
 };
 
 /**
- * The basis graphs of the parameters `params` (i-major, SAMPLES each), from the core: the pair
- * L_i, L_{i+1} is the curve through the points (δ_ij, δ_{i+1,j}). Kept while the parameters stay.
+ * The basis graphs (i-major, SAMPLES each) from the core's `basisCurves`, at the t of
+ * `sampleUniform`. They depend on the parameters only: kept while those stay (a drag at uniform
+ * parameters moves no graph).
  */
-function basisCurves(sl, params, previous) {
+function basisCurves(lagrange, params, previous) {
   if (previous && previous.params.length === params.length) {
     if (previous.params.every((v, k) => v === params[k])) return previous;
   }
-  const count = params.length;
-  const values = new Float64Array(count * SAMPLES);
-  const unit = new Float64Array(2 * count);
-  for (let i = 0; i < count; i += 2) {
-    unit.fill(0);
-    unit[2 * i] = 1;
-    if (i + 1 < count) unit[2 * (i + 1) + 1] = 1;
-    const pair = sl.lagrange(unit, 2, params);
-    const samples = pair.sampleUniform(SAMPLES);
-    pair.free();
-    for (let k = 0; k < SAMPLES; k++) {
-      values[i * SAMPLES + k] = samples[2 * k];
-      if (i + 1 < count) values[(i + 1) * SAMPLES + k] = samples[2 * k + 1];
-    }
-  }
-  return { params: Float64Array.from(params), values };
+  return { params: Float64Array.from(params), values: lagrange.basisCurves(SAMPLES) };
 }
 
 /** The data parameters normalised to [0, 1] (the plot's ticks) and their texts. */
@@ -205,7 +191,7 @@ const AT_T = ["points", "params", "t"];
 export const compute = {
   curve: [ALL, (s, d) => fitIn(d).lagrange.sampleUniform(SAMPLES)],
   spline: [ALL, (s, d) => fitIn(d).spline.sampleUniform(SAMPLES)],
-  basisCurves: [ALL, (s, d) => basisCurves(d.sl, fitIn(d).params, d.basisCurves)],
+  basisCurves: [ALL, (s, d) => basisCurves(fitIn(d).lagrange, fitIn(d).params, d.basisCurves)],
   ticks: [ALL, (s, d) => ticksOf(fitIn(d).params)],
   triangle: [AT_T, (s, d) => fitIn(d).lagrange.aitken(s.t)],
   basis: [AT_T, (s, d) => fitIn(d).lagrange.basis(s.t)],

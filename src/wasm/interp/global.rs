@@ -154,6 +154,51 @@ fn setup(
     Setup::new_flat(points, dim, degree, &params, &typed)
 }
 
+/// The arguments the three functions share, read from JavaScript in one order: the options
+/// object (its keys among `allowed`), points, params, dim (checked: 2 or 3) and degree.
+struct FitArgs {
+    options: RawOptions,
+    points: Vec<f64>,
+    params: ParamArg,
+    dim: usize,
+    degree: usize,
+}
+
+impl FitArgs {
+    fn read(
+        points: &JsValue,
+        dim: f64,
+        degree: f64,
+        params: &JsValue,
+        options: &JsValue,
+        allowed: (&'static [&'static str], &'static str),
+    ) -> Result<Self, JsError> {
+        let options = RawOptions::read(options, allowed)?;
+        let points = numbers("points", points)?;
+        let params = ParamArg::read(params)?;
+        let dim = whole("dim", dim)?;
+        let degree = whole("degree", degree)?;
+        Ok(FitArgs {
+            options,
+            points,
+            params,
+            dim: check_dim(dim)?,
+            degree,
+        })
+    }
+
+    /// The interpolation setup of these arguments (see [`setup`]).
+    fn setup(&self) -> Result<Setup, Error> {
+        setup(
+            &self.points,
+            self.dim,
+            self.degree,
+            &self.params,
+            &self.options,
+        )
+    }
+}
+
 /// `interpolateBSpline(points, dim, degree, params, options?)`: the B-spline of degree 1..10
 /// through every point, C(t_i) = p_i. `params`: one per point, strictly increasing (or a kind
 /// "uniform" | "chord" | "centripetal", or an exponent α in [0, 1]). `options`: `{ knots?, startDerivative?,
@@ -172,15 +217,17 @@ pub fn interpolate_bspline(
     )]
     options: JsValue,
 ) -> Result<JsBSplineCurve, JsError> {
-    let options = RawOptions::read(&options, INTERPOLATION_OPTIONS)?;
-    let points = &*numbers("points", &points)?;
-    let params = ParamArg::read(&params)?;
-    let dim = whole("dim", dim)?;
-    let degree = whole("degree", degree)?;
-    let dim = check_dim(dim)?;
-    let setup = setup(points, dim, degree, &params, &options)?;
+    let args = FitArgs::read(
+        &points,
+        dim,
+        degree,
+        &params,
+        &options,
+        INTERPOLATION_OPTIONS,
+    )?;
+    let setup = args.setup()?;
     let solution = setup.solve()?;
-    Ok(if dim == 2 {
+    Ok(if args.dim == 2 {
         JsBSplineCurve::from_2d(setup.curve(&solution)?)
     } else {
         JsBSplineCurve::from_3d(setup.curve(&solution)?)
@@ -201,13 +248,23 @@ pub fn approximate_bspline(
     #[wasm_bindgen(unchecked_optional_param_type = "{ knots?: Float64Array | number[] }")]
     options: JsValue,
 ) -> Result<JsBSplineCurve, JsError> {
-    let options = RawOptions::read(&options, APPROXIMATION_OPTIONS)?;
-    let points = &*numbers("points", &points)?;
-    let params = ParamArg::read(&params)?;
-    let dim = whole("dim", dim)?;
-    let degree = whole("degree", degree)?;
+    let args = FitArgs::read(
+        &points,
+        dim,
+        degree,
+        &params,
+        &options,
+        APPROXIMATION_OPTIONS,
+    )?;
     let count = whole("count", count)?;
-    let dim = check_dim(dim)?;
+    let FitArgs {
+        options,
+        points,
+        params,
+        dim,
+        degree,
+    } = args;
+    let points = &*points;
     check_flat(points, dim)?;
     check_fit_shape(points.len() / dim, degree)?;
     let params = params.resolve_flat(points, dim)?;
@@ -250,13 +307,15 @@ pub fn bspline_interpolation_system(
     )]
     options: JsValue,
 ) -> Result<JsValue, JsError> {
-    let options = RawOptions::read(&options, INTERPOLATION_OPTIONS)?;
-    let points = &*numbers("points", &points)?;
-    let params = ParamArg::read(&params)?;
-    let dim = whole("dim", dim)?;
-    let degree = whole("degree", degree)?;
-    let dim = check_dim(dim)?;
-    let s = setup(points, dim, degree, &params, &options)?.system()?;
+    let args = FitArgs::read(
+        &points,
+        dim,
+        degree,
+        &params,
+        &options,
+        INTERPOLATION_OPTIONS,
+    )?;
+    let s = args.setup()?.system()?;
     let s = SystemJs {
         size: s.size,
         matrix: s.matrix,

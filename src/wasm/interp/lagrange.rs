@@ -132,6 +132,14 @@ impl JsLagrangeCurve {
         Ok(self.inner.basis(t)?)
     }
 
+    /// Every `L_i` at `count` equally spaced t over the domain (the t of `sampleUniform`),
+    /// i-major: `(n + 1)·count` numbers, value k of function i at `i·count + k`.
+    #[wasm_bindgen(js_name = basisCurves)]
+    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, JsError> {
+        let count = whole("count", count)?;
+        Ok(self.inner.basis_curves(count)?)
+    }
+
     /// Aitken's triangle at t, flat: level 0 the n + 1 points, then level r = 1..n with the
     /// n + 1 − r points `p_i^r`; (n+1)(n+2)/2 points, the last is P(t).
     pub fn aitken(&self, t: f64) -> Result<Vec<f64>, JsError> {
