@@ -251,8 +251,17 @@ function chosenData(s, d) {
     system: spline.system(),
     second: spline.sampleDerivatives(ts, 2),
     third: spline.sampleDerivatives(ts, 3),
+    joints: jointContinuity(spline),
     ticks: Array.from(params, (u) => shortNumber(u)),
   };
+}
+
+/** The core's continuity check at every inner join: `[{ c, g }, …]` of the Bézier pieces. */
+function jointContinuity(spline) {
+  const pieces = spline.toBezier();
+  const joints = pieces.continuity();
+  pieces.free();
+  return joints;
 }
 
 /** A number for sentences: 3 decimals at most, integers (after rounding) plain. */

@@ -66,28 +66,6 @@ export function pieceParameters(params, perPiece, out = null) {
   return ts;
 }
 
-/**
- * The inner joins i (1 … pieces − 1) where a piecewise function sampled as by
- * `pieceParameters(params, perPiece)` (flat, `dim` per sample) jumps: its limits from the left
- * (the last sample of piece i − 1) and from the right (the first of piece i) differ by more
- * than `tolerance` times the largest |value| (at least 1) — what the plot shows as a gap.
- */
-export function jumpJoins(values, dim, perPiece, tolerance = 1e-9) {
-  const pieces = values.length / dim / perPiece;
-  let largest = 1;
-  for (const v of values) largest = Math.max(largest, Math.abs(v));
-  const joins = [];
-  for (let i = 1; i < pieces; i++) {
-    const left = (i * perPiece - 1) * dim;
-    const right = i * perPiece * dim;
-    let gap = 0;
-    for (let c = 0; c < dim; c++)
-      gap = Math.max(gap, Math.abs(values[right + c] - values[left + c]));
-    if (gap > tolerance * largest) joins.push(i);
-  }
-  return joins;
-}
-
 /** The smallest "nice" number (1, 2 or 5 × 10^k) at least `value` (> 0). */
 export function niceCeiling(value) {
   if (!(value > 0)) return 1;

@@ -6,12 +6,12 @@
  * C″ is continuous at the joins and its C‴ jumps; a C1 spline's C″ jumps too.
  *
  *   const ts = derivativeParameters(spline.params());
- *   const data = { params, second: spline.sampleDerivatives(ts, 2), third: …(ts, 3), ticks };
+ *   const data = { params, second: spline.sampleDerivatives(ts, 2), third: …(ts, 3), joints, ticks };
  *   plots.draw(r, data, showThird, labels);          // labels: { second, third, x, y }
  *   derivativeFacts(data) → { secondStart, secondEnd, thirdFirst, thirdLast, jumps }
  */
 import { drawPlotStrip } from "./plot-strip.js";
-import { PiecePlot, jumpJoins, pieceParameters } from "./piece-plot.js";
+import { PiecePlot, pieceParameters } from "./piece-plot.js";
 
 /** C″ is linear and C‴ constant on a cubic piece: two samples per piece draw them exactly. */
 export const PER_PIECE = 2;
@@ -37,9 +37,10 @@ export function derivativeBandHeight(height, third) {
 
 /**
  * What the plots show, read off the samples (flat [x, y] per parameter): C″ at t₀ and tₙ, C‴ on
- * the first and last piece, and the inner joins where C‴ jumps.
+ * the first and last piece; and the inner joins i where C‴ jumps, from the core's continuity
+ * check of the pieces (`joints`: `CompositeBezier.continuity()`, joint i − 1 at t_i): c < 3.
  */
-export function derivativeFacts({ params, second, third }) {
+export function derivativeFacts({ params, second, third, joints }) {
   const last = (params.length - 1) * PER_PIECE - 1;
   const at = (values, k) => [values[2 * k], values[2 * k + 1]];
   return {
@@ -47,7 +48,7 @@ export function derivativeFacts({ params, second, third }) {
     secondEnd: at(second, last),
     thirdFirst: at(third, 0),
     thirdLast: at(third, last),
-    jumps: jumpJoins(third, 2, PER_PIECE),
+    jumps: joints.flatMap(({ c }, k) => (c < 3 ? [k + 1] : [])),
   };
 }
 
