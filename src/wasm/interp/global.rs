@@ -131,29 +131,6 @@ fn type_name(value: &JsValue) -> String {
         value.js_typeof().as_string().unwrap_or_default()
     }
 }
-
-/// The interpolation setup for the flat `points` of dimension `dim`, its inputs checked in
-/// the documented order: points (coordinate count, finite), degree and number of points,
-/// params, options. Written once for both dimensions.
-fn setup(
-    points: &[f64],
-    dim: usize,
-    degree: usize,
-    params: &ParamArg,
-    options: &RawOptions,
-) -> Result<Setup, Error> {
-    check_flat(points, dim)?;
-    let derivatives = if options.closed {
-        0
-    } else {
-        options.derivatives()
-    };
-    check_data_shape(points.len() / dim, degree, derivatives, options.closed)?;
-    let params = params.resolve_flat(points, dim)?;
-    let typed = options.typed(dim)?;
-    Setup::new_flat(points, dim, degree, &params, &typed)
-}
-
 /// The arguments the three functions share, read from JavaScript in one order: the options
 /// object (its keys among `allowed`), points, params, dim (checked: 2 or 3) and degree.
 struct FitArgs {
@@ -187,15 +164,26 @@ impl FitArgs {
         })
     }
 
-    /// The interpolation setup of these arguments (see [`setup`]).
-    fn setup(&self) -> Result<Setup, Error> {
-        setup(
-            &self.points,
-            self.dim,
-            self.degree,
-            &self.params,
-            &self.options,
-        )
+    /// The interpolation setup, checked in the documented order: points (coordinate count,
+    /// finite), degree and number of points, params, options. Written once for both dimensions.
+    fn setup(self) -> Result<Setup, Error> {
+        let FitArgs {
+            options,
+            points,
+            params,
+            dim,
+            degree,
+        } = self;
+        check_flat(&points, dim)?;
+        let derivatives = if options.closed {
+            0
+        } else {
+            options.derivatives()
+        };
+        check_data_shape(points.len() / dim, degree, derivatives, options.closed)?;
+        let params = params.resolve_flat(&points, dim)?;
+        let typed = options.typed(dim)?;
+        Setup::new_flat(&points, dim, degree, &params, &typed)
     }
 }
 
@@ -225,9 +213,10 @@ pub fn interpolate_bspline(
         &options,
         INTERPOLATION_OPTIONS,
     )?;
+    let dim = args.dim;
     let setup = args.setup()?;
     let solution = setup.solve()?;
-    Ok(if args.dim == 2 {
+    Ok(if dim == 2 {
         JsBSplineCurve::from_2d(setup.curve(&solution)?)
     } else {
         JsBSplineCurve::from_3d(setup.curve(&solution)?)

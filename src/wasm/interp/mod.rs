@@ -41,27 +41,17 @@ impl ParamArg {
         }
     }
 
-    /// The parameters for `points` (checked by [`crate::interp::check_params`], or computed by
-    /// `parameterize`), for the functions that keep no recipe (the B-spline fits).
-    fn resolve<P: Point>(&self, points: &[P]) -> Result<Vec<f64>, Error> {
-        match self {
-            ParamArg::Values(v) => ParamChoice::Given(v.clone()),
-            ParamArg::Kind(s) => ParamChoice::Spacing(Parameterization::parse(s)?),
-            ParamArg::Alpha(a) => ParamChoice::Spacing(Parameterization::from_alpha(*a)?),
-        }
-        .resolve(points)
-    }
-
-    /// [`ParamArg::resolve`] for the flat points `coords` of dimension `dim`: given values
-    /// checked against the point count, a spacing computed from the points (in 3D, z = 0 for
-    /// 2D: the same distances).
-    fn resolve_flat(&self, coords: &[f64], dim: usize) -> Result<Vec<f64>, Error> {
-        match self {
-            ParamArg::Values(v) => {
-                crate::interp::check_params(v, coords.len() / dim)?;
-                Ok(v.clone())
+    /// The parameters for the flat points `coords` of dimension `dim`, for the functions that
+    /// keep no recipe (the B-spline fits): given values checked against the point count
+    /// ([`crate::interp::check_params`]), or the spacing computed from the points (in 3D, z = 0
+    /// for 2D: the same distances).
+    fn resolve_flat(self, coords: &[f64], dim: usize) -> Result<Vec<f64>, Error> {
+        match self.choice()? {
+            ParamChoice::Given(values) => {
+                crate::interp::check_params(&values, coords.len() / dim)?;
+                Ok(values)
             }
-            _ => self.resolve(&lift_points(coords, dim)?),
+            spacing => spacing.resolve(&lift_points(coords, dim)?),
         }
     }
 
