@@ -602,6 +602,37 @@ fn lagrange_reproduces_polynomials_of_degree_n() {
 }
 
 #[test]
+fn lagrange_set_point_recomputes_a_spacing_and_keeps_given_params() {
+    let p = pts2(&[(0.0, 0.0), (3.0, 4.0), (4.0, 4.0), (8.0, 1.0)]);
+    let moved = DVec2::new(6.0, 4.0);
+    // Chord spacing: after the move the parameters are the moved polygon's cumulative leg
+    // lengths, by hand: |(3,4)| = 5, |(3,0)| = 3, |(2,−3)| = √13.
+    let chord = splinelab::bspline::Parameterization::Chord;
+    let mut c = LagrangeCurve::with_params(p.clone(), chord.into()).unwrap();
+    c.set_point(2, moved).unwrap();
+    let expected = [0.0, 5.0, 8.0, 8.0 + 13f64.sqrt()];
+    for (got, want) in c.params().iter().zip(expected) {
+        assert_close(*got, want, 1e-14, "chord param after the move");
+    }
+    assert_close2(
+        c.evaluate(8.0).unwrap(),
+        moved,
+        1e-12,
+        "P(t_2) = the moved point",
+    );
+    // Given parameters stay.
+    let mut g = LagrangeCurve::new(p, &[0.0, 1.0, 2.0, 3.0]).unwrap();
+    g.set_point(2, moved).unwrap();
+    assert_eq!(g.params(), &[0.0, 1.0, 2.0, 3.0]);
+    assert_close2(
+        g.evaluate(2.0).unwrap(),
+        moved,
+        1e-12,
+        "P(2) = the moved point",
+    );
+}
+
+#[test]
 fn lagrange_basis_curves_are_the_product_formula_i_major() {
     // Uneven params on [1, 4]; 7 samples at t_k = 1 + k/2, which hit the nodes 1, 2.5 and 4.
     let t = [1.0, 2.5, 3.0, 4.0];

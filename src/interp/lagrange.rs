@@ -8,7 +8,7 @@
 //! an interval of length 4 (a common factor, which cancels), so they neither overflow nor
 //! underflow for the allowed number of points.
 
-use super::params::{check_params, check_point_count};
+use super::params::{check_point_count, ParamChoice};
 use crate::error::{check_in_range, Error, Result};
 use crate::geom::{check_out_len, Cartesian, Params, MAX_DEGREE};
 
@@ -18,18 +18,46 @@ pub struct LagrangeCurve<C: Cartesian> {
     points: Vec<C>,
     params: Vec<f64>,
     weights: Vec<f64>,
+    /// Where the parameters came from: a spacing is recomputed when a point moves.
+    choice: ParamChoice,
 }
 
 /// Largest number of data points of a Lagrange curve (degree [`MAX_DEGREE`]).
 pub const MAX_LAGRANGE_POINTS: usize = MAX_DEGREE + 1;
+
+/// The barycentric weights `w_i = 1/Π_{j≠i}(t_i − t_j)`, computed on the parameters scaled to
+/// an interval of length 4 (a common factor, which cancels in the barycentric formula).
+fn barycentric_weights(params: &[f64]) -> Vec<f64> {
+    let n = params.len();
+    let scale = 4.0 / (params[n - 1] - params[0]);
+    (0..n)
+        .map(|i| {
+            let product: f64 = (0..n)
+                .filter(|&j| j != i)
+                .map(|j| (params[i] - params[j]) * scale)
+                .product();
+            1.0 / product
+        })
+        .collect()
+}
 
 impl<C: Cartesian> LagrangeCurve<C> {
     /// The polynomial through `points` at `params`.
     ///
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2 points, [`Error::TooLarge`] above
-    /// [`MAX_LAGRANGE_POINTS`], then as [`check_params`].
+    /// [`MAX_LAGRANGE_POINTS`], then as [`check_params`](super::check_params).
     pub fn new(points: Vec<C>, params: &[f64]) -> Result<Self> {
+        Self::with_params(points, ParamChoice::Given(params.to_vec()))
+    }
+
+    /// The polynomial through `points` at given parameters or at a spacing computed from the
+    /// points (then recomputed by [`LagrangeCurve::set_point`]).
+    ///
+    /// # Errors
+    /// As [`LagrangeCurve::new`], and [`Error::CoincidentPoints`] for a spacing with α > 0 and
+    /// a repeated point.
+    pub fn with_params(points: Vec<C>, choice: ParamChoice) -> Result<Self> {
         check_point_count(points.len(), 2, "a Lagrange curve")?;
         if points.len() > MAX_LAGRANGE_POINTS {
             return Err(Error::TooLarge {
@@ -38,22 +66,13 @@ impl<C: Cartesian> LagrangeCurve<C> {
                 max: MAX_LAGRANGE_POINTS,
             });
         }
-        check_params(params, points.len())?;
-        let n = params.len();
-        let scale = 4.0 / (params[n - 1] - params[0]);
-        let weights = (0..n)
-            .map(|i| {
-                let product: f64 = (0..n)
-                    .filter(|&j| j != i)
-                    .map(|j| (params[i] - params[j]) * scale)
-                    .product();
-                1.0 / product
-            })
-            .collect();
+        let params = choice.resolve(&points)?;
+        let weights = barycentric_weights(&params);
         Ok(LagrangeCurve {
             points,
-            params: params.to_vec(),
+            params,
             weights,
+            choice,
         })
     }
 
@@ -77,12 +96,20 @@ impl<C: Cartesian> LagrangeCurve<C> {
         (self.params[0], self.params[self.params.len() - 1])
     }
 
-    /// Moves data point i in place (the weights depend on the parameters only).
+    /// Moves data point i in place. Given parameters (and so the weights) stay; a spacing is
+    /// recomputed from the moved points, with new weights. On an error the curve is unchanged.
     ///
     /// # Errors
-    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
+    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::CoincidentPoints`] for a
+    /// spacing with α > 0 and a repeated point.
     pub fn set_point(&mut self, i: usize, p: C) -> Result<()> {
         crate::geom::check::check_point_edit(i, self.points.len(), p)?;
+        if let ParamChoice::Spacing(_) = self.choice {
+            let mut points = self.points.clone();
+            points[i] = p;
+            self.params = self.choice.resolve(&points)?;
+            self.weights = barycentric_weights(&self.params);
+        }
         self.points[i] = p;
         Ok(())
     }

@@ -3,7 +3,7 @@
 use super::{flat_points, lift_point, lift_points, narrow, ParamArg};
 use crate::error::Error;
 use crate::geom::check_dim;
-use crate::interp::{check_point_count, LagrangeCurve, ParamChoice};
+use crate::interp::{check_point_count, LagrangeCurve};
 use crate::wasm::class::check_count;
 use crate::wasm::{numbers, whole};
 use glam::DVec3;
@@ -18,40 +18,14 @@ pub struct JsLagrangeCurve {
     inner: LagrangeCurve<DVec3>,
     /// 2 or 3.
     dim: usize,
-    /// Where the parameters came from: a spacing is recomputed when a point moves.
-    choice: ParamChoice,
 }
 
-fn build(
-    coords: &[f64],
-    dim: usize,
-    params: ParamArg,
-) -> Result<(LagrangeCurve<DVec3>, ParamChoice), Error> {
+/// The curve, its inputs checked in the documented order: points, their number, then params
+/// (whose kind or α is read only after the count).
+fn build(coords: &[f64], dim: usize, params: ParamArg) -> Result<LagrangeCurve<DVec3>, Error> {
     let points = lift_points(coords, dim)?;
     check_point_count(points.len(), 2, "a Lagrange curve")?;
-    let choice = params.choice()?;
-    let params = choice.resolve(&points)?;
-    Ok((LagrangeCurve::new(points, &params)?, choice))
-}
-
-/// Moves point i of `c`: in place for given parameters, by a rebuild (new parameters and
-/// weights) when they are a spacing computed from the points. On an error `c` is unchanged.
-fn move_point(
-    c: &mut LagrangeCurve<DVec3>,
-    choice: &ParamChoice,
-    i: usize,
-    p: DVec3,
-) -> Result<(), Error> {
-    match choice {
-        ParamChoice::Given(_) => c.set_point(i, p),
-        ParamChoice::Spacing(_) => {
-            let mut moved = c.clone();
-            moved.set_point(i, p)?;
-            let params = choice.resolve(moved.points())?;
-            *c = LagrangeCurve::new(moved.points().to_vec(), &params)?;
-            Ok(())
-        }
-    }
+    LagrangeCurve::with_params(points, params.choice()?)
 }
 
 /// `lagrange(points, dim, params)`: the polynomial of degree ≤ n through the n + 1 points at
@@ -67,8 +41,8 @@ pub fn lagrange(
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let dim = check_dim(whole("dim", dim)?)?;
-    let (inner, choice) = build(points, dim, params)?;
-    Ok(JsLagrangeCurve { inner, dim, choice })
+    let inner = build(points, dim, params)?;
+    Ok(JsLagrangeCurve { inner, dim })
 }
 
 #[wasm_bindgen(js_class = LagrangeCurve)]
@@ -157,7 +131,7 @@ impl JsLagrangeCurve {
         let point = numbers("point", &point)?;
         let i = whole("i", i)?;
         let p = lift_point(&point, self.dim)?;
-        move_point(&mut self.inner, &self.choice, i, p)?;
+        self.inner.set_point(i, p)?;
         Ok(())
     }
 }
