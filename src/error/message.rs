@@ -321,6 +321,17 @@ impl fmt::Display for Error {
             Error::Needs2D { operation, dim } => {
                 write!(f, "{operation} works on 2D curves; this curve has dim = {dim}")
             }
+            Error::Needs3D { operation, dim } => write!(
+                f,
+                "{operation} builds a 3D surface and needs a 3D curve; this curve has dim = {dim}"
+            ),
+            Error::ZeroDirection { name } => {
+                write!(f, "{name} must not be the zero vector (it gives no direction)")
+            }
+            Error::NeedsPolynomial { operation } => write!(
+                f,
+                "{operation} works on polynomial patches; this one has weights (a rational patch has a denominator)"
+            ),
             Error::AllWeightsZero { count } => write!(
                 f,
                 "all {count} weights are 0: the denominator w(t) = Σ w_i B_i(t) is 0 for every t, so there is no curve"

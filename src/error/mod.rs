@@ -436,6 +436,24 @@ pub enum Error {
         /// The curve's dimension.
         dim: usize,
     },
+    /// An operation needs a 3D curve (surfaces are 3D): `surface::revolve(&curve_2d, …)`.
+    Needs3D {
+        /// The operation.
+        operation: &'static str,
+        /// The curve's dimension.
+        dim: usize,
+    },
+    /// A direction that must not be the zero vector is: `surface::revolve(&c, o, DVec3::ZERO, τ)`.
+    ZeroDirection {
+        /// The argument's name ("axisDirection").
+        name: &'static str,
+    },
+    /// An operation defined for polynomial patches only was asked of a rational one:
+    /// `matrix_form()` on a patch with weights.
+    NeedsPolynomial {
+        /// The operation ("matrixForm").
+        operation: &'static str,
+    },
     /// Every weight is 0, so the denominator `Σ w_i B_i` vanishes for all parameters (only
     /// reachable where weights of any sign are allowed):
     /// `rational_poles(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2, &[0.0, 0.0, 0.0], 8)`.

@@ -54,7 +54,7 @@ impl BSplineSurface {
     /// non-zero basis functions, A2.3), then A4.4 for the quotient:
     /// `S_kl = (A_kl − Σ_{j=1..l} C(l,j) w_0j S_{k,l−j} − Σ_{i=1..k} C(k,i) w_i0 S_{k−i,l}
     ///          − Σ_{i=1..k} C(k,i) Σ_{j=1..l} C(l,j) w_ij S_{k−i,l−j}) / w`.
-    fn derivatives(&self, u: f64, v: f64, order: usize) -> Vec<Vec<DVec3>> {
+    pub(super) fn derivatives(&self, u: f64, v: f64, order: usize) -> Vec<Vec<DVec3>> {
         let (p, q) = (self.degree_u(), self.degree_v());
         let (ku, kv) = (self.knots_u.span(u), self.knots_v.span(v));
         let nu = basis_derivatives(self.knots_u.as_slice(), ku, u, p, order.min(p));

@@ -9,13 +9,19 @@
 //! `ΣΣ B_i^m(u) B_j^n(v) P_ij` is the case of one span, knots `0 … 0 1 … 1`
 //! ([`BSplineSurface::bezier`]).
 
+pub mod construct;
+mod curvature;
 mod evaluate;
 mod grid;
 mod insert;
+mod iso;
 mod mesh;
 mod net;
+mod teaching;
 
+pub use construct::{extrude, interpolate_surface, revolve, ruled, MAX_REVOLUTION_ARC};
 pub use mesh::Mesh;
+pub use teaching::{bezier_basis_matrix, PatchDeCasteljau, PatchMatrixForm};
 
 use crate::bspline::{basis_functions, BasisScratch, KnotVector};
 use crate::error::{Error, Result};
