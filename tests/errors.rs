@@ -769,6 +769,94 @@ fn knots_not_clamped() {
     );
 }
 
+// Issue 14: surfaces built from curves and grids (revolve, interpolate_surface, matrix form).
+
+/// The unit circle in the xz plane about (2, 0, 0): a torus profile.
+fn torus_profile() -> BSplineCurve<DVec3> {
+    rational::ellipse_arc(
+        DVec3::new(2.0, 0.0, 0.0),
+        DVec3::X,
+        DVec3::Z,
+        0.0,
+        std::f64::consts::TAU,
+    )
+    .unwrap()
+}
+
+#[test]
+fn zero_direction() {
+    fails(
+        splinelab::surface::revolve(&torus_profile(), DVec3::ZERO, DVec3::ZERO, 1.0),
+        "zero-direction",
+        &["axisDirection must not be the zero vector"],
+    );
+}
+
+#[test]
+fn needs_3d() {
+    fails(
+        splinelab::surface::revolve(&clamped_cubic(), DVec3::ZERO, DVec3::Z, 1.0),
+        "needs-3d",
+        &["revolve builds a 3D surface and needs a 3D curve; this curve has dim = 2"],
+    );
+}
+
+#[test]
+fn revolution_angle_out_of_range() {
+    for angle in [0.0, -1.0, 6.3] {
+        fails(
+            splinelab::surface::revolve(&torus_profile(), DVec3::ZERO, DVec3::Z, angle),
+            "invalid-sweep",
+            &["at most one full turn (2π)"],
+        );
+    }
+}
+
+#[test]
+fn surface_grid_size_mismatch() {
+    fails(
+        splinelab::surface::interpolate_surface(&[0.0; 30], 4, 3, 2, 2, Parameterization::Chord),
+        "net-coordinate-count",
+        &["rows·cols·3 = 4·3·3 = 36 coordinates, got 30"],
+    );
+}
+
+#[test]
+fn surface_degree_too_high_for_the_grid() {
+    let coords: Vec<f64> = (0..12)
+        .flat_map(|k| [(k / 3) as f64, (k % 3) as f64, 0.0])
+        .collect();
+    let e = fails(
+        splinelab::surface::interpolate_surface(&coords, 4, 3, 3, 3, Parameterization::Chord),
+        "in-argument",
+        &["degreeV: ", "needs at least 4 data points, got 3"],
+    );
+    let source = std::error::Error::source(&e).expect("a source");
+    assert!(source.to_string().contains("needs at least 4"));
+}
+
+#[test]
+fn needs_polynomial() {
+    let weights = [1.0, 2.0, 1.0, 1.0];
+    let patch = BSplineSurface::bezier(&unit_patch_coords(), 2, 2, Some(&weights)).unwrap();
+    fails(
+        patch.matrix_form(),
+        "needs-polynomial",
+        &["matrixForm works on polynomial patches"],
+    );
+}
+
+/// The corners of [`unit_patch`], flat.
+fn unit_patch_coords() -> Vec<f64> {
+    [
+        [0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 1.0],
+    ]
+    .concat()
+}
+
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {

@@ -19,11 +19,14 @@ pub mod bspline;
 pub mod interp;
 pub mod rational;
 pub mod surface;
+mod surface_build;
+mod surface_teaching;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
+pub use surface_build::{extrude, interpolate_surface, revolve, ruled};
 
 use crate::error::Error;
 use js_sys::Float64Array;

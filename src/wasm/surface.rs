@@ -12,7 +12,7 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen(js_name = BSplineSurface)]
 #[derive(Clone)]
 pub struct JsBSplineSurface {
-    inner: BSplineSurface,
+    pub(super) inner: BSplineSurface,
     /// The buffer behind `sampleGridView`'s result.
     view: Vec<f64>,
 }
@@ -108,7 +108,7 @@ impl JsBSplineSurface {
 #[wasm_bindgen(js_name = BezierSurface)]
 #[derive(Clone)]
 pub struct JsBezierSurface {
-    inner: BSplineSurface,
+    pub(super) inner: BSplineSurface,
     /// The buffer behind `sampleGridView`'s result.
     view: Vec<f64>,
 }
