@@ -541,3 +541,66 @@ fn interpolate_surface_passes_through_every_grid_point() {
         }
     }
 }
+
+// --- scipy fixture (tests/fixtures/make_surface_interp_fixtures.py). ----------------------------
+
+#[test]
+fn interpolate_surface_matches_scipy() {
+    let text = include_str!("fixtures/surface_interp_scipy.txt");
+    let mut checked = 0;
+    let mut lines = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .peekable();
+    while let Some(header) = lines.next() {
+        let words: Vec<&str> = header.split_whitespace().collect();
+        assert_eq!(words[0], "case");
+        let kind = Parameterization::parse(words[1]).unwrap();
+        let n: Vec<usize> = words[2..6].iter().map(|w| w.parse().unwrap()).collect();
+        let (p, q, rows, cols) = (n[0], n[1], n[2], n[3]);
+        let mut record = |tag: &str| -> Vec<f64> {
+            let line = lines.next().unwrap();
+            let mut words = line.split_whitespace();
+            assert_eq!(words.next(), Some(tag));
+            words.map(|w| w.parse().unwrap()).collect()
+        };
+        let (points, knots_u, knots_v, control) = (
+            record("points"),
+            record("knotsu"),
+            record("knotsv"),
+            record("control"),
+        );
+        let what = format!("{} {p}×{q} on {rows}×{cols}", words[1]);
+        let s = interpolate_surface(&points, rows, cols, p, q, kind).unwrap();
+        for (ours, theirs) in [
+            (s.knots_u().as_slice(), &knots_u),
+            (s.knots_v().as_slice(), &knots_v),
+        ] {
+            assert_eq!(ours.len(), theirs.len(), "{what}: knots");
+            for (a, b) in ours.iter().zip(theirs.iter()) {
+                assert_close(*a, *b, 1e-14, &format!("{what}: knot"));
+            }
+        }
+        for (k, (a, b)) in s.control_points().iter().zip(control.chunks(3)).enumerate() {
+            assert_close3(*a, DVec3::from_slice(b), 1e-11, &format!("{what}: P_{k}"));
+            checked += 1;
+        }
+        while lines.peek().is_some_and(|l| l.starts_with("value")) {
+            let v: Vec<f64> = lines
+                .next()
+                .unwrap()
+                .split_whitespace()
+                .skip(1)
+                .map(|w| w.parse().unwrap())
+                .collect();
+            assert_close3(
+                s.evaluate(v[0], v[1]).unwrap(),
+                DVec3::new(v[2], v[3], v[4]),
+                1e-11,
+                &format!("{what}: S({}, {})", v[0], v[1]),
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 200, "checked {checked}");
+}
