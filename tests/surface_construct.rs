@@ -445,6 +445,43 @@ fn a_ruled_surface_interpolates_linearly_between_its_curves() {
 }
 
 #[test]
+fn a_ruled_surface_raises_a_curve_with_a_break_piece_by_piece() {
+    // A quadratic with a triple knot at 1 (a corner where the curve may jump) against the
+    // cubic: the degree is raised on each side of the break.
+    let broken = BSplineCurve::new(
+        vec![
+            DVec3::new(0.0, 0.0, 3.0),
+            DVec3::new(1.0, 1.0, 3.0),
+            DVec3::new(2.0, 0.0, 3.5),
+            DVec3::new(2.5, -1.0, 3.0),
+            DVec3::new(3.0, 0.5, 4.0),
+            DVec3::new(4.0, 0.0, 3.0),
+        ],
+        2,
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0],
+        None,
+    )
+    .unwrap();
+    let a = cubic_a();
+    let s = ruled(&a, &broken).unwrap();
+    assert_eq!(s.degree_u(), 3);
+    let mut rng = Rng::new(12);
+    for _ in 0..200 {
+        let (t, v) = (rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+        let (pa, pb) = (
+            a.evaluate(2.0 * t).unwrap(),
+            broken.evaluate(2.0 * t).unwrap(),
+        );
+        assert_close3(
+            s.evaluate(t, v).unwrap(),
+            (1.0 - v) * pa + v * pb,
+            1e-12,
+            "(1 − v) A + v B",
+        );
+    }
+}
+
+#[test]
 fn a_ruled_surface_between_a_closed_b_spline_and_a_circle() {
     // An unclamped (closed, uniform knots) cubic and a rational circle: the rulings join A(u)
     // to B(u) — ends exact, every point on the segment.

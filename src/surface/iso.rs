@@ -14,10 +14,10 @@ impl BSplineSurface {
     /// A `u` outside the domain or not finite (the message names `u` and the range).
     pub fn iso_curve_u(&self, u: f64) -> Result<BSplineCurve<DVec3>> {
         let u = self.knots_u.check_named("u", u)?;
-        let weights = blend(&self.knots_u, u);
-        let (first, row_stride, col_stride) = (weights.0 * self.cols, self.cols, 1);
+        let (first_row, basis) = blend(&self.knots_u, u);
+        // Column j: the points (first_row + k, j), k = 0..=p, a stride of one row apart.
         let points = (0..self.cols)
-            .map(|j| self.combine(first + j * col_stride, row_stride, &weights.1))
+            .map(|j| self.combine(first_row * self.cols + j, self.cols, &basis))
             .collect();
         self.iso_curve(points, &self.knots_v)
     }
@@ -30,9 +30,10 @@ impl BSplineSurface {
     /// A `v` outside the domain or not finite.
     pub fn iso_curve_v(&self, v: f64) -> Result<BSplineCurve<DVec3>> {
         let v = self.knots_v.check_named("v", v)?;
-        let weights = blend(&self.knots_v, v);
+        let (first_col, basis) = blend(&self.knots_v, v);
+        // Row i: the points (i, first_col + k), k = 0..=q, side by side.
         let points = (0..self.rows)
-            .map(|i| self.combine(i * self.cols + weights.0, 1, &weights.1))
+            .map(|i| self.combine(i * self.cols + first_col, 1, &basis))
             .collect();
         self.iso_curve(points, &self.knots_u)
     }

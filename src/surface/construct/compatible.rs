@@ -74,13 +74,31 @@ fn from_homogeneous(
 /// on the homogeneous points). The curve lies in that larger spline space, so interpolation
 /// reproduces it exactly, up to rounding.
 ///
-/// # Errors
-/// [`crate::Error::ParamsNotIncreasing`] for a curve with a break (an interior knot of
-/// multiplicity `p + 1`), whose Greville abscissae repeat.
+/// A curve with breaks (interior knots of multiplicity `p + 1`, where the Greville abscissae
+/// would repeat) is elevated piece by piece between them and joined again.
 pub(super) fn elevated(curve: &BSplineCurve<DVec3>, degree: usize) -> Result<BSplineCurve<DVec3>> {
     let p = curve.degree();
     if degree <= p {
         return Ok(curve.clone());
+    }
+    let knots = curve.knots().as_slice();
+    // The first break: p + 1 equal knots u_s … u_{s+p} strictly inside the domain.
+    let (a, b) = curve.domain();
+    let split = (1..knots.len().saturating_sub(p + 1)).find(|&s| {
+        knots[s] > a && knots[s] < b && knots[s + p] == knots[s] && knots[s - 1] < knots[s]
+    });
+    if let Some(s) = split {
+        // Left: knots u_0 … u_{s+p}, points P_0 … P_{s−1}; right: u_s …, points P_s ….
+        let h = curve.homogeneous_points();
+        let rational = curve.is_rational();
+        let left = from_homogeneous(h[..s].to_vec(), p, knots[..=s + p].to_vec(), rational)?;
+        let right = from_homogeneous(h[s..].to_vec(), p, knots[s..].to_vec(), rational)?;
+        let (left, right) = (elevated(&left, degree)?, elevated(&right, degree)?);
+        let mut joined_knots = left.knots().as_slice().to_vec();
+        joined_knots.extend_from_slice(&right.knots().as_slice()[degree + 1..]);
+        let mut joined = left.homogeneous_points().to_vec();
+        joined.extend_from_slice(right.homogeneous_points());
+        return from_homogeneous(joined, degree, joined_knots, rational);
     }
     let t = degree - p;
     let mut knots = Vec::new();
