@@ -172,6 +172,50 @@ fn iso_curves_are_the_surface_along_the_line() {
     assert!(nurbs().iso_curve_v(1.0).is_err());
 }
 
+#[test]
+fn batched_curvatures_equal_the_single_call() {
+    // The batched kernel (its own basis derivatives and quotient rule) against curvature(u, v)
+    // (A2.3 and A4.4): NURBS 3 × 2 with a double knot in u, and a bilinear 1 × 1 patch.
+    let mut rng = Rng::new(13);
+    let coords: Vec<f64> = (0..30).flat_map(|_| rng.point3(3.0).to_array()).collect();
+    let weights: Vec<f64> = (0..30).map(|_| rng.range(0.5, 2.0)).collect();
+    let double_knot = BSplineSurface::from_flat(
+        &coords,
+        6,
+        5,
+        3,
+        2,
+        vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0],
+        vec![0.0, 0.0, 0.0, 0.2, 0.7, 1.0, 1.0, 1.0],
+        Some(&weights),
+    )
+    .unwrap();
+    let bilinear = BSplineSurface::bezier(
+        &[0.0, 0.0, 0.0, 0.0, 1.0, 0.5, 1.0, 0.0, -0.5, 1.0, 1.0, 1.0],
+        2,
+        2,
+        None,
+    )
+    .unwrap();
+    for surface in [double_knot, bilinear, nurbs(), bicubic(Some(&WEIGHTS))] {
+        let (u0, u1) = surface.knots_u().domain();
+        let (v0, v1) = surface.knots_v().domain();
+        let mut uvs: Vec<f64> = (0..200)
+            .flat_map(|_| [rng.range(u0, u1), rng.range(v0, v1)])
+            .collect();
+        uvs.extend([u0, v0, u1, v1, 0.5 * (u0 + u1), v1]);
+        let mut out = Vec::new();
+        surface.curvatures_into(&uvs, &mut out).unwrap();
+        assert_eq!(out.len(), uvs.len());
+        for (pair, kh) in uvs.chunks(2).zip(out.chunks(2)) {
+            let [k, h] = surface.curvature(pair[0], pair[1]).unwrap();
+            let scale = 1.0 + k.abs() + h.abs();
+            assert_close(kh[0], k, 1e-9 * scale * scale, &format!("K at {pair:?}"));
+            assert_close(kh[1], h, 1e-9 * scale, &format!("H at {pair:?}"));
+        }
+    }
+}
+
 /// The circle or arc `center + cos θ a + sin θ b`, θ from `start` over `sweep`, as an exact NURBS.
 fn arc(center: DVec3, a: DVec3, b: DVec3, start: f64, sweep: f64) -> BSplineCurve<DVec3> {
     ellipse_arc(center, a, b, start, sweep).unwrap()
