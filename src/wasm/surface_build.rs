@@ -209,6 +209,8 @@ pub fn interpolate_surface(
     let points = numbers("points", &points)?;
     let (rows, cols) = (whole("rows", rows)?, whole("cols", cols)?);
     let (degree_u, degree_v) = (whole("degreeU", degree_u)?, whole("degreeV", degree_v)?);
+    // The grid's errors come before the option's (the documented validation order).
+    surface::construct::check_grid(&points, rows, cols, degree_u, degree_v)?;
     let kind = Parameterization::parse(&string_arg("kind", &kind, Some("chord"))?)?;
     to_js(&surface::interpolate_surface(
         &points, rows, cols, degree_u, degree_v, kind,

@@ -35,6 +35,34 @@ pub fn interpolate_surface(
     degree_v: usize,
     kind: Parameterization,
 ) -> Result<BSplineSurface> {
+    check_grid(points, rows, cols, degree_u, degree_v)?;
+    let grid: Vec<DVec3> = points.chunks_exact(3).map(DVec3::from_slice).collect();
+    let at = |i: usize, j: usize| grid[i * cols + j];
+    let params_u = averaged_params(rows, cols, kind, at)?;
+    let params_v = averaged_params(cols, rows, kind, |k, l| at(l, k))?;
+    let knots_u = averaging_knots(&params_u, degree_u, false, false);
+    let knots_v = averaging_knots(&params_v, degree_v, false, false);
+    // Columns in u: data point k is row k of the grid, cols·3 numbers (row-major already).
+    let r = solve(points, 3 * cols, degree_u, &params_u, &knots_u)?;
+    // Rows in v: data point l is column l of R, rows·3 numbers.
+    let transposed = transpose(&r, rows, cols);
+    let net_t = solve(&transposed, 3 * rows, degree_v, &params_v, &knots_v)?;
+    let net = transpose(&net_t, cols, rows);
+    BSplineSurface::from_flat(&net, rows, cols, degree_u, degree_v, knots_u, knots_v, None)
+}
+
+/// The checks of [`interpolate_surface`] before the parameters: the grid's size, its numbers,
+/// and the degrees against it (so a caller parsing `kind` can report these first).
+///
+/// # Errors
+/// As [`interpolate_surface`], up to [`Error::TooFewDataPoints`].
+pub fn check_grid(
+    points: &[f64],
+    rows: usize,
+    cols: usize,
+    degree_u: usize,
+    degree_v: usize,
+) -> Result<()> {
     let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
     if points.len() != 3 * count {
         return Err(Error::NetCoordinateCount {
@@ -58,19 +86,7 @@ pub fn interpolate_surface(
             ));
         }
     }
-    let grid: Vec<DVec3> = points.chunks_exact(3).map(DVec3::from_slice).collect();
-    let at = |i: usize, j: usize| grid[i * cols + j];
-    let params_u = averaged_params(rows, cols, kind, at)?;
-    let params_v = averaged_params(cols, rows, kind, |k, l| at(l, k))?;
-    let knots_u = averaging_knots(&params_u, degree_u, false, false);
-    let knots_v = averaging_knots(&params_v, degree_v, false, false);
-    // Columns in u: data point k is row k of the grid, cols·3 numbers (row-major already).
-    let r = solve(points, 3 * cols, degree_u, &params_u, &knots_u)?;
-    // Rows in v: data point l is column l of R, rows·3 numbers.
-    let transposed = transpose(&r, rows, cols);
-    let net_t = solve(&transposed, 3 * rows, degree_v, &params_v, &knots_v)?;
-    let net = transpose(&net_t, cols, rows);
-    BSplineSurface::from_flat(&net, rows, cols, degree_u, degree_v, knots_u, knots_v, None)
+    Ok(())
 }
 
 /// Parameters along the `lines` lines of `length` points each (`point(k, l)` is point `k` of
