@@ -312,4 +312,7 @@ fn extrude_ruled_and_interpolate_surface_from_js() {
         "arc".into()
     ))
     .contains("kind must be one of"));
+    // The grid's errors come before the option's.
+    let wrong_grid = wasm::interpolate_surface(arr(&points), 4.0, 4.0, 3.0, 2.0, "arc".into());
+    assert!(message(wrong_grid).contains("rows·cols·3"));
 }
