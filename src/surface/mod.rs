@@ -9,13 +9,19 @@
 //! `ΣΣ B_i^m(u) B_j^n(v) P_ij` is the case of one span, knots `0 … 0 1 … 1`
 //! ([`BSplineSurface::bezier`]).
 
+mod adaptive;
 mod evaluate;
 mod grid;
 mod insert;
+mod intersect;
 mod mesh;
 mod net;
+mod patches;
 
+pub use adaptive::{MAX_ADAPTIVE_DEPTH, MAX_ADAPTIVE_VERTICES};
+pub use intersect::MAX_SURFACE_INTERSECTION_DEPTH;
 pub use mesh::Mesh;
+pub use patches::SEAM_TOLERANCE;
 
 use crate::bspline::{basis_functions, BasisScratch, KnotVector};
 use crate::error::{Error, Result};
