@@ -19,6 +19,7 @@ pub mod bspline;
 pub mod interp;
 pub mod rational;
 pub mod surface;
+mod surface_mesh;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
