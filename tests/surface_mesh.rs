@@ -379,6 +379,12 @@ fn lines_meet_surfaces_where_expected() {
     assert_close(found[0][0], 0.3, 1e-12, "u");
     assert_close(found[0][1], 1.4, 1e-12, "v");
     assert_close(found[0][2], (z + 5.0) / 2.0, 1e-12, "s");
+    // A line lying in the plane: a finite sample of the overlap, each point on the line.
+    let along = hits(&plane, DVec3::new(0.0, 1.0, 1.0 - 3.0), DVec3::new(1.0, 0.5, 0.5), 1e-8);
+    assert!(!along.is_empty() && along.len() <= 9, "{along:?}");
+    for pair in along.windows(2) {
+        assert!(pair[1][2] - pair[0][2] > 1e-8, "{along:?}");
+    }
     // The saddle z = x² − y² over [−1, 1]² (x = 2u − 1, y = 2v − 1; x² has Bernstein
     // coefficients 1, −1, 1) and the line y = 0.3, z = 0.25 along x: x² = 0.34, twice.
     let c = [1.0, -1.0, 1.0];

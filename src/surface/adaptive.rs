@@ -4,7 +4,6 @@
 use super::mesh::fill_missing_normals;
 use super::{BSplineSurface, Mesh};
 use crate::error::{check_tolerance, Error, Result};
-use std::collections::{BTreeMap, HashMap};
 
 /// Deepest quadtree level below a Bézier patch (a leaf then spans `2^-24` of its patch).
 pub const MAX_ADAPTIVE_DEPTH: u32 = 24;
@@ -46,7 +45,7 @@ impl BSplineSurface {
     /// (Positions are stored as `f32`: add their rounding, ~`6e-8` of the coordinates.)
     ///
     /// **No cracks.** Leaf corners sit on a dyadic lattice (exact integers per patch); a vertex
-    /// is one lattice point, evaluated once, so neighbours share it bit for bit. A leaf whose
+    /// is one lattice point, evaluated once, so neighbours share it (one index, one value). A leaf whose
     /// sides carry corners of smaller neighbours (T-junctions) includes them: it is a fan from
     /// its centre over all its boundary vertices in order; otherwise two triangles
     /// `(00, 10, 11)`, `(00, 11, 01)`. Both sides of every leaf edge therefore use the same
@@ -110,71 +109,57 @@ impl BSplineSurface {
     }
 
     /// The crack-free triangulation of the leaves (see [`BSplineSurface::tessellate_adaptive`]).
+    /// The corners, sorted by `(u, v)` and by `(v, u)`, are both the vertex list (a corner's
+    /// id is its rank) and the lattice lines: the corners strictly inside a leaf's side are a
+    /// binary-searched range. Centres of fans follow the corners.
     fn triangulate(&self, leaves: &[Leaf], lattice: &Lattice) -> Result<Mesh> {
-        // Corners on every lattice line: u = const → its v values, v = const → its u values.
-        let mut on_u: BTreeMap<u64, Vec<u64>> = BTreeMap::new();
-        let mut on_v: BTreeMap<u64, Vec<u64>> = BTreeMap::new();
+        let mut by_u: Vec<(u64, u64)> = Vec::with_capacity(4 * leaves.len());
         for l in leaves {
             let (u1, v1) = (l.u0 + l.size, l.v0 + l.size);
-            for (u, v) in [(l.u0, l.v0), (u1, l.v0), (u1, v1), (l.u0, v1)] {
-                on_u.entry(u).or_default().push(v);
-                on_v.entry(v).or_default().push(u);
-            }
+            by_u.extend_from_slice(&[(l.u0, l.v0), (u1, l.v0), (u1, v1), (l.u0, v1)]);
         }
-        for line in on_u.values_mut().chain(on_v.values_mut()) {
-            line.sort_unstable();
-            line.dedup();
+        by_u.sort_unstable();
+        by_u.dedup();
+        let mut by_v: Vec<(u64, u64)> = by_u.iter().map(|&(u, v)| (v, u)).collect();
+        by_v.sort_unstable();
+        if by_u.len() > MAX_ADAPTIVE_VERTICES {
+            return Err(Error::TooLarge {
+                what: "adaptive mesh vertices",
+                value: by_u.len(),
+                max: MAX_ADAPTIVE_VERTICES,
+            });
         }
-        // Corners strictly inside (a, b) on a line, increasing.
-        let inside = |line: Option<&Vec<u64>>, a: u64, b: u64| -> Vec<u64> {
-            line.map_or(Vec::new(), |xs| {
-                let from = xs.partition_point(|&x| x <= a);
-                let to = xs.partition_point(|&x| x < b);
-                xs.get(from..to).map_or(Vec::new(), <[u64]>::to_vec)
-            })
-        };
         let mut mesh = MeshBuilder::default();
+        for &key in &by_u {
+            mesh.push(self, lattice, key)?;
+        }
+        let id = |key: (u64, u64)| by_u.binary_search(&key).map_or(0, |k| k as u32);
         let mut boundary = Vec::new();
         for l in leaves {
             let (u0, v0, u1, v1) = (l.u0, l.v0, l.u0 + l.size, l.v0 + l.size);
             // Counter-clockwise in (u, v): bottom, right, top, left.
             boundary.clear();
             boundary.push((u0, v0));
-            boundary.extend(inside(on_v.get(&v0), u0, u1).into_iter().map(|u| (u, v0)));
+            boundary.extend(inside(&by_v, v0, u0, u1).map(|u| (u, v0)));
             boundary.push((u1, v0));
-            boundary.extend(inside(on_u.get(&u1), v0, v1).into_iter().map(|v| (u1, v)));
+            boundary.extend(inside(&by_u, u1, v0, v1).map(|v| (u1, v)));
             boundary.push((u1, v1));
-            boundary.extend(
-                inside(on_v.get(&v1), u0, u1)
-                    .into_iter()
-                    .rev()
-                    .map(|u| (u, v1)),
-            );
+            boundary.extend(inside(&by_v, v1, u0, u1).rev().map(|u| (u, v1)));
             boundary.push((u0, v1));
-            boundary.extend(
-                inside(on_u.get(&u0), v0, v1)
-                    .into_iter()
-                    .rev()
-                    .map(|v| (u0, v)),
-            );
-            if boundary.len() == 4 {
-                let [a, b, c, d] = [
-                    mesh.vertex(self, lattice, (u0, v0))?,
-                    mesh.vertex(self, lattice, (u1, v0))?,
-                    mesh.vertex(self, lattice, (u1, v1))?,
-                    mesh.vertex(self, lattice, (u0, v1))?,
-                ];
+            boundary.extend(inside(&by_u, u0, v0, v1).rev().map(|v| (u0, v)));
+            if let [a, b, c, d] = boundary[..] {
+                let [a, b, c, d] = [id(a), id(b), id(c), id(d)];
                 mesh.indices.extend_from_slice(&[a, b, c, a, c, d]);
                 continue;
             }
-            let centre = mesh.vertex(self, lattice, (u0 + l.size / 2, v0 + l.size / 2))?;
-            let ids = boundary
-                .iter()
-                .map(|&key| mesh.vertex(self, lattice, key))
-                .collect::<Result<Vec<u32>>>()?;
-            for (k, &a) in ids.iter().enumerate() {
-                let b = ids.get((k + 1) % ids.len()).copied().unwrap_or(a);
-                mesh.indices.extend_from_slice(&[centre, a, b]);
+            let centre = mesh.push(self, lattice, (u0 + l.size / 2, v0 + l.size / 2))?;
+            for (k, &a) in boundary.iter().enumerate() {
+                let b = boundary
+                    .get(k + 1)
+                    .or(boundary.first())
+                    .copied()
+                    .unwrap_or(a);
+                mesh.indices.extend_from_slice(&[centre, id(a), id(b)]);
             }
         }
         fill_missing_normals(
@@ -190,6 +175,18 @@ impl BSplineSurface {
             indices: mesh.indices,
         })
     }
+}
+
+/// The second coordinates strictly inside `(a, b)` of the points `(at, ·)` of `sorted`, in order.
+fn inside(
+    sorted: &[(u64, u64)],
+    at: u64,
+    a: u64,
+    b: u64,
+) -> impl DoubleEndedIterator<Item = u64> + '_ {
+    let from = sorted.partition_point(|&x| x <= (at, a));
+    let to = sorted.partition_point(|&x| x < (at, b));
+    sorted.get(from..to).unwrap_or(&[]).iter().map(|&(_, y)| y)
 }
 
 /// The distinct knots in the domain `[a, b]`, ends included: the patch boundaries.
@@ -229,7 +226,6 @@ fn parameter(breaks: &[f64], x: u64) -> f64 {
 /// The vertices (one per lattice point) and triangles being built.
 #[derive(Default)]
 struct MeshBuilder {
-    ids: HashMap<(u64, u64), u32>,
     points: Vec<f64>,
     normals: Vec<f64>,
     uvs: Vec<f32>,
@@ -238,17 +234,14 @@ struct MeshBuilder {
 }
 
 impl MeshBuilder {
-    /// The index of the vertex at lattice point `key`, evaluated on the surface the first time.
-    fn vertex(
+    /// A new vertex at lattice point `key`, evaluated on the surface; its index.
+    fn push(
         &mut self,
         surface: &BSplineSurface,
         lattice: &Lattice,
         key: (u64, u64),
     ) -> Result<u32> {
-        if let Some(&id) = self.ids.get(&key) {
-            return Ok(id);
-        }
-        let k = self.ids.len();
+        let k = self.uvs.len() / 2;
         if k >= MAX_ADAPTIVE_VERTICES {
             return Err(Error::TooLarge {
                 what: "adaptive mesh vertices",
@@ -268,8 +261,6 @@ impl MeshBuilder {
         self.points.extend(point.to_array());
         self.normals.extend(normal.to_array());
         self.uvs.extend_from_slice(&[u as f32, v as f32]);
-        let id = k as u32;
-        self.ids.insert(key, id);
-        Ok(id)
+        Ok(k as u32)
     }
 }
