@@ -117,9 +117,10 @@ impl BSplineSurface {
                 continue;
             }
             let s = (point - origin).dot(direction) / (length * length);
-            hits.push(([u, v, s], point));
+            // Few hits: kept sorted by s as they come (no sort instantiation in the wasm).
+            let at = hits.partition_point(|(h, _)| h[2] <= s);
+            hits.insert(at, ([u, v, s], point));
         }
-        hits.sort_by(|a, b| a.0[2].total_cmp(&b.0[2]));
         Ok(hits.into_iter().map(|(h, _)| h).collect())
     }
 
