@@ -380,7 +380,12 @@ fn lines_meet_surfaces_where_expected() {
     assert_close(found[0][1], 1.4, 1e-12, "v");
     assert_close(found[0][2], (z + 5.0) / 2.0, 1e-12, "s");
     // A line lying in the plane: a finite sample of the overlap, each point on the line.
-    let along = hits(&plane, DVec3::new(0.0, 1.0, 1.0 - 3.0), DVec3::new(1.0, 0.5, 0.5), 1e-8);
+    let along = hits(
+        &plane,
+        DVec3::new(0.0, 1.0, 1.0 - 3.0),
+        DVec3::new(1.0, 0.5, 0.5),
+        1e-8,
+    );
     assert!(!along.is_empty() && along.len() <= 9, "{along:?}");
     for pair in along.windows(2) {
         assert!(pair[1][2] - pair[0][2] > 1e-8, "{along:?}");
