@@ -27,6 +27,7 @@ import {
 } from "./inputs.mjs";
 import { dragBench } from "./drag.mjs";
 import { solveBench, splineDragBench, SOLVE_SIZES } from "./interp.mjs";
+import { adaptiveBench, surfaceDragBench } from "./surface.mjs";
 
 const args = new Set(process.argv.slice(2));
 const QUICK = args.has("--quick");
@@ -1044,6 +1045,13 @@ const splineDragNode = splineDragBench(sl, { frames: dragFrames, warmup: 10 });
 process.stdout.write(".\n");
 const splineDragChromium = dragChromium?.spline ?? (dragChromium?.error ? dragChromium : null);
 
+// ---- (j) adaptive tessellation, (k) surface drag frame (issue 14) ------------------------------
+process.stdout.write("(j) adaptive tessellation ");
+const adaptive = adaptiveBench(sl);
+process.stdout.write(".\n(k) surface drag frame (Node) ");
+const surfaceDragNode = surfaceDragBench(sl, { frames: dragFrames, warmup: 10 });
+process.stdout.write(".\n");
+
 // ---- sizes, machine, report --------------------------------------------------------------------
 const wasmBytes = readFileSync(WASM);
 const wasm = {
@@ -1152,6 +1160,24 @@ for (const [label, d] of [
       `    ${pad(label, 9)} ${pad(d.method, 44)} median ${d.medianMs.toFixed(2)} ms, p95 ${d.p95Ms.toFixed(2)} ms, max ${d.maxMs.toFixed(2)} ms; agreement with a rebuild ${fmtDiff(d.agreement)}`,
     );
 }
+lines.push("");
+lines.push(`(j) adaptive tessellation of a ${adaptive.patch}, tolerance ${adaptive.tolerance}`);
+lines.push(
+  `    tessellateAdaptive: ${adaptive.adaptiveTriangles} triangles (${adaptive.adaptiveVertices} vertices, ${adaptive.adaptiveMs.toFixed(1)} ms), measured max error ${fmtDiff(adaptive.adaptiveError)}`,
+);
+lines.push(
+  `    uniform n × n with the same max error: n = ${adaptive.uniformSameError.n}, ${adaptive.uniformSameError.triangles} triangles; ratio ${adaptive.ratio.toFixed(3)}`,
+);
+lines.push(
+  `    uniform n × n within the tolerance:    n = ${adaptive.uniformTolerance.n}, ${adaptive.uniformTolerance.triangles} triangles; ratio ${adaptive.ratioAtTolerance.toFixed(3)}`,
+);
+lines.push("");
+lines.push(
+  `(k) one drag frame of a 16×16 bicubic NURBS patch (${dragFrames} frames after 10 warm-up)`,
+);
+lines.push(
+  `    ${pad("Node", 9)} ${pad(surfaceDragNode.method, 44)} median ${surfaceDragNode.medianMs.toFixed(2)} ms, p95 ${surfaceDragNode.p95Ms.toFixed(2)} ms, max ${surfaceDragNode.maxMs.toFixed(2)} ms; ${surfaceDragNode.vertices} vertices with normals and uvs`,
+);
 lines.push("");
 lines.push(
   `wasm: ${wasm.bytes.toLocaleString("en")} bytes after wasm-opt, ${wasm.gzipBytes.toLocaleString("en")} bytes gzipped (-9)`,
@@ -1293,6 +1319,20 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
     );
   }
   target(
+    "(j) adaptive / uniform triangles, equal max deviation",
+    adaptive.ratio,
+    "≤ ¼",
+    adaptive.ratio <= 0.25,
+    `${adaptive.adaptiveTriangles} against ${adaptive.uniformSameError.triangles}`,
+  );
+  target(
+    "(k) surface drag frame, Node (median)",
+    surfaceDragNode.medianMs,
+    "≤ 4 ms (goal set in Chromium)",
+    surfaceDragNode.medianMs <= 4,
+    surfaceDragNode.method,
+  );
+  target(
     "wasm gzipped (issue 15's budget)",
     wasm.gzipBytes,
     "≤ 160 KB (160,000 bytes)",
@@ -1308,7 +1348,7 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
   );
 }
 lines.push("");
-lines.push("targets (issues 5, 13 and 15; reported from this run, not asserted):");
+lines.push("targets (issues 5, 13, 14 and 15; reported from this run, not asserted):");
 for (const t of targets) {
   const v =
     typeof t.value === "number" && Number.isFinite(t.value)
@@ -1341,6 +1381,7 @@ const report = {
   workloads: results,
   drag: { frames: dragFrames, node: dragNode, chromium: dragChromium },
   interpolation: { solves, splineDrag: { node: splineDragNode, chromium: splineDragChromium } },
+  surfaces: { adaptive, drag: { node: surfaceDragNode } },
   wasm,
   targets,
   table: lines.join("\n"),

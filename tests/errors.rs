@@ -857,6 +857,95 @@ fn unit_patch_coords() -> Vec<f64> {
     .concat()
 }
 
+// ---- Surface meshes and line intersection (issue 14) ----------------------------------------
+
+/// A curved bicubic patch: a bump over the unit square.
+fn bump_patch() -> BSplineSurface {
+    let coords: Vec<f64> = (0..16)
+        .flat_map(|k| {
+            let (i, j) = (k / 4, k % 4);
+            let z = if (1..3).contains(&i) && (1..3).contains(&j) {
+                1.0
+            } else {
+                0.0
+            };
+            [i as f64 / 3.0, j as f64 / 3.0, z]
+        })
+        .collect();
+    BSplineSurface::bezier(&coords, 4, 4, None).unwrap()
+}
+
+#[test]
+fn adaptive_tolerance_not_positive() {
+    fails(
+        bump_patch().tessellate_adaptive(0.0),
+        "invalid-tolerance",
+        &["tolerance 0 is not usable", "> 0"],
+    );
+    fails(
+        bump_patch().tessellate_adaptive(-0.1),
+        "invalid-tolerance",
+        &["tolerance -0.1"],
+    );
+    fails(
+        bump_patch().intersect_line(DVec3::ZERO, DVec3::Z, 0.0),
+        "invalid-tolerance",
+        &["tolerance 0"],
+    );
+}
+
+#[test]
+fn adaptive_tolerance_nan() {
+    fails(
+        bump_patch().tessellate_adaptive(f64::NAN),
+        "invalid-tolerance",
+        &["tolerance NaN"],
+    );
+    fails(
+        bump_patch().intersect_line(DVec3::ZERO, DVec3::Z, f64::NAN),
+        "invalid-tolerance",
+        &["tolerance NaN"],
+    );
+    fails(
+        bump_patch().intersect_line(DVec3::new(0.0, f64::NAN, 0.0), DVec3::Z, 1e-6),
+        "not-finite",
+        &["origin coordinate 1"],
+    );
+}
+
+#[test]
+fn intersect_line_zero_direction() {
+    let e = fails(
+        bump_patch().intersect_line(DVec3::ZERO, DVec3::ZERO, 1e-6),
+        "in-argument",
+        &["direction: its length must be > 0, got 0"],
+    );
+    let source = std::error::Error::source(&e).expect("a source");
+    assert_eq!(source.to_string(), "its length must be > 0, got 0");
+}
+
+#[test]
+fn adaptive_mesh_too_large() {
+    // 520 × 520 bilinear patches: more patches than MAX_ADAPTIVE_VERTICES = 2^18 vertices.
+    let n = 521;
+    let coords: Vec<f64> = (0..n * n)
+        .flat_map(|k| [(k / n) as f64, (k % n) as f64, 0.0])
+        .collect();
+    let knots: Vec<f64> = (0..n + 2).map(|k| k.clamp(1, n) as f64).collect();
+    let many = BSplineSurface::from_flat(&coords, n, n, 1, 1, knots.clone(), knots, None).unwrap();
+    fails(
+        many.tessellate_adaptive(1.0),
+        "too-large",
+        &["adaptive mesh vertices", "270400", "262144"],
+    );
+    // A tolerance far below rounding: still not flat at the depth cap.
+    fails(
+        bump_patch().tessellate_adaptive(1e-300),
+        "too-large",
+        &["adaptive subdivision depth", "25", "at most 24"],
+    );
+}
+
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {

@@ -9,7 +9,7 @@ use glam::{DVec3, DVec4};
 impl BSplineSurface {
     /// A triangle mesh of the whole surface: `(nu + 1)(nv + 1)` vertices at equally spaced
     /// parameters (`nu` × `nv` quads, like three.js' `ParametricGeometry`), vertex `a·(nv + 1) + b`
-    /// at `(u_a, v_b)`, unit normals from [`BSplineSurface::normal`] (where even its limit
+    /// at `(u_a, v_b)` (kept in [`Mesh::uvs`]), unit normals from [`BSplineSurface::normal`] (where even its limit
     /// gives none, the mean of the adjacent triangles' normals), and two triangles per quad,
     /// counter-clockwise seen from the side the normals point to.
     ///
@@ -44,33 +44,17 @@ impl BSplineSurface {
                 indices.extend_from_slice(&[v00, v10, v10 + 1, v00, v10 + 1, v00 + 1]);
             }
         }
-        if !missing.is_empty() {
-            // Where even the limit gives no normal: the sum of the adjacent triangles'
-            // (area-weighted) normals, one pass over the triangles.
-            let vertex = |k: usize| {
-                points
-                    .get(3 * k..3 * k + 3)
-                    .map_or(DVec3::ZERO, DVec3::from_slice)
-            };
-            let mut sums = vec![DVec3::ZERO; cu * cv];
-            for t in indices.chunks_exact(3) {
-                let [i, j, k] = [t[0] as usize, t[1] as usize, t[2] as usize];
-                let face = (vertex(j) - vertex(i)).cross(vertex(k) - vertex(i));
-                for m in [i, j, k] {
-                    if let Some(sum) = sums.get_mut(m) {
-                        *sum += face;
-                    }
-                }
-            }
-            for k in missing {
-                if let (Some(n), Some(sum)) = (normals.get_mut(3 * k..3 * k + 3), sums.get(k)) {
-                    n.copy_from_slice(&sum.normalize_or_zero().to_array());
-                }
+        fill_missing_normals(&points, &mut normals, &indices, &missing);
+        let mut uvs = Vec::with_capacity(2 * cu * cv);
+        for &u in &us {
+            for &v in &vs {
+                uvs.extend_from_slice(&[u as f32, v as f32]);
             }
         }
         Ok(Mesh {
             positions: points.iter().map(|&x| x as f32).collect(),
             normals: normals.iter().map(|&x| x as f32).collect(),
+            uvs,
             indices,
         })
     }
@@ -155,6 +139,39 @@ impl BSplineSurface {
     }
 }
 
+/// Where even the limit gives no normal (vertices `missing`, normal left zero): the sum of the
+/// adjacent triangles' (area-weighted) normals, normalised; one pass over the triangles.
+pub(super) fn fill_missing_normals(
+    points: &[f64],
+    normals: &mut [f64],
+    indices: &[u32],
+    missing: &[usize],
+) {
+    if missing.is_empty() {
+        return;
+    }
+    let vertex = |k: usize| {
+        points
+            .get(3 * k..3 * k + 3)
+            .map_or(DVec3::ZERO, DVec3::from_slice)
+    };
+    let mut sums = vec![DVec3::ZERO; points.len() / 3];
+    for t in indices.chunks_exact(3) {
+        let [i, j, k] = [t[0] as usize, t[1] as usize, t[2] as usize];
+        let face = (vertex(j) - vertex(i)).cross(vertex(k) - vertex(i));
+        for m in [i, j, k] {
+            if let Some(sum) = sums.get_mut(m) {
+                *sum += face;
+            }
+        }
+    }
+    for &k in missing {
+        if let (Some(n), Some(sum)) = (normals.get_mut(3 * k..3 * k + 3), sums.get(k)) {
+            n.copy_from_slice(&sum.normalize_or_zero().to_array());
+        }
+    }
+}
+
 /// A triangle mesh ready for WebGL: see [`BSplineSurface::tessellate`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mesh {
@@ -162,6 +179,9 @@ pub struct Mesh {
     pub positions: Vec<f32>,
     /// Unit vertex normals, xyz.
     pub normals: Vec<f32>,
+    /// The surface parameters `(u, v)` of each vertex (same order): position `k` is
+    /// `S(uvs[2k], uvs[2k + 1])`.
+    pub uvs: Vec<f32>,
     /// Three vertex indices per triangle.
     pub indices: Vec<u32>,
 }

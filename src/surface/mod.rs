@@ -9,18 +9,24 @@
 //! `ΣΣ B_i^m(u) B_j^n(v) P_ij` is the case of one span, knots `0 … 0 1 … 1`
 //! ([`BSplineSurface::bezier`]).
 
+mod adaptive;
 pub mod construct;
 mod curvature;
 mod evaluate;
 mod grid;
 mod insert;
+mod intersect;
 mod iso;
 mod mesh;
 mod net;
+mod patches;
 mod teaching;
 
+pub use adaptive::{MAX_ADAPTIVE_DEPTH, MAX_ADAPTIVE_VERTICES};
 pub use construct::{extrude, interpolate_surface, revolve, ruled, MAX_REVOLUTION_ARC};
+pub use intersect::MAX_SURFACE_INTERSECTION_DEPTH;
 pub use mesh::Mesh;
+pub use patches::SEAM_TOLERANCE;
 pub use teaching::{bezier_basis_matrix, PatchDeCasteljau, PatchMatrixForm};
 
 use crate::bspline::{basis_functions, BasisScratch, KnotVector};

@@ -20,6 +20,7 @@ pub mod interp;
 pub mod rational;
 pub mod surface;
 mod surface_build;
+mod surface_mesh;
 mod surface_teaching;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};

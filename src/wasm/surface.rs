@@ -153,8 +153,8 @@ impl JsBezierSurface {
     }
 }
 
-/// `{ positions, normals, indices }` as typed arrays.
-fn mesh_to_js(mesh: &Mesh) -> Result<JsValue, JsError> {
+/// `{ positions, normals, uvs, indices }` as typed arrays.
+pub(super) fn mesh_to_js(mesh: &Mesh) -> Result<JsValue, JsError> {
     let object = js_sys::Object::new();
     let set = |key: &str, value: &JsValue| {
         js_sys::Reflect::set(&object, &JsValue::from_str(key), value)
@@ -169,6 +169,7 @@ fn mesh_to_js(mesh: &Mesh) -> Result<JsValue, JsError> {
         "normals",
         &js_sys::Float32Array::from(&mesh.normals[..]).into(),
     )?;
+    set("uvs", &js_sys::Float32Array::from(&mesh.uvs[..]).into())?;
     set(
         "indices",
         &js_sys::Uint32Array::from(&mesh.indices[..]).into(),
@@ -299,11 +300,11 @@ macro_rules! surface_methods {
                 Ok(self.inner.set_weight(whole("i", i)?, whole("j", j)?, w)?)
             }
 
-            /// A triangle mesh for WebGL: `{ positions: Float32Array, normals: Float32Array, indices:
-            /// Uint32Array }` with (nu + 1)(nv + 1) vertices at equally spaced (u, v) over the domain
-            /// (vertex a·(nv + 1) + b), unit normals, and 2·nu·nv triangles counter-clockwise seen from
-            /// the side the normals point to.
-            #[wasm_bindgen(unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; indices: Uint32Array }")]
+            /// A triangle mesh for WebGL: `{ positions: Float32Array, normals: Float32Array, uvs:
+            /// Float32Array, indices: Uint32Array }` with (nu + 1)(nv + 1) vertices at equally spaced
+            /// (u, v) over the domain (vertex a·(nv + 1) + b, its (u, v) in uvs), unit normals, and
+            /// 2·nu·nv triangles counter-clockwise seen from the side the normals point to.
+            #[wasm_bindgen(unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; uvs: Float32Array; indices: Uint32Array }")]
             pub fn tessellate(&self, nu: f64, nv: f64) -> Result<JsValue, JsError> {
                 let mesh = self.inner.tessellate(whole("nu", nu)?, whole("nv", nv)?)?;
                 mesh_to_js(&mesh)
