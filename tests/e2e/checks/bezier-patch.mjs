@@ -114,6 +114,22 @@ export default [
     },
   ],
   [
+    "play sweeps the generatrix (v advances, the picture changes), pause stops it",
+    async (page, h, _base, { assert, PLAY_MS }) => {
+      const box = page.locator('[data-control="v"] .sl-value');
+      const before = Number(await box.inputValue());
+      const picture = await h.snapshot();
+      await page.locator('[data-action="play"]').click();
+      await page.waitForTimeout(PLAY_MS);
+      await page.locator('[data-action="play"]').click();
+      const after = Number(await box.inputValue());
+      assert(after !== before, `v ${before} → ${after}`);
+      assert((await h.snapshot()) !== picture, "the picture is the same");
+      const formula = await page.locator(".sl-formula").textContent();
+      assert(formula.includes(after.toFixed(3)), `the formula shows v = ${after}: ${formula}`);
+    },
+  ],
+  [
     "PNG export has the WebGL surface on white; SVG export has the projected iso-curves",
     async (page, h, _base, { assert, equal }) => {
       const png = (await import("node:fs")).readFileSync(
