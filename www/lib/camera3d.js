@@ -11,6 +11,20 @@
 
 /** Vertical field of view of the perspective camera, degrees. */
 export const FIELD_OF_VIEW = 30;
+/**
+ * The camera's frame: a rectangle of this aspect (width / height) around the target that every
+ * canvas shows whole and centred, as a 2D figure shows its world window — a wider canvas shows
+ * more at the sides, a narrower one (a phone) gets a taller field of view. So a camera means the
+ * same picture at any size, and a fit does not depend on the screen it was made on.
+ */
+export const REFERENCE_ASPECT = 1.6;
+
+/** The vertical field of view (degrees) that shows the camera's frame whole at `aspect`. */
+export function verticalFieldOfView(aspect) {
+  const widen = Math.max(1, REFERENCE_ASPECT / Math.max(aspect, 1e-3));
+  return (2 * Math.atan(Math.tan((FIELD_OF_VIEW / 2) * DEG) * widen)) / DEG;
+}
+
 /** The starting direction: from the front right, a little above (degrees). */
 export const DEFAULT_AZIMUTH = -60;
 export const DEFAULT_ELEVATION = 28;
@@ -80,18 +94,14 @@ export function readCamera(camera, target) {
 }
 
 /**
- * The camera that shows the box `[x0, y0, z0, x1, y1, z1]` whole at the canvas `aspect`
- * (width / height), seen from `azimuth`, `elevation`, looking at its centre: the nearest
+ * The camera that shows the box `[x0, y0, z0, x1, y1, z1]` whole in its frame (of
+ * `REFERENCE_ASPECT`, so on every canvas), seen from `azimuth`, `elevation`, looking at its
+ * centre: the nearest
  * distance at which every corner of the box projects inside both fields of view, each shrunk
  * by the padding. A corner at (x, y) across and z towards the camera (camera axes, from the
  * centre) needs depth d − z ≥ |x| / tan(half horizontal angle) and ≥ |y| / tan(half vertical).
  */
-export function fitCamera(
-  bounds,
-  aspect,
-  azimuth = DEFAULT_AZIMUTH,
-  elevation = DEFAULT_ELEVATION,
-) {
+export function fitCamera(bounds, azimuth = DEFAULT_AZIMUTH, elevation = DEFAULT_ELEVATION) {
   const [x0, y0, z0, x1, y1, z1] = bounds;
   const a = azimuth * DEG;
   const e = elevation * DEG;
@@ -104,7 +114,7 @@ export function fitCamera(
     back[0] * right[1] - back[1] * right[0],
   ];
   const tanV = Math.tan((FIELD_OF_VIEW / 2) * DEG) * (1 - FIT_PADDING);
-  const tanH = Math.tan((FIELD_OF_VIEW / 2) * DEG) * Math.max(aspect, 1e-3) * (1 - FIT_PADDING);
+  const tanH = Math.tan((FIELD_OF_VIEW / 2) * DEG) * REFERENCE_ASPECT * (1 - FIT_PADDING);
   const centre = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2];
   const half = [
     Math.max((x1 - x0) / 2, MIN_FIT_RADIUS),

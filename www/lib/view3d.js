@@ -27,6 +27,7 @@ import { SceneContent } from "./scene3d.js";
 import { drawTriad, drawVectorScene } from "./draw3d.js";
 import {
   FIELD_OF_VIEW,
+  verticalFieldOfView,
   applyCamera,
   readCamera,
   roundCamera,
@@ -86,7 +87,9 @@ export class View3D {
     this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
     this.content = new SceneContent(THREE);
     this.content.attachLight(this.camera);
-    this._camera = fitCamera([-1, -1, -1, 1, 1, 1], 1);
+    this._camera = fitCamera([-1, -1, -1, 1, 1, 1]);
+    this._w = 1;
+    this._h = 1;
     this._vector = new THREE.Vector3();
     this._ray = new THREE.Raycaster();
     this._ndc = new THREE.Vector2();
@@ -123,11 +126,10 @@ export class View3D {
     this.requestDraw();
   }
 
-  /** Fits the content (`bounds()`) keeping the direction of view; returns the camera. */
+  /** Fits the content (`bounds()`) into the camera's frame, keeping the direction of view; returns the camera. */
   fit(bounds = this.bounds?.()) {
     const [azimuth, elevation] = this._camera ?? [DEFAULT_AZIMUTH, DEFAULT_ELEVATION];
-    const aspect = this.width && this.height ? this.width / this.height : 1;
-    const camera = fitCamera(bounds ?? [-1, -1, -1, 1, 1, 1], aspect, azimuth, elevation);
+    const camera = fitCamera(bounds ?? [-1, -1, -1, 1, 1, 1], azimuth, elevation);
     this.setWindow(camera);
     return camera;
   }
@@ -264,6 +266,7 @@ export class View3D {
     this._w = w;
     this._h = h;
     this.camera.aspect = w / h;
+    this.camera.fov = verticalFieldOfView(w / h); // the camera's frame whole at any aspect
     this.camera.updateProjectionMatrix();
   }
 

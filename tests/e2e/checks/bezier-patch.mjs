@@ -44,6 +44,59 @@ function countBlue({ selector, png }) {
 
 export default [
   [
+    "a fitted camera shows every corner of the box inside its frame, one of them on the edge",
+    async (_page, _h, _base, { assert }) => {
+      // The camera's projection written out (look-at basis, perspective division), not through
+      // camera3d.js: each corner's tangent across and up must stay within the frame's half
+      // angles, tan(15°)·1.6 across and tan(15°) up.
+      const { fitCamera, FIELD_OF_VIEW, REFERENCE_ASPECT } = await import(
+        "../../../www/lib/camera3d.js"
+      );
+      const r = Math.PI / 180;
+      const tanV = Math.tan((FIELD_OF_VIEW / 2) * r);
+      const boxes = [
+        [0, 0, -0.4, 6, 6, 3],
+        [-1, -2, -3, 4, 1, 0.5],
+        [10, 10, 10, 10.5, 30, 11],
+      ];
+      for (const box of boxes) {
+        for (const [az, el] of [
+          [-60, 28],
+          [45, -30],
+          [170, 80],
+        ]) {
+          const [a, e, d, tx, ty, tz] = fitCamera(box, az, el);
+          const eye = [
+            tx + d * Math.cos(e * r) * Math.cos(a * r),
+            ty + d * Math.cos(e * r) * Math.sin(a * r),
+            tz + d * Math.sin(e * r),
+          ];
+          const f = [tx - eye[0], ty - eye[1], tz - eye[2]].map((x) => x / d);
+          const right = [f[1], -f[0], 0].map((x) => x / Math.hypot(f[0], f[1]));
+          const up = [
+            right[1] * f[2] - right[2] * f[1],
+            right[2] * f[0] - right[0] * f[2],
+            right[0] * f[1] - right[1] * f[0],
+          ];
+          let widest = 0;
+          for (let k = 0; k < 8; k++) {
+            const c = [0, 1, 2].map((i) => (k & (1 << i) ? box[i + 3] : box[i]));
+            const rel = c.map((x, i) => x - eye[i]);
+            const dot = (w) => rel[0] * w[0] + rel[1] * w[1] + rel[2] * w[2];
+            const depth = dot(f);
+            const across = Math.abs(dot(right)) / depth / (tanV * REFERENCE_ASPECT);
+            const high = Math.abs(dot(up)) / depth / tanV;
+            widest = Math.max(widest, across, high);
+          }
+          assert(
+            widest <= 1 + 1e-4 && widest > 0.85,
+            `box ${box} from (${az}, ${el}): the farthest corner at ${widest} of the frame`,
+          );
+        }
+      }
+    },
+  ],
+  [
     "WebGL draws the lit surface (non-blank pixels with every 2D overlay off)",
     async (page, h, base, { assert, openDemo }) => {
       const state = {
