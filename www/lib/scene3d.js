@@ -30,6 +30,8 @@ export class SceneContent {
     this.THREE = THREE;
     this.scene = new THREE.Scene();
     this.scene.add(new THREE.AmbientLight(0xffffff, 1.1));
+    /** Geometries made for data so far (not refills): a drag must leave this unchanged. */
+    this.geometriesMade = 0;
     this.surfaceSlots = [];
     this.wireSlots = [];
     this.curveSlots = [];
@@ -122,6 +124,7 @@ export class SceneContent {
     }
     // A new vertex count: a new geometry (the old one's GPU buffers are freed).
     const next = new THREE.BufferGeometry();
+    this.geometriesMade += 1;
     next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(mesh.positions), 3));
     next.setAttribute("normal", new THREE.BufferAttribute(Float32Array.from(mesh.normals), 3));
     next.setIndex(new THREE.BufferAttribute(Uint32Array.from(mesh.indices), 1));
@@ -154,6 +157,7 @@ export class SceneContent {
       return;
     slot.key = key;
     const next = new THREE.BufferGeometry();
+    this.geometriesMade += 1;
     next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(mesh.positions), 3));
     next.setIndex(new THREE.BufferAttribute(grid ? gridEdges(grid) : triangleEdges(mesh), 1));
     slot.lines.geometry = next;
@@ -179,6 +183,7 @@ export class SceneContent {
     const g = slot.line.geometry;
     if (SceneContent._refill(g.getAttribute("position"), points)) return;
     const next = new THREE.BufferGeometry();
+    this.geometriesMade += 1;
     next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(points), 3));
     slot.line.geometry = next;
     g.dispose();

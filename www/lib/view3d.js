@@ -280,6 +280,9 @@ export class View3D {
   _paint(r, w, h, theme) {
     this._layout(w, h);
     this.content.update(this.sceneOf());
+    // A hook for tests, as `data-handles`: geometries made so far (a drag refills, makes none).
+    const made = String(this.content.geometriesMade);
+    if (this.host.dataset.geometries !== made) this.host.dataset.geometries = made;
     r.begin(w, h, theme.background);
     const context = r.context;
     if (context?.drawImage) {

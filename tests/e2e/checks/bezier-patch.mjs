@@ -131,6 +131,24 @@ export default [
     },
   ],
   [
+    "a drag refills the mesh and curve buffers in place: no new geometry while dragging",
+    async (page, h, _base, { assert, equal }) => {
+      const made = () => page.locator(".sl-figure").getAttribute("data-geometries");
+      const before = await made();
+      assert(Number(before) >= 15, `${before} geometries (surface and 14 iso-curves)`);
+      const snapshot = await h.snapshot();
+      const [, handle] = await h.handles();
+      await h.drag(handle, 30, -25);
+      assert((await h.snapshot()) !== snapshot, "the drag changed the picture");
+      equal(await made(), before, "geometries made during the drag");
+      await page.locator('[data-control="wireframe"] input').check();
+      await page.waitForFunction((n) => {
+        const now = document.querySelector(".sl-figure").dataset.geometries;
+        return Number(now) === Number(n) + 1;
+      }, before);
+    },
+  ],
+  [
     "arrows with no point selected orbit; PageUp moves the selected point towards the viewer",
     async (page, h, _base, { assert, equal }) => {
       const start = await urlState(page);
