@@ -40,7 +40,7 @@ const MIN_FIT_RADIUS = 0.5;
 const DEG = Math.PI / 180;
 const round = (x) => Number(x.toPrecision(CAMERA_DIGITS));
 
-/** Throws unless `camera` is `[azimuth, elevation, distance, tx, ty, tz]` of finite numbers. */
+/** Whether `camera` is `[azimuth, elevation, distance, tx, ty, tz]`: finite, distance > 0, |elevation| ≤ MAX_ELEVATION. */
 export function isCamera(camera) {
   return (
     Array.isArray(camera) &&

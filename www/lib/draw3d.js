@@ -45,11 +45,6 @@ export function netPath(r, view, points, rows, cols) {
   for (let j = 0; j < cols; j++) for (let i = 0; i < rows; i++) to(i * cols + j, i === 0);
 }
 
-/** Canvas [x, y] of a space point, into `out` (a scratch array of the caller). */
-export function projected(view, p, out) {
-  return view.project(p[0], p[1], p[2], out);
-}
-
 const vectorStyles = themed(() => ({
   iso: Object.freeze({ stroke: SURFACE_COLOURS.iso, width: 1 }),
   wireframe: Object.freeze({ stroke: SURFACE_COLOURS.wireframe, width: 0.5, strokeAlpha: 0.55 }),

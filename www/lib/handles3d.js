@@ -68,6 +68,9 @@ export class Handles3D {
     this._p = new Float64Array(3);
     this._s = new Float64Array(3);
     this._grab = new Float64Array(3);
+    this._right = new Float64Array(3);
+    this._up = new Float64Array(3);
+    this._sight = new Float64Array(3);
     this._plane = new Float64Array(4); // n, and the point's offset along n
     this._pending = new Float64Array(2);
     this._hasPending = false;
@@ -285,11 +288,12 @@ export class Handles3D {
   _nudge(i, right, up, toward) {
     this.source.get(i, this._p);
     const perPixel = this.view.worldPerPixel(this._p[0], this._p[1], this._p[2]);
-    this.view.screenAxes(this._s, this._grab, this._plane);
+    this.view.screenAxes(this._right, this._up, this._sight);
     // Towards the viewer along the line of sight through the point: it stays where it is seen.
-    this.view.sightLine(this._p[0], this._p[1], this._p[2], this._plane);
+    this.view.sightLine(this._p[0], this._p[1], this._p[2], this._sight);
     for (let k = 0; k < 3; k++)
-      this._p[k] += perPixel * (right * this._s[k] + up * this._grab[k] - toward * this._plane[k]);
+      this._p[k] +=
+        perPixel * (right * this._right[k] + up * this._up[k] - toward * this._sight[k]);
     this._apply(i, this._p);
     const now = performance.now();
     const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;

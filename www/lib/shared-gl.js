@@ -39,8 +39,3 @@ export function renderShared(scene, camera, width, height) {
   out.height = height;
   return out;
 }
-
-/** How many WebGL renderers this page made (tests: one, however many 3D figures). */
-export function sharedRendererCount() {
-  return shared ? 1 : 0;
-}
