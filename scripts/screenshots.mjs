@@ -2,6 +2,7 @@
 // into screenshots/ (git-ignored). Used by `make screenshots` and to look at the UI by eye.
 //   node scripts/screenshots.mjs            all
 //   node scripts/screenshots.mjs --narrow   also a phone-width shot of each demo
+//   node scripts/screenshots.mjs bezier-patch   only the demos whose id contains this (no gallery)
 import { chromium } from "playwright-core";
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -14,6 +15,7 @@ const OUT = fileURLToPath(new URL("../screenshots/", import.meta.url));
 const DESKTOP = { width: 1280, height: 900 };
 const PHONE = { width: 390, height: 844 };
 const narrow = process.argv.includes("--narrow");
+const only = process.argv.slice(2).find((arg) => !arg.startsWith("--")) ?? "";
 
 /** Waits until a demo (in the page or a shadow root, by CSS prefix) is drawn and typeset. */
 async function demoReady(page, scope = "") {
@@ -43,10 +45,10 @@ for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, P
   const suffix = viewport === PHONE ? "phone" : `dpr${scale}`;
   try {
     await page.goto(`${base}/index.html`);
-    const ids = await page.evaluate(async () =>
-      (await import("./demos/index.js")).demos.map((d) => d.id),
-    );
-    if (viewport !== PHONE) {
+    const ids = (
+      await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => d.id))
+    ).filter((id) => id.includes(only));
+    if (viewport !== PHONE && !only) {
       // Thumbnails are drawn when their card comes near the viewport: pass every card by.
       for (const card of await page.locator(".card").all()) {
         await card.scrollIntoViewIfNeeded();
@@ -70,7 +72,7 @@ for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, P
       await page.screenshot({ path: `${OUT}${id}-${suffix}.png`, fullPage: true });
       written.push(`${id}-${suffix}.png`);
     }
-    if (viewport !== PHONE) {
+    if (viewport !== PHONE && !only) {
       await page.goto(`${base}/embed-example.html`);
       for (const el of await page.locator("spline-lab").all()) {
         await el.scrollIntoViewIfNeeded();

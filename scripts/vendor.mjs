@@ -1,6 +1,11 @@
 // Copies the front-end libraries installed from npm into www/vendor/ so the page works
 // offline and loads nothing from a CDN. Re-run safe.
-import { cpSync, existsSync, mkdirSync } from "node:fs";
+//
+// three.js (only the 3D demos import it, lazily, see www/lib/three-loader.js): the module build
+// and the core it imports (`./three.core.js`), and OrbitControls, whose bare `from "three"`
+// import is rewritten to the vendored relative path at copy time, so a course page that embeds
+// a 3D demo needs no import map.
+import { cpSync, existsSync, mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 
 const root = fileURLToPath(new URL("..", import.meta.url));
@@ -16,4 +21,23 @@ for (const [from, to] of copies) {
   if (!existsSync(src)) throw new Error(`vendor: ${from} is missing; run npm install`);
   cpSync(src, `${vendor}/${to}`, { recursive: true });
 }
-console.log(`vendor: ${copies.length} entries copied into www/vendor/`);
+
+const threeCopies = [
+  ["node_modules/three/build/three.module.js", "three/three.module.js"],
+  ["node_modules/three/build/three.core.js", "three/three.core.js"],
+];
+mkdirSync(`${vendor}/three`, { recursive: true });
+for (const [from, to] of threeCopies) {
+  const src = `${root}${from}`;
+  if (!existsSync(src)) throw new Error(`vendor: ${from} is missing; run npm install`);
+  cpSync(src, `${vendor}/${to}`);
+}
+const controlsFrom = "node_modules/three/examples/jsm/controls/OrbitControls.js";
+const controls = readFileSync(`${root}${controlsFrom}`, "utf8");
+const bare = /from\s*(['"])three\1/g;
+if (!bare.test(controls)) throw new Error(`vendor: no bare "three" import in ${controlsFrom}`);
+writeFileSync(
+  `${vendor}/three/OrbitControls.js`,
+  controls.replace(bare, 'from "./three.module.js"'),
+);
+console.log(`vendor: ${copies.length + threeCopies.length + 1} entries copied into www/vendor/`);

@@ -7,6 +7,7 @@
 import { demos, findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
+import { prepareFigure } from "./lib/three-loader.js";
 import { parseHash, buildHash, decodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
@@ -104,6 +105,8 @@ function watchThumbnails(page, sl) {
     }
     if (stopped) return;
     try {
+      await prepareFigure(demo); // three.js for a 3D demo's card (a 2D card loads none)
+      if (stopped) return;
       img.src = thumbnail(demo, sl);
       img.classList.remove("placeholder");
     } catch {
@@ -242,6 +245,7 @@ async function route(sl) {
   let demo;
   try {
     demo = await loadDemo(id);
+    await prepareFigure(demo); // three.js, for a 3D demo only
   } catch (err) {
     if (routed === routeCount) showAppStatus(err.message, "error");
     return;

@@ -10,6 +10,7 @@
 import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
+import { prepareFigure } from "./lib/three-loader.js";
 import { stateFromAttributes } from "./lib/attributes.js";
 import { buildHash } from "./lib/state.js";
 import { t } from "./lib/strings.js";
@@ -83,6 +84,7 @@ class SplineLabElement extends HTMLElement {
     }
     try {
       demo = await loadDemo(id);
+      await prepareFigure(demo); // three.js, for a 3D demo only
     } catch (err) {
       return this._fail(err.message);
     }

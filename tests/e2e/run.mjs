@@ -628,6 +628,57 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("the lib/README 3D example is a whole demo that mounts and draws with WebGL", async () => {
+    const readme = readFileSync(join(ROOT, "www/lib/README.md"), "utf8");
+    const section = readme.slice(readme.indexOf("## 3D figures"));
+    const start = section.indexOf("```js\n") + 6;
+    const code = section.slice(start, section.indexOf("\n```", start));
+    const moduleUrl = `${base}/demos/readme-example-3d.js`;
+    await page.goto(`${base}/index.html`);
+    await page.route(moduleUrl, (route) =>
+      route.fulfill({ contentType: "text/javascript", body: code }),
+    );
+    try {
+      const shown = await page.evaluate(async () => {
+        const demo = await import("./demos/readme-example-3d.js");
+        const { mountDemo, validateState } = await import("./lib/shell.js");
+        const { loadWasm } = await import("./lib/wasm.js");
+        const { prepareFigure } = await import("./lib/three-loader.js");
+        const sl = await loadWasm();
+        await prepareFigure(demo);
+        const host = document.createElement("div");
+        document.body.append(host);
+        const state = validateState(demo, structuredClone(demo.defaultState));
+        const mounted = mountDemo(host, demo, { sl, state, shareUrl: () => "" });
+        await new Promise((resolve) => setTimeout(resolve, 300));
+        const canvas = host.querySelector("canvas");
+        const copy = document.createElement("canvas");
+        copy.width = canvas.width;
+        copy.height = canvas.height;
+        const g = copy.getContext("2d");
+        g.drawImage(canvas, 0, 0);
+        const d = g.getImageData(0, 0, copy.width, copy.height).data;
+        let blue = 0;
+        for (let i = 0; i < d.length; i += 4) if (d[i + 2] > 90 && d[i + 2] > d[i] + 60) blue++;
+        const result = {
+          handles: host.querySelector(".sl-figure").dataset.handles,
+          view: mounted.state.view,
+          blue,
+        };
+        mounted.destroy();
+        host.remove();
+        return result;
+      });
+      equal(shown.handles?.split(";").length, 4, "handles of the 2 × 2 net");
+      equal(shown.view?.length, 6, "a camera in the state");
+      assert(shown.blue > 1000, `${shown.blue} surface pixels`);
+    } finally {
+      await page.unroute(moduleUrl);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("strings: every key the UI asks for exists in English", async () => {
     // Literal keys t("…") anywhere in www/, plus the keys the shell builds from each demo's prefix.
     const missingDemoKeys = await page.evaluate(async () => {

@@ -9,6 +9,7 @@ export async function fuzzStates({ seedValue, rounds }) {
   const { demos, loadDemo } = await import("./demos/index.js");
   const { validateState, mountDemo } = await import("./lib/shell.js");
   const { loadWasm } = await import("./lib/wasm.js");
+  const { prepareFigure } = await import("./lib/three-loader.js");
   const sl = await loadWasm();
   let seed = seedValue;
   const rnd = () => {
@@ -60,6 +61,7 @@ export async function fuzzStates({ seedValue, rounds }) {
     refused = 0;
   for (const entry of demos) {
     const demo = await loadDemo(entry.id);
+    await prepareFigure(demo); // three.js for a 3D demo
     for (let k = 0; k < rounds; k++) {
       const candidate = mutate(structuredClone(demo.defaultState));
       let state;

@@ -128,6 +128,12 @@ export const demos = Object.freeze(
       strings: "interpolateApproximate",
       load: () => import("./interpolate-approximate.js"),
     },
+    {
+      id: "bezier-patch",
+      section: 6,
+      strings: "bezierPatch",
+      load: () => import("./bezier-patch.js"),
+    },
   ].map(Object.freeze),
 );
 

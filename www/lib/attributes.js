@@ -9,10 +9,12 @@
  * | boolean                | `construction="false"`   | false (present/"" = true)|
  * | string                 | `end="natural"`          | "natural"                |
  * | list of [x, y] points  | `points="0,0 2,2 6,4"`   | [[0,0],[2,2],[6,4]]      |
+ * | list of [x, y, z]      | `points="0,0,0 1,0,2"`   | [[0,0,0],[1,0,2]]        |
  * | list of numbers        | `knots="0 0 0 1 2 2 2"`  | [0,0,0,1,2,2,2]          |
  *
  * Field names in camelCase map to kebab-case attributes (`startTangent` ↔ `start-tangent`);
- * `view="xmin ymin xmax ymax"` sets the window. The result is then validated like any state.
+ * `view="xmin ymin xmax ymax"` sets the window (a 3D demo: the camera
+ * `view="azimuth elevation distance x y z"`, camera3d.js). The result is then validated like any state.
  */
 import { parseNumberInput } from "./format.js";
 import { t } from "./strings.js";
@@ -37,15 +39,15 @@ function parseList(text) {
   return parts.map(parseNumber);
 }
 
-/** Points "x,y x,y" (pairs separated by spaces or semicolons). */
-function parsePoints(text) {
+/** Points "x,y x,y" (pairs separated by spaces or semicolons; triples "x,y,z" for 3D demos). */
+function parsePoints(text, dimension = 2) {
   return text
     .trim()
     .split(/\s*;\s*|\s+(?=[^,\s]+\s*,)/)
     .filter(Boolean)
     .map((pair) => {
       const coords = pair.split(/\s*,\s*/).map(parseNumber);
-      if (coords.length !== 2) throw new Error(t("control.badNumber", { value: pair }));
+      if (coords.length !== dimension) throw new Error(t("control.badNumber", { value: pair }));
       return coords;
     });
 }
@@ -56,7 +58,8 @@ export function parseAttribute(text, example) {
   if (typeof example === "boolean")
     return text === "" || text === "true" || text === "on" || text === "yes";
   if (typeof example === "string") return text;
-  if (Array.isArray(example) && Array.isArray(example[0])) return parsePoints(text);
+  if (Array.isArray(example) && Array.isArray(example[0]))
+    return parsePoints(text, example[0].length === 3 ? 3 : 2);
   if (Array.isArray(example)) return parseList(text);
   return JSON.parse(text);
 }

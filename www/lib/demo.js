@@ -35,6 +35,12 @@
  *   foot): its label goes beyond it, and it is no neighbour of the others in label placement;
  *   `at(state, out)` / `place(state, x, y)` put a handle where the state implies (an arrow's tip
  *   p₀ + D₀ of a vector field) and write the field back from a move.
+ * - `figure3d` (instead of `figure`): `{ bounds(state, data) → [xmin, ymin, zmin, xmax, ymax,
+ *   zmax], scene(state, data) → { surfaces, wireframe, curves }, handles?: { field, label?,
+ *   select? } }` — a 3D figure (view3d.js; the host awaits three-loader.js `prepareFigure`
+ *   first): `scene` says what WebGL draws from the core's arrays (scene3d.js), the handles run
+ *   over the `[x, y, z]` points of `state[field]` and `derive.moved(model, i, xyz, …)` gets a
+ *   reused Float64Array(3); `draw` is then the 2D layer over the WebGL image (`view.project`).
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -50,6 +56,7 @@
  */
 import { FormulaPanel } from "./formula.js";
 import { Handles, pointHandles, pointLabel, pointListsHandles } from "./handles.js";
+import { Handles3D, pointHandles3 } from "./handles3d.js";
 import { t } from "./strings.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
@@ -92,12 +99,15 @@ export function mountDeclared(demo, initialState, ctx) {
   let modelStale = false;
   let built = [];
 
-  const figureSpec = demo.figure;
+  // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`).
+  const is3d = Boolean(demo.figure3d);
+  const figureSpec = demo.figure3d ?? demo.figure;
   const view = ctx.createFigure({
     draw: (r, v) => demo.draw(r, v, work, data),
     bounds: () => figureSpec.bounds(work, data),
     label: "",
     insets: figureSpec.insets ? (w, h, scale) => figureSpec.insets(w, h, scale, work, data) : null,
+    ...(is3d ? { scene: () => figureSpec.scene(work, data) } : {}),
   });
 
   /** What controls, handles and tools get: the state, its setter and the shell's services. */
@@ -254,7 +264,24 @@ export function mountDeclared(demo, initialState, ctx) {
 
   // ------------------------------------------------------------ figure parts, handles, panel
   const handleSpec = figureSpec.handles;
-  if (handleSpec) {
+  if (handleSpec && is3d) {
+    // The control net of a surface: one field of [x, y, z] points; `derive.moved(model, i, xyz)`.
+    const field = handleSpec.field;
+    const moved = derive.moved
+      ? (i, xyz) => {
+          derive.moved(model, i, xyz, work, ui);
+          if (changed) changed.add(field);
+          view.requestDraw();
+        }
+      : () => markChanged(field);
+    const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
+    ui.handles = new Handles3D(view, {
+      ...pointHandles3(() => work[field], moved, label),
+      select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
+      commit: (kind, i, merge) => ctx.commit(work, merge),
+    });
+    data.handles = ui.handles;
+  } else if (handleSpec) {
     // One field of points, or several in a row (`field: ["points", "corners"]`).
     const handleFields = [].concat(handleSpec.field);
     const moved = derive.moved

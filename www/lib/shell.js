@@ -8,9 +8,10 @@
  */
 import { History, exportJson, parseJsonFile, STATE_VERSION } from "./state.js";
 import { View } from "./view.js";
+import { View3D } from "./view3d.js";
 import { figureToSvg, figureToPng, download, svgBlob, jsonBlob } from "./export.js";
 import { ensureKatexStyles } from "./formula.js";
-import { checkWindow } from "./validate.js";
+import { checkCamera, checkWindow } from "./validate.js";
 import { el, button } from "./controls.js";
 import { t, has } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
@@ -33,7 +34,9 @@ export function validateState(demo, candidate) {
   }
   if (state && typeof state === "object" && "view" in state) {
     const { view, ...rest } = state;
-    checkWindow(view);
+    // A 3D figure's `view` is its camera (camera3d.js), a 2D one's the world window.
+    if (demo.figure3d) checkCamera(view);
+    else checkWindow(view);
     validate(rest);
   } else {
     validate(state);
@@ -69,7 +72,11 @@ export function mountDemo(
   const status = el("div", { class: "sl-status", role: "status", "aria-live": "polite" });
   const figureHost = el("div", { class: "sl-figure" });
   const helpId = `sl-help-${demo.id}-${Math.random().toString(36).slice(2, 8)}`;
-  const help = el("p", { class: "sl-help", id: helpId, text: t("shell.figureHelp") });
+  const help = el("p", {
+    class: "sl-help",
+    id: helpId,
+    text: t(demo.figure3d ? "shell.figureHelp3d" : "shell.figureHelp"),
+  });
   const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
   const formula = el("div", { class: "sl-formula" });
   const details = el("div", { class: "sl-details" });
@@ -370,7 +377,8 @@ export function mountDemo(
     t,
     /** Creates the demo's View in the figure slot (the shell handles its window and exports). */
     createFigure(options) {
-      figure = new View(figureHost, {
+      const Figure = options.scene ? View3D : View;
+      figure = new Figure(figureHost, {
         ...options,
         wheelNeedsModifier: mode === "embed",
         onWindowChange: (win) => {

@@ -20,6 +20,8 @@ import { CUBIC_SPLINE } from "./strings/cubic-spline.js";
 import { PARAMETRIZATION } from "./strings/parametrization.js";
 import { BSPLINE_INTERPOLATION } from "./strings/bspline-interpolation.js";
 import { INTERPOLATE_APPROXIMATE } from "./strings/interpolate-approximate.js";
+// Section 6 (surfaces) likewise.
+import { BEZIER_PATCH } from "./strings/bezier-patch.js";
 
 const EN = {
   // Application and gallery
@@ -74,6 +76,8 @@ const EN = {
   "shell.controls": "Controls",
   "shell.whatYouSee": "What you see",
   "shell.tryThis": "Try this",
+  "shell.figureHelp3d":
+    "Drag a point (in the plane facing you), or press Tab to select one: arrow keys move it (Shift: 10 px), PageUp/PageDown towards or away from you. Drag empty space to orbit, Shift-drag or two fingers to pan, wheel or pinch to zoom; with no point selected the arrow keys orbit.",
   "shell.figureHelp":
     "Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Drag empty space to pan; wheel or pinch to zoom.",
   "shell.openInPlayground": "Open in the playground",
@@ -82,6 +86,8 @@ const EN = {
   "handles.roleDescription": "interactive figure",
   "handles.selected": "{label} selected, ({x}, {y})",
   "handles.moved": "{label} moved to ({x}, {y})",
+  "handles.selected3d": "{label} selected, ({x}, {y}, {z})",
+  "handles.moved3d": "{label} moved to ({x}, {y}, {z})",
 
   // Status messages
   "status.linkCopied": "Link copied to the clipboard.",
@@ -107,6 +113,11 @@ const EN = {
   "error.notArray": "field “{field}” must be a list",
   "error.count": "field “{field}” must have between {min} and {max} entries, got {count}",
   "error.pointShape": "field “{field}”: point {index} must be a pair [x, y]",
+  "error.pointShape3": "field “{field}”: point {index} must be a triple [x, y, z]",
+  "error.gridCount":
+    "field “{field}” must have {rows} × {cols} = {expected} points (rows along u), got {count}",
+  "error.camera":
+    "field “view” must be a camera [azimuth, elevation, distance, x, y, z]: finite numbers, distance > 0, |elevation| ≤ 89°",
   "error.pointFinite":
     "field “{field}”: point {index} has a coordinate that is not a finite number",
   "error.knots": "field “{field}”: {message}",
@@ -1168,6 +1179,7 @@ const EN = {
   "negativeWeights.ariaOutside": "the curve leaves its convex hull",
   "negativeWeights.ariaInside": "the curve stays in its convex hull",
   ...LAGRANGE,
+  ...BEZIER_PATCH,
   ...HERMITE,
   ...CARDINAL,
   ...CUBIC_SPLINE,

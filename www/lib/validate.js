@@ -5,6 +5,7 @@
  * The wasm constructors validate the geometry again.
  */
 import { t } from "./strings.js";
+import { isCamera } from "./camera3d.js";
 
 /** Shows a value in an error message without flooding it. */
 function show(value) {
@@ -76,6 +77,32 @@ export function checkPoints(state, field, { min = 0, max = Infinity } = {}) {
   });
 }
 
+/**
+ * Throws unless `state[field]` is a list of [x, y, z] triples of finite numbers: min..max of
+ * them, or exactly rows × cols (a surface's control net, row-major) when `rows`, `cols` are given.
+ */
+export function checkPoints3(state, field, { min = 0, max = Infinity, rows = 0, cols = 0 } = {}) {
+  const value = present(state, field);
+  if (!Array.isArray(value)) throw new Error(t("error.notArray", { field }));
+  if (rows > 0 && cols > 0 && value.length !== rows * cols)
+    throw new Error(
+      t("error.gridCount", { field, rows, cols, expected: rows * cols, count: value.length }),
+    );
+  if (value.length < min || value.length > max)
+    throw new Error(t("error.count", { field, min, max, count: value.length }));
+  value.forEach((point, index) => {
+    if (!Array.isArray(point) || point.length !== 3)
+      throw new Error(t("error.pointShape3", { field, index }));
+    if (!point.every((c) => typeof c === "number" && Number.isFinite(c)))
+      throw new Error(t("error.pointFinite", { field, index }));
+  });
+}
+
+/** Throws unless `camera` is a 3D figure's camera (camera3d.js), the `view` of a 3D demo. */
+export function checkCamera(camera) {
+  if (!isCamera(camera)) throw new Error(t("error.camera"));
+}
+
 /** Throws unless `state[field]` is a list of finite numbers, min..max of them. */
 export function checkNumbers(state, field, { min = 0, max = Infinity } = {}) {
   const value = present(state, field);
@@ -112,5 +139,8 @@ export const field = Object.freeze({
   boolean: () => (state, name) => checkBoolean(state, name),
   choice: (choices) => (state, name) => checkChoice(state, name, choices),
   points: (options) => (state, name) => checkPoints(state, name, options),
+  /** A surface's control net: `field.points3d({ rows: 4, cols: 4 })` (options may be a function of the state). */
+  points3d: (options) => (state, name) =>
+    checkPoints3(state, name, typeof options === "function" ? options(state) : options),
   numbers: (options) => (state, name) => checkNumbers(state, name, options),
 });

@@ -1,0 +1,297 @@
+// Browser checks of the first 3D demo (run after the generic ones by run.mjs): WebGL really
+// draws (SwiftShader in headless Chromium), the camera orbits and lives in the URL, the keyboard
+// moves points in depth, exports carry the surface, one WebGL context serves several 3D figures,
+// and 2D pages never load three.js.
+// Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
+
+/** The demo state in the page's URL. */
+const urlState = (page) =>
+  page.evaluate(() => {
+    const s = new URLSearchParams(location.hash.slice(1)).get("s");
+    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
+      c.charCodeAt(0),
+    );
+    return JSON.parse(new TextDecoder().decode(bytes));
+  });
+
+/** `#demo=bezier-patch&s=…` for a state (base64url JSON). */
+const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
+
+/**
+ * Counts pixels of an image (a canvas, or PNG bytes as base64) in the surface's blue family
+ * (the front #0072B2 lit, the back #8EC3E6): blue well above red. Runs in the page.
+ */
+function countBlue({ selector, png }) {
+  const measure = (source, w, h) => {
+    const c = document.createElement("canvas");
+    c.width = w;
+    c.height = h;
+    const g = c.getContext("2d");
+    g.drawImage(source, 0, 0);
+    const d = g.getImageData(0, 0, w, h).data;
+    let blue = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 2] > 90 && d[i + 2] > d[i] + 60) blue++;
+    return { blue, total: w * h, corner: [d[0], d[1], d[2], d[3]] };
+  };
+  if (png) {
+    const img = new Image();
+    img.src = `data:image/png;base64,${png}`;
+    return img.decode().then(() => measure(img, img.naturalWidth, img.naturalHeight));
+  }
+  const canvas = document.querySelector(selector);
+  return measure(canvas, canvas.width, canvas.height);
+}
+
+export default [
+  [
+    "a fitted camera shows every corner of the box inside its frame, one of them on the edge",
+    async (_page, _h, _base, { assert }) => {
+      // The camera's projection written out (look-at basis, perspective division), not through
+      // camera3d.js: each corner's tangent across and up must stay within the frame's half
+      // angles, tan(15°)·1.6 across and tan(15°) up.
+      const { fitCamera, FIELD_OF_VIEW, REFERENCE_ASPECT } = await import(
+        "../../../www/lib/camera3d.js"
+      );
+      const r = Math.PI / 180;
+      const tanV = Math.tan((FIELD_OF_VIEW / 2) * r);
+      const boxes = [
+        [0, 0, -0.4, 6, 6, 3],
+        [-1, -2, -3, 4, 1, 0.5],
+        [10, 10, 10, 10.5, 30, 11],
+      ];
+      for (const box of boxes) {
+        for (const [az, el] of [
+          [-60, 28],
+          [45, -30],
+          [170, 80],
+        ]) {
+          const [a, e, d, tx, ty, tz] = fitCamera(box, az, el);
+          const eye = [
+            tx + d * Math.cos(e * r) * Math.cos(a * r),
+            ty + d * Math.cos(e * r) * Math.sin(a * r),
+            tz + d * Math.sin(e * r),
+          ];
+          const f = [tx - eye[0], ty - eye[1], tz - eye[2]].map((x) => x / d);
+          const right = [f[1], -f[0], 0].map((x) => x / Math.hypot(f[0], f[1]));
+          const up = [
+            right[1] * f[2] - right[2] * f[1],
+            right[2] * f[0] - right[0] * f[2],
+            right[0] * f[1] - right[1] * f[0],
+          ];
+          let widest = 0;
+          for (let k = 0; k < 8; k++) {
+            const c = [0, 1, 2].map((i) => (k & (1 << i) ? box[i + 3] : box[i]));
+            const rel = c.map((x, i) => x - eye[i]);
+            const dot = (w) => rel[0] * w[0] + rel[1] * w[1] + rel[2] * w[2];
+            const depth = dot(f);
+            const across = Math.abs(dot(right)) / depth / (tanV * REFERENCE_ASPECT);
+            const high = Math.abs(dot(up)) / depth / tanV;
+            widest = Math.max(widest, across, high);
+          }
+          assert(
+            widest <= 1 + 1e-4 && widest > 0.85,
+            `box ${box} from (${az}, ${el}): the farthest corner at ${widest} of the frame`,
+          );
+        }
+      }
+    },
+  ],
+  [
+    "WebGL draws the lit surface (non-blank pixels with every 2D overlay off)",
+    async (page, h, base, { assert, openDemo }) => {
+      const state = {
+        ...(await urlState(page)),
+        net: false,
+        iso: false,
+        sweep: false,
+        normal: false,
+      };
+      delete state.view;
+      await openDemo(page, base, "bezier-patch", hashOf(state));
+      const { blue, total } = await page.evaluate(countBlue, { selector: ".sl-canvas" });
+      assert(blue > total * 0.05, `only ${blue} of ${total} pixels are surface blue`);
+    },
+  ],
+  [
+    "an orbit (drag on empty space) changes the picture and the camera in the URL; reload restores it",
+    async (page, h, _base, { assert, equal }) => {
+      const before = await h.snapshot();
+      const camera = (await urlState(page)).view;
+      equal(camera.length, 6, "the camera has 6 numbers");
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + box.width - 20, y: box.y + 20 }, -120, 40);
+      const after = await h.snapshot();
+      assert(after !== before, "the picture is the same after an orbit");
+      const orbited = (await urlState(page)).view;
+      assert(orbited[0] !== camera[0], `azimuth ${camera[0]} → ${orbited[0]}`);
+      await page.reload();
+      await h.ready();
+      equal(JSON.stringify((await urlState(page)).view), JSON.stringify(orbited), "camera");
+      equal(await h.snapshot(), after, "snapshot after reload");
+    },
+  ],
+  [
+    "a drag refills the mesh and curve buffers in place: no new geometry while dragging",
+    async (page, h, _base, { assert, equal }) => {
+      const made = () => page.locator(".sl-figure").getAttribute("data-geometries");
+      const before = await made();
+      assert(Number(before) >= 15, `${before} geometries (surface and 14 iso-curves)`);
+      const snapshot = await h.snapshot();
+      const [, handle] = await h.handles();
+      await h.drag(handle, 30, -25);
+      assert((await h.snapshot()) !== snapshot, "the drag changed the picture");
+      equal(await made(), before, "geometries made during the drag");
+      await page.locator('[data-control="wireframe"] input').check();
+      await page.waitForFunction((n) => {
+        const now = document.querySelector(".sl-figure").dataset.geometries;
+        return Number(now) === Number(n) + 1;
+      }, before);
+    },
+  ],
+  [
+    "arrows with no point selected orbit; PageUp moves the selected point towards the viewer",
+    async (page, h, _base, { assert, equal }) => {
+      const start = await urlState(page);
+      await h.canvas().focus();
+      await page.keyboard.press("Escape");
+      await page.keyboard.press("ArrowLeft");
+      const orbited = await urlState(page);
+      assert(orbited.view[0] !== start.view[0], `azimuth ${start.view[0]} → ${orbited.view[0]}`);
+      equal(JSON.stringify(orbited.points), JSON.stringify(start.points), "points kept");
+      // P₀₀ towards the camera: its distance to the camera shrinks, its screen position stays.
+      const handle = (await h.handles())[0];
+      await page.keyboard.press("Home");
+      await page.keyboard.press("PageUp");
+      const moved = await urlState(page);
+      const [a, e, dist, tx, ty, tz] = moved.view;
+      const r = Math.PI / 180;
+      const eye = [
+        tx + dist * Math.cos(e * r) * Math.cos(a * r),
+        ty + dist * Math.cos(e * r) * Math.sin(a * r),
+        tz + dist * Math.sin(e * r),
+      ];
+      const far = (p) => Math.hypot(p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]);
+      assert(
+        far(moved.points[0]) < far(start.points[0]),
+        `P₀₀ ${start.points[0]} → ${moved.points[0]}`,
+      );
+      const now = (await h.handles())[0];
+      assert(
+        Math.hypot(now.x - handle.x, now.y - handle.y) < 1.5,
+        `on the screen ${JSON.stringify(handle)} → ${JSON.stringify(now)}`,
+      );
+      const live = await page.locator(".sl-figure .sl-announcer").textContent();
+      assert(/^P₀₀ moved to \(/.test(live), `announced: ${live}`);
+    },
+  ],
+  [
+    "play sweeps the generatrix (v advances, the picture changes), pause stops it",
+    async (page, h, _base, { assert, PLAY_MS }) => {
+      const box = page.locator('[data-control="v"] .sl-value');
+      const before = Number(await box.inputValue());
+      const picture = await h.snapshot();
+      await page.locator('[data-action="play"]').click();
+      await page.waitForTimeout(PLAY_MS);
+      await page.locator('[data-action="play"]').click();
+      const after = Number(await box.inputValue());
+      assert(after !== before, `v ${before} → ${after}`);
+      assert((await h.snapshot()) !== picture, "the picture is the same");
+      const formula = await page.locator(".sl-formula").textContent();
+      assert(formula.includes(after.toFixed(3)), `the formula shows v = ${after}: ${formula}`);
+    },
+  ],
+  [
+    "PNG export has the WebGL surface on white; SVG export has the projected iso-curves",
+    async (page, h, _base, { assert, equal }) => {
+      const png = (await import("node:fs")).readFileSync(
+        await (await h.download("export-png")).path(),
+      );
+      const image = await page.evaluate(countBlue, { png: png.toString("base64") });
+      equal(JSON.stringify(image.corner), "[255,255,255,255]", "white background");
+      assert(image.blue > image.total * 0.03, `${image.blue} of ${image.total} pixels are blue`);
+      const svg = (await import("node:fs")).readFileSync(
+        await (await h.download("export-svg")).path(),
+        "utf8",
+      );
+      const iso = svg.match(/stroke="#00466E"/gi)?.length ?? 0;
+      assert(iso >= 14, `${iso} iso-curve paths in the SVG`);
+      assert(!svg.includes("<image"), "the SVG is vector only");
+    },
+  ],
+  [
+    "two 3D embeds share one WebGL context; a 2D page and a 2D embed load no three.js",
+    async (page, h, base, { assert, equal }) => {
+      const three = [];
+      const watch = (request) => {
+        if (request.url().includes("/vendor/three/")) three.push(new URL(request.url()).pathname);
+      };
+      page.on("request", watch);
+      const url = `${base}/three-embed-test.html`;
+      try {
+        // A 2D demo page.
+        await page.goto("about:blank");
+        await page.goto(`${base}/index.html#demo=de-casteljau`);
+        await page.locator(".sl-figure[data-handles]").waitFor({ state: "attached" });
+        equal(JSON.stringify(three), "[]", "three.js files on a 2D page");
+        // A course page: a 2D embed, then two 3D ones (every getContext call counted).
+        const body = (demos) =>
+          `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script>window.contexts = []; const get = HTMLCanvasElement.prototype.getContext; HTMLCanvasElement.prototype.getContext = function (kind, ...rest) { window.contexts.push(kind); return get.call(this, kind, ...rest); };</script><script type="module" src="embed.js"></script></head><body>${demos}</body></html>`;
+        await page.route(url, (route) =>
+          route.fulfill({
+            contentType: "text/html",
+            body: body('<spline-lab id="flat" demo="de-casteljau"></spline-lab>'),
+          }),
+        );
+        await page.goto(url);
+        await page
+          .locator("spline-lab#flat .sl-figure[data-handles]")
+          .waitFor({ state: "attached" });
+        equal(JSON.stringify(three), "[]", "three.js files with a 2D embed");
+        await page.unroute(url);
+        await page.route(url, (route) =>
+          route.fulfill({
+            contentType: "text/html",
+            body: body(
+              '<spline-lab id="a" demo="bezier-patch"></spline-lab><spline-lab id="b" demo="bezier-patch" wireframe="true"></spline-lab>',
+            ),
+          }),
+        );
+        await page.goto(url);
+        for (const id of ["a", "b"]) {
+          await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+          await page
+            .locator(`spline-lab#${id} .sl-figure[data-handles]`)
+            .waitFor({ state: "attached" });
+        }
+        assert(
+          three.some((p) => p.endsWith("OrbitControls.js")),
+          `loaded ${three.join(", ")}`,
+        );
+        const kinds = await page.evaluate(() => window.contexts);
+        const gl = kinds.filter((k) => k.startsWith("webgl"));
+        equal(gl.length, 1, `WebGL contexts (${kinds.join(", ")})`);
+        const drawn = await page.evaluate(() =>
+          ["a", "b"].map((id) => {
+            const c = document.querySelector(`spline-lab#${id}`).shadowRoot.querySelector("canvas");
+            const g = document.createElement("canvas");
+            g.width = c.width;
+            g.height = c.height;
+            const x = g.getContext("2d");
+            x.drawImage(c, 0, 0);
+            const d = x.getImageData(0, 0, c.width, c.height).data;
+            let blue = 0;
+            for (let i = 0; i < d.length; i += 4) if (d[i + 2] > 90 && d[i + 2] > d[i] + 60) blue++;
+            return blue;
+          }),
+        );
+        assert(
+          drawn.every((n) => n > 1000),
+          `surface pixels per embed: ${drawn}`,
+        );
+      } finally {
+        page.off("request", watch);
+        await page.unroute(url);
+      }
+    },
+  ],
+];

@@ -1,0 +1,384 @@
+/**
+ * Control-point handles of a 3D figure (view3d.js), styled as the 2D handles (white disc, dark
+ * outline; hovered larger; selected vermillion, label bold) and drawn on the figure's 2D layer.
+ *
+ * Picking: the ray through the pointer against a sphere of the hit radius (10 px mouse, 18 px
+ * touch, measured on the screen) around each handle; of the handles it meets, the one nearest
+ * the camera wins, so a handle in front of the surface is taken before one behind it. A picked
+ * handle is dragged in the plane facing the camera through the point (the pointer's ray meets
+ * that plane), so it follows the pointer exactly. Keyboard: Tab / Shift+Tab, Home / End and
+ * Escape as in 2D; arrows move the selected point in that plane by 1 px (Shift 10 px), PageUp /
+ * PageDown by 10 px along the view direction (towards / away from the viewer); with no point
+ * selected the arrows orbit the camera (the view's `orbitBy`). Changes are announced in the
+ * figure's polite live region when they are final, as in 2D.
+ *
+ * The handles own no data: `source` is `{ count(), get(i, out), label(i), move(i, x, y, z),
+ * commit(kind, i, merge), select?(i) }` (pointHandles3 makes it for a list of [x, y, z]).
+ */
+import {
+  pointLabel,
+  placeLabelFrom,
+  roundToView,
+  HIT_RADIUS_MOUSE,
+  HIT_RADIUS_TOUCH,
+  NUDGE_PX,
+  NUDGE_PX_LARGE,
+  NUDGE_MERGE_MS,
+} from "./handles.js";
+import { formatNumber, t } from "./strings.js";
+
+/** PageUp / PageDown move a point this many px-equivalents along the view direction. */
+export const DEPTH_NUDGE_PX = 10;
+/** An arrow key with nothing selected orbits by this many degrees (Shift: ×3). */
+export const ORBIT_STEP_DEG = 5;
+
+/**
+ * The handle source for a list of [x, y, z] points: a moved point is written into the list, then
+ * `moved(i, xyz)` gets a reused Float64Array [x, y, z] for `surface.setControlPoint(…)`.
+ */
+export function pointHandles3(points, moved, label = null) {
+  const xyz = new Float64Array(3);
+  return {
+    count: () => points().length,
+    get: (i, out) => {
+      const p = points()[i];
+      out[0] = p[0];
+      out[1] = p[1];
+      out[2] = p[2];
+    },
+    label: label ?? pointLabel,
+    move: (i, x, y, z) => {
+      const p = points()[i];
+      p[0] = xyz[0] = x;
+      p[1] = xyz[1] = y;
+      p[2] = xyz[2] = z;
+      moved(i, xyz);
+    },
+  };
+}
+
+export class Handles3D {
+  /** @param {import("./view3d.js").View3D} view @param {object} source see the module comment. */
+  constructor(view, source) {
+    this.view = view;
+    this.source = source;
+    this.selected = -1;
+    this.hovered = -1;
+    this.dragging = -1;
+    this._p = new Float64Array(3);
+    this._s = new Float64Array(3);
+    this._grab = new Float64Array(3);
+    this._right = new Float64Array(3);
+    this._up = new Float64Array(3);
+    this._sight = new Float64Array(3);
+    this._plane = new Float64Array(4); // n, and the point's offset along n
+    this._pending = new Float64Array(2);
+    this._hasPending = false;
+    this._start = new Float64Array(3);
+    this._order = new Int32Array(0);
+    this._depth = new Float64Array(0);
+    this._lastNudge = { index: -1, time: 0, group: 0 };
+    this._published = "";
+
+    const canvas = view.canvas;
+    canvas.setAttribute("role", "application");
+    canvas.setAttribute("aria-roledescription", t("handles.roleDescription"));
+    this.announcer = document.createElement("div");
+    this.announcer.className = "sl-announcer";
+    this.announcer.setAttribute("aria-live", "polite");
+    this.announcer.setAttribute("aria-atomic", "true");
+    view.host.append(this.announcer);
+    view.addInteractor(this);
+    view.beforeFrame(() => this._flush());
+    this._onKey = (e) => this._key(e);
+    this._onFocus = () => {
+      if (this.selected < 0 && this.source.count() > 0 && canvas.matches(":focus-visible"))
+        this.select(0);
+    };
+    canvas.addEventListener("keydown", this._onKey);
+    canvas.addEventListener("focus", this._onFocus);
+  }
+
+  select(i) {
+    const next = i >= 0 && i < this.source.count() ? i : -1;
+    if (next === this.selected) return;
+    this.selected = next;
+    this.source.select?.(next);
+    if (next >= 0) this._announce("handles.selected3d", next);
+    this.view.requestDraw();
+  }
+
+  announce(text) {
+    this.announcer.textContent = text;
+  }
+
+  _announce(key, i) {
+    this.source.get(i, this._p);
+    this.announce(
+      t(key, {
+        label: this.source.label(i),
+        x: formatNumber(this._p[0]),
+        y: formatNumber(this._p[1]),
+        z: formatNumber(this._p[2]),
+      }),
+    );
+  }
+
+  /** The handle under canvas point (x, y): within the hit radius, nearest the camera; or -1. */
+  hitTest(x, y, pointerType) {
+    const radius = pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE;
+    let best = -1;
+    let bestDepth = Infinity;
+    for (let i = 0, n = this.source.count(); i < n; i++) {
+      this.source.get(i, this._p);
+      this.view.project(this._p[0], this._p[1], this._p[2], this._s);
+      if (this._s[2] > 1) continue; // behind the camera
+      if (Math.hypot(this._s[0] - x, this._s[1] - y) <= radius && this._s[2] < bestDepth) {
+        best = i;
+        bestDepth = this._s[2];
+      }
+    }
+    return best;
+  }
+
+  // -------------------------------------------------------------- pointer
+
+  pointerDown(event, x, y) {
+    const i = this.hitTest(x, y, event.pointerType);
+    if (i < 0) return false;
+    this.source.get(i, this._p);
+    this._start.set(this._p);
+    // The plane facing the camera through the point, and where the pointer's ray meets it.
+    this.view.viewDirection(this._plane);
+    this._plane[3] =
+      this._plane[0] * this._p[0] + this._plane[1] * this._p[1] + this._plane[2] * this._p[2];
+    if (this.view.rayOnPlane(x, y, this._plane, this._s)) {
+      for (let k = 0; k < 3; k++) this._grab[k] = this._p[k] - this._s[k];
+    } else {
+      this._grab.fill(0);
+    }
+    this.dragging = i;
+    this.select(i);
+    this.view.canvas.focus({ preventScroll: true });
+    this.view.canvas.style.cursor = "grabbing";
+    this.view.requestDraw();
+    return true;
+  }
+
+  pointerMove(event, x, y) {
+    if (this.dragging < 0) return;
+    this._pending[0] = x;
+    this._pending[1] = y;
+    this._hasPending = true;
+    this.view.requestDraw();
+  }
+
+  pointerUp(event, x, y) {
+    if (this.dragging < 0) return;
+    this.pointerMove(event, x, y);
+    this._flush();
+    const i = this.dragging;
+    this.dragging = -1;
+    this.view.canvas.style.cursor = this.hitTest(x, y, event.pointerType) >= 0 ? "grab" : "";
+    this.source.commit("drag", i, null);
+    this.source.get(i, this._p);
+    if (this._p.some((v, k) => v !== this._start[k])) this._announce("handles.moved3d", i);
+    this.view.requestDraw();
+  }
+
+  hover(x, y, pointerType) {
+    const i = this.hitTest(x, y, pointerType);
+    if (i !== this.hovered) {
+      this.hovered = i;
+      this.view.requestDraw();
+    }
+    return i >= 0 ? "grab" : null;
+  }
+
+  leave() {
+    if (this.hovered >= 0) {
+      this.hovered = -1;
+      this.view.requestDraw();
+    }
+  }
+
+  forgetPointer() {
+    this.hovered = -1;
+    this.dragging = -1;
+    this._hasPending = false;
+  }
+
+  /** Applies the newest pointer position (once per frame, before drawing). */
+  _flush() {
+    if (!this._hasPending || this.dragging < 0) return;
+    this._hasPending = false;
+    if (!this.view.rayOnPlane(this._pending[0], this._pending[1], this._plane, this._s)) return;
+    for (let k = 0; k < 3; k++) this._s[k] += this._grab[k];
+    this._apply(this.dragging, this._s);
+  }
+
+  /** Rounds to what a tenth of a pixel resolves at the point's depth, then moves. */
+  _apply(i, p) {
+    const perPixel = this.view.worldPerPixel(p[0], p[1], p[2]);
+    const scale = 1 / perPixel;
+    this.source.move(
+      i,
+      roundToView(p[0], scale),
+      roundToView(p[1], scale),
+      roundToView(p[2], scale),
+    );
+  }
+
+  // -------------------------------------------------------------- keyboard
+
+  _key(event) {
+    const n = this.source.count();
+    if (n === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
+    const i = this.selected;
+    switch (event.key) {
+      case "Tab": {
+        const next = i + (event.shiftKey ? -1 : 1);
+        if (i >= 0 && next >= 0 && next < n) {
+          this.select(next);
+          event.preventDefault();
+        } else {
+          this.select(-1);
+        }
+        return;
+      }
+      case "Home":
+        this.select(0);
+        break;
+      case "End":
+        this.select(n - 1);
+        break;
+      case "Escape":
+        this.select(-1);
+        break;
+      case "ArrowLeft":
+      case "ArrowRight":
+      case "ArrowUp":
+      case "ArrowDown": {
+        const px = event.shiftKey ? NUDGE_PX_LARGE : NUDGE_PX;
+        const dx = event.key === "ArrowLeft" ? -1 : event.key === "ArrowRight" ? 1 : 0;
+        const dy = event.key === "ArrowDown" ? -1 : event.key === "ArrowUp" ? 1 : 0;
+        if (i < 0) {
+          const step = ORBIT_STEP_DEG * (event.shiftKey ? 3 : 1);
+          this.view.orbitBy(-dx * step, -dy * step);
+        } else {
+          this._nudge(i, dx * px, dy * px, 0);
+        }
+        break;
+      }
+      case "PageUp":
+      case "PageDown":
+        if (i < 0) return;
+        this._nudge(i, 0, 0, event.key === "PageUp" ? DEPTH_NUDGE_PX : -DEPTH_NUDGE_PX);
+        break;
+      default:
+        return;
+    }
+    event.preventDefault();
+  }
+
+  /**
+   * Moves point i by (right, up) px in the plane facing the camera and `toward` px-equivalents
+   * towards the viewer, then commits (repeated presses make one undo step).
+   */
+  _nudge(i, right, up, toward) {
+    this.source.get(i, this._p);
+    const perPixel = this.view.worldPerPixel(this._p[0], this._p[1], this._p[2]);
+    this.view.screenAxes(this._right, this._up, this._sight);
+    // Towards the viewer along the line of sight through the point: it stays where it is seen.
+    this.view.sightLine(this._p[0], this._p[1], this._p[2], this._sight);
+    for (let k = 0; k < 3; k++)
+      this._p[k] +=
+        perPixel * (right * this._right[k] + up * this._up[k] - toward * this._sight[k]);
+    this._apply(i, this._p);
+    const now = performance.now();
+    const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;
+    if (!repeat) this._lastNudge.group += 1;
+    this._lastNudge.index = i;
+    this._lastNudge.time = now;
+    this.source.commit("key", i, `nudge-${this._lastNudge.group}`);
+    this._announce("handles.moved3d", i);
+    this.view.requestDraw();
+  }
+
+  // -------------------------------------------------------------- drawing
+
+  /** Draws the handles far to near (a nearer one on top) and their labels, away from the centre. */
+  draw(r, view) {
+    const theme = r.theme;
+    const n = this.source.count();
+    if (this._order.length !== n) {
+      this._order = new Int32Array(n);
+      this._depth = new Float64Array(3 * n);
+    }
+    let cx = 0;
+    let cy = 0;
+    for (let i = 0; i < n; i++) {
+      this.source.get(i, this._p);
+      view.project(this._p[0], this._p[1], this._p[2], this._s);
+      this._depth[3 * i] = this._s[0];
+      this._depth[3 * i + 1] = this._s[1];
+      this._depth[3 * i + 2] = this._s[2];
+      cx += this._s[0] / n;
+      cy += this._s[1] / n;
+      this._order[i] = i;
+    }
+    // Insertion sort by depth, farthest first (n is small: a control net).
+    for (let a = 1; a < n; a++) {
+      const k = this._order[a];
+      let b = a - 1;
+      while (b >= 0 && this._depth[3 * this._order[b] + 2] < this._depth[3 * k + 2]) {
+        this._order[b + 1] = this._order[b];
+        b--;
+      }
+      this._order[b + 1] = k;
+    }
+    for (let a = 0; a < n; a++) {
+      const i = this._order[a];
+      const x = this._depth[3 * i];
+      const y = this._depth[3 * i + 1];
+      const style =
+        i === this.selected
+          ? theme.handleSelected
+          : i === this.hovered || i === this.dragging
+            ? theme.handleHover
+            : theme.handle;
+      r.point(x, y, style);
+      placeLabelFrom(
+        r,
+        this.source.label(i),
+        x,
+        y,
+        cx,
+        cy,
+        i === this.selected ? theme.labelBold : theme.label,
+        style.radius * r.scale,
+      );
+    }
+    if (this.dragging < 0 && r === view.renderer) this._publish(n);
+  }
+
+  /** `data-handles` on the figure host: "x,y;x,y" canvas CSS px (a hook for tests), when changed. */
+  _publish(n) {
+    const parts = [];
+    for (let i = 0; i < n; i++)
+      parts.push(`${this._depth[3 * i].toFixed(1)},${this._depth[3 * i + 1].toFixed(1)}`);
+    const text = parts.join(";");
+    if (text === this._published) return;
+    this._published = text;
+    this.view.host.dataset.handles = text;
+  }
+
+  destroy() {
+    const canvas = this.view.canvas;
+    canvas.removeEventListener("keydown", this._onKey);
+    canvas.removeEventListener("focus", this._onFocus);
+    canvas.setAttribute("role", "img");
+    canvas.removeAttribute("aria-roledescription");
+    this.announcer.remove();
+  }
+}

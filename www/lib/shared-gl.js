@@ -1,0 +1,41 @@
+/**
+ * ONE WebGL renderer for every 3D figure of a page (browsers cap the live WebGL contexts, ~16 in
+ * Chromium). It draws on an off-screen canvas; a figure renders its scene into the lower-left
+ * `width × height` device pixels and copies them into its own 2D canvas at once
+ * (`drawImage`, in the same task, so the drawing buffer need not be preserved). The off-screen
+ * canvas only grows, to the largest figure asked for; a smaller figure uses a viewport of it.
+ */
+import { loadedThree } from "./three-loader.js";
+
+let shared = null;
+
+/**
+ * Renders `scene` through `camera` at `width × height` device pixels (integers ≥ 1) with a
+ * transparent background and returns the source rectangle to copy:
+ * `{ canvas, x, y, width, height }` (top-left origin, as `drawImage` reads it).
+ */
+export function renderShared(scene, camera, width, height) {
+  const { THREE } = loadedThree();
+  if (!shared) {
+    const canvas = document.createElement("canvas");
+    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, alpha: true });
+    renderer.setPixelRatio(1);
+    renderer.setClearColor(0x000000, 0);
+    renderer.setScissorTest(false);
+    shared = { canvas, renderer, width: 0, height: 0, out: { canvas, x: 0, y: 0, width, height } };
+  }
+  if (width > shared.width || height > shared.height) {
+    shared.width = Math.max(width, shared.width);
+    shared.height = Math.max(height, shared.height);
+    shared.renderer.setSize(shared.width, shared.height, false);
+  }
+  shared.renderer.setViewport(0, 0, width, height);
+  shared.renderer.clear();
+  shared.renderer.render(scene, camera);
+  const out = shared.out;
+  out.x = 0;
+  out.y = shared.height - height; // GL's viewport starts at the bottom-left
+  out.width = width;
+  out.height = height;
+  return out;
+}

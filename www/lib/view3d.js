@@ -1,0 +1,444 @@
+/**
+ * A 3D figure with the contract of the 2D `View` (view.js), for surfaces: the shell and the
+ * declarative runtime use it through the same methods (`fit`, `getWindow` / `setWindow`,
+ * `requestDraw`, `beforeFrame`, `addInteractor`, `setLabel`, `setLecture`, `renderTo`,
+ * `destroy`), only the "window" is a camera `[azimuth, elevation, distance, tx, ty, tz]`
+ * (camera3d.js) and the world is 3D.
+ *
+ * What is on the screen is one 2D canvas (`.sl-canvas`, sharp at the device pixel ratio): the
+ * lit surface, its wireframe and iso-curves rendered by the page's ONE shared WebGL renderer
+ * (shared-gl.js) and copied in, then a 2D layer drawn by the demo with the usual renderer
+ * (control net, handles, labels, marks; `project(x, y, z, out)` maps a point to canvas CSS px),
+ * then a small axis triad in the lower-left corner. The SVG export records the same 2D layer
+ * with the wireframe and iso-curves projected as vector paths (no hidden-line removal, no
+ * silhouette); PNG and thumbnails composite the WebGL image at their own size.
+ *
+ * Input: pointers go to the interactors first (the 3D handles); on empty space OrbitControls
+ * orbits (drag), pans (Shift-drag, two fingers) and zooms (wheel, pinch) — in embeds the wheel
+ * zooms only with Ctrl/⌘, as in 2D. Nothing moves by itself (no damping, no auto-rotation), so
+ * `prefers-reduced-motion` is honoured. three.js must be loaded first (three-loader.js
+ * `prepareFigure`).
+ */
+import { CanvasRenderer } from "./draw.js";
+import { currentTheme, onThemeChange, LECTURE_SCALE } from "./theme.js";
+import { loadedThree } from "./three-loader.js";
+import { renderShared } from "./shared-gl.js";
+import { SceneContent } from "./scene3d.js";
+import { drawTriad, drawVectorScene } from "./draw3d.js";
+import {
+  FIELD_OF_VIEW,
+  verticalFieldOfView,
+  applyCamera,
+  readCamera,
+  roundCamera,
+  fitCamera,
+  DEFAULT_AZIMUTH,
+  DEFAULT_ELEVATION,
+  MAX_ELEVATION,
+} from "./camera3d.js";
+
+const DEG = Math.PI / 180;
+
+export class View3D {
+  /**
+   * @param {HTMLElement} host the figure slot; the canvas fills it.
+   * @param {object} o
+   * @param {(r, view) => void} o.draw the 2D layer (canvas and SVG alike).
+   * @param {() => object} o.scene the WebGL content (scene3d.js), asked once per frame.
+   * @param {() => number[]} o.bounds `[xmin, ymin, zmin, xmax, ymax, zmax]` of the content.
+   * @param {(camera: number[]) => void} [o.onWindowChange] after an orbit, pan or zoom ends.
+   * @param {string} [o.label] accessible name.
+   * @param {boolean} [o.wheelNeedsModifier] embeds: the plain wheel scrolls the page.
+   */
+  constructor(
+    host,
+    { draw, scene, bounds, onWindowChange = null, label = "", wheelNeedsModifier = false },
+  ) {
+    const three = loadedThree();
+    if (!three) throw new Error("three.js is not loaded: await prepareFigure(demo) first");
+    const { THREE, OrbitControls } = three;
+    this.THREE = THREE;
+    this.host = host;
+    this.drawFigure = draw;
+    this.sceneOf = scene;
+    this.bounds = bounds;
+    this.onWindowChange = onWindowChange;
+    this.wheelNeedsModifier = wheelNeedsModifier;
+    this.is3d = true;
+
+    this.canvas = document.createElement("canvas");
+    this.canvas.className = "sl-canvas";
+    this.canvas.setAttribute("role", "img");
+    this.canvas.tabIndex = 0;
+    this.canvas.style.touchAction = "none";
+    this.setLabel(label);
+    host.append(this.canvas);
+
+    this.width = 0;
+    this.height = 0;
+    this.pixelRatio = window.devicePixelRatio || 1;
+    this.theme = currentTheme();
+    this.lecture = false;
+    this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), {
+      pixelRatio: this.pixelRatio,
+      theme: this.theme,
+    });
+
+    this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
+    this.content = new SceneContent(THREE);
+    this.content.attachLight(this.camera);
+    this._camera = fitCamera([-1, -1, -1, 1, 1, 1]);
+    this._w = 1;
+    this._h = 1;
+    this._vector = new THREE.Vector3();
+    this._ray = new THREE.Raycaster();
+    this._ndc = new THREE.Vector2();
+    this._plane = new THREE.Plane();
+
+    this._interactors = [];
+    this._captured = new Map();
+    this._beforeFrame = [];
+    this._frameRequested = false;
+    this._frame = () => this._onFrame();
+    this._destroyed = false;
+
+    this._listen(); // before OrbitControls: a handle claims the pointer first
+    this.controls = new OrbitControls(this.camera, this.canvas);
+    this.controls.enableDamping = false;
+    this.controls.screenSpacePanning = true;
+    this.controls.minPolarAngle = (90 - MAX_ELEVATION) * DEG;
+    this.controls.maxPolarAngle = (90 + MAX_ELEVATION) * DEG;
+    this.controls.addEventListener("change", () => this.requestDraw());
+    this.controls.addEventListener("end", () => this._reportCamera());
+    this._apply(this._camera);
+  }
+
+  // ---------------------------------------------------------------- camera ("window")
+
+  /** The camera numbers as the state stores them. */
+  getWindow() {
+    return roundCamera(readCamera(this.camera, this.controls.target));
+  }
+
+  /** Shows the camera `[azimuth, elevation, distance, tx, ty, tz]`. */
+  setWindow(camera) {
+    this._apply(camera);
+    this.requestDraw();
+  }
+
+  /** Fits the content (`bounds()`) into the camera's frame, keeping the direction of view; returns the camera. */
+  fit(bounds = this.bounds?.()) {
+    const [azimuth, elevation] = this._camera ?? [DEFAULT_AZIMUTH, DEFAULT_ELEVATION];
+    const camera = fitCamera(bounds ?? [-1, -1, -1, 1, 1, 1], azimuth, elevation);
+    this.setWindow(camera);
+    return camera;
+  }
+
+  /** Turns the camera around its target by the given degrees and reports it (keyboard orbit). */
+  orbitBy(dAzimuth, dElevation) {
+    const [a, e, ...rest] = this.getWindow();
+    const elevation = Math.max(-MAX_ELEVATION, Math.min(MAX_ELEVATION, e + dElevation));
+    this._apply(roundCamera([a + dAzimuth, elevation, ...rest]));
+    this.requestDraw();
+    this.onWindowChange?.(this._camera);
+  }
+
+  _apply(camera) {
+    this._camera = camera;
+    this.controls?.target.set(camera[3], camera[4], camera[5]);
+    applyCamera(this.camera, camera);
+  }
+
+  /** After an orbit, pan or zoom: rounds the camera as the state stores it, applies, reports. */
+  _reportCamera() {
+    const camera = this.getWindow();
+    this._apply(camera);
+    this.requestDraw();
+    this.onWindowChange?.(camera);
+  }
+
+  // ---------------------------------------------------------------- projection
+
+  /** Writes canvas CSS px [x, y] and the NDC depth (−1 near … 1 far; > 1 behind) of (x, y, z). */
+  project(x, y, z, out) {
+    const v = this._vector.set(x, y, z).project(this.camera);
+    out[0] = ((v.x + 1) / 2) * this._w;
+    out[1] = ((1 - v.y) / 2) * this._h;
+    out[2] = v.z;
+    return out;
+  }
+
+  /** The unit direction the camera looks along (world). */
+  viewDirection(out) {
+    const e = this.camera.matrixWorld.elements;
+    const n = Math.hypot(e[8], e[9], e[10]) || 1;
+    out[0] = -e[8] / n;
+    out[1] = -e[9] / n;
+    out[2] = -e[10] / n;
+    return out;
+  }
+
+  /** The camera's unit right, up and forward directions (world). */
+  screenAxes(right, up, forward) {
+    const e = this.camera.matrixWorld.elements;
+    for (let k = 0; k < 3; k++) {
+      right[k] = e[k];
+      up[k] = e[4 + k];
+    }
+    this.viewDirection(forward);
+  }
+
+  /** The unit direction from the camera through (x, y, z): its line of sight. */
+  sightLine(x, y, z, out) {
+    const p = this.camera.position;
+    const n = Math.hypot(x - p.x, y - p.y, z - p.z) || 1;
+    out[0] = (x - p.x) / n;
+    out[1] = (y - p.y) / n;
+    out[2] = (z - p.z) / n;
+    return out;
+  }
+
+  /** World length of one CSS pixel at the depth of (x, y, z) (perspective). */
+  worldPerPixel(x, y, z) {
+    const d = this.viewDirection(this._dir ?? (this._dir = new Float64Array(3)));
+    const p = this.camera.position;
+    const depth = Math.max((x - p.x) * d[0] + (y - p.y) * d[1] + (z - p.z) * d[2], 1e-9);
+    return (2 * depth * Math.tan((this.camera.fov / 2) * DEG)) / Math.max(this._h, 1);
+  }
+
+  /**
+   * Where the pointer's ray through canvas (x, y) meets the plane n·p = d (`plane` = [nx, ny, nz,
+   * d]): written into `out`, true; false when the ray runs parallel to it or away.
+   */
+  rayOnPlane(x, y, plane, out) {
+    this._ndc.set((x / this._w) * 2 - 1, 1 - (y / this._h) * 2);
+    this._ray.setFromCamera(this._ndc, this.camera);
+    this._plane.normal.set(plane[0], plane[1], plane[2]);
+    this._plane.constant = -plane[3];
+    const hit = this._ray.ray.intersectPlane(this._plane, this._vector);
+    if (!hit) return false;
+    out[0] = hit.x;
+    out[1] = hit.y;
+    out[2] = hit.z;
+    return true;
+  }
+
+  /** A pixel scale for code written for the 2D View (a point list's rounding): px per unit at the target. */
+  get scale() {
+    const [, , , tx, ty, tz] = this._camera;
+    return 1 / this.worldPerPixel(tx, ty, tz);
+  }
+
+  // ---------------------------------------------------------------- drawing
+
+  setLabel(text) {
+    if (this._label !== text) {
+      this._label = text;
+      this.canvas.setAttribute("aria-label", text);
+    }
+  }
+
+  setLecture(on) {
+    this.lecture = on;
+    this.renderer.scale = on ? LECTURE_SCALE : 1;
+    this.requestDraw();
+  }
+
+  beforeFrame(hook) {
+    this._beforeFrame.push(hook);
+  }
+
+  requestDraw() {
+    if (this._frameRequested || this._destroyed) return;
+    this._frameRequested = true;
+    requestAnimationFrame(this._frame);
+  }
+
+  _onFrame() {
+    this._frameRequested = false;
+    if (this._destroyed) return;
+    for (const hook of this._beforeFrame) hook();
+    this.drawNow();
+  }
+
+  /** Sets the projection for a frame of w × h CSS px. */
+  _layout(w, h) {
+    this._w = w;
+    this._h = h;
+    this.camera.aspect = w / h;
+    this.camera.fov = verticalFieldOfView(w / h); // the camera's frame whole at any aspect
+    this.camera.updateProjectionMatrix();
+  }
+
+  drawNow() {
+    if (!this.width || !this.height) return;
+    this.renderer.theme = this.theme;
+    this._paint(this.renderer, this.width, this.height, this.theme);
+  }
+
+  /** One frame into `r` (canvas or SVG) of w × h CSS px: the WebGL image, the 2D layer, the triad. */
+  _paint(r, w, h, theme) {
+    this._layout(w, h);
+    this.content.update(this.sceneOf());
+    // A hook for tests, as `data-handles`: geometries made so far (a drag refills, makes none).
+    const made = String(this.content.geometriesMade);
+    if (this.host.dataset.geometries !== made) this.host.dataset.geometries = made;
+    r.begin(w, h, theme.background);
+    const context = r.context;
+    if (context?.drawImage) {
+      const pw = context.canvas.width;
+      const ph = context.canvas.height;
+      const image = renderShared(this.content.scene, this.camera, pw, ph);
+      context.save();
+      context.setTransform(1, 0, 0, 1, 0, 0);
+      context.drawImage(image.canvas, image.x, image.y, image.width, image.height, 0, 0, pw, ph);
+      context.restore();
+    } else {
+      drawVectorScene(r, this, this.sceneOf());
+    }
+    this.drawFigure(r, this);
+    drawTriad(r, this);
+    r.end();
+  }
+
+  /** The figure into another renderer (SVG recorder, export canvas, thumbnail); then back. */
+  renderTo(renderer, width, height, theme) {
+    const savedTheme = this.theme;
+    this.theme = theme;
+    renderer.theme = theme;
+    renderer.scale = this.renderer.scale;
+    this._paint(renderer, width, height, theme);
+    this.theme = savedTheme;
+    if (this.width && this.height) this._layout(this.width, this.height);
+  }
+
+  _resize(cssWidth, cssHeight, devicePixels = null) {
+    const w = Math.max(0, cssWidth);
+    const h = Math.max(0, cssHeight);
+    const dpr = window.devicePixelRatio || 1;
+    const pixelWidth = devicePixels ? devicePixels.inlineSize : Math.round(w * dpr);
+    const pixelHeight = devicePixels ? devicePixels.blockSize : Math.round(h * dpr);
+    if (
+      w === this.width &&
+      h === this.height &&
+      pixelWidth === this.canvas.width &&
+      pixelHeight === this.canvas.height
+    )
+      return;
+    this.width = w;
+    this.height = h;
+    this.pixelRatio = w > 0 ? pixelWidth / w : dpr;
+    this.canvas.width = pixelWidth;
+    this.canvas.height = pixelHeight;
+    this.renderer.pixelRatio = this.pixelRatio;
+    this.drawNow();
+  }
+
+  // ---------------------------------------------------------------- input
+
+  /** As View#addInteractor: `{ pointerDown, pointerMove, pointerUp, hover, leave }`, first claim wins. */
+  addInteractor(interactor, { first = false } = {}) {
+    if (first) this._interactors.unshift(interactor);
+    else this._interactors.push(interactor);
+  }
+
+  eventPosition(event) {
+    const rect = this.canvas.getBoundingClientRect();
+    return [
+      event.clientX - rect.left - this.canvas.clientLeft,
+      event.clientY - rect.top - this.canvas.clientTop,
+    ];
+  }
+
+  _listen() {
+    const c = this.canvas;
+    this._handlers = {
+      pointerdown: (e) => this._down(e),
+      pointermove: (e) => this._move(e),
+      pointerup: (e) => this._up(e),
+      pointercancel: (e) => this._up(e),
+      pointerleave: () => this._interactors.forEach((it) => it.leave?.()),
+      wheel: (e) => {
+        // Embeds: a plain wheel scrolls the page; OrbitControls never sees it.
+        if (this.wheelNeedsModifier && !e.ctrlKey && !e.metaKey) e.stopImmediatePropagation();
+      },
+    };
+    for (const [type, handler] of Object.entries(this._handlers))
+      c.addEventListener(type, handler, type === "wheel" ? { passive: true } : undefined);
+    this._resizeObserver = new ResizeObserver((entries) => {
+      const entry = entries[entries.length - 1];
+      this._resize(
+        entry.contentRect.width,
+        entry.contentRect.height,
+        entry.devicePixelContentBoxSize?.[0] ?? null,
+      );
+    });
+    try {
+      this._resizeObserver.observe(c, { box: "device-pixel-content-box" });
+    } catch {
+      this._resizeObserver.observe(c);
+    }
+    this._watchPixelRatio();
+    this._stopTheme = onThemeChange(() => {
+      this.theme = currentTheme();
+      this.requestDraw();
+    });
+  }
+
+  _watchPixelRatio() {
+    this._dprQuery?.removeEventListener("change", this._dprHandler);
+    this._dprQuery = matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`);
+    this._dprHandler = () => {
+      this._resize(this.width, this.height);
+      this._watchPixelRatio();
+    };
+    this._dprQuery.addEventListener("change", this._dprHandler);
+  }
+
+  _down(event) {
+    if (event.button !== undefined && event.button > 0) return;
+    const [x, y] = this.eventPosition(event);
+    for (const it of this._interactors) {
+      if (it.pointerDown(event, x, y)) {
+        this._captured.set(event.pointerId, it);
+        this.canvas.setPointerCapture(event.pointerId);
+        event.preventDefault();
+        event.stopImmediatePropagation(); // not an orbit
+        return;
+      }
+    }
+  }
+
+  _move(event) {
+    const [x, y] = this.eventPosition(event);
+    const owner = this._captured.get(event.pointerId);
+    if (owner) {
+      owner.pointerMove(event, x, y);
+      return;
+    }
+    if (event.buttons) return; // an orbit in progress
+    let cursor = null;
+    for (const it of this._interactors) cursor ??= it.hover(x, y, event.pointerType);
+    this.canvas.style.cursor = cursor ?? "grab";
+  }
+
+  _up(event) {
+    const owner = this._captured.get(event.pointerId);
+    if (!owner) return;
+    const [x, y] = this.eventPosition(event);
+    this._captured.delete(event.pointerId);
+    owner.pointerUp(event, x, y);
+  }
+
+  destroy() {
+    this._destroyed = true;
+    this.controls.dispose();
+    for (const [type, handler] of Object.entries(this._handlers))
+      this.canvas.removeEventListener(type, handler);
+    this._resizeObserver.disconnect();
+    this._dprQuery?.removeEventListener("change", this._dprHandler);
+    this._stopTheme();
+    this.content.dispose();
+    this.canvas.remove();
+  }
+}
