@@ -95,7 +95,7 @@ impl JsBSplineSurface {
 }
 
 impl JsBSplineSurface {
-    fn wrap(inner: BSplineSurface) -> Self {
+    pub(super) fn wrap(inner: BSplineSurface) -> Self {
         JsBSplineSurface {
             inner,
             view: Vec::new(),
@@ -145,11 +145,18 @@ impl JsBezierSurface {
             .inner
             .split_bezier(u, v)?
             .into_iter()
-            .map(|inner| JsBezierSurface {
-                inner,
-                view: Vec::new(),
-            })
+            .map(JsBezierSurface::wrap)
             .collect())
+    }
+}
+
+impl JsBezierSurface {
+    /// A core one-span surface (a Bézier patch) as a JS `BezierSurface`.
+    pub(super) fn wrap(inner: BSplineSurface) -> Self {
+        JsBezierSurface {
+            inner,
+            view: Vec::new(),
+        }
     }
 }
 

@@ -6,7 +6,7 @@ use super::{numbers, string_arg, whole};
 use crate::bspline::{BSplineCurve, Parameterization};
 use crate::error::Error;
 use crate::geom::points_from_flat;
-use crate::surface::{self, BSplineSurface};
+use crate::surface;
 use glam::DVec3;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -114,32 +114,6 @@ fn vector_arg(name: &'static str, value: &JsValue) -> Result<DVec3, JsError> {
     }
 }
 
-/// The core surface as a JS `BSplineSurface` (through its constructor, which re-checks the
-/// net: O(rows·cols)).
-fn to_js(s: &BSplineSurface) -> Result<JsBSplineSurface, JsError> {
-    let coords: Vec<f64> = s
-        .control_points()
-        .iter()
-        .flat_map(|p| p.to_array())
-        .collect();
-    let array = |v: &[f64]| -> JsValue { js_sys::Float64Array::from(v).into() };
-    let weights = if s.is_rational() {
-        array(&s.weights())
-    } else {
-        JsValue::UNDEFINED
-    };
-    JsBSplineSurface::new(
-        array(&coords),
-        s.rows() as f64,
-        s.cols() as f64,
-        s.degree_u() as f64,
-        s.degree_v() as f64,
-        array(s.knots_u().as_slice()),
-        array(s.knots_v().as_slice()),
-        weights,
-    )
-}
-
 /// `revolve(profile, axisPoint, axisDirection, angle = 2π)`: the exact NURBS surface swept by
 /// a 3D `BSplineCurve` or `BezierCurve` turning about the axis (counter-clockwise seen from the
 /// tip of the direction). u runs around the axis on [0, 1] (degree 2, 1 arc up to 90°, 2 up to
@@ -158,12 +132,12 @@ pub fn revolve(
     let axis_point = vector_arg("axisPoint", &axis_point)?;
     let axis_direction = vector_arg("axisDirection", &axis_direction)?;
     let angle = angle.unwrap_or(std::f64::consts::TAU);
-    to_js(&surface::revolve(
+    Ok(JsBSplineSurface::wrap(surface::revolve(
         &profile,
         axis_point,
         axis_direction,
         angle,
-    )?)
+    )?))
 }
 
 /// `extrude(curve, direction)`: S(u, v) = C(u) + v·direction, u along the curve (its degree
@@ -175,7 +149,7 @@ pub fn extrude(
 ) -> Result<JsBSplineSurface, JsError> {
     let curve = curve_arg("curve", "extrude", &curve)?;
     let direction = vector_arg("direction", &direction)?;
-    to_js(&surface::extrude(&curve, direction)?)
+    Ok(JsBSplineSurface::wrap(surface::extrude(&curve, direction)?))
 }
 
 /// `ruled(curveA, curveB)`: S(u, v) = (1 − v) A(u) + v B(u) on [0, 1]², after making the
@@ -189,7 +163,7 @@ pub fn ruled(
 ) -> Result<JsBSplineSurface, JsError> {
     let a = curve_arg("curveA", "ruled", &curve_a)?;
     let b = curve_arg("curveB", "ruled", &curve_b)?;
-    to_js(&surface::ruled(&a, &b)?)
+    Ok(JsBSplineSurface::wrap(surface::ruled(&a, &b)?))
 }
 
 /// `interpolateSurface(points, rows, cols, degreeU, degreeV, kind = "chord")`: the B-spline
@@ -212,7 +186,7 @@ pub fn interpolate_surface(
     // The grid's errors come before the option's (the documented validation order).
     surface::construct::check_grid(&points, rows, cols, degree_u, degree_v)?;
     let kind = Parameterization::parse(&string_arg("kind", &kind, Some("chord"))?)?;
-    to_js(&surface::interpolate_surface(
+    Ok(JsBSplineSurface::wrap(surface::interpolate_surface(
         &points, rows, cols, degree_u, degree_v, kind,
-    )?)
+    )?))
 }

@@ -99,26 +99,11 @@ impl JsBSplineSurface {
     /// patches.
     #[wasm_bindgen(js_name = toBezierPatches)]
     pub fn to_bezier_patches(&self) -> Result<Vec<JsBezierSurface>, JsError> {
-        let patches = self.inner.to_bezier_patches()?;
-        let mut out = Vec::with_capacity(patches.len());
-        for patch in patches {
-            let coords: Vec<f64> = patch
-                .control_points()
-                .iter()
-                .flat_map(|p| p.to_array())
-                .collect();
-            let weights = if patch.is_rational() {
-                Float64Array::from(&patch.weights()[..]).into()
-            } else {
-                JsValue::UNDEFINED
-            };
-            out.push(JsBezierSurface::new(
-                Float64Array::from(&coords[..]).into(),
-                patch.rows() as f64,
-                patch.cols() as f64,
-                weights,
-            )?);
-        }
-        Ok(out)
+        Ok(self
+            .inner
+            .to_bezier_patches()?
+            .into_iter()
+            .map(JsBezierSurface::wrap)
+            .collect())
     }
 }
