@@ -250,6 +250,10 @@ export async function fuzzApi({ seedValue, iterations }) {
       "parameterize",
       "phantomPoints",
       "uniformSegmentMatrix",
+      "revolve",
+      "extrude",
+      "ruled",
+      "interpolateSurface",
     ];
     const f = pick(fns);
     const args = Array.from({ length: 1 + Math.floor(rnd() * 5) }, () =>
