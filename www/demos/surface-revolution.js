@@ -16,6 +16,7 @@
  */
 import { field } from "../lib/validate.js";
 import {
+  pointButtons,
   slider,
   checkbox,
   choice,
@@ -25,7 +26,7 @@ import {
   INTEGER_SLIDER,
 } from "../lib/panel.js";
 import { fmt, subscript } from "../lib/format.js";
-import { t } from "../lib/strings.js";
+import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { flatPath3, pointsPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
@@ -51,6 +52,9 @@ const MESH_V = 36;
 const CURVE_SAMPLES = 96;
 const ISO_LINES = 8;
 const RULINGS = 12;
+/** The profile's control points: a clamped cubic with 5 to 7. */
+const PROFILE_MIN = 5;
+const PROFILE_MAX = 7;
 
 export const defaultState = Object.freeze({
   mode: "vase",
@@ -87,7 +91,7 @@ export const fields = {
   R: field.number({ min: 0.5, max: 6 }),
   r: field.number({ min: 0.1, max: 3 }),
   angle: field.number({ min: 1, max: 360 }),
-  profile: field.points({ min: 5, max: 7 }),
+  profile: field.points({ min: PROFILE_MIN, max: PROFILE_MAX }),
   direction: field.numbers({ min: 3, max: 3 }),
   curveA: field.points3d({ min: 3, max: 3 }),
   curveB: field.points3d({ min: 4, max: 4 }),
@@ -181,6 +185,16 @@ export const compute = {
   ],
   curveSamples: [GEOMETRY, (s, d) => d.geo.curves.map((c) => c.sampleUniform(CURVE_SAMPLES))],
   checks: [GEOMETRY, checks],
+  // The axis of revolution (z), drawn a quarter of the height beyond the surface's ends.
+  axis: [
+    GEOMETRY,
+    (s) => {
+      if (s.mode !== "torus" && s.mode !== "vase") return null;
+      const [, , z0, , , z1] = figure3d.bounds(s);
+      const pad = 0.25 * (z1 - z0 || 1);
+      return [z0 - pad, z1 + pad];
+    },
+  ],
 };
 
 /** The mode buttons; a new mode fits the camera to its surface (and the URL keeps that camera). */
@@ -203,8 +217,8 @@ function checkText(s, d) {
     case "vase":
       return t("surfaceRevolution.check.vase", {
         ...net,
-        revolve: fmt(d.geo.timing.surface, 2),
-        mesh: fmt(d.geo.timing.mesh, 2),
+        revolve: formatNumber(d.geo.timing.surface),
+        mesh: formatNumber(d.geo.timing.mesh),
       });
     case "extrude":
       return t("surfaceRevolution.check.extrude", {
@@ -235,6 +249,7 @@ function checkData(s, d) {
 }
 
 const isTorus = (s) => s.mode === "torus";
+const hasProfile = (s) => s.mode === "vase" || s.mode === "extrude";
 const two = (x) => fmt(x, 2);
 
 export const controls = [
@@ -264,6 +279,10 @@ export const controls = [
         ...INTEGER_SLIDER,
       }),
     ),
+  ),
+  shownWhen(
+    hasProfile,
+    pointButtons("profile", { min: PROFILE_MIN, max: PROFILE_MAX, prefix: "surfaceRevolution" }),
   ),
   readout("check", checkText, { data: checkData }),
   group(
@@ -364,9 +383,21 @@ function entriesOf(s) {
   return entryCache.get(key);
 }
 
+/** The handles, and + / Delete on a selected profile point (as the 2D handles have them). */
 export function setup(ui) {
-  entryHandles(ui, (s) => entriesOfView(s, ui.view));
-  return {};
+  const handles = entryHandles(ui, (s) => entriesOfView(s, ui.view));
+  const canvas = ui.view.canvas;
+  const onKey = (event) => {
+    const i = handles.selected;
+    if (!hasProfile(ui.state) || i < 0 || i >= ui.state.profile.length) return;
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (event.key === "+") ui.pointList.add(i);
+    else if (event.key === "Delete" || event.key === "Backspace") ui.pointList.remove(i);
+    else return;
+    event.preventDefault();
+  };
+  canvas.addEventListener("keydown", onKey);
+  return { destroy: () => canvas.removeEventListener("keydown", onKey) };
 }
 
 /** The entries with the view bound into their `move` (the plane constraint needs the camera). */
@@ -438,10 +469,8 @@ const b = new Float64Array(3);
 export function draw(r, v, s, d) {
   const theme = r.theme;
   const styles = stylesFor(theme);
-  if (s.mode === "torus" || s.mode === "vase") {
-    const [, , z0, , , z1] = figure3d.bounds(s);
-    const pad = 0.25 * (z1 - z0 || 1);
-    segmentPath3(r, v, 0, 0, z0 - pad, 0, 0, z1 + pad);
+  if (d.axis) {
+    segmentPath3(r, v, 0, 0, d.axis[0], 0, 0, d.axis[1]);
     r.paint(theme.helper);
   }
   if (s.net) {
@@ -472,7 +501,7 @@ export function draw(r, v, s, d) {
 
 // ------------------------------------------------------------------ formula and label
 
-const triple = (p) => `(${fmt(p[0], 2)}, ${fmt(p[1], 2)}, ${fmt(p[2], 2)})`;
+const triple = (p) => `(${formatNumber(p[0])}, ${formatNumber(p[1])}, ${formatNumber(p[2])})`;
 const texTriple = (p) => `(${fmt(p[0])},\\ ${fmt(p[1])},\\ ${fmt(p[2])})`;
 
 /** The weights of the net's first column, w_{i0}: the arcs' pattern (the profile's w_0 = 1). */

@@ -23,6 +23,8 @@ export const SURFACE_REVOLUTION = {
   "surfaceRevolution.control.angle": "Angle of revolution (°)",
   "surfaceRevolution.control.angle.input": "angle in degrees, up to 360",
   "surfaceRevolution.control.show": "Show",
+  "surfaceRevolution.minPoints": "the profile needs at least {min} control points",
+  "surfaceRevolution.maxPoints": "the profile takes at most {max} control points here",
   "surfaceRevolution.control.net": "Control net of the surface",
   "surfaceRevolution.control.iso": "Iso-curves",
   "surfaceRevolution.control.wireframe": "Wireframe",
