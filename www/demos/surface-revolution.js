@@ -25,16 +25,18 @@ import {
   shownWhen,
   INTEGER_SLIDER,
 } from "../lib/panel.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt } from "../lib/format.js";
 import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { flatPath3, pointsPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
-import { HUES, WIDTH, SECOND_CURVE, themed } from "../lib/theme.js";
-import { entryHandles, flatNetPath, ontoPlane, segmentPath3 } from "../lib/plane-handles.js";
+import { HUES, WIDTH, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
+import { entryHandles, flatNetPath, segmentPath3 } from "../lib/plane-handles.js";
+import { modeHandles } from "../lib/revolution-handles.js";
 import {
   Construction,
   MODES,
+  R_RANGE,
   torusDistance,
   GRID_CHECK,
   sciTex,
@@ -71,15 +73,15 @@ export const defaultState = Object.freeze({
   ],
   direction: [0.8, -0.6, 2.4],
   curveA: [
-    [-2.5, -2, 0.5],
-    [0, -2.6, 3.6],
-    [2.5, -2, 0.5],
+    [-3, -2.5, 0],
+    [0, -2.5, 2.2],
+    [3, -2.5, 0],
   ],
   curveB: [
-    [-2.5, 2, 3],
-    [-1, 2.6, -0.6],
-    [1, 2, 3.6],
-    [2.5, 2.6, 0],
+    [-3, 2.5, 2.5],
+    [-1, 2.5, -0.5],
+    [1, 2.5, 3.5],
+    [3, 2.5, 1],
   ],
   net: true,
   iso: true,
@@ -88,7 +90,7 @@ export const defaultState = Object.freeze({
 
 export const fields = {
   mode: field.choice(MODES),
-  R: field.number({ min: 0.5, max: 6 }),
+  R: field.number({ min: R_RANGE[0], max: R_RANGE[1] }),
   r: field.number({ min: 0.1, max: 3 }),
   angle: field.number({ min: 1, max: 360 }),
   profile: field.points({ min: PROFILE_MIN, max: PROFILE_MAX }),
@@ -282,7 +284,10 @@ export const controls = [
   ),
   shownWhen(
     hasProfile,
-    pointButtons("profile", { min: PROFILE_MIN, max: PROFILE_MAX, prefix: "surfaceRevolution" }),
+    group(
+      null,
+      pointButtons("profile", { min: PROFILE_MIN, max: PROFILE_MAX, prefix: "surfaceRevolution" }),
+    ),
   ),
   readout("check", checkText, { data: checkData }),
   group(
@@ -295,97 +300,9 @@ export const controls = [
 
 // ------------------------------------------------------------------ handles
 
-const LABELS = new Map();
-const labelOf = (letter, i) => {
-  const key = `${letter}${i}`;
-  if (!LABELS.has(key)) LABELS.set(key, i < 0 ? letter : `${letter}${subscript(i)}`);
-  return LABELS.get(key);
-};
-
-/** A profile point held in a coordinate plane: [a, b] ↔ (a, 0, b) (vase) or (a, b, 0) (extrude). */
-const profileEntry = (i, inXz) => ({
-  label: labelOf("P", i),
-  get(s, out) {
-    const [a, b] = s.profile[i];
-    out[0] = a;
-    out[1] = inXz ? 0 : b;
-    out[2] = inXz ? b : 0;
-  },
-  move(s, p, view) {
-    ontoPlane(view, p, inXz ? 1 : 2, 0);
-    s.profile[i][0] = p[0];
-    s.profile[i][1] = inXz ? p[2] : p[1];
-    return "profile";
-  },
-});
-
-/** The extrusion direction's tip at P₀ + d (P₀ = C(0) of the clamped profile, in z = 0). */
-const tipEntry = {
-  label: labelOf("d", -1),
-  get(s, out) {
-    out[0] = s.profile[0][0] + s.direction[0];
-    out[1] = s.profile[0][1] + s.direction[1];
-    out[2] = s.direction[2];
-  },
-  move(s, p) {
-    s.direction[0] = p[0] - s.profile[0][0];
-    s.direction[1] = p[1] - s.profile[0][1];
-    s.direction[2] = p[2];
-    return "direction";
-  },
-};
-
-/** A free point of curve A or B. */
-const curveEntry = (name, letter, i) => ({
-  label: labelOf(letter, i),
-  get(s, out) {
-    out.set(s[name][i]);
-  },
-  move(s, p) {
-    s[name][i] = [p[0], p[1], p[2]];
-    return name;
-  },
-});
-
-/** The torus' profile circle's centre (R, 0, 0): dragged in y = 0, its x sets R. */
-const centreEntry = {
-  label: labelOf("C", -1),
-  get(s, out) {
-    out[0] = s.R;
-    out[1] = 0;
-    out[2] = 0;
-  },
-  move(s, p, view) {
-    ontoPlane(view, p, 1, 0);
-    s.R = Math.min(6, Math.max(0.5, Math.round(p[0] * 100) / 100));
-    return "R";
-  },
-};
-
-/** The handles of each mode, made once per mode and point count (drawing allocates nothing). */
-const entryCache = new Map();
-function entriesOf(s) {
-  const key = `${s.mode}:${s.profile.length}`;
-  if (!entryCache.has(key)) {
-    const n = s.profile.length;
-    const profile = (inXz) => Array.from({ length: n }, (_, i) => profileEntry(i, inXz));
-    const lists = {
-      torus: () => [centreEntry],
-      vase: () => profile(true),
-      extrude: () => [...profile(false), tipEntry],
-      ruled: () => [
-        ...[0, 1, 2].map((i) => curveEntry("curveA", "A", i)),
-        ...[0, 1, 2, 3].map((i) => curveEntry("curveB", "B", i)),
-      ],
-    };
-    entryCache.set(key, lists[s.mode]());
-  }
-  return entryCache.get(key);
-}
-
 /** The handles, and + / Delete on a selected profile point (as the 2D handles have them). */
 export function setup(ui) {
-  const handles = entryHandles(ui, (s) => entriesOfView(s, ui.view));
+  const handles = entryHandles(ui, modeHandles(ui.view));
   const canvas = ui.view.canvas;
   const onKey = (event) => {
     const i = handles.selected;
@@ -398,18 +315,6 @@ export function setup(ui) {
   };
   canvas.addEventListener("keydown", onKey);
   return { destroy: () => canvas.removeEventListener("keydown", onKey) };
-}
-
-/** The entries with the view bound into their `move` (the plane constraint needs the camera). */
-const bound = new WeakMap();
-function entriesOfView(s, view) {
-  const list = entriesOf(s);
-  if (!bound.has(list))
-    bound.set(
-      list,
-      list.map((e) => ({ label: e.label, get: e.get, move: (state, p) => e.move(state, p, view) })),
-    );
-  return bound.get(list);
 }
 
 // ------------------------------------------------------------------ figure
@@ -452,6 +357,12 @@ const stylesFor = themed((theme) => ({
     join: "round",
     cap: "round",
   }),
+  raised: Object.freeze({
+    fill: HUES.blue,
+    stroke: theme.background,
+    width: 1,
+    radius: RADIUS.constructionPoint,
+  }),
   second: SECOND_CURVE.curve,
   secondPolygon: SECOND_CURVE.polygon,
   firstPolygon: Object.freeze({ ...theme.polygon, stroke: HUES.blue }),
@@ -490,6 +401,15 @@ export function draw(r, v, s, d) {
   flatPath3(r, v, first);
   r.paint(styles.casing);
   r.paint(theme.curve);
+  if (s.mode === "ruled") {
+    // The compatibility step: the net's first column is A raised to degree 3 (A′₀ … A′₃).
+    const { points, rows, cols } = d.net;
+    for (let i = 0; i < rows; i++) {
+      const k = 3 * i * cols;
+      v.project(points[k], points[k + 1], points[k + 2], a);
+      r.point(a[0], a[1], styles.raised);
+    }
+  }
   if (s.mode === "extrude") {
     const [x, y] = s.profile[0];
     v.project(x, y, 0, a);

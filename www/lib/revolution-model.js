@@ -13,6 +13,8 @@
 export const MODES = Object.freeze(["torus", "vase", "extrude", "ruled"]);
 /** The torus check samples the surface on a GRID_CHECK × GRID_CHECK grid of (u, v). */
 export const GRID_CHECK = 65;
+/** The torus' R (distance of the circle's centre from the axis): the slider's and the handle's range. */
+export const R_RANGE = Object.freeze([0.5, 6]);
 
 const ORIGIN = Object.freeze([0, 0, 0]);
 const Z_AXIS = Object.freeze([0, 0, 1]);
