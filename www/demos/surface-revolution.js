@@ -437,6 +437,7 @@ export function formula(s, d) {
       return [
         t("surfaceRevolution.tex.circle", { R: fmt(s.R), r: fmt(s.r) }),
         t("surfaceRevolution.tex.revolve", { angle: fmt(s.angle, 0), ...net }),
+        t("surfaceRevolution.tex.rational", { q: 2 }),
         t("surfaceRevolution.tex.weights", { weights: arcWeights(d) }),
         t("surfaceRevolution.tex.torusCheck", {
           R: fmt(s.R),
@@ -450,6 +451,7 @@ export function formula(s, d) {
         t("surfaceRevolution.tex.profile", { n: s.profile.length - 1 }),
         t("surfaceRevolution.tex.revolveVase", net),
         t("surfaceRevolution.tex.vaseNet"),
+        t("surfaceRevolution.tex.rational", { q: 3 }),
         t("surfaceRevolution.tex.weights", { weights: arcWeights(d) }),
       ];
     case "extrude": {

@@ -36,19 +36,20 @@ export const SURFACE_REVOLUTION = {
   "surfaceRevolution.check.ruled":
     "Net {rows} × {cols}. S(u, ½) = {mid}, the midpoint of A(u) and B(u).",
   "surfaceRevolution.tex.circle":
-    "C(v) = (R + r\\cos\\varphi,\\ 0,\\ r\\sin\\varphi),\\ R = {R},\\ r = {r}\\text{: the exact NURBS circle, 9 points, } w_j = 1, \\tfrac{\\sqrt2}{2}, 1, \\dots",
+    "C(v) = (R + r\\cos\\varphi,\\ 0,\\ r\\sin\\varphi),\\ R = {R},\\ r = {r}\\text{: the exact NURBS circle (9 points)}",
   "surfaceRevolution.tex.revolve":
-    "S(u, v) = \\mathrm{Rot}_z(u\\,\\theta)\\, C(v),\\ \\theta = {angle}^\\circ\\text{: } S = \\frac{\\sum_i \\sum_j N_{i,2}(u) N_{j,2}(v)\\, w_i w_j P_{ij}}{\\sum_i \\sum_j N_{i,2}(u) N_{j,2}(v)\\, w_i w_j}\\text{, net } {rows} \\times {cols}\\text{ (A8.1)}",
-  "surfaceRevolution.tex.weights":
-    "\\text{arc weights } w_{i0} = {weights}\\ \\ (w_{ij} = w_i\\, w_j)",
+    "S(u, v) = \\mathrm{Rot}_z(u\\,\\theta)\\, C(v),\\ \\theta = {angle}^\\circ\\text{: net } {rows} \\times {cols}\\text{, degree } 2 \\times 2\\text{ (A8.1)}",
+  "surfaceRevolution.tex.weights": "\\text{arc weights } w_{i0} = {weights}",
+  "surfaceRevolution.tex.rational":
+    "S(u, v) = \\frac{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij} P_{ij}}{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij}},\\quad w_{ij} = w_i\\, w_j",
   "surfaceRevolution.tex.torusCheck":
     "\\max_{{n} \\times {n}\\text{ grid}} \\Bigl|\\sqrt{\\bigl(\\sqrt{x^2+y^2} - {R}\\bigr)^2 + z^2} - {r}\\Bigr| = {distance}\\text{: exact}",
   "surfaceRevolution.tex.profile":
-    "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: clamped cubic profile in the } xz\\text{ plane}",
+    "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: clamped cubic}",
   "surfaceRevolution.tex.revolveVase":
-    "S(u, v) = \\bigl(x(v)\\cos 2\\pi u,\\ x(v)\\sin 2\\pi u,\\ z(v)\\bigr)\\text{ exactly: a NURBS with a } {rows} \\times {cols}\\text{ net (A8.1)}",
+    "S(u, v) = \\bigl(x(v)\\cos 2\\pi u,\\ x(v)\\sin 2\\pi u,\\ z(v)\\bigr)\\text{: net } {rows} \\times {cols}\\text{ (A8.1)}",
   "surfaceRevolution.tex.vaseNet":
-    "P_{ij} = P_j\\text{ turned by } i \\cdot 45^\\circ\\text{; odd } i\\text{: pushed out by } 1/\\cos 45^\\circ = \\sqrt2\\text{ (the square's corners)}",
+    "P_{ij} = P_j\\text{ turned by } i \\cdot 45^\\circ\\text{, odd } i\\text{ moved out by } \\sqrt2\\ (1/\\cos 45^\\circ)",
   "surfaceRevolution.tex.extrude":
     "S(u, v) = C(u) + v\\,\\mathbf d,\\quad v \\in [0, 1],\\quad \\mathbf d = {d}",
   "surfaceRevolution.tex.extrudeNet":
