@@ -79,6 +79,50 @@ export default [
     },
   ],
   [
+    "torus: dragging the circle's centre C changes R; the surface stays on the new torus",
+    async (page, h, base, { assert, openDemo }) => {
+      await openDemo(
+        page,
+        base,
+        "surface-revolution",
+        hashOf(await stateWith(page, { mode: "torus" })),
+      );
+      const before = await urlState(page);
+      const [centre] = await h.handles();
+      await h.drag(centre, 40, 0);
+      const after = await urlState(page);
+      assert(after.R !== before.R, `R ${before.R} → ${after.R}`);
+      const box = page.locator('[data-control="R"] .sl-value');
+      assert(Number(await box.inputValue()) === after.R, "the R slider follows");
+      const p = await published(page);
+      assert(p.distance < 1e-12, `max distance to the torus with R = ${after.R}: ${p.distance}`);
+    },
+  ],
+  [
+    "vase: from an orbited camera a profile point stays under the pointer in y = 0, mesh buffers refilled in place",
+    async (page, h, _base, { assert, equal }) => {
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + box.width - 20, y: box.y + 20 }, -90, 30);
+      const made = () => page.locator(".sl-figure").getAttribute("data-geometries");
+      const geometries = await made();
+      const start = await urlState(page);
+      const handle = (await h.handles())[3];
+      await h.drag(handle, 30, -20);
+      const moved = (await h.handles())[3];
+      assert(
+        Math.abs(moved.x - handle.x - 30) < 1.5 && Math.abs(moved.y - handle.y + 20) < 1.5,
+        `P₃ at ${JSON.stringify(moved)}, expected ${JSON.stringify(handle)} + (30, −20)`,
+      );
+      const now = await urlState(page);
+      assert(now.profile[3][0] !== start.profile[3][0], "the profile point moved");
+      equal(now.profile[3].length, 2, "a profile point is [x, z]");
+      equal(await made(), geometries, "geometries made during the drag");
+      const p = await published(page);
+      equal(p.rows, 9, "rows around the axis");
+      equal(p.cols, 6, "one column per profile point");
+    },
+  ],
+  [
     "extrude: S(u, 1) − S(u, 0) equals the direction, also after dragging its tip",
     async (page, h, base, { assert, openDemo }) => {
       const direction = [1.5, -2, 0.75];
