@@ -134,6 +134,12 @@ export const demos = Object.freeze(
       strings: "bezierPatch",
       load: () => import("./bezier-patch.js"),
     },
+    {
+      id: "surface-revolution",
+      section: 6,
+      strings: "surfaceRevolution",
+      load: () => import("./surface-revolution.js"),
+    },
   ].map(Object.freeze),
 );
 

@@ -22,6 +22,7 @@ import { BSPLINE_INTERPOLATION } from "./strings/bspline-interpolation.js";
 import { INTERPOLATE_APPROXIMATE } from "./strings/interpolate-approximate.js";
 // Section 6 (surfaces) likewise.
 import { BEZIER_PATCH } from "./strings/bezier-patch.js";
+import { SURFACE_REVOLUTION } from "./strings/surface-revolution.js";
 
 const EN = {
   // Application and gallery
@@ -1180,6 +1181,7 @@ const EN = {
   "negativeWeights.ariaInside": "the curve stays in its convex hull",
   ...LAGRANGE,
   ...BEZIER_PATCH,
+  ...SURFACE_REVOLUTION,
   ...HERMITE,
   ...CARDINAL,
   ...CUBIC_SPLINE,
