@@ -134,6 +134,18 @@ export const demos = Object.freeze(
       strings: "bezierPatch",
       load: () => import("./bezier-patch.js"),
     },
+    {
+      id: "nurbs-surface",
+      section: 6,
+      strings: "nurbsSurface",
+      load: () => import("./nurbs-surface.js"),
+    },
+    {
+      id: "surface-interpolation",
+      section: 6,
+      strings: "surfaceInterpolation",
+      load: () => import("./surface-interpolation.js"),
+    },
   ].map(Object.freeze),
 );
 
