@@ -185,6 +185,19 @@ export const compute = {
       return out;
     },
   ],
+  /** The continuities measured, each once, ascending (the legend's entries). */
+  seamOrders: [
+    SHAPE,
+    (s, d) => [...new Set(d.seamCurves.map((curve) => curve.c))].sort((p, q) => p - q),
+  ],
+  /** The normal arrow's length: a fraction of the net's diagonal. */
+  normalLength: [
+    ["points"],
+    (s) => {
+      const [x0, y0, z0, x1, y1, z1] = boundsOf3(s.points);
+      return NORMAL_FRACTION * Math.hypot(x1 - x0, y1 - y0, z1 - z0);
+    },
+  ],
   point: [[...SHAPE, "u", "v"], (s, d) => d.surface.evaluate(s.u, s.v)],
   normalAt: [[...SHAPE, "u", "v"], (s, d) => d.surface.normal(s.u, s.v)],
   /** Σ (k + 1)(x + √2 y + √3 z) over a fixed 9 × 9 grid of the domain: a test's fingerprint. */
@@ -341,7 +354,7 @@ const stylesFor = themed((theme) => ({
   seams: SEAM_HUES.map((stroke) => Object.freeze({ stroke, width: 3, join: "round" })),
   swatch: SEAM_HUES.map((fill) => Object.freeze({ fill })),
   legend: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
-  fresh: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.curve, join: "round" }),
+  fresh: Object.freeze({ stroke: theme.text, width: WIDTH.curve, join: "round" }),
   selectedRing: Object.freeze({ stroke: HUES.reddishPurple, width: 2, radius: RADIUS.handle + 4 }),
   normal: Object.freeze({
     stroke: HUES.vermillion,
@@ -352,21 +365,31 @@ const stylesFor = themed((theme) => ({
 
 const a = new Float64Array(3);
 const b = new Float64Array(3);
+const NONE = Object.freeze([]);
 
 /** The legend of the seam colours, top left: one swatch and word per continuity shown. */
-function drawLegend(r, styles, curves) {
-  const shown = new Set(curves.map((curve) => curve.c));
-  if (!shown.size) return;
+function drawLegend(r, styles, orders, fresh) {
+  if (!orders.length && fresh.length !== 3) return;
   const size = FONT_SIZE.small * r.scale;
-  let y = 12 * r.scale + size / 2;
   const x = 12 * r.scale;
+  const swatch = 18 * r.scale;
+  let y = 12 * r.scale + size / 2;
   r.text(t("nurbsSurface.legend"), x, y, styles.legend, "left", "middle");
-  for (const c of [...shown].sort((p, q) => p - q)) {
+  for (const c of orders) {
     y += size * 1.5;
     r.beginPath();
-    r.rect(x, y - size / 3, 18 * r.scale, (2 * size) / 3);
+    r.rect(x, y - size / 3, swatch, (2 * size) / 3);
     r.paint(styles.swatch[seamIndex(c)]);
-    r.text(continuityText(c), x + 24 * r.scale, y, styles.legend, "left", "middle");
+    r.text(continuityText(c), x + swatch + 6 * r.scale, y, styles.legend, "left", "middle");
+  }
+  if (fresh.length === 3) {
+    y += size * 1.5;
+    r.beginPath();
+    r.moveTo(x, y);
+    r.lineTo(x + swatch, y);
+    r.paint(styles.fresh);
+    const key = fresh[0] === 0 ? "nurbsSurface.legendFreshRows" : "nurbsSurface.legendFreshColumns";
+    r.text(t(key), x + swatch + 6 * r.scale, y, styles.legend, "left", "middle");
   }
 }
 
@@ -383,8 +406,8 @@ export function draw(r, v, s, d) {
       flatPath3(r, v, curve.samples);
       r.paint(styles.seams[seamIndex(curve.c)]);
     }
-    drawLegend(r, styles, d.seamCurves);
   }
+  drawLegend(r, styles, s.seams ? d.seamOrders : NONE, s.fresh);
   if (s.fresh.length === 3) {
     const [dir, first, last] = s.fresh;
     for (let line = first; line <= last; line++) {
@@ -402,8 +425,7 @@ export function draw(r, v, s, d) {
   const p = d.point;
   v.project(p[0], p[1], p[2], a);
   if (s.normal) {
-    const [x0, y0, z0, x1, y1, z1] = boundsOf3(s.points);
-    const length = NORMAL_FRACTION * Math.hypot(x1 - x0, y1 - y0, z1 - z0);
+    const length = d.normalLength;
     const n = d.normalAt;
     v.project(p[0] + length * n[0], p[1] + length * n[1], p[2] + length * n[2], b);
     arrow(r, a[0], a[1], b[0], b[1], styles.normal);

@@ -45,6 +45,8 @@ export const NURBS_SURFACE = {
   "nurbsSurface.noSeams": "No interior knots: one polynomial (or rational) patch, no seams",
   "nurbsSurface.seamsReadout": "Seams measured by the core: {u} · {v}",
   "nurbsSurface.legend": "Seams",
+  "nurbsSurface.legendFreshRows": "new rows",
+  "nurbsSurface.legendFreshColumns": "new columns",
   "nurbsSurface.normalLabel": "n",
   "nurbsSurface.texNet":
     "\\text{net } {rows} \\times {cols} = {count} \\text{ points},\\ \\text{degrees } p = {p},\\ q = {q}\\text{: a seam at a knot of multiplicity } r \\text{ is } C^{p-r}",
@@ -53,7 +55,7 @@ export const NURBS_SURFACE = {
   "nurbsSurface.texInsertedV":
     "\\text{after } \\texttt{insertKnotV}\\text{: columns } {first}\\text{–}{last} \\text{ are new (Boehm on every row), one column more}",
   "nurbsSurface.whatYouSee":
-    "A tensor-product B-spline surface S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (with weights w_ij a NURBS surface) over its control net (grey, dashed). Each direction has its own degree and knot vector, and the domain is [u_p, u_m+1] × [v_q, v_n+1]. As the Greek notes say, a knot can be inserted in either vector on its own: inserting in u applies Boehm's algorithm to every column of the net, which adds a whole row of control points (highlighted in vermillion) without changing the surface; in v it works on the rows and adds a column. The thick lines are the seams, the iso-curves at interior knots, coloured by the continuity the core measures across them (C^(p−r) for a knot of multiplicity r). Moving one control point changes the surface only over (p + 1) × (q + 1) spans: local control. Unlike curves, surfaces have no variation-diminishing property.",
+    "A tensor-product B-spline surface S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (with weights w_ij a NURBS surface) over its control net (grey, dashed). Each direction has its own degree and knot vector, and the domain is [u_p, u_m+1] × [v_q, v_n+1]. As the Greek notes say, a knot can be inserted in either vector on its own: inserting in u applies Boehm's algorithm to every column of the net, which adds a whole row of control points without changing the surface (the rows Boehm's rule made are drawn dark); in v it works on the rows and adds a column. The thick lines are the seams, the iso-curves at interior knots, coloured by the continuity the core measures across them (C^(p−r) for a knot of multiplicity r). Moving one control point changes the surface only over (p + 1) × (q + 1) spans: local control. Unlike curves, surfaces have no variation-diminishing property.",
   "nurbsSurface.try1":
     "Press “Insert u at the probe”: a new row of points appears and the surface stays exactly where it was; the seams legend gains the new knot.",
   "nurbsSurface.try2":
