@@ -16,7 +16,7 @@ import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { knotListText } from "../lib/knot-readout.js";
-import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
+import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 
 export const id = "surface-interpolation";
 export const strings = "surfaceInterpolation";
@@ -33,10 +33,10 @@ const CURVE_SAMPLES = 64;
 const XS = [0, 2, 5, 7];
 const YS = [0, 2, 3.5, 6, 8];
 const HEIGHTS = [
-  [0, 0.5, 0.8, 0.5, 0],
-  [0.4, 1.4, 1.9, 1.3, 0.4],
-  [0.5, 1.7, 2.6, 1.5, 0.6],
-  [0, 0.6, 1, 0.7, 0.2],
+  [0, 0.4, 0.7, 0.5, 0],
+  [0.3, 1.2, 1.6, 1.1, 0.4],
+  [0.4, 1.3, 1.8, 1.2, 0.5],
+  [0, 0.5, 0.8, 0.6, 0.2],
 ];
 
 export const defaultState = Object.freeze({
@@ -207,6 +207,7 @@ const stylesFor = themed((theme) => ({
   netPoint: Object.freeze({ fill: HUES.reddishPurple, radius: RADIUS.constructionPoint }),
   column: Object.freeze({ stroke: HUES.bluishGreen, width: WIDTH.curve, join: "round" }),
   columnPolygon: Object.freeze({ stroke: HUES.bluishGreen, width: 1, dash: [5, 3] }),
+  legend: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
   columnPoint: Object.freeze({
     fill: theme.background,
     stroke: HUES.bluishGreen,
@@ -243,12 +244,32 @@ export function draw(r, v, s, d) {
       r.point(a[0], a[1], styles.columnPoint);
     }
   }
+  drawLegend(r, styles, s);
   if (!s.net) {
     // The data grid itself, thin, so the handles read as a grid without the net.
     netPath(r, v, s.points, ROWS, COLS);
     r.paint(r.theme.polygon);
   }
   d.handles.draw(r, v);
+}
+
+/** The legend, top left: the column curves of step 1 and the control net, when shown. */
+function drawLegend(r, styles, s) {
+  const size = FONT_SIZE.small * r.scale;
+  const x = 12 * r.scale;
+  const swatch = 18 * r.scale;
+  let y = 12 * r.scale + size / 2;
+  const entry = (lineStyle, pointStyle, key) => {
+    r.beginPath();
+    r.moveTo(x, y);
+    r.lineTo(x + swatch, y);
+    r.paint(lineStyle);
+    r.point(x + swatch / 2, y, pointStyle);
+    r.text(t(key), x + swatch + 6 * r.scale, y, styles.legend, "left", "middle");
+    y += size * 1.5;
+  };
+  if (s.columns) entry(styles.column, styles.columnPoint, "surfaceInterpolation.legendColumns");
+  if (s.net) entry(styles.net, styles.netPoint, "surfaceInterpolation.legendNet");
 }
 
 /** Moves to or draws a line to net point k (flat xyz). */

@@ -150,4 +150,22 @@ export default [
       assert(state.v >= 2 && state.v <= 6, `v = ${state.v} in the new domain`);
     },
   ],
+  [
+    "typed knots: a valid vector is taken (the seams follow), a wrong count is refused with the core's message",
+    async (page, h, _base, { assert, equal, settle }) => {
+      const box = page.locator('[data-control="knots-u"] input');
+      await box.fill("0 0 0 0 0.5 2 2 2 2");
+      await box.press("Enter");
+      await settle(page);
+      equal(JSON.stringify((await urlState(page)).knotsU), "[0,0,0,0,0.5,2,2,2,2]", "U");
+      equal((await readout(page)).seamsU, "0.5:2", "the seam moved to the new knot");
+      await box.fill("0 0 1 1");
+      await box.press("Enter");
+      await settle(page);
+      equal(await h.statusKind(), "error", "status kind");
+      const status = await h.status();
+      assert(/knot/i.test(status), `the core's message: ${status}`);
+      equal(JSON.stringify((await urlState(page)).knotsU), "[0,0,0,0,0.5,2,2,2,2]", "U kept");
+    },
+  ],
 ];

@@ -112,12 +112,17 @@ export default [
     },
   ],
   [
-    "step 1 shows the column curves; uniform parameters are k/(n − 1)",
+    "step 1 (the column curves) is shown by default and toggles; uniform parameters are k/(n − 1)",
     async (page, h, _base, { assert, equal, settle }) => {
+      const toggle = page.locator('[data-control="columns"] input');
+      assert(await toggle.isChecked(), "step 1 is shown by default");
       const picture = await h.snapshot();
-      await page.locator('[data-control="columns"] input').check();
+      await toggle.uncheck();
       await settle(page);
-      assert((await h.snapshot()) !== picture, "the column curves changed nothing");
+      assert((await h.snapshot()) !== picture, "hiding the column curves changed nothing");
+      await toggle.check();
+      await settle(page);
+      equal(await h.snapshot(), picture, "showing them again");
       await page.locator('[data-control="kind"] [data-choice="uniform"] input').check();
       await settle(page);
       const shown = await readout(page);

@@ -19,6 +19,8 @@ export const SURFACE_INTERPOLATION = {
   "surfaceInterpolation.control.columns": "Step 1: every column interpolated in u",
   "surfaceInterpolation.control.net": "Control net of the result",
   "surfaceInterpolation.control.iso": "Iso-curves through the data",
+  "surfaceInterpolation.legendColumns": "step 1: column curves, points s_il",
+  "surfaceInterpolation.legendNet": "control net P_ij",
   "surfaceInterpolation.missReadout":
     "The surface passes through all {count} data points: largest miss {miss}",
   "surfaceInterpolation.texUnknowns":
