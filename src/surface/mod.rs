@@ -23,7 +23,9 @@ mod patches;
 mod teaching;
 
 pub use adaptive::{MAX_ADAPTIVE_DEPTH, MAX_ADAPTIVE_VERTICES};
-pub use construct::{extrude, interpolate_surface, revolve, ruled, MAX_REVOLUTION_ARC};
+pub use construct::{
+    extrude, grid_params, interpolate_surface, revolve, ruled, MAX_REVOLUTION_ARC,
+};
 pub use intersect::MAX_SURFACE_INTERSECTION_DEPTH;
 pub use mesh::Mesh;
 pub use patches::SEAM_TOLERANCE;

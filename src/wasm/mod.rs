@@ -27,7 +27,7 @@ pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
-pub use surface_build::{extrude, interpolate_surface, revolve, ruled};
+pub use surface_build::{extrude, interpolate_surface, interpolate_surface_params, revolve, ruled};
 
 use crate::error::Error;
 use js_sys::Float64Array;

@@ -190,3 +190,34 @@ pub fn interpolate_surface(
         &points, rows, cols, degree_u, degree_v, kind,
     )?))
 }
+
+/// `interpolateSurfaceParams(points, rows, cols, kind = "chord")` → `{ u: Float64Array, v:
+/// Float64Array }`: the parameters `interpolateSurface` gives the grid (rows along u), so that
+/// `S(u[k], v[l])` is point `(k, l)` — per column the cumulative `|Δ|^α` steps over their
+/// total, averaged over the columns (rows for v).
+#[wasm_bindgen(
+    js_name = interpolateSurfaceParams,
+    unchecked_return_type = "{ u: Float64Array; v: Float64Array }"
+)]
+pub fn interpolate_surface_params(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
+    rows: f64,
+    cols: f64,
+    #[wasm_bindgen(unchecked_optional_param_type = "\"uniform\" | \"chord\" | \"centripetal\"")]
+    kind: JsValue,
+) -> Result<JsValue, JsError> {
+    let points = numbers("points", &points)?;
+    let (rows, cols) = (whole("rows", rows)?, whole("cols", cols)?);
+    let kind = Parameterization::parse(&string_arg("kind", &kind, Some("chord"))?)?;
+    let (u, v) = surface::grid_params(&points, rows, cols, kind)?;
+    let object = js_sys::Object::new();
+    for (key, values) in [("u", &u), ("v", &v)] {
+        js_sys::Reflect::set(
+            &object,
+            &JsValue::from_str(key),
+            &js_sys::Float64Array::from(&values[..]).into(),
+        )
+        .map_err(|_| JsError::new("could not build the parameters object"))?;
+    }
+    Ok(object.into())
+}

@@ -135,6 +135,18 @@ export const demos = Object.freeze(
       load: () => import("./bezier-patch.js"),
     },
     {
+      id: "nurbs-surface",
+      section: 6,
+      strings: "nurbsSurface",
+      load: () => import("./nurbs-surface.js"),
+    },
+    {
+      id: "surface-interpolation",
+      section: 6,
+      strings: "surfaceInterpolation",
+      load: () => import("./surface-interpolation.js"),
+    },
+    {
       id: "surface-revolution",
       section: 6,
       strings: "surfaceRevolution",

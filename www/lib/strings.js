@@ -22,6 +22,8 @@ import { BSPLINE_INTERPOLATION } from "./strings/bspline-interpolation.js";
 import { INTERPOLATE_APPROXIMATE } from "./strings/interpolate-approximate.js";
 // Section 6 (surfaces) likewise.
 import { BEZIER_PATCH } from "./strings/bezier-patch.js";
+import { NURBS_SURFACE } from "./strings/nurbs-surface.js";
+import { SURFACE_INTERPOLATION } from "./strings/surface-interpolation.js";
 import { SURFACE_REVOLUTION } from "./strings/surface-revolution.js";
 
 const EN = {
@@ -1181,6 +1183,8 @@ const EN = {
   "negativeWeights.ariaInside": "the curve stays in its convex hull",
   ...LAGRANGE,
   ...BEZIER_PATCH,
+  ...NURBS_SURFACE,
+  ...SURFACE_INTERPOLATION,
   ...SURFACE_REVOLUTION,
   ...HERMITE,
   ...CARDINAL,

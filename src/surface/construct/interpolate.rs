@@ -36,10 +36,7 @@ pub fn interpolate_surface(
     kind: Parameterization,
 ) -> Result<BSplineSurface> {
     check_grid(points, rows, cols, degree_u, degree_v)?;
-    let grid: Vec<DVec3> = points.chunks_exact(3).map(DVec3::from_slice).collect();
-    let at = |i: usize, j: usize| grid[i * cols + j];
-    let params_u = averaged_params(rows, cols, kind, at)?;
-    let params_v = averaged_params(cols, rows, kind, |k, l| at(l, k))?;
+    let (params_u, params_v) = grid_params(points, rows, cols, kind)?;
     let knots_u = averaging_knots(&params_u, degree_u, false, false);
     let knots_v = averaging_knots(&params_v, degree_v, false, false);
     // Columns in u: data point k is row k of the grid, cols·3 numbers (row-major already).
@@ -49,6 +46,42 @@ pub fn interpolate_surface(
     let net_t = solve(&transposed, 3 * rows, degree_v, &params_v, &knots_v)?;
     let net = transpose(&net_t, cols, rows);
     BSplineSurface::from_flat(&net, rows, cols, degree_u, degree_v, knots_u, knots_v, None)
+}
+
+/// The parameters [`interpolate_surface`] gives the grid points: `(ū_0 … ū_{rows−1},
+/// v̄_0 … v̄_{cols−1})`, so that `S(ū_k, v̄_l) = Q_kl`. Per column `l`, the cumulative steps
+/// `|Q_kl − Q_{k−1,l}|^α` (α = 0 uniform, ½ centripetal, 1 chord) over their total, averaged
+/// over the columns that are not one repeated point (NURBS Book eq. 9.5–9.6 with §9.2.5's
+/// averaging); `v̄` likewise along the rows. Both run from 0 to 1.
+///
+/// # Errors
+/// [`Error::NetCoordinateCount`] (grid size mismatch), [`Error::TooLarge`], [`Error::NotFinite`],
+/// [`Error::CoincidentPoints`] when every column (row) is a single repeated point.
+pub fn grid_params(
+    points: &[f64],
+    rows: usize,
+    cols: usize,
+    kind: Parameterization,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    check_grid_size(points, rows, cols)?;
+    let grid: Vec<DVec3> = points.chunks_exact(3).map(DVec3::from_slice).collect();
+    let at = |i: usize, j: usize| grid[i * cols + j];
+    let params_u = averaged_params(rows, cols, kind, at)?;
+    let params_v = averaged_params(cols, rows, kind, |k, l| at(l, k))?;
+    Ok((params_u, params_v))
+}
+
+/// The grid's size against its coordinates, and its numbers finite.
+fn check_grid_size(points: &[f64], rows: usize, cols: usize) -> Result<()> {
+    let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
+    if points.len() != 3 * count {
+        return Err(Error::NetCoordinateCount {
+            rows,
+            cols,
+            got: points.len(),
+        });
+    }
+    check_all_finite(points, "coordinate")
 }
 
 /// The checks of [`interpolate_surface`] before the parameters: the grid's size, its numbers,
@@ -63,15 +96,7 @@ pub fn check_grid(
     degree_u: usize,
     degree_v: usize,
 ) -> Result<()> {
-    let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
-    if points.len() != 3 * count {
-        return Err(Error::NetCoordinateCount {
-            rows,
-            cols,
-            got: points.len(),
-        });
-    }
-    check_all_finite(points, "coordinate")?;
+    check_grid_size(points, rows, cols)?;
     for (name, degree, count) in [("degreeU", degree_u, rows), ("degreeV", degree_v, cols)] {
         check_interpolation_degree(degree).map_err(|e| in_argument(name, e))?;
         let needed = (degree + 1).max(2);

@@ -6,7 +6,7 @@ mod interpolate;
 mod revolve;
 mod sweep;
 
-pub use interpolate::{check_grid, interpolate_surface};
+pub use interpolate::{check_grid, grid_params, interpolate_surface};
 pub use revolve::{revolve, MAX_REVOLUTION_ARC};
 pub use sweep::{extrude, ruled};
 
