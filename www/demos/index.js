@@ -134,6 +134,18 @@ export const demos = Object.freeze(
       strings: "bezierPatch",
       load: () => import("./bezier-patch.js"),
     },
+    {
+      id: "patch-de-casteljau",
+      section: 6,
+      strings: "patchDeCasteljau",
+      load: () => import("./patch-de-casteljau.js"),
+    },
+    {
+      id: "patch-subdivision",
+      section: 6,
+      strings: "patchSubdivision",
+      load: () => import("./patch-subdivision.js"),
+    },
   ].map(Object.freeze),
 );
 

@@ -22,6 +22,8 @@ import { BSPLINE_INTERPOLATION } from "./strings/bspline-interpolation.js";
 import { INTERPOLATE_APPROXIMATE } from "./strings/interpolate-approximate.js";
 // Section 6 (surfaces) likewise.
 import { BEZIER_PATCH } from "./strings/bezier-patch.js";
+import { PATCH_DE_CASTELJAU } from "./strings/patch-de-casteljau.js";
+import { PATCH_SUBDIVISION } from "./strings/patch-subdivision.js";
 
 const EN = {
   // Application and gallery
@@ -1180,6 +1182,8 @@ const EN = {
   "negativeWeights.ariaInside": "the curve stays in its convex hull",
   ...LAGRANGE,
   ...BEZIER_PATCH,
+  ...PATCH_DE_CASTELJAU,
+  ...PATCH_SUBDIVISION,
   ...HERMITE,
   ...CARDINAL,
   ...CUBIC_SPLINE,
