@@ -16,6 +16,7 @@ import { boundsOf3, fitCamera, roundCamera } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { placeLabelFrom } from "../lib/handles.js";
 import { replaceOrReport } from "../lib/wasm.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import {
   apexOf,
@@ -301,6 +302,8 @@ export function draw(r, v, s, d) {
   const st = d.stage;
   const { first, second } = construction(s, d);
   const per = trianglePoints(st.degree);
+  // A phone leaves the names of Q₀ … and S(u, v) out: the formula lists them.
+  const named = v.width >= NARROW_CANVAS_PX * r.scale;
   if (s.net) {
     netPath(r, v, s.points, side, side);
     r.paint(theme.polygon);
@@ -322,6 +325,7 @@ export function draw(r, v, s, d) {
     for (let i = 0; i < st.count; i++) {
       v.project(second[3 * i], second[3 * i + 1], second[3 * i + 2], a);
       r.point(a[0], a[1], styles.result);
+      if (!named) continue;
       placeLabelFrom(
         r,
         resultLabel(letter, i),
@@ -338,16 +342,17 @@ export function draw(r, v, s, d) {
     const p = d.point;
     v.project(p[0], p[1], p[2], a);
     r.point(a[0], a[1], theme.pointOnCurve);
-    placeLabelFrom(
-      r,
-      t("patchDeCasteljau.pointLabel"),
-      a[0],
-      a[1],
-      a[0] - 1,
-      a[1] - 3,
-      theme.labelPoint,
-      theme.pointOnCurve.radius * r.scale,
-    );
+    if (named)
+      placeLabelFrom(
+        r,
+        t("patchDeCasteljau.pointLabel"),
+        a[0],
+        a[1],
+        a[0] - 1,
+        a[1] - 3,
+        theme.labelPoint,
+        theme.pointOnCurve.radius * r.scale,
+      );
   }
 }
 

@@ -16,6 +16,7 @@ import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3, fitCamera, roundCamera } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { placeLabelFrom } from "../lib/handles.js";
+import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH, themed } from "../lib/theme.js";
 import { finestCell, drawParameterMesh, PARAMETER_INSET_PX } from "../lib/patch-quadtree.js";
 
@@ -298,16 +299,18 @@ export function draw(r, v, s, d) {
     const p = d.point;
     v.project(p[0], p[1], p[2], a);
     r.point(a[0], a[1], theme.pointOnCurve);
-    placeLabelFrom(
-      r,
-      t("patchSubdivision.pointLabel"),
-      a[0],
-      a[1],
-      a[0],
-      a[1] - 1,
-      theme.labelPoint,
-      theme.pointOnCurve.radius * r.scale,
-    );
+    // A phone leaves the name out: the formula gives S(u₀, v₀).
+    if (v.width >= NARROW_CANVAS_PX * r.scale)
+      placeLabelFrom(
+        r,
+        t("patchSubdivision.pointLabel"),
+        a[0],
+        a[1],
+        a[0],
+        a[1] - 1,
+        theme.labelPoint,
+        theme.pointOnCurve.radius * r.scale,
+      );
   }
 }
 

@@ -9,6 +9,8 @@ import { WIDTH, themed } from "./theme.js";
 /** Side of the (u, v) inset in CSS px at scale 1, and its distance from the canvas corner. */
 export const PARAMETER_INSET_PX = 150;
 const INSET_MARGIN_PX = 14;
+/** The inset never takes more than this fraction of the canvas width. */
+const INSET_FRACTION = 0.3;
 
 /**
  * The side of the smallest quadtree cell of an adaptive mesh on [0, 1]²: the shortest edge
@@ -43,7 +45,8 @@ const stylesFor = themed((theme) => ({
 export function drawParameterMesh(r, mesh, side, labels) {
   const styles = stylesFor(r.theme);
   const scale = r.scale;
-  const size = side * scale;
+  // At most INSET_FRACTION of the canvas width (a phone keeps room for the figure).
+  const size = Math.min(side * scale, INSET_FRACTION * r.width);
   const x0 = r.width - INSET_MARGIN_PX * scale - size;
   const y0 = INSET_MARGIN_PX * scale;
   r.beginPath();
