@@ -135,6 +135,18 @@ export const demos = Object.freeze(
       load: () => import("./bezier-patch.js"),
     },
     {
+      id: "patch-de-casteljau",
+      section: 6,
+      strings: "patchDeCasteljau",
+      load: () => import("./patch-de-casteljau.js"),
+    },
+    {
+      id: "patch-subdivision",
+      section: 6,
+      strings: "patchSubdivision",
+      load: () => import("./patch-subdivision.js"),
+    },
+    {
       id: "nurbs-surface",
       section: 6,
       strings: "nurbsSurface",

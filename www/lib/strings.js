@@ -25,6 +25,8 @@ import { BEZIER_PATCH } from "./strings/bezier-patch.js";
 import { NURBS_SURFACE } from "./strings/nurbs-surface.js";
 import { SURFACE_INTERPOLATION } from "./strings/surface-interpolation.js";
 import { SURFACE_REVOLUTION } from "./strings/surface-revolution.js";
+import { PATCH_DE_CASTELJAU } from "./strings/patch-de-casteljau.js";
+import { PATCH_SUBDIVISION } from "./strings/patch-subdivision.js";
 
 const EN = {
   // Application and gallery
@@ -1186,6 +1188,8 @@ const EN = {
   ...NURBS_SURFACE,
   ...SURFACE_INTERPOLATION,
   ...SURFACE_REVOLUTION,
+  ...PATCH_DE_CASTELJAU,
+  ...PATCH_SUBDIVISION,
   ...HERMITE,
   ...CARDINAL,
   ...CUBIC_SPLINE,

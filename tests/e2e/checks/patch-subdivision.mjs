@@ -1,0 +1,124 @@
+// Browser checks of the patch subdivision demo (run after the generic ones by run.mjs).
+// Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
+// Expected numbers are independent of the core: S(u0, v0) by the Bernstein double sum written
+// out below and by hand at (1/2, 1/2); a plane with an affine net needs exactly 2 triangles.
+
+/** The demo state in the page's URL. */
+const urlState = (page) =>
+  page.evaluate(() => {
+    const s = new URLSearchParams(location.hash.slice(1)).get("s");
+    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
+      c.charCodeAt(0),
+    );
+    return JSON.parse(new TextDecoder().decode(bytes));
+  });
+
+/** `&s=…` for a state (base64url JSON). */
+const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
+
+/** Types a value into a control's box (data-control name) and waits for the redraw. */
+async function type(page, settle, control, text) {
+  const box = page.locator(`[data-control="${control}"] .sl-value`);
+  await box.fill(text);
+  await box.press("Enter");
+  await settle(page);
+}
+
+/** What the demo publishes on its readout: the four corners, S(u0, v0), the counts. */
+async function published(page) {
+  const data = await page.locator('[data-info="counts"]').evaluate((n) => ({ ...n.dataset }));
+  const xyz = (text) => text.split(",").map(Number);
+  return {
+    corners: data.corners ? data.corners.split(" ").map(xyz) : null,
+    point: xyz(data.point),
+    triangles: data.triangles === undefined ? null : Number(data.triangles),
+    uniform: data.uniform === undefined ? null : Number(data.uniform),
+  };
+}
+
+const binomial = (n, k) => (k === 0 || k === n ? 1 : binomial(n - 1, k - 1) + binomial(n - 1, k));
+const bernstein = (n, i, t) => binomial(n, i) * t ** i * (1 - t) ** (n - i);
+
+/** S(u, v) = Σ_i Σ_j B_i^3(u) B_j^3(v) P_ij of a 4 × 4 net (rows along u). */
+function bernsteinSum(points, u, v) {
+  const s = [0, 0, 0];
+  for (let i = 0; i < 4; i++)
+    for (let j = 0; j < 4; j++) {
+      const w = bernstein(3, i, u) * bernstein(3, j, v);
+      for (let c = 0; c < 3; c++) s[c] += w * points[4 * i + j][c];
+    }
+  return s;
+}
+
+const gap = (a, b) => Math.max(...a.map((x, c) => Math.abs(x - b[c])));
+
+export default [
+  [
+    "the four nets share one corner, S(u0, v0) (Bernstein double sum; by hand at (1/2, 1/2))",
+    async (page, _h, _base, { assert, equal, settle }) => {
+      const state = await urlState(page);
+      let got = await published(page);
+      equal(got.corners.length, 4, "four nets");
+      const expected = bernsteinSum(state.points, state.u0, state.v0);
+      assert(gap(got.point, expected) < 1e-12, `S ${got.point} vs Σ Σ ${expected}`);
+      for (const [k, corner] of got.corners.entries())
+        assert(gap(corner, expected) < 1e-12, `net ${k}'s corner ${corner} vs ${expected}`);
+      // The default net P_ij = (2i, 2j, h_ij), rows 0 and 1 flat: at (1/2, 1/2) x = y = 3 and
+      // z = Σ Σ C(3,i) C(3,j) h_ij / 64 = (3·11.4 + 7.8) / 64 = 42 / 64.
+      await type(page, settle, "u0", "1/2");
+      await type(page, settle, "v0", "1/2");
+      got = await published(page);
+      const hand = [3, 3, 42 / 64];
+      for (const [k, corner] of got.corners.entries())
+        assert(gap(corner, hand) < 1e-12, `net ${k}'s corner ${corner} vs ${hand}`);
+      const formula = await page.locator(".sl-formula").textContent();
+      assert(formula.includes("0.656"), `the formula shows z = 0.656: ${formula}`);
+    },
+  ],
+  [
+    "a plane with an affine net gives 2 triangles at every tolerance",
+    async (page, _h, base, { assert, equal, settle, openDemo }) => {
+      const state = await urlState(page);
+      // P_ij = (2i, 2j, 1 + 0.5 i − 0.25 j): every row and column evenly spaced on a line.
+      const points = [];
+      for (let i = 0; i < 4; i++)
+        for (let j = 0; j < 4; j++) points.push([2 * i, 2 * j, 1 + 0.5 * i - 0.25 * j]);
+      await openDemo(
+        page,
+        base,
+        "patch-subdivision",
+        hashOf({ ...state, points, mode: "adaptive" }),
+      );
+      for (const tolerance of ["2", "0.3", "0.01", "0.002"]) {
+        await type(page, settle, "tolerance", tolerance);
+        const { triangles } = await published(page);
+        equal(triangles, 2, `triangles at ε = ${tolerance}`);
+        const note = await page.locator('[data-info="counts"]').textContent();
+        assert(note.startsWith("2 triangles"), `note: ${note}`);
+      }
+    },
+  ],
+  [
+    "lowering the tolerance never lowers the triangle count of the default patch",
+    async (page, h, _base, { assert, settle }) => {
+      await page.locator('[data-control="mode"] [data-choice="adaptive"] input').check();
+      await settle(page);
+      assert(await page.locator('[data-control="u0"]').isHidden(), "u0 hidden in adaptive mode");
+      const counts = [];
+      const pictures = new Set();
+      for (const tolerance of ["2", "1", "0.5", "0.2", "0.1", "0.05", "0.02", "0.01", "0.005"]) {
+        await type(page, settle, "tolerance", tolerance);
+        const { triangles, uniform } = await published(page);
+        counts.push(triangles);
+        assert(uniform >= 2, `uniform count ${uniform}`);
+        pictures.add(await h.snapshot());
+      }
+      for (let k = 1; k < counts.length; k++)
+        assert(counts[k] >= counts[k - 1], `counts fall as ε falls: ${counts.join(", ")}`);
+      assert(counts.at(-1) > 4 * counts[0], `the mesh refines: ${counts.join(", ")}`);
+      assert(pictures.size >= 5, `${pictures.size} different pictures`);
+      const label = await h.canvas().getAttribute("aria-label");
+      assert(label.includes(`${counts.at(-1)} triangles`), `aria-label: ${label}`);
+    },
+  ],
+];
