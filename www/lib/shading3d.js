@@ -3,7 +3,7 @@
  *
  * - **zebra**: reflection lines. At each pixel the view direction is reflected about the unit
  *   normal, r = d − 2 (d·n) n (view space, the normal facing the viewer on either side), and the
- *   environment is a set of parallel light bands: black and white by the elevation of r,
+ *   environment is a set of parallel light bands: dark and pale by the elevation of r,
  *   asin(r_y) ∈ [−π/2, π/2], in `ZEBRA_STRIPES` pairs. A kink in the stripes shows a G¹ break,
  *   a corner in their direction a G² break (the eye reads curvature continuity from them).
  * - **gaussian** / **mean**: the core's curvatures (`curvatures(mesh.uvs)` → [K0, H0, K1, H1, …])
@@ -19,6 +19,8 @@ import { formatNumber, t } from "./strings.js";
 export const SHADINGS = Object.freeze(["lit", "zebra", "gaussian", "mean"]);
 /** Black/white band pairs across the reflected elevations (−90° … 90°). */
 export const ZEBRA_STRIPES = 9;
+/** The zebra's light bands: a pale grey, so the patch's edge shows against a white page. */
+export const ZEBRA_LIGHT = "#D9DEE2";
 /** The diverging scale's ends and middle (sRGB). */
 export const SCALE_COLOURS = Object.freeze({
   low: HUES.blue,
@@ -62,7 +64,7 @@ export function zebraMaterial(THREE, offset) {
     uniforms: {
       stripes: { value: ZEBRA_STRIPES },
       dark: { value: colour("#1A1A1A") },
-      light: { value: colour("#FFFFFF") },
+      light: { value: colour(ZEBRA_LIGHT) },
     },
     vertexShader: ZEBRA_VERTEX,
     fragmentShader: ZEBRA_FRAGMENT,

@@ -34,7 +34,7 @@ export const BEZIER_PATCH = {
   "bezierPatch.try3":
     "Orbit the figure (drag empty space) until you look along an edge of the net: the boundary curve is the Bézier curve of that edge's four points.",
   "bezierPatch.try4":
-    "Choose Gaussian curvature: blue regions are saddle-shaped (K < 0), vermillion ones dome-shaped (K > 0). Drag P₂₂ down until its bump flattens and watch the vermillion spot fade; switch to zebra stripes and see them bend where the surface bends.",
+    "Choose Gaussian curvature: blue regions are saddle-shaped (K < 0), vermillion ones dome-shaped (K > 0). Drag P₂₂ up and down and watch the colours move with the bump; switch to zebra stripes and see them bend where the surface bends.",
   "bezierPatch.try5":
     "Drag a control point in one coordinate only (select it, use the arrows) and watch which of A_x, A_y, A_z change: the matrix form is linear in the net, coordinate by coordinate.",
 };
