@@ -397,7 +397,7 @@ export class Handles3D {
         y,
         cx,
         cy,
-        hidden ? fadedLabel(label, theme) : label,
+        hidden && i !== this.selected ? fadedLabel(label, theme) : label,
         style.radius * r.scale,
       );
     }
