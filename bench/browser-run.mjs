@@ -1,5 +1,5 @@
-// Runs workload (g) in headless Chromium: a tiny static server for bench/ and www/pkg/ only
-// (www/ itself is not served, so the benchmark does not depend on the playground's files), with
+// Runs workloads (g), (i) and (k) in headless Chromium: a tiny static server for bench/, www/pkg/
+// and, for (k)'s 3D frame, www/lib/ and www/vendor/ (not the playground's pages), with
 // COOP/COEP headers so performance.now() gets its fine (cross-origin-isolated) resolution.
 import { createServer } from "node:http";
 import { mkdtempSync, rmSync } from "node:fs";
@@ -11,7 +11,13 @@ import { chromium } from "playwright-core";
 import { CHROMIUM, CHROMIUM_ARGS } from "../scripts/chromium.mjs";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
-const MOUNTS = { "/bench/": join(ROOT, "bench"), "/pkg/": join(ROOT, "www", "pkg") };
+const MOUNTS = {
+  "/bench/": join(ROOT, "bench"),
+  "/pkg/": join(ROOT, "www", "pkg"),
+  // (k) renders through the playground's own 3D modules and the vendored three.js.
+  "/lib/": join(ROOT, "www", "lib"),
+  "/vendor/": join(ROOT, "www", "vendor"),
+};
 const TYPES = {
   ".html": "text/html; charset=utf-8",
   ".js": "text/javascript",
@@ -50,7 +56,7 @@ function startServer() {
 }
 
 /** Drag-frame timings from headless Chromium, plus its version. */
-export async function runInChromium({ frames = 100, warmup = 10 } = {}) {
+export async function runInChromium({ frames = 100, warmup = 10, only = "" } = {}) {
   const server = await startServer();
   const profile = mkdtempSync(join(tmpdir(), "splinelab-bench-"));
   let context = null;
@@ -62,7 +68,7 @@ export async function runInChromium({ frames = 100, warmup = 10 } = {}) {
     const page = context.pages()[0] ?? (await context.newPage());
     const errors = [];
     page.on("pageerror", (err) => errors.push(err.message));
-    const url = `http://127.0.0.1:${server.address().port}/bench/browser.html?frames=${frames}&warmup=${warmup}`;
+    const url = `http://127.0.0.1:${server.address().port}/bench/browser.html?frames=${frames}&warmup=${warmup}${only ? `&only=${only}` : ""}`;
     await page.goto(url);
     await page.waitForFunction(() => window.benchResult !== undefined, null, {
       timeout: PAGE_TIMEOUT_MS,

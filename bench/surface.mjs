@@ -165,9 +165,12 @@ export function adaptiveBench(sl, { tolerance = ADAPTIVE.tolerance } = {}) {
   };
 }
 
-/** (k): drag frames of a 16×16 bicubic NURBS patch; timings in ms. */
-export function surfaceDragBench(sl, { frames = 100, warmup = 10 } = {}) {
-  const { net, quads, row, col } = SURFACE_DRAG;
+/**
+ * The (k) patch: 16×16 control points over [0, 15]², random heights in [−1, 1] and weights in
+ * [0.5, 2] (seeded), clamped uniform knots; `{ surface, points }` (the caller frees the surface).
+ */
+export function dragPatch(sl) {
+  const { net } = SURFACE_DRAG;
   const random = rng(SEED + 14);
   const knots = clampedKnots(net, 3);
   const points = new Float64Array(3 * net * net);
@@ -178,7 +181,13 @@ export function surfaceDragBench(sl, { frames = 100, warmup = 10 } = {}) {
       points.set([i, j, 2 * (random() - 0.5)], 3 * k);
       weights[k] = 0.5 + 1.5 * random();
     }
-  const surface = new sl.BSplineSurface(points, net, net, 3, 3, knots, knots, weights);
+  return { surface: new sl.BSplineSurface(points, net, net, 3, 3, knots, knots, weights), points };
+}
+
+/** (k): drag frames of a 16×16 bicubic NURBS patch; timings in ms. */
+export function surfaceDragBench(sl, { frames = 100, warmup = 10 } = {}) {
+  const { net, quads, row, col } = SURFACE_DRAG;
+  const { surface, points } = dragPatch(sl);
   const k = 3 * (row * net + col);
   const times = [];
   let vertices = 0;

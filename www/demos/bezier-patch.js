@@ -5,10 +5,12 @@
  * probe are what the core returns. The generatrix/directrix picture of the Croatian notes: each
  * row i of the net is a directrix D_i(v) (a cubic Bézier curve in v, `BezierCurve` of dim 3);
  * at v, the points D_0(v) … D_3(v) are the control points of the generatrix, the iso-curve at
- * that v (a cubic in u, from `sampleGrid`), which sweeps the patch as v plays.
+ * that v (a cubic in u: the core's `isoCurveV(v)`), which sweeps the patch as v plays. The
+ * matrix form shows A = M P Mᵀ from `matrixForm()` per coordinate; the surface can be shaded lit,
+ * with zebra stripes, or by its Gaussian or mean curvature (`curvatures(mesh.uvs)`, scene3d.js).
  */
 import { field } from "../lib/validate.js";
-import { slider, checkbox, group } from "../lib/panel.js";
+import { slider, checkbox, choice, group } from "../lib/panel.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
@@ -49,7 +51,11 @@ export const defaultState = Object.freeze({
   wireframe: false,
   sweep: true,
   normal: true,
+  shading: "lit",
 });
+
+/** Surface shadings (scene3d.js): lit, zebra stripes, Gaussian and mean curvature colours. */
+const SHADINGS = ["lit", "zebra", "gaussian", "mean"];
 
 export const fields = {
   points: field.points3d({ rows: ROWS, cols: COLS }),
@@ -60,6 +66,7 @@ export const fields = {
   wireframe: field.boolean(),
   sweep: field.boolean(),
   normal: field.boolean(),
+  shading: field.choice(SHADINGS),
 };
 
 const flat3 = (points) => Float64Array.from(points.flat());
@@ -98,13 +105,31 @@ export const compute = {
       ...Array.from(ISO, (v) => d.patch.sampleGrid(SAMPLES, [v])),
     ],
   ],
-  // TODO(lead): isoCurveV(v).sampleUniform(…) once isoCurveU/V are merged (same points).
-  generatrix: [["points", "v"], (s, d) => d.patch.sampleGrid(SAMPLES, [s.v])],
+  // The generatrix: the iso-curve at constant v (a cubic Bézier curve in u), sampled once, freed.
+  generatrix: [
+    ["points", "v"],
+    (s, d) => {
+      const curve = d.patch.isoCurveV(s.v);
+      try {
+        return curve.sampleUniform(CURVE_SAMPLES);
+      } finally {
+        curve.free();
+      }
+    },
+  ],
   directrixCurves: [["points"], (s, d) => d.directrices.map((c) => c.sampleUniform(CURVE_SAMPLES))],
   // The generatrix's control points D_i(v): each directrix at v.
   generatrixPoints: [["points", "v"], (s, d) => d.directrices.map((c) => c.evaluate(s.v))],
   point: [["points", "u", "v"], (s, d) => d.patch.evaluate(s.u, s.v)],
   normalAt: [["points", "u", "v"], (s, d) => d.patch.normal(s.u, s.v)],
+  // A = M P Mᵀ per coordinate: { basisU, basisV, coefficients } (flat 4·4·3, xyz per entry).
+  matrix: [["points"], (s, d) => d.patch.matrixForm()],
+  // [K0, H0, K1, H1, …] at the mesh's vertices, only while a curvature shading shows them.
+  curvatures: [
+    ["points", "shading"],
+    (s, d) =>
+      s.shading === "gaussian" || s.shading === "mean" ? d.patch.curvatures(d.mesh.uvs) : null,
+  ],
 };
 
 export const controls = [
@@ -130,6 +155,12 @@ export const controls = [
     checkbox("sweep", { label: "bezierPatch.control.sweep" }),
     checkbox("normal", { label: "bezierPatch.control.normal" }),
   ),
+  group(
+    "bezierPatch.control.shading",
+    choice("shading", {
+      options: SHADINGS.map((value) => ({ value, label: `bezierPatch.shading.${value}` })),
+    }),
+  ),
 ];
 
 const LABELS = [];
@@ -140,7 +171,7 @@ export const figure3d = {
   bounds: (s) => boundsOf3(s.points),
   handles: { field: "points", label: (k) => netLabel(k) },
   scene: (s, d) => ({
-    surfaces: [d.mesh],
+    surfaces: [{ mesh: d.mesh, shading: s.shading, curvatures: d.curvatures }],
     wireframe: s.wireframe ? [{ mesh: d.mesh, grid: [MESH + 1, MESH + 1] }] : [],
     curves: s.iso ? d.isoCurves : [],
   }),
@@ -207,17 +238,28 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
 }
 
-/** The Bézier basis matrix M of the notes (constants: the cubic Bernstein polynomials' coefficients). */
-const M_TEX =
-  "M = \\begin{bmatrix} -1 & 3 & -3 & 1 \\\\ 3 & -6 & 3 & 0 \\\\ -3 & 3 & 0 & 0 \\\\ 1 & 0 & 0 & 0 \\end{bmatrix}";
+/** A matrix entry: up to 3 decimals, trailing zeros dropped ("6", "−1.25"). */
+const entry = (x) => fmt(x).replace(/\.?0+$/, "");
+
+/** A 4 × 4 matrix as TeX from `at(i, j)`. */
+const matrixTex = (at) =>
+  `\\begin{bmatrix} ${[0, 1, 2, 3]
+    .map((i) => [0, 1, 2, 3].map((j) => entry(at(i, j))).join(" & "))
+    .join(" \\\\ ")} \\end{bmatrix}`;
+
+/** The basis matrix M_U from the core (flat (m+1)², row-major: the Bernstein coefficients). */
+const basisTex = (m) => `M = ${matrixTex((i, j) => m.basisU[4 * i + j])}`;
+
+/** Coordinate c (0 x, 1 y, 2 z) of A = M P Mᵀ as a matrix. */
+const coefficientTex = (m, c) => matrixTex((i, j) => m.coefficients[3 * (4 * i + j) + c]);
 
 const triple = (p) => `(${fmt(p[0])},\\ ${fmt(p[1])},\\ ${fmt(p[2])})`;
 
 export function formula(s, d) {
   return [
-    `S(u, v) = [u^3\\ u^2\\ u\\ 1]\\; M\\, P\\, M^T \\,[v^3\\ v^2\\ v\\ 1]^T,\\quad ${M_TEX}`,
-    // TODO(lead): the numeric A = M P Mᵀ per coordinate from d.patch.matrixForm() → { basisU,
-    // basisV, coefficients } (flat 4·4·3, row-major) once it is merged, as a third matrix line.
+    `S(u, v) = [u^3\\ u^2\\ u\\ 1]\\, A \\,[v^3\\ v^2\\ v\\ 1]^T,\\quad A = M\\, P\\, M^T,\\quad ${basisTex(d.matrix)}`,
+    `A_x = ${coefficientTex(d.matrix, 0)},\\quad A_y = ${coefficientTex(d.matrix, 1)}`,
+    `A_z = ${coefficientTex(d.matrix, 2)}`,
     t("bezierPatch.texGeneratrix", { v: fmt(s.v) }),
     `S(${fmt(s.u)}, ${fmt(s.v)}) = ${triple(d.point)},\\quad n = \\frac{S_u \\times S_v}{\\lvert S_u \\times S_v \\rvert} = ${triple(d.normalAt)}`,
   ];

@@ -50,9 +50,22 @@ const vectorStyles = themed(() => ({
   wireframe: Object.freeze({ stroke: SURFACE_COLOURS.wireframe, width: 0.5, strokeAlpha: 0.55 }),
 }));
 
+const curveStyles = new Map();
+/** The stroke of a coloured curve entry `{ points, colour, width }` (made once per pair). */
+function curveStyle(colour, width) {
+  const key = `${colour} ${width}`;
+  let style = curveStyles.get(key);
+  if (!style) {
+    style = Object.freeze({ stroke: colour ?? SURFACE_COLOURS.iso, width, join: "round" });
+    curveStyles.set(key, style);
+  }
+  return style;
+}
+
 /**
  * The WebGL content of `spec` (scene3d.js) as vector paths, for the SVG export: every grid line
- * of each wireframe (or every triangle edge), then each curve, projected — no hidden lines
+ * of each wireframe (or every triangle edge), then each curve (in its colour and width when it
+ * is a `{ points, colour, width }` entry), projected — no hidden lines
  * removed, no silhouette. The shaded surface itself has no vector form.
  */
 export function drawVectorScene(r, view, spec) {
@@ -97,8 +110,13 @@ export function drawVectorScene(r, view, spec) {
     r.paint(styles.wireframe);
   }
   for (const curve of spec?.curves ?? []) {
-    flatPath3(r, view, curve);
-    r.paint(styles.iso);
+    if (curve.points) {
+      flatPath3(r, view, curve.points);
+      r.paint(curveStyle(curve.colour, curve.width ?? 1));
+    } else {
+      flatPath3(r, view, curve);
+      r.paint(styles.iso);
+    }
   }
 }
 

@@ -3,8 +3,9 @@
  * outline; hovered larger; selected vermillion, label bold) and drawn on the figure's 2D layer.
  *
  * Picking: the ray through the pointer against a sphere of the hit radius (10 px mouse, 18 px
- * touch, measured on the screen) around each handle; of the handles it meets, the one nearest
- * the camera wins, so a handle in front of the surface is taken before one behind it. A picked
+ * touch, measured on the screen) around each handle; a handle the surface hides (the segment from
+ * the eye to it meets a shown mesh first: the view's `occluded`) is drawn faded and is picked only
+ * when no visible handle is under the pointer; among equals the one nearest the camera wins. A picked
  * handle is dragged in the plane facing the camera through the point (the pointer's ray meets
  * that plane), so it follows the pointer exactly. Keyboard: Tab / Shift+Tab, Home / End and
  * Escape as in 2D; arrows move the selected point in that plane by 1 px (Shift 10 px), PageUp /
@@ -57,6 +58,29 @@ export function pointHandles3(points, moved, label = null) {
   };
 }
 
+/** Opacity of a handle the surface hides (its fill, and its outline a little more). */
+export const HIDDEN_ALPHA = 0.35;
+const fadedStyles = new WeakMap();
+/** The faded form of a handle style (made once per style). */
+function faded(style) {
+  let out = fadedStyles.get(style);
+  if (!out) {
+    out = Object.freeze({ ...style, alpha: HIDDEN_ALPHA, strokeAlpha: HIDDEN_ALPHA + 0.15 });
+    fadedStyles.set(style, out);
+  }
+  return out;
+}
+const fadedLabels = new WeakMap();
+/** A hidden handle's label: in the net's grey (text has no opacity). */
+function fadedLabel(style, theme) {
+  let out = fadedLabels.get(style);
+  if (!out) {
+    out = Object.freeze({ ...style, fill: theme.axis.stroke });
+    fadedLabels.set(style, out);
+  }
+  return out;
+}
+
 export class Handles3D {
   /** @param {import("./view3d.js").View3D} view @param {object} source see the module comment. */
   constructor(view, source) {
@@ -77,6 +101,7 @@ export class Handles3D {
     this._start = new Float64Array(3);
     this._order = new Int32Array(0);
     this._depth = new Float64Array(0);
+    this._hidden = new Uint8Array(0);
     this._lastNudge = { index: -1, time: 0, group: 0 };
     this._published = "";
 
@@ -124,18 +149,30 @@ export class Handles3D {
     );
   }
 
-  /** The handle under canvas point (x, y): within the hit radius, nearest the camera; or -1. */
+  /** True when the surface hides handle i (drawn faded, picked after the visible ones). */
+  hidden(i) {
+    this.source.get(i, this._p);
+    return this.view.occluded?.(this._p[0], this._p[1], this._p[2]) ?? false;
+  }
+
+  /**
+   * The handle under canvas point (x, y) within the hit radius: a visible one before one the
+   * surface hides, then the nearest the camera; or -1.
+   */
   hitTest(x, y, pointerType) {
     const radius = pointerType === "touch" ? HIT_RADIUS_TOUCH : HIT_RADIUS_MOUSE;
     let best = -1;
-    let bestDepth = Infinity;
+    let bestKey = Infinity;
     for (let i = 0, n = this.source.count(); i < n; i++) {
       this.source.get(i, this._p);
       this.view.project(this._p[0], this._p[1], this._p[2], this._s);
       if (this._s[2] > 1) continue; // behind the camera
-      if (Math.hypot(this._s[0] - x, this._s[1] - y) <= radius && this._s[2] < bestDepth) {
+      if (Math.hypot(this._s[0] - x, this._s[1] - y) > radius) continue;
+      // NDC depth is < 1 in front of the far plane: a hidden handle ranks after every visible one.
+      const key = this._s[2] + (this.hidden(i) ? 4 : 0);
+      if (key < bestKey) {
         best = i;
-        bestDepth = this._s[2];
+        bestKey = key;
       }
     }
     return best;
@@ -314,6 +351,7 @@ export class Handles3D {
     if (this._order.length !== n) {
       this._order = new Int32Array(n);
       this._depth = new Float64Array(3 * n);
+      this._hidden = new Uint8Array(n);
     }
     let cx = 0;
     let cy = 0;
@@ -326,6 +364,7 @@ export class Handles3D {
       cx += this._s[0] / n;
       cy += this._s[1] / n;
       this._order[i] = i;
+      this._hidden[i] = view.occluded?.(this._p[0], this._p[1], this._p[2]) ? 1 : 0;
     }
     // Insertion sort by depth, farthest first (n is small: a control net).
     for (let a = 1; a < n; a++) {
@@ -341,13 +380,16 @@ export class Handles3D {
       const i = this._order[a];
       const x = this._depth[3 * i];
       const y = this._depth[3 * i + 1];
-      const style =
+      const hidden = this._hidden[i] === 1;
+      const shown =
         i === this.selected
           ? theme.handleSelected
           : i === this.hovered || i === this.dragging
             ? theme.handleHover
             : theme.handle;
+      const style = hidden ? faded(shown) : shown;
       r.point(x, y, style);
+      const label = i === this.selected ? theme.labelBold : theme.label;
       placeLabelFrom(
         r,
         this.source.label(i),
@@ -355,22 +397,29 @@ export class Handles3D {
         y,
         cx,
         cy,
-        i === this.selected ? theme.labelBold : theme.label,
+        hidden && i !== this.selected ? fadedLabel(label, theme) : label,
         style.radius * r.scale,
       );
     }
     if (this.dragging < 0 && r === view.renderer) this._publish(n);
   }
 
-  /** `data-handles` on the figure host: "x,y;x,y" canvas CSS px (a hook for tests), when changed. */
+  /**
+   * `data-handles` on the figure host: "x,y;x,y" canvas CSS px, and `data-hidden-handles`: the
+   * indices the surface hides, "3,7" (hooks for tests), when changed.
+   */
   _publish(n) {
     const parts = [];
-    for (let i = 0; i < n; i++)
+    const hidden = [];
+    for (let i = 0; i < n; i++) {
       parts.push(`${this._depth[3 * i].toFixed(1)},${this._depth[3 * i + 1].toFixed(1)}`);
-    const text = parts.join(";");
+      if (this._hidden[i]) hidden.push(i);
+    }
+    const text = `${parts.join(";")}|${hidden.join(",")}`;
     if (text === this._published) return;
     this._published = text;
-    this.view.host.dataset.handles = text;
+    this.view.host.dataset.handles = parts.join(";");
+    this.view.host.dataset.hiddenHandles = hidden.join(",");
   }
 
   destroy() {

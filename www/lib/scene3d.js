@@ -2,19 +2,29 @@
  * The WebGL part of a 3D figure, kept in step with what a demo's `figure3d.scene(state, data)`
  * returns (the core's arrays, nothing computed here):
  *
- *   { surfaces: [mesh, …], wireframe: [{ mesh, grid?: [rows, cols] }, …], curves: [flat, …] }
+ *   { surfaces: [surface, …], wireframe: [{ mesh, grid?: [rows, cols] }, …], curves: [curve, …] }
  *
- * `mesh` is what `tessellate` returns (`{ positions, normals, indices }`, Float32Array /
- * Uint32Array); a surface is lit from the core's normals, blue in front and a lighter tone at the
- * back (ui.md "3D figures"). A wireframe draws the grid lines of a `grid` = [rows, cols] vertex
- * grid (vertex a·cols + b), else every triangle edge. `curves` are polylines (flat xyz: an
- * iso-curve from `sampleGrid`), 1 px in the surface colour darkened. Everything is depth-tested.
+ * A `surface` is a mesh as `tessellate` returns it (`{ positions, normals, uvs, indices }`,
+ * Float32Array / Uint32Array), lit, or `{ mesh, shading?, curvatures? }` with `shading` one of
+ * "lit" (default: blue in front, a lighter tone at the back, lit from the core's normals by the
+ * ambient light, a key light from above left and a headlight, ui.md "3D figures"), "zebra"
+ * (reflection lines, shading3d.js), "gaussian" / "mean" (per-vertex colours of K or H from
+ * `curvatures` = the core's `curvatures(mesh.uvs)`, [K0, H0, K1, H1, …]; without it the surface
+ * is lit). The first curvature-shaded surface gives the figure's `legend` (`{ shading, extent,
+ * min, max }`, drawn by view3d.js). A wireframe draws the grid lines of a `grid` = [rows, cols]
+ * vertex grid (vertex a·cols + b), else every triangle edge. A `curve` is a polyline, flat xyz
+ * (an iso-curve from `sampleGrid`: 1 px in the surface colour darkened), or `{ points, colour,
+ * width? }` drawn in `colour` (a seam coloured by its continuity; WebGL draws every line 1
+ * device px wide, `width` is the SVG export's stroke width, default 1). Everything is
+ * depth-tested.
  *
- * Updates are in place: a new array of the same length is copied into the existing
- * BufferAttribute (`needsUpdate`); a geometry is only made anew when the vertex count changes.
- * An array that is the same object as last frame is not uploaded again.
+ * Updates are in place: a new array of the same length replaces the existing BufferAttribute's
+ * array without a copy (`needsUpdate`: the core's arrays are fresh JS arrays, owned by nobody
+ * else); a geometry is only made anew when the vertex count changes. An array that is the same
+ * object as last frame is not uploaded again.
  */
 import { HUES } from "./theme.js";
+import { zebraMaterial, curvatureMaterial, fillCurvatureColours } from "./shading3d.js";
 
 /** Colours of the 3D figure (same in light and dark mode: the hues are kept). */
 export const SURFACE_COLOURS = Object.freeze({
@@ -24,33 +34,69 @@ export const SURFACE_COLOURS = Object.freeze({
   wireframe: "#1D5A80",
 });
 
+/** Light intensities: a low ambient term so the shape reads, a key light, a headlight. */
+export const LIGHTS = Object.freeze({ ambient: 0.5, key: 3.2, head: 0.6 });
+
+/**
+ * True when `array` is a `Type` with a buffer of its own (a fresh array from the core, safe to
+ * keep), not a view into a larger buffer such as the wasm memory (which may move).
+ */
+const owned = (array, Type) =>
+  array instanceof Type && array.byteOffset === 0 && array.buffer.byteLength === array.byteLength;
+
+/**
+ * The lit surface: Phong, both sides in ONE draw (the front colour where the triangle faces the
+ * camera, the back colour elsewhere: `gl_FrontFacing` picks the diffuse colour; three.js flips
+ * the normal of a back face itself), half the vertex work of a front and a back mesh.
+ */
+function litMaterial(THREE, offset) {
+  const material = new THREE.MeshPhongMaterial({
+    color: SURFACE_COLOURS.front,
+    side: THREE.DoubleSide,
+    shininess: 40,
+    specular: 0x333333,
+    ...offset,
+  });
+  const back = { value: new THREE.Color(SURFACE_COLOURS.back) };
+  material.onBeforeCompile = (shader) => {
+    shader.uniforms.backDiffuse = back;
+    shader.fragmentShader = shader.fragmentShader
+      .replace("uniform vec3 diffuse;", "uniform vec3 diffuse;\nuniform vec3 backDiffuse;")
+      .replace(
+        "vec4 diffuseColor = vec4( diffuse, opacity );",
+        "vec4 diffuseColor = vec4( gl_FrontFacing ? diffuse : backDiffuse, opacity );",
+      );
+  };
+  material.customProgramCacheKey = () => "splinelab-lit-two-colours";
+  return material;
+}
+
+/** A scene entry of `surfaces` as `{ mesh, shading, curvatures }`. */
+const surfaceEntry = (entry) =>
+  entry && !entry.positions
+    ? { mesh: entry.mesh, shading: entry.shading ?? "lit", curvatures: entry.curvatures ?? null }
+    : entry
+      ? { mesh: entry, shading: "lit", curvatures: null }
+      : null;
+
 export class SceneContent {
   /** @param {object} THREE the three.js module. */
   constructor(THREE) {
     this.THREE = THREE;
     this.scene = new THREE.Scene();
-    this.scene.add(new THREE.AmbientLight(0xffffff, 1.1));
+    this.scene.add(new THREE.AmbientLight(0xffffff, LIGHTS.ambient));
     /** Geometries made for data so far (not refills): a drag must leave this unchanged. */
     this.geometriesMade = 0;
+    /** The curvature legend of the first curvature-shaded surface, or null. */
+    this.legend = null;
     this.surfaceSlots = [];
     this.wireSlots = [];
     this.curveSlots = [];
     const offset = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
     this.materials = {
-      front: new THREE.MeshPhongMaterial({
-        color: SURFACE_COLOURS.front,
-        side: THREE.FrontSide,
-        shininess: 40,
-        specular: 0x333333,
-        ...offset,
-      }),
-      back: new THREE.MeshPhongMaterial({
-        color: SURFACE_COLOURS.back,
-        side: THREE.BackSide,
-        shininess: 10,
-        specular: 0x111111,
-        ...offset,
-      }),
+      lit: litMaterial(THREE, offset),
+      zebra: zebraMaterial(THREE, offset),
+      curvature: curvatureMaterial(THREE, offset),
       iso: new THREE.LineBasicMaterial({ color: SURFACE_COLOURS.iso }),
       wireframe: new THREE.LineBasicMaterial({
         color: SURFACE_COLOURS.wireframe,
@@ -58,14 +104,22 @@ export class SceneContent {
         opacity: 0.55,
       }),
     };
+    /** Line materials of coloured curves, one per colour. */
+    this.curveMaterials = new Map();
   }
 
-  /** A headlight fixed to `camera` (from above left, behind the viewer); adds the camera. */
+  /**
+   * The lights that move with `camera` (adds the camera to the scene): a key light from above
+   * left and a weaker headlight from the viewer, so both sides of a surface read as shaped.
+   */
   attachLight(camera) {
-    const light = new this.THREE.DirectionalLight(0xffffff, 2.2);
-    light.position.set(-1, 1.2, 1);
-    light.target.position.set(0, 0, -1);
-    camera.add(light, light.target);
+    const key = new this.THREE.DirectionalLight(0xffffff, LIGHTS.key);
+    key.position.set(-1.6, 1.6, 0.5);
+    key.target.position.set(0, 0, -1);
+    const head = new this.THREE.DirectionalLight(0xffffff, LIGHTS.head);
+    head.position.set(0, 0, 0);
+    head.target.position.set(0, 0, -1);
+    camera.add(key, key.target, head, head.target);
     this.scene.add(camera);
   }
 
@@ -74,63 +128,112 @@ export class SceneContent {
     const surfaces = spec?.surfaces ?? [];
     const wires = spec?.wireframe ?? [];
     const curves = spec?.curves ?? [];
+    this.legend = null;
     for (let k = 0; k < Math.max(surfaces.length, this.surfaceSlots.length); k++)
-      this._surface(k, surfaces[k] ?? null);
+      this._surface(k, surfaceEntry(surfaces[k]));
     for (let k = 0; k < Math.max(wires.length, this.wireSlots.length); k++)
       this._wire(k, wires[k] ?? null);
     for (let k = 0; k < Math.max(curves.length, this.curveSlots.length); k++)
       this._curve(k, curves[k] ?? null);
   }
 
-  /** Copies `array` into the attribute when it fits the same count; false when it does not. */
+  /** Puts `array` into the attribute (no copy) when it has the same count; false when not. */
   static _refill(attribute, array) {
     if (!attribute || attribute.array.length !== array.length) return false;
-    attribute.array.set(array);
+    if (attribute.array !== array) {
+      if (owned(array, attribute.array.constructor)) attribute.array = array;
+      else attribute.array.set(array);
+    }
     attribute.needsUpdate = true;
     return true;
   }
 
-  _surface(k, mesh) {
+  /** A new BufferAttribute on `array` (typed to `Type`, copied only when it is not one). */
+  _attribute(array, Type, size) {
+    return new this.THREE.BufferAttribute(owned(array, Type) ? array : Type.from(array), size);
+  }
+
+  _surface(k, entry) {
     const THREE = this.THREE;
     let slot = this.surfaceSlots[k];
-    if (!mesh) {
-      if (slot) slot.front.visible = slot.back.visible = false;
+    if (!entry) {
+      if (slot) slot.object.visible = false;
       return;
     }
+    const { mesh, shading } = entry;
+    const curvature =
+      (shading === "gaussian" || shading === "mean") && entry.curvatures ? shading : null;
     if (!slot) {
       const geometry = new THREE.BufferGeometry();
       slot = {
         geometry,
         mesh: null,
-        front: new THREE.Mesh(geometry, this.materials.front),
-        back: new THREE.Mesh(geometry, this.materials.back),
+        curvatures: null,
+        colours: "",
+        object: new THREE.Mesh(geometry, this.materials.lit),
       };
-      slot.front.frustumCulled = slot.back.frustumCulled = false;
-      this.scene.add(slot.front, slot.back);
+      slot.object.frustumCulled = false;
+      this.scene.add(slot.object);
       this.surfaceSlots[k] = slot;
     }
-    slot.front.visible = slot.back.visible = true;
-    if (slot.mesh === mesh) return;
-    slot.mesh = mesh;
+    // One double-sided draw per surface in every shading.
+    slot.object.material =
+      shading === "zebra"
+        ? this.materials.zebra
+        : curvature
+          ? this.materials.curvature
+          : this.materials.lit;
+    slot.object.visible = true;
+    if (slot.mesh !== mesh) {
+      slot.mesh = mesh;
+      slot.colours = "";
+      this._fillSurface(slot, mesh);
+    }
+    if (curvature) this._colour(slot, entry.curvatures, curvature);
+  }
+
+  /** The mesh's positions, normals and indices into the slot's geometry (in place if it fits). */
+  _fillSurface(slot, mesh) {
+    const THREE = this.THREE;
     const g = slot.geometry;
     const inPlace =
       SceneContent._refill(g.getAttribute("position"), mesh.positions) &&
       SceneContent._refill(g.getAttribute("normal"), mesh.normals) &&
       g.index?.array.length === mesh.indices.length;
     if (inPlace) {
-      g.index.array.set(mesh.indices);
-      g.index.needsUpdate = true;
+      SceneContent._refill(g.index, mesh.indices);
+      g.boundingSphere = g.boundingBox = null;
       return;
     }
     // A new vertex count: a new geometry (the old one's GPU buffers are freed).
     const next = new THREE.BufferGeometry();
     this.geometriesMade += 1;
-    next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(mesh.positions), 3));
-    next.setAttribute("normal", new THREE.BufferAttribute(Float32Array.from(mesh.normals), 3));
-    next.setIndex(new THREE.BufferAttribute(Uint32Array.from(mesh.indices), 1));
-    slot.front.geometry = slot.back.geometry = next;
+    next.setAttribute("position", this._attribute(mesh.positions, Float32Array, 3));
+    next.setAttribute("normal", this._attribute(mesh.normals, Float32Array, 3));
+    next.setIndex(this._attribute(mesh.indices, Uint32Array, 1));
+    slot.object.geometry = next;
     slot.geometry = next;
     g.dispose();
+  }
+
+  /** Per-vertex colours of curvature `shading` from the core's [K, H, …] (once per change). */
+  _colour(slot, curvatures, shading) {
+    const g = slot.geometry;
+    const n = g.getAttribute("position").count;
+    let colours = g.getAttribute("color");
+    if (!colours || colours.count !== n) {
+      colours = new this.THREE.BufferAttribute(new Float32Array(3 * n), 3);
+      g.setAttribute("color", colours);
+      slot.colours = "";
+    }
+    if (curvatures.length < 2 * n) return;
+    if (slot.curvatures !== curvatures || slot.colours !== shading) {
+      slot.curvatures = curvatures;
+      slot.colours = shading;
+      slot.range = fillCurvatureColours(curvatures, shading === "gaussian" ? 0 : 1, colours.array);
+      colours.needsUpdate = true;
+    }
+    this.legend ??= { shading, ...slot.range };
   }
 
   _wire(k, entry) {
@@ -158,19 +261,31 @@ export class SceneContent {
     slot.key = key;
     const next = new THREE.BufferGeometry();
     this.geometriesMade += 1;
-    next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(mesh.positions), 3));
+    next.setAttribute("position", this._attribute(mesh.positions, Float32Array, 3));
     next.setIndex(new THREE.BufferAttribute(grid ? gridEdges(grid) : triangleEdges(mesh), 1));
     slot.lines.geometry = next;
     g.dispose();
   }
 
-  _curve(k, points) {
+  /** The line material of a curve entry: the iso colour, or one per given colour. */
+  _curveMaterial(colour) {
+    if (!colour) return this.materials.iso;
+    let material = this.curveMaterials.get(colour);
+    if (!material) {
+      material = new this.THREE.LineBasicMaterial({ color: colour });
+      this.curveMaterials.set(colour, material);
+    }
+    return material;
+  }
+
+  _curve(k, entry) {
     const THREE = this.THREE;
     let slot = this.curveSlots[k];
-    if (!points) {
+    if (!entry) {
       if (slot) slot.line.visible = false;
       return;
     }
+    const points = entry.points ?? entry;
     if (!slot) {
       slot = { points: null, line: new THREE.Line(new THREE.BufferGeometry(), this.materials.iso) };
       slot.line.frustumCulled = false;
@@ -178,13 +293,14 @@ export class SceneContent {
       this.curveSlots[k] = slot;
     }
     slot.line.visible = true;
+    slot.line.material = this._curveMaterial(entry.points ? entry.colour : null);
     if (slot.points === points) return;
     slot.points = points;
     const g = slot.line.geometry;
     if (SceneContent._refill(g.getAttribute("position"), points)) return;
     const next = new THREE.BufferGeometry();
     this.geometriesMade += 1;
-    next.setAttribute("position", new THREE.BufferAttribute(Float32Array.from(points), 3));
+    next.setAttribute("position", this._attribute(points, Float32Array, 3));
     slot.line.geometry = next;
     g.dispose();
   }
@@ -195,6 +311,7 @@ export class SceneContent {
     for (const slot of this.wireSlots) slot.lines.geometry.dispose();
     for (const slot of this.curveSlots) slot.line.geometry.dispose();
     for (const material of Object.values(this.materials)) material.dispose();
+    for (const material of this.curveMaterials.values()) material.dispose();
     this.scene.clear();
   }
 }

@@ -4,10 +4,14 @@
  * `width × height` device pixels and copies them into its own 2D canvas at once
  * (`drawImage`, in the same task, so the drawing buffer need not be preserved). The off-screen
  * canvas only grows, to the largest figure asked for; a smaller figure uses a viewport of it.
+ * It is made at the first render, multisampled when the page's pixel ratio is below
+ * `MSAA_BELOW_DPR` then.
  */
 import { loadedThree } from "./three-loader.js";
 
 let shared = null;
+/** The shared renderer multisamples (antialias) when the page's pixel ratio is below this. */
+export const MSAA_BELOW_DPR = 2;
 
 /**
  * Renders `scene` through `camera` at `width × height` device pixels (integers ≥ 1) with a
@@ -18,7 +22,10 @@ export function renderShared(scene, camera, width, height) {
   const { THREE } = loadedThree();
   if (!shared) {
     const canvas = document.createElement("canvas");
-    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, alpha: true });
+    // Multisampling only below 2 device px per CSS px: at DPR ≥ 2 the pixels are fine enough,
+    // and 4× MSAA of a 4× larger image costs weak GPUs (and SwiftShader) dearly.
+    const antialias = (window.devicePixelRatio || 1) < MSAA_BELOW_DPR;
+    const renderer = new THREE.WebGLRenderer({ canvas, antialias, alpha: true });
     renderer.setPixelRatio(1);
     renderer.setClearColor(0x000000, 0);
     renderer.setScissorTest(false);

@@ -93,6 +93,8 @@ const EN = {
   "handles.moved": "{label} moved to ({x}, {y})",
   "handles.selected3d": "{label} selected, ({x}, {y}, {z})",
   "handles.moved3d": "{label} moved to ({x}, {y}, {z})",
+  "scene3d.legend.gaussian": "Gaussian curvature K",
+  "scene3d.legend.mean": "mean curvature H",
 
   // Status messages
   "status.linkCopied": "Link copied to the clipboard.",

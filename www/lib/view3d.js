@@ -25,6 +25,8 @@ import { loadedThree } from "./three-loader.js";
 import { renderShared } from "./shared-gl.js";
 import { SceneContent } from "./scene3d.js";
 import { drawTriad, drawVectorScene } from "./draw3d.js";
+import { drawLegend, legendNumber } from "./shading3d.js";
+import { segmentBlocked } from "./occlusion3d.js";
 import {
   FIELD_OF_VIEW,
   verticalFieldOfView,
@@ -38,6 +40,8 @@ import {
 } from "./camera3d.js";
 
 const DEG = Math.PI / 180;
+/** A surface closer than this (CSS px at the point's depth) to a point does not hide it. */
+const OCCLUSION_MARGIN_PX = 3;
 
 export class View3D {
   /**
@@ -223,6 +227,20 @@ export class View3D {
     return true;
   }
 
+  /**
+   * True when a shown surface lies between the camera and (x, y, z) (the drawn meshes, more than
+   * 3 px before the point: a point on the surface is not hidden by it; occlusion3d.js).
+   */
+  occluded(x, y, z) {
+    const eye = this.camera.position;
+    const margin = OCCLUSION_MARGIN_PX * this.worldPerPixel(x, y, z);
+    for (const slot of this.content.surfaceSlots) {
+      if (!slot.object.visible || !slot.mesh) continue;
+      if (segmentBlocked(slot.mesh, eye.x, eye.y, eye.z, x, y, z, margin)) return true;
+    }
+    return false;
+  }
+
   /** A pixel scale for code written for the 2D View (a point list's rounding): px per unit at the target. */
   get scale() {
     const [, , , tx, ty, tz] = this._camera;
@@ -297,6 +315,22 @@ export class View3D {
       drawVectorScene(r, this, this.sceneOf());
     }
     this.drawFigure(r, this);
+    const legend = this.content.legend;
+    if (legend) drawLegend(r, legend);
+    // A hook for tests: the curvature legend's numbers (extent = max |value|, the ends ±extent).
+    const published = legend
+      ? JSON.stringify({
+          shading: legend.shading,
+          extent: legend.extent,
+          min: legend.min,
+          max: legend.max,
+          ends: [legendNumber(-legend.extent), legendNumber(legend.extent)],
+        })
+      : "";
+    if ((this.host.dataset.legend ?? "") !== published) {
+      if (published) this.host.dataset.legend = published;
+      else delete this.host.dataset.legend;
+    }
     drawTriad(r, this);
     r.end();
   }

@@ -42,6 +42,48 @@ function countBlue({ selector, png }) {
   return measure(canvas, canvas.width, canvas.height);
 }
 
+/** The camera's eye from its six numbers (z up; as the orbit test writes it out). */
+const eyeOf = ([a, e, d, tx, ty, tz]) => {
+  const r = Math.PI / 180;
+  return [
+    tx + d * Math.cos(e * r) * Math.cos(a * r),
+    ty + d * Math.cos(e * r) * Math.sin(a * r),
+    tz + d * Math.sin(e * r),
+  ];
+};
+
+/** The default state with every 2D overlay off and `changes` (no camera: fitted). */
+async function plainState(page, changes) {
+  const state = { ...(await urlState(page)), net: false, iso: false, sweep: false, normal: false };
+  delete state.view;
+  return { ...state, ...changes };
+}
+
+/**
+ * Pixel classes of the figure canvas (runs in the page): not background (non-white), near black,
+ * vermillion-ish (red well above blue), blue-ish (blue well above red), and every 4th pixel's
+ * RGB quantised to 32 levels (to compare two pictures).
+ */
+function pixelClasses() {
+  const canvas = document.querySelector(".sl-canvas");
+  const g = document.createElement("canvas");
+  g.width = canvas.width;
+  g.height = canvas.height;
+  const x = g.getContext("2d");
+  x.drawImage(canvas, 0, 0);
+  const d = x.getImageData(0, 0, g.width, g.height).data;
+  const out = { inked: 0, black: 0, warm: 0, cool: 0, total: g.width * g.height, sample: [] };
+  for (let i = 0; i < d.length; i += 4) {
+    const [r, gr, b] = [d[i], d[i + 1], d[i + 2]];
+    if (r < 245 || gr < 245 || b < 245) out.inked++;
+    if (r < 60 && gr < 60 && b < 60) out.black++;
+    if (r > b + 60) out.warm++;
+    if (b > r + 60) out.cool++;
+    if (i % 16 === 0) out.sample.push((r >> 3) * 1024 + (gr >> 3) * 32 + (b >> 3));
+  }
+  return out;
+}
+
 export default [
   [
     "a fitted camera shows every corner of the box inside its frame, one of them on the edge",
@@ -110,6 +152,253 @@ export default [
       await openDemo(page, base, "bezier-patch", hashOf(state));
       const { blue, total } = await page.evaluate(countBlue, { selector: ".sl-canvas" });
       assert(blue > total * 0.05, `only ${blue} of ${total} pixels are surface blue`);
+    },
+  ],
+  [
+    "zebra, Gaussian and mean shadings draw the surface in their own pixels (and differ from lit)",
+    async (page, _h, base, { assert, openDemo, settle }) => {
+      const shots = {};
+      await openDemo(page, base, "bezier-patch", hashOf(await plainState(page, {})));
+      for (const shading of ["lit", "zebra", "gaussian", "mean"]) {
+        // The panel's Shading choice (one page: the radio buttons, then a drawn frame).
+        await page.locator(`[data-control="shading"] [data-choice="${shading}"] input`).check();
+        await settle(page);
+        shots[shading] = await page.evaluate(pixelClasses);
+        const { inked, total } = shots[shading];
+        assert(inked > total * 0.05, `${shading}: only ${inked} of ${total} pixels drawn`);
+      }
+      // Zebra: black and white bands, no blue; curvature: both ends of the scale (the default
+      // patch has K and H of both signs: saddles and domes).
+      assert(shots.zebra.black > shots.zebra.total * 0.02, `zebra: ${shots.zebra.black} black`);
+      assert(shots.zebra.cool < shots.lit.cool / 10, `zebra: ${shots.zebra.cool} blue pixels`);
+      for (const k of ["gaussian", "mean"]) {
+        assert(
+          shots[k].warm > 500 && shots[k].cool > 500,
+          `${k}: ${shots[k].warm} warm, ${shots[k].cool} cool`,
+        );
+        assert(shots[k].black < shots.zebra.black / 10, `${k}: ${shots[k].black} black pixels`);
+      }
+      const names = Object.keys(shots);
+      for (let a = 0; a < names.length; a++)
+        for (let b = a + 1; b < names.length; b++) {
+          const [p, q] = [shots[names[a]].sample, shots[names[b]].sample];
+          let differ = 0;
+          for (let i = 0; i < p.length; i++) if (p[i] !== q[i]) differ++;
+          assert(
+            differ > p.length * 0.03,
+            `${names[a]} and ${names[b]}: ${differ} of ${p.length} samples differ`,
+          );
+        }
+    },
+  ],
+  [
+    "the curvature legend's end numbers are ± the largest |K| (|H|) of the core's curvatures at the mesh vertices; a flat patch shows 0",
+    async (page, h, base, { assert, equal, openDemo }) => {
+      const three = new Intl.NumberFormat("en", {
+        maximumSignificantDigits: 3,
+        useGrouping: false,
+      });
+      for (const [shading, which, title] of [
+        ["gaussian", 0, "Gaussian curvature K"],
+        ["mean", 1, "mean curvature H"],
+      ]) {
+        const state = await plainState(page, { shading });
+        await openDemo(page, base, "bezier-patch", hashOf(state));
+        const legend = JSON.parse(await page.locator(".sl-figure").getAttribute("data-legend"));
+        // The core's numbers at the 41 × 41 vertices of the demo's mesh (tessellate(40, 40)).
+        const [min, max] = await page.evaluate(
+          async ({ points, which }) => {
+            const sl = await (await import("./lib/wasm.js")).loadWasm();
+            const patch = new sl.BezierSurface(points.flat(), 4, 4);
+            const values = patch.curvatures(patch.tessellate(40, 40).uvs);
+            patch.free();
+            let lo = Infinity;
+            let hi = -Infinity;
+            for (let i = which; i < values.length; i += 2) {
+              lo = Math.min(lo, values[i]);
+              hi = Math.max(hi, values[i]);
+            }
+            return [lo, hi];
+          },
+          { points: state.points, which },
+        );
+        assert(min < 0 && max > 0, `${shading}: both signs on the default patch (${min}, ${max})`);
+        equal(legend.shading, shading, "legend shading");
+        equal(legend.min, min, `${shading} min`);
+        equal(legend.max, max, `${shading} max`);
+        const extent = Math.max(-min, max);
+        equal(legend.extent, extent, `${shading} extent`);
+        equal(
+          JSON.stringify(legend.ends),
+          JSON.stringify([three.format(-extent), three.format(extent)]),
+          `${shading} ends`,
+        );
+        const svg = (await import("node:fs")).readFileSync(
+          await (await h.download("export-svg")).path(),
+          "utf8",
+        );
+        for (const text of [...legend.ends, title])
+          assert(svg.includes(`>${text}<`), `${shading}: the SVG legend has "${text}"`);
+      }
+      // A plane (every height 0): K = H = 0 everywhere, the ends read 0 and 0.
+      const flat = await plainState(page, { shading: "gaussian" });
+      flat.points = flat.points.map(([x, y]) => [x, y, 0]);
+      await openDemo(page, base, "bezier-patch", hashOf(flat));
+      const legend = JSON.parse(await page.locator(".sl-figure").getAttribute("data-legend"));
+      equal(JSON.stringify(legend.ends), JSON.stringify(["0", "0"]), "plane: legend ends");
+      const lit = await plainState(page, { shading: "lit" });
+      await openDemo(page, base, "bezier-patch", hashOf(lit));
+      equal(
+        await page.locator(".sl-figure").getAttribute("data-legend"),
+        null,
+        "no legend when lit",
+      );
+    },
+  ],
+  [
+    "handles the surface hides are those the core's line intersection finds behind it; a click there still picks one",
+    async (page, h, base, { assert, equal, openDemo }) => {
+      await openDemo(page, base, "bezier-patch");
+      const state = await urlState(page);
+      const eye = eyeOf(state.view);
+      // Exact: the surface meets the segment eye → P before P (s < 0.99) by intersectLine.
+      const expected = await page.evaluate(
+        async ({ points, eye }) => {
+          const sl = await (await import("./lib/wasm.js")).loadWasm();
+          const patch = new sl.BezierSurface(points.flat(), 4, 4);
+          const hidden = [];
+          points.forEach((p, i) => {
+            const d = [p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]];
+            const hits = patch.intersectLine(eye, d, 1e-9);
+            for (let k = 2; k < hits.length; k += 3)
+              if (hits[k] > 0 && hits[k] < 0.99) return void hidden.push(i);
+          });
+          patch.free();
+          return hidden.join(",");
+        },
+        { points: state.points, eye },
+      );
+      assert(expected.length > 0, "the default view hides some handle");
+      equal(
+        await page.locator(".sl-figure").getAttribute("data-hidden-handles"),
+        expected,
+        "hidden handles",
+      );
+      const i = Number(expected.split(",").at(-1));
+      const at = (await h.handles())[i];
+      await page.mouse.click(at.x, at.y);
+      await h.ready();
+      const live = await page.locator(".sl-figure .sl-announcer").textContent();
+      const sub = "₀₁₂₃";
+      const name = `P${sub[Math.floor(i / 4)]}${sub[i % 4]}`;
+      assert(live.startsWith(`${name} selected`), `announced: ${live} (expected ${name})`);
+      equal((await urlState(page)).points.length, 16, "points kept");
+    },
+  ],
+  [
+    "picking: a visible handle under the pointer wins over a nearer one the surface hides",
+    async (page, _h, _base, { equal }) => {
+      // Handles3D against a stand-in view: projection (x, y, depth) = the point itself, and
+      // `occluded` naming which points the surface hides. Both handles lie within the hit radius
+      // of the pointer at (102, 100); the hidden one is nearer the camera (depth 0.2 < 0.6).
+      const picks = await page.evaluate(async () => {
+        const { Handles3D } = await import("./lib/handles3d.js");
+        const pick = (points, hidden, occlusion = true) => {
+          const host = document.createElement("div");
+          const view = {
+            canvas: document.createElement("canvas"),
+            host,
+            addInteractor() {},
+            beforeFrame() {},
+            requestDraw() {},
+            project(x, y, z, out) {
+              out[0] = x;
+              out[1] = y;
+              out[2] = z;
+              return out;
+            },
+            ...(occlusion
+              ? {
+                  occluded: (x, y, z) => hidden.some((p) => p[0] === x && p[1] === y && p[2] === z),
+                }
+              : {}),
+          };
+          const handles = new Handles3D(view, {
+            count: () => points.length,
+            get: (i, out) => out.set(points[i]),
+            label: (i) => `P${i}`,
+            move() {},
+            commit() {},
+          });
+          const i = handles.hitTest(102, 100, "mouse");
+          handles.destroy();
+          return i;
+        };
+        const hiddenNear = [100, 100, 0.2];
+        const visibleFar = [106, 100, 0.6];
+        return [
+          pick([hiddenNear, visibleFar], [hiddenNear]),
+          pick([hiddenNear], [hiddenNear]),
+          pick([hiddenNear, visibleFar], [hiddenNear], false),
+          pick([hiddenNear, visibleFar], []),
+        ];
+      });
+      equal(picks[0], 1, "the visible handle, though farther");
+      equal(picks[1], 0, "the hidden handle when it is alone under the pointer");
+      equal(picks[2], 0, "without occlusion: the nearer");
+      equal(picks[3], 0, "both visible: the nearer");
+    },
+  ],
+  [
+    "scene curves: { points, colour, width } entries are drawn in their colour (WebGL and SVG), plain arrays as iso-curves",
+    async (page, _h, _base, { equal }) => {
+      const out = await page.evaluate(async () => {
+        const { loadThree } = await import("./lib/three-loader.js");
+        const { SceneContent, SURFACE_COLOURS } = await import("./lib/scene3d.js");
+        const { drawVectorScene } = await import("./lib/draw3d.js");
+        const { THREE } = await loadThree();
+        const content = new SceneContent(THREE);
+        const line = (z) => Float64Array.from([0, 0, z, 1, 0, z, 2, 1, z]);
+        const spec = (z) => ({
+          curves: [{ points: line(z), colour: "#D55E00", width: 3 }, line(z)],
+        });
+        content.update(spec(0));
+        content.update(spec(1)); // new arrays of the same length: refilled in place
+        const colours = content.curveSlots.map((s) => `#${s.line.material.color.getHexString()}`);
+        const z = content.curveSlots[0].line.geometry.getAttribute("position").array[2];
+        const made = content.geometriesMade;
+        content.dispose();
+        const strokes = [];
+        const r = {
+          theme: {},
+          beginPath() {},
+          moveTo() {},
+          lineTo() {},
+          paint: (style) => strokes.push(`${style.stroke} ${style.width}`),
+        };
+        const view = {
+          project(x, y, _z, o) {
+            o[0] = x;
+            o[1] = y;
+            o[2] = 0;
+            return o;
+          },
+        };
+        drawVectorScene(r, view, spec(0));
+        return { colours, z, made, strokes, iso: SURFACE_COLOURS.iso };
+      });
+      equal(
+        JSON.stringify(out.colours),
+        JSON.stringify(["#d55e00", out.iso.toLowerCase()]),
+        "WebGL colours",
+      );
+      equal(out.z, 1, "refilled with the second arrays");
+      equal(out.made, 2, "geometries made (one per curve, none on the refill)");
+      equal(
+        JSON.stringify(out.strokes),
+        JSON.stringify(["#D55E00 3", `${out.iso} 1`]),
+        "SVG strokes",
+      );
     },
   ],
   [
@@ -186,13 +475,14 @@ export default [
   ],
   [
     "play sweeps the generatrix (v advances, the picture changes), pause stops it",
-    async (page, h, _base, { assert, PLAY_MS }) => {
+    async (page, h, _base, { assert, settle, PLAY_MS }) => {
       const box = page.locator('[data-control="v"] .sl-value');
       const before = Number(await box.inputValue());
       const picture = await h.snapshot();
       await page.locator('[data-action="play"]').click();
       await page.waitForTimeout(PLAY_MS);
       await page.locator('[data-action="play"]').click();
+      await settle(page); // the frame after the pause: panel and formula from the same state
       const after = Number(await box.inputValue());
       assert(after !== before, `v ${before} → ${after}`);
       assert((await h.snapshot()) !== picture, "the picture is the same");
