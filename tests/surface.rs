@@ -645,3 +645,62 @@ fn edits_in_place_equal_a_rebuilt_surface() {
         .to_string()
         .contains("coordinate 0"));
 }
+
+#[test]
+fn equal_weights_give_the_polynomial_patch_whose_corners_and_normals_are_right() {
+    let mut rng = Rng::new(14);
+    let points: Vec<f64> = (0..4 * 5)
+        .flat_map(|_| rng.point3(3.0).to_array())
+        .collect();
+    let polynomial = BSplineSurface::bezier(&points, 4, 5, None).unwrap();
+    // Any common weight cancels in Σ B w P / Σ B w: the same surface, and the same derivatives.
+    let rational = BSplineSurface::bezier(&points, 4, 5, Some(&[2.5; 20])).unwrap();
+    let corner = |i: usize, j: usize| DVec3::from_slice(&points[(i * 5 + j) * 3..]);
+    for (u, v, i, j) in [
+        (0.0, 0.0, 0, 0),
+        (0.0, 1.0, 0, 4),
+        (1.0, 0.0, 3, 0),
+        (1.0, 1.0, 3, 4),
+    ] {
+        assert_close3(
+            polynomial.evaluate(u, v).unwrap(),
+            corner(i, j),
+            1e-14,
+            "corner",
+        );
+    }
+    for _ in 0..50 {
+        let (u, v) = (rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+        let what = format!("at ({u}, {v})");
+        assert_close3(
+            rational.evaluate(u, v).unwrap(),
+            polynomial.evaluate(u, v).unwrap(),
+            1e-13,
+            &what,
+        );
+        for (du, dv) in [(1, 0), (0, 1), (1, 1)] {
+            assert_close3(
+                rational.derivative(u, v, du, dv).unwrap(),
+                polynomial.derivative(u, v, du, dv).unwrap(),
+                1e-11,
+                &what,
+            );
+        }
+        // The normal is a unit vector orthogonal to both partial derivatives, on the side of
+        // S_u × S_v.
+        let n = polynomial.normal(u, v).unwrap();
+        let su = polynomial.derivative(u, v, 1, 0).unwrap();
+        let sv = polynomial.derivative(u, v, 0, 1).unwrap();
+        assert!(
+            (n.length() - 1.0).abs() < 1e-14,
+            "|n| = {} {what}",
+            n.length()
+        );
+        assert!(n.dot(su).abs() < 1e-12 * su.length(), "n·S_u {what}");
+        assert!(n.dot(sv).abs() < 1e-12 * sv.length(), "n·S_v {what}");
+        assert!(
+            n.dot(su.cross(sv)) > 0.0,
+            "n on the side of S_u × S_v {what}"
+        );
+    }
+}
