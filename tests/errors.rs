@@ -926,8 +926,8 @@ fn intersect_line_zero_direction() {
 
 #[test]
 fn adaptive_mesh_too_large() {
-    // 520 × 520 bilinear patches: more patches than MAX_ADAPTIVE_VERTICES = 2^18 vertices.
-    let n = 521;
+    // 260 × 260 bilinear patches: more patches than MAX_ADAPTIVE_VERTICES = 2^16 vertices.
+    let n = 261;
     let coords: Vec<f64> = (0..n * n)
         .flat_map(|k| [(k / n) as f64, (k % n) as f64, 0.0])
         .collect();
@@ -936,7 +936,7 @@ fn adaptive_mesh_too_large() {
     fails(
         many.tessellate_adaptive(1.0),
         "too-large",
-        &["adaptive mesh vertices", "270400", "262144"],
+        &["adaptive mesh vertices", "67600", "65536"],
     );
     // A tolerance far below rounding: still not flat at the depth cap.
     fails(

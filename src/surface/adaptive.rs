@@ -9,8 +9,10 @@ use crate::error::{check_tolerance, Error, Result};
 pub const MAX_ADAPTIVE_DEPTH: u32 = 24;
 
 /// Most vertices one [`BSplineSurface::tessellate_adaptive`] makes: ~56 bytes each in the result
-/// (position, normal, uv, and about two triangles), so at most ~15 MB.
-pub const MAX_ADAPTIVE_VERTICES: usize = 1 << 18;
+/// (position, normal, uv, and about two triangles), so at most ~4 MB — and a work budget: the
+/// quadtree reaches the cap in ~0.3 s in Node, so a tolerance too small for the surface fails
+/// in a fraction of a second (2^18 took 1.2 s). A uniform 180 × 180 grid fits under it.
+pub const MAX_ADAPTIVE_VERTICES: usize = 1 << 16;
 
 /// Lattice steps per Bézier patch side: leaf corners and centres are whole numbers on it.
 const LATTICE: u64 = 1 << (MAX_ADAPTIVE_DEPTH + 1);

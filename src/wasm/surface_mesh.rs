@@ -48,7 +48,7 @@ macro_rules! surface_mesh_methods {
             /// `tolerance` of the surface point at its interpolated (u, v). A quadtree over the
             /// Bézier patches split by control-net flatness; no cracks between leaves of
             /// different depth; a plane gets 2 triangles per patch. Throws for a tolerance ≤ 0
-            /// or NaN and for more than 2^18 vertices.
+            /// or NaN and for more than 2^16 vertices.
             #[wasm_bindgen(js_name = tessellateAdaptive, unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; uvs: Float32Array; indices: Uint32Array }")]
             pub fn tessellate_adaptive(&self, tolerance: f64) -> Result<JsValue, JsError> {
                 mesh_to_js(&self.inner.tessellate_adaptive(tolerance)?)
