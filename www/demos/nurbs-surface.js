@@ -18,6 +18,7 @@ import {
 import { fmt, shortNumber } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
+import { netCorner } from "../lib/handle-lists3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
 import { placeLabelFrom } from "../lib/handles.js";
@@ -328,6 +329,8 @@ export const figure3d = {
   handles: {
     field: "points",
     label: (k, s) => netLabel(k, s.cols),
+    // A dense net names its corners (and the selected point); the announcement names every one.
+    showLabel: (k, s) => netCorner(k, s.rows, s.cols),
     select: (k, ui) => {
       if (k >= 0 && k !== ui.state.selected) ui.set("selected", k, false);
     },

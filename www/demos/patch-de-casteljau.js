@@ -15,6 +15,7 @@ import { t } from "../lib/strings.js";
 import { boundsOf3, fitCamera, roundCamera } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { placeLabelFrom } from "../lib/handles.js";
+import { netCorner } from "../lib/handle-lists3d.js";
 import { replaceOrReport } from "../lib/wasm.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
@@ -272,7 +273,12 @@ const resultLabel = (letter, i) =>
 
 export const figure3d = {
   bounds: (s) => boundsOf3(s.points),
-  handles: { field: "points", label: (k, s) => netLabel(k, sideOf(s)) },
+  // While the construction is shown its points carry the names: the net names its corners only.
+  handles: {
+    field: "points",
+    label: (k, s) => netLabel(k, sideOf(s)),
+    showLabel: (k, s) => s.step === 0 || netCorner(k, sideOf(s), sideOf(s)),
+  },
   scene: (s, d) => ({ surfaces: d.mesh ? [d.mesh] : [], wireframe: [], curves: [] }),
 };
 

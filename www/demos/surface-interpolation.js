@@ -14,6 +14,7 @@ import { checkbox, choice, group, readout } from "../lib/panel.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
+import { netCorner } from "../lib/handle-lists3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
 import { knotListText } from "../lib/knot-readout.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
@@ -194,7 +195,12 @@ export const figure3d = {
     }
     return box;
   },
-  handles: { field: "points", label: (k) => dataLabel(k) },
+  // 20 names would cover the grid: the corners (and the selected point) are named.
+  handles: {
+    field: "points",
+    label: (k) => dataLabel(k),
+    showLabel: (k) => netCorner(k, ROWS, COLS),
+  },
   scene: (s, d) => ({
     surfaces: [d.mesh],
     wireframe: [],

@@ -5,7 +5,7 @@
  *   the xz plane) about the z axis by an angle: a rational biquadratic surface (NURBS Book A8.1);
  *   the check shown is the largest distance from the torus of the core's `sampleGrid` points.
  * - vase: a clamped cubic profile in the xz plane (points [x, z], handles held in y = 0),
- *   revolved by 360°; every drag frame sets the profile's points in place and calls
+ *   revolved by 360°; every drag frame sets the moved profile point in place and calls
  *   `sl.revolve` again (a new surface: the revolved net changes wholesale).
  * - extrude: the same profile laid into the xy plane (points [x, y] → (x, y, 0)), `sl.extrude`
  *   along `direction`, whose tip is a handle at P₀ + d.
@@ -31,8 +31,8 @@ import { boundsOf3 } from "../lib/camera3d.js";
 import { flatPath3, pointsPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
 import { HUES, WIDTH, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
-import { entryHandles, flatNetPath, segmentPath3 } from "../lib/plane-handles.js";
-import { modeHandles } from "../lib/revolution-handles.js";
+import { flatNetPath, segmentPath3 } from "../lib/net-path3.js";
+import { subscript } from "../lib/format.js";
 import {
   Construction,
   MODES,
@@ -105,16 +105,15 @@ export const fields = {
 /** The fields the surface is made from (a change rebuilds it or moves it in place). */
 const GEOMETRY = ["mode", "R", "r", "angle", "profile", "direction", "curveA", "curveB"];
 
-/** The construction in wasm; drags set the curves' points and make the surface again. */
+/**
+ * The construction in wasm: a dragged curve point is set in its curve in place (`moved`: the
+ * list and the index), the direction's tip changes the extrusion; either makes the surface again.
+ */
 export const derive = {
   from: GEOMETRY,
   build: (s, sl) => ({ geo: new Construction(s, sl) }),
-  inPlace: {
-    profile: (m, s, ui) => m.geo.update(s, ui),
-    direction: (m, s, ui) => m.geo.update(s, ui),
-    curveA: (m, s, ui) => m.geo.update(s, ui),
-    curveB: (m, s, ui) => m.geo.update(s, ui),
-  },
+  moved: (m, index, xyz, s, ui, field) => m.geo.movePoint(s, field, index, ui),
+  inPlace: { direction: (m, s, ui) => m.geo.remake(s, ui) },
 };
 
 const spaced = (a, b, n) => Float64Array.from({ length: n }, (_, k) => a + ((b - a) * k) / (n - 1));
@@ -300,26 +299,64 @@ export const controls = [
 
 // ------------------------------------------------------------------ handles
 
-/** The handles, and + / Delete on a selected profile point (as the 2D handles have them). */
-export function setup(ui) {
-  const handles = entryHandles(ui, modeHandles(ui.view));
-  const canvas = ui.view.canvas;
-  const onKey = (event) => {
-    const i = handles.selected;
-    if (!hasProfile(ui.state) || i < 0 || i >= ui.state.profile.length) return;
-    if (event.ctrlKey || event.metaKey || event.altKey) return;
-    if (event.key === "+") ui.pointList.add(i);
-    else if (event.key === "Delete" || event.key === "Backspace") ui.pointList.remove(i);
-    else return;
-    event.preventDefault();
-  };
-  canvas.addEventListener("keydown", onKey);
-  return { destroy: () => canvas.removeEventListener("keydown", onKey) };
-}
+const LABELS = new Map();
+/** "P₂", "A₁" (made once). */
+const labelOf = (letter, i) => {
+  const key = `${letter}${i}`;
+  if (!LABELS.has(key)) LABELS.set(key, `${letter}${subscript(i)}`);
+  return LABELS.get(key);
+};
+
+/**
+ * The handles per mode (lib/handle-lists3d.js): vase — the profile [x, z] as (x, 0, z), held in
+ * y = 0; extrude — the same points as (x, y, 0), held in z = 0, and the direction's tip at
+ * P₀ + d (free); torus — the circle's centre (R, 0, 0), held in y = 0, its x sets R; ruled — the
+ * points of A and B (free). + / Delete on a profile point go through its point buttons.
+ */
+const HANDLES = [
+  {
+    field: "profile",
+    shownWhen: hasProfile,
+    axes: (s) => (s.mode === "vase" ? [0, 2] : [0, 1]),
+    label: (i) => labelOf("P", i),
+  },
+  {
+    field: "direction",
+    shownWhen: (s) => s.mode === "extrude",
+    label: () => "d",
+    at(s, out) {
+      out[0] = s.profile[0][0] + s.direction[0];
+      out[1] = s.profile[0][1] + s.direction[1];
+      out[2] = s.direction[2];
+    },
+    place(s, x, y, z) {
+      s.direction[0] = x - s.profile[0][0];
+      s.direction[1] = y - s.profile[0][1];
+      s.direction[2] = z;
+    },
+  },
+  {
+    field: "R",
+    shownWhen: isTorus,
+    label: () => "C",
+    plane: () => [0, 1, 0, 0],
+    at(s, out) {
+      out[0] = s.R;
+      out[1] = 0;
+      out[2] = 0;
+    },
+    place(s, x) {
+      s.R = Math.min(R_RANGE[1], Math.max(R_RANGE[0], Math.round(x * 100) / 100));
+    },
+  },
+  { field: "curveA", shownWhen: (s) => s.mode === "ruled", label: (i) => labelOf("A", i) },
+  { field: "curveB", shownWhen: (s) => s.mode === "ruled", label: (i) => labelOf("B", i) },
+];
 
 // ------------------------------------------------------------------ figure
 
 export const figure3d = {
+  handles: HANDLES,
   bounds(s) {
     switch (s.mode) {
       case "torus": {

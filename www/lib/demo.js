@@ -36,11 +36,15 @@
  *   `at(state, out)` / `place(state, x, y)` put a handle where the state implies (an arrow's tip
  *   p₀ + D₀ of a vector field) and write the field back from a move.
  * - `figure3d` (instead of `figure`): `{ bounds(state, data) → [xmin, ymin, zmin, xmax, ymax,
- *   zmax], scene(state, data) → { surfaces, wireframe, curves }, handles?: { field, label?,
- *   select? } }` — a 3D figure (view3d.js; the host awaits three-loader.js `prepareFigure`
- *   first): `scene` says what WebGL draws from the core's arrays (scene3d.js), the handles run
- *   over the `[x, y, z]` points of `state[field]` and `derive.moved(model, i, xyz, …)` gets a
- *   reused Float64Array(3); `draw` is then the 2D layer over the WebGL image (`view.project`).
+ *   zmax], scene(state, data) → { surfaces, wireframe, curves }, handles? }` — a 3D figure
+ *   (view3d.js; the host awaits three-loader.js `prepareFigure` first): `scene` says what WebGL
+ *   draws from the core's arrays (scene3d.js). `handles`: one entry or a list (handle-lists3d.js):
+ *   `{ field, axes?, plane?(state) → [nx, ny, nz, d], label?(index, state, data),
+ *   showLabel?(index, state, data), shownWhen?(state), select?(index, ui) }` over the points of
+ *   `state[field]`, and extra handles `{ field, at(state, out3), place(state, x, y, z), label }`;
+ *   `derive.moved(model, index, xyz, state, ui, field)` gets the list's field, the index in it
+ *   and a reused Float64Array(3); `+` / Delete reach the field's `pointButtons`. `draw` is then
+ *   the 2D layer over the WebGL image (`view.project`).
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -56,7 +60,8 @@
  */
 import { FormulaPanel } from "./formula.js";
 import { Handles, pointHandles, pointLabel, pointListsHandles } from "./handles.js";
-import { Handles3D, pointHandles3 } from "./handles3d.js";
+import { Handles3D } from "./handles3d.js";
+import { listHandles3 } from "./handle-lists3d.js";
 import { t } from "./strings.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
@@ -265,19 +270,25 @@ export function mountDeclared(demo, initialState, ctx) {
   // ------------------------------------------------------------ figure parts, handles, panel
   const handleSpec = figureSpec.handles;
   if (handleSpec && is3d) {
-    // The control net of a surface: one field of [x, y, z] points; `derive.moved(model, i, xyz)`.
-    const field = handleSpec.field;
+    // One entry or a list (handle-lists3d.js): point lists of `[x, y, z]` (or `[p, q]` on two
+    // axes), held in a plane or free, and extra handles placed by the state. A list point's
+    // move reaches `derive.moved(model, index, xyz, state, ui, field)` (index in its list),
+    // else the field's `derive.inPlace`; an extra handle's `place` marks its field changed.
     const moved = derive.moved
-      ? (i, xyz) => {
-          derive.moved(model, i, xyz, work, ui);
+      ? (field, index, xyz) => {
+          derive.moved(model, index, xyz, work, ui, field);
           if (changed) changed.add(field);
           view.requestDraw();
         }
-      : () => markChanged(field);
-    const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
+      : (field) => markChanged(field);
     ui.handles = new Handles3D(view, {
-      ...pointHandles3(() => work[field], moved, label),
-      select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
+      ...listHandles3([].concat(handleSpec), {
+        state: () => work,
+        data,
+        ui,
+        moved,
+        placed: markChanged,
+      }),
       commit: (kind, i, merge) => ctx.commit(work, merge),
     });
     data.handles = ui.handles;

@@ -13,11 +13,20 @@
  * selected the arrows orbit the camera (the view's `orbitBy`). Changes are announced in the
  * figure's polite live region when they are final, as in 2D.
  *
+ * A handle held in a plane (`source.plane(i, out)` writes `[nx, ny, nz, d]`: n·p = d, n unit)
+ * is dragged where the pointer's ray meets that plane (where the plane is seen nearly edge-on,
+ * `EDGE_ON`, in the camera-facing plane, then dropped onto it); the arrows move it in the
+ * camera-facing plane and slide it along its line of sight onto its plane; PageUp / PageDown do
+ * nothing (and announce nothing). `+` / Delete call `source.add(i)` / `source.remove(i)` (a
+ * point list's buttons). Labels: the selected, dragged and hovered handles' always; the others'
+ * when `source.showLabel(i)` allows (a dense net names its corners); on a phone-width figure
+ * (`NARROW_CANVAS_PX`) only the selected one's. The announcements name every point.
+ *
  * The handles own no data: `source` is `{ count(), get(i, out), label(i), move(i, x, y, z),
- * commit(kind, i, merge), select?(i) }` (pointHandles3 makes it for a list of [x, y, z]).
+ * commit(kind, i, merge), select?(i), plane?(i, out4), showLabel?(i), add?(i), remove?(i) }`
+ * (handle-lists3d.js makes it from a declarative figure's entries).
  */
 import {
-  pointLabel,
   placeLabelFrom,
   roundToView,
   HIT_RADIUS_MOUSE,
@@ -27,40 +36,19 @@ import {
   NUDGE_MERGE_MS,
 } from "./handles.js";
 import { formatNumber, t } from "./strings.js";
+import { NARROW_CANVAS_PX } from "./view.js";
 
 /** PageUp / PageDown move a point this many px-equivalents along the view direction. */
 export const DEPTH_NUDGE_PX = 10;
 /** An arrow key with nothing selected orbits by this many degrees (Shift: ×3). */
 export const ORBIT_STEP_DEG = 5;
-
-/**
- * The handle source for a list of [x, y, z] points: a moved point is written into the list, then
- * `moved(i, xyz)` gets a reused Float64Array [x, y, z] for `surface.setControlPoint(…)`.
- */
-export function pointHandles3(points, moved, label = null) {
-  const xyz = new Float64Array(3);
-  return {
-    count: () => points().length,
-    get: (i, out) => {
-      const p = points()[i];
-      out[0] = p[0];
-      out[1] = p[1];
-      out[2] = p[2];
-    },
-    label: label ?? pointLabel,
-    move: (i, x, y, z) => {
-      const p = points()[i];
-      p[0] = xyz[0] = x;
-      p[1] = xyz[1] = y;
-      p[2] = xyz[2] = z;
-      moved(i, xyz);
-    },
-  };
-}
+/** Below this |cos| between a sight line and a handle's plane normal the plane is seen edge-on. */
+export const EDGE_ON = 0.05;
 
 /** Opacity of a handle the surface hides (its fill, and its outline a little more). */
 export const HIDDEN_ALPHA = 0.35;
 const fadedStyles = new WeakMap();
+const dot3 = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 /** The faded form of a handle style (made once per style). */
 function faded(style) {
   let out = fadedStyles.get(style);
@@ -96,6 +84,7 @@ export class Handles3D {
     this._up = new Float64Array(3);
     this._sight = new Float64Array(3);
     this._plane = new Float64Array(4); // n, and the point's offset along n
+    this._held = new Float64Array(4); // the plane a constrained handle stays in
     this._pending = new Float64Array(2);
     this._hasPending = false;
     this._start = new Float64Array(3);
@@ -185,10 +174,15 @@ export class Handles3D {
     if (i < 0) return false;
     this.source.get(i, this._p);
     this._start.set(this._p);
-    // The plane facing the camera through the point, and where the pointer's ray meets it.
-    this.view.viewDirection(this._plane);
-    this._plane[3] =
-      this._plane[0] * this._p[0] + this._plane[1] * this._p[1] + this._plane[2] * this._p[2];
+    // The handle's own plane when it has one seen well enough, else the plane facing the camera
+    // through the point; and where the pointer's ray meets it.
+    if (this._heldIn(i) && this._facing(this._p)) {
+      this._plane.set(this._held);
+    } else {
+      this.view.viewDirection(this._plane);
+      this._plane[3] =
+        this._plane[0] * this._p[0] + this._plane[1] * this._p[1] + this._plane[2] * this._p[2];
+    }
     if (this.view.rayOnPlane(x, y, this._plane, this._s)) {
       for (let k = 0; k < 3; k++) this._grab[k] = this._p[k] - this._s[k];
     } else {
@@ -254,16 +248,38 @@ export class Handles3D {
     this._apply(this.dragging, this._s);
   }
 
-  /** Rounds to what a tenth of a pixel resolves at the point's depth, then moves. */
+  /** Writes handle i's plane into `_held`; false when it moves freely. */
+  _heldIn(i) {
+    return Boolean(this.source.plane?.(i, this._held));
+  }
+
+  /** The sight line through p (into `_sight`) meets the held plane well away from edge-on. */
+  _facing(p) {
+    this.view.sightLine(p[0], p[1], p[2], this._sight);
+    return Math.abs(dot3(this._held, this._sight)) >= EDGE_ON;
+  }
+
+  /**
+   * Rounds to what a tenth of a pixel resolves at the point's depth, then moves. A handle held
+   * in a plane first slides along its line of sight onto it (it stays where it is seen), or
+   * straight onto it when the plane is edge-on, and is put exactly into it after the rounding.
+   */
   _apply(i, p) {
+    const held = this._heldIn(i);
+    const h = this._held;
+    const off = () => dot3(h, p) - h[3];
+    if (held && this._facing(p)) {
+      const s = -off() / dot3(h, this._sight);
+      for (let k = 0; k < 3; k++) p[k] += s * this._sight[k];
+    }
     const perPixel = this.view.worldPerPixel(p[0], p[1], p[2]);
     const scale = 1 / perPixel;
-    this.source.move(
-      i,
-      roundToView(p[0], scale),
-      roundToView(p[1], scale),
-      roundToView(p[2], scale),
-    );
+    for (let k = 0; k < 3; k++) p[k] = roundToView(p[k], scale);
+    if (held) {
+      const e = off();
+      for (let k = 0; k < 3; k++) p[k] -= e * h[k];
+    }
+    this.source.move(i, p[0], p[1], p[2]);
   }
 
   // -------------------------------------------------------------- keyboard
@@ -310,7 +326,19 @@ export class Handles3D {
       case "PageUp":
       case "PageDown":
         if (i < 0) return;
+        // A handle held in a plane cannot leave it: nothing moves, nothing is announced.
+        if (this._heldIn(i)) break;
         this._nudge(i, 0, 0, event.key === "PageUp" ? DEPTH_NUDGE_PX : -DEPTH_NUDGE_PX);
+        break;
+      case "+":
+      case "=":
+        if (!this.source.add) return;
+        this.source.add(i);
+        break;
+      case "Delete":
+      case "Backspace":
+        if (!this.source.remove || i < 0) return;
+        this.source.remove(i);
         break;
       default:
         return;
@@ -376,6 +404,9 @@ export class Handles3D {
       }
       this._order[b + 1] = k;
     }
+    // A phone-width figure names only the selected point; else the source chooses (and the
+    // selected, dragged and hovered points are always named).
+    const narrow = view.width < NARROW_CANVAS_PX * r.scale;
     for (let a = 0; a < n; a++) {
       const i = this._order[a];
       const x = this._depth[3 * i];
@@ -389,6 +420,11 @@ export class Handles3D {
             : theme.handle;
       const style = hidden ? faded(shown) : shown;
       r.point(x, y, style);
+      const named =
+        i === this.selected ||
+        i === this.dragging ||
+        (!narrow && (i === this.hovered || (this.source.showLabel?.(i) ?? true)));
+      if (!named) continue;
       const label = i === this.selected ? theme.labelBold : theme.label;
       placeLabelFrom(
         r,

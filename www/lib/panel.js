@@ -256,11 +256,14 @@ export function pointButtons(field, o) {
       };
       const apply = (next, lists = {}) => {
         const done = o.apply ? o.apply(ui, next.points) : replace(next.points, lists);
-        if (done) ui.handles?.select(next.index);
+        // A 3D figure's handles may run over several lists: the new point's handle index.
+        const handle = ui.handles?.source.handleOf?.(field, next.index) ?? next.index;
+        if (done) ui.handles?.select(handle);
       };
       const refuse = (key, limits) =>
         ui.status(t(key, { ...ui.state, ...limits, ...params(ui.state) }), "error");
       ui.pointList = {
+        field,
         add(i) {
           const next = withPointAdded(ui.state[field], i, max, ui.view.scale);
           if (next) apply(next, alongside(next.index, true));

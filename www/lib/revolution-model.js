@@ -94,23 +94,28 @@ export class Construction {
   }
 
   /**
-   * A drag moved a point of the state: the curves take every control point again in place
-   * (`setControlPoint`), then the core makes the surface anew. A refusal (a zero extrusion
-   * direction) keeps the last surface and is reported in the status line.
+   * Point `index` of list `field` was dragged: only that control point is set in its curve
+   * (`setControlPoint`), then the core makes the surface anew (or reports a refusal).
    */
-  update(s, ui) {
-    if (s.mode === "vase" || s.mode === "extrude") {
-      const inXz = s.mode === "vase";
-      s.profile.forEach(([p, q], i) => {
-        xyz[0] = p;
-        xyz[1] = inXz ? 0 : q;
-        xyz[2] = inXz ? q : 0;
-        this.curves[0].setControlPoint(i, xyz);
-      });
-    } else if (s.mode === "ruled") {
-      s.curveA.forEach((p, i) => this.curves[0].setControlPoint(i, p));
-      s.curveB.forEach((p, i) => this.curves[1].setControlPoint(i, p));
+  movePoint(s, field, index, ui) {
+    const inXz = s.mode === "vase";
+    if (field === "profile") {
+      const [p, q] = s.profile[index];
+      xyz[0] = p;
+      xyz[1] = inXz ? 0 : q;
+      xyz[2] = inXz ? q : 0;
+      this.curves[0].setControlPoint(index, xyz);
+    } else if (field === "curveA" || field === "curveB") {
+      this.curves[field === "curveA" ? 0 : 1].setControlPoint(index, s[field][index]);
     }
+    this.remake(s, ui);
+  }
+
+  /**
+   * The surface made anew from the curves (after a new extrusion direction too); a refusal (a
+   * zero direction) keeps the last surface and is reported in the status line.
+   */
+  remake(s, ui) {
     try {
       const next = this._surface(s);
       this.surface.free();

@@ -168,4 +168,28 @@ export default [
       equal(JSON.stringify((await urlState(page)).knotsU), "[0,0,0,0,0.5,2,2,2,2]", "U kept");
     },
   ],
+  [
+    "a dense net names its corners and the selected point only (SVG export too); the announcement names every point",
+    async (page, h, _base, { assert, equal, settle }) => {
+      await h.canvas().focus();
+      await page.keyboard.press("Home");
+      for (let k = 0; k < 8; k++) await page.keyboard.press("Tab");
+      await settle(page);
+      // Point 8 of the 5 × 6 net: row 1, column 2.
+      const live = await page.locator(".sl-figure .sl-announcer").textContent();
+      assert(live.startsWith("P₁,₂ selected"), `announced: ${live}`);
+      const file = await h.download("export-svg");
+      const { readFileSync } = await import("node:fs");
+      const svg = readFileSync(await file.path(), "utf8");
+      const texts = [...svg.matchAll(/<text[^>]*>([^<]*)<\/text>/g)].map((m) => m[1]);
+      const names = texts.filter((x) => /^P[₀-₉]+,[₀-₉]+$/.test(x)).sort();
+      equal(names.join(" "), ["P₀,₀", "P₀,₅", "P₁,₂", "P₄,₀", "P₄,₅"].sort().join(" "), "names");
+      // Another point selected: its name, announced, replaces the first one's.
+      await h.canvas().focus();
+      await page.keyboard.press("Tab");
+      await settle(page);
+      const next = await page.locator(".sl-figure .sl-announcer").textContent();
+      assert(next.startsWith("P₁,₃ selected"), `announced: ${next}`);
+    },
+  ],
 ];

@@ -202,4 +202,98 @@ export default [
       assert((await h.statusKind()) !== "error", `no error: ${await h.status()}`);
     },
   ],
+  [
+    "extrude: dragging P₂ moves only P₂ (the direction and the other points unchanged), the profile stays in z = 0",
+    async (page, h, base, { assert, equal, openDemo }) => {
+      await openDemo(
+        page,
+        base,
+        "surface-revolution",
+        hashOf(await stateWith(page, { mode: "extrude" })),
+      );
+      const before = await urlState(page);
+      await h.drag((await h.handles())[2], 25, -15);
+      const after = await urlState(page);
+      assert(
+        JSON.stringify(after.profile[2]) !== JSON.stringify(before.profile[2]),
+        `P₂ moved: ${after.profile[2]}`,
+      );
+      for (const k of [0, 1, 3, 4, 5])
+        equal(JSON.stringify(after.profile[k]), JSON.stringify(before.profile[k]), `P${k}`);
+      equal(JSON.stringify(after.direction), JSON.stringify(before.direction), "direction");
+      // S(u, 0) is a point of the profile curve: in the plane z = 0 exactly.
+      equal((await published(page)).s0[2], 0, "z of S(u, 0) after the drag");
+    },
+  ],
+  [
+    "ruled: dragging A₁ moves only A₁; curve B unchanged",
+    async (page, h, base, { assert, equal, openDemo }) => {
+      await openDemo(
+        page,
+        base,
+        "surface-revolution",
+        hashOf(await stateWith(page, { mode: "ruled" })),
+      );
+      const before = await urlState(page);
+      await h.drag((await h.handles())[1], 30, 20);
+      const after = await urlState(page);
+      assert(
+        JSON.stringify(after.curveA[1]) !== JSON.stringify(before.curveA[1]),
+        `A₁ moved: ${after.curveA[1]}`,
+      );
+      equal(JSON.stringify(after.curveA[0]), JSON.stringify(before.curveA[0]), "A₀");
+      equal(JSON.stringify(after.curveA[2]), JSON.stringify(before.curveA[2]), "A₂");
+      equal(JSON.stringify(after.curveB), JSON.stringify(before.curveB), "curve B");
+    },
+  ],
+  [
+    "vase: + after P₂ adds P₃ in the middle of P₂P₃ (selected), Delete removes it again",
+    async (page, h, _base, { assert, equal, settle }) => {
+      const start = await urlState(page);
+      const handle = (await h.handles())[2];
+      await page.mouse.click(handle.x, handle.y);
+      await page.keyboard.press("+");
+      await settle(page);
+      const added = await urlState(page);
+      equal(added.profile.length, 7, "profile points after +");
+      const [a, b] = [start.profile[2], start.profile[3]];
+      // The middle of the leg, rounded to what the view resolves.
+      const middle = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
+      assert(
+        near(added.profile[3], middle, 0.01),
+        `the new point ${added.profile[3]} vs ${middle}`,
+      );
+      equal((await h.handles()).length, 7, "handles after +");
+      const live = await page.locator(".sl-figure .sl-announcer").textContent();
+      equal(live.split(" ")[0], "P₃", `the new point is selected: ${live}`);
+      await page.keyboard.press("Delete");
+      await settle(page);
+      equal(
+        JSON.stringify((await urlState(page)).profile),
+        JSON.stringify(start.profile),
+        "after Delete",
+      );
+    },
+  ],
+  [
+    "vase: PageUp / PageDown on a profile point (held in y = 0) change nothing and announce nothing",
+    async (page, h, _base, { equal, settle }) => {
+      const handle = (await h.handles())[3];
+      await page.mouse.click(handle.x, handle.y);
+      await settle(page);
+      const before = await urlState(page);
+      const announcer = page.locator(".sl-figure .sl-announcer");
+      const said = await announcer.textContent();
+      for (const key of ["PageUp", "PageUp", "PageDown"]) await page.keyboard.press(key);
+      await settle(page);
+      equal(JSON.stringify(await urlState(page)), JSON.stringify(before), "the state");
+      equal(await announcer.textContent(), said, "the announcement");
+      // An arrow still moves it (in its plane).
+      await page.keyboard.press("ArrowRight");
+      await settle(page);
+      const after = await urlState(page);
+      equal(after.profile[3].length, 2, "still [x, z]");
+      equal(after.profile[3][0] !== before.profile[3][0], true, "ArrowRight moved P₃");
+    },
+  ],
 ];
