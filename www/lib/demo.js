@@ -36,8 +36,9 @@
  *   `at(state, out)` / `place(state, x, y)` put a handle where the state implies (an arrow's tip
  *   p₀ + D₀ of a vector field) and write the field back from a move.
  * - `figure3d` (instead of `figure`): `{ bounds(state, data) → [xmin, ymin, zmin, xmax, ymax,
- *   zmax], scene(state, data) → { surfaces, wireframe, curves }, handles?: { field, label?,
- *   select? } }` — a 3D figure (view3d.js; the host awaits three-loader.js `prepareFigure`
+ *   zmax], scene(state, data) → { surfaces, wireframe, curves }, camera?: { azimuth, elevation }
+ *   (the direction of view a state without a camera starts from: first view, Reset; the fit
+ *   sets distance and target), handles?: { field, label?, select? } }` — a 3D figure (view3d.js; the host awaits three-loader.js `prepareFigure`
  *   first): `scene` says what WebGL draws from the core's arrays (scene3d.js), the handles run
  *   over the `[x, y, z]` points of `state[field]` and `derive.moved(model, i, xyz, …)` gets a
  *   reused Float64Array(3); `draw` is then the 2D layer over the WebGL image (`view.project`).
@@ -107,7 +108,7 @@ export function mountDeclared(demo, initialState, ctx) {
     bounds: () => figureSpec.bounds(work, data),
     label: "",
     insets: figureSpec.insets ? (w, h, scale) => figureSpec.insets(w, h, scale, work, data) : null,
-    ...(is3d ? { scene: () => figureSpec.scene(work, data) } : {}),
+    ...(is3d ? { scene: () => figureSpec.scene(work, data), camera: figureSpec.camera } : {}),
   });
 
   /** What controls, handles and tools get: the state, its setter and the shell's services. */
@@ -158,6 +159,8 @@ export function mountDeclared(demo, initialState, ctx) {
       if (final) ctx.commit(work);
     },
     status: ctx.status,
+    /** Fits the figure to its content and writes the window into the state (the Fit button). */
+    fit: () => ctx.fit?.(),
     requestDraw: () => view.requestDraw(),
     /** Stops every control's animation (a press in the figure takes the parameter over). */
     stop: () => built.forEach((control) => control.stop?.()),
