@@ -19,7 +19,7 @@ import { fmt, shortNumber } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netCorner } from "../lib/handle-lists3d.js";
-import { netPath, flatPath3 } from "../lib/draw3d.js";
+import { netPath } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
 import { placeLabelFrom } from "../lib/handles.js";
 import { continuityText } from "../lib/continuity.js";
@@ -38,6 +38,9 @@ const MAX_DEGREE = 4;
 const WEIGHT_MIN = 0.1;
 const WEIGHT_MAX = 10;
 const WEIGHT_LOG_STEP = 0.01;
+/** The colour of the net lines an insertion made (scene curves and the legend's swatch). */
+const FRESH_COLOUR = "#2B2B2B";
+
 /** Mesh resolution, samples per drawn curve, iso-curves per direction. */
 const MESH = 48;
 const CURVE_SAMPLES = 64;
@@ -74,7 +77,11 @@ export const defaultState = Object.freeze({
   iso: true,
   seams: true,
   normal: true,
+  shading: "lit",
 });
+
+/** Surface shadings (scene3d.js): lit, zebra stripes, Gaussian and mean curvature colours. */
+const SHADINGS = ["lit", "zebra", "gaussian", "mean"];
 
 const count = (s) => s.rows * s.cols;
 export const fields = {
@@ -93,6 +100,7 @@ export const fields = {
   net: field.boolean(),
   iso: field.boolean(),
   seams: field.boolean(),
+  shading: field.choice(SHADINGS),
   normal: field.boolean(),
 };
 
@@ -146,6 +154,12 @@ export const compute = {
   domainU: [SHAPE, (s, d) => d.surface.domainU()],
   domainV: [SHAPE, (s, d) => d.surface.domainV()],
   mesh: [SHAPE, (s, d) => d.surface.tessellate(MESH, MESH)],
+  // [K0, H0, K1, H1, …] at the mesh's vertices, only while a curvature shading shows them.
+  curvatures: [
+    [...SHAPE, "shading"],
+    (s, d) =>
+      s.shading === "gaussian" || s.shading === "mean" ? d.surface.curvatures(d.mesh.uvs) : null,
+  ],
   isoCurves: [
     SHAPE,
     (s, d) => {
@@ -183,6 +197,23 @@ export const compute = {
           c: d.seams.v[k + 1],
           samples: d.surface.sampleGrid(us, [d.seams.v[k]]),
         });
+      return out;
+    },
+  ],
+  /** The net lines an insertion made, as coloured curve entries (flat xyz), or null. */
+  freshLines: [
+    ["points", "fresh"],
+    (s) => {
+      if (s.fresh.length !== 3) return null;
+      const [dir, first, last] = s.fresh;
+      const n = dir === 0 ? s.cols : s.rows;
+      const out = [];
+      for (let line = first; line <= last; line++) {
+        const points = new Float64Array(3 * n);
+        for (let k = 0; k < n; k++)
+          points.set(s.points[dir === 0 ? line * s.cols + k : k * s.cols + line], 3 * k);
+        out.push({ points, colour: FRESH_COLOUR, width: WIDTH.curve });
+      }
       return out;
     },
   ],
@@ -313,6 +344,12 @@ export const controls = [
     checkbox("seams", { label: "nurbsSurface.control.seams" }),
     checkbox("normal", { label: "nurbsSurface.control.normal" }),
   ),
+  group(
+    "nurbsSurface.control.shading",
+    choice("shading", {
+      options: SHADINGS.map((value) => ({ value, label: `nurbsSurface.shading.${value}` })),
+    }),
+  ),
   readout("seams", (s, d) => seamsText(d.seams), {
     data: (s, d) => ({
       seamsU: seamData(d.seams.u),
@@ -335,11 +372,20 @@ export const figure3d = {
       if (k >= 0 && k !== ui.state.selected) ui.set("selected", k, false);
     },
   },
-  scene: (s, d) => ({
-    surfaces: [d.mesh],
-    wireframe: [],
-    curves: s.iso ? d.isoCurves : [],
-  }),
+  // The seams (iso-curves at the interior knots, coloured by their measured continuity) lie on
+  // the surface and the inserted net lines close to it: scene curves, depth-tested with it.
+  scene: (s, d) => {
+    const curves = s.iso ? [...d.isoCurves] : [];
+    if (s.seams)
+      for (const curve of d.seamCurves)
+        curves.push({ points: curve.samples, colour: SEAM_HUES[seamIndex(curve.c)], width: 3 });
+    if (d.freshLines) for (const points of d.freshLines) curves.push(points);
+    return {
+      surfaces: [{ mesh: d.mesh, shading: s.shading, curvatures: d.curvatures }],
+      wireframe: [],
+      curves,
+    };
+  },
 };
 
 /** Seam colours by measured continuity: a gap, C⁰, C¹, C², C³ and above. */
@@ -354,10 +400,9 @@ const SEAM_HUES = [
 const seamIndex = (c) => Math.min(c + 1, SEAM_HUES.length - 1);
 
 const stylesFor = themed((theme) => ({
-  seams: SEAM_HUES.map((stroke) => Object.freeze({ stroke, width: 3, join: "round" })),
   swatch: SEAM_HUES.map((fill) => Object.freeze({ fill })),
   legend: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
-  fresh: Object.freeze({ stroke: theme.text, width: WIDTH.curve, join: "round" }),
+  fresh: Object.freeze({ stroke: FRESH_COLOUR, width: WIDTH.curve, join: "round" }),
   selectedRing: Object.freeze({ stroke: HUES.reddishPurple, width: 2, radius: RADIUS.handle + 4 }),
   normal: Object.freeze({
     stroke: HUES.vermillion,
@@ -404,27 +449,8 @@ export function draw(r, v, s, d) {
     netPath(r, v, s.points, s.rows, s.cols);
     r.paint(theme.polygon);
   }
-  if (s.seams) {
-    for (const curve of d.seamCurves) {
-      flatPath3(r, v, curve.samples);
-      r.paint(styles.seams[seamIndex(curve.c)]);
-    }
-  }
+  // The seams and the inserted lines are scene curves (figure3d.scene); their legend stays here.
   drawLegend(r, styles, s.seams ? d.seamOrders : NONE, s.fresh);
-  if (s.fresh.length === 3) {
-    const [dir, first, last] = s.fresh;
-    for (let line = first; line <= last; line++) {
-      r.beginPath();
-      const n = dir === 0 ? s.cols : s.rows;
-      for (let k = 0; k < n; k++) {
-        const p = s.points[dir === 0 ? line * s.cols + k : k * s.cols + line];
-        v.project(p[0], p[1], p[2], a);
-        if (k === 0) r.moveTo(a[0], a[1]);
-        else r.lineTo(a[0], a[1]);
-      }
-      r.paint(styles.fresh);
-    }
-  }
   const p = d.point;
   v.project(p[0], p[1], p[2], a);
   if (s.normal) {

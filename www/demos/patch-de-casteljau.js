@@ -12,8 +12,8 @@ import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, readout, group, INTEGER_SLIDER } from "../lib/panel.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
-import { boundsOf3, fitCamera, roundCamera } from "../lib/camera3d.js";
-import { netPath, flatPath3 } from "../lib/draw3d.js";
+import { boundsOf3 } from "../lib/camera3d.js";
+import { netPath } from "../lib/draw3d.js";
 import { placeLabelFrom } from "../lib/handles.js";
 import { netCorner } from "../lib/handle-lists3d.js";
 import { replaceOrReport } from "../lib/wasm.js";
@@ -82,7 +82,6 @@ export const defaultState = Object.freeze({
   step: 6,
   surface: true,
   net: true,
-  view: roundCamera(fitCamera(boundsOf3(netOf(3)), CAMERA.azimuth, CAMERA.elevation)),
 });
 
 const ORDERS = ["rows", "columns"];
@@ -273,17 +272,23 @@ const resultLabel = (letter, i) =>
 
 export const figure3d = {
   bounds: (s) => boundsOf3(s.points),
+  camera: CAMERA,
   // While the construction is shown its points carry the names: the net names its corners only.
   handles: {
     field: "points",
     label: (k, s) => netLabel(k, sideOf(s)),
     showLabel: (k, s) => s.step === 0 || netCorner(k, sideOf(s), sideOf(s)),
   },
-  scene: (s, d) => ({ surfaces: d.mesh ? [d.mesh] : [], wireframe: [], curves: [] }),
+  // The iso-curve through the row (column) results lies on the surface: a scene curve,
+  // depth-tested with it, once the results are on view.
+  scene: (s, d) => ({
+    surfaces: d.mesh ? [d.mesh] : [],
+    wireframe: [],
+    curves: d.stage.results ? [{ points: d.iso, colour: HUES.vermillion, width: WIDTH.curve }] : [],
+  }),
 };
 
 const stylesFor = themed((theme) => ({
-  iso: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.curve, join: "round" }),
   isoPolygon: Object.freeze({ stroke: HUES.vermillion, width: WIDTH.construction, dash: [4, 3] }),
   result: Object.freeze({
     fill: HUES.vermillion,
@@ -315,8 +320,7 @@ export function draw(r, v, s, d) {
     r.paint(theme.polygon);
   }
   if (st.results) {
-    flatPath3(r, v, d.iso);
-    r.paint(styles.iso);
+    // The iso-curve itself is a scene curve (figure3d.scene).
     indexedPath3(r, v, second, st.count, (j) => j);
     r.paint(styles.isoPolygon);
   }

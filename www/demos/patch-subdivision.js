@@ -13,8 +13,8 @@ import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, readout, group, shownWhen } from "../lib/panel.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t, formatNumber } from "../lib/strings.js";
-import { boundsOf3, fitCamera, roundCamera } from "../lib/camera3d.js";
-import { netPath, flatPath3 } from "../lib/draw3d.js";
+import { boundsOf3 } from "../lib/camera3d.js";
+import { netPath } from "../lib/draw3d.js";
 import { placeLabelFrom } from "../lib/handles.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { HUES, WIDTH, RADIUS, POLYGON_DASH, themed } from "../lib/theme.js";
@@ -60,7 +60,6 @@ export const defaultState = Object.freeze({
   tolerance: 0.05,
   nets: true,
   quadtree: true,
-  view: roundCamera(fitCamera(boundsOf3(NET), CAMERA.azimuth, CAMERA.elevation)),
 });
 
 const MODES = ["split", "adaptive"];
@@ -221,25 +220,36 @@ export const controls = [
 const LABELS = [];
 const netLabel = (k) => (LABELS[k] ??= `P${subscript(Math.floor(k / COLS))}${subscript(k % COLS)}`);
 
-export const figure3d = {
-  bounds: (s) => boundsOf3(s.points),
-  handles: { field: "points", label: (k) => netLabel(k) },
-  scene: (s, d) =>
-    s.mode === "split"
-      ? { surfaces: d.pieces.map((p) => p.mesh), wireframe: [], curves: [] }
-      : { surfaces: [d.adaptive.mesh], wireframe: [{ mesh: d.adaptive.mesh }], curves: [] },
-};
-
 /**
  * The four pieces' colours, Okabe–Ito: the two pairs that share only the corner S(u0, v0)
  * (pieces 0 and 3, 1 and 2) hold the two warm hues, so pieces that share an edge differ most.
  */
-const PIECE_HUES = [HUES.orange, HUES.bluishGreen, HUES.reddishPurple, HUES.vermillion];
+export const PIECE_HUES = [HUES.orange, HUES.bluishGreen, HUES.reddishPurple, HUES.vermillion];
+
+/** The outlines are darker than their piece (a line in the piece's own colour would not show). */
+const OUTLINE_HUES = ["#9A6A00", "#00604A", "#8A4A6E", "#8F3F00"];
+
+export const figure3d = {
+  bounds: (s) => boundsOf3(s.points),
+  camera: CAMERA,
+  handles: { field: "points", label: (k) => netLabel(k) },
+  // Split: each piece lit in its colour, its outline a scene curve (depth-tested with the
+  // surface); adaptive: the mesh and its triangle edges.
+  scene: (s, d) =>
+    s.mode === "split"
+      ? {
+          surfaces: d.pieces.map((p, k) => ({ mesh: p.mesh, colour: PIECE_HUES[k] })),
+          wireframe: [],
+          curves: d.pieces.map((p, k) => ({
+            points: p.outline,
+            colour: OUTLINE_HUES[k],
+            width: WIDTH.curve,
+          })),
+        }
+      : { surfaces: [d.adaptive.mesh], wireframe: [{ mesh: d.adaptive.mesh }], curves: [] },
+};
 
 const stylesFor = themed((theme) => ({
-  outline: PIECE_HUES.map((stroke) =>
-    Object.freeze({ stroke, width: WIDTH.curve, join: "round", fill: stroke, alpha: 0.22 }),
-  ),
   net: PIECE_HUES.map((stroke) =>
     Object.freeze({ stroke, width: WIDTH.polygon, dash: POLYGON_DASH }),
   ),
@@ -266,18 +276,13 @@ function pieceNetPath(r, v, net) {
   }
 }
 
-/** Split: the pieces' tinted outlines, nets and points, the shared corner; adaptive: the quadtree. */
+/** Split: the pieces' nets and points, the shared corner (the pieces are WebGL); adaptive: the quadtree. */
 export function draw(r, v, s, d) {
   const theme = r.theme;
   const styles = stylesFor(theme);
   netPath(r, v, s.points, ROWS, COLS);
   r.paint(theme.polygon);
   if (s.mode === "split") {
-    d.pieces.forEach((piece, k) => {
-      flatPath3(r, v, piece.outline);
-      r.closePath();
-      r.paint(styles.outline[k]);
-    });
     if (s.nets) {
       d.pieces.forEach((piece, k) => {
         pieceNetPath(r, v, piece.net);

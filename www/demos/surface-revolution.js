@@ -28,7 +28,7 @@ import {
 import { fmt } from "../lib/format.js";
 import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
-import { flatPath3, pointsPath3 } from "../lib/draw3d.js";
+import { pointsPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
 import { HUES, WIDTH, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { flatNetPath, segmentPath3 } from "../lib/net-path3.js";
@@ -203,8 +203,7 @@ const modeChoice = choice("mode", {
   options: MODES.map((value) => ({ value, label: `surfaceRevolution.mode.${value}` })),
   set: (ui, value) => {
     ui.set("mode", value);
-    const camera = ui.view.fit();
-    ui.view.onWindowChange?.(camera);
+    ui.fit();
   },
 });
 
@@ -379,30 +378,40 @@ export const figure3d = {
         return boundsOf3([...s.curveA, ...s.curveB]);
     }
   },
-  scene: (s, d) => ({
-    surfaces: [d.mesh],
-    wireframe: s.wireframe ? [{ mesh: d.mesh, grid: [MESH_U + 1, MESH_V + 1] }] : [],
-    curves: s.iso ? d.isoCurves : [],
-  }),
+  // The profile (torus, vase: the meridian u = 0), the extruded curve (the edge v = 0) and A, B
+  // (the edges v = 0, 1) lie on the surface's boundary: scene curves, depth-tested with it.
+  scene: (s, d) => {
+    const [first, second] = d.curveSamples;
+    const curves = s.iso ? [...d.isoCurves] : [];
+    curves.push({ points: first, colour: CURVE_COLOURS.first, width: WIDTH.curve });
+    if (s.mode === "ruled")
+      curves.push({ points: second, colour: CURVE_COLOURS.second, width: WIDTH.curve });
+    return {
+      surfaces: [d.mesh],
+      wireframe: s.wireframe ? [{ mesh: d.mesh, grid: [MESH_U + 1, MESH_V + 1] }] : [],
+      curves,
+    };
+  },
 };
 
+/**
+ * The curves' colours on the blue surface: the profile / A orange (blue would not read on it),
+ * B the second curve's bluish green; their control polygons on the 2D layer match.
+ */
+export const CURVE_COLOURS = Object.freeze({
+  first: HUES.orange,
+  second: SECOND_CURVE.curve.stroke,
+});
+
 const stylesFor = themed((theme) => ({
-  // A casing in the background colour under each curve: a blue curve on the blue surface reads.
-  casing: Object.freeze({
-    stroke: theme.background,
-    width: WIDTH.curve + 3,
-    join: "round",
-    cap: "round",
-  }),
   raised: Object.freeze({
-    fill: HUES.blue,
+    fill: CURVE_COLOURS.first,
     stroke: theme.background,
     width: 1,
     radius: RADIUS.constructionPoint,
   }),
-  second: SECOND_CURVE.curve,
   secondPolygon: SECOND_CURVE.polygon,
-  firstPolygon: Object.freeze({ ...theme.polygon, stroke: HUES.blue }),
+  firstPolygon: Object.freeze({ ...theme.polygon, stroke: CURVE_COLOURS.first }),
   direction: Object.freeze({
     stroke: HUES.vermillion,
     width: WIDTH.construction,
@@ -425,19 +434,13 @@ export function draw(r, v, s, d) {
     flatNetPath(r, v, d.net.points, d.net.rows, d.net.cols);
     r.paint(theme.polygon);
   }
-  const [first, second] = d.curveSamples;
+  // The curves themselves are scene curves (figure3d.scene): depth-tested with the surface.
   if (s.mode === "ruled") {
     pointsPath3(r, v, s.curveA);
     r.paint(styles.firstPolygon);
     pointsPath3(r, v, s.curveB);
     r.paint(styles.secondPolygon);
-    flatPath3(r, v, second);
-    r.paint(styles.casing);
-    r.paint(styles.second);
   }
-  flatPath3(r, v, first);
-  r.paint(styles.casing);
-  r.paint(theme.curve);
   if (s.mode === "ruled") {
     // The compatibility step: the net's first column is A raised to degree 3 (A′₀ … A′₃).
     const { points, rows, cols } = d.net;

@@ -93,13 +93,18 @@ export function readCamera(camera, target) {
   ];
 }
 
+/** Rounds of re-centring in `fitCamera` (each moves the target to the projected box's middle). */
+export const FIT_CENTRING_ROUNDS = 4;
+
 /**
  * The camera that shows the box `[x0, y0, z0, x1, y1, z1]` whole in its frame (of
- * `REFERENCE_ASPECT`, so on every canvas), seen from `azimuth`, `elevation`, looking at its
- * centre: the nearest
+ * `REFERENCE_ASPECT`, so on every canvas), seen from `azimuth`, `elevation`: the nearest
  * distance at which every corner of the box projects inside both fields of view, each shrunk
  * by the padding. A corner at (x, y) across and z towards the camera (camera axes, from the
- * centre) needs depth d − z ≥ |x| / tan(half horizontal angle) and ≥ |y| / tan(half vertical).
+ * target) needs depth d − z ≥ |x| / tan(half horizontal angle) and ≥ |y| / tan(half vertical).
+ * The target starts at the box's centre and is then moved across the view (a few rounds) to
+ * the middle of the corners' projections, so the box's picture is centred in the frame rather
+ * than its centre point (a flat box seen from above fills the frame, not half of it).
  */
 export function fitCamera(bounds, azimuth = DEFAULT_AZIMUTH, elevation = DEFAULT_ELEVATION) {
   const [x0, y0, z0, x1, y1, z1] = bounds;
@@ -115,24 +120,50 @@ export function fitCamera(bounds, azimuth = DEFAULT_AZIMUTH, elevation = DEFAULT
   ];
   const tanV = Math.tan((FIELD_OF_VIEW / 2) * DEG) * (1 - FIT_PADDING);
   const tanH = Math.tan((FIELD_OF_VIEW / 2) * DEG) * REFERENCE_ASPECT * (1 - FIT_PADDING);
-  const centre = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2];
+  const middle = [(x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2];
   const half = [
     Math.max((x1 - x0) / 2, MIN_FIT_RADIUS),
     Math.max((y1 - y0) / 2, MIN_FIT_RADIUS),
     Math.max((z1 - z0) / 2, MIN_FIT_RADIUS),
   ];
-  let distance = 0;
-  for (let corner = 0; corner < 8; corner++) {
-    const c = [0, 1, 2].map((k) => (corner & (1 << k) ? half[k] : -half[k]));
-    const dot = (w) => c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
-    const toward = dot(back);
-    distance = Math.max(
-      distance,
-      toward + Math.abs(dot(right)) / tanH,
-      toward + Math.abs(dot(up)) / tanV,
-    );
+  const corners = Array.from({ length: 8 }, (_, corner) =>
+    [0, 1, 2].map((k) => middle[k] + (corner & (1 << k) ? half[k] : -half[k])),
+  );
+  const target = [...middle];
+  /** The distance for `target`, and the middle of the corners' projections (tangent units). */
+  const fitAt = () => {
+    let distance = 0;
+    const rel = corners.map((c) => [c[0] - target[0], c[1] - target[1], c[2] - target[2]]);
+    const dot = (c, w) => c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
+    for (const c of rel) {
+      const toward = dot(c, back);
+      distance = Math.max(
+        distance,
+        toward + Math.abs(dot(c, right)) / tanH,
+        toward + Math.abs(dot(c, up)) / tanV,
+      );
+    }
+    let [xMin, xMax, yMin, yMax] = [Infinity, -Infinity, Infinity, -Infinity];
+    for (const c of rel) {
+      const depth = distance - dot(c, back);
+      const x = dot(c, right) / depth;
+      const y = dot(c, up) / depth;
+      [xMin, xMax, yMin, yMax] = [
+        Math.min(xMin, x),
+        Math.max(xMax, x),
+        Math.min(yMin, y),
+        Math.max(yMax, y),
+      ];
+    }
+    return { distance, dx: (xMin + xMax) / 2, dy: (yMin + yMax) / 2 };
+  };
+  let fit = fitAt();
+  for (let round = 0; round < FIT_CENTRING_ROUNDS; round++) {
+    // Move the target across the view by the offset at its depth (the distance).
+    for (let k = 0; k < 3; k++) target[k] += fit.distance * (fit.dx * right[k] + fit.dy * up[k]);
+    fit = fitAt();
   }
-  return roundCamera([azimuth, elevation, distance, ...centre]);
+  return roundCamera([azimuth, elevation, fit.distance, ...target]);
 }
 
 /** `[xmin, ymin, zmin, xmax, ymax, zmax]` of `[x, y, z]` points. */

@@ -36,15 +36,17 @@
  *   `at(state, out)` / `place(state, x, y)` put a handle where the state implies (an arrow's tip
  *   p₀ + D₀ of a vector field) and write the field back from a move.
  * - `figure3d` (instead of `figure`): `{ bounds(state, data) → [xmin, ymin, zmin, xmax, ymax,
- *   zmax], scene(state, data) → { surfaces, wireframe, curves }, handles? }` — a 3D figure
- *   (view3d.js; the host awaits three-loader.js `prepareFigure` first): `scene` says what WebGL
- *   draws from the core's arrays (scene3d.js). `handles`: one entry or a list (handle-lists3d.js):
- *   `{ field, axes?, plane?(state) → [nx, ny, nz, d], label?(index, state, data),
- *   showLabel?(index, state, data), shownWhen?(state), select?(index, ui) }` over the points of
- *   `state[field]`, and extra handles `{ field, at(state, out3), place(state, x, y, z), label }`;
- *   `derive.moved(model, index, xyz, state, ui, field)` gets the list's field, the index in it
- *   and a reused Float64Array(3); `+` / Delete reach the field's `pointButtons`. `draw` is then
- *   the 2D layer over the WebGL image (`view.project`).
+ *   zmax], scene(state, data) → { surfaces, wireframe, curves }, camera?: { azimuth, elevation }
+ *   (the direction of view a state without a camera starts from: first view, Reset; the fit
+ *   sets distance and target), handles? }` — a 3D figure (view3d.js; the host awaits
+ *   three-loader.js `prepareFigure` first): `scene` says what WebGL draws from the core's arrays
+ *   (scene3d.js). `handles`: one entry or a list (handle-lists3d.js): `{ field, axes?,
+ *   plane?(state) → [nx, ny, nz, d], label?(index, state, data), showLabel?(index, state, data),
+ *   shownWhen?(state), select?(index, ui) }` over the points of `state[field]`, and extra handles
+ *   `{ field, at(state, out3), place(state, x, y, z), label }`; `derive.moved(model, index, xyz,
+ *   state, ui, field)` gets the list's field, the index in it and a reused Float64Array(3); `+` /
+ *   Delete reach the field's `pointButtons`. `draw` is then the 2D layer over the WebGL image
+ *   (`view.project`).
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -112,7 +114,7 @@ export function mountDeclared(demo, initialState, ctx) {
     bounds: () => figureSpec.bounds(work, data),
     label: "",
     insets: figureSpec.insets ? (w, h, scale) => figureSpec.insets(w, h, scale, work, data) : null,
-    ...(is3d ? { scene: () => figureSpec.scene(work, data) } : {}),
+    ...(is3d ? { scene: () => figureSpec.scene(work, data), camera: figureSpec.camera } : {}),
   });
 
   /** What controls, handles and tools get: the state, its setter and the shell's services. */
@@ -163,6 +165,8 @@ export function mountDeclared(demo, initialState, ctx) {
       if (final) ctx.commit(work);
     },
     status: ctx.status,
+    /** Fits the figure to its content and writes the window into the state (the Fit button). */
+    fit: () => ctx.fit?.(),
     requestDraw: () => view.requestDraw(),
     /** Stops every control's animation (a press in the figure takes the parameter over). */
     stop: () => built.forEach((control) => control.stop?.()),

@@ -3,7 +3,7 @@
  * as 2D figures, with space points mapped to the canvas by `view.project`. Each starts a new path;
  * then `r.paint(style)`. Nothing is allocated per call (one scratch array).
  */
-import { SURFACE_COLOURS } from "./scene3d.js";
+import { SURFACE_COLOURS, WIREFRAME_OPACITY } from "./scene3d.js";
 import { HUES, WIDTH, themed } from "./theme.js";
 
 const s = new Float64Array(3);
@@ -47,7 +47,11 @@ export function netPath(r, view, points, rows, cols) {
 
 const vectorStyles = themed(() => ({
   iso: Object.freeze({ stroke: SURFACE_COLOURS.iso, width: 1 }),
-  wireframe: Object.freeze({ stroke: SURFACE_COLOURS.wireframe, width: 0.5, strokeAlpha: 0.55 }),
+  wireframe: Object.freeze({
+    stroke: SURFACE_COLOURS.wireframe,
+    width: 0.5,
+    strokeAlpha: WIREFRAME_OPACITY,
+  }),
 }));
 
 const curveStyles = new Map();
@@ -62,15 +66,31 @@ function curveStyle(colour, width) {
   return style;
 }
 
+const wireStyles = new Map();
+/** The stroke of a wireframe entry with a `colour` / `opacity` (made once per pair). */
+function wireStyle(colour, opacity) {
+  const key = `${colour} ${opacity}`;
+  let style = wireStyles.get(key);
+  if (!style) {
+    style = Object.freeze({
+      stroke: colour ?? SURFACE_COLOURS.wireframe,
+      width: 0.5,
+      strokeAlpha: opacity ?? WIREFRAME_OPACITY,
+    });
+    wireStyles.set(key, style);
+  }
+  return style;
+}
+
 /**
  * The WebGL content of `spec` (scene3d.js) as vector paths, for the SVG export: every grid line
- * of each wireframe (or every triangle edge), then each curve (in its colour and width when it
+ * of each wireframe (or every triangle edge; in its colour and opacity when given), then each curve (in its colour and width when it
  * is a `{ points, colour, width }` entry), projected — no hidden lines
  * removed, no silhouette. The shaded surface itself has no vector form.
  */
 export function drawVectorScene(r, view, spec) {
   const styles = vectorStyles(r.theme);
-  for (const { mesh, grid } of spec?.wireframe ?? []) {
+  for (const { mesh, grid, colour, opacity } of spec?.wireframe ?? []) {
     const p = mesh.positions;
     r.beginPath();
     const line = (a, b) => {
@@ -107,7 +127,7 @@ export function drawVectorScene(r, view, spec) {
         line(idx[t + 2], idx[t]);
       }
     }
-    r.paint(styles.wireframe);
+    r.paint(colour || opacity != null ? wireStyle(colour, opacity) : styles.wireframe);
   }
   for (const curve of spec?.curves ?? []) {
     if (curve.points) {

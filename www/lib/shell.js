@@ -239,7 +239,8 @@ export function mountDemo(
       currentWindow = s.view;
       figure.setWindow(s.view);
     } else {
-      currentWindow = figure.fit();
+      // A 3D figure starts from its declared direction of view (`figure3d.camera`).
+      currentWindow = figure.home ? figure.home() : figure.fit();
       history.replace({ ...s, view: currentWindow });
     }
   }
@@ -406,6 +407,8 @@ export function mountDemo(
     },
     /** Shows a message in the status area ("error" messages stay). */
     status: showStatus,
+    /** Fits the figure to its content and records the window (the Fit button). */
+    fit: () => fit(),
   };
 
   const instance = mountDeclared(demo, history.current, ctx);

@@ -53,10 +53,20 @@ export class View3D {
    * @param {(camera: number[]) => void} [o.onWindowChange] after an orbit, pan or zoom ends.
    * @param {string} [o.label] accessible name.
    * @param {boolean} [o.wheelNeedsModifier] embeds: the plain wheel scrolls the page.
+   * @param {{ azimuth: number, elevation: number }} [o.camera] the direction of view a state
+   *   without a camera starts from (`home()`; default DEFAULT_AZIMUTH, DEFAULT_ELEVATION).
    */
   constructor(
     host,
-    { draw, scene, bounds, onWindowChange = null, label = "", wheelNeedsModifier = false },
+    {
+      draw,
+      scene,
+      bounds,
+      onWindowChange = null,
+      label = "",
+      wheelNeedsModifier = false,
+      camera = null,
+    },
   ) {
     const three = loadedThree();
     if (!three) throw new Error("three.js is not loaded: await prepareFigure(demo) first");
@@ -69,6 +79,11 @@ export class View3D {
     this.onWindowChange = onWindowChange;
     this.wheelNeedsModifier = wheelNeedsModifier;
     this.is3d = true;
+    /** The declared first direction of view, `[azimuth, elevation]` degrees. */
+    this.homeDirection = [
+      camera?.azimuth ?? DEFAULT_AZIMUTH,
+      camera?.elevation ?? DEFAULT_ELEVATION,
+    ];
 
     this.canvas = document.createElement("canvas");
     this.canvas.className = "sl-canvas";
@@ -91,7 +106,7 @@ export class View3D {
     this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
     this.content = new SceneContent(THREE);
     this.content.attachLight(this.camera);
-    this._camera = fitCamera([-1, -1, -1, 1, 1, 1]);
+    this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
     this._h = 1;
     this._vector = new THREE.Vector3();
@@ -130,12 +145,21 @@ export class View3D {
     this.requestDraw();
   }
 
-  /** Fits the content (`bounds()`) into the camera's frame, keeping the direction of view; returns the camera. */
-  fit(bounds = this.bounds?.()) {
-    const [azimuth, elevation] = this._camera ?? [DEFAULT_AZIMUTH, DEFAULT_ELEVATION];
-    const camera = fitCamera(bounds ?? [-1, -1, -1, 1, 1, 1], azimuth, elevation);
+  /**
+   * Fits the content (`bounds()`) into the camera's frame, keeping the direction of view (or
+   * looking along `direction` = `[azimuth, elevation]` when given); returns the camera (rounded
+   * as the state stores it).
+   */
+  fit(bounds = this.bounds?.(), direction = null) {
+    const [azimuth, elevation] = direction ?? this._camera ?? this.homeDirection;
+    const camera = roundCamera(fitCamera(bounds ?? [-1, -1, -1, 1, 1, 1], azimuth, elevation));
     this.setWindow(camera);
     return camera;
+  }
+
+  /** Fits the content looking from the declared first direction (a state without a camera, Reset). */
+  home() {
+    return this.fit(undefined, this.homeDirection);
   }
 
   /** Turns the camera around its target by the given degrees and reports it (keyboard orbit). */

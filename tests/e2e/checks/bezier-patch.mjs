@@ -350,7 +350,7 @@ export default [
     },
   ],
   [
-    "scene curves: { points, colour, width } entries are drawn in their colour (WebGL and SVG), plain arrays as iso-curves",
+    "scene curves: { points, colour, width } entries are drawn in their colour (WebGL: a ribbon when wider than 1 px; SVG), plain arrays as iso-curves",
     async (page, _h, _base, { equal }) => {
       const out = await page.evaluate(async () => {
         const { loadThree } = await import("./lib/three-loader.js");
@@ -364,8 +364,19 @@ export default [
         });
         content.update(spec(0));
         content.update(spec(1)); // new arrays of the same length: refilled in place
-        const colours = content.curveSlots.map((s) => `#${s.line.material.color.getHexString()}`);
-        const z = content.curveSlots[0].line.geometry.getAttribute("position").array[2];
+        // The wide curve (width 3) is a ribbon (its colour a uniform), the plain one a line.
+        const [wide, plain] = content.curveSlots;
+        const rgb = wide.ribbon.material.uniforms.colour.value;
+        const hex = (x) =>
+          Math.round(x * 255)
+            .toString(16)
+            .padStart(2, "0");
+        const colours = [
+          `#${hex(rgb.x)}${hex(rgb.y)}${hex(rgb.z)}`,
+          `#${plain.line.material.color.getHexString()}`,
+        ];
+        const shown = [wide.ribbon.visible, wide.line.visible, plain.line.visible];
+        const z = wide.ribbon.geometry.getAttribute("position").array[2];
         const made = content.geometriesMade;
         content.dispose();
         const strokes = [];
@@ -385,13 +396,14 @@ export default [
           },
         };
         drawVectorScene(r, view, spec(0));
-        return { colours, z, made, strokes, iso: SURFACE_COLOURS.iso };
+        return { colours, shown, z, made, strokes, iso: SURFACE_COLOURS.iso };
       });
       equal(
         JSON.stringify(out.colours),
         JSON.stringify(["#d55e00", out.iso.toLowerCase()]),
         "WebGL colours",
       );
+      equal(JSON.stringify(out.shown), "[true,false,true]", "ribbon, no line; the plain line");
       equal(out.z, 1, "refilled with the second arrays");
       equal(out.made, 2, "geometries made (one per curve, none on the refill)");
       equal(
@@ -590,6 +602,65 @@ export default [
         page.off("request", watch);
         await page.unroute(url);
       }
+    },
+  ],
+  [
+    "scene entries: { mesh, colour } is lit in that colour (back lighter); a wireframe's edge list is made again only when the triangles change; wireframe colour and opacity",
+    async (page, _h, _base, { equal, assert }) => {
+      const out = await page.evaluate(async () => {
+        const { loadThree } = await import("./lib/three-loader.js");
+        const { SceneContent } = await import("./lib/scene3d.js");
+        const { THREE } = await loadThree();
+        const content = new SceneContent(THREE);
+        const mesh = (z, indices) => ({
+          positions: Float32Array.from([0, 0, z, 1, 0, z, 1, 1, z, 0, 1, z]),
+          normals: Float32Array.from([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
+          uvs: Float32Array.from([0, 0, 1, 0, 1, 1, 0, 1]),
+          indices: Uint32Array.from(indices),
+        });
+        const a = mesh(0, [0, 1, 2, 0, 2, 3]);
+        content.update({
+          surfaces: [{ mesh: a, colour: "#E69F00" }, a],
+          wireframe: [{ mesh: a, colour: "#009E73", opacity: 1 }],
+        });
+        const [coloured, plain] = content.surfaceSlots.map((s) => s.object.material);
+        const wire = content.wireSlots[0].lines.material;
+        const edges = [content.edgeListsMade];
+        // Same triangles in a fresh array, moved: the edge list stays.
+        content.update({ wireframe: [{ mesh: mesh(1, [0, 1, 2, 0, 2, 3]) }] });
+        edges.push(content.edgeListsMade);
+        const z = content.wireSlots[0].lines.geometry.getAttribute("position").array[2];
+        // Other triangles, same count: a new edge list.
+        content.update({ wireframe: [{ mesh: mesh(1, [0, 1, 3, 1, 2, 3]) }] });
+        edges.push(content.edgeListsMade);
+        const pairs = Array.from(content.wireSlots[0].lines.geometry.index.array);
+        const back = coloured.onBeforeCompile;
+        content.dispose();
+        return {
+          colour: coloured.color.getHexString(),
+          plain: plain.color.getHexString(),
+          distinct: coloured !== plain,
+          hasBack: typeof back === "function",
+          wire: [wire.color.getHexString(), wire.opacity, wire.transparent],
+          edges,
+          z,
+          pairs,
+        };
+      });
+      // three.js keeps colours linear: compare through a Color made the same way.
+      const expected = await page.evaluate(async () => {
+        const { loadThree } = await import("./lib/three-loader.js");
+        const { THREE } = await loadThree();
+        return ["#E69F00", "#0072B2", "#009E73"].map((c) => new THREE.Color(c).getHexString());
+      });
+      equal(out.colour, expected[0], "the coloured surface's front colour");
+      equal(out.plain, expected[1], "a plain mesh stays blue");
+      assert(out.distinct && out.hasBack, "a material of its own with the two-sided shader");
+      equal(JSON.stringify(out.wire), JSON.stringify([expected[2], 1, false]), "wireframe colour");
+      equal(JSON.stringify(out.edges), "[1,1,2]", "edge lists made");
+      equal(out.z, 1, "the moved positions were taken");
+      // Triangles (0 1 3) and (1 2 3): edges 0-1, 1-3, 3-0, 1-2, 2-3 (each once).
+      equal(JSON.stringify(out.pairs), "[0,1,1,3,3,0,1,2,2,3]", "the new edges");
     },
   ],
 ];

@@ -33,6 +33,32 @@ const sixRows = (points) => [
   ...points.slice(24, 30).map(([x, y, z]) => [x + 2, y, z + 0.3]),
 ];
 
+/**
+ * Pixels of the figure canvas within 40 per channel of each hex colour, outside the seam legend
+ * (the top-left 150 × 120 CSS px, whose swatches are drawn on the 2D layer). Runs in the page.
+ */
+function colourCounts(colours) {
+  const canvas = document.querySelector(".sl-canvas");
+  const g = document.createElement("canvas");
+  g.width = canvas.width;
+  g.height = canvas.height;
+  const x = g.getContext("2d");
+  x.drawImage(canvas, 0, 0);
+  const d = x.getImageData(0, 0, g.width, g.height).data;
+  const scale = canvas.width / canvas.getBoundingClientRect().width;
+  const rgb = colours.map((hex) => [1, 3, 5].map((k) => Number.parseInt(hex.slice(k, k + 2), 16)));
+  const counts = colours.map(() => 0);
+  for (let py = 0; py < g.height; py++)
+    for (let px = 0; px < g.width; px++) {
+      if (px < 150 * scale && py < 120 * scale) continue;
+      const i = 4 * (py * g.width + px);
+      rgb.forEach((c, k) => {
+        if (c.every((v, j) => Math.abs(d[i + j] - v) < 40)) counts[k]++;
+      });
+    }
+  return counts;
+}
+
 export default [
   [
     "insert u at the probe adds exactly one row (the p rows of Boehm's rule highlighted) and keeps the surface",
@@ -190,6 +216,38 @@ export default [
       await settle(page);
       const next = await page.locator(".sl-figure .sl-announcer").textContent();
       assert(next.startsWith("P₁,₃ selected"), `announced: ${next}`);
+    },
+  ],
+  [
+    "seams are WebGL curves in their continuity's colour (C¹ orange, C² bluish green), gone with the Seams box",
+    async (page, _h, base, { assert, openDemo }) => {
+      const state = await urlState(page);
+      const plain = { ...state, net: false, iso: false, normal: false };
+      const colours = ["#E69F00", "#009E73"];
+      await openDemo(page, base, "nurbs-surface", hashOf({ ...plain, seams: true }));
+      const shown = await page.evaluate(colourCounts, colours);
+      await openDemo(page, base, "nurbs-surface", hashOf({ ...plain, seams: false }));
+      const hidden = await page.evaluate(colourCounts, colours);
+      for (const k of [0, 1])
+        assert(
+          shown[k] > 100 && hidden[k] < shown[k] / 5,
+          `${colours[k]}: ${shown[k]} pixels with seams, ${hidden[k]} without`,
+        );
+    },
+  ],
+  [
+    "the Shading choice: zebra changes the picture, Gaussian K gives the curvature legend",
+    async (page, h, _base, { assert, equal, settle }) => {
+      const lit = await h.snapshot();
+      await page.locator('[data-control="shading"] [data-choice="zebra"] input').check();
+      await settle(page);
+      assert((await h.snapshot()) !== lit, "zebra draws another picture");
+      await page.locator('[data-control="shading"] [data-choice="gaussian"] input').check();
+      await settle(page);
+      const legend = JSON.parse(await page.locator(".sl-figure").getAttribute("data-legend"));
+      equal(legend.shading, "gaussian", "legend shading");
+      assert(legend.extent > 0, `legend extent ${legend.extent}`);
+      equal((await urlState(page)).shading, "gaussian", "the shading in the URL");
     },
   ],
 ];

@@ -50,6 +50,29 @@ function bernsteinSum(points, u, v) {
   return s;
 }
 
+/**
+ * Pixel classes of the figure canvas (runs in the page): warm (red well above blue: the orange
+ * and vermillion pieces), green (green well above red and a little above blue: the bluish-green
+ * piece), cool (blue well above red: the single blue surface of "Adaptive").
+ */
+function pixelClasses() {
+  const canvas = document.querySelector(".sl-canvas");
+  const g = document.createElement("canvas");
+  g.width = canvas.width;
+  g.height = canvas.height;
+  const x = g.getContext("2d");
+  x.drawImage(canvas, 0, 0);
+  const d = x.getImageData(0, 0, g.width, g.height).data;
+  const out = { warm: 0, green: 0, cool: 0, total: g.width * g.height };
+  for (let i = 0; i < d.length; i += 4) {
+    const [r, gr, b] = [d[i], d[i + 1], d[i + 2]];
+    if (r > b + 60) out.warm++;
+    if (gr > r + 60 && gr > b + 10) out.green++;
+    if (b > r + 60 && b > gr + 10) out.cool++;
+  }
+  return out;
+}
+
 const gap = (a, b) => Math.max(...a.map((x, c) => Math.abs(x - b[c])));
 
 export default [
@@ -119,6 +142,46 @@ export default [
       assert(pictures.size >= 5, `${pictures.size} different pictures`);
       const label = await h.canvas().getAttribute("aria-label");
       assert(label.includes(`${counts.at(-1)} triangles`), `aria-label: ${label}`);
+    },
+  ],
+  [
+    "the four pieces are WebGL surfaces in their colours (nets off: no 2D drawing in those hues)",
+    async (page, _h, base, { assert, openDemo }) => {
+      const state = await urlState(page);
+      await openDemo(page, base, "patch-subdivision", hashOf({ ...state, nets: false }));
+      const split = await page.evaluate(pixelClasses);
+      assert(split.warm > split.total * 0.05, `warm pieces: ${split.warm} of ${split.total}`);
+      assert(
+        split.green > split.total * 0.005,
+        `bluish-green piece: ${split.green} of ${split.total}`,
+      );
+      await openDemo(
+        page,
+        base,
+        "patch-subdivision",
+        hashOf({ ...state, nets: false, mode: "adaptive", quadtree: false }),
+      );
+      const adaptive = await page.evaluate(pixelClasses);
+      assert(adaptive.warm < split.warm / 10, `adaptive: ${adaptive.warm} warm pixels`);
+      assert(adaptive.green < split.green / 10, `adaptive: ${adaptive.green} green pixels`);
+      assert(adaptive.cool > split.total * 0.05, `adaptive: ${adaptive.cool} blue pixels`);
+    },
+  ],
+  [
+    "figure3d.camera: the first view and Reset after an orbit look from the declared direction",
+    async (page, h, _base, { equal, assert, settle }) => {
+      const declared = [-50, 30];
+      const first = (await urlState(page)).view;
+      equal(JSON.stringify(first.slice(0, 2)), JSON.stringify(declared), "first view");
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + box.width - 20, y: box.y + 20 }, -120, 40);
+      const orbited = (await urlState(page)).view;
+      assert(orbited[0] !== declared[0], `orbited to ${orbited}`);
+      await page.locator('[data-action="reset"]').click();
+      await settle(page);
+      const reset = (await urlState(page)).view;
+      equal(JSON.stringify(reset.slice(0, 2)), JSON.stringify(declared), "after Reset");
+      equal(JSON.stringify(reset), JSON.stringify(first), "the same fitted camera");
     },
   ],
 ];

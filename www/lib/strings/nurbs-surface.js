@@ -31,6 +31,11 @@ export const NURBS_SURFACE = {
   "nurbsSurface.control.iso": "Iso-curves",
   "nurbsSurface.control.seams": "Seams by continuity",
   "nurbsSurface.control.normal": "Normal at the probe",
+  "nurbsSurface.control.shading": "Shading",
+  "nurbsSurface.shading.lit": "Lit",
+  "nurbsSurface.shading.zebra": "Zebra stripes",
+  "nurbsSurface.shading.gaussian": "Gaussian curvature K",
+  "nurbsSurface.shading.mean": "Mean curvature H",
   "nurbsSurface.badWeight": "weight “{value}” must be a number in [{min}, {max}]",
   "nurbsSurface.badSelected":
     "field “selected”: point {i} does not exist in a net of {count} points",
@@ -55,7 +60,7 @@ export const NURBS_SURFACE = {
   "nurbsSurface.texInsertedV":
     "\\text{after } \\texttt{insertKnotV}\\text{: columns } {first}\\text{–}{last} \\text{ are new (Boehm on every row), one column more}",
   "nurbsSurface.whatYouSee":
-    "A tensor-product B-spline surface S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (with weights w_ij a NURBS surface) over its control net (grey, dashed). Each direction has its own degree and knot vector, and the domain is [u_p, u_m+1] × [v_q, v_n+1]. As the Greek notes say, a knot can be inserted in either vector on its own: inserting in u applies Boehm's algorithm to every column of the net, which adds a whole row of control points without changing the surface (the rows Boehm's rule made are drawn dark); in v it works on the rows and adds a column. The thick lines are the seams, the iso-curves at interior knots, coloured by the continuity the core measures across them (C^(p−r) for a knot of multiplicity r). Moving one control point changes the surface only over (p + 1) × (q + 1) spans: local control. Unlike curves, surfaces have no variation-diminishing property.",
+    "A tensor-product B-spline surface S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (with weights w_ij a NURBS surface) over its control net (grey, dashed). Each direction has its own degree and knot vector, and the domain is [u_p, u_m+1] × [v_q, v_n+1]. As the Greek notes say, a knot can be inserted in either vector on its own: inserting in u applies Boehm's algorithm to every column of the net, which adds a whole row of control points without changing the surface (the rows Boehm's rule made are drawn dark); in v it works on the rows and adds a column. The coloured lines are the seams, the iso-curves at interior knots, coloured by the continuity the core measures across them (C^(p−r) for a knot of multiplicity r). Moving one control point changes the surface only over (p + 1) × (q + 1) spans: local control. Unlike curves, surfaces have no variation-diminishing property. The Shading choice shows zebra stripes (a kink in them is a break in tangent continuity) or the Gaussian or mean curvature, from the core's exact derivatives.",
   "nurbsSurface.try1":
     "Press “Insert u at the probe”: a new row of points appears and the surface stays exactly where it was; the seams legend gains the new knot.",
   "nurbsSurface.try2":

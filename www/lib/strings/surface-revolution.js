@@ -71,5 +71,5 @@ export const SURFACE_REVOLUTION = {
   "surfaceRevolution.try4":
     "Extrude: drag the tip d of the arrow to slant the wall; every ruling of the extrusion is a copy of d.",
   "surfaceRevolution.try5":
-    "Ruled: compare the four blue dots (the first column of the net) with A's three points — the core raised A to a cubic with four points that draw the same curve, so A and B can share one net.",
+    "Ruled: compare the four orange dots (the first column of the net) with A's three points — the core raised A to a cubic with four points that draw the same curve, so A and B can share one net.",
 };
