@@ -3,19 +3,7 @@
 // moves points in depth, exports carry the surface, one WebGL context serves several 3D figures,
 // and 2D pages never load three.js.
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
-
-/** `#demo=bezier-patch&s=…` for a state (base64url JSON). */
-const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
+import { hashOf, urlState } from "./helpers3d.mjs";
 
 /**
  * Counts pixels of an image (a canvas, or PNG bytes as base64) in the surface's blue family

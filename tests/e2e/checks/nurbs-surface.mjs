@@ -3,29 +3,11 @@
 // hand-computed new knot vector and new rows), seams report the continuity a knot's
 // multiplicity allows (measured by the core), and a weight changes the picture.
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
-
-const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
+import { hashOf, typeInto, urlState } from "./helpers3d.mjs";
 
 /** The readout's data attributes: seams, rows, cols and the surface's fingerprint. */
 const readout = (page) =>
   page.locator('[data-info="seams"]').evaluate((node) => ({ ...node.dataset }));
-
-/** Types `value` into the box of the slider `name` and presses Enter. */
-async function typeInto(page, name, value) {
-  const box = page.locator(`[data-control="${name}"] .sl-value`);
-  await box.fill(String(value));
-  await box.press("Enter");
-}
 
 /** The default 5-row net with a sixth row appended (heights made up), for a 6 × 6 state. */
 const sixRows = (points) => [

@@ -3,24 +3,7 @@
 // Expected numbers are independent of the core: the Bernstein double sum written out below, a
 // point worked by hand (S(1/2, 1/2) of the default net), bilinear interpolation for degree 1,
 // and the construction's point counts counted by hand.
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
-
-/** Types a value into a control's box (data-control name) and waits for the redraw. */
-async function type(page, settle, control, text) {
-  const box = page.locator(`[data-control="${control}"] .sl-value`);
-  await box.fill(text);
-  await box.press("Enter");
-  await settle(page);
-}
+import { bernsteinSum, gap, type, urlState } from "./helpers3d.mjs";
 
 /** The numbers the demo publishes on its step readout: "x,y,z" → [x, y, z]. */
 async function published(page) {
@@ -33,24 +16,6 @@ async function published(page) {
     evaluate: xyz(data.evaluate),
   };
 }
-
-const binomial = (n, k) => (k === 0 || k === n ? 1 : binomial(n - 1, k - 1) + binomial(n - 1, k));
-const bernstein = (n, i, t) => binomial(n, i) * t ** i * (1 - t) ** (n - i);
-
-/** S(u, v) = Σ_i Σ_j B_i^m(u) B_j^n(v) P_ij, the definition (square net, rows along u). */
-function bernsteinSum(points, u, v) {
-  const side = Math.round(Math.sqrt(points.length));
-  const d = side - 1;
-  const s = [0, 0, 0];
-  for (let i = 0; i <= d; i++)
-    for (let j = 0; j <= d; j++) {
-      const w = bernstein(d, i, u) * bernstein(d, j, v);
-      for (let c = 0; c < 3; c++) s[c] += w * points[i * side + j][c];
-    }
-  return s;
-}
-
-const gap = (a, b) => Math.max(...a.map((x, c) => Math.abs(x - b[c])));
 
 export default [
   [

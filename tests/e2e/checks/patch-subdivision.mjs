@@ -2,27 +2,7 @@
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
 // Expected numbers are independent of the core: S(u0, v0) by the Bernstein double sum written
 // out below and by hand at (1/2, 1/2); a plane with an affine net needs exactly 2 triangles.
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
-
-/** `&s=…` for a state (base64url JSON). */
-const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
-
-/** Types a value into a control's box (data-control name) and waits for the redraw. */
-async function type(page, settle, control, text) {
-  const box = page.locator(`[data-control="${control}"] .sl-value`);
-  await box.fill(text);
-  await box.press("Enter");
-  await settle(page);
-}
+import { bernsteinSum, gap, hashOf, type, urlState } from "./helpers3d.mjs";
 
 /** What the demo publishes on its readout: the four corners, S(u0, v0), the counts. */
 async function published(page) {
@@ -34,20 +14,6 @@ async function published(page) {
     triangles: data.triangles === undefined ? null : Number(data.triangles),
     uniform: data.uniform === undefined ? null : Number(data.uniform),
   };
-}
-
-const binomial = (n, k) => (k === 0 || k === n ? 1 : binomial(n - 1, k - 1) + binomial(n - 1, k));
-const bernstein = (n, i, t) => binomial(n, i) * t ** i * (1 - t) ** (n - i);
-
-/** S(u, v) = Σ_i Σ_j B_i^3(u) B_j^3(v) P_ij of a 4 × 4 net (rows along u). */
-function bernsteinSum(points, u, v) {
-  const s = [0, 0, 0];
-  for (let i = 0; i < 4; i++)
-    for (let j = 0; j < 4; j++) {
-      const w = bernstein(3, i, u) * bernstein(3, j, v);
-      for (let c = 0; c < 3; c++) s[c] += w * points[4 * i + j][c];
-    }
-  return s;
 }
 
 /**
@@ -72,8 +38,6 @@ function pixelClasses() {
   }
   return out;
 }
-
-const gap = (a, b) => Math.max(...a.map((x, c) => Math.abs(x - b[c])));
 
 export default [
   [

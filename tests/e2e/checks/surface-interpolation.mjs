@@ -3,19 +3,10 @@
 // averaged over the columns), the core's surface evaluated at them gives every data point back
 // to 1e-9, and a dragged data point is interpolated at its new position.
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
+import { urlState } from "./helpers3d.mjs";
 
 const ROWS = 4;
 const COLS = 5;
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
 
 const readout = (page) =>
   page.locator('[data-info="miss"]').evaluate((node) => ({ ...node.dataset }));

@@ -3,19 +3,7 @@
 // the extrusion's two edges differ by the direction, a ruled surface's middle is the midpoint of
 // its curves (hand-computed Bézier points), and a mode switch keeps a valid URL that restores.
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
-
-/** The demo state in the page's URL. */
-const urlState = (page) =>
-  page.evaluate(() => {
-    const s = new URLSearchParams(location.hash.slice(1)).get("s");
-    const bytes = Uint8Array.from(atob(s.replace(/-/g, "+").replace(/_/g, "/")), (c) =>
-      c.charCodeAt(0),
-    );
-    return JSON.parse(new TextDecoder().decode(bytes));
-  });
-
-/** `&s=…` for a state (base64url JSON). */
-const hashOf = (state) => `&s=${Buffer.from(JSON.stringify(state)).toString("base64url")}`;
+import { hashOf, typeInto, urlState } from "./helpers3d.mjs";
 
 /** The default state with some fields changed (no camera: the demo fits one). */
 async function stateWith(page, changes) {
@@ -37,13 +25,6 @@ async function published(page) {
 }
 
 const near = (a, b, tolerance) => a.every((x, k) => Math.abs(x - b[k]) <= tolerance);
-
-/** Types a value into a slider's box. */
-async function setSlider(page, name, value) {
-  const box = page.locator(`[data-control="${name}"] .sl-value`);
-  await box.fill(String(value));
-  await box.press("Enter");
-}
 
 export default [
   [
@@ -70,7 +51,7 @@ export default [
         [180, 5],
         [270, 7],
       ]) {
-        await setSlider(page, "angle", angle);
+        await typeInto(page, "angle", angle);
         await settle(page);
         p = await published(page);
         equal(p.rows, rows, `rows at ${angle}°`);
