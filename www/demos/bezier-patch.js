@@ -10,13 +10,14 @@
  * with zebra stripes, or by its Gaussian or mean curvature (`curvatures(mesh.uvs)`, scene3d.js).
  */
 import { field } from "../lib/validate.js";
-import { slider, checkbox, choice, group } from "../lib/panel.js";
+import { slider, group } from "../lib/panel.js";
+import { showGroup, shadingChoice, shadingCurvatures } from "../lib/surface-controls.js";
+import { SHADINGS } from "../lib/shading3d.js";
+import { diagonalFraction, drawProbeNormal } from "../lib/probe-normal.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
-import { arrow } from "../lib/draw.js";
-import { placeLabelFrom } from "../lib/handles.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 
 export const id = "bezier-patch";
@@ -53,9 +54,6 @@ export const defaultState = Object.freeze({
   normal: true,
   shading: "lit",
 });
-
-/** Surface shadings (scene3d.js): lit, zebra stripes, Gaussian and mean curvature colours. */
-const SHADINGS = ["lit", "zebra", "gaussian", "mean"];
 
 export const fields = {
   points: field.points3d({ rows: ROWS, cols: COLS }),
@@ -125,11 +123,7 @@ export const compute = {
   // A = M P Mᵀ per coordinate: { basisU, basisV, coefficients } (flat 4·4·3, xyz per entry).
   matrix: [["points"], (s, d) => d.patch.matrixForm()],
   // [K0, H0, K1, H1, …] at the mesh's vertices, only while a curvature shading shows them.
-  curvatures: [
-    ["points", "shading"],
-    (s, d) =>
-      s.shading === "gaussian" || s.shading === "mean" ? d.patch.curvatures(d.mesh.uvs) : null,
-  ],
+  curvatures: [["points", "shading"], (s, d) => shadingCurvatures(d.patch, d.mesh, s.shading)],
 };
 
 export const controls = [
@@ -147,20 +141,8 @@ export const controls = [
       },
     }),
   ),
-  group(
-    "bezierPatch.control.show",
-    checkbox("net", { label: "bezierPatch.control.net" }),
-    checkbox("iso", { label: "bezierPatch.control.iso" }),
-    checkbox("wireframe", { label: "bezierPatch.control.wireframe" }),
-    checkbox("sweep", { label: "bezierPatch.control.sweep" }),
-    checkbox("normal", { label: "bezierPatch.control.normal" }),
-  ),
-  group(
-    "bezierPatch.control.shading",
-    choice("shading", {
-      options: SHADINGS.map((value) => ({ value, label: `bezierPatch.shading.${value}` })),
-    }),
-  ),
+  showGroup(strings, ["net", "iso", "wireframe", "sweep", "normal"]),
+  shadingChoice(strings),
 ];
 
 const LABELS = [];
@@ -187,15 +169,9 @@ const stylesFor = themed((theme) => ({
     width: 1,
     radius: RADIUS.constructionPoint,
   }),
-  normal: Object.freeze({
-    stroke: HUES.vermillion,
-    width: WIDTH.construction,
-    fill: HUES.vermillion,
-  }),
 }));
 
 const a = new Float64Array(3);
-const b = new Float64Array(3);
 
 /** The 2D layer over the lit patch: net, directrices, generatrix, probe and normal, handles. */
 export function draw(r, v, s, d) {
@@ -224,17 +200,9 @@ export function draw(r, v, s, d) {
       r.point(a[0], a[1], styles.generatrixPoint);
     }
   }
-  const p = d.point;
-  v.project(p[0], p[1], p[2], a);
-  if (s.normal) {
-    const [x0, y0, z0, x1, y1, z1] = boundsOf3(s.points);
-    const length = NORMAL_FRACTION * Math.hypot(x1 - x0, y1 - y0, z1 - z0);
-    const n = d.normalAt;
-    v.project(p[0] + length * n[0], p[1] + length * n[1], p[2] + length * n[2], b);
-    arrow(r, a[0], a[1], b[0], b[1], styles.normal);
-    placeLabelFrom(r, t("bezierPatch.normalLabel"), b[0], b[1], a[0], a[1], theme.labelPoint, 4);
-  }
-  r.point(a[0], a[1], theme.pointOnCurve);
+  const length = s.normal ? diagonalFraction(s.points, NORMAL_FRACTION) : 0;
+  const normal = s.normal ? d.normalAt : null;
+  drawProbeNormal(r, v, d.point, normal, length, t("bezierPatch.normalLabel"));
   d.handles.draw(r, v);
 }
 

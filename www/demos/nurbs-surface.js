@@ -7,7 +7,10 @@
  * Everything drawn is what the core returns; the knot vectors offered come from `knotVector`.
  */
 import { field } from "../lib/validate.js";
-import { slider, checkbox, choice, group, actions, numberList, readout } from "../lib/panel.js";
+import { slider, choice, group, actions, numberList, readout } from "../lib/panel.js";
+import { showGroup, shadingChoice, shadingCurvatures } from "../lib/surface-controls.js";
+import { SHADINGS } from "../lib/shading3d.js";
+import { diagonalFraction, drawProbeNormal } from "../lib/probe-normal.js";
 import {
   insertAtProbe,
   resetKnots,
@@ -20,8 +23,6 @@ import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netCorner } from "../lib/handle-lists3d.js";
 import { netPath } from "../lib/draw3d.js";
-import { arrow } from "../lib/draw.js";
-import { placeLabelFrom } from "../lib/handles.js";
 import { continuityText } from "../lib/continuity.js";
 import { knotListText } from "../lib/knot-readout.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
@@ -79,9 +80,6 @@ export const defaultState = Object.freeze({
   normal: true,
   shading: "lit",
 });
-
-/** Surface shadings (scene3d.js): lit, zebra stripes, Gaussian and mean curvature colours. */
-const SHADINGS = ["lit", "zebra", "gaussian", "mean"];
 
 const count = (s) => s.rows * s.cols;
 export const fields = {
@@ -155,11 +153,7 @@ export const compute = {
   domainV: [SHAPE, (s, d) => d.surface.domainV()],
   mesh: [SHAPE, (s, d) => d.surface.tessellate(MESH, MESH)],
   // [K0, H0, K1, H1, …] at the mesh's vertices, only while a curvature shading shows them.
-  curvatures: [
-    [...SHAPE, "shading"],
-    (s, d) =>
-      s.shading === "gaussian" || s.shading === "mean" ? d.surface.curvatures(d.mesh.uvs) : null,
-  ],
+  curvatures: [[...SHAPE, "shading"], (s, d) => shadingCurvatures(d.surface, d.mesh, s.shading)],
   isoCurves: [
     SHAPE,
     (s, d) => {
@@ -223,13 +217,7 @@ export const compute = {
     (s, d) => [...new Set(d.seamCurves.map((curve) => curve.c))].sort((p, q) => p - q),
   ],
   /** The normal arrow's length: a fraction of the net's diagonal. */
-  normalLength: [
-    ["points"],
-    (s) => {
-      const [x0, y0, z0, x1, y1, z1] = boundsOf3(s.points);
-      return NORMAL_FRACTION * Math.hypot(x1 - x0, y1 - y0, z1 - z0);
-    },
-  ],
+  normalLength: [["points"], (s) => diagonalFraction(s.points, NORMAL_FRACTION)],
   point: [[...SHAPE, "u", "v"], (s, d) => d.surface.evaluate(s.u, s.v)],
   normalAt: [[...SHAPE, "u", "v"], (s, d) => d.surface.normal(s.u, s.v)],
   /** Σ (k + 1)(x + √2 y + √3 z) over a fixed 9 × 9 grid of the domain: a test's fingerprint. */
@@ -337,19 +325,8 @@ export const controls = [
     "nurbsSurface.control.weights",
     selectedWeight({ prefix: strings, min: WEIGHT_MIN, max: WEIGHT_MAX, step: WEIGHT_LOG_STEP }),
   ),
-  group(
-    "nurbsSurface.control.show",
-    checkbox("net", { label: "nurbsSurface.control.net" }),
-    checkbox("iso", { label: "nurbsSurface.control.iso" }),
-    checkbox("seams", { label: "nurbsSurface.control.seams" }),
-    checkbox("normal", { label: "nurbsSurface.control.normal" }),
-  ),
-  group(
-    "nurbsSurface.control.shading",
-    choice("shading", {
-      options: SHADINGS.map((value) => ({ value, label: `nurbsSurface.shading.${value}` })),
-    }),
-  ),
+  showGroup(strings, ["net", "iso", "seams", "normal"]),
+  shadingChoice(strings),
   readout("seams", (s, d) => seamsText(d.seams), {
     data: (s, d) => ({
       seamsU: seamData(d.seams.u),
@@ -404,14 +381,8 @@ const stylesFor = themed((theme) => ({
   legend: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
   fresh: Object.freeze({ stroke: FRESH_COLOUR, width: WIDTH.curve, join: "round" }),
   selectedRing: Object.freeze({ stroke: HUES.reddishPurple, width: 2, radius: RADIUS.handle + 4 }),
-  normal: Object.freeze({
-    stroke: HUES.vermillion,
-    width: WIDTH.construction,
-    fill: HUES.vermillion,
-  }),
 }));
 
-const a = new Float64Array(3);
 const b = new Float64Array(3);
 const NONE = Object.freeze([]);
 
@@ -451,16 +422,8 @@ export function draw(r, v, s, d) {
   }
   // The seams and the inserted lines are scene curves (figure3d.scene); their legend stays here.
   drawLegend(r, styles, s.seams ? d.seamOrders : NONE, s.fresh);
-  const p = d.point;
-  v.project(p[0], p[1], p[2], a);
-  if (s.normal) {
-    const length = d.normalLength;
-    const n = d.normalAt;
-    v.project(p[0] + length * n[0], p[1] + length * n[1], p[2] + length * n[2], b);
-    arrow(r, a[0], a[1], b[0], b[1], styles.normal);
-    placeLabelFrom(r, t("nurbsSurface.normalLabel"), b[0], b[1], a[0], a[1], theme.labelPoint, 4);
-  }
-  r.point(a[0], a[1], theme.pointOnCurve);
+  const normal = s.normal ? d.normalAt : null;
+  drawProbeNormal(r, v, d.point, normal, d.normalLength, t("nurbsSurface.normalLabel"));
   const selected = s.points[s.selected];
   if (selected) {
     v.project(selected[0], selected[1], selected[2], b);

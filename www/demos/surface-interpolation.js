@@ -10,7 +10,8 @@
  * Σ_j N_j(v̄_l) P_ij = s_il.
  */
 import { field } from "../lib/validate.js";
-import { checkbox, choice, group, readout } from "../lib/panel.js";
+import { choice, group, readout } from "../lib/panel.js";
+import { showGroup } from "../lib/surface-controls.js";
 import { fmt, subscript } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
@@ -159,12 +160,7 @@ export const controls = [
   ),
   group("surfaceInterpolation.control.degreeU", degreeChoice("degreeU", ROWS - 1)),
   group("surfaceInterpolation.control.degreeV", degreeChoice("degreeV", COLS - 1)),
-  group(
-    "surfaceInterpolation.control.show",
-    checkbox("columns", { label: "surfaceInterpolation.control.columns" }),
-    checkbox("net", { label: "surfaceInterpolation.control.net" }),
-    checkbox("iso", { label: "surfaceInterpolation.control.iso" }),
-  ),
+  showGroup(strings, ["columns", "net", "iso"]),
   readout(
     "miss",
     (s, d) =>

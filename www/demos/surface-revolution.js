@@ -18,7 +18,6 @@ import { field } from "../lib/validate.js";
 import {
   pointButtons,
   slider,
-  checkbox,
   choice,
   group,
   readout,
@@ -30,6 +29,8 @@ import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { pointsPath3 } from "../lib/draw3d.js";
 import { arrow } from "../lib/draw.js";
+import { VECTOR_ARROW } from "../lib/probe-normal.js";
+import { showGroup } from "../lib/surface-controls.js";
 import { HUES, WIDTH, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { flatNetPath, segmentPath3 } from "../lib/net-path3.js";
 import { subscript } from "../lib/format.js";
@@ -288,12 +289,7 @@ export const controls = [
     ),
   ),
   readout("check", checkText, { data: checkData }),
-  group(
-    "surfaceRevolution.control.show",
-    checkbox("net", { label: "surfaceRevolution.control.net" }),
-    checkbox("iso", { label: "surfaceRevolution.control.iso" }),
-    checkbox("wireframe", { label: "surfaceRevolution.control.wireframe" }),
-  ),
+  showGroup(strings, ["net", "iso", "wireframe"]),
 ];
 
 // ------------------------------------------------------------------ handles
@@ -412,11 +408,6 @@ const stylesFor = themed((theme) => ({
   }),
   secondPolygon: SECOND_CURVE.polygon,
   firstPolygon: Object.freeze({ ...theme.polygon, stroke: CURVE_COLOURS.first }),
-  direction: Object.freeze({
-    stroke: HUES.vermillion,
-    width: WIDTH.construction,
-    fill: HUES.vermillion,
-  }),
 }));
 
 const a = new Float64Array(3);
@@ -454,7 +445,7 @@ export function draw(r, v, s, d) {
     const [x, y] = s.profile[0];
     v.project(x, y, 0, a);
     v.project(x + s.direction[0], y + s.direction[1], s.direction[2], b);
-    arrow(r, a[0], a[1], b[0], b[1], styles.direction);
+    arrow(r, a[0], a[1], b[0], b[1], VECTOR_ARROW);
   }
   d.handles.draw(r, v);
 }
