@@ -16,6 +16,7 @@
  * (6.5, 4)" when a drag ends or a nudge is committed; never during a drag.
  */
 import { subscript } from "./format.js";
+import { NudgeGroups, selectionKey } from "./handle-keys.js";
 import { formatNumber, t } from "./strings.js";
 
 /** Hit radius around a handle centre, in CSS px, for mouse/pen and for touch (ui.md). */
@@ -24,8 +25,8 @@ export const HIT_RADIUS_TOUCH = 18;
 /** Keyboard nudge in CSS px: plain arrow and Shift+arrow (ui.md). */
 export const NUDGE_PX = 1;
 export const NUDGE_PX_LARGE = 10;
-/** Consecutive nudges of one handle within this many ms make one undo step. */
-export const NUDGE_MERGE_MS = 800;
+/** Consecutive nudges of one handle within this many ms make one undo step (handle-keys.js). */
+export { NUDGE_MERGE_MS } from "./handle-keys.js";
 /** Dragged coordinates are rounded to the decimals that still resolve a tenth of a pixel. */
 const SUBPIXEL_DIGITS = 1;
 /** Below this length (CSS px) a direction is considered undefined when placing labels. */
@@ -163,7 +164,7 @@ export class Handles {
     this._sum = new Float64Array(2); // label direction accumulator
     this._anchor = new Float64Array(2); // an anchored handle's point (label placement)
     this._hasPending = false;
-    this._lastNudge = { index: -1, time: 0, group: 0 };
+    this._nudges = new NudgeGroups();
     this._published = NaN;
     this._dragStart = new Float64Array(2); // where the dragged handle was at pointer down
 
@@ -341,27 +342,9 @@ export class Handles {
   _key(event) {
     const n = this.source.count();
     if (n === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
+    if (selectionKey(event, this, n)) return;
     const i = this.selected;
     switch (event.key) {
-      case "Tab": {
-        const next = i + (event.shiftKey ? -1 : 1);
-        if (i >= 0 && next >= 0 && next < n) {
-          this.select(next);
-          event.preventDefault();
-        } else {
-          this.select(-1); // leave the figure: focus moves on, no trap
-        }
-        return;
-      }
-      case "Home":
-        this.select(0);
-        break;
-      case "End":
-        this.select(n - 1);
-        break;
-      case "Escape":
-        this.select(-1);
-        break;
       case "ArrowLeft":
       case "ArrowRight":
       case "ArrowUp":
@@ -395,12 +378,7 @@ export class Handles {
     const dx = key === "ArrowLeft" ? -step : key === "ArrowRight" ? step : 0;
     const dy = key === "ArrowDown" ? -step : key === "ArrowUp" ? step : 0;
     this._apply(i, this._q[0] + dx, this._q[1] + dy);
-    const now = performance.now();
-    const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;
-    if (!repeat) this._lastNudge.group += 1;
-    this._lastNudge.index = i;
-    this._lastNudge.time = now;
-    this.source.commit("key", i, `nudge-${this._lastNudge.group}`);
+    this.source.commit("key", i, `nudge-${this._nudges.next(i)}`);
     if (i < this.source.count()) this._announce("handles.moved", i);
     this.view.requestDraw();
   }

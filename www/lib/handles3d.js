@@ -33,8 +33,8 @@ import {
   HIT_RADIUS_TOUCH,
   NUDGE_PX,
   NUDGE_PX_LARGE,
-  NUDGE_MERGE_MS,
 } from "./handles.js";
+import { NudgeGroups, selectionKey } from "./handle-keys.js";
 import { formatNumber, t } from "./strings.js";
 import { NARROW_CANVAS_PX } from "./view.js";
 
@@ -91,7 +91,7 @@ export class Handles3D {
     this._order = new Int32Array(0);
     this._depth = new Float64Array(0);
     this._hidden = new Uint8Array(0);
-    this._lastNudge = { index: -1, time: 0, group: 0 };
+    this._nudges = new NudgeGroups();
     this._published = "";
 
     const canvas = view.canvas;
@@ -287,27 +287,9 @@ export class Handles3D {
   _key(event) {
     const n = this.source.count();
     if (n === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
+    if (selectionKey(event, this, n)) return;
     const i = this.selected;
     switch (event.key) {
-      case "Tab": {
-        const next = i + (event.shiftKey ? -1 : 1);
-        if (i >= 0 && next >= 0 && next < n) {
-          this.select(next);
-          event.preventDefault();
-        } else {
-          this.select(-1);
-        }
-        return;
-      }
-      case "Home":
-        this.select(0);
-        break;
-      case "End":
-        this.select(n - 1);
-        break;
-      case "Escape":
-        this.select(-1);
-        break;
       case "ArrowLeft":
       case "ArrowRight":
       case "ArrowUp":
@@ -360,12 +342,7 @@ export class Handles3D {
       this._p[k] +=
         perPixel * (right * this._right[k] + up * this._up[k] - toward * this._sight[k]);
     this._apply(i, this._p);
-    const now = performance.now();
-    const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;
-    if (!repeat) this._lastNudge.group += 1;
-    this._lastNudge.index = i;
-    this._lastNudge.time = now;
-    this.source.commit("key", i, `nudge-${this._lastNudge.group}`);
+    this.source.commit("key", i, `nudge-${this._nudges.next(i)}`);
     this._announce("handles.moved3d", i);
     this.view.requestDraw();
   }

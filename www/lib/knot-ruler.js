@@ -22,7 +22,8 @@
  * `continuity()` and is told `move(i, u)` (preview) and `commit(kind, i, merge)` (final). The
  * draw path allocates nothing: label strings are cached, styles are made once per theme.
  */
-import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH, NUDGE_MERGE_MS } from "./handles.js";
+import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "./handles.js";
+import { NudgeGroups } from "./handle-keys.js";
 import { HUES, WIDTH, FONT_SIZE } from "./theme.js";
 import { subscript } from "./format.js";
 import { formatNumber, t } from "./strings.js";
@@ -211,7 +212,7 @@ export class KnotRuler {
     this._moved = false;
     this._picking = false;
     this._lastTap = { index: -1, time: 0 };
-    this._lastNudge = { index: -1, time: 0, group: 0 };
+    this._nudges = new NudgeGroups();
     this._published = NaN;
 
     this._knotLabels = [];
@@ -560,12 +561,7 @@ export class KnotRuler {
         const sign = event.key === "ArrowLeft" || event.key === "ArrowDown" ? -1 : 1;
         const step = this._step() * (event.shiftKey ? NUDGE_LARGE : 1);
         this._apply(i, this._round(knots[i] + sign * step));
-        const now = performance.now();
-        const repeat = this._lastNudge.index === i && now - this._lastNudge.time < NUDGE_MERGE_MS;
-        if (!repeat) this._lastNudge.group += 1;
-        this._lastNudge.index = i;
-        this._lastNudge.time = now;
-        this.source.commit("key", i, `knot-nudge-${this._lastNudge.group}`);
+        this.source.commit("key", i, `knot-nudge-${this._nudges.next(i)}`);
         this._announce("knotRuler.moved", i);
         break;
       }

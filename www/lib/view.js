@@ -9,6 +9,7 @@
  * Pointer input is routed through *interactors* (handles.js is one): on pointer down each gets
  * a chance to claim the pointer; unclaimed drags pan, two unclaimed pointers pinch-zoom.
  */
+import { sizeCanvas, watchCanvasSize } from "./canvas-size.js";
 import { CanvasRenderer } from "./draw.js";
 import { currentTheme, onThemeChange, LECTURE_SCALE } from "./theme.js";
 
@@ -263,26 +264,8 @@ export class View {
    * count, so one canvas pixel is one screen pixel even at fractional CSS sizes.
    */
   _resize(cssWidth, cssHeight, devicePixels = null) {
-    const w = Math.max(0, cssWidth);
-    const h = Math.max(0, cssHeight);
-    const dpr = window.devicePixelRatio || 1;
-    const pixelWidth = devicePixels ? devicePixels.inlineSize : Math.round(w * dpr);
-    const pixelHeight = devicePixels ? devicePixels.blockSize : Math.round(h * dpr);
-    const ratio = w > 0 ? pixelWidth / w : dpr;
-    if (
-      w === this.width &&
-      h === this.height &&
-      pixelWidth === this.canvas.width &&
-      pixelHeight === this.canvas.height
-    )
-      return;
-    this.width = w;
-    this.height = h;
-    this.pixelRatio = ratio;
-    this.canvas.width = pixelWidth;
-    this.canvas.height = pixelHeight;
-    this.renderer.pixelRatio = ratio;
-    this._layout(w, h);
+    if (!sizeCanvas(this, cssWidth, cssHeight, devicePixels)) return;
+    this._layout(this.width, this.height);
     // Draw at once: a resized canvas is blank until the next draw.
     this.drawNow();
   }
@@ -328,38 +311,15 @@ export class View {
       c.addEventListener(type, handler, type === "wheel" ? { passive: false } : undefined);
     }
 
-    this._resizeObserver = new ResizeObserver((entries) => {
-      const entry = entries[entries.length - 1];
-      this._resize(
-        entry.contentRect.width,
-        entry.contentRect.height,
-        entry.devicePixelContentBoxSize?.[0] ?? null,
-      );
+    this._stopSize = watchCanvasSize(this.canvas, {
+      resize: (w, h, devicePixels) => this._resize(w, h, devicePixels),
+      ratioChanged: () => this._resize(this.width, this.height),
     });
-    try {
-      this._resizeObserver.observe(this.canvas, { box: "device-pixel-content-box" });
-    } catch {
-      this._resizeObserver.observe(this.canvas); // browsers without device-pixel boxes
-    }
 
-    this._watchPixelRatio();
     this._stopTheme = onThemeChange(() => {
       this.theme = currentTheme();
       this.requestDraw();
     });
-  }
-
-  /** Re-arms a media query for the current devicePixelRatio; it fires when the ratio changes. */
-  _watchPixelRatio() {
-    const ratio = window.devicePixelRatio || 1;
-    this._dprQuery?.removeEventListener("change", this._dprHandler);
-    this._dprQuery = matchMedia(`(resolution: ${ratio}dppx)`);
-    this._dprHandler = () => {
-      // The ResizeObserver reports the new device-pixel size; this covers browsers without it.
-      this._resize(this.width, this.height);
-      this._watchPixelRatio();
-    };
-    this._dprQuery.addEventListener("change", this._dprHandler);
   }
 
   _down(event) {
@@ -478,8 +438,7 @@ export class View {
     clearTimeout(this._wheelTimer);
     for (const [type, handler] of Object.entries(this._handlers))
       this.canvas.removeEventListener(type, handler);
-    this._resizeObserver.disconnect();
-    this._dprQuery?.removeEventListener("change", this._dprHandler);
+    this._stopSize();
     this._stopTheme();
     this.canvas.remove();
   }

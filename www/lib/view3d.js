@@ -19,6 +19,7 @@
  * `prefers-reduced-motion` is honoured. three.js must be loaded first (three-loader.js
  * `prepareFigure`).
  */
+import { sizeCanvas, watchCanvasSize } from "./canvas-size.js";
 import { CanvasRenderer } from "./draw.js";
 import { currentTheme, onThemeChange, LECTURE_SCALE } from "./theme.js";
 import { loadedThree } from "./three-loader.js";
@@ -370,25 +371,9 @@ export class View3D {
     if (this.width && this.height) this._layout(this.width, this.height);
   }
 
+  /** Sizes the backing store in device pixels (canvas-size.js) and draws at once. */
   _resize(cssWidth, cssHeight, devicePixels = null) {
-    const w = Math.max(0, cssWidth);
-    const h = Math.max(0, cssHeight);
-    const dpr = window.devicePixelRatio || 1;
-    const pixelWidth = devicePixels ? devicePixels.inlineSize : Math.round(w * dpr);
-    const pixelHeight = devicePixels ? devicePixels.blockSize : Math.round(h * dpr);
-    if (
-      w === this.width &&
-      h === this.height &&
-      pixelWidth === this.canvas.width &&
-      pixelHeight === this.canvas.height
-    )
-      return;
-    this.width = w;
-    this.height = h;
-    this.pixelRatio = w > 0 ? pixelWidth / w : dpr;
-    this.canvas.width = pixelWidth;
-    this.canvas.height = pixelHeight;
-    this.renderer.pixelRatio = this.pixelRatio;
+    if (!sizeCanvas(this, cssWidth, cssHeight, devicePixels)) return;
     this.drawNow();
   }
 
@@ -423,34 +408,14 @@ export class View3D {
     };
     for (const [type, handler] of Object.entries(this._handlers))
       c.addEventListener(type, handler, type === "wheel" ? { passive: true } : undefined);
-    this._resizeObserver = new ResizeObserver((entries) => {
-      const entry = entries[entries.length - 1];
-      this._resize(
-        entry.contentRect.width,
-        entry.contentRect.height,
-        entry.devicePixelContentBoxSize?.[0] ?? null,
-      );
+    this._stopSize = watchCanvasSize(this.canvas, {
+      resize: (w, h, devicePixels) => this._resize(w, h, devicePixels),
+      ratioChanged: () => this._resize(this.width, this.height),
     });
-    try {
-      this._resizeObserver.observe(c, { box: "device-pixel-content-box" });
-    } catch {
-      this._resizeObserver.observe(c);
-    }
-    this._watchPixelRatio();
     this._stopTheme = onThemeChange(() => {
       this.theme = currentTheme();
       this.requestDraw();
     });
-  }
-
-  _watchPixelRatio() {
-    this._dprQuery?.removeEventListener("change", this._dprHandler);
-    this._dprQuery = matchMedia(`(resolution: ${window.devicePixelRatio || 1}dppx)`);
-    this._dprHandler = () => {
-      this._resize(this.width, this.height);
-      this._watchPixelRatio();
-    };
-    this._dprQuery.addEventListener("change", this._dprHandler);
   }
 
   _down(event) {
@@ -493,8 +458,7 @@ export class View3D {
     this.controls.dispose();
     for (const [type, handler] of Object.entries(this._handlers))
       this.canvas.removeEventListener(type, handler);
-    this._resizeObserver.disconnect();
-    this._dprQuery?.removeEventListener("change", this._dprHandler);
+    this._stopSize();
     this._stopTheme();
     this.content.dispose();
     this.canvas.remove();
