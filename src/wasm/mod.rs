@@ -55,6 +55,20 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
 /// What an array argument must be, for [`numbers`].
 pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
 
+/// An object `{ key: Float64Array, … }`.
+pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, JsError> {
+    let object = js_sys::Object::new();
+    for (key, values) in entries {
+        js_sys::Reflect::set(
+            &object,
+            &JsValue::from_str(key),
+            &js_sys::Float64Array::from(*values).into(),
+        )
+        .map_err(|_| JsError::new("could not build the result object"))?;
+    }
+    Ok(object.into())
+}
+
 /// An array-of-numbers argument, taken as a `JsValue`: a `Float64Array` is copied once, a plain
 /// array or another typed array is converted (`new Float64Array(value)`, as the glue for a
 /// `&[f64]` would). Anything else — `null`, `undefined`, a number, a string, an object — is an

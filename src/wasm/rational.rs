@@ -3,7 +3,7 @@
 use super::bezier::flatten_points;
 use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
-use super::{numbers, whole};
+use super::{numbers, object_of, whole};
 use crate::bspline::BSplineCurve;
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
@@ -192,18 +192,9 @@ pub fn rational_poles(
             )
         }
     };
-    let object = js_sys::Object::new();
-    for (key, values) in [
+    object_of(&[
         ("samples", &samples),
         ("roots", &roots),
         ("directions", &directions),
-    ] {
-        js_sys::Reflect::set(
-            &object,
-            &JsValue::from_str(key),
-            &js_sys::Float64Array::from(&values[..]).into(),
-        )
-        .map_err(|_| JsError::new("could not build the result object"))?;
-    }
-    Ok(object.into())
+    ])
 }

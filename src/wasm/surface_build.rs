@@ -2,7 +2,7 @@
 //! curves or from a grid of points.
 
 use super::surface::JsBSplineSurface;
-use super::{numbers, string_arg, whole};
+use super::{numbers, object_of, string_arg, whole};
 use crate::bspline::{BSplineCurve, Parameterization};
 use crate::error::Error;
 use crate::geom::points_from_flat;
@@ -210,14 +210,5 @@ pub fn interpolate_surface_params(
     let (rows, cols) = (whole("rows", rows)?, whole("cols", cols)?);
     let kind = Parameterization::parse(&string_arg("kind", &kind, Some("chord"))?)?;
     let (u, v) = surface::grid_params(&points, rows, cols, kind)?;
-    let object = js_sys::Object::new();
-    for (key, values) in [("u", &u), ("v", &v)] {
-        js_sys::Reflect::set(
-            &object,
-            &JsValue::from_str(key),
-            &js_sys::Float64Array::from(&values[..]).into(),
-        )
-        .map_err(|_| JsError::new("could not build the parameters object"))?;
-    }
-    Ok(object.into())
+    object_of(&[("u", &u), ("v", &v)])
 }

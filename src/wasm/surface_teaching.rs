@@ -4,7 +4,7 @@
 use super::bezier::{flatten_points, JsBezierCurve};
 use super::bspline::JsBSplineCurve;
 use super::surface::{JsBSplineSurface, JsBezierSurface};
-use super::{numbers, string_arg};
+use super::{numbers, object_of, string_arg};
 use crate::bezier::BezierCurve;
 use crate::error::Error;
 use crate::prelude::*;
@@ -22,20 +22,6 @@ fn curvatures(surface: &BSplineSurface, uvs: &JsValue) -> Result<Vec<f64>, JsErr
     let mut out = Vec::new();
     surface.curvatures_into(&uvs, &mut out)?;
     Ok(out)
-}
-
-/// An object `{ key: Float64Array, … }`.
-fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, JsError> {
-    let object = js_sys::Object::new();
-    for (key, values) in entries {
-        js_sys::Reflect::set(
-            &object,
-            &JsValue::from_str(key),
-            &js_sys::Float64Array::from(*values).into(),
-        )
-        .map_err(|_| JsError::new("could not build the result object"))?;
-    }
-    Ok(object.into())
 }
 
 /// The methods both surface classes gain; `$curve` wraps an iso-curve for JavaScript.
