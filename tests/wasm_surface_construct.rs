@@ -6,23 +6,14 @@
 
 mod common;
 
-use common::js_message as message;
+use common::{float64_field as field, js_message as message};
 use splinelab::wasm::{self, JsBSplineCurve, JsBSplineSurface, JsBezierCurve, JsBezierSurface};
 use std::f64::consts::TAU;
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 fn arr(values: &[f64]) -> JsValue {
     js_sys::Float64Array::from(values).into()
-}
-
-/// `object[key]` as numbers.
-fn field(object: &JsValue, key: &str) -> Vec<f64> {
-    js_sys::Reflect::get(object, &key.into())
-        .unwrap()
-        .dyn_into::<js_sys::Float64Array>()
-        .unwrap_or_else(|_| panic!("{key} is a Float64Array"))
-        .to_vec()
 }
 
 /// A bicubic patch `P_ij = (i, j, h_ij)`.

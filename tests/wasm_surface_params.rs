@@ -4,9 +4,9 @@
 
 mod common;
 
-use common::js_message as message;
+use common::{float64_field as field, js_message as message};
 use splinelab::wasm;
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test as test;
 
 /// A 3 × 3 grid: rows at x = 0, 1, 3, columns at y = 0, 2, 6, flat (z = 0).
@@ -16,14 +16,6 @@ fn grid() -> JsValue {
         .flat_map(|&x| [0.0, 2.0, 6.0].into_iter().flat_map(move |y| [x, y, 0.0]))
         .collect();
     js_sys::Float64Array::from(&values[..]).into()
-}
-
-fn field(object: &JsValue, key: &str) -> Vec<f64> {
-    js_sys::Reflect::get(object, &key.into())
-        .unwrap()
-        .dyn_into::<js_sys::Float64Array>()
-        .unwrap_or_else(|_| panic!("{key} is a Float64Array"))
-        .to_vec()
 }
 
 #[test]

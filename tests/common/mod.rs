@@ -22,6 +22,18 @@ pub fn js_message<T>(r: Result<T, wasm_bindgen::JsError>) -> String {
     }
 }
 
+/// `object[key]`, a `Float64Array` a wasm export returned inside an object, as numbers (panics,
+/// naming the key, when it is anything else).
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+pub fn float64_field(object: &wasm_bindgen::JsValue, key: &str) -> Vec<f64> {
+    use wasm_bindgen::JsCast;
+    js_sys::Reflect::get(object, &key.into())
+        .unwrap()
+        .dyn_into::<js_sys::Float64Array>()
+        .unwrap_or_else(|_| panic!("{key} is a Float64Array"))
+        .to_vec()
+}
+
 /// Asserts `|a − b| <= tol`, printing both values and the difference.
 #[track_caller]
 pub fn assert_close(a: f64, b: f64, tol: f64, what: &str) {
