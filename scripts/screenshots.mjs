@@ -49,7 +49,9 @@ for (const [scale, viewport] of [[1, DESKTOP], [2, DESKTOP], ...(narrow ? [[2, P
       await page.evaluate(async () => (await import("./demos/index.js")).demos.map((d) => d.id))
     ).filter((id) => id.includes(only));
     if (viewport !== PHONE && !only) {
-      // Thumbnails are drawn when their card comes near the viewport: pass every card by.
+      // The cards appear once the wasm has loaded; a thumbnail is drawn when its card comes
+      // near the viewport: wait for the cards, then pass every card by.
+      await page.waitForSelector(".card");
       for (const card of await page.locator(".card").all()) {
         await card.scrollIntoViewIfNeeded();
         await card.locator("img").evaluate(
