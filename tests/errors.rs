@@ -946,6 +946,40 @@ fn adaptive_mesh_too_large() {
     );
 }
 
+// ---- Work budgets (issue 15): the error names what the caller gave, before any work ----------
+
+#[test]
+fn basis_curves_count_too_large_names_the_count() {
+    // 20 000 control points × 10^6 samples: 2·10^10 values, more than a 32-bit count holds. The
+    // message names the count given and the largest allowed (2^24 / 20 000 = 838).
+    let n = 20_000;
+    let points = pts2(&(0..n).map(|i| (i as f64, 0.0)).collect::<Vec<_>>());
+    let knots: Vec<f64> = (0..n + 4).map(|i| i.clamp(3, n) as f64).collect();
+    let curve = BSplineCurve::new(points.clone(), 3, knots, None).unwrap();
+    fails(
+        curve.basis_curves(1_000_000),
+        "too-large",
+        &["count", "= 1000000", "at most 838"],
+    );
+    let params: Vec<f64> = (0..40).map(f64::from).collect();
+    let lagrange = interp::LagrangeCurve::new(points[..40].to_vec(), &params).unwrap();
+    fails(
+        lagrange.basis_curves(1_000_000),
+        "too-large",
+        &["count", "= 1000000", "at most 419430"],
+    );
+}
+
+#[test]
+fn from_polynomial_refuses_the_degree_before_converting() {
+    let coefficients = pts2(&vec![(1.0, 1.0); 2000]);
+    fails(
+        bezier::from_polynomial(&coefficients, 0.0, 1.0),
+        "too-large",
+        &["degree = 1999", "at most 64"],
+    );
+}
+
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {

@@ -2,7 +2,7 @@
 
 use super::BezierCurve;
 use crate::error::{check_tolerance, Error, Result};
-use crate::geom::{binomial, Cartesian};
+use crate::geom::{binomial, Cartesian, MAX_DEGREE};
 use crate::prelude::*;
 
 /// How two Bézier pieces `P` (degree n, on `[a0, b0]`) and `Q` (degree m, on `[a1, b1]`)
@@ -216,6 +216,15 @@ pub fn from_polynomial<C: Cartesian>(coeffs: &[C], a: f64, b: f64) -> Result<Bez
             needed: 1,
             got: 0,
             what: "a polynomial",
+        });
+    }
+    // The degree first: the conversion below is O(n²) (a 2000-coefficient call took 10 s
+    // before BezierCurve::new refused it).
+    if coeffs.len() - 1 > MAX_DEGREE {
+        return Err(Error::TooLarge {
+            what: "degree",
+            value: coeffs.len() - 1,
+            max: MAX_DEGREE,
         });
     }
     BezierCurve::new(vec![C::ZERO, C::ZERO], None)?.with_interval(a, b)?;

@@ -8,7 +8,7 @@
 
 use super::BSplineCurve;
 use crate::error::{Error, Result};
-use crate::geom::{check_out_len, Cartesian, MAX_DEGREE};
+use crate::geom::{check_table_count, Cartesian, MAX_DEGREE};
 /// Reusable buffers for [`basis_functions`], so dense evaluation allocates once.
 #[derive(Debug, Clone, Default)]
 pub struct BasisScratch {
@@ -190,7 +190,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// plotting: `N_{i,p}(u_j)` at index `i·count + j` (i-major). One pass over the spans.
     pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>> {
         let n1 = self.homogeneous.len();
-        check_out_len(count.saturating_mul(n1), count.saturating_mul(n1), 1)?;
+        check_table_count(count, n1)?;
         let (a, b) = self.domain();
         let p = self.degree();
         let step = if count > 1 {

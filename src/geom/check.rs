@@ -18,6 +18,21 @@ pub fn check_weights(w: &[f64], expected: usize) -> Result<()> {
     Ok(())
 }
 
+/// Caps `count` samples of each of `functions` functions (a `basisCurves` table,
+/// `functions · count` values) at [`MAX_SAMPLES`] values, naming the `count` the caller gave
+/// and the largest one allowed (a product would overflow a 32-bit count in wasm first).
+pub fn check_table_count(count: usize, functions: usize) -> Result<()> {
+    let max = MAX_SAMPLES / functions.max(1);
+    if count > max {
+        return Err(Error::TooLarge {
+            what: "count (samples per basis function: one value per function each)",
+            value: count,
+            max,
+        });
+    }
+    Ok(())
+}
+
 /// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count`.
 pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
     if count > MAX_SAMPLES {

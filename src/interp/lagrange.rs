@@ -10,7 +10,7 @@
 
 use super::params::{check_point_count, ParamChoice};
 use crate::error::{check_in_range, Error, Result};
-use crate::geom::{check_out_len, Cartesian, Params, MAX_DEGREE};
+use crate::geom::{check_out_len, check_table_count, Cartesian, Params, MAX_DEGREE};
 
 /// The interpolating polynomial of degree ≤ n through `p_0..p_n` at `t_0 < … < t_n`.
 #[derive(Debug, Clone, PartialEq)]
@@ -210,8 +210,8 @@ impl<C: Cartesian> LagrangeCurve<C> {
     /// [`Error::TooLarge`] when `(n + 1)·count` exceeds the sample cap.
     pub fn basis_curves(&self, count: usize) -> Result<Vec<f64>> {
         let functions = self.params.len();
-        let total = count.saturating_mul(functions);
-        check_out_len(total, total, 1)?;
+        check_table_count(count, functions)?;
+        let total = count * functions;
         let (a, b) = self.domain();
         let params = Params::uniform(a, b, count);
         let mut out = vec![0.0; total];
