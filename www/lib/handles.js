@@ -16,7 +16,8 @@
  * (6.5, 4)" when a drag ends or a nudge is committed; never during a drag.
  */
 import { subscript } from "./format.js";
-import { NudgeGroups, selectionKey } from "./handle-keys.js";
+import { selectionKey } from "./handle-keys.js";
+import { HandleSet } from "./handle-set.js";
 import { formatNumber, t } from "./strings.js";
 
 /** Hit radius around a handle centre, in CSS px, for mouse/pen and for touch (ui.md). */
@@ -127,7 +128,7 @@ export function pointListsHandles(lists, list, moved, label) {
   };
 }
 
-export class Handles {
+export class Handles extends HandleSet {
   /**
    * @param {import("./view.js").View} view
    * @param {object} source
@@ -149,52 +150,17 @@ export class Handles {
    *   label is then placed away from it (beyond the tip) and the handle is no polygon neighbour.
    */
   constructor(view, source) {
-    this.view = view;
-    this.source = source;
+    super(view, source, "handles.selected");
     this.polygon = source.polygon ?? true;
-    this.selected = -1;
-    this.hovered = -1;
-    this.dragging = -1;
 
     // Scratch storage, made once.
     this._p = new Float64Array(2);
     this._q = new Float64Array(2);
     this._grab = new Float64Array(2); // offset from pointer to handle centre (world)
-    this._pending = new Float64Array(2);
     this._sum = new Float64Array(2); // label direction accumulator
     this._anchor = new Float64Array(2); // an anchored handle's point (label placement)
-    this._hasPending = false;
-    this._nudges = new NudgeGroups();
     this._published = NaN;
     this._dragStart = new Float64Array(2); // where the dragged handle was at pointer down
-
-    // An interactive figure, and the live region that announces selections and moves.
-    const canvas = view.canvas;
-    canvas.setAttribute("role", "application");
-    canvas.setAttribute("aria-roledescription", t("handles.roleDescription"));
-    this.announcer = document.createElement("div");
-    this.announcer.className = "sl-announcer";
-    this.announcer.setAttribute("aria-live", "polite");
-    this.announcer.setAttribute("aria-atomic", "true");
-    view.host.append(this.announcer);
-
-    view.addInteractor(this);
-    view.beforeFrame(() => this._flush());
-    this._onKey = (e) => this._key(e);
-    this._onFocus = (e) => this._focus(e);
-    view.canvas.addEventListener("keydown", this._onKey);
-    view.canvas.addEventListener("focus", this._onFocus);
-  }
-
-  /** Selects handle i (-1: none) and redraws. */
-  select(i) {
-    const n = this.source.count();
-    const next = i >= 0 && i < n ? i : -1;
-    if (next === this.selected) return;
-    this.selected = next;
-    this.source.select?.(next);
-    if (next >= 0) this._announce("handles.selected", next);
-    this.view.requestDraw();
   }
 
   /** Says in the live region, politely, `key` ("{label} … ({x}, {y})") for handle i where it is now. */
@@ -207,11 +173,6 @@ export class Handles {
         y: formatNumber(this._q[1]),
       }),
     );
-  }
-
-  /** Says `text` in the figure's polite live region (a chained tool, e.g. the knot ruler). */
-  announce(text) {
-    this.announcer.textContent = text;
   }
 
   /** Index of the handle under canvas point (x, y), or -1. */
@@ -274,22 +235,6 @@ export class Handles {
     this.view.requestDraw();
   }
 
-  hover(x, y, pointerType) {
-    const i = this.hitTest(x, y, pointerType);
-    if (i !== this.hovered) {
-      this.hovered = i;
-      this.view.requestDraw();
-    }
-    return i >= 0 ? "grab" : null;
-  }
-
-  leave() {
-    if (this.hovered >= 0) {
-      this.hovered = -1;
-      this.view.requestDraw();
-    }
-  }
-
   /** Applies the newest pointer position (once per frame). */
   _flush() {
     if (!this._hasPending || this.dragging < 0) return;
@@ -316,13 +261,6 @@ export class Handles {
   }
 
   // -------------------------------------------------------------- keyboard
-
-  /** Forgets hover and drag state (the demo's points were replaced, e.g. by undo). */
-  forgetPointer() {
-    this.hovered = -1;
-    this.dragging = -1;
-    this._hasPending = false;
-  }
 
   _focus(event) {
     // Keyboard focus selects a handle; a click on the figure (pan, or a drag) does not.
@@ -506,16 +444,6 @@ export class Handles {
     if (len < DIRECTION_EPSILON) return;
     this._sum[0] += ax / len;
     this._sum[1] += ay / len;
-  }
-
-  /** Removes the listeners and the live region (the view removes its own); the figure is a picture again. */
-  destroy() {
-    const canvas = this.view.canvas;
-    canvas.removeEventListener("keydown", this._onKey);
-    canvas.removeEventListener("focus", this._onFocus);
-    canvas.setAttribute("role", "img");
-    canvas.removeAttribute("aria-roledescription");
-    this.announcer.remove();
   }
 }
 

@@ -34,7 +34,8 @@ import {
   NUDGE_PX,
   NUDGE_PX_LARGE,
 } from "./handles.js";
-import { NudgeGroups, selectionKey } from "./handle-keys.js";
+import { selectionKey } from "./handle-keys.js";
+import { HandleSet } from "./handle-set.js";
 import { formatNumber, t } from "./strings.js";
 import { NARROW_CANVAS_PX } from "./view.js";
 
@@ -69,14 +70,10 @@ function fadedLabel(style, theme) {
   return out;
 }
 
-export class Handles3D {
+export class Handles3D extends HandleSet {
   /** @param {import("./view3d.js").View3D} view @param {object} source see the module comment. */
   constructor(view, source) {
-    this.view = view;
-    this.source = source;
-    this.selected = -1;
-    this.hovered = -1;
-    this.dragging = -1;
+    super(view, source, "handles.selected3d");
     this._p = new Float64Array(3);
     this._s = new Float64Array(3);
     this._grab = new Float64Array(3);
@@ -85,45 +82,17 @@ export class Handles3D {
     this._sight = new Float64Array(3);
     this._plane = new Float64Array(4); // n, and the point's offset along n
     this._held = new Float64Array(4); // the plane a constrained handle stays in
-    this._pending = new Float64Array(2);
-    this._hasPending = false;
     this._start = new Float64Array(3);
     this._order = new Int32Array(0);
     this._depth = new Float64Array(0);
     this._hidden = new Uint8Array(0);
-    this._nudges = new NudgeGroups();
     this._published = "";
-
-    const canvas = view.canvas;
-    canvas.setAttribute("role", "application");
-    canvas.setAttribute("aria-roledescription", t("handles.roleDescription"));
-    this.announcer = document.createElement("div");
-    this.announcer.className = "sl-announcer";
-    this.announcer.setAttribute("aria-live", "polite");
-    this.announcer.setAttribute("aria-atomic", "true");
-    view.host.append(this.announcer);
-    view.addInteractor(this);
-    view.beforeFrame(() => this._flush());
-    this._onKey = (e) => this._key(e);
-    this._onFocus = () => {
-      if (this.selected < 0 && this.source.count() > 0 && canvas.matches(":focus-visible"))
-        this.select(0);
-    };
-    canvas.addEventListener("keydown", this._onKey);
-    canvas.addEventListener("focus", this._onFocus);
   }
 
-  select(i) {
-    const next = i >= 0 && i < this.source.count() ? i : -1;
-    if (next === this.selected) return;
-    this.selected = next;
-    this.source.select?.(next);
-    if (next >= 0) this._announce("handles.selected3d", next);
-    this.view.requestDraw();
-  }
-
-  announce(text) {
-    this.announcer.textContent = text;
+  /** Keyboard focus selects the first handle; a click on the figure (an orbit) does not. */
+  _focus() {
+    if (this.selected < 0 && this.source.count() > 0 && this.view.canvas.matches(":focus-visible"))
+      this.select(0);
   }
 
   _announce(key, i) {
@@ -217,29 +186,6 @@ export class Handles3D {
     this.view.requestDraw();
   }
 
-  hover(x, y, pointerType) {
-    const i = this.hitTest(x, y, pointerType);
-    if (i !== this.hovered) {
-      this.hovered = i;
-      this.view.requestDraw();
-    }
-    return i >= 0 ? "grab" : null;
-  }
-
-  leave() {
-    if (this.hovered >= 0) {
-      this.hovered = -1;
-      this.view.requestDraw();
-    }
-  }
-
-  forgetPointer() {
-    this.hovered = -1;
-    this.dragging = -1;
-    this._hasPending = false;
-  }
-
-  /** Applies the newest pointer position (once per frame, before drawing). */
   _flush() {
     if (!this._hasPending || this.dragging < 0) return;
     this._hasPending = false;
@@ -433,14 +379,5 @@ export class Handles3D {
     this._published = text;
     this.view.host.dataset.handles = parts.join(";");
     this.view.host.dataset.hiddenHandles = hidden.join(",");
-  }
-
-  destroy() {
-    const canvas = this.view.canvas;
-    canvas.removeEventListener("keydown", this._onKey);
-    canvas.removeEventListener("focus", this._onFocus);
-    canvas.setAttribute("role", "img");
-    canvas.removeAttribute("aria-roledescription");
-    this.announcer.remove();
   }
 }

@@ -10,8 +10,8 @@
  * a chance to claim the pointer; unclaimed drags pan, two unclaimed pointers pinch-zoom.
  */
 import { sizeCanvas, watchCanvasSize } from "./canvas-size.js";
-import { CanvasRenderer } from "./draw.js";
-import { currentTheme, onThemeChange, LECTURE_SCALE } from "./theme.js";
+import { FigureCanvas } from "./figure-canvas.js";
+import { currentTheme, onThemeChange } from "./theme.js";
 
 /** Empty space around the content when fitting, as a fraction of the content's size per side. */
 const FIT_PADDING = 0.14;
@@ -57,7 +57,7 @@ function roundWindowValue(value) {
   return Number(value.toPrecision(WINDOW_DIGITS));
 }
 
-export class View {
+export class View extends FigureCanvas {
   /**
    * @param {HTMLElement} host element that sets the figure's CSS size; the canvas fills it.
    * @param {object} options
@@ -84,31 +84,8 @@ export class View {
       insets = null,
     },
   ) {
-    this.host = host;
+    super(host, { draw, bounds, onWindowChange, label, wheelNeedsModifier });
     this.insets = insets;
-    this.drawFigure = draw;
-    this.bounds = bounds;
-    this.onWindowChange = onWindowChange;
-    this.wheelNeedsModifier = wheelNeedsModifier;
-
-    this.canvas = document.createElement("canvas");
-    this.canvas.className = "sl-canvas";
-    this.canvas.setAttribute("role", "img");
-    this.canvas.tabIndex = 0;
-    this.canvas.style.touchAction = "none";
-    this.setLabel(label);
-    host.append(this.canvas);
-
-    /** CSS size of the canvas. */
-    this.width = 0;
-    this.height = 0;
-    this.pixelRatio = window.devicePixelRatio || 1;
-    this.theme = currentTheme();
-    this.lecture = false;
-    this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), {
-      pixelRatio: this.pixelRatio,
-      theme: this.theme,
-    });
 
     // Window centre and half extents (world units), and the derived transform.
     this._cx = 0;
@@ -119,15 +96,9 @@ export class View {
     this._ox = 0;
     this._oy = 0;
 
-    this._interactors = [];
-    this._beforeFrame = [];
-    this._frameRequested = false;
-    this._frame = () => this._onFrame();
     this._gestures = new Map(); // pointerId -> { x, y } for pan/pinch pointers
-    this._captured = new Map(); // pointerId -> interactor that claimed it
     this._pinchDistance = 0;
     this._wheelTimer = 0;
-    this._destroyed = false;
 
     this._listen();
   }
@@ -197,40 +168,6 @@ export class View {
 
   // ---------------------------------------------------------------- drawing
 
-  /** Sets the accessible name of the figure (only touches the DOM when it changes). */
-  setLabel(text) {
-    if (this._label !== text) {
-      this._label = text;
-      this.canvas.setAttribute("aria-label", text);
-    }
-  }
-
-  /** Lecture mode: text and strokes ×1.6. */
-  setLecture(on) {
-    this.lecture = on;
-    this.renderer.scale = on ? LECTURE_SCALE : 1;
-    this.requestDraw();
-  }
-
-  /** Registers a hook run at the start of each animation frame, before drawing (coalesced input). */
-  beforeFrame(hook) {
-    this._beforeFrame.push(hook);
-  }
-
-  /** Asks for one redraw at the next animation frame; many requests make one draw. */
-  requestDraw() {
-    if (this._frameRequested || this._destroyed) return;
-    this._frameRequested = true;
-    requestAnimationFrame(this._frame);
-  }
-
-  _onFrame() {
-    this._frameRequested = false;
-    if (this._destroyed) return;
-    for (const hook of this._beforeFrame) hook();
-    this.drawNow();
-  }
-
   /** Draws immediately on the screen canvas. */
   drawNow() {
     if (!this.width || !this.height) return;
@@ -271,29 +208,6 @@ export class View {
   }
 
   // ---------------------------------------------------------------- input
-
-  /**
-   * Adds an interactor `{ pointerDown(event, x, y) → boolean, pointerMove(event, x, y),
-   * pointerUp(event, x, y), hover(x, y, pointerType) → cursor | null, leave() }`; x, y are
-   * canvas CSS px. The first whose pointerDown returns true owns that pointer until it is up.
-   * `before` (an interactor already added) puts the new one ahead of it, `first: true` ahead of
-   * all added earlier: a band or plot made after the handles still claims its presses first.
-   */
-  addInteractor(interactor, { first = false, before = null } = {}) {
-    const at = before ? this._interactors.indexOf(before) : -1;
-    if (first) this._interactors.unshift(interactor);
-    else if (at >= 0) this._interactors.splice(at, 0, interactor);
-    else this._interactors.push(interactor);
-  }
-
-  /** Canvas CSS px of a pointer event (border included, as the canvas box starts after it). */
-  eventPosition(event) {
-    const rect = this.canvas.getBoundingClientRect();
-    return [
-      event.clientX - rect.left - this.canvas.clientLeft,
-      event.clientY - rect.top - this.canvas.clientTop,
-    ];
-  }
 
   _listen() {
     const c = this.canvas;

@@ -20,8 +20,8 @@
  * `prepareFigure`).
  */
 import { sizeCanvas, watchCanvasSize } from "./canvas-size.js";
-import { CanvasRenderer } from "./draw.js";
-import { currentTheme, onThemeChange, LECTURE_SCALE } from "./theme.js";
+import { FigureCanvas } from "./figure-canvas.js";
+import { currentTheme, onThemeChange } from "./theme.js";
 import { loadedThree } from "./three-loader.js";
 import { renderShared } from "./shared-gl.js";
 import { SceneContent } from "./scene3d.js";
@@ -44,7 +44,7 @@ const DEG = Math.PI / 180;
 /** A surface closer than this (CSS px at the point's depth) to a point does not hide it. */
 const OCCLUSION_MARGIN_PX = 3;
 
-export class View3D {
+export class View3D extends FigureCanvas {
   /**
    * @param {HTMLElement} host the figure slot; the canvas fills it.
    * @param {object} o
@@ -71,38 +71,16 @@ export class View3D {
   ) {
     const three = loadedThree();
     if (!three) throw new Error("three.js is not loaded: await prepareFigure(demo) first");
+    super(host, { draw, bounds, onWindowChange, label, wheelNeedsModifier });
     const { THREE, OrbitControls } = three;
     this.THREE = THREE;
-    this.host = host;
-    this.drawFigure = draw;
     this.sceneOf = scene;
-    this.bounds = bounds;
-    this.onWindowChange = onWindowChange;
-    this.wheelNeedsModifier = wheelNeedsModifier;
     this.is3d = true;
     /** The declared first direction of view, `[azimuth, elevation]` degrees. */
     this.homeDirection = [
       camera?.azimuth ?? DEFAULT_AZIMUTH,
       camera?.elevation ?? DEFAULT_ELEVATION,
     ];
-
-    this.canvas = document.createElement("canvas");
-    this.canvas.className = "sl-canvas";
-    this.canvas.setAttribute("role", "img");
-    this.canvas.tabIndex = 0;
-    this.canvas.style.touchAction = "none";
-    this.setLabel(label);
-    host.append(this.canvas);
-
-    this.width = 0;
-    this.height = 0;
-    this.pixelRatio = window.devicePixelRatio || 1;
-    this.theme = currentTheme();
-    this.lecture = false;
-    this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), {
-      pixelRatio: this.pixelRatio,
-      theme: this.theme,
-    });
 
     this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
     this.content = new SceneContent(THREE);
@@ -114,13 +92,6 @@ export class View3D {
     this._ray = new THREE.Raycaster();
     this._ndc = new THREE.Vector2();
     this._plane = new THREE.Plane();
-
-    this._interactors = [];
-    this._captured = new Map();
-    this._beforeFrame = [];
-    this._frameRequested = false;
-    this._frame = () => this._onFrame();
-    this._destroyed = false;
 
     this._listen(); // before OrbitControls: a handle claims the pointer first
     this.controls = new OrbitControls(this.camera, this.canvas);
@@ -274,36 +245,6 @@ export class View3D {
 
   // ---------------------------------------------------------------- drawing
 
-  setLabel(text) {
-    if (this._label !== text) {
-      this._label = text;
-      this.canvas.setAttribute("aria-label", text);
-    }
-  }
-
-  setLecture(on) {
-    this.lecture = on;
-    this.renderer.scale = on ? LECTURE_SCALE : 1;
-    this.requestDraw();
-  }
-
-  beforeFrame(hook) {
-    this._beforeFrame.push(hook);
-  }
-
-  requestDraw() {
-    if (this._frameRequested || this._destroyed) return;
-    this._frameRequested = true;
-    requestAnimationFrame(this._frame);
-  }
-
-  _onFrame() {
-    this._frameRequested = false;
-    if (this._destroyed) return;
-    for (const hook of this._beforeFrame) hook();
-    this.drawNow();
-  }
-
   /** Sets the projection for a frame of w × h CSS px. */
   _layout(w, h) {
     this._w = w;
@@ -378,20 +319,6 @@ export class View3D {
   }
 
   // ---------------------------------------------------------------- input
-
-  /** As View#addInteractor: `{ pointerDown, pointerMove, pointerUp, hover, leave }`, first claim wins. */
-  addInteractor(interactor, { first = false } = {}) {
-    if (first) this._interactors.unshift(interactor);
-    else this._interactors.push(interactor);
-  }
-
-  eventPosition(event) {
-    const rect = this.canvas.getBoundingClientRect();
-    return [
-      event.clientX - rect.left - this.canvas.clientLeft,
-      event.clientY - rect.top - this.canvas.clientTop,
-    ];
-  }
 
   _listen() {
     const c = this.canvas;
