@@ -6,6 +6,7 @@
 #   make lint-js      Biome (biome.json): the JS formatting and lint check, writes nothing
 #   make format       Biome formats the JS and applies its safe fixes (writes)
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
+#   make package      build, then write the npm package dist/splinelab-<version>.tgz (npm pack)
 #   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
 SHELL := /bin/bash
 PORT ?= 8000
@@ -18,9 +19,9 @@ WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
 BIOME := node_modules/.bin/biome
 # The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
-JS_DIRS := www tests/e2e scripts bench
+JS_DIRS := www tests/e2e tests/package scripts bench
 
-.PHONY: all build serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
+.PHONY: all build package serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -54,6 +55,9 @@ build: tools
 	node_modules/.bin/wasm-opt -O target/pkg-next/splinelab_bg.wasm -o target/pkg-next/splinelab_bg.wasm
 	rm -rf $(PKG) && mv target/pkg-next $(PKG)
 	node scripts/vendor.mjs
+
+package: build
+	node scripts/package.mjs
 
 serve: build
 	node scripts/serve.mjs --port $(PORT)

@@ -1,5 +1,5 @@
 // Static file server for www/ on 127.0.0.1 (no dependencies). Sends application/wasm for .wasm
-// and never serves outside www/. Used by `make serve` and by the browser tests.
+// and never serves outside its root (www/). Used by `make serve` and by the browser tests.
 import { createServer } from "node:http";
 import { readFile, stat } from "node:fs/promises";
 import { extname, join, normalize, resolve, sep } from "node:path";
@@ -21,15 +21,18 @@ const TYPES = {
   ".ico": "image/x-icon",
 };
 
-/** Starts the server; resolves to the node http.Server once it listens. Port 0 picks a free one. */
-export function startServer(port = 8000, host = "127.0.0.1") {
+/**
+ * Starts the server; resolves to the node http.Server once it listens. Port 0 picks a free one;
+ * `root` (www/ by default) is the only folder it serves.
+ */
+export function startServer(port = 8000, host = "127.0.0.1", root = ROOT) {
   const server = createServer(async (req, res) => {
     try {
       const url = new URL(req.url, "http://localhost");
       let path = normalize(decodeURIComponent(url.pathname));
       if (path.endsWith("/")) path += "index.html";
-      const file = resolve(join(ROOT, path));
-      if (file !== ROOT && !file.startsWith(ROOT + sep))
+      const file = resolve(join(root, path));
+      if (file !== root && !file.startsWith(root + sep))
         throw Object.assign(new Error("outside"), { code: 403 });
       const info = await stat(file);
       if (!info.isFile()) throw Object.assign(new Error("not a file"), { code: 404 });

@@ -14,6 +14,7 @@ const copies = [
   ["node_modules/katex/dist/katex.min.css", "katex/katex.min.css"],
   ["node_modules/katex/dist/katex.mjs", "katex/katex.mjs"],
   ["node_modules/katex/dist/fonts", "katex/fonts"],
+  ["node_modules/katex/LICENSE", "katex/LICENSE"],
 ];
 mkdirSync(vendor, { recursive: true });
 for (const [from, to] of copies) {
@@ -25,6 +26,7 @@ for (const [from, to] of copies) {
 const threeCopies = [
   ["node_modules/three/build/three.module.js", "three/three.module.js"],
   ["node_modules/three/build/three.core.js", "three/three.core.js"],
+  ["node_modules/three/LICENSE", "three/LICENSE"],
 ];
 mkdirSync(`${vendor}/three`, { recursive: true });
 for (const [from, to] of threeCopies) {
