@@ -15,6 +15,7 @@ import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
 import { fuzzApi } from "./api-fuzz.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
+import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
@@ -348,6 +349,22 @@ async function demoSuite({ page, errors }, demo) {
     equal(parsed.root, "svg", "root element");
     assert(parsed.paths > 3, `only ${parsed.paths} paths`);
     assert(parsed.texts > 0, "no text labels");
+  });
+
+  await test(name("TikZ export is a LaTeX document that compiles"), async () => {
+    h = await openDemo(page, base, demo.id);
+    const file = await h.download("export-tikz");
+    equal(file.suggestedFilename(), `${demo.id}.tex`, "file name");
+    const tex = readFileSync(await file.path(), "utf8");
+    const found = inspectTikz(tex);
+    equal(found.problems.join("; "), "", "problems");
+    assert(found.paths > 3, `only ${found.paths} paths`);
+    assert(found.nodes > 0, "no labels");
+    if (hasPdflatex) {
+      const compiled = compileTikz(tex);
+      assert(compiled.ok, `pdflatex failed:\n${compiled.log}`);
+      equal(compiled.pages, 1, "PDF pages");
+    }
   });
 
   await test(name("PNG export is a PNG at 2x"), async () => {

@@ -57,7 +57,7 @@ const labelAt = [0, 0];
  * wider than 1 em, so one farther than `length` em from the sides cannot cross them.
  * Returns a scratch `[x, y]`, overwritten by the next call.
  */
-function keepLabelInside(r, string, style, x, y, align, baseline) {
+export function keepLabelInside(r, string, style, x, y, align, baseline) {
   labelAt[0] = x;
   labelAt[1] = y;
   const { width: frameWidth, height: frameHeight } = r;
@@ -80,6 +80,17 @@ function keepLabelInside(r, string, style, x, y, align, baseline) {
 /** The CSS font shorthand for a text style at a given scale. */
 function fontOf(style, scale) {
   return `${style.weight ?? "normal"} ${style.size * scale}px ${FONT_FAMILY}`;
+}
+
+/**
+ * The width in CSS px of `string` in `style` at `scale`, measured on `context` (a 2D canvas
+ * context) when there is one, else estimated at an average glyph of 0.6 em. For the recorders
+ * (SVG, TikZ), which draw nothing themselves.
+ */
+export function measureLabel(context, string, style, scale) {
+  if (!context) return string.length * style.size * scale * 0.6;
+  context.font = fontOf(style, scale);
+  return context.measureText(string).width;
 }
 
 /** Paints on a CanvasRenderingContext2D whose units are CSS pixels. */
@@ -370,12 +381,7 @@ export class SvgRecorder {
   }
 
   measure(string, style) {
-    if (this._measure) {
-      this._measure.font = fontOf(style, this.scale);
-      return this._measure.measureText(string).width;
-    }
-    /** Without a canvas to measure, assume an average glyph of 0.6 em. */
-    return string.length * style.size * this.scale * 0.6;
+    return measureLabel(this._measure, string, style, this.scale);
   }
 
   /** The recorded drawing as a standalone SVG document. */

@@ -1,9 +1,10 @@
 /**
- * Figures and states out of the page: SVG (recorded from the same draw calls as the screen),
- * PNG (2× scale, white background) and JSON (the state exactly as the URL holds it).
+ * Figures and states out of the page: SVG and TikZ (recorded from the same draw calls as the
+ * screen), PNG (2× scale, white background) and JSON (the state exactly as the URL holds it).
  */
 import { CanvasRenderer, SvgRecorder } from "./draw.js";
 import { LIGHT_THEME } from "./theme.js";
+import { TikzRecorder } from "./tikz.js";
 
 /** PNG exports are rendered at this many pixels per CSS pixel. */
 export const PNG_SCALE = 2;
@@ -14,6 +15,14 @@ export function figureToSvg(view) {
   const recorder = new SvgRecorder({ theme: LIGHT_THEME, measureContext: measure });
   view.renderTo(recorder, view.width, view.height, LIGHT_THEME);
   return recorder.toString();
+}
+
+/** The figure of `view` as a standalone LaTeX document drawing it with TikZ (light theme). */
+export function figureToTikz(view, title) {
+  const measure = document.createElement("canvas").getContext("2d");
+  const recorder = new TikzRecorder({ theme: LIGHT_THEME, measureContext: measure });
+  view.renderTo(recorder, view.width, view.height, LIGHT_THEME);
+  return recorder.toString(title);
 }
 
 /**
@@ -65,4 +74,5 @@ export function download(blob, filename) {
 
 /** Blob helpers with the right MIME types. */
 export const svgBlob = (text) => new Blob([text], { type: "image/svg+xml" });
+export const texBlob = (text) => new Blob([text], { type: "application/x-tex" });
 export const jsonBlob = (text) => new Blob([text], { type: "application/json" });

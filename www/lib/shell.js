@@ -9,7 +9,15 @@
 import { History, exportJson, parseJsonFile, STATE_VERSION } from "./state.js";
 import { View } from "./view.js";
 import { View3D } from "./view3d.js";
-import { figureToSvg, figureToPng, download, svgBlob, jsonBlob } from "./export.js";
+import {
+  download,
+  figureToPng,
+  figureToSvg,
+  figureToTikz,
+  jsonBlob,
+  svgBlob,
+  texBlob,
+} from "./export.js";
 import { ensureKatexStyles } from "./formula.js";
 import { checkCamera, checkWindow } from "./validate.js";
 import { el, button } from "./controls.js";
@@ -133,6 +141,12 @@ export function mountDemo(
       name: "export-svg",
       onClick: () => exportSvg(),
     }),
+    tikz: button({
+      label: t("toolbar.tikz"),
+      title: t("toolbar.tikz.title"),
+      name: "export-tikz",
+      onClick: () => exportTikz(),
+    }),
     png: button({
       label: t("toolbar.png"),
       title: t("toolbar.png.title"),
@@ -170,6 +184,7 @@ export function mountDemo(
       { class: "sl-tool-group" },
       el("span", { class: "sl-tool-label", text: t("toolbar.export") }),
       buttons.svg,
+      buttons.tikz,
       buttons.png,
       buttons.json,
     ),
@@ -326,6 +341,13 @@ export function mountDemo(
     if (!figure) return;
     const name = `${demo.id}.svg`;
     download(svgBlob(figureToSvg(figure)), name);
+    showStatus(t("status.exported", { name }));
+  }
+
+  function exportTikz() {
+    if (!figure) return;
+    const name = `${demo.id}.tex`;
+    download(texBlob(figureToTikz(figure, t(`${prefix}.title`))), name);
     showStatus(t("status.exported", { name }));
   }
 

@@ -67,6 +67,8 @@ const EN = {
   "toolbar.share.title": "Copy a link that restores this exact picture",
   "toolbar.svg": "SVG",
   "toolbar.svg.title": "Export the figure as SVG",
+  "toolbar.tikz": "TikZ",
+  "toolbar.tikz.title": "Export the figure as TikZ/PGF: a .tex file that pdflatex compiles",
   "toolbar.png": "PNG",
   "toolbar.png.title": "Export the figure as PNG (2×, white background)",
   "toolbar.json": "JSON",
