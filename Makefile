@@ -19,7 +19,7 @@ WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
 BIOME := node_modules/.bin/biome
 # The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
-JS_DIRS := www tests/e2e tests/package scripts bench
+JS_DIRS := www tests/e2e tests/package tests/i18n scripts bench
 
 .PHONY: all build package serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
 

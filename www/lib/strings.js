@@ -1209,6 +1209,14 @@ let activeCode = "en";
 let pluralRules = null;
 const numberFormats = new Map();
 
+/**
+ * The English table (every key the UI uses; a copy). For tools and tests, e.g. the check that
+ * every translation has the same keys and placeholders (tests/i18n/check.mjs).
+ */
+export function englishTable() {
+  return { ...EN };
+}
+
 /** Adds (or extends, also while it is active) the string table of a language. */
 export function addLocale(code, table) {
   Object.assign((locales[code] ??= {}), table);
