@@ -12,6 +12,7 @@ import { parseHash, buildHash, decodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
 import { t } from "./lib/strings.js";
+import { LANGUAGES, chooseLanguage, useLanguage, withLanguage } from "./lib/language.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 
 /**
@@ -269,7 +270,28 @@ async function route(sl) {
   window.scrollTo(0, 0);
 }
 
+/**
+ * The page in the chosen language (`?lang=`, else the browser's, else English): `<html lang>`,
+ * the static texts marked `data-i18n`, and the language menu in the header, which reloads the
+ * page with the new `?lang=` (the hash, so the demo and its state, stays).
+ */
+async function applyLanguage() {
+  const code = await useLanguage(chooseLanguage(new URLSearchParams(location.search).get("lang")));
+  document.documentElement.lang = code;
+  for (const node of document.querySelectorAll("[data-i18n]"))
+    node.textContent = t(node.dataset.i18n);
+  const menu = el(
+    "select",
+    { class: "language-menu", "aria-label": t("app.language"), name: "language" },
+    ...LANGUAGES.map((l) => el("option", { value: l.code, lang: l.code, text: l.name })),
+  );
+  menu.value = code;
+  menu.addEventListener("change", () => location.assign(withLanguage(location.href, menu.value)));
+  document.querySelector(".site-head").append(menu);
+}
+
 async function start() {
+  await applyLanguage();
   document.querySelector(".site-foot").textContent = t("app.footer");
   showAppStatus(t("app.loading"));
   let sl = null;

@@ -5,7 +5,9 @@
  * leak in), the wasm package is loaded once per page, and a demo starts only when it comes
  * near the viewport, and then loads only its own demo module. Attributes are the demo's state
  * fields (see lib/attributes.js); changing an attribute later updates the figure.
- * `view="xmin ymin xmax ymax"` fixes the window.
+ * `view="xmin ymin xmax ymax"` fixes the window. `lang="el" | "hr" | "it" | "en"` chooses the
+ * language (else the page's `?lang=`, else the browser's); the strings are one table per page,
+ * so the embeds of one page share the language of the last one that started.
  */
 import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
@@ -14,6 +16,7 @@ import { prepareFigure } from "./lib/three-loader.js";
 import { stateFromAttributes } from "./lib/attributes.js";
 import { buildHash } from "./lib/state.js";
 import { t } from "./lib/strings.js";
+import { chooseLanguage, useLanguage } from "./lib/language.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -74,6 +77,9 @@ class SplineLabElement extends HTMLElement {
   /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
     const id = this.getAttribute("demo") ?? "";
+    await useLanguage(
+      chooseLanguage(this.getAttribute("lang") ?? new URLSearchParams(location.search).get("lang")),
+    );
     if (!findDemo(id)) return this._fail(t("app.unknownDemo", { id }));
     let sl;
     let demo;

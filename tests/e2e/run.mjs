@@ -830,6 +830,66 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  for (const code of ["el", "hr", "it"]) {
+    await test(`${code}: ?lang=${code} speaks the language in the gallery and a demo (<html lang>, labels, numbers with a decimal comma)`, async () => {
+      const table = (await import(join(ROOT, `www/lib/locales/${code}.js`))).default;
+      const english = (await import(join(ROOT, "www/lib/strings.js"))).englishTable();
+      const keys = ["gallery.heading", "deCasteljau.title", "toolbar.reset", "toolbar.export"];
+      for (const key of keys)
+        assert(table[key] && table[key] !== english[key], `${code} translates ${key}`);
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html?lang=${code}`);
+      await page.locator(".card").first().waitFor();
+      equal(await page.evaluate(() => document.documentElement.lang), code, "<html lang>");
+      equal(
+        await page.locator("main h1").first().textContent(),
+        table["gallery.heading"],
+        "gallery heading",
+      );
+      equal(
+        await page.locator('a.card[href="#demo=de-casteljau"] .card-title').textContent(),
+        table["deCasteljau.title"],
+        "card title",
+      );
+      equal(await page.locator(".language-menu").inputValue(), code, "the menu shows the language");
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html?lang=${code}#demo=de-casteljau`);
+      const h = demoHelpers(page);
+      await h.ready();
+      equal(
+        await page.locator("h1.sl-title").textContent(),
+        table["deCasteljau.title"],
+        "demo title",
+      );
+      equal(
+        await page.locator('[data-action="reset"]').textContent(),
+        table["toolbar.reset"],
+        "a toolbar button",
+      );
+      const shown = await page.evaluate(async () =>
+        (await import("./lib/strings.js")).formatNumber(0.25),
+      );
+      equal(shown, "0,25", "a number in the language");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+  }
+
+  await test("the language menu reloads the page in the chosen language and keeps the demo's link", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html#demo=de-casteljau`);
+    await demoHelpers(page).ready();
+    const hash = new URL(page.url()).hash;
+    await page.locator(".language-menu").selectOption("it");
+    await page.waitForFunction(() => document.documentElement.lang === "it");
+    await demoHelpers(page).ready();
+    const url = new URL(page.url());
+    equal(url.searchParams.get("lang"), "it", "?lang= in the address");
+    equal(url.hash, hash, "the demo and its state");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("gallery thumbnails follow the colour scheme, also when it changes", async () => {
     // Mean brightness (0–255) of the first thumbnail's top-left 8×8 image pixels (its
     // background), once it is drawn; null before.

@@ -33,6 +33,7 @@ const EN = {
   "app.name": "splinelab",
   "app.galleryTitle": "{app} — {heading}",
   "app.demoTitle": "{title} — {app}",
+  "app.language": "Language",
   "app.tagline": "Parametric curves you can drag: every algorithm of the course as a live figure.",
   "app.backToGallery": "← All demos",
   "app.loading": "Loading the curve library…",
