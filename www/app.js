@@ -13,6 +13,8 @@ import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
 import { t } from "./lib/strings.js";
 import { LANGUAGES, chooseLanguage, useLanguage, withLanguage } from "./lib/language.js";
+import { findLecture, lectures, loadLecture } from "./lectures/index.js";
+import { playLecture } from "./lib/lecture.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 
 /**
@@ -26,13 +28,14 @@ const THUMB_FIGURE_WIDTH = 480;
 const THUMB_FIGURE_HEIGHT = (THUMB_FIGURE_WIDTH * THUMB_HEIGHT) / THUMB_WIDTH;
 const THUMB_SCALE = (2 * THUMB_WIDTH) / THUMB_FIGURE_WIDTH;
 /** Syllabus sections, in gallery order. */
-const SECTIONS = [1, 2, 3, 4, 5, 6];
+const SECTIONS = [1, 2, 3, 4, 5, 6, 7];
 /** A card's demo module is loaded and its thumbnail drawn when the card is this near the viewport. */
 const THUMB_MARGIN = "300px";
 
 const main = document.getElementById("main");
 const appStatus = main.querySelector(".app-status");
 let controller = null; // the mounted demo (shell controller)
+let player = null; // the lecture being played (lib/lecture.js)
 let currentId = null;
 let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
 let stopThemeWatch = () => {}; // the gallery's colour-scheme listener and thumbnail observer
@@ -57,6 +60,8 @@ function shareUrl(id, state) {
 function unmount() {
   stopThemeWatch();
   stopThemeWatch = () => {};
+  player?.destroy();
+  player = null;
   controller?.destroy();
   controller = null;
   currentId = null;
@@ -75,15 +80,31 @@ async function showGallery(sl) {
   );
   for (const section of SECTIONS) {
     const members = demos.filter((entry) => entry.section === section);
-    if (!members.length) continue;
-    page.append(
-      el("h2", { text: t(`section.${section}`) }),
-      el(
-        "ul",
-        { class: "cards" },
-        members.map((entry) => card(entry)),
-      ),
-    );
+    const lecture = lectures.find((l) => l.section === section);
+    if (!members.length && !lecture) continue;
+    page.append(el("h2", { text: t(`section.${section}`) }));
+    if (lecture) {
+      page.append(
+        el(
+          "p",
+          { class: "section-lecture" },
+          el("a", {
+            href: `#lecture=${lecture.id}`,
+            "data-lecture": lecture.id,
+            text: t("gallery.lecture"),
+          }),
+        ),
+      );
+    }
+    if (members.length) {
+      page.append(
+        el(
+          "ul",
+          { class: "cards" },
+          members.map((entry) => card(entry)),
+        ),
+      );
+    }
   }
   main.append(page);
   if (sl) stopThemeWatch = watchThumbnails(page, sl);
@@ -231,10 +252,53 @@ function showDemo(entry, demo, encoded, sl) {
   if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
 }
 
+// ------------------------------------------------------------------ lecture view
+/** Plays lecture `id` from scene `scene` (1-based, from the link); the scene follows in the hash. */
+async function showLecture(id, scene, sl) {
+  const routed = routeCount;
+  let lecture;
+  try {
+    lecture = await loadLecture(id);
+  } catch (err) {
+    showAppStatus(err.message, "error");
+    return;
+  }
+  if (routed !== routeCount) return;
+  unmount();
+  currentId = null;
+  document.title = t("app.demoTitle", {
+    title: t(`section.${lecture.section}`),
+    app: t("app.name"),
+  });
+  const holder = el("div", { class: "demo-page lecture-page" });
+  main.append(holder);
+  const first = Math.max(0, Math.min(lecture.scenes.length - 1, (Number(scene) || 1) - 1));
+  player = playLecture(holder, lecture, {
+    sl,
+    index: first,
+    onScene: (k) => {
+      lastHash = `#lecture=${encodeURIComponent(id)}&scene=${k + 1}`;
+      history.replaceState(null, "", lastHash);
+    },
+    onLeave: (demoId, state) => {
+      location.hash = buildHash(demoId, state);
+    },
+  });
+}
+
 // ------------------------------------------------------------------ routing
 async function route(sl) {
   const routed = ++routeCount;
-  const { demo: id, s } = parseHash(location.hash);
+  const { demo: id, s, lecture, scene } = parseHash(location.hash);
+  if (lecture && findLecture(lecture) && sl) {
+    if (player && player.lectureId === lecture) return player.go((Number(scene) || 1) - 1);
+    return showLecture(lecture, scene, sl);
+  }
+  if (lecture && !findLecture(lecture)) {
+    await showGallery(sl);
+    showAppStatus(t("lecture.unknown", { id: lecture }), "error");
+    return;
+  }
   if (!id) return showGallery(sl);
   const entry = findDemo(id);
   if (!entry) {

@@ -875,6 +875,70 @@ try {
     });
   }
 
+  await test("every lecture's scenes name a demo and a state it accepts, with an English caption", async () => {
+    const problems = await page.evaluate(async () => {
+      const { lectures, loadLecture } = await import("./lectures/index.js");
+      const { loadDemo } = await import("./demos/index.js");
+      const { validateState } = await import("./lib/shell.js");
+      const found = [];
+      const sections = new Set();
+      for (const entry of lectures) {
+        const lecture = await loadLecture(entry.id);
+        if (lecture.id !== entry.id || lecture.section !== entry.section)
+          found.push(`${entry.id}: id/section differ from the manifest`);
+        sections.add(lecture.section);
+        if (lecture.scenes.length < 5)
+          found.push(`${entry.id}: only ${lecture.scenes.length} scenes`);
+        for (const [k, scene] of lecture.scenes.entries()) {
+          try {
+            const demo = await loadDemo(scene.demo);
+            validateState(demo, scene.state ?? {});
+          } catch (err) {
+            found.push(`${entry.id} scene ${k + 1}: ${err.message}`);
+          }
+          if (!scene.caption?.en) found.push(`${entry.id} scene ${k + 1}: no English caption`);
+        }
+      }
+      if (sections.size !== 7) found.push(`lectures cover sections ${[...sections]}`);
+      return found;
+    });
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("a lecture plays: PageDown and arrows step, the scene is in the link, B blanks, Escape leaves with the state", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html`);
+    await page.locator('a[data-lecture="bezier-curves"]').click();
+    await page.locator(".lecture .sl-figure canvas").first().waitFor();
+    const caption = () => page.locator(".lecture-caption").textContent();
+    assert((await caption()).includes("29/16, 23/16"), `scene 1 caption: ${await caption()}`);
+    equal(await page.locator(".lecture-counter").textContent(), "1 / 8", "counter");
+    assert(
+      await page.locator(".sl-demo.sl-lecture, .sl-lecture").first().isVisible(),
+      "the scene is in lecture mode",
+    );
+    await page.keyboard.press("PageDown");
+    await page.waitForFunction(() => location.hash.endsWith("scene=2"));
+    await page.locator('h2.sl-title:has-text("Bernstein")').waitFor();
+    await page.keyboard.press("ArrowRight");
+    await page.waitForFunction(() => location.hash.endsWith("scene=3"));
+    await page.keyboard.press("PageUp");
+    await page.waitForFunction(() => location.hash.endsWith("scene=2"));
+    const second = await caption();
+    await page.reload();
+    await page.locator(".lecture .sl-figure canvas").first().waitFor();
+    equal(await caption(), second, "the link restores the scene");
+    await page.keyboard.press("b");
+    assert(await page.locator(".lecture-blank").isVisible(), "B blanks the screen");
+    await page.keyboard.press("x");
+    assert(!(await page.locator(".lecture-blank").isVisible()), "any key brings the picture back");
+    await page.keyboard.press("Escape");
+    await page.waitForFunction(() => location.hash.startsWith("#demo=bernstein&s="));
+    await demoHelpers(page).ready();
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("the language menu reloads the page in the chosen language and keeps the demo's link", async () => {
     await page.goto("about:blank");
     await page.goto(`${base}/index.html#demo=de-casteljau`);

@@ -63,13 +63,14 @@ export function validateState(demo, candidate) {
  * @param {(state: object) => void} [options.onCommit] after every recorded change (page: URL hash).
  * @param {(state: object) => string} options.shareUrl the link that restores a state.
  * @param {string} [options.headingLevel] "h1" on the playground page, "h2" in embeds.
+ * @param {boolean} [options.lecture] start in lecture mode (large type; a lecture's scenes).
  * @returns {{ state: object, accept: Function, status: Function, destroy: Function,
  *   figure: View | null, element: HTMLElement }}
  */
 export function mountDemo(
   root,
   demo,
-  { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2" },
+  { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2", lecture = false },
 ) {
   const prefix = demo.strings;
   const history = new History(state);
@@ -436,6 +437,7 @@ export function mountDemo(
   const instance = mountDeclared(demo, history.current, ctx);
   syncWindow();
   refreshButtons();
+  if (lecture) toggleLecture();
 
   return {
     element,

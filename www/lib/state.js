@@ -59,7 +59,12 @@ export function decodeState(text) {
 /** `{ demo, s }` from a location hash such as "#demo=de-casteljau&s=eyJ0Ijo…" (fields may be null). */
 export function parseHash(hash) {
   const params = new URLSearchParams(String(hash).replace(/^#/, ""));
-  return { demo: params.get("demo"), s: params.get("s") };
+  return {
+    demo: params.get("demo"),
+    s: params.get("s"),
+    lecture: params.get("lecture"),
+    scene: params.get("scene"),
+  };
 }
 
 /** The hash that opens demo `id` with `state`. */

@@ -52,6 +52,14 @@ const EN = {
   "section.4": "4 · Rational curves and NURBS",
   "section.5": "5 · Interpolating curves",
   "section.6": "6 · Surfaces",
+  "section.7": "7 · Interactive design",
+  "gallery.lecture": "Lecture: this section scene by scene, for projection",
+  "lecture.label": "Lecture",
+  "lecture.previous": "← Previous",
+  "lecture.next": "Next →",
+  "lecture.counter": "{k} / {n}",
+  "lecture.unknown": "There is no lecture “{id}”.",
+  "lecture.loadFailed": "The lecture “{id}” could not be loaded (HTTP {status}).",
 
   // Toolbar
   "toolbar.label": "Demo tools",
