@@ -3,11 +3,14 @@ export default {
   "app.name": "splinelab",
   "app.galleryTitle": "{app} — {heading}",
   "app.demoTitle": "{title} — {app}",
-  "app.tagline": "Parametarske krivulje koje možete povlačiti: svaki algoritam kolegija kao živa slika.",
+  "app.tagline":
+    "Parametarske krivulje koje možete povlačiti: svaki algoritam kolegija kao živa slika.",
   "app.backToGallery": "← Sve demonstracije",
   "app.loading": "Učitavanje biblioteke krivulja…",
-  "app.noSimd": "Ovaj preglednik ne može pokrenuti biblioteku krivulja: potreban je WebAssembly SIMD (Chrome ili Edge 91, Firefox 89, Safari 16.4 ili noviji).",
-  "app.wasmFailed": "Biblioteka krivulja nije se mogla učitati ({message}). Pokrenite `make build`, zatim ponovno učitajte stranicu.",
+  "app.noSimd":
+    "Ovaj preglednik ne može pokrenuti biblioteku krivulja: potreban je WebAssembly SIMD (Chrome ili Edge 91, Firefox 89, Safari 16.4 ili noviji).",
+  "app.wasmFailed":
+    "Biblioteka krivulja nije se mogla učitati ({message}). Pokrenite `make build`, zatim ponovno učitajte stranicu.",
   "app.unknownDemo": "Ne postoji demonstracija „{id}”. Prikazuje se galerija.",
   "app.footer": "Sav se izračun odvija u vašem pregledniku (Rust preveden u WebAssembly).",
   "gallery.heading": "Demonstracije po poglavljima nastavnog programa",
@@ -27,7 +30,8 @@ export default {
   "toolbar.reset": "Ispočetka",
   "toolbar.reset.title": "Natrag na početnu sliku",
   "toolbar.fit": "Prilagodi",
-  "toolbar.fit.title": "Prilagodi prikaz slici (povucite prazan prostor za pomicanje, kotačić ili dva prsta za zumiranje)",
+  "toolbar.fit.title":
+    "Prilagodi prikaz slici (povucite prazan prostor za pomicanje, kotačić ili dva prsta za zumiranje)",
   "toolbar.share": "Podijeli poveznicu",
   "toolbar.share.title": "Kopirajte poveznicu koja vraća upravo ovu sliku",
   "toolbar.svg": "SVG",
@@ -46,8 +50,10 @@ export default {
   "shell.controls": "Upravljanje",
   "shell.whatYouSee": "Što vidite",
   "shell.tryThis": "Isprobajte",
-  "shell.figureHelp3d": "Povucite točku (u ravnini okrenutoj prema vama) ili je odaberite tipkom Tab: strelice je pomiču (Shift: 10 px), PageUp/PageDown prema vama ili od vas. Povucite prazan prostor za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; kad nijedna točka nije odabrana, strelice okreću prikaz.",
-  "shell.figureHelp": "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
+  "shell.figureHelp3d":
+    "Povucite točku (u ravnini okrenutoj prema vama) ili je odaberite tipkom Tab: strelice je pomiču (Shift: 10 px), PageUp/PageDown prema vama ili od vas. Povucite prazan prostor za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; kad nijedna točka nije odabrana, strelice okreću prikaz.",
+  "shell.figureHelp":
+    "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
   "shell.openInPlayground": "Otvori u igralištu",
   "handles.roleDescription": "interaktivna slika",
   "handles.selected": "Odabrano: {label}, ({x}, {y})",
@@ -60,7 +66,8 @@ export default {
   "status.linkShown": "Kopirajte ovu poveznicu: {url}",
   "status.imported": "Uvezeno: „{name}”.",
   "status.exported": "Spremljeno: {name}.",
-  "status.badLink": "Ova se poveznica nije mogla pročitati ({message}); zadržava se trenutna slika.",
+  "status.badLink":
+    "Ova se poveznica nije mogla pročitati ({message}); zadržava se trenutna slika.",
   "status.badImport": "„{name}” nije se moglo uvesti ({message}); zadržava se trenutna slika.",
   "status.rejected": "Ta je promjena odbijena: {message}",
   "status.nothingToUndo": "Nema se što poništiti.",
@@ -78,11 +85,14 @@ export default {
   "error.count": "polje „{field}” mora imati između {min} i {max} elemenata, dobiveno {count}",
   "error.pointShape": "polje „{field}”: točka {index} mora biti par [x, y]",
   "error.pointShape3": "polje „{field}”: točka {index} mora biti trojka [x, y, z]",
-  "error.gridCount": "polje „{field}” mora imati {rows} × {cols} = {expected} točaka (retci duž u), dobiveno {count}",
-  "error.camera": "polje „view” mora biti kamera [azimut, elevacija, udaljenost, x, y, z]: konačni brojevi, udaljenost > 0, |elevacija| ≤ 89°",
+  "error.gridCount":
+    "polje „{field}” mora imati {rows} × {cols} = {expected} točaka (retci duž u), dobiveno {count}",
+  "error.camera":
+    "polje „view” mora biti kamera [azimut, elevacija, udaljenost, x, y, z]: konačni brojevi, udaljenost > 0, |elevacija| ≤ 89°",
   "error.pointFinite": "polje „{field}”: točka {index} ima koordinatu koja nije konačan broj",
   "error.knots": "polje „{field}”: {message}",
-  "error.window": "polje „view” mora sadržavati četiri konačna broja [xmin, ymin, xmax, ymax] uz xmin < xmax i ymin < ymax",
+  "error.window":
+    "polje „view” mora sadržavati četiri konačna broja [xmin, ymin, xmax, ymax] uz xmin < xmax i ymin < ymax",
   "error.badEncoding": "stanje u poveznici nije valjano (oštećeno ili odrezano)",
   "error.badJson": "nije valjan JSON: {message}",
   "error.version": "nepodržana inačica datoteke {version} (ova stranica čita inačicu {expected})",
@@ -110,21 +120,29 @@ export default {
   "curve.degree.5": "kvintična",
   "curve.degree.n": "stupnja {n}",
   "deCasteljau.title": "De Casteljauov algoritam",
-  "deCasteljau.summary": "Ponovljena linearna interpolacija gradi točku P(t) Bézierove krivulje; crta se svaka razina trokuta.",
-  "deCasteljau.aria": "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}); t = {t}; točka P(t) = ({x}, {y})",
+  "deCasteljau.summary":
+    "Ponovljena linearna interpolacija gradi točku P(t) Bézierove krivulje; crta se svaka razina trokuta.",
+  "deCasteljau.aria":
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}); t = {t}; točka P(t) = ({x}, {y})",
   "deCasteljau.degree": "Stupanj n = {n} (kontrolne točke: {count})",
   "deCasteljau.tableCaption": "De Casteljauov trokut za t = {t}: redak r sadrži točke razine r",
   "deCasteljau.tableLevel": "r = {r}",
   "deCasteljau.pointLabel": "P(t)",
   "deCasteljau.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "deCasteljau.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "deCasteljau.whatYouSee": "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) uz t = 1/4 daje P(t) = (29/16, 23/16).",
-  "deCasteljau.try1": "Pritisnite Pokreni i gledajte kako konstrukcija klizi duž poligona dok P(t) iscrtava krivulju.",
-  "deCasteljau.try2": "Povucite P₂ i pogledajte koji se dio krivulje najviše pomiče: Bernsteinova težina točke P₂ najveća je za t = 2/3.",
-  "deCasteljau.try3": "Odaberite točku tipkom Tab i pritisnite + da dodate novu: stupanj raste, a trokut dobiva razinu više.",
+  "deCasteljau.whatYouSee":
+    "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) uz t = 1/4 daje P(t) = (29/16, 23/16).",
+  "deCasteljau.try1":
+    "Pritisnite Pokreni i gledajte kako konstrukcija klizi duž poligona dok P(t) iscrtava krivulju.",
+  "deCasteljau.try2":
+    "Povucite P₂ i pogledajte koji se dio krivulje najviše pomiče: Bernsteinova težina točke P₂ najveća je za t = 2/3.",
+  "deCasteljau.try3":
+    "Odaberite točku tipkom Tab i pritisnite + da dodate novu: stupanj raste, a trokut dobiva razinu više.",
   "bernstein.title": "Bernsteinova baza",
-  "bernstein.summary": "Težine iza Bézierove krivulje: svaki Bᵢⁿ(t) nacrtan ispod krivulje, zbroj im je 1, a svaki je najveći za t = i/n.",
-  "bernstein.aria": "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) i ispod nje njezine Bernsteinove bazne funkcije stupnja {n} (njih {count}); t = {t}; težine {values} (zbroj {sum}); točka P(t) = ({x}, {y})",
+  "bernstein.summary":
+    "Težine iza Bézierove krivulje: svaki Bᵢⁿ(t) nacrtan ispod krivulje, zbroj im je 1, a svaki je najveći za t = i/n.",
+  "bernstein.aria":
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) i ispod nje njezine Bernsteinove bazne funkcije stupnja {n} (njih {count}); t = {t}; težine {values} (zbroj {sum}); točka P(t) = ({x}, {y})",
   "bernstein.ariaPeak": "; istaknuta {b}: najveća za t = {t}, gdje je krivulja u ({x}, {y})",
   "bernstein.degree": "Stupanj n = {n} (kontrolne točke: {count}, bazne funkcije: {count})",
   "bernstein.pointLabel": "P(t)",
@@ -135,7 +153,8 @@ export default {
   "bernstein.axisValue0": "0",
   "bernstein.axisValue1": "1",
   "bernstein.formulaPeak": "najveća za",
-  "bernstein.tableCaption": "Bernsteinove težine stupnja {n} za t = {t} (postavite pokazivač na redak ili ga fokusirajte da istaknete njegovu kontrolnu točku)",
+  "bernstein.tableCaption":
+    "Bernsteinove težine stupnja {n} za t = {t} (postavite pokazivač na redak ili ga fokusirajte da istaknete njegovu kontrolnu točku)",
   "bernstein.colFunction": "Bazna funkcija",
   "bernstein.colValue": "Bᵢⁿ(t)",
   "bernstein.colMirror": "Bₙ₋ᵢⁿ(1 − t) (simetrija)",
@@ -144,18 +163,27 @@ export default {
   "bernstein.peakCell": "{value} za t = {t}",
   "bernstein.sumRow": "Zbroj",
   "bernstein.sumNote": "Zbroj težina (njih {count}) za t = {t}: {sum}",
-  "bernstein.peakNote": "{b}, težina točke {p}, najveća je za t = {t}: pomicanje točke {p} najviše mijenja krivulju oko P({t}) = ({x}, {y}).",
-  "bernstein.peakHint": "Postavite pokazivač na baznu funkciju na grafu ili na redak tablice, ili odaberite kontrolnu točku (Tab), da vidite gdje najviše djeluje.",
+  "bernstein.peakNote":
+    "{b}, težina točke {p}, najveća je za t = {t}: pomicanje točke {p} najviše mijenja krivulju oko P({t}) = ({x}, {y}).",
+  "bernstein.peakHint":
+    "Postavite pokazivač na baznu funkciju na grafu ili na redak tablice, ili odaberite kontrolnu točku (Tab), da vidite gdje najviše djeluje.",
   "bernstein.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "bernstein.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "bernstein.whatYouSee": "Bézierova krivulja (plavo) s kontrolnim poligonom, a ispod nje grafovi njezinih Bernsteinovih baznih funkcija Bᵢⁿ(t) na 0 ≤ t ≤ 1, svaki u boji prstena oko svoje kontrolne točke Pᵢ. Točka P(t) (crveno-narančasto) zbroj je točaka Pᵢ težinski uzetih s vrijednostima u kojima oznaka siječe grafove; te težine nikad nisu negativne i uvijek daju zbroj 1. Bᵢⁿ ima jedan maksimum, za t = i/n: ondje pomicanje Pᵢ najviše mijenja krivulju (istaknuti pojas i P(i/n)). Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa) za t = 1/4, s težinama 27/64, 27/64, 9/64, 1/64.",
-  "bernstein.try1": "Postavite pokazivač na zeleni graf B₁³ (ili odaberite P₁ tipkom Tab): maksimum mu je za t = 1/3, a pojas na krivulji pokazuje gdje P₁ najjače vuče; sada povucite P₁ i gledajte kako se taj dio pomiče.",
-  "bernstein.try2": "Povucite oznaku na grafu (ili pritisnite Pokreni): težine se mijenjaju, ali redak Zbroj u tablici uvijek pokazuje 1. Usporedite dva srednja stupca: Bᵢⁿ(t) jednako je Bₙ₋ᵢⁿ(1 − t) (simetrija).",
-  "bernstein.try3": "Pritisnite + da dodate kontrolne točke: grafovi postaju uži i niži, svaki i dalje s vrhom u i/n, pa svaka točka djeluje lokalnije.",
+  "bernstein.whatYouSee":
+    "Bézierova krivulja (plavo) s kontrolnim poligonom, a ispod nje grafovi njezinih Bernsteinovih baznih funkcija Bᵢⁿ(t) na 0 ≤ t ≤ 1, svaki u boji prstena oko svoje kontrolne točke Pᵢ. Točka P(t) (crveno-narančasto) zbroj je točaka Pᵢ težinski uzetih s vrijednostima u kojima oznaka siječe grafove; te težine nikad nisu negativne i uvijek daju zbroj 1. Bᵢⁿ ima jedan maksimum, za t = i/n: ondje pomicanje Pᵢ najviše mijenja krivulju (istaknuti pojas i P(i/n)). Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa) za t = 1/4, s težinama 27/64, 27/64, 9/64, 1/64.",
+  "bernstein.try1":
+    "Postavite pokazivač na zeleni graf B₁³ (ili odaberite P₁ tipkom Tab): maksimum mu je za t = 1/3, a pojas na krivulji pokazuje gdje P₁ najjače vuče; sada povucite P₁ i gledajte kako se taj dio pomiče.",
+  "bernstein.try2":
+    "Povucite oznaku na grafu (ili pritisnite Pokreni): težine se mijenjaju, ali redak Zbroj u tablici uvijek pokazuje 1. Usporedite dva srednja stupca: Bᵢⁿ(t) jednako je Bₙ₋ᵢⁿ(1 − t) (simetrija).",
+  "bernstein.try3":
+    "Pritisnite + da dodate kontrolne točke: grafovi postaju uži i niži, svaki i dalje s vrhom u i/n, pa svaka točka djeluje lokalnije.",
   "subdivision.title": "Podjela",
-  "subdivision.summary": "Podijelite Bézierovu krivulju u t₀ na dvije Bézierove krivulje: njihovi su kontrolni poligoni bridovi de Casteljauova trokuta; ponovljeno raspolavljanje konvergira prema krivulji.",
-  "subdivision.aria": "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) podijeljena u t₀ = {t} na lijevi poligon L₀…L{n} i desni poligon R₀…R{n}; točka podjele ({x}, {y})",
-  "subdivision.ariaLevels": "; ponovljena podjela u 1/2, razina {k}: {polygons} poligona, ukupno kontrolnih točaka: {total}",
+  "subdivision.summary":
+    "Podijelite Bézierovu krivulju u t₀ na dvije Bézierove krivulje: njihovi su kontrolni poligoni bridovi de Casteljauova trokuta; ponovljeno raspolavljanje konvergira prema krivulji.",
+  "subdivision.aria":
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) podijeljena u t₀ = {t} na lijevi poligon L₀…L{n} i desni poligon R₀…R{n}; točka podjele ({x}, {y})",
+  "subdivision.ariaLevels":
+    "; ponovljena podjela u 1/2, razina {k}: {polygons} poligona, ukupno kontrolnih točaka: {total}",
   "subdivision.control.t": "Podjela u t₀",
   "subdivision.control.t.input": "vrijednost t₀ (decimalni broj ili razlomak poput 1/3)",
   "subdivision.control.stepBack.title": "t₀ − 1/16",
@@ -163,8 +191,10 @@ export default {
   "subdivision.control.levels": "Ponovljeno raspolavljanje: razine",
   "subdivision.control.levels.input": "Broj razina podjele u 1/2 (od 0 do 6)",
   "subdivision.control.triangle": "Prikaži de Casteljauov trokut",
-  "subdivision.levelsNote": "Razina {k}: {polygons} poligona, kontrolne točke: {total} (različite: {distinct}; susjedi dijele krajnju točku).",
-  "subdivision.levelsNote0": "Razina 0: 1 poligon (sama krivulja), kontrolne točke: {total}. Povećajte broj razina da se svaki dio iznova raspolavlja u 1/2.",
+  "subdivision.levelsNote":
+    "Razina {k}: {polygons} poligona, kontrolne točke: {total} (različite: {distinct}; susjedi dijele krajnju točku).",
+  "subdivision.levelsNote0":
+    "Razina 0: 1 poligon (sama krivulja), kontrolne točke: {total}. Povećajte broj razina da se svaki dio iznova raspolavlja u 1/2.",
   "subdivision.degree": "Stupanj n = {n} (kontrolne točke: {count})",
   "subdivision.leftLabel": "L{i}",
   "subdivision.rightLabel": "R{i}",
@@ -176,22 +206,30 @@ export default {
   "subdivision.formulaPolygons.one": "poligon",
   "subdivision.formulaPolygons.other": "poligona",
   "subdivision.formulaPoints": "kontrolnih točaka",
-  "subdivision.tableCaption": "Kontrolne točke dviju polovica za t₀ = {t}: lijeve lᵢ (gornji brid trokuta), desne rᵢ (hipotenuza)",
+  "subdivision.tableCaption":
+    "Kontrolne točke dviju polovica za t₀ = {t}: lijeve lᵢ (gornji brid trokuta), desne rᵢ (hipotenuza)",
   "subdivision.colIndex": "i",
   "subdivision.colLeft": "Lijeva polovica, na [0, t₀]",
   "subdivision.colRight": "Desna polovica, na [t₀, 1]",
   "subdivision.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "subdivision.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "subdivision.whatYouSee": "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16, 23/16).",
-  "subdivision.try1": "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) i desne točke (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
-  "subdivision.try2": "Povećajte broj razina na 3: osam poligona, već blizu krivulje; uz 5 ili 6 teško ih je razlikovati od nje.",
-  "subdivision.try3": "Povucite t₀ prema 0: lijevi se poligon steže u točku P₀, a desni postaje izvorni poligon.",
+  "subdivision.whatYouSee":
+    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16, 23/16).",
+  "subdivision.try1":
+    "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) i desne točke (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
+  "subdivision.try2":
+    "Povećajte broj razina na 3: osam poligona, već blizu krivulje; uz 5 ili 6 teško ih je razlikovati od nje.",
+  "subdivision.try3":
+    "Povucite t₀ prema 0: lijevi se poligon steže u točku P₀, a desni postaje izvorni poligon.",
   "flattening.title": "Adaptivno poravnavanje",
-  "flattening.summary": "Bézierova krivulja nacrtana kao izlomljena linija koja ostaje unutar tolerancije ε: kratki segmenti gdje se savija, dugi gdje je ravna.",
+  "flattening.summary":
+    "Bézierova krivulja nacrtana kao izlomljena linija koja ostaje unutar tolerancije ε: kratki segmenti gdje se savija, dugi gdje je ravna.",
   "flattening.tolerance": "Tolerancija ε (jedinice svijeta)",
   "flattening.tolerance.input": "tolerancija ε, od {min} do {max}",
-  "flattening.badTolerance": "tolerancija ε: „{value}” nije broj od {min} do {max}; zadržava se trenutna vrijednost",
-  "flattening.flattenFailed": "izlomljena linija nije se mogla izračunati ({message}); prikazuje se posljednja",
+  "flattening.badTolerance":
+    "tolerancija ε: „{value}” nije broj od {min} do {max}; zadržava se trenutna vrijednost",
+  "flattening.flattenFailed":
+    "izlomljena linija nije se mogla izračunati ({message}); prikazuje se posljednja",
   "flattening.band": "Prikaži pojas tolerancije (širine 2ε)",
   "flattening.presets": "Oblici",
   "flattening.preset.title": "Premjestite četiri kontrolne točke u ovaj oblik",
@@ -204,38 +242,51 @@ export default {
   "flattening.segments.other": "{count} segmenata",
   "flattening.half": "Uz ε/2 = {tolerance}: broj segmenata {count} (× {ratio}; √2 ≈ 1,41)",
   "flattening.countLabel": "broj segmenata {count} uz ε = {tolerance}",
-  "flattening.aria": "kubna Bézierova krivulja s kontrolnim točkama {points}, poravnana uz toleranciju {tolerance}: izlomljena linija, segmenata: {count} (vrhova: {vertices}); uz toleranciju {half} segmenata: {halfCount}",
+  "flattening.aria":
+    "kubna Bézierova krivulja s kontrolnim točkama {points}, poravnana uz toleranciju {tolerance}: izlomljena linija, segmenata: {count} (vrhova: {vertices}); uz toleranciju {half} segmenata: {halfCount}",
   "flattening.formula.whole": "cijela krivulja:",
   "flattening.formula.flat": "ravno: jedan segment",
   "flattening.formula.split": "podijeli",
   "flattening.formula.until": "dijeli dok svaki dio ne prođe test, zatim nacrtaj tetive:",
   "flattening.formula.segments": "segmenata",
-  "flattening.whatYouSee": "Plava kubna krivulja nacrtana je kao narančasta izlomljena linija koju biblioteka vraća za toleranciju ε: svaka je točka krivulje unutar ε od nje, pa krivulja nikad ne izlazi iz sivog pojasa širine 2ε. Test je onaj iz grčkih bilježaka (poglavlje 2 nastavnog programa, „adaptivno crtanje”): dio je dovoljno ravan kad su mu unutarnje kontrolne točke unutar ε od tetive P₀P₃; inače se dio skraćuje i ponovno testira (biblioteka raspolavlja ili udvostručuje parametarski korak svakog dijela dok test ne omeđi granicu, pa treba malo segmenata). Gdje se krivulja savija, dijelovi su kratki, gdje je gotovo ravna, dovoljna je jedna duga tetiva, a prepolovljenje ε množi broj segmenata s otprilike √2.",
-  "flattening.try1": "Povucite klizač tolerancije od 1 do 0,001 i gledajte kako se segmenti zgušnjavaju ondje gdje se krivulja najviše savija.",
-  "flattening.try2": "Pritisnite „Petlja” i „Šiljak”: kratki se segmenti skupljaju na petlji i na oštrom vrhu, a ravni krajevi dobivaju duge.",
-  "flattening.try3": "Pritisnite „Gotovo ravna”, zatim odmaknite P₁ od pravca: broj skače s nekoliko segmenata na mnogo.",
+  "flattening.whatYouSee":
+    "Plava kubna krivulja nacrtana je kao narančasta izlomljena linija koju biblioteka vraća za toleranciju ε: svaka je točka krivulje unutar ε od nje, pa krivulja nikad ne izlazi iz sivog pojasa širine 2ε. Test je onaj iz grčkih bilježaka (poglavlje 2 nastavnog programa, „adaptivno crtanje”): dio je dovoljno ravan kad su mu unutarnje kontrolne točke unutar ε od tetive P₀P₃; inače se dio skraćuje i ponovno testira (biblioteka raspolavlja ili udvostručuje parametarski korak svakog dijela dok test ne omeđi granicu, pa treba malo segmenata). Gdje se krivulja savija, dijelovi su kratki, gdje je gotovo ravna, dovoljna je jedna duga tetiva, a prepolovljenje ε množi broj segmenata s otprilike √2.",
+  "flattening.try1":
+    "Povucite klizač tolerancije od 1 do 0,001 i gledajte kako se segmenti zgušnjavaju ondje gdje se krivulja najviše savija.",
+  "flattening.try2":
+    "Pritisnite „Petlja” i „Šiljak”: kratki se segmenti skupljaju na petlji i na oštrom vrhu, a ravni krajevi dobivaju duge.",
+  "flattening.try3":
+    "Pritisnite „Gotovo ravna”, zatim odmaknite P₁ od pravca: broj skače s nekoliko segmenata na mnogo.",
   "lineIntersection.title": "Presjek krivulje i pravca",
-  "lineIntersection.summary": "Gdje pravac siječe Bézierovu krivulju, pronađeno dijeljenjem krivulje i odbacivanjem svakog pravokutnika koji pravac promašuje.",
+  "lineIntersection.summary":
+    "Gdje pravac siječe Bézierovu krivulju, pronađeno dijeljenjem krivulje i odbacivanjem svakog pravokutnika koji pravac promašuje.",
   "lineIntersection.handleA": "A",
   "lineIntersection.handleB": "B",
-  "lineIntersection.sameLinePoints": "polje „line”: dvije točke moraju biti različite, dvaput dobiveno ({x}, {y})",
-  "lineIntersection.failed": "presjeci se nisu mogli izračunati ({message}); prikazuju se posljednji",
+  "lineIntersection.sameLinePoints":
+    "polje „line”: dvije točke moraju biti različite, dvaput dobiveno ({x}, {y})",
+  "lineIntersection.failed":
+    "presjeci se nisu mogli izračunati ({message}); prikazuju se posljednji",
   "lineIntersection.depth": "Prikazana dubina rekurzije",
   "lineIntersection.depth.input": "dubina, cijeli broj od 0 do {max}",
-  "lineIntersection.badDepth": "dubina: „{value}” nije cijeli broj od 0 do {max}; zadržava se trenutna dubina",
+  "lineIntersection.badDepth":
+    "dubina: „{value}” nije cijeli broj od 0 do {max}; zadržava se trenutna dubina",
   "lineIntersection.shallower": "◀ Razina",
   "lineIntersection.shallower.title": "Prikaži razinu manje",
   "lineIntersection.deeper": "Razina ▶",
   "lineIntersection.deeper.title": "Prikaži razinu više",
-  "lineIntersection.boxes": "Dubina {depth} od {deepest}. Posjećeni pravokutnici: {visited}; sijeku pravac: {hit}; odbačeni: {pruned}. Pravokutnici se ne dijele ispod {tolerance}.",
+  "lineIntersection.boxes":
+    "Dubina {depth} od {deepest}. Posjećeni pravokutnici: {visited}; sijeku pravac: {hit}; odbačeni: {pruned}. Pravokutnici se ne dijele ispod {tolerance}.",
   "lineIntersection.none": "nema presjeka",
   "lineIntersection.count.few": "{count} presjeka",
   "lineIntersection.count.one": "{count} presjek",
   "lineIntersection.count.other": "{count} presjeka",
-  "lineIntersection.crossings": "Pravac siječe kontrolni poligon {polygon} puta, a krivulju {curve} puta: pravac nikad ne siječe krivulju češće nego njezin poligon (smanjenje varijacije).",
+  "lineIntersection.crossings":
+    "Pravac siječe kontrolni poligon {polygon} puta, a krivulju {curve} puta: pravac nikad ne siječe krivulju češće nego njezin poligon (smanjenje varijacije).",
   "lineIntersection.rootLabel": "t = {t}",
-  "lineIntersection.aria": "kubna Bézierova krivulja s kontrolnim točkama {points} i pravac kroz A = {a} i B = {b}: {result}; pravac siječe kontrolni poligon {polygon} puta; pravokutnici rekurzije prikazani do dubine {depth} od {deepest}",
-  "lineIntersection.tableCaption": "Presjeci poredani po t (svaka točka unutar {tolerance} od pravca)",
+  "lineIntersection.aria":
+    "kubna Bézierova krivulja s kontrolnim točkama {points} i pravac kroz A = {a} i B = {b}: {result}; pravac siječe kontrolni poligon {polygon} puta; pravokutnici rekurzije prikazani do dubine {depth} od {deepest}",
+  "lineIntersection.tableCaption":
+    "Presjeci poredani po t (svaka točka unutar {tolerance} od pravca)",
   "lineIntersection.tableNone": "Nema presjeka: pravac promašuje krivulju.",
   "lineIntersection.tableRoot": "korijen",
   "lineIntersection.tablePoint": "P(t)",
@@ -245,13 +296,19 @@ export default {
   "lineIntersection.formula.split": "inače podijeli u",
   "lineIntersection.formula.curve": "krivulja",
   "lineIntersection.formula.polygon": "poligon",
-  "lineIntersection.whatYouSee": "Kubna krivulja (plavo) i beskonačni pravac kroz A i B (zeleno). Pretraživanje iz grčkih bilježaka (poglavlje 2 nastavnog programa): uzmite pravokutnik oko kontrolnih točaka; ako ga pravac promašuje, nijedan dio krivulje unutar njega ne može sjeći pravac i pravokutnik se odbacuje (blijedo sivo); inače podijelite krivulju u t = 1/2 i promotrite obje polovice, dok pravokutnici (narančasti obrubi) ne budu manji od 0,001. Crveno-narančaste točke su presjeci koje vraća biblioteka (pročišćeni do 10⁻⁹ od pravca), označeni svojim t; kao što obećava svojstvo smanjenja varijacije, nikad ih nema više nego sjecišta s kontrolnim poligonom.",
-  "lineIntersection.try1": "Postavite dubinu na 0 i pritišćite „Razina ▶” korak po korak: pravokutnici daleko od pravca otpadaju, ostali se stežu na tri sjecišta.",
-  "lineIntersection.try2": "Povucite B prema gore dok pravac ne napusti krivulju: broj pada na 1, zatim na „nema presjeka”, a prvi je pravokutnik već odbačen.",
-  "lineIntersection.try3": "Povucite P₁ i P₂ da izravnate kontrolni poligon: broj sjecišta s poligonom pada, a sjecišta s krivuljom nikad ih ne premašuju.",
+  "lineIntersection.whatYouSee":
+    "Kubna krivulja (plavo) i beskonačni pravac kroz A i B (zeleno). Pretraživanje iz grčkih bilježaka (poglavlje 2 nastavnog programa): uzmite pravokutnik oko kontrolnih točaka; ako ga pravac promašuje, nijedan dio krivulje unutar njega ne može sjeći pravac i pravokutnik se odbacuje (blijedo sivo); inače podijelite krivulju u t = 1/2 i promotrite obje polovice, dok pravokutnici (narančasti obrubi) ne budu manji od 0,001. Crveno-narančaste točke su presjeci koje vraća biblioteka (pročišćeni do 10⁻⁹ od pravca), označeni svojim t; kao što obećava svojstvo smanjenja varijacije, nikad ih nema više nego sjecišta s kontrolnim poligonom.",
+  "lineIntersection.try1":
+    "Postavite dubinu na 0 i pritišćite „Razina ▶” korak po korak: pravokutnici daleko od pravca otpadaju, ostali se stežu na tri sjecišta.",
+  "lineIntersection.try2":
+    "Povucite B prema gore dok pravac ne napusti krivulju: broj pada na 1, zatim na „nema presjeka”, a prvi je pravokutnik već odbačen.",
+  "lineIntersection.try3":
+    "Povucite P₁ i P₂ da izravnate kontrolni poligon: broj sjecišta s poligonom pada, a sjecišta s krivuljom nikad ih ne premašuju.",
   "joining.title": "Spajanje dviju krivulja",
-  "joining.summary": "Dva kubna Bézierova segmenta spajaju se u spoju; pravilo (C0, C1, G1, C2) drži ih spojenima dok povlačite, a provjera javlja kontinuitet.",
-  "joining.aria": "Dva kubna Bézierova segmenta, P za t ∈ [0, 1] i Q za t ∈ [1, 2]; pravilo {rule}; provjera: {verdict}; P′(1) = {dp}, Q′(1) = {dq}",
+  "joining.summary":
+    "Dva kubna Bézierova segmenta spajaju se u spoju; pravilo (C0, C1, G1, C2) drži ih spojenima dok povlačite, a provjera javlja kontinuitet.",
+  "joining.aria":
+    "Dva kubna Bézierova segmenta, P za t ∈ [0, 1] i Q za t ∈ [1, 2]; pravilo {rule}; provjera: {verdict}; P′(1) = {dp}, Q′(1) = {dq}",
   "joining.ruleLegend": "Pravilo u spoju",
   "joining.rule.none": "nijedno (slobodno povlačenje)",
   "joining.rule.C0": "C⁰: segmenti se spajaju",
@@ -262,20 +319,27 @@ export default {
   "joining.verdict": "{c}, {g} u spoju",
   "joining.verdict.broken": "nije ni C⁰: segmenti se ne spajaju",
   "joining.verdict.infinite": "C∞: jedan polinom",
-  "joining.legend.none": "Ništa se ne nameće: svaka se točka pomiče zasebno, a provjera javlja što je god spoj postao.",
-  "joining.legend.C0": "Kvadratić označava točku koju postavlja pravilo: Q₀ = P₃. Povucite je i P₃ je slijedi.",
-  "joining.legend.C1": "Kvadratići označavaju točke koje postavlja pravilo: Q₀ = P₃ i Q₁ = 2P₃ − P₂ (P₂ zrcaljena u spoju). Povucite kvadratić i umjesto njega slijedi lijevi segment.",
-  "joining.legend.G1": "Kvadratići označavaju točke koje postavlja pravilo: Q₀ = P₃ i Q₁ na polupravcu iz P₂ kroz P₃. Q₁ klizi samo duž tog pravca: udaljenost joj je slobodna, pa brzina može skočiti.",
-  "joining.legend.C2": "Kvadratići označavaju točke koje postavlja pravilo: Q₀, Q₁ i Q₂ = P₁ − 4P₂ + 4P₃. Produljene stranice P₁P₂ i Q₂Q₁ sijeku se u jednoj točki D (A-okvir).",
+  "joining.legend.none":
+    "Ništa se ne nameće: svaka se točka pomiče zasebno, a provjera javlja što je god spoj postao.",
+  "joining.legend.C0":
+    "Kvadratić označava točku koju postavlja pravilo: Q₀ = P₃. Povucite je i P₃ je slijedi.",
+  "joining.legend.C1":
+    "Kvadratići označavaju točke koje postavlja pravilo: Q₀ = P₃ i Q₁ = 2P₃ − P₂ (P₂ zrcaljena u spoju). Povucite kvadratić i umjesto njega slijedi lijevi segment.",
+  "joining.legend.G1":
+    "Kvadratići označavaju točke koje postavlja pravilo: Q₀ = P₃ i Q₁ na polupravcu iz P₂ kroz P₃. Q₁ klizi samo duž tog pravca: udaljenost joj je slobodna, pa brzina može skočiti.",
+  "joining.legend.C2":
+    "Kvadratići označavaju točke koje postavlja pravilo: Q₀, Q₁ i Q₂ = P₁ − 4P₂ + 4P₃. Produljene stranice P₁P₂ i Q₂Q₁ sijeku se u jednoj točki D (A-okvir).",
   "joining.free.none": "Slobodne: svih osam točaka.",
   "joining.free.C0": "Slobodne: P₀, P₁, P₂, Q₁, Q₂, Q₃ i spoj.",
   "joining.free.C1": "Slobodne: P₀, P₁, Q₂, Q₃, spoj i jedna od P₂, Q₁.",
   "joining.free.G1": "Slobodne: P₀, P₁, P₂, Q₂, Q₃, spoj i duljina Q₀Q₁.",
-  "joining.free.C2": "Za dvije kubne krivulje C² ostavlja donekle slobodnima samo P₀ i Q₃: P₁, P₂ i spoj određuju Q₁ i Q₂.",
+  "joining.free.C2":
+    "Za dvije kubne krivulje C² ostavlja donekle slobodnima samo P₀ i Q₃: P₁, P₂ i spoj određuju Q₁ i Q₂.",
   "joining.leftArrow": "P′(1)",
   "joining.rightArrow": "Q′(1)",
   "joining.pointD": "D",
-  "joining.arrowCaption": "Strelice: brzina P′(1) koja dolazi u spoj i Q′(1) koja iz njega izlazi, nacrtane na 1/6 duljine",
+  "joining.arrowCaption":
+    "Strelice: brzina P′(1) koja dolazi u spoj i Q′(1) koja iz njega izlazi, nacrtane na 1/6 duljine",
   "joining.tableCaption": "U spoju t = 1 (derivacije iz jezgre, P na [0, 1], Q na [1, 2])",
   "joining.row.p3-p2": "P₃ − P₂",
   "joining.row.q1-q0": "Q₁ − Q₀",
@@ -283,18 +347,24 @@ export default {
   "joining.row.dq": "Q′(1)",
   "joining.row.ddp": "P″(1)",
   "joining.row.ddq": "Q″(1)",
-  "joining.formula.none": "Bez pravila: provjera uspoređuje P(1), P′(1), P″(1) s Q(1), Q′(1), Q″(1)",
+  "joining.formula.none":
+    "Bez pravila: provjera uspoređuje P(1), P′(1), P″(1) s Q(1), Q′(1), Q″(1)",
   "joining.formula.rule": "pravilo:",
   "joining.formula.anyLength": "bilo koja duljina",
   "joining.formula.notG1": "smjerovi tangenti se razlikuju (ili se segmenti ne spajaju)",
   "joining.formula.checker": "provjera:",
   "joining.formula.notC0": "nije C⁰",
-  "joining.whatYouSee": "Dva kubna Bézierova segmenta: P (plavo) za t ∈ [0, 1] i Q (zeleno) za t ∈ [1, 2], spojena u P₃ = Q₀. Odabrano pravilo iz poglavlja 2 nastavnog programa (grčke bilješke) održava se dok povlačite: točke koje ono određuje (kvadratići) slijede, a provjera kontinuiteta iz poglavlja 1 javlja kakav je spoj zapravo. Dvije strelice su brzine koje dolaze u spoj i izlaze iz njega: za C¹ su jednake, za G¹ samo imaju isti smjer. Za dvije kubne krivulje C² ostavlja donekle slobodnima samo P₀ i Q₃.",
-  "joining.try1": "Uz C¹ povucite P₂ i gledajte kako je Q₁ zrcali kroz spoj; zatim odaberite G¹ i pomičite Q₁ duž iscrtkanog pravca: provjera pada na C⁰, G¹ jer strelice dobivaju različite duljine.",
-  "joining.try2": "Odaberite „nijedno” i odmaknite Q₀ spoja od P₃: provjera javlja da se segmenti ni ne spajaju.",
-  "joining.try3": "Odaberite C² i povucite P₁: Q₂ se pomiče zajedno s njom preko točke A-okvira D, a samo P₀ i Q₃ ostaju gdje ste ih postavili.",
+  "joining.whatYouSee":
+    "Dva kubna Bézierova segmenta: P (plavo) za t ∈ [0, 1] i Q (zeleno) za t ∈ [1, 2], spojena u P₃ = Q₀. Odabrano pravilo iz poglavlja 2 nastavnog programa (grčke bilješke) održava se dok povlačite: točke koje ono određuje (kvadratići) slijede, a provjera kontinuiteta iz poglavlja 1 javlja kakav je spoj zapravo. Dvije strelice su brzine koje dolaze u spoj i izlaze iz njega: za C¹ su jednake, za G¹ samo imaju isti smjer. Za dvije kubne krivulje C² ostavlja donekle slobodnima samo P₀ i Q₃.",
+  "joining.try1":
+    "Uz C¹ povucite P₂ i gledajte kako je Q₁ zrcali kroz spoj; zatim odaberite G¹ i pomičite Q₁ duž iscrtkanog pravca: provjera pada na C⁰, G¹ jer strelice dobivaju različite duljine.",
+  "joining.try2":
+    "Odaberite „nijedno” i odmaknite Q₀ spoja od P₃: provjera javlja da se segmenti ni ne spajaju.",
+  "joining.try3":
+    "Odaberite C² i povucite P₁: Q₂ se pomiče zajedno s njom preko točke A-okvira D, a samo P₀ i Q₃ ostaju gdje ste ih postavili.",
   "bezierProperties.title": "Svojstva Bézierovih krivulja",
-  "bezierProperties.summary": "Konveksna ljuska, afina invarijantnost, simetrija, povećanje stupnja i smanjenje varijacije, svako prikazano na jednoj krivulji koju možete povlačiti.",
+  "bezierProperties.summary":
+    "Konveksna ljuska, afina invarijantnost, simetrija, povećanje stupnja i smanjenje varijacije, svako prikazano na jednoj krivulji koju možete povlačiti.",
   "bezierProperties.propertyLegend": "Svojstvo",
   "bezierProperties.property.hull": "Konveksna ljuska",
   "bezierProperties.property.affine": "Afino preslikavanje",
@@ -317,11 +387,16 @@ export default {
   "bezierProperties.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "bezierProperties.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "bezierProperties.degree": "Stupanj n = {n} (kontrolne točke: {count})",
-  "bezierProperties.note.hull": "Sivo područje je konveksna ljuska kontrolnih točaka: svaka je točka krivulje njihova težinska sredina, s težinama ≥ 0 čiji je zbroj 1.",
-  "bezierProperties.note.affine": "Zeleno: krivulja preslikanih kontrolnih točaka (izgrađena u jezgri). Crvene točkice: točke plave krivulje preslikane jedna po jedna istom matricom. Leže na zelenoj krivulji.",
-  "bezierProperties.note.reversed": "Narančasto, iscrtkano: krivulja kontrolnih točaka u obrnutom poretku Pₙ … P₀. Iste točke, suprotan smjer (strelice).",
-  "bezierProperties.note.elevation": "Narančasto: kontrolni poligon nakon povećanja stupnja. Ista krivulja, jedna točka više po povećanju; poligon se primiče krivulji.",
-  "bezierProperties.note.variation": "Povucite A i B da pomaknete pravac: nikad ne siječe krivulju češće nego kontrolni poligon.",
+  "bezierProperties.note.hull":
+    "Sivo područje je konveksna ljuska kontrolnih točaka: svaka je točka krivulje njihova težinska sredina, s težinama ≥ 0 čiji je zbroj 1.",
+  "bezierProperties.note.affine":
+    "Zeleno: krivulja preslikanih kontrolnih točaka (izgrađena u jezgri). Crvene točkice: točke plave krivulje preslikane jedna po jedna istom matricom. Leže na zelenoj krivulji.",
+  "bezierProperties.note.reversed":
+    "Narančasto, iscrtkano: krivulja kontrolnih točaka u obrnutom poretku Pₙ … P₀. Iste točke, suprotan smjer (strelice).",
+  "bezierProperties.note.elevation":
+    "Narančasto: kontrolni poligon nakon povećanja stupnja. Ista krivulja, jedna točka više po povećanju; poligon se primiče krivulji.",
+  "bezierProperties.note.variation":
+    "Povucite A i B da pomaknete pravac: nikad ne siječe krivulju češće nego kontrolni poligon.",
   "bezierProperties.readout.hull": "Ljuska, vrhovi: {k} ({names})",
   "bezierProperties.readout.affine": "Najveći razmak: {d}",
   "bezierProperties.readout.reversed": "Najveći razmak: {d}",
@@ -335,19 +410,31 @@ export default {
   "bezierProperties.formula.points": "kontrolne točke",
   "bezierProperties.formula.lineCurve": "pravac ∩ krivulja",
   "bezierProperties.formula.linePolygon": "pravac ∩ poligon",
-  "bezierProperties.tableCaption": "Nakon jednog povećanja: stupanj {n} → {m}, kontrolne točke Q₀ … Q{last}",
-  "bezierProperties.aria.hull": "{kind} Bézierova krivulja unutar konveksne ljuske svojih kontrolnih točaka (vrhova ljuske: {k})",
-  "bezierProperties.aria.affine": "{kind} Bézierova krivulja i njezina slika uz rotaciju {rotation}°, skaliranje {scale}, smicanje {shear}; preslikane točke krivulje leže na preslikanoj krivulji (najveći razmak {d})",
-  "bezierProperties.aria.reversed": "{kind} Bézierova krivulja i krivulja njezinih obrnutih kontrolnih točaka nacrtana iscrtkano preko nje (najveći razmak {d})",
-  "bezierProperties.aria.elevation": "{kind} Bézierova krivulja nakon povećanja stupnja ({e}): kontrolne točke: {count}, ista krivulja",
-  "bezierProperties.aria.variation": "{kind} Bézierova krivulja i pravac: pravac siječe kontrolni poligon {k} puta, a krivulju {j} puta",
-  "bezierProperties.whatYouSee": "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
-  "bezierProperties.try1": "Odaberite „Afino preslikavanje” i pomičite klizač smicanja: crvene točkice (preslikane točke krivulje) ostaju na zelenoj krivulji (izgrađenoj od preslikanih kontrolnih točaka).",
-  "bezierProperties.try2": "Odaberite „Povećanje stupnja” i povećajte broj na 8: narančasti poligon ima 12 točaka i prianja uz krivulju.",
-  "bezierProperties.try3": "Odaberite „Smanjenje varijacije” i povucite A i B tako da pravac siječe poligon što češće: krivulja se siječe najviše toliko puta.",
+  "bezierProperties.tableCaption":
+    "Nakon jednog povećanja: stupanj {n} → {m}, kontrolne točke Q₀ … Q{last}",
+  "bezierProperties.aria.hull":
+    "{kind} Bézierova krivulja unutar konveksne ljuske svojih kontrolnih točaka (vrhova ljuske: {k})",
+  "bezierProperties.aria.affine":
+    "{kind} Bézierova krivulja i njezina slika uz rotaciju {rotation}°, skaliranje {scale}, smicanje {shear}; preslikane točke krivulje leže na preslikanoj krivulji (najveći razmak {d})",
+  "bezierProperties.aria.reversed":
+    "{kind} Bézierova krivulja i krivulja njezinih obrnutih kontrolnih točaka nacrtana iscrtkano preko nje (najveći razmak {d})",
+  "bezierProperties.aria.elevation":
+    "{kind} Bézierova krivulja nakon povećanja stupnja ({e}): kontrolne točke: {count}, ista krivulja",
+  "bezierProperties.aria.variation":
+    "{kind} Bézierova krivulja i pravac: pravac siječe kontrolni poligon {k} puta, a krivulju {j} puta",
+  "bezierProperties.whatYouSee":
+    "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+  "bezierProperties.try1":
+    "Odaberite „Afino preslikavanje” i pomičite klizač smicanja: crvene točkice (preslikane točke krivulje) ostaju na zelenoj krivulji (izgrađenoj od preslikanih kontrolnih točaka).",
+  "bezierProperties.try2":
+    "Odaberite „Povećanje stupnja” i povećajte broj na 8: narančasti poligon ima 12 točaka i prianja uz krivulju.",
+  "bezierProperties.try3":
+    "Odaberite „Smanjenje varijacije” i povucite A i B tako da pravac siječe poligon što češće: krivulja se siječe najviše toliko puta.",
   "derivatives.title": "Derivacije i zakrivljenost",
-  "derivatives.summary": "Brzina P′(t), normala, oskulacijska kružnica i predznačena zakrivljenost Bézierove krivulje, uz njezin hodograf.",
-  "derivatives.aria": "{kind} Bézierova krivulja; t = {t}; P(t) = ({x}, {y}); brzina P′(t) = ({dx}, {dy}); zakrivljenost κ = {kappa}; hodograf je nacrtan desno",
+  "derivatives.summary":
+    "Brzina P′(t), normala, oskulacijska kružnica i predznačena zakrivljenost Bézierove krivulje, uz njezin hodograf.",
+  "derivatives.aria":
+    "{kind} Bézierova krivulja; t = {t}; P(t) = ({x}, {y}); brzina P′(t) = ({dx}, {dy}); zakrivljenost κ = {kappa}; hodograf je nacrtan desno",
   "derivatives.originLabel": "ishodište O",
   "derivatives.pointLabel": "P(t)",
   "derivatives.velocityLabel": "P′(t)",
@@ -364,7 +451,8 @@ export default {
   "derivatives.right": "desno (κ < 0: zakretanje u smjeru kazaljke na satu)",
   "derivatives.length": "Duljina luka L = {length}",
   "derivatives.degree": "Stupanj n = {n} (kontrolne točke: {count})",
-  "derivatives.minPoints": "najmanji broj kontrolnih točaka u ovoj demonstraciji je {min} (kvadratna krivulja ili višeg stupnja)",
+  "derivatives.minPoints":
+    "najmanji broj kontrolnih točaka u ovoj demonstraciji je {min} (kvadratna krivulja ili višeg stupnja)",
   "derivatives.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "derivatives.tableCaption": "Derivacije iz jezgre za t = {t} i kontrolne točke hodografa",
   "derivatives.row.point": "P(t)",
@@ -376,18 +464,24 @@ export default {
   "derivatives.row.dp1": "P′(1)",
   "derivatives.row.length": "duljina luka",
   "derivatives.row.hodograph": "H{i} = {label}",
-  "derivatives.whatYouSee": "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
-  "derivatives.try1": "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6, 6) na početku i 3(P₃ − P₂) = (6, −6) na kraju — prva i zadnja stranica poligona hodografa.",
-  "derivatives.try2": "Povucite P₂ ispod pravca P₀P₃: krivulja skreće na drugu stranu, κ mijenja predznak, a kružnica skače na drugu stranu.",
-  "derivatives.try3": "Pritisnite Pokreni i gledajte kako strelica hodografa klizi duž njegove krivulje dok tangentna strelica putuje duž krivulje: uvijek su isti vektor.",
+  "derivatives.whatYouSee":
+    "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+  "derivatives.try1":
+    "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6, 6) na početku i 3(P₃ − P₂) = (6, −6) na kraju — prva i zadnja stranica poligona hodografa.",
+  "derivatives.try2":
+    "Povucite P₂ ispod pravca P₀P₃: krivulja skreće na drugu stranu, κ mijenja predznak, a kružnica skače na drugu stranu.",
+  "derivatives.try3":
+    "Pritisnite Pokreni i gledajte kako strelica hodografa klizi duž njegove krivulje dok tangentna strelica putuje duž krivulje: uvijek su isti vektor.",
   "knotRuler.selected": "odabran uzao {label}, {u}",
   "knotRuler.moved": "uzao {label} pomaknut u {u}",
   "knotRuler.valueMultiple": "{u} (×{r})",
   "knotRuler.break": "prekid",
   "knotRuler.domain": "domena [u{p}, u{n1}] = [{a}, {b}]",
   "bsplineBasis.title": "Bazne funkcije B-krivulje",
-  "bsplineBasis.summary": "Svaka Nᵢ,ₚ iz Cox–de Boorove rekurzije, nacrtana ispod krivulje iznad ravnala uzlova koje možete povlačiti: lokalni nosač, zbroj 1 i trokut vrijednosti u u.",
-  "bsplineBasis.aria": "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; za u = {u} (interval [{a}, {b})) bazne funkcije različite od nule su {values}, zbroj {sum}; točka C(u) = ({x}, {y}); sve bazne funkcije nacrtane su ispod krivulje, iznad ravnala uzlova",
+  "bsplineBasis.summary":
+    "Svaka Nᵢ,ₚ iz Cox–de Boorove rekurzije, nacrtana ispod krivulje iznad ravnala uzlova koje možete povlačiti: lokalni nosač, zbroj 1 i trokut vrijednosti u u.",
+  "bsplineBasis.aria":
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; za u = {u} (interval [{a}, {b})) bazne funkcije različite od nule su {values}, zbroj {sum}; točka C(u) = ({x}, {y}); sve bazne funkcije nacrtane su ispod krivulje, iznad ravnala uzlova",
   "bsplineBasis.ariaContinuity": "; kontinuitet u unutarnjim uzlovima: {list}",
   "bsplineBasis.ariaSupport": "; istaknuta {name}: nosač [{a}, {b})",
   "bsplineBasis.degreeLegend": "Stupanj p",
@@ -395,13 +489,18 @@ export default {
   "bsplineBasis.control.u": "Parametar u",
   "bsplineBasis.control.u.input": "vrijednost u iz domene (decimalni broj ili razlomak poput 5/2)",
   "bsplineBasis.sumNote": "Σ Nᵢ,ₚ({u}) = {sum}",
-  "bsplineBasis.knotNote": "Kontrolne točke: {count}, stupanj p = {p}: uzlovi u₀ … u{last}, njih {m} (m + 1 = n + p + 2). Promjena stupnja ili broja točaka vraća uzlove na stegnuti uniformni vektor.",
+  "bsplineBasis.knotNote":
+    "Kontrolne točke: {count}, stupanj p = {p}: uzlovi u₀ … u{last}, njih {m} (m + 1 = n + p + 2). Promjena stupnja ili broja točaka vraća uzlove na stegnuti uniformni vektor.",
   "bsplineBasis.resetKnots": "Stegnuti uniformni uzlovi",
-  "bsplineBasis.resetKnots.title": "Zamijenite uzlove s p + 1 jednakih krajnjih uzlova i jednoliko razmaknutim unutarnjim uzlovima",
-  "bsplineBasis.rulerHelp": "Ravnalo uzlova (ispod grafa): povucite uzao — ne može prijeći susjede; dvoklikom ili tipkom Enter na njega se stapa sljedeći uzao; Delete razdvaja skupinu. Tab nakon posljednje kontrolne točke odabire uzlove.",
-  "bsplineBasis.minPoints": "B-krivulja stupnja {degree} treba najmanje ovoliko kontrolnih točaka: {min}",
+  "bsplineBasis.resetKnots.title":
+    "Zamijenite uzlove s p + 1 jednakih krajnjih uzlova i jednoliko razmaknutim unutarnjim uzlovima",
+  "bsplineBasis.rulerHelp":
+    "Ravnalo uzlova (ispod grafa): povucite uzao — ne može prijeći susjede; dvoklikom ili tipkom Enter na njega se stapa sljedeći uzao; Delete razdvaja skupinu. Tab nakon posljednje kontrolne točke odabire uzlove.",
+  "bsplineBasis.minPoints":
+    "B-krivulja stupnja {degree} treba najmanje ovoliko kontrolnih točaka: {min}",
   "bsplineBasis.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "bsplineBasis.fewPoints": "polje „points”: B-krivulja stupnja {p} treba najmanje ovoliko kontrolnih točaka: {need}, dobiveno {count}",
+  "bsplineBasis.fewPoints":
+    "polje „points”: B-krivulja stupnja {p} treba najmanje ovoliko kontrolnih točaka: {need}, dobiveno {count}",
   "bsplineBasis.uRange": "polje „u” mora ležati u domeni [{a}, {b}], dobiveno {u}",
   "bsplineBasis.multiplicity.max": "u{i} već ima najveću višestrukost, p + 1 = {max}",
   "bsplineBasis.multiplicity.ends": "nije preostao nijedan unutarnji uzao koji bi se stopio s u{i}",
@@ -412,23 +511,31 @@ export default {
   "bsplineBasis.axisValue1": "1",
   "bsplineBasis.axisU": "u",
   "bsplineBasis.formulaOtherwise": "inače",
-  "bsplineBasis.tableCaption": "Bazne funkcije stupnja {p} za u = {u} (postavite pokazivač na redak ili ga fokusirajte da istaknete njegov nosač)",
+  "bsplineBasis.tableCaption":
+    "Bazne funkcije stupnja {p} za u = {u} (postavite pokazivač na redak ili ga fokusirajte da istaknete njegov nosač)",
   "bsplineBasis.colFunction": "Bazna funkcija",
   "bsplineBasis.colSupport": "Nosač [uᵢ, uᵢ₊ₚ₊₁)",
   "bsplineBasis.colValue": "Nᵢ,ₚ(u)",
   "bsplineBasis.rowName": "{name}, težina točke {point}",
   "bsplineBasis.supportCell": "[u{i}, u{j}) = [{a}, {b})",
   "bsplineBasis.sumRow": "Zbroj",
-  "bsplineBasis.triangleCaption": "Cox–de Boorov trokut za u = {u}: interval k = {k}, [u{kSub}, u{k1Sub}) = [{a}, {b}); redak r sadrži vrijednosti stupnja r za i = k − r … k, svaku izračunatu iz dviju iznad nje",
+  "bsplineBasis.triangleCaption":
+    "Cox–de Boorov trokut za u = {u}: interval k = {k}, [u{kSub}, u{k1Sub}) = [{a}, {b}); redak r sadrži vrijednosti stupnja r za i = k − r … k, svaku izračunatu iz dviju iznad nje",
   "bsplineBasis.triangleCorner": "stupanj r",
   "bsplineBasis.triangleRow": "r = {r}",
-  "bsplineBasis.whatYouSee": "B-krivulja (plavo) iznad svojeg kontrolnog poligona; ispod nje grafovi njezinih baznih funkcija Nᵢ,ₚ(u), svaki u boji prstena oko svoje kontrolne točke Pᵢ; ispod grafa ravnalo uzlova s uzlovima u₀ … u_m i domenom [uₚ, uₙ₊₁] (plava traka). Točka C(u) zbroj je točaka Pᵢ težinski uzetih s vrijednostima u kojima oznaka siječe grafove: najviše p + 1 njih različito je od nule i zbroj im je uvijek 1. Svaka je Nᵢ,ₚ jednaka nuli izvan svojeg nosača [uᵢ, uᵢ₊ₚ₊₁), pa Pᵢ pomiče samo taj dio krivulje. Početak je kvadratni primjer iz hrvatskih bilježaka (poglavlje 3 nastavnog programa): U = [0, 0, 0, 1, 2, 3, 4, 4, 4], gdje su za u = 5/2 vrijednosti 1/8, 3/4, 1/8 — ondje je N₃,₂ = (−2u² + 10u − 11)/2 (u bilješkama je tiskarska pogreška +11).",
-  "bsplineBasis.try1": "Postavite pokazivač na ljubičasti graf N₂,₂ (ili odaberite P₂ tipkom Tab): njegov je nosač [0, 3) osjenčan, a povlačenje P₂ pomiče samo taj dio krivulje.",
-  "bsplineBasis.try2": "Povucite u₄ (uzao u 2) na ravnalu prema u₅: grafovi oko njega se rastežu i stišću, zaustavlja se u 3, a oznaka iznad njega mijenja se iz C¹ u C⁰ kad se dva uzla spoje — ili dvoklikom na u₄ stopite ih u jednom koraku.",
-  "bsplineBasis.try3": "Odaberite stupanj 3: uzlovi postaju [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], svaki se graf širi na četiri intervala, a trokut dobiva redak više — zbroj je i dalje 1.",
+  "bsplineBasis.whatYouSee":
+    "B-krivulja (plavo) iznad svojeg kontrolnog poligona; ispod nje grafovi njezinih baznih funkcija Nᵢ,ₚ(u), svaki u boji prstena oko svoje kontrolne točke Pᵢ; ispod grafa ravnalo uzlova s uzlovima u₀ … u_m i domenom [uₚ, uₙ₊₁] (plava traka). Točka C(u) zbroj je točaka Pᵢ težinski uzetih s vrijednostima u kojima oznaka siječe grafove: najviše p + 1 njih različito je od nule i zbroj im je uvijek 1. Svaka je Nᵢ,ₚ jednaka nuli izvan svojeg nosača [uᵢ, uᵢ₊ₚ₊₁), pa Pᵢ pomiče samo taj dio krivulje. Početak je kvadratni primjer iz hrvatskih bilježaka (poglavlje 3 nastavnog programa): U = [0, 0, 0, 1, 2, 3, 4, 4, 4], gdje su za u = 5/2 vrijednosti 1/8, 3/4, 1/8 — ondje je N₃,₂ = (−2u² + 10u − 11)/2 (u bilješkama je tiskarska pogreška +11).",
+  "bsplineBasis.try1":
+    "Postavite pokazivač na ljubičasti graf N₂,₂ (ili odaberite P₂ tipkom Tab): njegov je nosač [0, 3) osjenčan, a povlačenje P₂ pomiče samo taj dio krivulje.",
+  "bsplineBasis.try2":
+    "Povucite u₄ (uzao u 2) na ravnalu prema u₅: grafovi oko njega se rastežu i stišću, zaustavlja se u 3, a oznaka iznad njega mijenja se iz C¹ u C⁰ kad se dva uzla spoje — ili dvoklikom na u₄ stopite ih u jednom koraku.",
+  "bsplineBasis.try3":
+    "Odaberite stupanj 3: uzlovi postaju [0, 0, 0, 0, 1, 2, 3, 3, 3, 3], svaki se graf širi na četiri intervala, a trokut dobiva redak više — zbroj je i dalje 1.",
   "deBoor.title": "De Boorov algoritam",
-  "deBoor.summary": "Ponovljena interpolacija p + 1 aktivnih kontrolnih točaka gradi točku C(u) B-krivulje; uzlovi određuju svaki omjer α.",
-  "deBoor.aria": "{kind} B-krivulja s kontrolnim točkama (broj: {count}), uzlovi {knots}; u = {u} u intervalu k = {k}, [{uk}, {uk1}); točka C(u) = ({x}, {y})",
+  "deBoor.summary":
+    "Ponovljena interpolacija p + 1 aktivnih kontrolnih točaka gradi točku C(u) B-krivulje; uzlovi određuju svaki omjer α.",
+  "deBoor.aria":
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}), uzlovi {knots}; u = {u} u intervalu k = {k}, [{uk}, {uk1}); točka C(u) = ({x}, {y})",
   "deBoor.degree": "Stupanj p = {p}, kontrolne točke: {count}, {segments}",
   "deBoor.spans.few": "{count} neprazna intervala",
   "deBoor.spans.one": "{count} neprazan interval",
@@ -437,7 +544,8 @@ export default {
   "deBoor.spanCaption": "interval [u{k}, u{k1})",
   "deBoor.uCaption": "u = {u}",
   "deBoor.multiplicity": "×{r}",
-  "deBoor.tableCaption": "De Boorov trokut za u = {u} (interval k = {k}): redak r sadrži dⱼʳ, j = r … p, s α svojeg koraka",
+  "deBoor.tableCaption":
+    "De Boorov trokut za u = {u} (interval k = {k}): redak r sadrži dⱼʳ, j = r … p, s α svojeg koraka",
   "deBoor.tableLevel": "r = {r}",
   "deBoor.alphaCell": "α = {value}",
   "deBoor.pointLabel": "C(u)",
@@ -448,32 +556,46 @@ export default {
   "deBoor.control.degree": "Stupanj p",
   "deBoor.control.degree.input": "stupanj p (od 1 do 5)",
   "deBoor.control.knots": "Vektor uzlova U (upišite i pritisnite Enter)",
-  "deBoor.knotsHelp": "Broj nepadajućih uzlova: {m} (točke: {count}, stupanj {p}; m + 1 = n + p + 2).",
+  "deBoor.knotsHelp":
+    "Broj nepadajućih uzlova: {m} (točke: {count}, stupanj {p}; m + 1 = n + p + 2).",
   "deBoor.control.clamped": "Stegnuti uniformni uzlovi",
   "deBoor.control.clamped.title": "p + 1 jednakih uzlova na svakom kraju, između njih 1, 2, …",
-  "deBoor.control.addPoint.title": "Dodajte točku iza odabrane (+); uzlovi postaju stegnuti uniformni",
-  "deBoor.control.removePoint.title": "Uklonite odabranu točku (Delete); uzlovi postaju stegnuti uniformni",
+  "deBoor.control.addPoint.title":
+    "Dodajte točku iza odabrane (+); uzlovi postaju stegnuti uniformni",
+  "deBoor.control.removePoint.title":
+    "Uklonite odabranu točku (Delete); uzlovi postaju stegnuti uniformni",
   "deBoor.knotsReset": "Vektor uzlova vraćen je na stegnuti uniformni za nove točke ili stupanj.",
   "deBoor.degreeRange": "stupanj mora biti cijeli broj od 1 do {max}, dobiveno „{value}”",
   "deBoor.minPoints": "najmanji broj kontrolnih točaka B-krivulje ovdje je {min}",
   "deBoor.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "deBoor.error.degree": "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
-  "deBoor.error.knotCount": "polje „knots” mora imati n + p + 2 = {expected} elemenata za točke ({count}) stupnja {p}, dobiveno {got}",
-  "deBoor.error.knotOrder": "polje „knots” ne smije padati: element {index} je {value} nakon {previous}",
-  "deBoor.error.multiplicity": "polje „knots”: uzao {value} pojavljuje se više od p + 1 = {max} puta",
+  "deBoor.error.degree":
+    "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
+  "deBoor.error.knotCount":
+    "polje „knots” mora imati n + p + 2 = {expected} elemenata za točke ({count}) stupnja {p}, dobiveno {got}",
+  "deBoor.error.knotOrder":
+    "polje „knots” ne smije padati: element {index} je {value} nakon {previous}",
+  "deBoor.error.multiplicity":
+    "polje „knots”: uzao {value} pojavljuje se više od p + 1 = {max} puta",
   "deBoor.error.domain": "polje „knots”: domena [u{p}, u{n1}] = [{a}, {b}] je prazna",
-  "deBoor.whatYouSee": "Iscrtkani sivi poligon sadrži sve kontrolne točke; sudjeluje samo p + 1 aktivnih točaka intervala koji sadrži u (puna siva linija). Svaka obojena razina interpolira prethodnu vlastitim omjerom α, očitanim iz vektora uzlova, dok ne ostane jedna točka C(u) — de Boorov algoritam iz poglavlja 3 nastavnog programa (konvencija hrvatskih i talijanskih bilježaka). Uz uzlove 0 0 0 0 1 1 1 1 svaki je α jednak u i to je de Casteljauova konstrukcija.",
-  "deBoor.try1": "Pritisnite Pokreni i gledajte kako aktivne točke skaču kad u prijeđe uzao na traci ispod slike.",
-  "deBoor.try2": "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) završava u (29/16, 23/16)).",
-  "deBoor.try3": "Upišite ponovljeni unutarnji uzao, npr. 0 0 0 0 1 2 2 4 4 4 4: neki α postaju 0 ili 1, a krivulja prolazi bliže kontrolnoj točki.",
+  "deBoor.whatYouSee":
+    "Iscrtkani sivi poligon sadrži sve kontrolne točke; sudjeluje samo p + 1 aktivnih točaka intervala koji sadrži u (puna siva linija). Svaka obojena razina interpolira prethodnu vlastitim omjerom α, očitanim iz vektora uzlova, dok ne ostane jedna točka C(u) — de Boorov algoritam iz poglavlja 3 nastavnog programa (konvencija hrvatskih i talijanskih bilježaka). Uz uzlove 0 0 0 0 1 1 1 1 svaki je α jednak u i to je de Casteljauova konstrukcija.",
+  "deBoor.try1":
+    "Pritisnite Pokreni i gledajte kako aktivne točke skaču kad u prijeđe uzao na traci ispod slike.",
+  "deBoor.try2":
+    "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) završava u (29/16, 23/16)).",
+  "deBoor.try3":
+    "Upišite ponovljeni unutarnji uzao, npr. 0 0 0 0 1 2 2 4 4 4 4: neki α postaju 0 ili 1, a krivulja prolazi bliže kontrolnoj točki.",
   "knotVectors.title": "Vrste vektora uzlova",
-  "knotVectors.summary": "Jedan kontrolni poligon, tri vektora uzlova: stegnute krivulje počinju u P₀, nestegnute ne, a zatvorene se glatko vraćaju na početak.",
-  "knotVectors.aria": "{kind} B-krivulje na istim kontrolnim točkama (broj: {count}): stegnuti uzlovi {clamped}, stegnuta krivulja počinje u {c0}; nestegnuta uniformna krivulja počinje u {u0}; P₀ = {p0}; zatvorena krivulja prolazi kroz ciklus točaka",
+  "knotVectors.summary":
+    "Jedan kontrolni poligon, tri vektora uzlova: stegnute krivulje počinju u P₀, nestegnute ne, a zatvorene se glatko vraćaju na početak.",
+  "knotVectors.aria":
+    "{kind} B-krivulje na istim kontrolnim točkama (broj: {count}): stegnuti uzlovi {clamped}, stegnuta krivulja počinje u {c0}; nestegnuta uniformna krivulja počinje u {u0}; P₀ = {p0}; zatvorena krivulja prolazi kroz ciklus točaka",
   "knotVectors.degree": "Stupanj p = {p}, kontrolne točke: {count}",
   "knotVectors.degreeRange": "stupanj mora biti cijeli broj od 1 do {max}, dobiveno „{value}”",
   "knotVectors.minPoints": "najmanji broj kontrolnih točaka B-krivulje ovdje je {min}",
   "knotVectors.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
-  "knotVectors.error.degree": "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
+  "knotVectors.error.degree":
+    "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
   "knotVectors.control.degree": "Stupanj p",
   "knotVectors.control.degree.input": "stupanj p (od 1 do 5)",
   "knotVectors.control.spacing": "Unutarnji uzlovi stegnutog vektora",
@@ -498,7 +620,8 @@ export default {
   "knotVectors.column.domain": "Domena [uₚ, uₙ₊₁]",
   "knotVectors.column.start": "Početak C(uₚ)",
   "knotVectors.column.end": "Kraj C(uₙ₊₁)",
-  "knotVectors.tableCaption": "Vektori uzlova kako ih gradi jezgra te gdje svaka krivulja počinje i završava",
+  "knotVectors.tableCaption":
+    "Vektori uzlova kako ih gradi jezgra te gdje svaka krivulja počinje i završava",
   "knotVectors.tex.clamped": "stegnuta",
   "knotVectors.tex.chord": "tetive",
   "knotVectors.tex.centripetal": "centripetalna",
@@ -508,19 +631,25 @@ export default {
   "knotVectors.tex.seam": "na šavu",
   "knotVectors.tex.lastRepeated": "zadnji p + 1 puta",
   "knotVectors.tex.legs": "članovi:",
-  "knotVectors.whatYouSee": "Iste kontrolne točke nose tri B-krivulje istog stupnja. Stegnuti (otvoreni) uzlovi ponavljaju krajnje vrijednosti p + 1 puta, pa ta krivulja počinje u P₀ i završava u Pₙ; jednoliko razmaknuti nestegnuti uzlovi daju krivulju koja počinje i završava unutar poligona; zatvorena krivulja ponavlja prvih p točaka nakon posljednje, pa se zatvara s punim kontinuitetom C^(p−1) na šavu (na intervalima gdje koristi iste točke kao nestegnuta krivulja, dvije se podudaraju: točkice preko crtica). Razmak po duljini tetiva i centripetalni razmak pomiču unutarnje uzlove razmjerno stranicama poligona — poglavlje 3 nastavnog programa, prema grčkim i hrvatskim bilješkama.",
-  "knotVectors.try1": "Postavite stupanj na 1: svaka krivulja postaje poligon (zatvorena sa svojom zatvarajućom stranicom); povećajte ga na 5 i gledajte kako se nestegnuta i zatvorena krivulja skupljaju unutar poligona.",
-  "knotVectors.try2": "Odaberite duljinu tetiva i odvucite P₂ daleko: unutarnji uzlovi u tablici rastu sa susjednim stranicama.",
-  "knotVectors.try3": "Povucite P₀: početak stegnute krivulje točno je slijedi, a početak nestegnute pomiče se samo za šestinu pomaka (za kubnu krivulju).",
+  "knotVectors.whatYouSee":
+    "Iste kontrolne točke nose tri B-krivulje istog stupnja. Stegnuti (otvoreni) uzlovi ponavljaju krajnje vrijednosti p + 1 puta, pa ta krivulja počinje u P₀ i završava u Pₙ; jednoliko razmaknuti nestegnuti uzlovi daju krivulju koja počinje i završava unutar poligona; zatvorena krivulja ponavlja prvih p točaka nakon posljednje, pa se zatvara s punim kontinuitetom C^(p−1) na šavu (na intervalima gdje koristi iste točke kao nestegnuta krivulja, dvije se podudaraju: točkice preko crtica). Razmak po duljini tetiva i centripetalni razmak pomiču unutarnje uzlove razmjerno stranicama poligona — poglavlje 3 nastavnog programa, prema grčkim i hrvatskim bilješkama.",
+  "knotVectors.try1":
+    "Postavite stupanj na 1: svaka krivulja postaje poligon (zatvorena sa svojom zatvarajućom stranicom); povećajte ga na 5 i gledajte kako se nestegnuta i zatvorena krivulja skupljaju unutar poligona.",
+  "knotVectors.try2":
+    "Odaberite duljinu tetiva i odvucite P₂ daleko: unutarnji uzlovi u tablici rastu sa susjednim stranicama.",
+  "knotVectors.try3":
+    "Povucite P₀: početak stegnute krivulje točno je slijedi, a početak nestegnute pomiče se samo za šestinu pomaka (za kubnu krivulju).",
   "localControl.title": "Lokalni nadzor i jaka konveksna ljuska",
-  "localControl.summary": "Pomicanje jedne kontrolne točke B-krivulje mijenja samo p + 1 intervala; svaki interval ostaje unutar ljuske svojih p + 1 aktivnih točaka.",
+  "localControl.summary":
+    "Pomicanje jedne kontrolne točke B-krivulje mijenja samo p + 1 intervala; svaki interval ostaje unutar ljuske svojih p + 1 aktivnih točaka.",
   "localControl.control.u": "Parametar u",
   "localControl.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 5/2)",
   "localControl.control.point": "Istakni doseg Pᵢ, i =",
   "localControl.control.point.input": "indeks i točke čiji se doseg prikazuje",
   "localControl.control.degree": "Stupanj p",
   "localControl.control.degree.input": "stupanj p (od 1 do 5)",
-  "localControl.error.tooFewPoints": "polje „points”: stupanj {p} treba najmanje ovoliko kontrolnih točaka: {min}, dobiveno {count}",
+  "localControl.error.tooFewPoints":
+    "polje „points”: stupanj {p} treba najmanje ovoliko kontrolnih točaka: {min}, dobiveno {count}",
   "localControl.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "localControl.pointLabel": "C(u)",
   "localControl.formula.only": "samo se ovaj dio pomiče s",
@@ -528,100 +657,136 @@ export default {
   "localControl.formula.vertices.one": "vrh ljuske",
   "localControl.formula.vertices.other": "vrhova ljuske",
   "localControl.readout.span": "Interval k = {k}: {names}",
-  "localControl.readout.hull.few": "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrha) sadrži cijeli ovaj dio krivulje.",
-  "localControl.readout.hull.one": "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrh) sadrži cijeli ovaj dio krivulje.",
-  "localControl.readout.hull.other": "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrhova) sadrži cijeli ovaj dio krivulje.",
-  "localControl.readout.support": "Pomicanje točke {name} mijenja C(u) samo za u ∈ [{lo}, {hi}; ostatak krivulje ostaje na mjestu.",
-  "localControl.aria": "stegnuta {kind} B-krivulja s kontrolnim točkama (broj: {count}); {name} pomiče samo dio za u ∈ [{lo}, {hi}; u = {u} leži u intervalu {k}, aktivne točke {names}, ljuska s {hull}; točka C(u) = ({x}, {y})",
+  "localControl.readout.hull.few":
+    "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrha) sadrži cijeli ovaj dio krivulje.",
+  "localControl.readout.hull.one":
+    "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrh) sadrži cijeli ovaj dio krivulje.",
+  "localControl.readout.hull.other":
+    "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrhova) sadrži cijeli ovaj dio krivulje.",
+  "localControl.readout.support":
+    "Pomicanje točke {name} mijenja C(u) samo za u ∈ [{lo}, {hi}; ostatak krivulje ostaje na mjestu.",
+  "localControl.aria":
+    "stegnuta {kind} B-krivulja s kontrolnim točkama (broj: {count}); {name} pomiče samo dio za u ∈ [{lo}, {hi}; u = {u} leži u intervalu {k}, aktivne točke {names}, ljuska s {hull}; točka C(u) = ({x}, {y})",
   "localControl.vertices.few": "{count} vrha",
   "localControl.vertices.one": "{count} vrhom",
   "localControl.vertices.other": "{count} vrhova",
-  "localControl.tableCaption": "Sve bazne funkcije za u = {u} (stupanj {p}): samo istaknutih p + 1 redaka različito je od nule",
+  "localControl.tableCaption":
+    "Sve bazne funkcije za u = {u} (stupanj {p}): samo istaknutih p + 1 redaka različito je od nule",
   "localControl.table.point": "točka",
   "localControl.table.value": "Nᵢ,{p}(u)",
   "localControl.table.support": "različita od nule za u ∈",
-  "localControl.whatYouSee": "Stegnuta kubna B-krivulja (plavo), njezin kontrolni poligon (sivo, iscrtkano) i, ispod slike, njezini uzlovi kao crtice na pravcu parametra. Obojeni pojas označava dio krivulje koji zaokružena točka P_i može pomaknuti: parametre [u_i, u_{i+p+1}) gdje njezina bazna funkcija N_i,p nije nula; izvan njega krivulja se uopće ne pomiče (lokalni nadzor, poglavlje 3 nastavnog programa; hrvatske bilješke: pomak jedne točke utječe najviše na p + 1 segmenata). Sivo ispunjeno područje je konveksna ljuska p + 1 aktivnih točaka intervala koji sadrži u: cijeli taj dio krivulje leži unutar nje (jaka konveksna ljuska), a to je znatno uže područje od ljuske cijelog poligona (obrubljeno).",
-  "localControl.try1": "Povucite P₄ i promatrajte krajeve krivulje: za u ∈ [0, 1] i [5, 6] ništa se ne pomiče, točno ondje gdje pojas prestaje.",
-  "localControl.try2": "Upišite 5/2 za u: interval je k = 5, aktivne točke su P₂ … P₅ s težinama 1/48, 23/48, 23/48, 1/48, a C(u) leži unutar njihove osjenčane ljuske.",
-  "localControl.try3": "Postavite stupanj na 1, a zatim na 5: pojas i aktivna ljuska rastu s p (p + 1 intervala, p + 1 točaka), a uz stupanj 1 krivulja je sam poligon.",
+  "localControl.whatYouSee":
+    "Stegnuta kubna B-krivulja (plavo), njezin kontrolni poligon (sivo, iscrtkano) i, ispod slike, njezini uzlovi kao crtice na pravcu parametra. Obojeni pojas označava dio krivulje koji zaokružena točka P_i može pomaknuti: parametre [u_i, u_{i+p+1}) gdje njezina bazna funkcija N_i,p nije nula; izvan njega krivulja se uopće ne pomiče (lokalni nadzor, poglavlje 3 nastavnog programa; hrvatske bilješke: pomak jedne točke utječe najviše na p + 1 segmenata). Sivo ispunjeno područje je konveksna ljuska p + 1 aktivnih točaka intervala koji sadrži u: cijeli taj dio krivulje leži unutar nje (jaka konveksna ljuska), a to je znatno uže područje od ljuske cijelog poligona (obrubljeno).",
+  "localControl.try1":
+    "Povucite P₄ i promatrajte krajeve krivulje: za u ∈ [0, 1] i [5, 6] ništa se ne pomiče, točno ondje gdje pojas prestaje.",
+  "localControl.try2":
+    "Upišite 5/2 za u: interval je k = 5, aktivne točke su P₂ … P₅ s težinama 1/48, 23/48, 23/48, 1/48, a C(u) leži unutar njihove osjenčane ljuske.",
+  "localControl.try3":
+    "Postavite stupanj na 1, a zatim na 5: pojas i aktivna ljuska rastu s p (p + 1 intervala, p + 1 točaka), a uz stupanj 1 krivulja je sam poligon.",
   "knotInsertion.title": "Umetanje uzla (Boehm) i izdvajanje Bézierovih segmenata",
-  "knotInsertion.summary": "Umetnite uzao i krivulja zadržava oblik, dok kontrolni poligon dobiva točku i približava joj se; umetnite ih dovoljno i krivulja se raspada na Bézierove segmente.",
+  "knotInsertion.summary":
+    "Umetnite uzao i krivulja zadržava oblik, dok kontrolni poligon dobiva točku i približava joj se; umetnite ih dovoljno i krivulja se raspada na Bézierove segmente.",
   "knotInsertion.control.u": "Uzao za umetanje, u",
   "knotInsertion.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 3/2)",
   "knotInsertion.control.insert": "Umetni",
-  "knotInsertion.control.insert.title": "Umetnite jedanput uzao vrijednosti u (ili kliknite krivulju)",
+  "knotInsertion.control.insert.title":
+    "Umetnite jedanput uzao vrijednosti u (ili kliknite krivulju)",
   "knotInsertion.control.refine": "Raspolovi intervale",
   "knotInsertion.control.refine.title": "Umetnite polovište svakog nepraznog intervala",
   "knotInsertion.control.reset": "Natrag na izvornu",
-  "knotInsertion.control.reset.title": "Uklonite sve umetnute uzlove (izvorne točke ostaju kakve jesu)",
+  "knotInsertion.control.reset.title":
+    "Uklonite sve umetnute uzlove (izvorne točke ostaju kakve jesu)",
   "knotInsertion.control.bezier": "Izdvoji Bézierove segmente",
-  "knotInsertion.error.tooFewPoints": "polje „points”: stupanj {p} treba najmanje ovoliko kontrolnih točaka: {min}, dobiveno {count}",
-  "knotInsertion.error.knotOrder": "polje „knots” ne smije padati (uzao {i} manji je od prethodnog)",
+  "knotInsertion.error.tooFewPoints":
+    "polje „points”: stupanj {p} treba najmanje ovoliko kontrolnih točaka: {min}, dobiveno {count}",
+  "knotInsertion.error.knotOrder":
+    "polje „knots” ne smije padati (uzao {i} manji je od prethodnog)",
   "knotInsertion.error.emptyDomain": "polje „knots”: domena [u_p, u_n+1] je prazna",
   "knotInsertion.error.insertedRange": "polje „inserted”: {value} je izvan domene [{a}, {b}]",
   "knotInsertion.outside": "u = {value} je izvan domene [{a}, {b}]",
   "knotInsertion.refused": "taj se uzao ne može umetnuti: {message}",
-  "knotInsertion.maxInserted": "ova demonstracija umeće najviše {max} uzlova; pritisnite „Natrag na izvornu” za novi početak",
+  "knotInsertion.maxInserted":
+    "ova demonstracija umeće najviše {max} uzlova; pritisnite „Natrag na izvornu” za novi početak",
   "knotInsertion.hoverLabel": "umetni u = {u}",
   "knotInsertion.formula.preview": "Umetanje bi koristilo:",
   "knotInsertion.readout": "Kontrolne točke: {count}, uzlovi: {knots}",
   "knotInsertion.segments.few": "{count} Bézierova segmenta (po jedan za svaki neprazan interval)",
   "knotInsertion.segments.one": "{count} Bézierov segment (po jedan za svaki neprazan interval)",
-  "knotInsertion.segments.other": "{count} Bézierovih segmenata (po jedan za svaki neprazan interval)",
+  "knotInsertion.segments.other":
+    "{count} Bézierovih segmenata (po jedan za svaki neprazan interval)",
   "knotInsertion.segmentsOff": "Označite kućicu da se nacrta poligon svakog Bézierova segmenta.",
   "knotInsertion.knotsNow": "Uzlovi: {knots}",
-  "knotInsertion.knotsNone": "Još nije umetnut nijedan uzao: kliknite krivulju ili pritisnite Umetni.",
+  "knotInsertion.knotsNone":
+    "Još nije umetnut nijedan uzao: kliknite krivulju ili pritisnite Umetni.",
   "knotInsertion.knotsBefore": "Uzlovi prije umetanja {s}: {knots}",
   "knotInsertion.knotsAfter": "Uzlovi nakon: {knots}",
   "knotInsertion.alphasPreview": "Umetanje {s} koristilo bi {alphas}",
   "knotInsertion.alphasUsed": "korišteni α: {alphas}",
   "knotInsertion.insertedList": "Umetnuti uzlovi ({count}), redom: {knots}",
   "knotInsertion.insertedNone": "Umetnuti uzlovi: nema",
-  "knotInsertion.tableCaption": "Nove kontrolne točke nakon umetanja {s}: istaknute su nove, ostale su prepisane",
+  "knotInsertion.tableCaption":
+    "Nove kontrolne točke nakon umetanja {s}: istaknute su nove, ostale su prepisane",
   "knotInsertion.tableEmpty": "Nove kontrolne točke pojavljuju se ovdje nakon umetanja.",
-  "knotInsertion.aria": "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima (broj: {knots}) nakon umetanja u = {s} uz α = {alphas}; krivulja je nepromijenjena{segments}",
-  "knotInsertion.ariaNone": "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima (broj: {knots}); umetanje u = {s} koristilo bi α = {alphas}{segments}",
+  "knotInsertion.aria":
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima (broj: {knots}) nakon umetanja u = {s} uz α = {alphas}; krivulja je nepromijenjena{segments}",
+  "knotInsertion.ariaNone":
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima (broj: {knots}); umetanje u = {s} koristilo bi α = {alphas}{segments}",
   "knotInsertion.ariaSegments.few": "; prikazana {count} Bézierova segmenta",
   "knotInsertion.ariaSegments.one": "; prikazan {count} Bézierov segment",
   "knotInsertion.ariaSegments.other": "; prikazano {count} Bézierovih segmenata",
-  "knotInsertion.whatYouSee": "Kvadratna B-krivulja iz primjera hrvatskih bilježaka (p = 2, uzlovi 0 0 0 1 2 3 4 4 4; poglavlje 3 nastavnog programa), nakon umetanja uzla 1.5. Umetanje uzla s Boehmovim pravilom zadržava prve točke, zamjenjuje njih p točkama Qᵢ na stranicama starog poligona (u omjeru αᵢ), a ostale pomiče: krivulja (plavo) uopće se ne mijenja, ali novi poligon (tamno, nove točke crveno-narančasto) ima točku više i leži bliže njoj; stari poligon ostaje blijed. Umetanje svakog unutarnjeg uzla dok ne dobije višestrukost p daje Bézierove segmente krivulje, po jedan za svaki neprazan interval.",
-  "knotInsertion.try1": "Slika se otvara nakon umetanja u = 1.5: uzlovi su postali 0, 0, 0, 1, 1.5, 2, 3, 4, 4, 4, a α₂ = 3/4, α₃ = 1/4 sijeku stranice P₁P₂ i P₂P₃. Pritisnite „Natrag na izvornu”, zatim Umetni uz u = 1.5 da vidite kako se to događa.",
-  "knotInsertion.try2": "Kliknite krivulju na nekoliko mjesta ili triput pritisnite „Raspolovi intervale”: poligon se primiče krivulji.",
-  "knotInsertion.try3": "Označite „Izdvoji Bézierove segmente”: 5 segmenata, po jedan za svaki neprazan interval ([0,1], [1,1.5], [1.5,2], [2,3], [3,4]); ponovno umetnite 1.5 i ništa se ne dodaje jer taj interval već postoji.",
+  "knotInsertion.whatYouSee":
+    "Kvadratna B-krivulja iz primjera hrvatskih bilježaka (p = 2, uzlovi 0 0 0 1 2 3 4 4 4; poglavlje 3 nastavnog programa), nakon umetanja uzla 1.5. Umetanje uzla s Boehmovim pravilom zadržava prve točke, zamjenjuje njih p točkama Qᵢ na stranicama starog poligona (u omjeru αᵢ), a ostale pomiče: krivulja (plavo) uopće se ne mijenja, ali novi poligon (tamno, nove točke crveno-narančasto) ima točku više i leži bliže njoj; stari poligon ostaje blijed. Umetanje svakog unutarnjeg uzla dok ne dobije višestrukost p daje Bézierove segmente krivulje, po jedan za svaki neprazan interval.",
+  "knotInsertion.try1":
+    "Slika se otvara nakon umetanja u = 1.5: uzlovi su postali 0, 0, 0, 1, 1.5, 2, 3, 4, 4, 4, a α₂ = 3/4, α₃ = 1/4 sijeku stranice P₁P₂ i P₂P₃. Pritisnite „Natrag na izvornu”, zatim Umetni uz u = 1.5 da vidite kako se to događa.",
+  "knotInsertion.try2":
+    "Kliknite krivulju na nekoliko mjesta ili triput pritisnite „Raspolovi intervale”: poligon se primiče krivulji.",
+  "knotInsertion.try3":
+    "Označite „Izdvoji Bézierove segmente”: 5 segmenata, po jedan za svaki neprazan interval ([0,1], [1,1.5], [1.5,2], [2,3], [3,4]); ponovno umetnite 1.5 i ništa se ne dodaje jer taj interval već postoji.",
   "multiplicity.title": "Višestrukost i kontinuitet",
-  "multiplicity.summary": "Stapajte uzlove kubne B-krivulje i gledajte kako kontinuitet pada C², C¹, C⁰ (kut u kontrolnoj točki), a zatim prekid; ponovite kontrolnu točku i krivulja se privlači u nju.",
-  "multiplicity.aria": "Kubna B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; u unutarnjim uzlovima (višestrukost: zajamčeno, izmjereno): {list}{through}{repeat}",
+  "multiplicity.summary":
+    "Stapajte uzlove kubne B-krivulje i gledajte kako kontinuitet pada C², C¹, C⁰ (kut u kontrolnoj točki), a zatim prekid; ponovite kontrolnu točku i krivulja se privlači u nju.",
+  "multiplicity.aria":
+    "Kubna B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; u unutarnjim uzlovima (višestrukost: zajamčeno, izmjereno): {list}{through}{repeat}",
   "multiplicity.ariaThrough": "; krivulja prolazi kroz {point} za u = {u}",
   "multiplicity.ariaRepeat": "; ponovljena kontrolna točka: {points}, izmjereno {measured}",
   "multiplicity.knotLegend": "Višestrukost uzla",
-  "multiplicity.knotReadout": "{names} = {u} · r = {r} · zajamčeno {guaranteed} · izmjereno {measured}",
+  "multiplicity.knotReadout":
+    "{names} = {u} · r = {r} · zajamčeno {guaranteed} · izmjereno {measured}",
   "multiplicity.noKnot": "Nema unutarnjeg uzla",
-  "multiplicity.knotHint": "Odaberite uzao na ravnalu (kliknite ga ili Tab nakon posljednje kontrolne točke) da ga proučite; dvoklikom ili tipkom Enter na njega stapate sljedeći uzao.",
-  "multiplicity.through": "Uz r = 3 krivulja prolazi kroz kontrolnu točku: C({u}) = {point}, s kutom.",
+  "multiplicity.knotHint":
+    "Odaberite uzao na ravnalu (kliknite ga ili Tab nakon posljednje kontrolne točke) da ga proučite; dvoklikom ili tipkom Enter na njega stapate sljedeći uzao.",
+  "multiplicity.through":
+    "Uz r = 3 krivulja prolazi kroz kontrolnu točku: C({u}) = {point}, s kutom.",
   "multiplicity.throughLabel": "C({u}) = {point}",
   "multiplicity.pointLabel": "C({u})",
   "multiplicity.jointLabel": "u = {u}",
   "multiplicity.raise": "Povećaj r (Enter)",
   "multiplicity.raise.title": "Stopite sljedeći uzao s proučavanim uzlom",
   "multiplicity.lower": "Smanji r (Delete)",
-  "multiplicity.lower.title": "Pomaknite gornju kopiju proučavanog uzla na pola puta do sljedećeg uzla",
+  "multiplicity.lower.title":
+    "Pomaknite gornju kopiju proučavanog uzla na pola puta do sljedećeg uzla",
   "multiplicity.resetKnots": "Stegnuti uniformni uzlovi",
-  "multiplicity.resetKnots.title": "Zamijenite uzlove s 4 jednaka krajnja uzla i jednoliko razmaknutim unutarnjim uzlovima",
+  "multiplicity.resetKnots.title":
+    "Zamijenite uzlove s 4 jednaka krajnja uzla i jednoliko razmaknutim unutarnjim uzlovima",
   "multiplicity.multiplicity.max": "uzao već ima najveću višestrukost, p + 1 = {max}",
   "multiplicity.multiplicity.ends": "nije preostao nijedan unutarnji uzao koji bi se stopio s ovim",
   "multiplicity.multiplicity.single": "ovo je jednostruki uzao: nema se što razdvojiti",
   "multiplicity.repeatLegend": "Višestrukost kontrolne točke",
   "multiplicity.repeatOption": "×{k}",
-  "multiplicity.repeatNone": "{point} se pojavljuje jednom. Odaberite kontrolnu točku i izaberite ×2 ili ×3 da je ponovite.",
+  "multiplicity.repeatNone":
+    "{point} se pojavljuje jednom. Odaberite kontrolnu točku i izaberite ×2 ili ×3 da je ponovite.",
   "multiplicity.repeatReadout": "{points}: kod u{k} = {u} izmjereno {measured}",
   "multiplicity.repeatEnd": "{points}: preblizu kraju krivulje za unutarnji uzao",
-  "multiplicity.repeatHint": "Ponavljanje točke dodaje kontrolne točke, pa uzlovi ponovno postaju stegnuti uniformni.",
-  "multiplicity.notesCaption": "Tablica iz hrvatskih bilježaka za kubne krivulje (trenutni slučajevi istaknuti)",
+  "multiplicity.repeatHint":
+    "Ponavljanje točke dodaje kontrolne točke, pa uzlovi ponovno postaju stegnuti uniformni.",
+  "multiplicity.notesCaption":
+    "Tablica iz hrvatskih bilježaka za kubne krivulje (trenutni slučajevi istaknuti)",
   "multiplicity.notesBreak": "diskontinuitet (odvojeni dijelovi)",
   "multiplicity.colMultiplicity": "Višestrukost",
   "multiplicity.colPoints": "Kontrolne točke",
   "multiplicity.colKnots": "Uzlovi",
-  "multiplicity.knotsCaption": "Svaki unutarnji uzao: zajamčeno C^(p − r) iz vektora uzlova i ono što jezgra mjeri u spoju Bézierovih dijelova",
+  "multiplicity.knotsCaption":
+    "Svaki unutarnji uzao: zajamčeno C^(p − r) iz vektora uzlova i ono što jezgra mjeri u spoju Bézierovih dijelova",
   "multiplicity.colKnot": "Uzao",
   "multiplicity.colR": "r",
   "multiplicity.colGuaranteed": "Zajamčeno",
@@ -632,13 +797,19 @@ export default {
   "multiplicity.formulaRule": "u uzlu višestrukosti",
   "multiplicity.formulaBreak": "prekid",
   "multiplicity.formulaMeasured": "izmjereno:",
-  "multiplicity.whatYouSee": "Kubna B-krivulja (plavo) nad osam kontrolnih točaka i, ispod nje, njezino ravnalo uzlova: 0 0 0 0 1 2 3 4 5 5 5 5. Stapanje uzlova povećava višestrukost r uzla i kontinuitet ondje pada na C^(3 − r): uz r = 2 krivulja je C¹, uz r = 3 samo C⁰ — prolazi kroz kontrolnu točku i čini kut — a uz r = 4 raspada se na dva odvojena Bézierova dijela. Ponavljanje kontrolne točke umjesto toga zadržava parametarski C², ali trostruka točka zaustavlja krivulju (brzina nula) i daje kut, G⁰. Tablica je ona iz hrvatskih bilježaka (poglavlje 3 nastavnog programa); „izmjereno” je ono što jezgra nalazi uspoređujući derivacije Bézierovih dijelova u svakom spoju. Za dvostruku točku bilješke navode G¹; mjerenje daje G², jer zakrivljenost ostaje neprekinuta (pada na nulu u dvama uzlovima uz točku).",
-  "multiplicity.try1": "Kliknite u₅ (uzao u 2) na ravnalu i triput pritisnite Enter: očitanje ide C¹, C⁰ — krivulja sada prolazi kroz P₄ s kutom — a zatim „prekid”.",
-  "multiplicity.try2": "Odaberite P₄ i izaberite ×3: krivulja se privlači u točku i ondje skreće s kutom, izmjereno C² G⁰; uz ×2 samo se približi.",
-  "multiplicity.try3": "Povucite uzao na ravnalu na njegova susjeda: kontinuitet napisan iznad njega pada čim se dva uzla spoje.",
+  "multiplicity.whatYouSee":
+    "Kubna B-krivulja (plavo) nad osam kontrolnih točaka i, ispod nje, njezino ravnalo uzlova: 0 0 0 0 1 2 3 4 5 5 5 5. Stapanje uzlova povećava višestrukost r uzla i kontinuitet ondje pada na C^(3 − r): uz r = 2 krivulja je C¹, uz r = 3 samo C⁰ — prolazi kroz kontrolnu točku i čini kut — a uz r = 4 raspada se na dva odvojena Bézierova dijela. Ponavljanje kontrolne točke umjesto toga zadržava parametarski C², ali trostruka točka zaustavlja krivulju (brzina nula) i daje kut, G⁰. Tablica je ona iz hrvatskih bilježaka (poglavlje 3 nastavnog programa); „izmjereno” je ono što jezgra nalazi uspoređujući derivacije Bézierovih dijelova u svakom spoju. Za dvostruku točku bilješke navode G¹; mjerenje daje G², jer zakrivljenost ostaje neprekinuta (pada na nulu u dvama uzlovima uz točku).",
+  "multiplicity.try1":
+    "Kliknite u₅ (uzao u 2) na ravnalu i triput pritisnite Enter: očitanje ide C¹, C⁰ — krivulja sada prolazi kroz P₄ s kutom — a zatim „prekid”.",
+  "multiplicity.try2":
+    "Odaberite P₄ i izaberite ×3: krivulja se privlači u točku i ondje skreće s kutom, izmjereno C² G⁰; uz ×2 samo se približi.",
+  "multiplicity.try3":
+    "Povucite uzao na ravnalu na njegova susjeda: kontinuitet napisan iznad njega pada čim se dva uzla spoje.",
   "matrixForm.title": "Matrični oblik uniformnih segmenata",
-  "matrixForm.summary": "Svaki segment uniformne B-krivulje je [tᵖ … t 1] · M · (njegovih p + 1 točaka), s istom matricom M za svaki unutarnji segment.",
-  "matrixForm.aria": "{kind} B-krivulja, {knots}, kontrolne točke: {count}; segment {i} za t = {t}: točka ({x}, {y}); {periodic}",
+  "matrixForm.summary":
+    "Svaki segment uniformne B-krivulje je [tᵖ … t 1] · M · (njegovih p + 1 točaka), s istom matricom M za svaki unutarnji segment.",
+  "matrixForm.aria":
+    "{kind} B-krivulja, {knots}, kontrolne točke: {count}; segment {i} za t = {t}: točka ({x}, {y}); {periodic}",
   "matrixForm.aria.periodic": "njegova je matrica periodička",
   "matrixForm.aria.notPeriodic": "njegova se matrica razlikuje od periodičke",
   "matrixForm.degree.2": "kvadratna (p = 2)",
@@ -659,8 +830,10 @@ export default {
   "matrixForm.segments.other": "{count} segmenata",
   "matrixForm.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "matrixForm.minPoints": "stupanj {p} ovdje treba najmanje ovoliko kontrolnih točaka: {min}",
-  "matrixForm.error.degree": "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
-  "matrixForm.matrixCaption": "M segmenta {i} (interval k = {k}), iz segmentMatrix(k): redak = potencija od t, stupac = točka koju množi",
+  "matrixForm.error.degree":
+    "polje „degree” je {p}, ali uz kontrolne točke ({count}) najveći je stupanj {count} − 1",
+  "matrixForm.matrixCaption":
+    "M segmenta {i} (interval k = {k}), iz segmentMatrix(k): redak = potencija od t, stupac = točka koju množi",
   "matrixForm.resultCaption": "Točka za t, dvaput: umnožak gornjih brojeva i evaluate(u) iz jezgre",
   "matrixForm.result.product": "[tᵖ … 1] · M · točke",
   "matrixForm.result.evaluate": "evaluate(u)",
@@ -668,30 +841,41 @@ export default {
   "matrixForm.tex.periodic": "(periodički segment: uniformSegmentMatrix(p))",
   "matrixForm.tex.notPeriodic": "uniformSegmentMatrix(p): krajnji segment stegnutih uzlova",
   "matrixForm.tex.evaluate": "jezgra:",
-  "matrixForm.whatYouSee": "Na jednom intervalu B-krivulja je polinom u lokalnom parametru t, pa se svaki segment može zapisati kao redak potencija od t, puta matrica M, puta p + 1 točaka koje ondje djeluju — matrični oblik iz hrvatskih bilježaka (poglavlje 3 nastavnog programa). Uz uniformne uzlove svaki segment ima istu M (bilješke ih zovu periodičkim segmentima): [[1/2, −1, 1/2], [−1, 1, 0], [1/2, 1/2, 0]] za kvadratne, 1/6·[[−1, 3, −3, 1], [3, −6, 3, 0], [−3, 0, 3, 0], [1, 4, 1, 0]] za kubne krivulje. Uz stegnute uzlove krajnji segmenti dobivaju vlastite matrice.",
-  "matrixForm.try1": "Pomičite klizač segmenta: istaknuti dio i njegove obojene točke pomiču se, ali M ostaje ista.",
-  "matrixForm.try2": "Prebacite na stegnute uzlove i odaberite segment 1: M se mijenja (krivulja mora početi u P₀); uz 6 točaka i p = 2 segmenti 2 i 3 zadržavaju periodičku matricu, kao u primjeru iz bilježaka.",
-  "matrixForm.try3": "Povucite jednu od zaokruženih točaka i usporedite dva retka tablice rezultata: matrični umnožak i evaluate(u) slažu se na svaku decimalu.",
+  "matrixForm.whatYouSee":
+    "Na jednom intervalu B-krivulja je polinom u lokalnom parametru t, pa se svaki segment može zapisati kao redak potencija od t, puta matrica M, puta p + 1 točaka koje ondje djeluju — matrični oblik iz hrvatskih bilježaka (poglavlje 3 nastavnog programa). Uz uniformne uzlove svaki segment ima istu M (bilješke ih zovu periodičkim segmentima): [[1/2, −1, 1/2], [−1, 1, 0], [1/2, 1/2, 0]] za kvadratne, 1/6·[[−1, 3, −3, 1], [3, −6, 3, 0], [−3, 0, 3, 0], [1, 4, 1, 0]] za kubne krivulje. Uz stegnute uzlove krajnji segmenti dobivaju vlastite matrice.",
+  "matrixForm.try1":
+    "Pomičite klizač segmenta: istaknuti dio i njegove obojene točke pomiču se, ali M ostaje ista.",
+  "matrixForm.try2":
+    "Prebacite na stegnute uzlove i odaberite segment 1: M se mijenja (krivulja mora početi u P₀); uz 6 točaka i p = 2 segmenti 2 i 3 zadržavaju periodičku matricu, kao u primjeru iz bilježaka.",
+  "matrixForm.try3":
+    "Povucite jednu od zaokruženih točaka i usporedite dva retka tablice rezultata: matrični umnožak i evaluate(u) slažu se na svaku decimalu.",
   "weights.title": "Težine racionalne krivulje",
-  "weights.summary": "Povećajte težinu i krivulja se privlači prema svojoj kontrolnoj točki; homogena slika pokazuje zašto: polinomna krivulja u (wx, wy, w) projicirana na w = 1.",
-  "weights.whatYouSee": "Racionalna kubna Bézierova krivulja (plavo) i iste kontrolne točke sa svim težinama 1 (točkasto): prsten oko svake točke raste s njezinom težinom wᵢ, a povećanje wᵢ privlači krivulju prema Pᵢ. Umetak prikazuje homogenu sliku iz grčkih bilježaka (poglavlje 4 nastavnog programa): točke (wᵢxᵢ, wᵢyᵢ, wᵢ) razapinju običnu polinomnu Bézierovu krivulju u prostoru (zeleno), a zrake iz ishodišta projiciraju je na ravninu w = 1, gdje je ona racionalna krivulja. Množenje svih težina istim brojem pomiče zelenu krivulju duž zraka, ali ne i njezinu projekciju: važni su samo omjeri težina.",
-  "weights.try1": "Povucite klizač w₁ (ili prsten oko P₁) od 0,1 do 10 i gledajte kako P(1/2) klizi prema P₁; zadnji stupac tablice pokazuje kako se udaljenost smanjuje.",
+  "weights.summary":
+    "Povećajte težinu i krivulja se privlači prema svojoj kontrolnoj točki; homogena slika pokazuje zašto: polinomna krivulja u (wx, wy, w) projicirana na w = 1.",
+  "weights.whatYouSee":
+    "Racionalna kubna Bézierova krivulja (plavo) i iste kontrolne točke sa svim težinama 1 (točkasto): prsten oko svake točke raste s njezinom težinom wᵢ, a povećanje wᵢ privlači krivulju prema Pᵢ. Umetak prikazuje homogenu sliku iz grčkih bilježaka (poglavlje 4 nastavnog programa): točke (wᵢxᵢ, wᵢyᵢ, wᵢ) razapinju običnu polinomnu Bézierovu krivulju u prostoru (zeleno), a zrake iz ishodišta projiciraju je na ravninu w = 1, gdje je ona racionalna krivulja. Množenje svih težina istim brojem pomiče zelenu krivulju duž zraka, ali ne i njezinu projekciju: važni su samo omjeri težina.",
+  "weights.try1":
+    "Povucite klizač w₁ (ili prsten oko P₁) od 0,1 do 10 i gledajte kako P(1/2) klizi prema P₁; zadnji stupac tablice pokazuje kako se udaljenost smanjuje.",
   "weights.try2": "Pritisnite „Sve težine × 2”: zelena krivulja u umetku se pomiče, plava ne.",
-  "weights.try3": "Pritisnite „Sve težine 1”: racionalna krivulja pada na točkastu polinomnu krivulju.",
+  "weights.try3":
+    "Pritisnite „Sve težine 1”: racionalna krivulja pada na točkastu polinomnu krivulju.",
   "weights.handleLabel": "P{i} (w{i} = {w})",
-  "weights.countMismatch": "polje „weights” mora imati jednu težinu po točki: težine {count}, točke {points}",
+  "weights.countMismatch":
+    "polje „weights” mora imati jednu težinu po točki: težine {count}, točke {points}",
   "weights.notPositive": "polje „weights”: {name} = {value} je odbijeno; težine moraju biti > 0",
   "weights.outOfRange": "polje „weights”: {name} mora biti između {min} i {max}, dobiveno {value}",
   "weights.weightsLegend": "Težine (logaritamska skala)",
   "weights.weightLabel": "Težina {name} točke {point}",
   "weights.weightInput": "Težina {name} (broj između 0,1 i 10)",
-  "weights.badWeight": "težina {name} = „{value}” odbijena: težina mora biti > 0 (ovdje između {min} i {max})",
+  "weights.badWeight":
+    "težina {name} = „{value}” odbijena: težina mora biti > 0 (ovdje između {min} i {max})",
   "weights.allOne": "Sve težine 1",
   "weights.allOne.title": "Postavite sve težine na 1: polinomna Bézierova krivulja",
   "weights.scaleAll": "Sve težine × {factor}",
   "weights.scaleAll.title": "Pomnožite sve težine istim brojem: krivulja se ne mijenja",
   "weights.cannotScale": "težine se ne mogu sve udvostručiti ili prepoloviti unutar {min} … {max}",
-  "weights.scaled": "Svaka težina {factor}: plava krivulja ostaje gdje je bila (važni su samo omjeri); homogena krivulja u umetku pomaknula se duž zraka.",
+  "weights.scaled":
+    "Svaka težina {factor}: plava krivulja ostaje gdje je bila (važni su samo omjeri); homogena krivulja u umetku pomaknula se duž zraka.",
   "weights.showHomogeneous": "Prikaži homogeni prostor (umetak)",
   "weights.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "weights.minPoints": "najmanji broj kontrolnih točaka u ovoj demonstraciji je {min}",
@@ -707,7 +891,8 @@ export default {
   "weights.origin": "O",
   "weights.plane": "w = 1",
   "weights.readout": "P({t}) = ({x}, {y}); najveća udaljenost od polinomne krivulje: {gap}",
-  "weights.tableCaption": "Kontrolne točke, težine, homogene točke (wᵢxᵢ, wᵢyᵢ, wᵢ), udio Bᵢ(t)wᵢ / Σ Bⱼ(t)wⱼ svake točke za t = {t} i udaljenost |P(t) − Pᵢ|",
+  "weights.tableCaption":
+    "Kontrolne točke, težine, homogene točke (wᵢxᵢ, wᵢyᵢ, wᵢ), udio Bᵢ(t)wᵢ / Σ Bⱼ(t)wⱼ svake točke za t = {t} i udaljenost |P(t) − Pᵢ|",
   "weights.column.point": "Pᵢ",
   "weights.column.weight": "wᵢ",
   "weights.column.homogeneous": "Pᵢʷ = (wᵢxᵢ, wᵢyᵢ, wᵢ)",
@@ -715,18 +900,26 @@ export default {
   "weights.column.distance": "|P(t) − Pᵢ|",
   "weights.tex.ratios": "važni su samo omjeri: ",
   "weights.tex.same": " daje istu krivulju",
-  "weights.aria": "Racionalna {kind} Bézierova krivulja s težinama ({weights}) i, točkasto, polinomna krivulja sa svim težinama 1; za t = {t} točka P(t) = ({x}, {y}) (sve težine 1: ({gx}, {gy})), {distance} od najteže točke {heaviest}; umetak: homogene kontrolne točke, njihova polinomna krivulja u (wx, wy, w) i zrake iz ishodišta koje je projiciraju na ravninu w = 1",
+  "weights.aria":
+    "Racionalna {kind} Bézierova krivulja s težinama ({weights}) i, točkasto, polinomna krivulja sa svim težinama 1; za t = {t} točka P(t) = ({x}, {y}) (sve težine 1: ({gx}, {gy})), {distance} od najteže točke {heaviest}; umetak: homogene kontrolne točke, njihova polinomna krivulja u (wx, wy, w) i zrake iz ishodišta koje je projiciraju na ravninu w = 1",
   "conics.title": "Konike",
-  "conics.summary": "Racionalna kvadratna Bézierova krivulja je konika: luk elipse za w₁ < 1, parabola za w₁ = 1, hiperbola iznad; uz jednakokračni trokut i w₁ = sin θ, kružni luk.",
-  "conics.whatYouSee": "Racionalna kvadratna Bézierova krivulja (plavo) s težinama 1, w₁, 1 i, točkasto, parabola koja je za w₁ = 1. Jezgra imenuje koniku prema faktoru oblika k = w₁²/(w₀w₂): ispod 1 luk elipse, jednako 1 parabola, iznad 1 hiperbola; točka ramena P(1/2) klizi duž pravca od polovišta tetive M do P₁. Kad je trokut jednakokračan i w₁ = sin θ, gdje je θ pola kuta u P₁, luk je točno kružni: pojavljuje se cijela kružnica, iscrtkano, sa središtem. Ovo je dio o konikama iz grčkih bilježaka (poglavlje 4 nastavnog programa).",
-  "conics.try1": "Upišite 0.5, 1 i 2 u polje w₁: naziv se mijenja iz elipse u parabolu pa u hiperbolu, a redak tablice slijedi.",
-  "conics.try2": "Pritisnite „Napravi kružni luk”: w₁ postaje sin θ i pojavljuje se iscrtkana kružnica; zatim povucite P₂ i gledajte kako „kružnica!” nestaje.",
-  "conics.try3": "Povucite w₁ do 5: točka ramena juri prema P₁, a hiperbola prianja uz kontrolni trokut.",
+  "conics.summary":
+    "Racionalna kvadratna Bézierova krivulja je konika: luk elipse za w₁ < 1, parabola za w₁ = 1, hiperbola iznad; uz jednakokračni trokut i w₁ = sin θ, kružni luk.",
+  "conics.whatYouSee":
+    "Racionalna kvadratna Bézierova krivulja (plavo) s težinama 1, w₁, 1 i, točkasto, parabola koja je za w₁ = 1. Jezgra imenuje koniku prema faktoru oblika k = w₁²/(w₀w₂): ispod 1 luk elipse, jednako 1 parabola, iznad 1 hiperbola; točka ramena P(1/2) klizi duž pravca od polovišta tetive M do P₁. Kad je trokut jednakokračan i w₁ = sin θ, gdje je θ pola kuta u P₁, luk je točno kružni: pojavljuje se cijela kružnica, iscrtkano, sa središtem. Ovo je dio o konikama iz grčkih bilježaka (poglavlje 4 nastavnog programa).",
+  "conics.try1":
+    "Upišite 0.5, 1 i 2 u polje w₁: naziv se mijenja iz elipse u parabolu pa u hiperbolu, a redak tablice slijedi.",
+  "conics.try2":
+    "Pritisnite „Napravi kružni luk”: w₁ postaje sin θ i pojavljuje se iscrtkana kružnica; zatim povucite P₂ i gledajte kako „kružnica!” nestaje.",
+  "conics.try3":
+    "Povucite w₁ do 5: točka ramena juri prema P₁, a hiperbola prianja uz kontrolni trokut.",
   "conics.w1": "Srednja težina w₁ (logaritamska skala)",
   "conics.w1.input": "Težina w₁ (broj između 0,05 i 5)",
-  "conics.badWeight": "težina w₁ = „{value}” odbijena: w₁ mora biti > 0 (ovdje između {min} i {max})",
+  "conics.badWeight":
+    "težina w₁ = „{value}” odbijena: w₁ mora biti > 0 (ovdje između {min} i {max})",
   "conics.makeCircular": "Napravi kružni luk",
-  "conics.makeCircular.title": "Učinite trokut jednakokračnim (P₂ klizi duž P₁P₂) i postavite w₁ = sin θ, težinu kružnog luka",
+  "conics.makeCircular.title":
+    "Učinite trokut jednakokračnim (P₂ klizi duž P₁P₂) i postavite w₁ = sin θ, težinu kružnog luka",
   "conics.circleLegend": "Kružni luk",
   "conics.notCircular": "nema kružnog luka za ovaj trokut: {message}",
   "conics.tooFlat": "kružni luk treba w₁ = {w}, ispod najmanje težine ove demonstracije {min}",
@@ -753,19 +946,29 @@ export default {
   "conics.formula.and": "i",
   "conics.formula.circle": "kružnica!",
   "conics.shape": "w₁ = {w}; faktor oblika k = w₁²/(w₀w₂) = {k} {relation} 1",
-  "conics.triangle": "|P₀P₁| = {a}, |P₁P₂| = {b} (nije jednakokračan); kut u P₁ = {angle}°, sin θ = {sin}",
-  "conics.triangleIsosceles": "|P₀P₁| = |P₁P₂| = {a} (jednakokračan); kut u P₁ = {angle}°, sin θ = {sin}",
+  "conics.triangle":
+    "|P₀P₁| = {a}, |P₁P₂| = {b} (nije jednakokračan); kut u P₁ = {angle}°, sin θ = {sin}",
+  "conics.triangleIsosceles":
+    "|P₀P₁| = |P₁P₂| = {a} (jednakokračan); kut u P₁ = {angle}°, sin θ = {sin}",
   "conics.triangleDegenerate": "Dvije se točke podudaraju: nema kuta u P₁.",
-  "conics.circleYes": "kružnica! polumjer {r}; udaljenost svakog uzorka od središta O razlikuje se od njega najviše za {error}.",
-  "conics.circleNo": "Još nije kružni: luk treba w₁ = sin θ = {sin} (najveća udaljenost od te kružnice sada: {error}).",
-  "conics.circleNeedsIsosceles": "Nije kružni: kružni luk treba |P₀P₁| = |P₁P₂| (pritisnite „Napravi kružni luk”).",
-  "conics.aria": "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: luk {kind} (faktor oblika {k}){circle}; točka ramena P(1/2) = ({sx}, {sy}); točkasto: parabola uz w₁ = 1",
+  "conics.circleYes":
+    "kružnica! polumjer {r}; udaljenost svakog uzorka od središta O razlikuje se od njega najviše za {error}.",
+  "conics.circleNo":
+    "Još nije kružni: luk treba w₁ = sin θ = {sin} (najveća udaljenost od te kružnice sada: {error}).",
+  "conics.circleNeedsIsosceles":
+    "Nije kružni: kružni luk treba |P₀P₁| = |P₁P₂| (pritisnite „Napravi kružni luk”).",
+  "conics.aria":
+    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: luk {kind} (faktor oblika {k}){circle}; točka ramena P(1/2) = ({sx}, {sy}); točkasto: parabola uz w₁ = 1",
   "conics.ariaCircle": ", kružni luk polumjera {r} oko ({x}, {y})",
   "nurbsCircle.title": "NURBS kružnice i lukovi",
-  "nurbsCircle.summary": "Točna kružnica kao NURBS stupnja 2: 9 kontrolnih točaka, težine 1 i √2/2, uzlovi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; lukovi u dijelovima od najviše 90°, elipse kao njihove afine slike.",
-  "nurbsCircle.whatYouSee": "Kružnica (ili luk, ili elipsa) koju jezgra gradi kao NURBS stupnja 2 (plavo), njezin kontrolni poligon s težinom svake točke i spojevi njezinih dijelova (zeleni prstenovi). Puna kružnica je NURBS s 9 točaka iz nastavnog programa (poglavlje 4, prema grčkim i talijanskim bilješkama): vrhovi kvadrata nose težinu √2/2, uzlovi su 0,0,0,¼,¼,½,½,¾,¾,1,1,1. Luk se reže na dijelove od najviše 90° čije su srednje težine cos(Δ/2). Očitanje mjeri koliko je 2000 uzoraka udaljeno od točne kružnice: 0 ili nekoliko 10⁻¹⁶, samo zaokruživanje — nijedna polinomna krivulja to ne može.",
-  "nurbsCircle.try1": "Postavite opseg luka na 200°: luk ima 3 dijela od 66,7° i srednje težine cos 33,3° ≈ 0,835; pogreška polumjera i dalje je oko 1e-16.",
-  "nurbsCircle.try2": "Označite „Elipsa” i mijenjajte rotaciju: iste težine i uzlovi, rastegnute kontrolne točke — afina slika kružnice.",
+  "nurbsCircle.summary":
+    "Točna kružnica kao NURBS stupnja 2: 9 kontrolnih točaka, težine 1 i √2/2, uzlovi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; lukovi u dijelovima od najviše 90°, elipse kao njihove afine slike.",
+  "nurbsCircle.whatYouSee":
+    "Kružnica (ili luk, ili elipsa) koju jezgra gradi kao NURBS stupnja 2 (plavo), njezin kontrolni poligon s težinom svake točke i spojevi njezinih dijelova (zeleni prstenovi). Puna kružnica je NURBS s 9 točaka iz nastavnog programa (poglavlje 4, prema grčkim i talijanskim bilješkama): vrhovi kvadrata nose težinu √2/2, uzlovi su 0,0,0,¼,¼,½,½,¾,¾,1,1,1. Luk se reže na dijelove od najviše 90° čije su srednje težine cos(Δ/2). Očitanje mjeri koliko je 2000 uzoraka udaljeno od točne kružnice: 0 ili nekoliko 10⁻¹⁶, samo zaokruživanje — nijedna polinomna krivulja to ne može.",
+  "nurbsCircle.try1":
+    "Postavite opseg luka na 200°: luk ima 3 dijela od 66,7° i srednje težine cos 33,3° ≈ 0,835; pogreška polumjera i dalje je oko 1e-16.",
+  "nurbsCircle.try2":
+    "Označite „Elipsa” i mijenjajte rotaciju: iste težine i uzlovi, rastegnute kontrolne točke — afina slika kružnice.",
   "nurbsCircle.try3": "Povucite središte c: cijela se kružnica pomiče i ostaje točna.",
   "nurbsCircle.notPositive": "polje „{field}” mora biti > 0, dobiveno {value}",
   "nurbsCircle.zeroSweep": "polje „sweep” ne smije biti 0 (luk treba opseg različit od nule)",
@@ -781,7 +984,8 @@ export default {
   "nurbsCircle.start.input": "Početni kut u stupnjevima",
   "nurbsCircle.sweep": "Opseg luka (stupnjevi, negativno: u smjeru kazaljke)",
   "nurbsCircle.sweep.input": "Opseg luka u stupnjevima, od −360 do 360, ne 0",
-  "nurbsCircle.badLength": "{field} = „{value}” odbijeno: {field} mora biti > 0 (ovdje između {min} i {max})",
+  "nurbsCircle.badLength":
+    "{field} = „{value}” odbijeno: {field} mora biti > 0 (ovdje između {min} i {max})",
   "nurbsCircle.badAngle": "{field} = „{value}” odbijeno: kut između −{max}° i {max}°",
   "nurbsCircle.ellipseMode": "Elipsa (poluosi i rotacija)",
   "nurbsCircle.circleLegend": "Kružnica",
@@ -796,15 +1000,18 @@ export default {
   "nurbsCircle.axesLabel": "rx = {rx}, ry = {ry}",
   "nurbsCircle.errorCircle": "pogreška polumjera {error}",
   "nurbsCircle.errorEllipse": "pogreška elipse {error}",
-  "nurbsCircle.errorCircleNote": "max | |C(u) − c| − r | na {samples} uzoraka (samo zaokruživanje: krivulja je točna)",
-  "nurbsCircle.errorEllipseNote": "max | (x′/rx)² + (y′/ry)² − 1 | na {samples} uzoraka, x′, y′ duž osi",
+  "nurbsCircle.errorCircleNote":
+    "max | |C(u) − c| − r | na {samples} uzoraka (samo zaokruživanje: krivulja je točna)",
+  "nurbsCircle.errorEllipseNote":
+    "max | (x′/rx)² + (y′/ry)² − 1 | na {samples} uzoraka, x′, y′ duž osi",
   "nurbsCircle.count": "Kontrolne točke: {count}, dijelovi: {pieces} (svaki ≤ 90°)",
   "nurbsCircle.knots": "Uzlovi: {knots}",
   "nurbsCircle.ariaCircle": "kružnica polumjera {r}",
   "nurbsCircle.ariaEllipse": "elipsa s poluosima {rx} i {ry} zakrenuta za {rotation}°",
   "nurbsCircle.ariaFull": "cijela krivulja",
   "nurbsCircle.ariaArc": "luk od {start}° opsega {sweep}°",
-  "nurbsCircle.aria": "NURBS {shape} oko ({x}, {y}), {arc}: stupanj 2, kontrolne točke ({count}) s težinama {weights}, uzlovi {knots}, dijelovi: {pieces}; izmjerena pogreška {error}",
+  "nurbsCircle.aria":
+    "NURBS {shape} oko ({x}, {y}), {arc}: stupanj 2, kontrolne točke ({count}) s težinama {weights}, uzlovi {knots}, dijelovi: {pieces}; izmjerena pogreška {error}",
   "nurbsCircle.tableCaption": "Kontrolne točke ({count}) i njihove težine",
   "nurbsCircle.column.point": "Pᵢ",
   "nurbsCircle.column.weight": "wᵢ",
@@ -816,20 +1023,29 @@ export default {
   "nurbsCircle.formula.middleWeights": "srednje težine",
   "nurbsCircle.formula.samples": "uzoraka",
   "projective.title": "Projektivna invarijantnost",
-  "projective.summary": "Preslikajte racionalnu krivulju perspektivom: preslikavanje njezinih kontrolnih točaka i težina daje točno preslikanu krivulju; preslikavanje točaka uz stare težine ne daje.",
-  "projective.whatYouSee": "Lijevo kubna Bézierova krivulja u kvadratu S₀S₁S₂S₃; desno njezina slika pri perspektivnom preslikavanju H koje kvadrat šalje u četverokut Q₀Q₁Q₂Q₃ (povlačite vrhove). Jezgra preslikava homogene kontrolne točke krivulje (wᵢPᵢ, wᵢ) s H, što daje nove točke i nove težine (puna plava); narančaste točkice su uzorci izvorne krivulje preslikani jedan po jedan istim H i leže točno na njoj — racionalne krivulje invarijantne su na projektivna preslikavanja, kako kažu grčke bilješke (poglavlje 4 nastavnog programa). Iscrtkana krivulja koristi preslikane točke sa starim težinama: promašuje, jer perspektiva mijenja težine.",
-  "projective.try1": "Povucite Q₂ prema Q₃: perspektiva postaje jača, preslikane težine se razilaze, a iscrtkana krivulja udaljava se od točkica, koje ostaju na punoj krivulji.",
-  "projective.try2": "Pritisnite „Učini afinim”: četverokut postaje paralelogram, svaka preslikana težina jednaka je staroj, a iscrtkana krivulja pridružuje se ostalima.",
-  "projective.try3": "Povucite Q₂ preko dijagonale Q₁Q₃: preslikavanje bi postavilo kontrolnu točku iza beskonačno dalekog pravca (težina ≤ 0); biblioteka odbija i ostaje posljednja dobra slika.",
+  "projective.summary":
+    "Preslikajte racionalnu krivulju perspektivom: preslikavanje njezinih kontrolnih točaka i težina daje točno preslikanu krivulju; preslikavanje točaka uz stare težine ne daje.",
+  "projective.whatYouSee":
+    "Lijevo kubna Bézierova krivulja u kvadratu S₀S₁S₂S₃; desno njezina slika pri perspektivnom preslikavanju H koje kvadrat šalje u četverokut Q₀Q₁Q₂Q₃ (povlačite vrhove). Jezgra preslikava homogene kontrolne točke krivulje (wᵢPᵢ, wᵢ) s H, što daje nove točke i nove težine (puna plava); narančaste točkice su uzorci izvorne krivulje preslikani jedan po jedan istim H i leže točno na njoj — racionalne krivulje invarijantne su na projektivna preslikavanja, kako kažu grčke bilješke (poglavlje 4 nastavnog programa). Iscrtkana krivulja koristi preslikane točke sa starim težinama: promašuje, jer perspektiva mijenja težine.",
+  "projective.try1":
+    "Povucite Q₂ prema Q₃: perspektiva postaje jača, preslikane težine se razilaze, a iscrtkana krivulja udaljava se od točkica, koje ostaju na punoj krivulji.",
+  "projective.try2":
+    "Pritisnite „Učini afinim”: četverokut postaje paralelogram, svaka preslikana težina jednaka je staroj, a iscrtkana krivulja pridružuje se ostalima.",
+  "projective.try3":
+    "Povucite Q₂ preko dijagonale Q₁Q₃: preslikavanje bi postavilo kontrolnu točku iza beskonačno dalekog pravca (težina ≤ 0); biblioteka odbija i ostaje posljednja dobra slika.",
   "projective.notPositive": "polje „weights”: {name} = {value} je odbijeno; težine moraju biti > 0",
-  "projective.weightRange": "polje „weights”: {name} mora biti između {min} i {max}, dobiveno {value}",
-  "projective.degenerate": "polje „corners”: četiri vrha ne određuju perspektivno preslikavanje (tri na istom pravcu?)",
+  "projective.weightRange":
+    "polje „weights”: {name} mora biti između {min} i {max}, dobiveno {value}",
+  "projective.degenerate":
+    "polje „corners”: četiri vrha ne određuju perspektivno preslikavanje (tri na istom pravcu?)",
   "projective.weightsLegend": "Izvorne težine (logaritamska skala)",
   "projective.weightLabel": "Težina {name} točke {point}",
   "projective.weightInput": "Težina {name} (broj između 0,1 i 10)",
-  "projective.badWeight": "težina {name} = „{value}” odbijena: težina mora biti > 0 (ovdje između {min} i {max})",
+  "projective.badWeight":
+    "težina {name} = „{value}” odbijena: težina mora biti > 0 (ovdje između {min} i {max})",
   "projective.affine": "Učini afinim",
-  "projective.affine.title": "Pomaknite Q₂ tako da četverokut bude paralelogram: afino preslikavanje, težine nepromijenjene",
+  "projective.affine.title":
+    "Pomaknite Q₂ tako da četverokut bude paralelogram: afino preslikavanje, težine nepromijenjene",
   "projective.resultLegend": "Provjera invarijantnosti",
   "projective.refused": "biblioteka je odbila ovo preslikavanje: {message}",
   "projective.mappedLabel": "w′{i} = {w}",
@@ -837,7 +1053,8 @@ export default {
   "projective.legendMapped": "curve.projectiveMap(H)",
   "projective.legendPointwise": "H primijenjen na svaki uzorak",
   "projective.legendNaive": "preslikane točke, stare težine",
-  "projective.gaps": "Puna prema točkicama: najveći razmak {ab} (ista krivulja). Iscrtkana prema punoj: {ac}.",
+  "projective.gaps":
+    "Puna prema točkicama: najveći razmak {ab} (ista krivulja). Iscrtkana prema punoj: {ac}.",
   "projective.mappedWeights": "Preslikane težine w′ᵢ: {weights}",
   "projective.affineMap": "afinim preslikavanjem",
   "projective.perspectiveMap": "perspektivnim preslikavanjem",
@@ -845,23 +1062,30 @@ export default {
   "projective.tex.unchanged": ", težine nepromijenjene)",
   "projective.tex.invariant": "(invarijantno)",
   "projective.tex.ignored": "(težine zanemarene)",
-  "projective.aria": "Kubna Bézierova krivulja u kvadratu [0, 4]² i njezina slika {kind} koje vrhove kvadrata šalje u {corners}: preslikana krivulja ima težine {weights}; izvorni uzorci preslikani jedan po jedan leže na njoj (najveći razmak {ab}); preslikane točke sa starim težinama daju drugačiju krivulju (udaljenu do {ac})",
+  "projective.aria":
+    "Kubna Bézierova krivulja u kvadratu [0, 4]² i njezina slika {kind} koje vrhove kvadrata šalje u {corners}: preslikana krivulja ima težine {weights}; izvorni uzorci preslikani jedan po jedan leže na njoj (najveći razmak {ab}); preslikane točke sa starim težinama daju drugačiju krivulju (udaljenu do {ac})",
   "negativeWeights.title": "Zašto se nepozitivne težine odbijaju",
-  "negativeWeights.summary": "Povucite težinu kroz nulu: biblioteka odbija, a demonstracija pokazuje što bi krivulja učinila — napustila konveksnu ljusku i pobjegla u beskonačnost ondje gdje nazivnik w(t) iščezava.",
-  "negativeWeights.whatYouSee": "Racionalna kvadratna Bézierova krivulja s težinama 1, w₁, 1 nad svojim kontrolnim trokutom (konveksna ljuska, osjenčano). Dok je w₁ > 0, biblioteka gradi krivulju (plavo) i ona ostaje u trokutu. Za w₁ ≤ 0 biblioteka odbija, a njezina se poruka prikazuje doslovno; iscrtkana krivulja je ono što bi dala formula: homogena krivulja (wx, wy, w) i dalje je obična polinomna krivulja, a dijeljenje s w projicira je natrag. Ispod je nazivnik w(t) = Σ Bᵢ(t)wᵢ: gdje prolazi kroz nulu, točka bježi u beskonačnost (pol), a svaka negativna težina već izbacuje krivulju iz njezine konveksne ljuske. To je upozorenje iz grčkih bilježaka (poglavlje 4 nastavnog programa): negativne težine narušavaju svojstvo konveksne ljuske i mogu stvoriti polove.",
-  "negativeWeights.try1": "Pritisnite „w₁ = −0.5”: biblioteka odbija, krivulja se izvrće ispod tetive P₀P₂ i napušta trokut, ali w(t) ostaje iznad 0 — još nema pola.",
-  "negativeWeights.try2": "Polako povucite w₁ od 0 do −3: za w₁ = −1 graf dodiruje nulu u t = 1/2, ispod toga siječe je dvaput, a krivulja se kida u dva pola.",
+  "negativeWeights.summary":
+    "Povucite težinu kroz nulu: biblioteka odbija, a demonstracija pokazuje što bi krivulja učinila — napustila konveksnu ljusku i pobjegla u beskonačnost ondje gdje nazivnik w(t) iščezava.",
+  "negativeWeights.whatYouSee":
+    "Racionalna kvadratna Bézierova krivulja s težinama 1, w₁, 1 nad svojim kontrolnim trokutom (konveksna ljuska, osjenčano). Dok je w₁ > 0, biblioteka gradi krivulju (plavo) i ona ostaje u trokutu. Za w₁ ≤ 0 biblioteka odbija, a njezina se poruka prikazuje doslovno; iscrtkana krivulja je ono što bi dala formula: homogena krivulja (wx, wy, w) i dalje je obična polinomna krivulja, a dijeljenje s w projicira je natrag. Ispod je nazivnik w(t) = Σ Bᵢ(t)wᵢ: gdje prolazi kroz nulu, točka bježi u beskonačnost (pol), a svaka negativna težina već izbacuje krivulju iz njezine konveksne ljuske. To je upozorenje iz grčkih bilježaka (poglavlje 4 nastavnog programa): negativne težine narušavaju svojstvo konveksne ljuske i mogu stvoriti polove.",
+  "negativeWeights.try1":
+    "Pritisnite „w₁ = −0.5”: biblioteka odbija, krivulja se izvrće ispod tetive P₀P₂ i napušta trokut, ali w(t) ostaje iznad 0 — još nema pola.",
+  "negativeWeights.try2":
+    "Polako povucite w₁ od 0 do −3: za w₁ = −1 graf dodiruje nulu u t = 1/2, ispod toga siječe je dvaput, a krivulja se kida u dva pola.",
   "negativeWeights.try3": "Pritisnite „w₁ = 1”: poruka nestaje i vraća se obična parabola.",
   "negativeWeights.w1": "Srednja težina w₁ (ovdje smije biti ≤ 0)",
   "negativeWeights.w1.input": "Težina w₁ (broj između −3 i 3)",
-  "negativeWeights.badWeight": "težina w₁ = „{value}” odbijena: ova demonstracija prima w₁ između {min} i {max}",
+  "negativeWeights.badWeight":
+    "težina w₁ = „{value}” odbijena: ova demonstracija prima w₁ između {min} i {max}",
   "negativeWeights.preset": "w₁ = {w}",
   "negativeWeights.libraryLegend": "Što kaže biblioteka",
   "negativeWeights.resultLegend": "Što bi dala formula",
   "negativeWeights.refused": "biblioteka odbija težine 1, w₁, 1: {message}",
   "negativeWeights.accepted": "Biblioteka prihvaća ove težine.",
   "negativeWeights.libraryRefuses": "new BezierCurve(points, 2, weights) baca iznimku: „{message}”",
-  "negativeWeights.libraryAccepts": "new BezierCurve(points, 2, weights) prihvaća ove težine: svaki wᵢ > 0.",
+  "negativeWeights.libraryAccepts":
+    "new BezierCurve(points, 2, weights) prihvaća ove težine: svaki wᵢ > 0.",
   "negativeWeights.poles.few": "{count} pola, za t ≈ {list}",
   "negativeWeights.poles.one": "{count} pol, za t ≈ {list}",
   "negativeWeights.poles.other": "{count} polova, za t ≈ {list}",
@@ -883,16 +1107,21 @@ export default {
   "negativeWeights.tex.sumToOne": " imaju zbroj 1: ",
   "negativeWeights.tex.staysInHull": " ostaje u konveksnoj ljusci; ",
   "negativeWeights.tex.breaks": " to narušava",
-  "negativeWeights.aria": "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: {verdict}; {poles}; {hull}; ispod, graf nazivnika w(t)",
-  "negativeWeights.ariaRefused": "biblioteka je odbija ({message}), iscrtkana krivulja je projekcija homogene krivulje prema formuli",
+  "negativeWeights.aria":
+    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: {verdict}; {poles}; {hull}; ispod, graf nazivnika w(t)",
+  "negativeWeights.ariaRefused":
+    "biblioteka je odbija ({message}), iscrtkana krivulja je projekcija homogene krivulje prema formuli",
   "negativeWeights.ariaAccepted": "biblioteka je prihvaća",
-  "negativeWeights.ariaPoles": "w(t) doseže nulu za t ≈ {list} (ukupno {count}): polovi, gdje krivulja bježi u beskonačnost",
+  "negativeWeights.ariaPoles":
+    "w(t) doseže nulu za t ≈ {list} (ukupno {count}): polovi, gdje krivulja bježi u beskonačnost",
   "negativeWeights.ariaNoPoles": "w(t) ostaje pozitivan (najmanja vrijednost {min})",
   "negativeWeights.ariaOutside": "krivulja napušta svoju konveksnu ljusku",
   "negativeWeights.ariaInside": "krivulja ostaje u svojoj konveksnoj ljusci",
   "lagrange.title": "Lagrangeova interpolacija i Aitkenov trokut",
-  "lagrange.summary": "Jedan polinom kroz sve točke nasuprot kubnom splajnu; Aitkenov trokut gradi P(t) i napušta konveksnu ljusku; vijuganje raste s brojem točaka.",
-  "lagrange.aria": "Lagrangeov polinom stupnja {n} kroz zadane točke (broj: {count}) uz {params} parametre i prirodni kubni splajn kroz iste točke; t = {t}; P(t) = ({x}, {y}); splajn za t: ({sx}, {sy})",
+  "lagrange.summary":
+    "Jedan polinom kroz sve točke nasuprot kubnom splajnu; Aitkenov trokut gradi P(t) i napušta konveksnu ljusku; vijuganje raste s brojem točaka.",
+  "lagrange.aria":
+    "Lagrangeov polinom stupnja {n} kroz zadane točke (broj: {count}) uz {params} parametre i prirodni kubni splajn kroz iste točke; t = {t}; P(t) = ({x}, {y}); splajn za t: ({sx}, {sy})",
   "lagrange.error.t": "polje „t”: {t} je izvan domene parametra [{a}, {b}] ovih točaka",
   "lagrange.control.t": "Parametar t",
   "lagrange.control.t.input": "vrijednost t (decimalni broj ili razlomak poput 3/2)",
@@ -920,7 +1149,8 @@ export default {
   "lagrange.axisT": "t",
   "lagrange.marker": "t = {t}",
   "lagrange.sumNote": "Σ Lᵢ(t) = {sum}; ovdje je svaki Lᵢ(t) ≥ 0",
-  "lagrange.sumNegative": "Σ Lᵢ(t) = {sum}, ali L{i}(t) = {value} < 0: P(t) nije konveksna kombinacija točaka",
+  "lagrange.sumNegative":
+    "Σ Lᵢ(t) = {sum}, ali L{i}(t) = {value} < 0: P(t) nije konveksna kombinacija točaka",
   "lagrange.colFunction": "Bazna funkcija",
   "lagrange.colParam": "tᵢ",
   "lagrange.colValue": "Lᵢ(t)",
@@ -929,13 +1159,19 @@ export default {
   "lagrange.basisCaption": "Lagrangeova baza za t = {t}: težina svake zadane točke u P(t)",
   "lagrange.triangleCaption": "Aitkenov trokut za t = {t}: redak r sadrži točke razine r",
   "lagrange.tableLevel": "r = {r}",
-  "lagrange.whatYouSee": "Plava krivulja je jedini polinom P(t) stupnja n kroz svih n + 1 zadanih točaka; zelena krivulja je prirodni kubni splajn kroz iste točke uz iste parametre. Obojene razine čine Aitkenov trokut za t: svaka nova točka dijeli pravac svoje stranice u omjeru parametara, kao kod de Casteljaua, ali pada izvan stranice (točkasto) kad je t izvan raspona parametara te stranice, a bazne funkcije Lᵢ(t) ispod slike imaju zbroj 1, ali postaju negativne. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
-  "lagrange.try1": "Pomičite „Jednoliko razmaknute točke na Rungeovu zvonu” od 5 do 11: polinom sve jače oscilira blizu krajeva, a splajn ostaje na zvonu.",
-  "lagrange.try2": "Pritisnite Pokreni i promatrajte P(t) i njegov trokut: između parametara zadanih točaka točke razine ostaju blizu svojih stranica, a blizu krajeva prelijeću ih.",
-  "lagrange.try3": "Povucite p₂ prema gore: pomiče se cijeli polinom, čak i daleko od p₂, dok se splajn pomiče uglavnom blizu p₂. Zatim odaberite parametre po duljini tetiva i usporedite.",
+  "lagrange.whatYouSee":
+    "Plava krivulja je jedini polinom P(t) stupnja n kroz svih n + 1 zadanih točaka; zelena krivulja je prirodni kubni splajn kroz iste točke uz iste parametre. Obojene razine čine Aitkenov trokut za t: svaka nova točka dijeli pravac svoje stranice u omjeru parametara, kao kod de Casteljaua, ali pada izvan stranice (točkasto) kad je t izvan raspona parametara te stranice, a bazne funkcije Lᵢ(t) ispod slike imaju zbroj 1, ali postaju negativne. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
+  "lagrange.try1":
+    "Pomičite „Jednoliko razmaknute točke na Rungeovu zvonu” od 5 do 11: polinom sve jače oscilira blizu krajeva, a splajn ostaje na zvonu.",
+  "lagrange.try2":
+    "Pritisnite Pokreni i promatrajte P(t) i njegov trokut: između parametara zadanih točaka točke razine ostaju blizu svojih stranica, a blizu krajeva prelijeću ih.",
+  "lagrange.try3":
+    "Povucite p₂ prema gore: pomiče se cijeli polinom, čak i daleko od p₂, dok se splajn pomiče uglavnom blizu p₂. Zatim odaberite parametre po duljini tetiva i usporedite.",
   "bezierPatch.title": "Bézierova krpica",
-  "bezierPatch.summary": "Bikubična krpica sa svojom kontrolnom mrežom 4 × 4: generatrisa koja klizi duž četiriju direktrisa, izokrivulje, normala u ispitnoj točki, matrični oblik.",
-  "bezierPatch.aria": "Bikubična Bézierova krpica s kontrolnom mrežom 4 × 4; ispitna točka za u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z}); normala ({nx}, {ny}, {nz})",
+  "bezierPatch.summary":
+    "Bikubična krpica sa svojom kontrolnom mrežom 4 × 4: generatrisa koja klizi duž četiriju direktrisa, izokrivulje, normala u ispitnoj točki, matrični oblik.",
+  "bezierPatch.aria":
+    "Bikubična Bézierova krpica s kontrolnom mrežom 4 × 4; ispitna točka za u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z}); normala ({nx}, {ny}, {nz})",
   "bezierPatch.control.u": "Ispitni u",
   "bezierPatch.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 1/3)",
   "bezierPatch.control.v": "Ispitni v i generatrisa",
@@ -954,16 +1190,25 @@ export default {
   "bezierPatch.shading.gaussian": "Gaussova zakrivljenost K",
   "bezierPatch.shading.mean": "Srednja zakrivljenost H",
   "bezierPatch.normalLabel": "n",
-  "bezierPatch.texGeneratrix": "\\text{generatrisa za } v = {v}\\text{: kontrolne točke } D_i(v) = [v^3\\ v^2\\ v\\ 1]\\,M\\,[P_{i0}\\ P_{i1}\\ P_{i2}\\ P_{i3}]^T",
-  "bezierPatch.whatYouSee": "Bikubična Bézierova krpica S(u, v) = Σ Σ B_i(u) B_j(v) P_ij nad svojom kontrolnom mrežom 4 × 4 (sivo, iscrtkano), osvijetljena prema normalama koje računa jezgra. Kao u hrvatskim bilješkama (poglavlje 6), svaki redak mreže određuje direktrisu D_i(v) (zeleno); za dani v njihove točke D_0(v) … D_3(v) kontrolne su točke generatrise (crveno-narančasto), kubne krivulje po u koja opisuje površinu dok v teče. Samo prva i zadnja direktrisa leže na krpici. Strelica je jedinična normala u ispitnoj točki S(u, v). Matrični oblik zapisuje krpicu kao [u³ u² u 1] A [v³ v² v 1]ᵀ uz A = M P Mᵀ, jedna matrica 4 × 4 po koordinati, koju jezgra računa iz trenutne mreže. Zebra-pruge odražavaju paralelne svjetlosne pojaseve na površini; sjenčanja zakrivljenosti boje svaku točku prema K ili H, plavo negativno, bijelo nula, crveno-narančasto pozitivno, skalirano prema najvećoj vrijednosti na krpici (krajevi legende).",
-  "bezierPatch.try1": "Pritisnite Pokreni pokraj v i gledajte kako generatrisa prelazi krpicu dok njezine kontrolne točke klize duž direktrisa.",
-  "bezierPatch.try2": "Povucite unutarnju kontrolnu točku poput P₁₁ (ili je odaberite i pritisnite PageUp): površina je slijedi, ali je nikad ne dosegne; povucite kut i krpica prolazi kroz njega.",
-  "bezierPatch.try3": "Okrećite sliku (povucite prazan prostor) dok ne gledate duž ruba mreže: rubna krivulja je Bézierova krivulja četiriju točaka tog ruba.",
-  "bezierPatch.try4": "Odaberite Gaussovu zakrivljenost: plava su područja sedlasta (K < 0), crveno-narančasta kupolasta (K > 0). Povlačite P₂₂ gore-dolje i gledajte kako se boje pomiču s izbočinom; prebacite na zebra-pruge i pogledajte kako se savijaju gdje se savija površina.",
-  "bezierPatch.try5": "Povucite kontrolnu točku samo po jednoj koordinati (odaberite je, koristite strelice) i gledajte koje se od A_x, A_y, A_z mijenjaju: matrični oblik linearan je u mreži, koordinatu po koordinatu.",
+  "bezierPatch.texGeneratrix":
+    "\\text{generatrisa za } v = {v}\\text{: kontrolne točke } D_i(v) = [v^3\\ v^2\\ v\\ 1]\\,M\\,[P_{i0}\\ P_{i1}\\ P_{i2}\\ P_{i3}]^T",
+  "bezierPatch.whatYouSee":
+    "Bikubična Bézierova krpica S(u, v) = Σ Σ B_i(u) B_j(v) P_ij nad svojom kontrolnom mrežom 4 × 4 (sivo, iscrtkano), osvijetljena prema normalama koje računa jezgra. Kao u hrvatskim bilješkama (poglavlje 6), svaki redak mreže određuje direktrisu D_i(v) (zeleno); za dani v njihove točke D_0(v) … D_3(v) kontrolne su točke generatrise (crveno-narančasto), kubne krivulje po u koja opisuje površinu dok v teče. Samo prva i zadnja direktrisa leže na krpici. Strelica je jedinična normala u ispitnoj točki S(u, v). Matrični oblik zapisuje krpicu kao [u³ u² u 1] A [v³ v² v 1]ᵀ uz A = M P Mᵀ, jedna matrica 4 × 4 po koordinati, koju jezgra računa iz trenutne mreže. Zebra-pruge odražavaju paralelne svjetlosne pojaseve na površini; sjenčanja zakrivljenosti boje svaku točku prema K ili H, plavo negativno, bijelo nula, crveno-narančasto pozitivno, skalirano prema najvećoj vrijednosti na krpici (krajevi legende).",
+  "bezierPatch.try1":
+    "Pritisnite Pokreni pokraj v i gledajte kako generatrisa prelazi krpicu dok njezine kontrolne točke klize duž direktrisa.",
+  "bezierPatch.try2":
+    "Povucite unutarnju kontrolnu točku poput P₁₁ (ili je odaberite i pritisnite PageUp): površina je slijedi, ali je nikad ne dosegne; povucite kut i krpica prolazi kroz njega.",
+  "bezierPatch.try3":
+    "Okrećite sliku (povucite prazan prostor) dok ne gledate duž ruba mreže: rubna krivulja je Bézierova krivulja četiriju točaka tog ruba.",
+  "bezierPatch.try4":
+    "Odaberite Gaussovu zakrivljenost: plava su područja sedlasta (K < 0), crveno-narančasta kupolasta (K > 0). Povlačite P₂₂ gore-dolje i gledajte kako se boje pomiču s izbočinom; prebacite na zebra-pruge i pogledajte kako se savijaju gdje se savija površina.",
+  "bezierPatch.try5":
+    "Povucite kontrolnu točku samo po jednoj koordinati (odaberite je, koristite strelice) i gledajte koje se od A_x, A_y, A_z mijenjaju: matrični oblik linearan je u mreži, koordinatu po koordinatu.",
   "nurbsSurface.title": "B-površine i NURBS površine",
-  "nurbsSurface.summary": "Tenzorska B-površina sa stupnjem i uzlovima za svaki smjer: umetanje uzla dodaje cijeli redak ili stupac kontrolnih točaka, težine privlače površinu, šavovi obojeni prema izmjerenom kontinuitetu.",
-  "nurbsSurface.aria": "B-površina s kontrolnom mrežom {rows} × {cols}, stupnjevi {p} po u i {q} po v; ispitna točka za u = {u}, v = {v}: S = ({x}, {y}, {z}); {seams}",
+  "nurbsSurface.summary":
+    "Tenzorska B-površina sa stupnjem i uzlovima za svaki smjer: umetanje uzla dodaje cijeli redak ili stupac kontrolnih točaka, težine privlače površinu, šavovi obojeni prema izmjerenom kontinuitetu.",
+  "nurbsSurface.aria":
+    "B-površina s kontrolnom mrežom {rows} × {cols}, stupnjevi {p} po u i {q} po v; ispitna točka za u = {u}, v = {v}: S = ({x}, {y}, {z}); {seams}",
   "nurbsSurface.control.u": "Ispitni u",
   "nurbsSurface.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 1/3)",
   "nurbsSurface.control.v": "Ispitni v",
@@ -976,7 +1221,8 @@ export default {
   "nurbsSurface.degree4": "4",
   "nurbsSurface.control.knotsU": "Uzlovi U",
   "nurbsSurface.control.knotsV": "Uzlovi V",
-  "nurbsSurface.knotsHelp": "Broj uzlova: {count} (kontrolne točke: {n}, stupanj {p}); upišite vektor i pritisnite Enter",
+  "nurbsSurface.knotsHelp":
+    "Broj uzlova: {count} (kontrolne točke: {n}, stupanj {p}); upišite vektor i pritisnite Enter",
   "nurbsSurface.control.insertU": "Umetni uzao po u kod ispitne točke (dodaje redak)",
   "nurbsSurface.control.insertV": "Umetni uzao po v kod ispitne točke (dodaje stupac)",
   "nurbsSurface.control.clamped": "Stegnuti uniformni",
@@ -995,30 +1241,46 @@ export default {
   "nurbsSurface.shading.gaussian": "Gaussova zakrivljenost K",
   "nurbsSurface.shading.mean": "Srednja zakrivljenost H",
   "nurbsSurface.badWeight": "težina „{value}” mora biti broj u [{min}, {max}]",
-  "nurbsSurface.badSelected": "polje „selected”: točka {i} ne postoji u mreži s ukupno {count} točaka",
+  "nurbsSurface.badSelected":
+    "polje „selected”: točka {i} ne postoji u mreži s ukupno {count} točaka",
   "nurbsSurface.weightCount": "polje „weights”: težine {count}, kontrolne točke {points}",
   "nurbsSurface.netFull": "ova demonstracija staje na {max} redaka ili stupaca",
-  "nurbsSurface.degreeTooHigh": "stupanj {p} u smjeru {dir} treba najmanje {p} + 1 kontrolnih točaka u tom smjeru, a mreža ih ima {count}",
-  "nurbsSurface.insertedU": "Umetnut uzao u = {at}: Boehmovo pravilo na svakom stupcu, mreža je sada {rows} × {cols}",
-  "nurbsSurface.insertedV": "Umetnut uzao v = {at}: Boehmovo pravilo na svakom retku, mreža je sada {rows} × {cols}",
-  "nurbsSurface.noSeams": "Nema unutarnjih uzlova: jedna polinomna (ili racionalna) krpica, bez šavova",
+  "nurbsSurface.degreeTooHigh":
+    "stupanj {p} u smjeru {dir} treba najmanje {p} + 1 kontrolnih točaka u tom smjeru, a mreža ih ima {count}",
+  "nurbsSurface.insertedU":
+    "Umetnut uzao u = {at}: Boehmovo pravilo na svakom stupcu, mreža je sada {rows} × {cols}",
+  "nurbsSurface.insertedV":
+    "Umetnut uzao v = {at}: Boehmovo pravilo na svakom retku, mreža je sada {rows} × {cols}",
+  "nurbsSurface.noSeams":
+    "Nema unutarnjih uzlova: jedna polinomna (ili racionalna) krpica, bez šavova",
   "nurbsSurface.seamsReadout": "Šavovi koje je izmjerila jezgra: {u} · {v}",
   "nurbsSurface.legend": "Šavovi",
   "nurbsSurface.legendFreshRows": "novi retci",
   "nurbsSurface.legendFreshColumns": "novi stupci",
   "nurbsSurface.normalLabel": "n",
-  "nurbsSurface.texNet": "\\text{mreža } {rows} \\times {cols} = {count} \\text{ točaka},\\ \\text{stupnjevi } p = {p},\\ q = {q}\\text{: šav u uzlu višestrukosti } r \\text{ je } C^{p-r}",
-  "nurbsSurface.texInsertedU": "\\text{nakon } \\texttt{insertKnotU}\\text{: retci } {first}\\text{–}{last} \\text{ su novi (Boehm na svakom stupcu), jedan redak više}",
-  "nurbsSurface.texInsertedV": "\\text{nakon } \\texttt{insertKnotV}\\text{: stupci } {first}\\text{–}{last} \\text{ su novi (Boehm na svakom retku), jedan stupac više}",
-  "nurbsSurface.whatYouSee": "Tenzorska B-površina S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (s težinama w_ij NURBS površina) nad svojom kontrolnom mrežom (sivo, iscrtkano). Svaki smjer ima vlastiti stupanj i vektor uzlova, a domena je [u_p, u_m+1] × [v_q, v_n+1]. Kako kažu grčke bilješke, uzao se može umetnuti u bilo koji vektor zasebno: umetanje po u primjenjuje Boehmov algoritam na svaki stupac mreže, što dodaje cijeli redak kontrolnih točaka bez promjene površine (retci koje je stvorilo Boehmovo pravilo nacrtani su tamno); po v djeluje na retke i dodaje stupac. Obojene linije su šavovi, izokrivulje u unutarnjim uzlovima, obojene prema kontinuitetu koji jezgra mjeri preko njih (C^(p−r) za uzao višestrukosti r). Pomicanje jedne kontrolne točke mijenja površinu samo na (p + 1) × (q + 1) intervala: lokalni nadzor. Za razliku od krivulja, površine nemaju svojstvo smanjenja varijacije. Izbor sjenčanja prikazuje zebra-pruge (lom u njima je prekid tangentnog kontinuiteta) ili Gaussovu ili srednju zakrivljenost, iz točnih derivacija jezgre.",
-  "nurbsSurface.try1": "Pritisnite „Umetni uzao po u kod ispitne točke”: pojavljuje se novi redak točaka, a površina ostaje točno gdje je bila; legenda šavova dobiva novi uzao.",
-  "nurbsSurface.try2": "Upišite 1 u Ispitni u i umetnite: uzao 1 sada je dvostruk, a šav ipak ostaje C², jer umetanje čuva površinu. Sada povucite točku novih redaka: šav pada na C¹, sve što dvostruki uzao jamči uz stupanj 3.",
-  "nurbsSurface.try3": "Odaberite unutarnje hvatište i povećajte mu težinu: površina se privlači prema njemu, i to samo blizu njega (lokalni nadzor).",
-  "nurbsSurface.try4": "Povucite kutnu točku, a zatim unutarnju: stegnuta površina prolazi kroz kutove, ali nikad kroz unutarnje točke.",
-  "nurbsSurface.try5": "Prebacite jedan smjer na uniformne (nestegnute) uzlove: površina se povlači od ruba svoje mreže.",
+  "nurbsSurface.texNet":
+    "\\text{mreža } {rows} \\times {cols} = {count} \\text{ točaka},\\ \\text{stupnjevi } p = {p},\\ q = {q}\\text{: šav u uzlu višestrukosti } r \\text{ je } C^{p-r}",
+  "nurbsSurface.texInsertedU":
+    "\\text{nakon } \\texttt{insertKnotU}\\text{: retci } {first}\\text{–}{last} \\text{ su novi (Boehm na svakom stupcu), jedan redak više}",
+  "nurbsSurface.texInsertedV":
+    "\\text{nakon } \\texttt{insertKnotV}\\text{: stupci } {first}\\text{–}{last} \\text{ su novi (Boehm na svakom retku), jedan stupac više}",
+  "nurbsSurface.whatYouSee":
+    "Tenzorska B-površina S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (s težinama w_ij NURBS površina) nad svojom kontrolnom mrežom (sivo, iscrtkano). Svaki smjer ima vlastiti stupanj i vektor uzlova, a domena je [u_p, u_m+1] × [v_q, v_n+1]. Kako kažu grčke bilješke, uzao se može umetnuti u bilo koji vektor zasebno: umetanje po u primjenjuje Boehmov algoritam na svaki stupac mreže, što dodaje cijeli redak kontrolnih točaka bez promjene površine (retci koje je stvorilo Boehmovo pravilo nacrtani su tamno); po v djeluje na retke i dodaje stupac. Obojene linije su šavovi, izokrivulje u unutarnjim uzlovima, obojene prema kontinuitetu koji jezgra mjeri preko njih (C^(p−r) za uzao višestrukosti r). Pomicanje jedne kontrolne točke mijenja površinu samo na (p + 1) × (q + 1) intervala: lokalni nadzor. Za razliku od krivulja, površine nemaju svojstvo smanjenja varijacije. Izbor sjenčanja prikazuje zebra-pruge (lom u njima je prekid tangentnog kontinuiteta) ili Gaussovu ili srednju zakrivljenost, iz točnih derivacija jezgre.",
+  "nurbsSurface.try1":
+    "Pritisnite „Umetni uzao po u kod ispitne točke”: pojavljuje se novi redak točaka, a površina ostaje točno gdje je bila; legenda šavova dobiva novi uzao.",
+  "nurbsSurface.try2":
+    "Upišite 1 u Ispitni u i umetnite: uzao 1 sada je dvostruk, a šav ipak ostaje C², jer umetanje čuva površinu. Sada povucite točku novih redaka: šav pada na C¹, sve što dvostruki uzao jamči uz stupanj 3.",
+  "nurbsSurface.try3":
+    "Odaberite unutarnje hvatište i povećajte mu težinu: površina se privlači prema njemu, i to samo blizu njega (lokalni nadzor).",
+  "nurbsSurface.try4":
+    "Povucite kutnu točku, a zatim unutarnju: stegnuta površina prolazi kroz kutove, ali nikad kroz unutarnje točke.",
+  "nurbsSurface.try5":
+    "Prebacite jedan smjer na uniformne (nestegnute) uzlove: površina se povlači od ruba svoje mreže.",
   "surfaceInterpolation.title": "Interpolacija površine",
-  "surfaceInterpolation.summary": "B-površina kroz svaku točku mreže 4 × 5: parametri, uzlovi, zatim interpolacija svakog stupca po u i svakog retka rezultata po v.",
-  "surfaceInterpolation.aria": "B-površina stupnjeva {p} i {q} kroz mrežu {rows} × {cols} zadanih točaka, parametri: {kind}; najveće odstupanje {miss}",
+  "surfaceInterpolation.summary":
+    "B-površina kroz svaku točku mreže 4 × 5: parametri, uzlovi, zatim interpolacija svakog stupca po u i svakog retka rezultata po v.",
+  "surfaceInterpolation.aria":
+    "B-površina stupnjeva {p} i {q} kroz mrežu {rows} × {cols} zadanih točaka, parametri: {kind}; najveće odstupanje {miss}",
   "surfaceInterpolation.control.parametrisation": "Parametri",
   "surfaceInterpolation.kind.uniform": "Uniformni",
   "surfaceInterpolation.kind.chord": "Duljina tetiva",
@@ -1035,21 +1297,35 @@ export default {
   "surfaceInterpolation.control.iso": "Izokrivulje kroz zadane točke",
   "surfaceInterpolation.legendColumns": "korak 1: krivulje stupaca, točke s_il",
   "surfaceInterpolation.legendNet": "kontrolna mreža P_ij",
-  "surfaceInterpolation.missReadout": "Površina prolazi kroz sve zadane točke ({count}): najveće odstupanje {miss}",
-  "surfaceInterpolation.texUnknowns": "S(\\bar u_k, \\bar v_l) = Q_{kl},\\ k = 0..{m},\\ l = 0..{n}\\text{: } {rows} \\cdot {cols} = {count} \\text{ jednadžbi za } {count} \\text{ nepoznatih kontrolnih točaka } P_{ij}\\ (p = {p},\\ q = {q})",
-  "surfaceInterpolation.texColumns": "\\text{1. stupci: } {cols} \\text{ krivulja u } u\\ ({rows} \\times {rows}\\text{, } {cols} \\text{ desnih strana})\\text{: } \\textstyle\\sum_i N_{i,{p}}(\\bar u_k)\\, s_{il} = Q_{kl}",
-  "surfaceInterpolation.texRows": "\\text{2. retci: } {rows} \\text{ krivulja u } v\\ ({cols} \\times {cols}\\text{, } {rows} \\text{ desnih strana})\\text{: } \\textstyle\\sum_j N_{j,{q}}(\\bar v_l)\\, P_{ij} = s_{il}",
-  "surfaceInterpolation.whatYouSee": "Mreža od 4 × 5 zadanih točaka Q_kl (hvatišta, visinsko polje) i B-površina kroz svaku od njih. Svaka zadana točka dobiva parametre (ū_k, v̄_l): duž svakog stupca odabrana parametrizacija (uniformna, po duljini tetiva ili centripetalna) normirana na [0, 1], uprosječena po stupcima, i jednako duž redaka; uzlovi su prosjeci parametara. Zatim, kako opisuju grčke bilješke, posao su dva prolaza interpolacije krivulja: najprije se svaki stupac podataka interpolira po u (zelene krivulje i njihove kontrolne točke s_il), zatim se svaki redak tih kontrolnih točaka interpolira po v, što daje kontrolnu mrežu P_ij (ljubičasto, točkasto). Izokrivulja površine za v̄_l upravo je zelena krivulja stupca l. Bikubična inačica iz bilježaka dodaje rubne uvjete (m + 3 kontrolne točke po stupcu); ovdje uprosječeni uzlovi daju jednu kontrolnu točku po zadanoj točki. Interpolacija je globalna: povlačenje jedne zadane točke pomiče cijelu mrežu.",
-  "surfaceInterpolation.try1": "Uključite izokrivulje: one za v̄_l leže točno na zelenim krivuljama stupaca iz koraka 1, a one za ū_k prolaze kroz retke podataka.",
-  "surfaceInterpolation.try2": "Povucite najvišu zadanu točku prema gore: površina i dalje prolazi kroz svaku točku, ali se kontrolna mreža pomiče posvuda — nema lokalnog nadzora.",
-  "surfaceInterpolation.try3": "Prebacujte između uniformnih, tetivnih i centripetalnih parametara nakon što jedan razmak mreže učinite mnogo duljim od ostalih: vijuganja se pomiču.",
-  "surfaceInterpolation.try4": "Postavite oba stupnja na 1: površina postaje bilinearne krpice kroz mrežu, a kontrolna mreža su sami podaci.",
+  "surfaceInterpolation.missReadout":
+    "Površina prolazi kroz sve zadane točke ({count}): najveće odstupanje {miss}",
+  "surfaceInterpolation.texUnknowns":
+    "S(\\bar u_k, \\bar v_l) = Q_{kl},\\ k = 0..{m},\\ l = 0..{n}\\text{: } {rows} \\cdot {cols} = {count} \\text{ jednadžbi za } {count} \\text{ nepoznatih kontrolnih točaka } P_{ij}\\ (p = {p},\\ q = {q})",
+  "surfaceInterpolation.texColumns":
+    "\\text{1. stupci: } {cols} \\text{ krivulja u } u\\ ({rows} \\times {rows}\\text{, } {cols} \\text{ desnih strana})\\text{: } \\textstyle\\sum_i N_{i,{p}}(\\bar u_k)\\, s_{il} = Q_{kl}",
+  "surfaceInterpolation.texRows":
+    "\\text{2. retci: } {rows} \\text{ krivulja u } v\\ ({cols} \\times {cols}\\text{, } {rows} \\text{ desnih strana})\\text{: } \\textstyle\\sum_j N_{j,{q}}(\\bar v_l)\\, P_{ij} = s_{il}",
+  "surfaceInterpolation.whatYouSee":
+    "Mreža od 4 × 5 zadanih točaka Q_kl (hvatišta, visinsko polje) i B-površina kroz svaku od njih. Svaka zadana točka dobiva parametre (ū_k, v̄_l): duž svakog stupca odabrana parametrizacija (uniformna, po duljini tetiva ili centripetalna) normirana na [0, 1], uprosječena po stupcima, i jednako duž redaka; uzlovi su prosjeci parametara. Zatim, kako opisuju grčke bilješke, posao su dva prolaza interpolacije krivulja: najprije se svaki stupac podataka interpolira po u (zelene krivulje i njihove kontrolne točke s_il), zatim se svaki redak tih kontrolnih točaka interpolira po v, što daje kontrolnu mrežu P_ij (ljubičasto, točkasto). Izokrivulja površine za v̄_l upravo je zelena krivulja stupca l. Bikubična inačica iz bilježaka dodaje rubne uvjete (m + 3 kontrolne točke po stupcu); ovdje uprosječeni uzlovi daju jednu kontrolnu točku po zadanoj točki. Interpolacija je globalna: povlačenje jedne zadane točke pomiče cijelu mrežu.",
+  "surfaceInterpolation.try1":
+    "Uključite izokrivulje: one za v̄_l leže točno na zelenim krivuljama stupaca iz koraka 1, a one za ū_k prolaze kroz retke podataka.",
+  "surfaceInterpolation.try2":
+    "Povucite najvišu zadanu točku prema gore: površina i dalje prolazi kroz svaku točku, ali se kontrolna mreža pomiče posvuda — nema lokalnog nadzora.",
+  "surfaceInterpolation.try3":
+    "Prebacujte između uniformnih, tetivnih i centripetalnih parametara nakon što jedan razmak mreže učinite mnogo duljim od ostalih: vijuganja se pomiču.",
+  "surfaceInterpolation.try4":
+    "Postavite oba stupnja na 1: površina postaje bilinearne krpice kroz mrežu, a kontrolna mreža su sami podaci.",
   "surfaceRevolution.title": "Rotacijske, ekstrudirane i pravčaste površine",
-  "surfaceRevolution.summary": "Površine načinjene od krivulja: točni NURBS torus, vaza tokarena iz profila koji se može uređivati, profil ekstrudiran duž vektora i pravčasta površina između kvadratne i kubne krivulje.",
-  "surfaceRevolution.aria.torus": "Torus (R = {R}, r = {r}) opisan rotacijom za {angle}° iz točne NURBS kružnice: racionalna bikvadratna površina s kontrolnom mrežom {rows} × {cols}",
-  "surfaceRevolution.aria.vase": "Vaza: kubni profil B-krivulje (točke: {count}) u ravnini xz zarotiran za 360° oko osi z; kontrolna mreža {rows} × {cols}",
-  "surfaceRevolution.aria.extrude": "Kubni profil B-krivulje (točke: {count}) u ravnini xy ekstrudiran duž vektora d; kontrolna mreža {rows} × {cols}",
-  "surfaceRevolution.aria.ruled": "Pravčasta površina između kvadratne krivulje A i kubne krivulje B, s ravnim izvodnicama; kontrolna mreža {rows} × {cols}",
+  "surfaceRevolution.summary":
+    "Površine načinjene od krivulja: točni NURBS torus, vaza tokarena iz profila koji se može uređivati, profil ekstrudiran duž vektora i pravčasta površina između kvadratne i kubne krivulje.",
+  "surfaceRevolution.aria.torus":
+    "Torus (R = {R}, r = {r}) opisan rotacijom za {angle}° iz točne NURBS kružnice: racionalna bikvadratna površina s kontrolnom mrežom {rows} × {cols}",
+  "surfaceRevolution.aria.vase":
+    "Vaza: kubni profil B-krivulje (točke: {count}) u ravnini xz zarotiran za 360° oko osi z; kontrolna mreža {rows} × {cols}",
+  "surfaceRevolution.aria.extrude":
+    "Kubni profil B-krivulje (točke: {count}) u ravnini xy ekstrudiran duž vektora d; kontrolna mreža {rows} × {cols}",
+  "surfaceRevolution.aria.ruled":
+    "Pravčasta površina između kvadratne krivulje A i kubne krivulje B, s ravnim izvodnicama; kontrolna mreža {rows} × {cols}",
   "surfaceRevolution.control.mode": "Površina",
   "surfaceRevolution.mode.torus": "Torus (rotacija kružnice)",
   "surfaceRevolution.mode.vase": "Vaza (rotacija profila)",
@@ -1067,33 +1343,55 @@ export default {
   "surfaceRevolution.control.net": "Kontrolna mreža površine",
   "surfaceRevolution.control.iso": "Izokrivulje",
   "surfaceRevolution.control.wireframe": "Žičani model",
-  "surfaceRevolution.check.torus": "Mreža {rows} × {cols}. Najveća udaljenost od torusa na mreži uzoraka jezgre: {distance} — točno do zaokruživanja.",
-  "surfaceRevolution.check.vase": "Mreža {rows} × {cols}. Svaki okvir povlačenja ponovno gradi površinu sa sl.revolve ({revolve} ms) i mrežu trokuta ({mesh} ms).",
-  "surfaceRevolution.check.extrude": "Mreža {rows} × {cols}. S(u, 1) − S(u, 0) = {d} = d za svaki u.",
+  "surfaceRevolution.check.torus":
+    "Mreža {rows} × {cols}. Najveća udaljenost od torusa na mreži uzoraka jezgre: {distance} — točno do zaokruživanja.",
+  "surfaceRevolution.check.vase":
+    "Mreža {rows} × {cols}. Svaki okvir povlačenja ponovno gradi površinu sa sl.revolve ({revolve} ms) i mrežu trokuta ({mesh} ms).",
+  "surfaceRevolution.check.extrude":
+    "Mreža {rows} × {cols}. S(u, 1) − S(u, 0) = {d} = d za svaki u.",
   "surfaceRevolution.check.ruled": "Mreža {rows} × {cols}. S(u, ½) = {mid}, polovište A(u) i B(u).",
-  "surfaceRevolution.tex.circle": "C(v) = (R + r\\cos\\varphi,\\ 0,\\ r\\sin\\varphi),\\ R = {R},\\ r = {r}\\text{: točna NURBS kružnica (9 točaka)}",
-  "surfaceRevolution.tex.revolve": "S(u, v) = \\mathrm{Rot}_z(u\\,\\theta)\\, C(v),\\ \\theta = {angle}^\\circ\\text{: mreža } {rows} \\times {cols}\\text{, stupanj } 2 \\times 2\\text{ (A8.1)}",
+  "surfaceRevolution.tex.circle":
+    "C(v) = (R + r\\cos\\varphi,\\ 0,\\ r\\sin\\varphi),\\ R = {R},\\ r = {r}\\text{: točna NURBS kružnica (9 točaka)}",
+  "surfaceRevolution.tex.revolve":
+    "S(u, v) = \\mathrm{Rot}_z(u\\,\\theta)\\, C(v),\\ \\theta = {angle}^\\circ\\text{: mreža } {rows} \\times {cols}\\text{, stupanj } 2 \\times 2\\text{ (A8.1)}",
   "surfaceRevolution.tex.weights": "\\text{težine luka } w_{i0} = {weights}",
-  "surfaceRevolution.tex.rational": "S(u, v) = \\frac{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij} P_{ij}}{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij}},\\quad w_{ij} = w_i\\, w_j",
-  "surfaceRevolution.tex.torusCheck": "\\max_{{n} \\times {n}\\text{ mreža}} \\Bigl|\\sqrt{\\bigl(\\sqrt{x^2+y^2} - {R}\\bigr)^2 + z^2} - {r}\\Bigr| = {distance}\\text{: točno}",
-  "surfaceRevolution.tex.profile": "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: stegnuta kubna}",
-  "surfaceRevolution.tex.revolveVase": "S(u, v) = \\bigl(x(v)\\cos 2\\pi u,\\ x(v)\\sin 2\\pi u,\\ z(v)\\bigr)\\text{: mreža } {rows} \\times {cols}\\text{ (A8.1)}",
-  "surfaceRevolution.tex.vaseNet": "P_{ij} = P_j\\text{ zakrenuta za } i \\cdot 45^\\circ\\text{, za neparne } i\\text{ odmaknuta za } \\sqrt2\\ (1/\\cos 45^\\circ)",
-  "surfaceRevolution.tex.extrude": "S(u, v) = C(u) + v\\,\\mathbf d,\\quad v \\in [0, 1],\\quad \\mathbf d = {d}",
-  "surfaceRevolution.tex.extrudeNet": "P_{i0} = P_i,\\ P_{i1} = P_i + \\mathbf d\\text{: mreža } {rows} \\times {cols}\\text{, stupanj 3 u } u\\text{, 1 u } v\\text{ (§10.3)}",
+  "surfaceRevolution.tex.rational":
+    "S(u, v) = \\frac{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij} P_{ij}}{\\sum_i \\sum_j N_{i,2}(u)\\, N_{j,{q}}(v)\\, w_{ij}},\\quad w_{ij} = w_i\\, w_j",
+  "surfaceRevolution.tex.torusCheck":
+    "\\max_{{n} \\times {n}\\text{ mreža}} \\Bigl|\\sqrt{\\bigl(\\sqrt{x^2+y^2} - {R}\\bigr)^2 + z^2} - {r}\\Bigr| = {distance}\\text{: točno}",
+  "surfaceRevolution.tex.profile":
+    "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: stegnuta kubna}",
+  "surfaceRevolution.tex.revolveVase":
+    "S(u, v) = \\bigl(x(v)\\cos 2\\pi u,\\ x(v)\\sin 2\\pi u,\\ z(v)\\bigr)\\text{: mreža } {rows} \\times {cols}\\text{ (A8.1)}",
+  "surfaceRevolution.tex.vaseNet":
+    "P_{ij} = P_j\\text{ zakrenuta za } i \\cdot 45^\\circ\\text{, za neparne } i\\text{ odmaknuta za } \\sqrt2\\ (1/\\cos 45^\\circ)",
+  "surfaceRevolution.tex.extrude":
+    "S(u, v) = C(u) + v\\,\\mathbf d,\\quad v \\in [0, 1],\\quad \\mathbf d = {d}",
+  "surfaceRevolution.tex.extrudeNet":
+    "P_{i0} = P_i,\\ P_{i1} = P_i + \\mathbf d\\text{: mreža } {rows} \\times {cols}\\text{, stupanj 3 u } u\\text{, 1 u } v\\text{ (§10.3)}",
   "surfaceRevolution.tex.extrudeCheck": "S({u}, 1) - S({u}, 0) = {d}",
-  "surfaceRevolution.tex.ruled": "S(u, v) = (1 - v)\\,A(u) + v\\,B(u),\\quad A\\text{ kvadratna},\\ B\\text{ kubna}",
-  "surfaceRevolution.tex.ruledNet": "\\text{najprije usklađivanje: } A_i' = \\tfrac{i}{3} A_{i-1} + \\bigl(1 - \\tfrac{i}{3}\\bigr) A_i\\text{ (stupanj 2} \\to 3\\text{), mreža } {rows} \\times {cols}\\text{ (§10.3)}",
+  "surfaceRevolution.tex.ruled":
+    "S(u, v) = (1 - v)\\,A(u) + v\\,B(u),\\quad A\\text{ kvadratna},\\ B\\text{ kubna}",
+  "surfaceRevolution.tex.ruledNet":
+    "\\text{najprije usklađivanje: } A_i' = \\tfrac{i}{3} A_{i-1} + \\bigl(1 - \\tfrac{i}{3}\\bigr) A_i\\text{ (stupanj 2} \\to 3\\text{), mreža } {rows} \\times {cols}\\text{ (§10.3)}",
   "surfaceRevolution.tex.ruledCheck": "A({u}) = {a},\\ B({u}) = {b},\\ S({u}, \\tfrac12) = {mid}",
-  "surfaceRevolution.whatYouSee": "Površine koje jezgra gradi od krivulja, svaka sa svojom kontrolnom mrežom (sivo, iscrtkano) i izokrivuljama. Rotacija okreće profilnu krivulju oko osi z: svaka kontrolna točka Pⱼ postaje kružnica od 9 kontrolnih točaka (četiri točna kvadratna luka, težine 1, √2/2, 1, …), pa kružni profil daje točno torus, a vaza je točna u svakom smjeru okolo. Ekstruzija pomiče profil duž vektora d: dva stupca, Pᵢ i Pᵢ + d. Pravčasta površina spaja kvadratnu krivulju A i kubnu B ravnim dužinama (izvodnicama): jezgra najprije povećava stupanj A na 3 tako da obje imaju isti stupanj i uzlove.",
-  "surfaceRevolution.try1": "Torus: smanjite kut na 90° i gledajte kako mreža s 9 redaka prelazi na 3 (jedan luk); uz 180°, 5.",
-  "surfaceRevolution.try2": "Torus: redak provjere ostaje blizu 10⁻¹⁶ za svaki R, r i kut — racionalna površina je točna, a polinomna bi kružnicu mogla samo aproksimirati.",
-  "surfaceRevolution.try3": "Vaza: povucite točku profila; pomiče se samo u ravnini xz, a cijela se površina okreće s njom. Odmaknite P₀ od osi da otvorite dno.",
-  "surfaceRevolution.try4": "Ekstruzija: povucite vrh d strelice da nagnete stijenku; svaka izvodnica ekstruzije kopija je od d.",
-  "surfaceRevolution.try5": "Pravčasta: usporedite četiri narančaste točkice (prvi stupac mreže) s trima točkama od A — jezgra je povećala stupanj A na kubnu s četiri točke koje crtaju istu krivulju, pa A i B mogu dijeliti jednu mrežu.",
+  "surfaceRevolution.whatYouSee":
+    "Površine koje jezgra gradi od krivulja, svaka sa svojom kontrolnom mrežom (sivo, iscrtkano) i izokrivuljama. Rotacija okreće profilnu krivulju oko osi z: svaka kontrolna točka Pⱼ postaje kružnica od 9 kontrolnih točaka (četiri točna kvadratna luka, težine 1, √2/2, 1, …), pa kružni profil daje točno torus, a vaza je točna u svakom smjeru okolo. Ekstruzija pomiče profil duž vektora d: dva stupca, Pᵢ i Pᵢ + d. Pravčasta površina spaja kvadratnu krivulju A i kubnu B ravnim dužinama (izvodnicama): jezgra najprije povećava stupanj A na 3 tako da obje imaju isti stupanj i uzlove.",
+  "surfaceRevolution.try1":
+    "Torus: smanjite kut na 90° i gledajte kako mreža s 9 redaka prelazi na 3 (jedan luk); uz 180°, 5.",
+  "surfaceRevolution.try2":
+    "Torus: redak provjere ostaje blizu 10⁻¹⁶ za svaki R, r i kut — racionalna površina je točna, a polinomna bi kružnicu mogla samo aproksimirati.",
+  "surfaceRevolution.try3":
+    "Vaza: povucite točku profila; pomiče se samo u ravnini xz, a cijela se površina okreće s njom. Odmaknite P₀ od osi da otvorite dno.",
+  "surfaceRevolution.try4":
+    "Ekstruzija: povucite vrh d strelice da nagnete stijenku; svaka izvodnica ekstruzije kopija je od d.",
+  "surfaceRevolution.try5":
+    "Pravčasta: usporedite četiri narančaste točkice (prvi stupac mreže) s trima točkama od A — jezgra je povećala stupanj A na kubnu s četiri točke koje crtaju istu krivulju, pa A i B mogu dijeliti jednu mrežu.",
   "patchDeCasteljau.title": "De Casteljau na krpici",
-  "patchDeCasteljau.summary": "Točka S(u, v) Bézierove krpice izgrađena samo krivuljama: de Casteljau na svakom retku po v, zatim još jednom po u na rezultatima. Redoslijed „najprije stupci” daje istu točku.",
-  "patchDeCasteljau.aria": "De Casteljauova konstrukcija na Bézierovoj krpici stupnja {degree} × {degree}, {order}, korak {step} od {of}; u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z})",
+  "patchDeCasteljau.summary":
+    "Točka S(u, v) Bézierove krpice izgrađena samo krivuljama: de Casteljau na svakom retku po v, zatim još jednom po u na rezultatima. Redoslijed „najprije stupci” daje istu točku.",
+  "patchDeCasteljau.aria":
+    "De Casteljauova konstrukcija na Bézierovoj krpici stupnja {degree} × {degree}, {order}, korak {step} od {of}; u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z})",
   "patchDeCasteljau.ariaRows": "najprije retci",
   "patchDeCasteljau.ariaColumns": "najprije stupci",
   "patchDeCasteljau.control.u": "u (trokut stupca)",
@@ -1119,29 +1417,51 @@ export default {
   "patchDeCasteljau.control.net": "Kontrolna mreža",
   "patchDeCasteljau.pointLabel": "S(u, v)",
   "patchDeCasteljau.step.net": "Korak {k} od {of}: samo kontrolna mreža.",
-  "patchDeCasteljau.step.rows": "Korak {k} od {of}: razina {r} de Casteljauova trokuta svakog retka za v = {v}.",
-  "patchDeCasteljau.step.columns": "Korak {k} od {of}: razina {r} de Casteljauova trokuta svakog stupca za u = {u}.",
-  "patchDeCasteljau.step.rowResults": "Korak {k} od {of}: rezultati redaka Q₀ … (njih {count}) kontrolne su točke izokrivulje za v = {v}.",
-  "patchDeCasteljau.step.columnResults": "Korak {k} od {of}: rezultati stupaca R₀ … (njih {count}) kontrolne su točke izokrivulje za u = {u}.",
-  "patchDeCasteljau.step.column": "Korak {k} od {of}: razina {r} de Casteljauova algoritma na Q₀ … za u = {u}.",
-  "patchDeCasteljau.step.row": "Korak {k} od {of}: razina {r} de Casteljauova algoritma na R₀ … za v = {v}.",
-  "patchDeCasteljau.step.point": "Korak {k} od {of}: vrh posljednjeg trokuta je točka S(u, v) krpice.",
-  "patchDeCasteljau.step.pointColumns": "Korak {k} od {of}: vrh posljednjeg trokuta je točka S(u, v) krpice.",
-  "patchDeCasteljau.texRows": "\\text{svaki redak } i\\text{ za } v = {v}\\text{:}\\ \\ P_{ij}^{r} = (1-v)\\,P_{ij}^{r-1} + v\\,P_{i,j+1}^{r-1},\\quad Q_i = P_{i0}^{{n}}",
-  "patchDeCasteljau.texColumn": "\\text{zatim za } u = {u}\\text{:}\\ \\ Q_{i}^{r} = (1-u)\\,Q_{i}^{r-1} + u\\,Q_{i+1}^{r-1},\\quad S(u, v) = Q_0^{{m}}",
-  "patchDeCasteljau.texColumns": "\\text{svaki stupac } j\\text{ za } u = {u}\\text{:}\\ \\ P_{ij}^{r} = (1-u)\\,P_{ij}^{r-1} + u\\,P_{i+1,j}^{r-1},\\quad R_j = P_{0j}^{{m}}",
-  "patchDeCasteljau.texRow": "\\text{zatim za } v = {v}\\text{:}\\ \\ R_{j}^{r} = (1-v)\\,R_{j}^{r-1} + v\\,R_{j+1}^{r-1},\\quad S(u, v) = R_0^{{n}}",
-  "patchDeCasteljau.texBoth": "S({u}, {v}) = \\underbrace{{rows}}_{\\text{najprije retci}} = \\underbrace{{columns}}_{\\text{najprije stupci}},\\quad \\lvert\\Delta\\rvert = {gap}",
-  "patchDeCasteljau.whatYouSee": "Grčke bilješke računaju točku Bézierove površine samo krivuljama. De Casteljauov algoritam izvodi se na svakom retku kontrolne mreže s obzirom na v (boje razina kao u demonstraciji za krivulje); daje m + 1 točaka Q₀ … Qₘ (crveno-narančasto), kontrolne točke izoparametarske krivulje koja pripada v (crveno-narančasta krivulja na krpici). Još jedan de Casteljau na tim točkama, s obzirom na u, završava u točki S(u, v). Redoslijed „najprije stupci” (svaki stupac po u, zatim redak rezultata po v) završava u istoj točki: formula prikazuje oboje.",
-  "patchDeCasteljau.try1": "Postavite korak na 0 i povećavajte ga jedan po jedan: razine redaka, njihovi rezultati na izokrivulji, zatim posljednji trokut do S(u, v).",
-  "patchDeCasteljau.try2": "Prebacite na „Najprije stupci”: trokuti se okreću na drugu stranu, a izokrivulja ide poprijeko, no S(u, v) ostaje gdje je bila.",
-  "patchDeCasteljau.try3": "Pritisnite Pokreni pokraj v: rezultati redaka klize duž Bézierovih krivulja redaka, a njihova izokrivulja prelazi krpicu.",
-  "patchDeCasteljau.try4": "Povucite unutarnju točku poput P₁₁: mijenja se svaki trokut njezina retka, trokuti ostalih redaka ostaju.",
-  "patchDeCasteljau.try5": "Odaberite stupanj 1 × 1: jedna razina po smjeru, a S(u, v) je bilinearna interpolacija četiriju kutova.",
+  "patchDeCasteljau.step.rows":
+    "Korak {k} od {of}: razina {r} de Casteljauova trokuta svakog retka za v = {v}.",
+  "patchDeCasteljau.step.columns":
+    "Korak {k} od {of}: razina {r} de Casteljauova trokuta svakog stupca za u = {u}.",
+  "patchDeCasteljau.step.rowResults":
+    "Korak {k} od {of}: rezultati redaka Q₀ … (njih {count}) kontrolne su točke izokrivulje za v = {v}.",
+  "patchDeCasteljau.step.columnResults":
+    "Korak {k} od {of}: rezultati stupaca R₀ … (njih {count}) kontrolne su točke izokrivulje za u = {u}.",
+  "patchDeCasteljau.step.column":
+    "Korak {k} od {of}: razina {r} de Casteljauova algoritma na Q₀ … za u = {u}.",
+  "patchDeCasteljau.step.row":
+    "Korak {k} od {of}: razina {r} de Casteljauova algoritma na R₀ … za v = {v}.",
+  "patchDeCasteljau.step.point":
+    "Korak {k} od {of}: vrh posljednjeg trokuta je točka S(u, v) krpice.",
+  "patchDeCasteljau.step.pointColumns":
+    "Korak {k} od {of}: vrh posljednjeg trokuta je točka S(u, v) krpice.",
+  "patchDeCasteljau.texRows":
+    "\\text{svaki redak } i\\text{ za } v = {v}\\text{:}\\ \\ P_{ij}^{r} = (1-v)\\,P_{ij}^{r-1} + v\\,P_{i,j+1}^{r-1},\\quad Q_i = P_{i0}^{{n}}",
+  "patchDeCasteljau.texColumn":
+    "\\text{zatim za } u = {u}\\text{:}\\ \\ Q_{i}^{r} = (1-u)\\,Q_{i}^{r-1} + u\\,Q_{i+1}^{r-1},\\quad S(u, v) = Q_0^{{m}}",
+  "patchDeCasteljau.texColumns":
+    "\\text{svaki stupac } j\\text{ za } u = {u}\\text{:}\\ \\ P_{ij}^{r} = (1-u)\\,P_{ij}^{r-1} + u\\,P_{i+1,j}^{r-1},\\quad R_j = P_{0j}^{{m}}",
+  "patchDeCasteljau.texRow":
+    "\\text{zatim za } v = {v}\\text{:}\\ \\ R_{j}^{r} = (1-v)\\,R_{j}^{r-1} + v\\,R_{j+1}^{r-1},\\quad S(u, v) = R_0^{{n}}",
+  "patchDeCasteljau.texBoth":
+    "S({u}, {v}) = \\underbrace{{rows}}_{\\text{najprije retci}} = \\underbrace{{columns}}_{\\text{najprije stupci}},\\quad \\lvert\\Delta\\rvert = {gap}",
+  "patchDeCasteljau.whatYouSee":
+    "Grčke bilješke računaju točku Bézierove površine samo krivuljama. De Casteljauov algoritam izvodi se na svakom retku kontrolne mreže s obzirom na v (boje razina kao u demonstraciji za krivulje); daje m + 1 točaka Q₀ … Qₘ (crveno-narančasto), kontrolne točke izoparametarske krivulje koja pripada v (crveno-narančasta krivulja na krpici). Još jedan de Casteljau na tim točkama, s obzirom na u, završava u točki S(u, v). Redoslijed „najprije stupci” (svaki stupac po u, zatim redak rezultata po v) završava u istoj točki: formula prikazuje oboje.",
+  "patchDeCasteljau.try1":
+    "Postavite korak na 0 i povećavajte ga jedan po jedan: razine redaka, njihovi rezultati na izokrivulji, zatim posljednji trokut do S(u, v).",
+  "patchDeCasteljau.try2":
+    "Prebacite na „Najprije stupci”: trokuti se okreću na drugu stranu, a izokrivulja ide poprijeko, no S(u, v) ostaje gdje je bila.",
+  "patchDeCasteljau.try3":
+    "Pritisnite Pokreni pokraj v: rezultati redaka klize duž Bézierovih krivulja redaka, a njihova izokrivulja prelazi krpicu.",
+  "patchDeCasteljau.try4":
+    "Povucite unutarnju točku poput P₁₁: mijenja se svaki trokut njezina retka, trokuti ostalih redaka ostaju.",
+  "patchDeCasteljau.try5":
+    "Odaberite stupanj 1 × 1: jedna razina po smjeru, a S(u, v) je bilinearna interpolacija četiriju kutova.",
   "patchSubdivision.title": "Podjela krpice",
-  "patchSubdivision.summary": "Bikubična krpica podijeljena u (u₀, v₀) na četiri krpice istog stupnja i adaptivno nacrtana: dijeli se dalje dok svaka mreža nije dovoljno ravna.",
-  "patchSubdivision.ariaSplit": "Bikubična Bézierova krpica podijeljena u u₀ = {u}, v₀ = {v} na četiri krpice s njihovim mrežama, koje se sastaju u S(u₀, v₀) = ({x}, {y}, {z})",
-  "patchSubdivision.ariaAdaptive": "Bikubična Bézierova krpica adaptivno teselirana uz toleranciju {tolerance}: {triangles} trokuta; uniformna mreža jednako fina kao najfinija ćelija ima {uniform}",
+  "patchSubdivision.summary":
+    "Bikubična krpica podijeljena u (u₀, v₀) na četiri krpice istog stupnja i adaptivno nacrtana: dijeli se dalje dok svaka mreža nije dovoljno ravna.",
+  "patchSubdivision.ariaSplit":
+    "Bikubična Bézierova krpica podijeljena u u₀ = {u}, v₀ = {v} na četiri krpice s njihovim mrežama, koje se sastaju u S(u₀, v₀) = ({x}, {y}, {z})",
+  "patchSubdivision.ariaAdaptive":
+    "Bikubična Bézierova krpica adaptivno teselirana uz toleranciju {tolerance}: {triangles} trokuta; uniformna mreža jednako fina kao najfinija ćelija ima {uniform}",
   "patchSubdivision.control.mode": "Prikaži",
   "patchSubdivision.control.split": "Podjela u (u₀, v₀)",
   "patchSubdivision.control.adaptive": "Adaptivna teselacija",
@@ -1152,31 +1472,50 @@ export default {
   "patchSubdivision.control.nets": "Četiri kontrolne mreže",
   "patchSubdivision.control.tolerance": "Tolerancija ε (jedinice modela)",
   "patchSubdivision.control.tolerance.input": "tolerancija ε, od {min} do {max}",
-  "patchSubdivision.badTolerance": "tolerancija ε: „{value}” nije broj od {min} do {max}; zadržava se trenutna vrijednost",
+  "patchSubdivision.badTolerance":
+    "tolerancija ε: „{value}” nije broj od {min} do {max}; zadržava se trenutna vrijednost",
   "patchSubdivision.control.quadtree": "Četverostablo u kvadratu (u, v)",
-  "patchSubdivision.splitNote": "Četiri bikubične krpice na [0, {u}] × [0, {v}] (narančasto), [0, {u}] × [{v}, 1] (zeleno), [{u}, 1] × [0, {v}] (ljubičasto) i [{u}, 1] × [{v}, 1] (crveno-narančasto).",
-  "patchSubdivision.counts": "{triangles} trokuta uz ε = {tolerance}; uniformna mreža {n} × {n}, posvuda jednako fina kao najfinija ćelija, ima {uniform}.",
+  "patchSubdivision.splitNote":
+    "Četiri bikubične krpice na [0, {u}] × [0, {v}] (narančasto), [0, {u}] × [{v}, 1] (zeleno), [{u}, 1] × [0, {v}] (ljubičasto) i [{u}, 1] × [{v}, 1] (crveno-narančasto).",
+  "patchSubdivision.counts":
+    "{triangles} trokuta uz ε = {tolerance}; uniformna mreža {n} × {n}, posvuda jednako fina kao najfinija ćelija, ima {uniform}.",
   "patchSubdivision.pointLabel": "S(u₀, v₀)",
   "patchSubdivision.axisU": "u",
   "patchSubdivision.axisV": "v",
-  "patchSubdivision.texPieces": "\\text{četiri krpice na }[0,u_0]\\times[0,v_0],\\ [0,u_0]\\times[v_0,1],\\ [u_0,1]\\times[0,v_0],\\ [u_0,1]\\times[v_0,1]",
+  "patchSubdivision.texPieces":
+    "\\text{četiri krpice na }[0,u_0]\\times[0,v_0],\\ [0,u_0]\\times[v_0,1],\\ [u_0,1]\\times[0,v_0],\\ [u_0,1]\\times[v_0,1]",
   "patchSubdivision.texPoint": "u_0 = {u},\\ v_0 = {v}\\text{:}\\quad S(u_0, v_0) = {point}",
-  "patchSubdivision.texCorner": "\\text{zajednički kut: } P^{(1)}_{33} = P^{(2)}_{30} = P^{(3)}_{03} = P^{(4)}_{00} = {corner},\\quad \\max\\lvert P - S(u_0, v_0)\\rvert = {gap}",
-  "patchSubdivision.texFlat": "\\text{mreža ravna: } 2\\delta + \\tfrac{1}{4}\\lvert D\\rvert \\le \\varepsilon = {tolerance} \\;\\Rightarrow\\; \\text{nacrtaj četverokut kutova, inače podijeli u } (\\tfrac12, \\tfrac12)",
-  "patchSubdivision.texCounts": "\\text{{triangles} trokuta}\\quad\\text{nasuprot }\\quad 2 \\cdot {n}^2 = {uniform} \\text{ na uniformnoj mreži jednako finoj kao najfinija ćelija}",
-  "patchSubdivision.whatYouSee": "Grčke bilješke dijele Bézierovu površinu kao krivulju: odaberite par (u₀, v₀); de Casteljau na svakom retku mreže dijeli krivulju svakog retka na „lijevi” i „desni” dio; de Casteljau na stupcima obaju dijelova dijeli svaki na „gornji” i „donji” dio. Rezultat su četiri krpice istog tipa, svaka s vlastitom mrežom (m + 1) × (n + 1) (četiri boje); zajedno čine krpicu i sastaju se u S(u₀, v₀). U načinu „Adaptivna” izvodi se pravilo crtanja iz bilježaka: ako su kontrolne točke (gotovo) komplanarne, nacrtaj četverokut četiriju kutnih točaka, inače podijeli na četiri i ponovi za svaki dio. Ovdje se „gotovo” mjeri prema toleranciji ε (δ omeđuje udaljenost mreže od bilinearne krpice njezinih kutova, D je njezino uvijanje), pa svaka točka svakog trokuta leži unutar ε od površine. Umetak prikazuje ćelije u kvadratu (u, v).",
-  "patchSubdivision.try1": "Pomičite u₀ i v₀: četiri se mreže mijenjaju, ali njihov zajednički kut uvijek leži na krpici, u S(u₀, v₀).",
-  "patchSubdivision.try2": "Povucite u₀ na 0: dva se dijela stežu u krivulje (njihove se mreže urušavaju na rub).",
-  "patchSubdivision.try3": "Prebacite na „Adaptivna teselacija” i smanjite ε: ćelije se dijele gdje se krpica savija, a ostaju velike gdje je gotovo ravna.",
-  "patchSubdivision.try4": "U adaptivnom načinu povucite izbočinu P₂₂ dolje u ravninu njezinih susjeda: male ćelije oko nje stapaju se u velike.",
-  "patchSubdivision.try5": "Usporedite broj trokuta s uniformnom mrežom jednako finom kao najfinija ćelija: adaptivna mreža troši trokute samo ondje gdje se krpica savija.",
+  "patchSubdivision.texCorner":
+    "\\text{zajednički kut: } P^{(1)}_{33} = P^{(2)}_{30} = P^{(3)}_{03} = P^{(4)}_{00} = {corner},\\quad \\max\\lvert P - S(u_0, v_0)\\rvert = {gap}",
+  "patchSubdivision.texFlat":
+    "\\text{mreža ravna: } 2\\delta + \\tfrac{1}{4}\\lvert D\\rvert \\le \\varepsilon = {tolerance} \\;\\Rightarrow\\; \\text{nacrtaj četverokut kutova, inače podijeli u } (\\tfrac12, \\tfrac12)",
+  "patchSubdivision.texCounts":
+    "\\text{{triangles} trokuta}\\quad\\text{nasuprot }\\quad 2 \\cdot {n}^2 = {uniform} \\text{ na uniformnoj mreži jednako finoj kao najfinija ćelija}",
+  "patchSubdivision.whatYouSee":
+    "Grčke bilješke dijele Bézierovu površinu kao krivulju: odaberite par (u₀, v₀); de Casteljau na svakom retku mreže dijeli krivulju svakog retka na „lijevi” i „desni” dio; de Casteljau na stupcima obaju dijelova dijeli svaki na „gornji” i „donji” dio. Rezultat su četiri krpice istog tipa, svaka s vlastitom mrežom (m + 1) × (n + 1) (četiri boje); zajedno čine krpicu i sastaju se u S(u₀, v₀). U načinu „Adaptivna” izvodi se pravilo crtanja iz bilježaka: ako su kontrolne točke (gotovo) komplanarne, nacrtaj četverokut četiriju kutnih točaka, inače podijeli na četiri i ponovi za svaki dio. Ovdje se „gotovo” mjeri prema toleranciji ε (δ omeđuje udaljenost mreže od bilinearne krpice njezinih kutova, D je njezino uvijanje), pa svaka točka svakog trokuta leži unutar ε od površine. Umetak prikazuje ćelije u kvadratu (u, v).",
+  "patchSubdivision.try1":
+    "Pomičite u₀ i v₀: četiri se mreže mijenjaju, ali njihov zajednički kut uvijek leži na krpici, u S(u₀, v₀).",
+  "patchSubdivision.try2":
+    "Povucite u₀ na 0: dva se dijela stežu u krivulje (njihove se mreže urušavaju na rub).",
+  "patchSubdivision.try3":
+    "Prebacite na „Adaptivna teselacija” i smanjite ε: ćelije se dijele gdje se krpica savija, a ostaju velike gdje je gotovo ravna.",
+  "patchSubdivision.try4":
+    "U adaptivnom načinu povucite izbočinu P₂₂ dolje u ravninu njezinih susjeda: male ćelije oko nje stapaju se u velike.",
+  "patchSubdivision.try5":
+    "Usporedite broj trokuta s uniformnom mrežom jednako finom kao najfinija ćelija: adaptivna mreža troši trokute samo ondje gdje se krpica savija.",
   "hermite.title": "Kubna Hermiteova interpolacija",
-  "hermite.summary": "Kubni dio između dviju zadanih točaka iz samih točaka i njihovih tangenti; dijelovi koji dijele tangente spajaju se C¹, otključana tangenta samo G¹.",
-  "hermite.aria": "Po dijelovima kubna Hermiteova krivulja kroz zadane točke (broj: {count}); t = {t}; P(t) = ({x}, {y}); spojevi: {joints}",
-  "hermite.whatYouSee": "Plava krivulja prolazi kroz zadane točke P₀ … Pₙ za t = 0, 1, 2, …; u svakoj točki narančasta strelica pokazuje njezinu tangentu m (nacrtanu na pola duljine; povucite joj vrh). Između Pᵢ i Pᵢ₊₁ krivulja je H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, s četiri Hermiteove bazne funkcije nacrtane ispod (poglavlje 5 nastavnog programa, prema poglavlju o interpolaciji grčkih bilježaka i hrvatskim bilješkama). Dijeljenje jedne tangente po točki čini krivulju C¹; provjera kontinuiteta jezgre imenuje svaki spoj.",
-  "hermite.try1": "Pritisnite Pokreni i gledajte kako oznaka prelazi H₀ … H₃ ispod: za u = 1/2 tablica pokazuje H₀ = H₁ = 1/2 i H₂ = −H₃ = 1/8.",
-  "hermite.try2": "Povucite vrh strelice tangente u P₁: mijenjaju se samo dva dijela koja se sastaju u P₁, a spoj ostaje C¹.",
-  "hermite.try3": "Označite „Otključaj tangentu”, zatim povucite ljubičastu dolaznu strelicu ili promijenite λ: spoj postaje „samo G¹” — isti smjer, različita brzina.",
+  "hermite.summary":
+    "Kubni dio između dviju zadanih točaka iz samih točaka i njihovih tangenti; dijelovi koji dijele tangente spajaju se C¹, otključana tangenta samo G¹.",
+  "hermite.aria":
+    "Po dijelovima kubna Hermiteova krivulja kroz zadane točke (broj: {count}); t = {t}; P(t) = ({x}, {y}); spojevi: {joints}",
+  "hermite.whatYouSee":
+    "Plava krivulja prolazi kroz zadane točke P₀ … Pₙ za t = 0, 1, 2, …; u svakoj točki narančasta strelica pokazuje njezinu tangentu m (nacrtanu na pola duljine; povucite joj vrh). Između Pᵢ i Pᵢ₊₁ krivulja je H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, s četiri Hermiteove bazne funkcije nacrtane ispod (poglavlje 5 nastavnog programa, prema poglavlju o interpolaciji grčkih bilježaka i hrvatskim bilješkama). Dijeljenje jedne tangente po točki čini krivulju C¹; provjera kontinuiteta jezgre imenuje svaki spoj.",
+  "hermite.try1":
+    "Pritisnite Pokreni i gledajte kako oznaka prelazi H₀ … H₃ ispod: za u = 1/2 tablica pokazuje H₀ = H₁ = 1/2 i H₂ = −H₃ = 1/8.",
+  "hermite.try2":
+    "Povucite vrh strelice tangente u P₁: mijenjaju se samo dva dijela koja se sastaju u P₁, a spoj ostaje C¹.",
+  "hermite.try3":
+    "Označite „Otključaj tangentu”, zatim povucite ljubičastu dolaznu strelicu ili promijenite λ: spoj postaje „samo G¹” — isti smjer, različita brzina.",
   "hermite.minPoints": "najmanji broj zadanih točaka za Hermiteovu interpolaciju je {min}",
   "hermite.maxPoints": "ova demonstracija dopušta najviše {max} zadanih točaka",
   "hermite.count": "Zadane točke: {count}, kubni dijelovi: {pieces}",
@@ -1202,12 +1541,18 @@ export default {
   "hermite.col.times": "Množi",
   "hermite.tableCaption": "Hermiteova baza za u = {u} (dio {i})",
   "cardinal.title": "Kardinalni splajnovi i Catmull–Rom",
-  "cardinal.summary": "Tangente se biraju automatski iz susjednih točaka: napetost c ih skraćuje; Catmull–Romov α (uniformni, centripetalni, tetivni) odlučuje hoće li kratki segment napraviti petlju.",
-  "cardinal.aria": "Krivulja s tangentama: {mode} ({value}), kroz zadane točke (broj: {count}); {loop}",
-  "cardinal.whatYouSee": "Hermiteova krivulja kroz zadane točke čije tangente (narančasto, nacrtane kao Bézierova hvatišta Δ·m/3) dolaze od susjednih točaka (poglavlje 5 nastavnog programa; hrvatske bilješke daju matrični oblik Catmull–Roma prikazan u ploči s formulom). U kardinalnom načinu napetost c ih umanjuje; u načinu Catmull–Rom parametarski koraci su |Pᵢ₊₁ − Pᵢ|^α. Točke su nejednoliko razmaknute, pa uniformni Catmull–Rom (α = 0, iscrtkano) čini petlju u kratkom segmentu P₁P₂, a centripetalni (α = ½) ne.",
-  "cardinal.try1": "Pomaknite α od 0,5 do 0: puna krivulja prelazi u iscrtkanu i pojavljuje se petlja u segmentu 1; uz α = 1 (duljina tetiva) prianja uz poligon.",
-  "cardinal.try2": "Prebacite na kardinalni i povećajte napetost c prema 1: tangente se smanjuju do nule i krivulja postaje poligon; c < 0 prebacuje.",
-  "cardinal.try3": "Odmičite P₂ od P₁ dok segmenti ne budu približno jednako dugi: petlja uniformne krivulje nestaje — šiljci i petlje nastaju zbog nejednolikog razmaka.",
+  "cardinal.summary":
+    "Tangente se biraju automatski iz susjednih točaka: napetost c ih skraćuje; Catmull–Romov α (uniformni, centripetalni, tetivni) odlučuje hoće li kratki segment napraviti petlju.",
+  "cardinal.aria":
+    "Krivulja s tangentama: {mode} ({value}), kroz zadane točke (broj: {count}); {loop}",
+  "cardinal.whatYouSee":
+    "Hermiteova krivulja kroz zadane točke čije tangente (narančasto, nacrtane kao Bézierova hvatišta Δ·m/3) dolaze od susjednih točaka (poglavlje 5 nastavnog programa; hrvatske bilješke daju matrični oblik Catmull–Roma prikazan u ploči s formulom). U kardinalnom načinu napetost c ih umanjuje; u načinu Catmull–Rom parametarski koraci su |Pᵢ₊₁ − Pᵢ|^α. Točke su nejednoliko razmaknute, pa uniformni Catmull–Rom (α = 0, iscrtkano) čini petlju u kratkom segmentu P₁P₂, a centripetalni (α = ½) ne.",
+  "cardinal.try1":
+    "Pomaknite α od 0,5 do 0: puna krivulja prelazi u iscrtkanu i pojavljuje se petlja u segmentu 1; uz α = 1 (duljina tetiva) prianja uz poligon.",
+  "cardinal.try2":
+    "Prebacite na kardinalni i povećajte napetost c prema 1: tangente se smanjuju do nule i krivulja postaje poligon; c < 0 prebacuje.",
+  "cardinal.try3":
+    "Odmičite P₂ od P₁ dok segmenti ne budu približno jednako dugi: petlja uniformne krivulje nestaje — šiljci i petlje nastaju zbog nejednolikog razmaka.",
   "cardinal.minPoints": "najmanji broj zadanih točaka u ovoj demonstraciji je {min}",
   "cardinal.maxPoints": "ova demonstracija dopušta najviše {max} zadanih točaka",
   "cardinal.count": "Zadane točke: {count}",
@@ -1222,7 +1567,8 @@ export default {
   "cardinal.control.segment": "Segment i (od Pᵢ do Pᵢ₊₁)",
   "cardinal.control.segment.input": "indeks segmenta i",
   "cardinal.loopHere": "Ova krivulja čini petlju unutar segmenta {i}.",
-  "cardinal.loopGhost": "Uniformna krivulja (α = 0, iscrtkano) čini petlju unutar segmenta {i}; ova ne.",
+  "cardinal.loopGhost":
+    "Uniformna krivulja (α = 0, iscrtkano) čini petlju unutar segmenta {i}; ova ne.",
   "cardinal.noLoopHere": "Nema petlje unutar segmenta.",
   "cardinal.noLoopGhost": "Nema petlje unutar segmenta, čak ni za α = 0.",
   "cardinal.loopLabel": "petlja",
@@ -1234,12 +1580,18 @@ export default {
   "cardinal.col.tangent": "Tangenta mᵢ (jezgra)",
   "cardinal.tableCaption": "Parametri i tangente u zadanim točkama",
   "cubicSpline.title": "C2 kubni splajnovi: rubni uvjeti",
-  "cubicSpline.summary": "Prirodni, stegnuti, kvadratni, Besselov, not-a-knot i periodički rubni uvjet na istim točkama: trodijagonalni sustav, C″ i C‴ po dijelovima",
-  "cubicSpline.aria": "C2 kubni splajn kroz točke (broj: {count}), rubni uvjet: {end}, parametri: {parametrization}; rubne tangente m₀ = {m0}, mₙ = {mn}",
-  "cubicSpline.whatYouSee": "C2 kubni splajn kroz točke: jedan kubni Hermiteov dio između susjeda, a njegove tangente mᵢ određene su iz trodijagonalnog sustava koji čini C″ neprekinutom u svakoj unutarnjoj točki, uz po jednu jednadžbu na svakom kraju — rubni uvjet. Tablica prikazuje taj sustav s trenutnim brojevima, s istaknutim rubnim retcima; grafovi ispod slike prikazuju C″ (neprekinutu u spojevima) i C‴ (koja u njima skače) dio po dio. Prema kubnoj Hermiteovoj interpolaciji iz grčkih bilježaka (poglavlje 5 nastavnog programa), u kojima su retci prirodnog i kvadratnog uvjeta na dalekom kraju tiskani s pogrešnim faktorima: ovdje su retci izvedeni.",
-  "cubicSpline.try1": "Odaberite prirodni i pogledajte graf C″: obje su komponente 0 u prvom i posljednjem spoju. Zatim odaberite kvadratni: C‴ je 0 na prvom i posljednjem dijelu (to su parabole), a prvi redak tablice postaje 1, 1 | 2(p₁ − p₀)/Δ₀.",
-  "cubicSpline.try2": "Odaberite not-a-knot i promatrajte graf C‴: skokovi u t₁ i tₙ₋₁ su nestali, pa su prva dva i posljednja dva dijela svaki po jedna kubna krivulja. Odaberite stegnuti i povucite strelice u P₀ i Pₙ.",
-  "cubicSpline.try3": "Označite „preklopi svih šest” i povucite točku u sredini: daleko od krajeva šest se krivulja slaže, blizu krajeva razilaze se. Prebacite na parametre po duljini tetiva i povucite točku blizu njezina susjeda.",
+  "cubicSpline.summary":
+    "Prirodni, stegnuti, kvadratni, Besselov, not-a-knot i periodički rubni uvjet na istim točkama: trodijagonalni sustav, C″ i C‴ po dijelovima",
+  "cubicSpline.aria":
+    "C2 kubni splajn kroz točke (broj: {count}), rubni uvjet: {end}, parametri: {parametrization}; rubne tangente m₀ = {m0}, mₙ = {mn}",
+  "cubicSpline.whatYouSee":
+    "C2 kubni splajn kroz točke: jedan kubni Hermiteov dio između susjeda, a njegove tangente mᵢ određene su iz trodijagonalnog sustava koji čini C″ neprekinutom u svakoj unutarnjoj točki, uz po jednu jednadžbu na svakom kraju — rubni uvjet. Tablica prikazuje taj sustav s trenutnim brojevima, s istaknutim rubnim retcima; grafovi ispod slike prikazuju C″ (neprekinutu u spojevima) i C‴ (koja u njima skače) dio po dio. Prema kubnoj Hermiteovoj interpolaciji iz grčkih bilježaka (poglavlje 5 nastavnog programa), u kojima su retci prirodnog i kvadratnog uvjeta na dalekom kraju tiskani s pogrešnim faktorima: ovdje su retci izvedeni.",
+  "cubicSpline.try1":
+    "Odaberite prirodni i pogledajte graf C″: obje su komponente 0 u prvom i posljednjem spoju. Zatim odaberite kvadratni: C‴ je 0 na prvom i posljednjem dijelu (to su parabole), a prvi redak tablice postaje 1, 1 | 2(p₁ − p₀)/Δ₀.",
+  "cubicSpline.try2":
+    "Odaberite not-a-knot i promatrajte graf C‴: skokovi u t₁ i tₙ₋₁ su nestali, pa su prva dva i posljednja dva dijela svaki po jedna kubna krivulja. Odaberite stegnuti i povucite strelice u P₀ i Pₙ.",
+  "cubicSpline.try3":
+    "Označite „preklopi svih šest” i povucite točku u sredini: daleko od krajeva šest se krivulja slaže, blizu krajeva razilaze se. Prebacite na parametre po duljini tetiva i povucite točku blizu njezina susjeda.",
   "cubicSpline.minPoints": "najmanji broj točaka splajna ovdje je {min}",
   "cubicSpline.maxPoints": "ova demonstracija dopušta najviše {max} točaka",
   "cubicSpline.pointCount.few": "{count} točke, n = {n}",
@@ -1261,7 +1613,8 @@ export default {
   "cubicSpline.closingLabel": "P₀ = P{n}",
   "cubicSpline.tipStart": "m₀",
   "cubicSpline.tipEnd": "mₙ",
-  "cubicSpline.plotNote": "C″(t₀) = {secondStart}, C″(t{n}) = {secondEnd}; C‴ = {thirdFirst} na prvom dijelu, {thirdLast} na posljednjem; C‴ skače u {jumps}",
+  "cubicSpline.plotNote":
+    "C″(t₀) = {secondStart}, C″(t{n}) = {secondEnd}; C‴ = {thirdFirst} na prvom dijelu, {thirdLast} na posljednjem; C‴ skače u {jumps}",
   "cubicSpline.noJumps": "nijednom spoju",
   "cubicSpline.plotX": "x",
   "cubicSpline.plotY": "y",
@@ -1290,12 +1643,16 @@ export default {
   "cubicSpline.systemEquation": "Jednadžba",
   "cubicSpline.systemUnknown": "mᵢ",
   "cubicSpline.systemRhs": "cᵢ",
-  "cubicSpline.tableCaption": "Trodijagonalni sustav A·m = c (jednadžbi: {size}) za tangente mᵢ = C′(tᵢ), rubni uvjet: {end}, parametri: {parametrization}; rubni retci su istaknuti{hidden}",
-  "cubicSpline.tableCaptionCyclic": "Ciklički trodijagonalni sustav A·m = c (jednadžbi: {size}) za tangente mᵢ = C′(tᵢ), rubni uvjet: {end}, parametri: {parametrization}; rubni retci su istaknuti, kutovi uokvireni{hidden}",
+  "cubicSpline.tableCaption":
+    "Trodijagonalni sustav A·m = c (jednadžbi: {size}) za tangente mᵢ = C′(tᵢ), rubni uvjet: {end}, parametri: {parametrization}; rubni retci su istaknuti{hidden}",
+  "cubicSpline.tableCaptionCyclic":
+    "Ciklički trodijagonalni sustav A·m = c (jednadžbi: {size}) za tangente mᵢ = C′(tᵢ), rubni uvjet: {end}, parametri: {parametrization}; rubni retci su istaknuti, kutovi uokvireni{hidden}",
   "cubicSpline.tableHidden": " (izostavljeni srednji retci i stupci, njih {count}: ⋮, ⋯)",
   "parametrization.title": "Parametrizacija: uniformna, po duljini tetiva, centripetalna",
-  "parametrization.summary": "Iste točke interpolirane uz uniformne, tetivne i centripetalne parametre, s brzinom i oznakama parametara svake krivulje: nejednolik razmak tjera uniformnu krivulju da prebacuje.",
-  "parametrization.aria": "{method} kroz zadane točke (broj: {count}) uz uniformne, tetivne, centripetalne parametre i parametre za α = {alpha}; za s = {s}: uniformna {uniform}, tetivna {chord}, centripetalna {centripetal}; njihove su brzine nacrtane ispod",
+  "parametrization.summary":
+    "Iste točke interpolirane uz uniformne, tetivne i centripetalne parametre, s brzinom i oznakama parametara svake krivulje: nejednolik razmak tjera uniformnu krivulju da prebacuje.",
+  "parametrization.aria":
+    "{method} kroz zadane točke (broj: {count}) uz uniformne, tetivne, centripetalne parametre i parametre za α = {alpha}; za s = {s}: uniformna {uniform}, tetivna {chord}, centripetalna {centripetal}; njihove su brzine nacrtane ispod",
   "parametrization.control.s": "Normirani parametar s",
   "parametrization.control.s.input": "vrijednost s od 0 do 1 (decimalni broj ili razlomak)",
   "parametrization.control.alphaGroup": "Četvrta krivulja: tᵢ₊₁ = tᵢ + |pᵢ₊₁ − pᵢ|^α",
@@ -1304,8 +1661,10 @@ export default {
   "parametrization.control.alphaCurve": "Prikaži krivulju za α (narančasto, crta-točka)",
   "parametrization.alphaIs.uniform": "α = {alpha}: uniformni parametri (na plavoj krivulji)",
   "parametrization.alphaIs.chord": "α = {alpha}: parametri po duljini tetiva (na zelenoj krivulji)",
-  "parametrization.alphaIs.centripetal": "α = {alpha}: centripetalni parametri (na ljubičastoj krivulji)",
-  "parametrization.alphaBetween": "α = {alpha}: 0 je uniformno, 0,5 centripetalno, 1 duljina tetiva",
+  "parametrization.alphaIs.centripetal":
+    "α = {alpha}: centripetalni parametri (na ljubičastoj krivulji)",
+  "parametrization.alphaBetween":
+    "α = {alpha}: 0 je uniformno, 0,5 centripetalno, 1 duljina tetiva",
   "parametrization.control.method": "Interpolacijska krivulja",
   "parametrization.method.cubic": "C² prirodni kubni splajn",
   "parametrization.method.catmull-rom": "Catmull–Rom splajn (C¹)",
@@ -1330,20 +1689,28 @@ export default {
   "parametrization.row.chord": "tetivni tᵢ",
   "parametrization.row.centripetal": "centripetalni tᵢ",
   "parametrization.row.alpha": "α = {alpha}: tᵢ",
-  "parametrization.whatYouSee": "Četiri interpolacijske krivulje kroz iste točke, koje se razlikuju samo po parametrima tᵢ pridijeljenima točkama: uniformni (plavo, puna linija), po duljini tetiva (zeleno, iscrtkano), centripetalni (ljubičasto, točkasto) i bilo koji α s klizača (narančasto, crta-točka). Ispod slike je brzina svake krivulje u ovisnosti o normiranom parametru s te za svaku krivulju red oznaka gdje padaju parametri njezinih zadanih točaka. Uniformni parametri dugoj stranici daju jednako malo parametra kao kratkoj, pa krivulja juri duž duge stranice i prebacuje ili čini petlje na kratkima. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
-  "parametrization.try1": "Pritisnite Pokreni: četiri točkice počinju i završavaju zajedno, ali plava (uniformna) juri duž dugih stranica dok zelena (tetivna) drži gotovo jednoliki tempo — usporedite njihove grafove brzine.",
-  "parametrization.try2": "Pomičite α od 0 do 1: narančasta krivulja prolazi kroz plavu (α = 0), ljubičastu (α = 0,5) i zelenu (α = 1), a njezine se oznake pomiču s njom.",
-  "parametrization.try3": "Povucite p₃ blizu p₂ tako da jedna stranica bude vrlo kratka: uniformna krivulja ondje čini petlju, centripetalna ne. Zatim prebacite na Catmull–Rom i učinite isto.",
+  "parametrization.whatYouSee":
+    "Četiri interpolacijske krivulje kroz iste točke, koje se razlikuju samo po parametrima tᵢ pridijeljenima točkama: uniformni (plavo, puna linija), po duljini tetiva (zeleno, iscrtkano), centripetalni (ljubičasto, točkasto) i bilo koji α s klizača (narančasto, crta-točka). Ispod slike je brzina svake krivulje u ovisnosti o normiranom parametru s te za svaku krivulju red oznaka gdje padaju parametri njezinih zadanih točaka. Uniformni parametri dugoj stranici daju jednako malo parametra kao kratkoj, pa krivulja juri duž duge stranice i prebacuje ili čini petlje na kratkima. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
+  "parametrization.try1":
+    "Pritisnite Pokreni: četiri točkice počinju i završavaju zajedno, ali plava (uniformna) juri duž dugih stranica dok zelena (tetivna) drži gotovo jednoliki tempo — usporedite njihove grafove brzine.",
+  "parametrization.try2":
+    "Pomičite α od 0 do 1: narančasta krivulja prolazi kroz plavu (α = 0), ljubičastu (α = 0,5) i zelenu (α = 1), a njezine se oznake pomiču s njom.",
+  "parametrization.try3":
+    "Povucite p₃ blizu p₂ tako da jedna stranica bude vrlo kratka: uniformna krivulja ondje čini petlju, centripetalna ne. Zatim prebacite na Catmull–Rom i učinite isto.",
   "bsplineInterpolation.title": "Interpolacija B-krivuljom",
-  "bsplineInterpolation.summary": "B-krivulja bilo kojeg stupnja kroz zadane točke, s neobaveznim derivacijama na krajevima: kontrolne točke rješavaju kvadratni linearni sustav, prikazan s brojevima.",
-  "bsplineInterpolation.aria": "{kind} B-krivulja kroz zadane točke (broj: {count}), parametri: {params}, {ends}; broj nepoznanica (kontrolnih točaka r): {size}; uzlovi {knots}",
+  "bsplineInterpolation.summary":
+    "B-krivulja bilo kojeg stupnja kroz zadane točke, s neobaveznim derivacijama na krajevima: kontrolne točke rješavaju kvadratni linearni sustav, prikazan s brojevima.",
+  "bsplineInterpolation.aria":
+    "{kind} B-krivulja kroz zadane točke (broj: {count}), parametri: {params}, {ends}; broj nepoznanica (kontrolnih točaka r): {size}; uzlovi {knots}",
   "bsplineInterpolation.aria.start": "zadana početna derivacija D₀",
   "bsplineInterpolation.aria.end": "zadana završna derivacija",
   "bsplineInterpolation.aria.noEnds": "bez derivacija na krajevima",
   "bsplineInterpolation.degreeLegend": "Stupanj p",
   "bsplineInterpolation.degreeOption": "{p}",
-  "bsplineInterpolation.minPoints": "stupanj {degree} treba najmanje ovoliko uvjeta (zadane točke i derivacije na krajevima zajedno): {min}",
-  "bsplineInterpolation.error.degree": "polje „degree” je {p}, ali uz uvjete ({count}: zadane točke i derivacije na krajevima) najveći je stupanj {max}",
+  "bsplineInterpolation.minPoints":
+    "stupanj {degree} treba najmanje ovoliko uvjeta (zadane točke i derivacije na krajevima zajedno): {min}",
+  "bsplineInterpolation.error.degree":
+    "polje „degree” je {p}, ali uz uvjete ({count}: zadane točke i derivacije na krajevima) najveći je stupanj {max}",
   "bsplineInterpolation.maxPoints": "ova demonstracija dopušta najviše {max} zadanih točaka",
   "bsplineInterpolation.paramsLegend": "Parametri tᵢ",
   "bsplineInterpolation.params.uniform": "uniformni",
@@ -1372,7 +1739,8 @@ export default {
   "bsplineInterpolation.controlPoints.one": "{count} kontrolna točka",
   "bsplineInterpolation.controlPoints.other": "{count} kontrolnih točaka",
   "bsplineInterpolation.notesExample": "Hrvatski primjer",
-  "bsplineInterpolation.notesExample.title": "Natrag na riješeni primjer iz bilježaka: njegovih 5 točaka, t = 0 … 4, p = 2, početna derivacija i uzlovi 0 0 0 1 2 3 4 4 4",
+  "bsplineInterpolation.notesExample.title":
+    "Natrag na riješeni primjer iz bilježaka: njegovih 5 točaka, t = 0 … 4, p = 2, početna derivacija i uzlovi 0 0 0 1 2 3 4 4 4",
   "bsplineInterpolation.row.point": "C({t}) = p{i}",
   "bsplineInterpolation.row.start": "C′({t}) = D₀",
   "bsplineInterpolation.row.end": "C′({t}) = D{i}",
@@ -1380,17 +1748,27 @@ export default {
   "bsplineInterpolation.col.unknown": "Nepoznanica",
   "bsplineInterpolation.col.rhs": "Desna strana",
   "bsplineInterpolation.col.solution": "Rješenje",
-  "bsplineInterpolation.tableCaption": "Sustav A r = b iz bsplineInterpolationSystem ({size} × {size}): redak i je uvjet, stupac j težina od rⱼ u njemu (Nⱼ,ₚ(tᵢ) ili N′ⱼ,ₚ(tᵢ))",
-  "bsplineInterpolation.tableCaptionNotes": "Sustav A r = b iz bilježaka, {size} × {size} (bsplineInterpolationSystem): redak i je uvjet, stupac j težina od rⱼ u njemu (Nⱼ,ₚ(tᵢ) ili N′ⱼ,ₚ(tᵢ))",
-  "bsplineInterpolation.tableTooLarge": "Broj nepoznanica sustava: {size}; tablica prikazuje sustave do {max}. Uklonite točke ili smanjite stupanj da ga vidite.",
-  "bsplineInterpolation.whatYouSee": "Krivulja prolazi kroz zadane točke pᵢ (okrugla hvatišta) za parametre tᵢ; to je B-krivulja čije kontrolne točke rⱼ (sivi kvadratići i iscrtkani poligon) nisu zadane nego izračunate: svaka zadana točka i svaka derivacija na kraju Dᵢ (strelice, puna duljina, derivacija po t) jedna je linearna jednadžba u rⱼ, a tablica ispod slike je taj kvadratni sustav s rješenjem. Početno je riješeni primjer iz hrvatskih bilježaka (poglavlje 5 nastavnog programa): pet točaka za t = 0 … 4, kvadratna krivulja, početna derivacija i uzlovi 0 0 0 1 2 3 4 4 4, što daje sustav 6 × 6 s retcima 1; −2 2; ½ ½ … .",
-  "bsplineInterpolation.try1": "U primjeru pročitajte drugi redak: −2 r₀ + 2 r₁ = D₀, pa je r₁ = p₀ + D₀/2 — sivi kvadratić r₁ leži na pola strelice. Povucite vrh strelice i gledajte kako ga r₁ slijedi.",
-  "bsplineInterpolation.try2": "Povećavajte stupanj korak po korak: krivulja i dalje prolazi kroz svaku točku, ali retci postaju dulji (svaki uvjet uključuje p + 1 kontrolnih točaka), a kontrolni poligon izlazi sve dalje.",
-  "bsplineInterpolation.try3": "Odvucite p₂ daleko udesno: uz uniformne parametre krivulja daleko prebacuje p₂ i p₃. Prebacite na duljinu tetiva: tᵢ sada rastu sa stranicama i otklon se smanjuje — ali D₀, derivacija po t, sada je prebrza za parametar koji broji duljinu: skratite strelicu i kuka u p₀ nestaje.",
+  "bsplineInterpolation.tableCaption":
+    "Sustav A r = b iz bsplineInterpolationSystem ({size} × {size}): redak i je uvjet, stupac j težina od rⱼ u njemu (Nⱼ,ₚ(tᵢ) ili N′ⱼ,ₚ(tᵢ))",
+  "bsplineInterpolation.tableCaptionNotes":
+    "Sustav A r = b iz bilježaka, {size} × {size} (bsplineInterpolationSystem): redak i je uvjet, stupac j težina od rⱼ u njemu (Nⱼ,ₚ(tᵢ) ili N′ⱼ,ₚ(tᵢ))",
+  "bsplineInterpolation.tableTooLarge":
+    "Broj nepoznanica sustava: {size}; tablica prikazuje sustave do {max}. Uklonite točke ili smanjite stupanj da ga vidite.",
+  "bsplineInterpolation.whatYouSee":
+    "Krivulja prolazi kroz zadane točke pᵢ (okrugla hvatišta) za parametre tᵢ; to je B-krivulja čije kontrolne točke rⱼ (sivi kvadratići i iscrtkani poligon) nisu zadane nego izračunate: svaka zadana točka i svaka derivacija na kraju Dᵢ (strelice, puna duljina, derivacija po t) jedna je linearna jednadžba u rⱼ, a tablica ispod slike je taj kvadratni sustav s rješenjem. Početno je riješeni primjer iz hrvatskih bilježaka (poglavlje 5 nastavnog programa): pet točaka za t = 0 … 4, kvadratna krivulja, početna derivacija i uzlovi 0 0 0 1 2 3 4 4 4, što daje sustav 6 × 6 s retcima 1; −2 2; ½ ½ … .",
+  "bsplineInterpolation.try1":
+    "U primjeru pročitajte drugi redak: −2 r₀ + 2 r₁ = D₀, pa je r₁ = p₀ + D₀/2 — sivi kvadratić r₁ leži na pola strelice. Povucite vrh strelice i gledajte kako ga r₁ slijedi.",
+  "bsplineInterpolation.try2":
+    "Povećavajte stupanj korak po korak: krivulja i dalje prolazi kroz svaku točku, ali retci postaju dulji (svaki uvjet uključuje p + 1 kontrolnih točaka), a kontrolni poligon izlazi sve dalje.",
+  "bsplineInterpolation.try3":
+    "Odvucite p₂ daleko udesno: uz uniformne parametre krivulja daleko prebacuje p₂ i p₃. Prebacite na duljinu tetiva: tᵢ sada rastu sa stranicama i otklon se smanjuje — ali D₀, derivacija po t, sada je prebrza za parametar koji broji duljinu: skratite strelicu i kuka u p₀ nestaje.",
   "interpolateApproximate.title": "Interpolirati ili aproksimirati",
-  "interpolateApproximate.summary": "Iste točke kao kontrolne točke (krivulja se privlači prema njima), kao podaci kroz koje se točno prolazi ili kao podaci aproksimirani s manje kontrolnih točaka metodom najmanjih kvadrata.",
-  "interpolateApproximate.aria.control": "{kind} B-krivulja sa zadanim točkama (broj: {count}) kao kontrolnim točkama (stegnuti uzlovi): prolazi samo kroz prvu i posljednju",
-  "interpolateApproximate.aria.data": "{kind} B-krivulja prilagođena zadanim točkama (broj: {count}) s {control} ({fit}); najveći ostatak {max}",
+  "interpolateApproximate.summary":
+    "Iste točke kao kontrolne točke (krivulja se privlači prema njima), kao podaci kroz koje se točno prolazi ili kao podaci aproksimirani s manje kontrolnih točaka metodom najmanjih kvadrata.",
+  "interpolateApproximate.aria.control":
+    "{kind} B-krivulja sa zadanim točkama (broj: {count}) kao kontrolnim točkama (stegnuti uzlovi): prolazi samo kroz prvu i posljednju",
+  "interpolateApproximate.aria.data":
+    "{kind} B-krivulja prilagođena zadanim točkama (broj: {count}) s {control} ({fit}); najveći ostatak {max}",
   "interpolateApproximate.aria.interpolation": "interpolacija",
   "interpolateApproximate.aria.leastSquares": "najmanji kvadrati, krajevi točni",
   "interpolateApproximate.roleLegend": "Točke su",
@@ -1398,24 +1776,42 @@ export default {
   "interpolateApproximate.role.data": "zadane točke (interpolacija ili prilagodba)",
   "interpolateApproximate.degreeLegend": "Stupanj p",
   "interpolateApproximate.degreeOption": "{p}",
-  "interpolateApproximate.minPoints": "B-krivulja stupnja {degree} treba najmanje ovoliko točaka: {min}",
+  "interpolateApproximate.minPoints":
+    "B-krivulja stupnja {degree} treba najmanje ovoliko točaka: {min}",
   "interpolateApproximate.maxPoints": "ova demonstracija dopušta najviše {max} točaka",
   "interpolateApproximate.control.count": "Kontrolne točke (sve = interpolacija)",
   "interpolateApproximate.control.count.input": "broj kontrolnih točaka",
-  "interpolateApproximate.countRange": "broj kontrolnih točaka mora biti cijeli broj od {min} (stupanj + 1) do {max} (broj točaka), dobiveno „{value}”",
+  "interpolateApproximate.countRange":
+    "broj kontrolnih točaka mora biti cijeli broj od {min} (stupanj + 1) do {max} (broj točaka), dobiveno „{value}”",
   "interpolateApproximate.controlPoints.few": "{count} kontrolne točke",
   "interpolateApproximate.controlPoints.one": "{count} kontrolnom točkom",
   "interpolateApproximate.controlPoints.other": "{count} kontrolnih točaka",
-  "interpolateApproximate.note.control": "Točke su kontrolni poligon: krivulja počinje u P₀, završava u Pₙ i samo se približava ostalima.",
-  "interpolateApproximate.note.interpolation": "Interpolacija: jedna kontrolna točka po zadanoj točki, krivulja prolazi kroz svaku pₖ (najveći ostatak {max}).",
-  "interpolateApproximate.note.leastSquares": "Najmanji kvadrati, krajevi točni: Σ |pₖ − C(tₖ)|² = {sum}; najveći ostatak {max} (u p{k}).",
+  "interpolateApproximate.note.control":
+    "Točke su kontrolni poligon: krivulja počinje u P₀, završava u Pₙ i samo se približava ostalima.",
+  "interpolateApproximate.note.interpolation":
+    "Interpolacija: jedna kontrolna točka po zadanoj točki, krivulja prolazi kroz svaku pₖ (najveći ostatak {max}).",
+  "interpolateApproximate.note.leastSquares":
+    "Najmanji kvadrati, krajevi točni: Σ |pₖ − C(tₖ)|² = {sum}; najveći ostatak {max} (u p{k}).",
   "interpolateApproximate.legendCurve": "B-krivulja C(u)",
   "interpolateApproximate.legendGiven": "kontrolni poligon: same točke",
   "interpolateApproximate.legendFitted": "kontrolni poligon rⱼ (izračunat)",
   "interpolateApproximate.legendResidual": "ostatak pₖ − C(tₖ)",
   "interpolateApproximate.tex.control": "stegnuti uniformni uzlovi",
-  "interpolateApproximate.whatYouSee": "Iste točke mogu imati dvije uloge. Kao kontrolne točke oblikuju B-krivulju koja počinje u prvoj, završava u posljednjoj i samo se približava ostalima — aproksimacija interaktivnog oblikovanja iz bilježaka. Kao zadane točke (s parametrima tₖ po duljini tetiva) kroz njih točno prolazi interpolacijska B-krivulja s jednako mnogo kontrolnih točaka ili se, s manje kontrolnih točaka, aproksimiraju metodom najmanjih kvadrata uz točne oba kraja: kratke dužine od svake točke do krivulje su ostaci pₖ − C(tₖ), a sivi kvadratići na iscrtkanom poligonu izračunate kontrolne točke. Poglavlje 5 nastavnog programa (interpolacija i aproksimacija), prema hrvatskim i grčkim bilješkama.",
-  "interpolateApproximate.try1": "Prebacujte između kontrolnih i zadanih točaka: kao kontrolne točke krivulja siječe unutar svakog vrha i dodiruje samo P₀ i P₉; kao podaci prolazi blizu svake točke, a uz broj 10 kroz svaku od njih.",
-  "interpolateApproximate.try2": "Kao podaci, smanjujte broj kontrolnih točaka od 10 do 4: krivulja se opušta, dužine ostataka rastu, a zbroj kvadrata penje se od 0 do otprilike 78 — ne u svakom koraku (svaki broj dobiva vlastite uzlove), ali prva i posljednja točka uvijek ostaju točne.",
-  "interpolateApproximate.try3": "Postavite broj na 10 (interpolacija) i naglo povucite p₄ prema dolje: cijela se krivulja nabire da bi prošla kroz nju. Smanjite broj na 5 i povucite ponovno: prilagođena krivulja samo se nagne prema točki, a umjesto toga raste njezin ostatak.",
+  "interpolateApproximate.whatYouSee":
+    "Iste točke mogu imati dvije uloge. Kao kontrolne točke oblikuju B-krivulju koja počinje u prvoj, završava u posljednjoj i samo se približava ostalima — aproksimacija interaktivnog oblikovanja iz bilježaka. Kao zadane točke (s parametrima tₖ po duljini tetiva) kroz njih točno prolazi interpolacijska B-krivulja s jednako mnogo kontrolnih točaka ili se, s manje kontrolnih točaka, aproksimiraju metodom najmanjih kvadrata uz točne oba kraja: kratke dužine od svake točke do krivulje su ostaci pₖ − C(tₖ), a sivi kvadratići na iscrtkanom poligonu izračunate kontrolne točke. Poglavlje 5 nastavnog programa (interpolacija i aproksimacija), prema hrvatskim i grčkim bilješkama.",
+  "interpolateApproximate.try1":
+    "Prebacujte između kontrolnih i zadanih točaka: kao kontrolne točke krivulja siječe unutar svakog vrha i dodiruje samo P₀ i P₉; kao podaci prolazi blizu svake točke, a uz broj 10 kroz svaku od njih.",
+  "interpolateApproximate.try2":
+    "Kao podaci, smanjujte broj kontrolnih točaka od 10 do 4: krivulja se opušta, dužine ostataka rastu, a zbroj kvadrata penje se od 0 do otprilike 78 — ne u svakom koraku (svaki broj dobiva vlastite uzlove), ali prva i posljednja točka uvijek ostaju točne.",
+  "interpolateApproximate.try3":
+    "Postavite broj na 10 (interpolacija) i naglo povucite p₄ prema dolje: cijela se krivulja nabire da bi prošla kroz nju. Smanjite broj na 5 i povucite ponovno: prilagođena krivulja samo se nagne prema točki, a umjesto toga raste njezin ostatak.",
+  "app.language": "Jezik",
+  "section.7": "7 · Interaktivno oblikovanje",
+  "gallery.lecture": "Predavanje: ovo poglavlje scenu po scenu, za projekciju",
+  "lecture.label": "Predavanje",
+  "lecture.previous": "← Prethodna",
+  "lecture.next": "Sljedeća →",
+  "lecture.counter": "{k} / {n}",
+  "lecture.unknown": "Nema predavanja „{id}”.",
+  "lecture.loadFailed": "Predavanje „{id}” nije se moglo učitati (HTTP {status}).",
 };
