@@ -5,8 +5,11 @@
  * leak in), the wasm package is loaded once per page, and a demo starts only when it comes
  * near the viewport, and then loads only its own demo module. Attributes are the demo's state
  * fields (see lib/attributes.js); changing an attribute later updates the figure.
- * `view="xmin ymin xmax ymax"` fixes the window. `lang="el" | "hr" | "it" | "en"` chooses the
- * language (else the page's `?lang=`, else the browser's); the strings are one table per page,
+ * `view="xmin ymin xmax ymax"` fixes the window. `controls="minimal"` keeps the figure with Reset,
+ * Fit and Share link; `controls="none"` the figure alone (default "full"). `theme="light" |
+ * "dark"` fixes the colours (default "auto": the reader's preference).
+ * `lang="el" | "hr" | "it" | "en"` chooses the language (else the page's `?lang=`, else the
+ * browser's); the strings are one table per page,
  * so the embeds of one page share the language of the last one that started.
  */
 import { findDemo, loadDemo } from "./demos/index.js";
@@ -20,6 +23,8 @@ import { chooseLanguage, useLanguage } from "./lib/language.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
+/** The values of the `controls` attribute (anything else is "full"). */
+const CONTROLS = ["full", "minimal", "none"];
 /** Start a demo when it is this close to the viewport. */
 const START_MARGIN = "200px";
 
@@ -105,9 +110,12 @@ class SplineLabElement extends HTMLElement {
     const root = document.createElement("div");
     this._root.replaceWith(root);
     this._root = root;
+    const controls = this.getAttribute("controls") ?? "full";
     const options = {
       sl,
       mode: "embed",
+      controls: CONTROLS.includes(controls) ? controls : "full",
+      theme: this.getAttribute("theme") ?? "auto",
       headingLevel: "h2",
       shareUrl: (s) => `${PLAYGROUND}${buildHash(demo.id, s)}`,
     };

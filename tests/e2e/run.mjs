@@ -567,6 +567,125 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test('<spline-lab controls="minimal" | "none"> keeps the figure with three buttons, or alone', async () => {
+    const pageUrl = `${base}/controls-embed-test.html`;
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) =>
+      route.fulfill({
+        contentType: "text/html",
+        body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="min" demo="de-casteljau" controls="minimal"></spline-lab><spline-lab id="none" demo="bspline-basis" controls="none"></spline-lab><spline-lab id="full" demo="de-casteljau"></spline-lab></body></html>',
+      }),
+    );
+    try {
+      await page.goto(pageUrl);
+      for (const id of ["min", "none", "full"]) {
+        await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+        await demoHelpers(page, `spline-lab#${id} `).ready();
+      }
+      const seen = await page.evaluate(() =>
+        Object.fromEntries(
+          ["min", "none", "full"].map((id) => {
+            const root = document.getElementById(id).shadowRoot;
+            const visible = (el) => el && el.getClientRects().length > 0;
+            const buttons = [...root.querySelectorAll(".sl-toolbar .sl-button")].filter(visible);
+            return [
+              id,
+              {
+                buttons: buttons.map((b) => b.dataset.action).join(","),
+                panel: visible(root.querySelector(".sl-panel")),
+                canvas: visible(root.querySelector(".sl-figure canvas")),
+                figureWidth: Math.round(
+                  root.querySelector(".sl-figure").getBoundingClientRect().width,
+                ),
+                width: Math.round(root.querySelector(".sl-demo").getBoundingClientRect().width),
+              },
+            ];
+          }),
+        ),
+      );
+      equal(seen.min.buttons, "reset,fit,share", "minimal: three buttons");
+      equal(seen.none.buttons, "", "none: no buttons");
+      assert(!seen.min.panel && !seen.none.panel, "no side panel");
+      assert(seen.full.panel && seen.full.buttons.split(",").length > 8, "full: everything");
+      for (const id of ["min", "none"]) {
+        assert(seen[id].canvas, `${id}: the figure is drawn`);
+        assert(seen[id].figureWidth >= seen[id].width - 4, `${id}: the figure takes the width`);
+      }
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    } finally {
+      await page.unroute(pageUrl);
+    }
+  });
+
+  await test('<spline-lab theme="dark" | "light"> fixes the colours whatever the reader prefers', async () => {
+    const pageUrl = `${base}/theme-embed-test.html`;
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) =>
+      route.fulfill({
+        contentType: "text/html",
+        body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="dark" demo="de-casteljau" theme="dark"></spline-lab><spline-lab id="light" demo="de-casteljau" theme="light"></spline-lab><spline-lab id="auto" demo="de-casteljau"></spline-lab></body></html>',
+      }),
+    );
+    /** Mean brightness of a figure's top-left 4×4 device pixels (its background), per embed. */
+    const brightness = () =>
+      page.evaluate(() =>
+        Object.fromEntries(
+          ["dark", "light", "auto"].map((id) => {
+            const canvas = document
+              .getElementById(id)
+              .shadowRoot.querySelector(".sl-figure canvas");
+            const data = canvas.getContext("2d").getImageData(2, 2, 4, 4).data;
+            let sum = 0;
+            for (let i = 0; i < data.length; i += 4)
+              sum += (data[i] + data[i + 1] + data[i + 2]) / 3;
+            return [id, Math.round(sum / 16)];
+          }),
+        ),
+      );
+    try {
+      for (const scheme of ["light", "dark"]) {
+        await page.emulateMedia({ colorScheme: scheme });
+        await page.goto(pageUrl);
+        for (const id of ["dark", "light", "auto"]) {
+          await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+          await demoHelpers(page, `spline-lab#${id} `).ready();
+        }
+        await settle(page);
+        const seen = await brightness();
+        assert(seen.dark < 60, `${scheme} preference: theme="dark" is dark (${seen.dark})`);
+        assert(seen.light > 200, `${scheme} preference: theme="light" is light (${seen.light})`);
+        const autoDark = seen.auto < 60;
+        equal(
+          autoDark,
+          scheme === "dark",
+          `${scheme} preference: the default follows it (${seen.auto})`,
+        );
+      }
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    } finally {
+      await page.emulateMedia({ colorScheme: "light" });
+      await page.unroute(pageUrl);
+    }
+  });
+
+  await test("an imported JSON file above the size cap is refused at once and the picture stays", async () => {
+    const h = await openDemo(page, base, "de-casteljau");
+    const before = await h.snapshot();
+    const big = JSON.stringify({
+      version: 1,
+      demo: "de-casteljau",
+      state: {},
+      pad: "x".repeat(1.5 * 1024 ** 2),
+    });
+    await h.importText("huge.json", big);
+    assert((await h.status()).includes("huge.json"), `status: ${await h.status()}`);
+    equal(await h.statusKind(), "error", "status kind");
+    assert(/\b1[.,]5\b/.test(await h.status()), `the size is named: ${await h.status()}`);
+    equal(await h.snapshot(), before, "the picture stays");
+  });
+
   await test("an embed of one demo requests no other demo module", async () => {
     // A course page with one <spline-lab>, served beside embed.js; every request is watched.
     const pageUrl = `${base}/one-embed-test.html`;

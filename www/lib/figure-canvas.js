@@ -41,7 +41,7 @@ export class FigureCanvas {
     this.width = 0;
     this.height = 0;
     this.pixelRatio = window.devicePixelRatio || 1;
-    this.theme = currentTheme();
+    this.theme = currentTheme(host);
     this.lecture = false;
     this.renderer = new CanvasRenderer(this.canvas.getContext("2d"), {
       pixelRatio: this.pixelRatio,

@@ -21,12 +21,19 @@ import {
 import { ensureKatexStyles } from "./formula.js";
 import { checkCamera, checkWindow } from "./validate.js";
 import { el, button } from "./controls.js";
-import { t, has } from "./strings.js";
+import { formatNumber, has, t } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
 import { mountDeclared, validateDeclared } from "./demo.js";
 
 /** Info messages clear themselves after this many ms; errors stay until replaced. */
 const INFO_MESSAGE_MS = 8000;
+/**
+ * Imported JSON files above this many bytes are refused before they are read: a state is a few
+ * kilobytes (a 1000-point curve ~30 KB), and reading and validating megabytes would freeze the
+ * page.
+ */
+export const MAX_IMPORT_BYTES = 1024 ** 2;
+const ONE_DECIMAL = Object.freeze({ maximumFractionDigits: 1, useGrouping: false });
 /** Most "Try this" items a demo may list (strings `<prefix>.try1` … `.tryN`). */
 const MAX_TRY_ITEMS = 6;
 
@@ -64,13 +71,27 @@ export function validateState(demo, candidate) {
  * @param {(state: object) => string} options.shareUrl the link that restores a state.
  * @param {string} [options.headingLevel] "h1" on the playground page, "h2" in embeds.
  * @param {boolean} [options.lecture] start in lecture mode (large type; a lecture's scenes).
+ * @param {"full" | "minimal" | "none"} [options.controls] a course page's choice: everything;
+ *   the figure with Reset, Fit and Share link only; or the figure alone (shell.css).
+ * @param {"auto" | "light" | "dark"} [options.theme] a course page's colours: the reader's
+ *   preference, or always light / dark (figures read it through `currentTheme(node)`).
  * @returns {{ state: object, accept: Function, status: Function, destroy: Function,
  *   figure: View | null, element: HTMLElement }}
  */
 export function mountDemo(
   root,
   demo,
-  { sl, state, mode = "page", onCommit = () => {}, shareUrl, headingLevel = "h2", lecture = false },
+  {
+    sl,
+    state,
+    mode = "page",
+    onCommit = () => {},
+    shareUrl,
+    headingLevel = "h2",
+    lecture = false,
+    controls = "full",
+    theme = "auto",
+  },
 ) {
   const prefix = demo.strings;
   const history = new History(state);
@@ -209,7 +230,11 @@ export function mountDemo(
 
   const element = el(
     "section",
-    { class: `sl-demo sl-mode-${mode}`, dataset: { demo: demo.id } },
+    {
+      class: `sl-demo sl-mode-${mode} sl-controls-${controls}`,
+      dataset: { demo: demo.id },
+      "data-sl-theme": theme === "light" || theme === "dark" ? theme : null,
+    },
     el(
       "header",
       { class: "sl-head" },
@@ -370,6 +395,12 @@ export function mountDemo(
     fileInput.value = "";
     if (!file) return;
     const name = file.name;
+    if (file.size > MAX_IMPORT_BYTES) {
+      const size = formatNumber(file.size / 1024 ** 2, ONE_DECIMAL);
+      const max = formatNumber(MAX_IMPORT_BYTES / 1024 ** 2, ONE_DECIMAL);
+      showStatus(t("status.importTooLarge", { name, size, max }), "error");
+      return;
+    }
     try {
       const candidate = parseJsonFile(await file.text(), demo.id);
       if (accept(candidate, { errorKey: "status.badImport", name }))

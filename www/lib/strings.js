@@ -113,6 +113,8 @@ const EN = {
   "status.imported": "Imported “{name}”.",
   "status.exported": "Saved {name}.",
   "status.badLink": "This link could not be read ({message}); keeping the current picture.",
+  "status.importTooLarge":
+    "“{name}” is {size} MB; files above {max} MB are not imported (a state is a few kilobytes).",
   "status.badImport": "“{name}” could not be imported ({message}); keeping the current picture.",
   "status.rejected": "That change was refused: {message}",
   "status.nothingToUndo": "Nothing to undo.",

@@ -266,8 +266,15 @@ export const DARK_THEME = makeTheme(DARK);
 
 const DARK_QUERY = "(prefers-color-scheme: dark)";
 
-/** The theme matching the reader's colour-scheme preference right now. */
-export function currentTheme() {
+/**
+ * The theme for a figure inside `node`: the one its demo was told to use (`data-sl-theme="light"
+ * | "dark"` on an ancestor: a course page's `<spline-lab theme>`), else the reader's colour-scheme
+ * preference right now.
+ */
+export function currentTheme(node = null) {
+  const forced = node?.closest?.("[data-sl-theme]")?.getAttribute("data-sl-theme");
+  if (forced === "dark") return DARK_THEME;
+  if (forced === "light") return LIGHT_THEME;
   const dark = typeof matchMedia === "function" && matchMedia(DARK_QUERY).matches;
   return dark ? DARK_THEME : LIGHT_THEME;
 }

@@ -231,7 +231,7 @@ export class View extends FigureCanvas {
     });
 
     this._stopTheme = onThemeChange(() => {
-      this.theme = currentTheme();
+      this.theme = currentTheme(this.canvas);
       this.requestDraw();
     });
   }

@@ -340,7 +340,7 @@ export class View3D extends FigureCanvas {
       ratioChanged: () => this._resize(this.width, this.height),
     });
     this._stopTheme = onThemeChange(() => {
-      this.theme = currentTheme();
+      this.theme = currentTheme(this.canvas);
       this.requestDraw();
     });
   }

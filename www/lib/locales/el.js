@@ -70,6 +70,8 @@ export default {
   "status.exported": "Αποθηκεύτηκε το {name}.",
   "status.badLink":
     "Ο σύνδεσμος δεν ήταν δυνατό να διαβαστεί ({message})· διατηρείται η τρέχουσα εικόνα.",
+  "status.importTooLarge":
+    "Το «{name}» είναι {size} MB· αρχεία πάνω από {max} MB δεν εισάγονται (μια κατάσταση είναι λίγα kilobyte).",
   "status.badImport":
     "Το «{name}» δεν ήταν δυνατό να εισαχθεί ({message})· διατηρείται η τρέχουσα εικόνα.",
   "status.rejected": "Η αλλαγή απορρίφθηκε: {message}",

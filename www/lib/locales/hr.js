@@ -68,6 +68,8 @@ export default {
   "status.exported": "Spremljeno: {name}.",
   "status.badLink":
     "Ova se poveznica nije mogla pročitati ({message}); zadržava se trenutna slika.",
+  "status.importTooLarge":
+    "„{name}” ima {size} MB; datoteke veće od {max} MB ne uvoze se (stanje ima nekoliko kilobajta).",
   "status.badImport": "„{name}” nije se moglo uvesti ({message}); zadržava se trenutna slika.",
   "status.rejected": "Ta je promjena odbijena: {message}",
   "status.nothingToUndo": "Nema se što poništiti.",

@@ -67,6 +67,8 @@ export default {
   "status.imported": "Importato “{name}”.",
   "status.exported": "Salvato {name}.",
   "status.badLink": "Impossibile leggere questo link ({message}); la figura attuale resta.",
+  "status.importTooLarge":
+    "“{name}” pesa {size} MB; i file oltre {max} MB non vengono importati (uno stato è di pochi kilobyte).",
   "status.badImport": "Impossibile importare “{name}” ({message}); la figura attuale resta.",
   "status.rejected": "Modifica rifiutata: {message}",
   "status.nothingToUndo": "Niente da annullare.",
