@@ -8,13 +8,15 @@ import { demos, findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
-import { parseHash, buildHash, decodeState } from "./lib/state.js";
+import { parseHash, buildHash, decodeState, encodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
 import { t } from "./lib/strings.js";
 import { LANGUAGES, chooseLanguage, useLanguage, withLanguage } from "./lib/language.js";
 import { findLecture, lectures, loadLecture } from "./lectures/index.js";
 import { playLecture } from "./lib/lecture.js";
+import { exercises, findExercise } from "./exercises/index.js";
+import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 
 /**
@@ -81,7 +83,8 @@ async function showGallery(sl) {
   for (const section of SECTIONS) {
     const members = demos.filter((entry) => entry.section === section);
     const lecture = lectures.find((l) => l.section === section);
-    if (!members.length && !lecture) continue;
+    const practice = exercises.some((e) => e.section === section);
+    if (!members.length && !lecture && !practice) continue;
     page.append(el("h2", { text: t(`section.${section}`) }));
     if (lecture) {
       page.append(
@@ -92,6 +95,19 @@ async function showGallery(sl) {
             href: `#lecture=${lecture.id}`,
             "data-lecture": lecture.id,
             text: t("gallery.lecture"),
+          }),
+        ),
+      );
+    }
+    for (const exercise of exercises.filter((e) => e.section === section)) {
+      page.append(
+        el(
+          "p",
+          { class: "section-exercise" },
+          el("a", {
+            href: `#exercise=${exercise.id}`,
+            "data-exercise": exercise.id,
+            text: t("gallery.exercise", { title: t(`exercise.${exercise.id}.title`) }),
           }),
         ),
       );
@@ -286,10 +302,69 @@ async function showLecture(id, scene, sl) {
   });
 }
 
+// ------------------------------------------------------------------ exercise view
+/** Shows exercise `entry` with the state in `encoded` (else its starting state). */
+async function showExercise(entry, encoded, sl) {
+  const routed = routeCount;
+  let demo;
+  try {
+    demo = await loadDemo(entry.demo);
+    await prepareFigure(demo);
+  } catch (err) {
+    showAppStatus(err.message, "error");
+    return;
+  }
+  if (routed !== routeCount) return;
+  unmount();
+  document.title = t("app.demoTitle", {
+    title: t(`exercise.${entry.id}.title`),
+    app: t("app.name"),
+  });
+  const start = validateState(demo, structuredClone(entry.state));
+  let state = start;
+  let linkError = null;
+  if (encoded) {
+    try {
+      state = validateState(demo, decodeState(encoded));
+    } catch (err) {
+      linkError = err.message;
+    }
+  }
+  const write = (s) => {
+    lastHash = `#exercise=${encodeURIComponent(entry.id)}&s=${encodeState(s)}`;
+    history.replaceState(null, "", lastHash);
+  };
+  const holder = el(
+    "div",
+    { class: "demo-page" },
+    el("a", { class: "back", href: "#", text: t("app.backToGallery") }),
+  );
+  const root = el("div");
+  holder.append(root);
+  main.append(holder);
+  controller = mountExercise(root, entry, demo, {
+    sl,
+    state,
+    mode: "page",
+    headingLevel: "h1",
+    onCommit: write,
+    shareUrl: (s) => new URL(`#exercise=${entry.id}&s=${encodeState(s)}`, location.href).href,
+  });
+  write(controller.state);
+  if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
+}
+
 // ------------------------------------------------------------------ routing
 async function route(sl) {
   const routed = ++routeCount;
-  const { demo: id, s, lecture, scene } = parseHash(location.hash);
+  const { demo: id, s, lecture, scene, exercise } = parseHash(location.hash);
+  if (exercise) {
+    const entry = findExercise(exercise);
+    if (entry && sl) return showExercise(entry, s, sl);
+    await showGallery(sl);
+    if (!entry) showAppStatus(t("exercise.unknown", { id: exercise }), "error");
+    return;
+  }
   if (lecture && findLecture(lecture) && sl) {
     if (player && player.lectureId === lecture) return player.go((Number(scene) || 1) - 1);
     return showLecture(lecture, scene, sl);

@@ -8,6 +8,7 @@
  * `view="xmin ymin xmax ymax"` fixes the window. `controls="minimal"` keeps the figure with Reset,
  * Fit and Share link; `controls="none"` the figure alone (default "full"). `theme="light" |
  * "dark"` fixes the colours (default "auto": the reader's preference).
+ * `exercise="<id>"` (exercises/index.js) shows that exercise around its demo instead of `demo`.
  * `lang="el" | "hr" | "it" | "en"` chooses the language (else the page's `?lang=`, else the
  * browser's); the strings are one table per page,
  * so the embeds of one page share the language of the last one that started.
@@ -17,9 +18,11 @@ import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
 import { stateFromAttributes } from "./lib/attributes.js";
-import { buildHash } from "./lib/state.js";
+import { buildHash, encodeState } from "./lib/state.js";
 import { t } from "./lib/strings.js";
 import { chooseLanguage, useLanguage } from "./lib/language.js";
+import { findExercise } from "./exercises/index.js";
+import { mountExercise } from "./lib/exercise.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -81,10 +84,14 @@ class SplineLabElement extends HTMLElement {
 
   /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
-    const id = this.getAttribute("demo") ?? "";
     await useLanguage(
       chooseLanguage(this.getAttribute("lang") ?? new URLSearchParams(location.search).get("lang")),
     );
+    const exerciseId = this.getAttribute("exercise");
+    const exercise = exerciseId === null ? null : findExercise(exerciseId);
+    if (exerciseId !== null && !exercise)
+      return this._fail(t("exercise.unknown", { id: exerciseId }));
+    const id = exercise?.demo ?? this.getAttribute("demo") ?? "";
     if (!findDemo(id)) return this._fail(t("app.unknownDemo", { id }));
     let sl;
     let demo;
@@ -100,10 +107,12 @@ class SplineLabElement extends HTMLElement {
       return this._fail(err.message);
     }
     if (!this.isConnected || this._controller) return;
-    let state = validateState(demo, structuredClone(demo.defaultState));
+    // An exercise starts from its own state; attributes may still change fields of it.
+    const start = validateState(demo, structuredClone(exercise?.state ?? demo.defaultState));
+    let state = start;
     let problem = null;
     try {
-      state = validateState(demo, stateFromAttributes(this, demo.defaultState));
+      state = validateState(demo, stateFromAttributes(this, start));
     } catch (err) {
       problem = err.message;
     }
@@ -117,23 +126,27 @@ class SplineLabElement extends HTMLElement {
       controls: CONTROLS.includes(controls) ? controls : "full",
       theme: this.getAttribute("theme") ?? "auto",
       headingLevel: "h2",
-      shareUrl: (s) => `${PLAYGROUND}${buildHash(demo.id, s)}`,
+      shareUrl: (s) =>
+        exercise
+          ? `${PLAYGROUND}#exercise=${exercise.id}&s=${encodeState(s)}`
+          : `${PLAYGROUND}${buildHash(demo.id, s)}`,
     };
+    const mount = (s) =>
+      exercise
+        ? mountExercise(root, exercise, demo, { ...options, state: s })
+        : mountDemo(root, demo, { ...options, state: s });
     try {
-      this._controller = mountDemo(root, demo, { ...options, state });
+      this._controller = mount(state);
     } catch (err) {
-      problem = err.message; // refused by the wasm constructor: show the default instead
-      this._controller = mountDemo(root, demo, {
-        ...options,
-        state: validateState(demo, structuredClone(demo.defaultState)),
-      });
+      problem = err.message; // refused by the wasm constructor: show the start instead
+      this._controller = mount(start);
     }
     if (problem) this._controller.status(t("status.rejected", { message: problem }), "error");
 
     // Attribute edits after start update the figure (validated like any state).
     this._attributes = new MutationObserver(() => {
       try {
-        this._controller?.accept(stateFromAttributes(this, demo.defaultState));
+        this._controller?.accept(stateFromAttributes(this, start));
       } catch (err) {
         this._controller?.status(t("status.rejected", { message: err.message }), "error");
       }

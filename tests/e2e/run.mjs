@@ -994,6 +994,104 @@ try {
     });
   }
 
+  // Each exercise's goal reached by hand: the values a student would reach, worked out on paper.
+  const SOLUTIONS = {
+    "close-the-gap": (s) => ({ right: [[4, 1], ...s.right.slice(1)] }),
+    "make-it-c1": (s) => ({ right: [s.right[0], [5, -1], ...s.right.slice(2)] }),
+    "bezier-pieces": () => ({ inserted: [1, 2, 3] }),
+    "quarter-circle": () => ({ w1: Math.SQRT1_2 }),
+    "natural-ends": () => ({ end: "natural" }),
+    "horn-torus": () => ({ R: 2, r: 2 }),
+    "through-every-point": (s) => ({ role: "data", count: s.points.length }),
+  };
+
+  await test("every exercise: its start is not solved, the worked solution is, checked by the core (#exercise=…)", async () => {
+    const list = await page.evaluate(async () => {
+      const { exercises } = await import("./exercises/index.js");
+      return exercises.map((e) => ({ id: e.id, section: e.section }));
+    });
+    equal(
+      list
+        .map((e) => e.id)
+        .sort()
+        .join(),
+      Object.keys(SOLUTIONS).sort().join(),
+      "exercises with a worked solution",
+    );
+    equal(new Set(list.map((e) => e.section)).size, 7, "one per syllabus section at least");
+    const check = async () => {
+      await page.locator('[data-action="exercise-check"]').click();
+      return page.locator(".sl-exercise-result").getAttribute("data-kind");
+    };
+    for (const { id } of list) {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html#exercise=${id}`);
+      await demoHelpers(page).ready();
+      equal(await check(), "not-yet", `${id}: the start is not solved`);
+      assert(
+        (await page.locator(".sl-exercise-result").textContent()).length > 10,
+        `${id}: says why`,
+      );
+      const start = await page.evaluate(async (id) => {
+        const { findExercise } = await import("./exercises/index.js");
+        const { loadDemo } = await import("./demos/index.js");
+        const exercise = findExercise(id);
+        const demo = await loadDemo(exercise.demo);
+        return { ...structuredClone(demo.defaultState), ...structuredClone(exercise.state) };
+      }, id);
+      const solved = { ...start, ...SOLUTIONS[id](start) };
+      const hash = await page.evaluate(
+        async ([id, state]) => {
+          const { encodeState } = await import("./lib/state.js");
+          return `#exercise=${id}&s=${encodeState(state)}`;
+        },
+        [id, solved],
+      );
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html${hash}`);
+      await demoHelpers(page).ready();
+      equal(await check(), "solved", `${id}: the worked solution`);
+      await page.locator('[data-action="exercise-hint"]').click();
+      assert(await page.locator(".sl-exercise-hint").isVisible(), `${id}: the hint shows`);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test('<spline-lab exercise="quarter-circle"> embeds the exercise; attributes change its state', async () => {
+    const pageUrl = `${base}/exercise-embed-test.html`;
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) =>
+      route.fulfill({
+        contentType: "text/html",
+        body: `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="ex" exercise="quarter-circle" w1="${Math.SQRT1_2}"></spline-lab><spline-lab id="bad" exercise="no-such-thing"></spline-lab></body></html>`,
+      }),
+    );
+    try {
+      await page.goto(pageUrl);
+      await demoHelpers(page, "spline-lab#ex ").ready();
+      await page.locator('spline-lab#ex [data-action="exercise-check"]').click();
+      equal(
+        await page.locator("spline-lab#ex .sl-exercise-result").getAttribute("data-kind"),
+        "solved",
+        "w1 = √2/2 from the attribute",
+      );
+      await page.locator("spline-lab#bad .sl-embed-error").waitFor();
+      assert(
+        (await page.locator("spline-lab#bad .sl-embed-error").textContent()).includes(
+          "no-such-thing",
+        ),
+        "an unknown exercise is named",
+      );
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html`);
+      await page.locator("a[data-exercise]").first().waitFor();
+      equal(await page.locator("a[data-exercise]").count(), 7, "the gallery lists the exercises");
+    } finally {
+      await page.unroute(pageUrl);
+    }
+  });
+
   await test("every lecture's scenes name a demo and a state it accepts, with an English caption", async () => {
     const problems = await page.evaluate(async () => {
       const { lectures, loadLecture } = await import("./lectures/index.js");

@@ -64,6 +64,7 @@ export function parseHash(hash) {
     s: params.get("s"),
     lecture: params.get("lecture"),
     scene: params.get("scene"),
+    exercise: params.get("exercise"),
   };
 }
 

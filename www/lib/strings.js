@@ -54,6 +54,54 @@ const EN = {
   "section.6": "6 · Surfaces",
   "section.7": "7 · Interactive design",
   "gallery.lecture": "Lecture: this section scene by scene, for projection",
+  "gallery.exercise": "Exercise: {title}",
+  "exercise.label": "Exercise",
+  "exercise.check": "Check",
+  "exercise.hint": "Hint",
+  "exercise.solved": "Solved: the core confirms it.",
+  "exercise.unknown": "There is no exercise “{id}”.",
+  "exercise.close-the-gap.title": "Close the gap",
+  "exercise.close-the-gap.task":
+    "The two cubics do not meet. Drag Q₀ onto P₃ so that the curve is continuous (C⁰).",
+  "exercise.close-the-gap.hint":
+    "C⁰ asks only that the last point of the first piece is the first point of the second: Q₀ = P₃ = (4, 1).",
+  "exercise.close-the-gap.notYet": "Not yet: Q₀ is {detail} away from P₃.",
+  "exercise.make-it-c1.title": "Make the joint C¹",
+  "exercise.make-it-c1.task":
+    "The pieces meet, but with a corner. Move Q₁ so that the joint is C¹: the same derivative on both sides.",
+  "exercise.make-it-c1.hint":
+    "For two cubics C¹ means 3(P₃ − P₂) = 3(Q₁ − Q₀), so Q₁ = 2P₃ − P₂ = (5, −1).",
+  "exercise.make-it-c1.notYet": "Not yet: the core measures C{detail} at the joint.",
+  "exercise.bezier-pieces.title": "Cut the curve into Bézier segments",
+  "exercise.bezier-pieces.task":
+    "Insert knots until every interior knot has multiplicity p = 2: then the curve falls apart into quadratic Bézier segments.",
+  "exercise.bezier-pieces.hint":
+    "The interior knots are 1, 2 and 3, each once. Insert each of them once more: set u to the knot and press Insert.",
+  "exercise.bezier-pieces.notYet": "Not yet: the curve is still C¹ at {detail} interior knots.",
+  "exercise.quarter-circle.title": "A quarter of a circle",
+  "exercise.quarter-circle.task":
+    "The control points (4, 0), (4, 4), (0, 4) form an isosceles triangle. Choose the weight w₁ so that the arc is exactly a quarter of the circle of radius 4 about (0, 0).",
+  "exercise.quarter-circle.hint":
+    "For a circular arc w₁ is the cosine of half the sweep: here the sweep is 90°, so w₁ = cos 45° = √2/2 ≈ 0.7071.",
+  "exercise.quarter-circle.notYet": "Not yet: the radius varies by {detail} % along the arc.",
+  "exercise.natural-ends.title": "A natural spline",
+  "exercise.natural-ends.task":
+    "This spline uses the not-a-knot end condition. Change it so that the spline is natural: no bending at its ends.",
+  "exercise.natural-ends.hint":
+    "Natural means C″ = 0 at both ends: choose the end condition “natural”.",
+  "exercise.natural-ends.notYet": "Not yet: |C″| at the ends is {detail}.",
+  "exercise.horn-torus.title": "A horn torus",
+  "exercise.horn-torus.task":
+    "Change the torus so that its tube touches the axis of revolution: a horn torus.",
+  "exercise.horn-torus.hint":
+    "The tube's circle has its centre at (R, 0, 0) and radius r; it touches the z axis when R = r.",
+  "exercise.horn-torus.notYet": "Not yet: the tube stays {detail} away from the axis.",
+  "exercise.through-every-point.title": "Through every point",
+  "exercise.through-every-point.task":
+    "The curve touches only the first and the last point. Without moving any point, make it pass through all of them.",
+  "exercise.through-every-point.hint":
+    "Read the points as data instead of control points, with as many control points as data points: interpolation instead of approximation.",
+  "exercise.through-every-point.notYet": "Not yet: the curve meets {detail} of the points.",
   "lecture.label": "Lecture",
   "lecture.previous": "← Previous",
   "lecture.next": "Next →",

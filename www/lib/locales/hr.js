@@ -1810,6 +1810,56 @@ export default {
   "app.language": "Jezik",
   "section.7": "7 · Interaktivno oblikovanje",
   "gallery.lecture": "Predavanje: ovo poglavlje scenu po scenu, za projekciju",
+  "gallery.exercise": "Zadatak: {title}",
+  "exercise.label": "Zadatak",
+  "exercise.check": "Provjeri",
+  "exercise.hint": "Uputa",
+  "exercise.solved": "Riješeno: jezgra to potvrđuje.",
+  "exercise.unknown": "Nema zadatka „{id}”.",
+  "exercise.close-the-gap.title": "Zatvorite procjep",
+  "exercise.close-the-gap.task":
+    "Dvije se kubne krivulje ne spajaju. Povucite Q₀ na P₃ tako da krivulja bude neprekinuta (C⁰).",
+  "exercise.close-the-gap.hint":
+    "C⁰ zahtijeva samo da posljednja točka prvog segmenta bude prva točka drugog: Q₀ = P₃ = (4, 1).",
+  "exercise.close-the-gap.notYet": "Još ne: Q₀ je od P₃ udaljena {detail}.",
+  "exercise.make-it-c1.title": "Učinite spoj C¹",
+  "exercise.make-it-c1.task":
+    "Segmenti se spajaju, ali pod kutom. Pomaknite Q₁ tako da spoj bude C¹: ista derivacija s obje strane.",
+  "exercise.make-it-c1.hint":
+    "Za dvije kubne krivulje C¹ znači 3(P₃ − P₂) = 3(Q₁ − Q₀), pa je Q₁ = 2P₃ − P₂ = (5, −1).",
+  "exercise.make-it-c1.notYet": "Još ne: jezgra u spoju mjeri C{detail}.",
+  "exercise.bezier-pieces.title": "Razrežite krivulju na Bézierove segmente",
+  "exercise.bezier-pieces.task":
+    "Umetnite uzlove tako da svaki unutarnji uzao dobije višestrukost p = 2: tada se krivulja raspada na kvadratne Bézierove segmente.",
+  "exercise.bezier-pieces.hint":
+    "Unutarnji uzlovi su 1, 2 i 3, svaki jednom. Umetnite svaki od njih još jednom: postavite u na vrijednost uzla i pritisnite „Umetni”.",
+  "exercise.bezier-pieces.notYet":
+    "Još ne: broj unutarnjih uzlova u kojima je krivulja još C¹: {detail}.",
+  "exercise.quarter-circle.title": "Četvrtina kružnice",
+  "exercise.quarter-circle.task":
+    "Kontrolne točke (4, 0), (4, 4), (0, 4) čine jednakokračni trokut. Odaberite težinu w₁ tako da luk bude točno četvrtina kružnice polumjera 4 sa središtem u (0, 0).",
+  "exercise.quarter-circle.hint":
+    "Za kružni luk w₁ je kosinus polovine središnjeg kuta luka: ovdje je taj kut 90°, pa je w₁ = cos 45° = √2/2 ≈ 0,7071.",
+  "exercise.quarter-circle.notYet": "Još ne: polumjer duž luka varira za {detail} %.",
+  "exercise.natural-ends.title": "Prirodni splajn",
+  "exercise.natural-ends.task":
+    "Ovaj splajn koristi rubni uvjet not-a-knot. Promijenite ga tako da splajn bude prirodan: bez savijanja na krajevima.",
+  "exercise.natural-ends.hint":
+    "Prirodan znači C″ = 0 na oba kraja: odaberite rubni uvjet „prirodni”.",
+  "exercise.natural-ends.notYet": "Još ne: |C″| na krajevima iznosi {detail}.",
+  "exercise.horn-torus.title": "Rogati torus",
+  "exercise.horn-torus.task":
+    "Promijenite torus tako da njegova cijev dodiruje os rotacije: rogati torus.",
+  "exercise.horn-torus.hint":
+    "Kružnica cijevi ima središte u (R, 0, 0) i polumjer r; dodiruje os z kada je R = r.",
+  "exercise.horn-torus.notYet": "Još ne: cijev je od osi udaljena {detail}.",
+  "exercise.through-every-point.title": "Kroz svaku točku",
+  "exercise.through-every-point.task":
+    "Krivulja dodiruje samo prvu i posljednju točku. Ne pomičući nijednu točku, učinite da prolazi kroz sve.",
+  "exercise.through-every-point.hint":
+    "Odaberite da točke budu zadane točke umjesto kontrolnih, s onoliko kontrolnih točaka koliko je zadanih točaka: interpolacija umjesto aproksimacije.",
+  "exercise.through-every-point.notYet":
+    "Još ne: broj točaka kroz koje krivulja prolazi: {detail}.",
   "lecture.label": "Predavanje",
   "lecture.previous": "← Prethodna",
   "lecture.next": "Sljedeća →",

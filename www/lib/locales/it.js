@@ -1823,10 +1823,59 @@ export default {
   "app.language": "Lingua",
   "section.7": "7 · Progettazione interattiva",
   "gallery.lecture": "Lezione: questa sezione scena per scena, da proiettare",
+  "gallery.exercise": "Esercizio: {title}",
+  "exercise.label": "Esercizio",
+  "exercise.check": "Verifica",
+  "exercise.hint": "Suggerimento",
+  "exercise.solved": "Risolto: il core lo conferma.",
+  "exercise.unknown": "Non esiste un esercizio “{id}”.",
+  "exercise.close-the-gap.title": "Colma la distanza",
+  "exercise.close-the-gap.task":
+    "Le due cubiche non si incontrano. Trascina Q₀ su P₃ in modo che la curva sia continua (C⁰).",
+  "exercise.close-the-gap.hint":
+    "C⁰ chiede solo che l'ultimo punto del primo pezzo sia il primo punto del secondo: Q₀ = P₃ = (4, 1).",
+  "exercise.close-the-gap.notYet": "Non ancora: Q₀ dista {detail} da P₃.",
+  "exercise.make-it-c1.title": "Rendi C¹ la giunzione",
+  "exercise.make-it-c1.task":
+    "I pezzi si incontrano, ma formano un angolo. Sposta Q₁ in modo che la giunzione sia C¹: la stessa derivata da entrambi i lati.",
+  "exercise.make-it-c1.hint":
+    "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5, −1).",
+  "exercise.make-it-c1.notYet": "Non ancora: il core misura C{detail} nella giunzione.",
+  "exercise.bezier-pieces.title": "Taglia la curva in segmenti di Bézier",
+  "exercise.bezier-pieces.task":
+    "Inserisci nodi finché ogni nodo interno ha molteplicità p = 2: allora la curva si scompone in segmenti di Bézier quadratici.",
+  "exercise.bezier-pieces.hint":
+    "I nodi interni sono 1, 2 e 3, ciascuno una volta. Inseriscili ancora una volta ciascuno: imposta u al valore del nodo e premi “Inserisci”.",
+  "exercise.bezier-pieces.notYet":
+    "Non ancora: nodi interni in cui la curva è ancora C¹: {detail}.",
+  "exercise.quarter-circle.title": "Un quarto di circonferenza",
+  "exercise.quarter-circle.task":
+    "I punti di controllo (4, 0), (4, 4), (0, 4) formano un triangolo isoscele. Scegli il peso w₁ in modo che l'arco sia esattamente un quarto della circonferenza di raggio 4 centrata in (0, 0).",
+  "exercise.quarter-circle.hint":
+    "Per un arco di circonferenza w₁ è il coseno di metà dell'angolo al centro: qui l'angolo è di 90°, quindi w₁ = cos 45° = √2/2 ≈ 0,7071.",
+  "exercise.quarter-circle.notYet": "Non ancora: il raggio varia del {detail} % lungo l'arco.",
+  "exercise.natural-ends.title": "Una spline naturale",
+  "exercise.natural-ends.task":
+    "Questa spline usa la condizione agli estremi not-a-knot. Cambiala in modo che la spline sia naturale: nessuna flessione agli estremi.",
+  "exercise.natural-ends.hint":
+    "Naturale significa C″ = 0 a entrambi gli estremi: scegli la condizione agli estremi “naturale”.",
+  "exercise.natural-ends.notYet": "Non ancora: |C″| agli estremi vale {detail}.",
+  "exercise.horn-torus.title": "Un toro a corno",
+  "exercise.horn-torus.task":
+    "Modifica il toro in modo che il suo tubo tocchi l'asse di rotazione: un toro a corno.",
+  "exercise.horn-torus.hint":
+    "La circonferenza del tubo ha centro in (R, 0, 0) e raggio r; tocca l'asse z quando R = r.",
+  "exercise.horn-torus.notYet": "Non ancora: il tubo resta a {detail} dall'asse.",
+  "exercise.through-every-point.title": "Attraverso tutti i punti",
+  "exercise.through-every-point.task":
+    "La curva tocca solo il primo e l'ultimo punto. Senza spostare alcun punto, falla passare per tutti.",
+  "exercise.through-every-point.hint":
+    "Usa i punti come punti dati invece che come punti di controllo, con tanti punti di controllo quanti sono i punti dati: interpolazione invece di approssimazione.",
+  "exercise.through-every-point.notYet": "Non ancora: la curva passa per {detail} dei punti.",
   "lecture.label": "Lezione",
   "lecture.previous": "← Precedente",
   "lecture.next": "Successiva →",
   "lecture.counter": "{k} / {n}",
-  "lecture.unknown": "Non esiste una lezione «{id}».",
-  "lecture.loadFailed": "Impossibile caricare la lezione «{id}» (HTTP {status}).",
+  "lecture.unknown": "Non esiste una lezione “{id}”.",
+  "lecture.loadFailed": "Impossibile caricare la lezione “{id}” (HTTP {status}).",
 };
