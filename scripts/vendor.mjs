@@ -23,6 +23,20 @@ for (const [from, to] of copies) {
   cpSync(src, `${vendor}/${to}`, { recursive: true });
 }
 
+// KaTeX's stylesheet, split so that an embed cannot clash with a course page's own KaTeX: the
+// @font-face rules go to the document (fonts only work from there) under our own family names
+// (SL_KaTeX_Main, …), and the rules for KaTeX's classes, using those names, are loaded only
+// where our formulas are (the playground page, or an embed's shadow root). lib/formula.js.
+const katexCss = readFileSync(`${root}node_modules/katex/dist/katex.min.css`, "utf8");
+// Every family name (in font-family, the font shorthand, quoted or not), not the font files'
+// names in url(fonts/KaTeX_…).
+const renamed = katexCss.replace(/(?<![/\w])KaTeX_/g, "SL_KaTeX_");
+const fontFaces = renamed.match(/@font-face\{[^}]*\}/g) ?? [];
+if (fontFaces.length < 10 || !renamed.includes(".katex"))
+  throw new Error("vendor: katex.min.css no longer has the shape this script splits");
+writeFileSync(`${vendor}/katex/katex-fonts.css`, `${fontFaces.join("\n")}\n`);
+writeFileSync(`${vendor}/katex/katex-scoped.css`, renamed.replace(/@font-face\{[^}]*\}/g, ""));
+
 const threeCopies = [
   ["node_modules/three/build/three.module.js", "three/three.module.js"],
   ["node_modules/three/build/three.core.js", "three/three.core.js"],
@@ -42,4 +56,6 @@ writeFileSync(
   `${vendor}/three/OrbitControls.js`,
   controls.replace(bare, 'from "./three.module.js"'),
 );
-console.log(`vendor: ${copies.length + threeCopies.length + 1} entries copied into www/vendor/`);
+console.log(
+  `vendor: ${copies.length + threeCopies.length + 1} entries copied into www/vendor/, KaTeX split`,
+);

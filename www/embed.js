@@ -42,19 +42,25 @@ const HOST_CSS = `
 .sl-embed-error::before { content: "⚠ "; }
 `;
 
+/** The element's own styles, one CSSStyleSheet for every embed of the page (made when needed). */
+let hostSheet = null;
+
 class SplineLabElement extends HTMLElement {
   connectedCallback() {
     if (!this.shadowRoot) {
       const shadow = this.attachShadow({ mode: "open" });
-      const style = document.createElement("style");
-      style.textContent = HOST_CSS;
+      // A constructed sheet, shared by every embed: no <style> element, so a page whose
+      // Content-Security-Policy forbids inline styles still shows the element.
+      hostSheet ??= new CSSStyleSheet();
+      if (hostSheet.cssRules.length === 0) hostSheet.replaceSync(HOST_CSS);
+      shadow.adoptedStyleSheets = [hostSheet];
       const link = document.createElement("link");
       link.rel = "stylesheet";
       link.href = SHELL_CSS;
       this._root = document.createElement("div");
       this._root.className = "sl-embed-placeholder";
       this._root.textContent = t("app.loading");
-      shadow.append(style, link, this._root);
+      shadow.append(link, this._root);
     }
     if (this._controller || this._observer) return;
     this._observer = new IntersectionObserver(

@@ -686,6 +686,101 @@ try {
     equal(await h.snapshot(), before, "the picture stays");
   });
 
+  await test("under the pages' Content-Security-Policy (no inline script or style, no eval) nothing is refused", async () => {
+    // Every violation of the pages' CSP meta (index.html, embed-example.html) is recorded.
+    const record = () => {
+      window.__violations = [];
+      document.addEventListener("securitypolicyviolation", (e) =>
+        window.__violations.push(
+          `${e.violatedDirective} ${e.blockedURI} ${e.sourceFile}:${e.lineNumber}`,
+        ),
+      );
+    };
+    await page.addInitScript(record);
+    const visits = [
+      "index.html",
+      "index.html#demo=de-boor",
+      "index.html#demo=bezier-patch",
+      "index.html#lecture=bezier-curves&scene=2",
+      "index.html#exercise=quarter-circle",
+      "embed-example.html",
+    ];
+    const found = [];
+    for (const path of visits) {
+      await page.goto("about:blank");
+      await page.goto(`${base}/${path}`);
+      if (path.startsWith("embed")) {
+        await page.locator("spline-lab#worked").scrollIntoViewIfNeeded();
+        await demoHelpers(page, "spline-lab#worked ").ready();
+      } else if (path.includes("#")) await demoHelpers(page).ready();
+      else await page.locator("a.card img[src^='data:image/png']").first().waitFor();
+      await page.waitForFunction(
+        () => !document.querySelector(".sl-formula") || document.querySelector(".katex"),
+      );
+      await settle(page);
+      const csp = await page.evaluate(
+        () => document.querySelector('meta[http-equiv="Content-Security-Policy"]')?.content ?? "",
+      );
+      assert(
+        /script-src 'self' 'wasm-unsafe-eval';/.test(csp) &&
+          !/unsafe-inline|unsafe-eval'/.test(csp.replace("wasm-unsafe-eval", "")),
+        `${path}: CSP ${csp}`,
+      );
+      for (const v of await page.evaluate(() => window.__violations)) found.push(`${path}: ${v}`);
+    }
+    const problems = errors.take();
+    assert(found.length === 0, found.join("\n"));
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("an embed's KaTeX styles and fonts leave a course page's own KaTeX alone", async () => {
+    const pageUrl = `${base}/katex-page-test.html`;
+    await page.goto("about:blank");
+    await page.route(pageUrl, (route) =>
+      route.fulfill({
+        contentType: "text/html",
+        body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><p><span class="katex" id="own">x</span></p><spline-lab id="one" demo="de-casteljau"></spline-lab></body></html>',
+      }),
+    );
+    try {
+      await page.goto(pageUrl);
+      const before = await page.evaluate(() => {
+        const own = getComputedStyle(document.getElementById("own"));
+        return { family: own.fontFamily, size: own.fontSize };
+      });
+      await demoHelpers(page, "spline-lab#one ").ready();
+      await page.locator("spline-lab#one .sl-formula .katex").first().waitFor();
+      const after = await page.evaluate(() => {
+        const own = getComputedStyle(document.getElementById("own"));
+        const inside = document
+          .getElementById("one")
+          .shadowRoot.querySelector(".sl-formula .katex");
+        return {
+          family: own.fontFamily,
+          size: own.fontSize,
+          insideFamily: getComputedStyle(inside).fontFamily,
+          families: [...document.fonts].map((f) => f.family.replaceAll('"', "")),
+          pageLinks: [...document.querySelectorAll("link[rel=stylesheet]")].map((l) =>
+            l.href.split("/").pop(),
+          ),
+        };
+      });
+      equal(after.family, before.family, "the page's .katex font family");
+      equal(after.size, before.size, "the page's .katex font size");
+      assert(
+        after.insideFamily.includes("SL_KaTeX_Main"),
+        `the embed's formulas use our fonts: ${after.insideFamily}`,
+      );
+      assert(
+        after.families.length > 0 && after.families.every((f) => f.startsWith("SL_KaTeX_")),
+        `font faces added to the page: ${after.families}`,
+      );
+      equal(after.pageLinks.join(), "katex-fonts.css", "the only stylesheet the page gets");
+    } finally {
+      await page.unroute(pageUrl);
+    }
+  });
+
   await test("an embed of one demo requests no other demo module", async () => {
     // A course page with one <spline-lab>, served beside embed.js; every request is watched.
     const pageUrl = `${base}/one-embed-test.html`;

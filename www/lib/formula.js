@@ -5,8 +5,14 @@
  */
 
 const KATEX_MODULE = new URL("../vendor/katex/katex.mjs", import.meta.url);
-/** URL of KaTeX's stylesheet, for `<link>`s in the document and in shadow roots. */
-export const KATEX_CSS = new URL("../vendor/katex/katex.min.css", import.meta.url).href;
+/**
+ * KaTeX's stylesheet as the build splits it (scripts/vendor.mjs): its @font-face rules under our
+ * own family names (SL_KaTeX_Main, …) for the document, and the rules for its classes, which
+ * use those names, for where our formulas are. A course page's own KaTeX keeps its fonts and
+ * its rules: nothing of ours with its names or selectors reaches the page.
+ */
+export const KATEX_FONTS_CSS = new URL("../vendor/katex/katex-fonts.css", import.meta.url).href;
+export const KATEX_CSS = new URL("../vendor/katex/katex-scoped.css", import.meta.url).href;
 
 let katexPromise = null;
 
@@ -17,19 +23,19 @@ export function loadKatex() {
 }
 
 /**
- * Makes sure KaTeX's CSS applies inside `root` (a Document or a ShadowRoot). Fonts declared by
- * @font-face only take effect from the document, so the document always gets a copy too.
+ * Makes sure KaTeX's CSS applies inside `root` (a Document or a ShadowRoot): the class rules in
+ * `root`, the @font-face rules in the document (fonts only take effect from there).
  */
 export function ensureKatexStyles(root) {
-  const add = (parent) => {
-    if (parent.querySelector?.(`link[href="${KATEX_CSS}"]`)) return;
+  const add = (parent, href) => {
+    if (parent.querySelector?.(`link[href="${href}"]`)) return;
     const link = document.createElement("link");
     link.rel = "stylesheet";
-    link.href = KATEX_CSS;
+    link.href = href;
     parent.append(link);
   };
-  add(document.head);
-  if (root && root !== document) add(root);
+  add(document.head, KATEX_FONTS_CSS);
+  add(root && root !== document ? root : document.head, KATEX_CSS);
 }
 
 /**
