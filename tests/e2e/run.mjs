@@ -1251,6 +1251,41 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("typed numbers take a decimal point or comma; a list with semicolons keeps its decimal commas", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html?lang=hr#demo=de-boor`);
+    await demoHelpers(page).ready();
+    const parsed = await page.evaluate(async () => {
+      const { parseNumberInput: p, splitNumberList: s } = await import("./lib/format.js");
+      return [
+        [p("0,25"), p("0.25"), p("\u22120,5"), p("1,5/2"), p("1,5,6")],
+        [s("0; 0; 1,5; 2"), s("0, 0, 1.5, 2"), s("(1,5; 2)", "()")],
+      ];
+    });
+    equal(JSON.stringify(parsed[0]), "[0.25,0.25,-0.5,0.75,null]", "numbers (NaN → null)");
+    equal(
+      JSON.stringify(parsed[1]),
+      '[["0","0","1,5","2"],["0","0","1.5","2"],["1,5","2"]]',
+      "lists",
+    );
+    const box = page.locator('[data-control="u"] .sl-value');
+    await box.fill("1,5");
+    await box.press("Enter");
+    await settle(page);
+    const linked = async () =>
+      page.evaluate(async () => {
+        const { parseHash, decodeState } = await import("./lib/state.js");
+        return decodeState(parseHash(location.hash).s);
+      });
+    equal((await linked()).u, 1.5, "u typed with a decimal comma");
+    const knots = page.locator('[data-control="knots"] input');
+    await knots.fill("0; 0; 0; 0; 0,5; 2; 3; 4; 4; 4; 4");
+    await knots.press("Enter");
+    await settle(page);
+    assert(/0\.5|0,5/.test(await knots.inputValue()), `knots: ${await knots.inputValue()}`);
+    equal((await linked()).knots[4], 0.5, "the link holds a locale-free 0.5");
+  });
+
   await test("the language menu reloads the page in the chosen language and keeps the demo's link", async () => {
     await page.goto("about:blank");
     await page.goto(`${base}/index.html#demo=de-casteljau`);

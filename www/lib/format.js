@@ -89,15 +89,33 @@ export function allIntegers(values) {
 }
 
 /**
- * Parses typed parameter input: a decimal ("0.25") or a fraction ("1/3"). Returns NaN when the
- * text is neither.
+ * Parses typed parameter input: a decimal ("0.25", or "0,25" with the decimal comma of Greek,
+ * Croatian and Italian) or a fraction ("1/3", "1,5/2"); a true minus sign "−" reads as "-".
+ * Returns NaN when the text is neither.
  */
 export function parseNumberInput(text) {
-  const trimmed = String(text).trim();
-  const fraction = /^(-?\d+(?:\.\d+)?)\s*\/\s*(\d+(?:\.\d+)?)$/.exec(trimmed);
-  if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+  const trimmed = String(text)
+    .trim()
+    .replace(/^\u2212/, "-")
+    .replace(/^([-+]?\d+),(\d+)/, "$1.$2");
+  const fraction = /^(-?\d+(?:\.\d+)?)\s*\/\s*(\d+(?:[.,]\d+)?)$/.exec(trimmed);
+  if (fraction) return Number(fraction[1]) / Number(fraction[2].replace(",", "."));
   if (trimmed === "") return NaN;
   return Number(trimmed);
+}
+
+/**
+ * The entries of a typed list of numbers: separated by semicolons when the text has one (then a
+ * comma is a decimal comma: "0; 0; 1,5; 2"), else by commas and spaces ("0, 0, 1.5, 2").
+ * `extra` holds more separator characters (e.g. "()" for a point "(1, 2)").
+ */
+export function splitNumberList(text, extra = "") {
+  const escaped = extra.replace(/[\]\\^-]/g, "\\$&");
+  const separators = String(text).includes(";") ? `;\\s${escaped}` : `,\\s${escaped}`;
+  return String(text)
+    .trim()
+    .split(new RegExp(`[${separators}]+`))
+    .filter(Boolean);
 }
 
 /**

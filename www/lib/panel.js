@@ -17,7 +17,7 @@ import {
 } from "./controls.js";
 import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
-import { parseNumberInput } from "./format.js";
+import { parseNumberInput, splitNumberList } from "./format.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -413,10 +413,7 @@ export function numberList(
       });
       const note = help ? el("p", { class: "sl-note", id: `${id}-help` }) : null;
       const read = () => {
-        const parts = input.value
-          .trim()
-          .split(/[\s,;]+/)
-          .filter(Boolean);
+        const parts = splitNumberList(input.value);
         const values = parts.map(parseNumberInput);
         const bad = parts.find((part, i) => !Number.isFinite(values[i]));
         if (bad !== undefined) ui.status(t("control.badNumber", { value: bad }), "error");

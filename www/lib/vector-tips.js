@@ -19,7 +19,7 @@
  */
 import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "./handles.js";
 import { el, setText } from "./controls.js";
-import { parseNumberInput, shortNumber, subscript } from "./format.js";
+import { parseNumberInput, shortNumber, splitNumberList, subscript } from "./format.js";
 import { t } from "./strings.js";
 
 export function vectorTips(ui, { count, tip, drag }) {
@@ -79,10 +79,7 @@ export function selectedVectorBox(field, { label, error }) {
         return i >= 0 && i < ui.state[field].length ? i : 0;
       };
       const read = () => {
-        const parts = input.value
-          .trim()
-          .split(/[\s,;()]+/)
-          .filter(Boolean);
+        const parts = splitNumberList(input.value, "()");
         const values = parts.map(parseNumberInput);
         if (values.length !== 2 || !values.every(Number.isFinite)) {
           ui.status(t(error, { value: input.value }), "error");
