@@ -82,67 +82,46 @@ function takeScratch(c, method) {
   return { params: m[1], exportName: m[2] };
 }
 
-const JSDOC_OUT = "     * @param {Float64Array | number[]} out\n";
-const intoMethods = (c, ev, der) => {
-  const cls = JSON.stringify(c.name);
-  let s = "";
-  if (ev) {
-    const p = ev.params; // "t" or "u, v"
-    s +=
-      "    /**\n" +
-      `     * \`evaluate(${p})\` written into \`out\` (a Float64Array or array of at least \`dim\`\n` +
-      "     * numbers), which it returns: one call into wasm, nothing allocated (added by\n" +
-      "     * scripts/glue.mjs).\n" +
-      p
-        .split(", ")
-        .map((q) => `     * @param {number} ${q}\n`)
-        .join("") +
-      JSDOC_OUT +
-      "     * @returns {Float64Array | number[]}\n" +
-      "     */\n" +
-      `    evaluateInto(${p}, out) {\n` +
-      `        const i = wasm.${ev.exportName}(livePtr(this, ${cls}), ${p});\n` +
-      `        return i === 0 ? copyInto(this.evaluate(${p}), out) : scratchInto(i, out);\n` +
-      "    }\n";
-  }
-  if (der) {
-    const p = der.params; // "t, order" or "u, v, du, dv"
-    s +=
-      "    /**\n" +
-      `     * \`derivative(${p})\` written into \`out\` (at least \`dim\` numbers), which it\n` +
-      "     * returns: one call into wasm, nothing allocated (added by scripts/glue.mjs).\n" +
-      p
-        .split(", ")
-        .map((q) => `     * @param {number} ${q}\n`)
-        .join("") +
-      JSDOC_OUT +
-      "     * @returns {Float64Array | number[]}\n" +
-      "     */\n" +
-      `    derivativeInto(${p}, out) {\n` +
-      `        const i = wasm.${der.exportName}(livePtr(this, ${cls}), ${p});\n` +
-      `        return i === 0 ? copyInto(this.derivative(${p}), out) : scratchInto(i, out);\n` +
-      "    }\n";
-  }
-  return s;
-};
+/**
+ * The JS method `${base}Into(params, out)` over the hidden scratch method `scratch` (`null`:
+ * none), for the class named `cls`: its JSDoc and body.
+ */
+function intoMethod(cls, base, scratch) {
+  if (!scratch) return "";
+  const p = scratch.params; // "t", "u, v", "t, order" or "u, v, du, dv"
+  const params = p
+    .split(", ")
+    .map((q) => `     * @param {number} ${q}\n`)
+    .join("");
+  return (
+    "    /**\n" +
+    `     * \`${base}(${p})\` written into \`out\` (a Float64Array or array of at least \`dim\`\n` +
+    "     * numbers), which it returns: one call into wasm, nothing allocated (added by\n" +
+    "     * scripts/glue.mjs).\n" +
+    params +
+    "     * @param {Float64Array | number[]} out\n" +
+    "     * @returns {Float64Array | number[]}\n" +
+    "     */\n" +
+    `    ${base}Into(${p}, out) {\n` +
+    `        const i = wasm.${scratch.exportName}(livePtr(this, ${JSON.stringify(cls)}), ${p});\n` +
+    `        return i === 0 ? copyInto(this.${base}(${p}), out) : scratchInto(i, out);\n` +
+    "    }\n"
+  );
+}
 
-const dtsInto = (ev, der) =>
-  (ev
-    ? "    /**\n     * `evaluate` written into `out` (at least `dim` numbers), which it returns: one\n" +
-      "     * call into wasm, nothing allocated.\n     */\n" +
-      `    evaluateInto<T extends Float64Array | number[]>(${ev.params
-        .split(", ")
-        .map((q) => `${q}: number`)
-        .join(", ")}, out: T): T;\n`
-    : "") +
-  (der
-    ? "    /**\n     * `derivative` written into `out` (at least `dim` numbers), which it returns.\n" +
-      "     */\n" +
-      `    derivativeInto<T extends Float64Array | number[]>(${der.params
-        .split(", ")
-        .map((q) => `${q}: number`)
-        .join(", ")}, out: T): T;\n`
-    : "");
+/** The TypeScript declaration of `${base}Into` (see intoMethod). */
+function intoDeclaration(base, scratch) {
+  if (!scratch) return "";
+  const params = scratch.params
+    .split(", ")
+    .map((q) => `${q}: number`)
+    .join(", ");
+  return (
+    `    /**\n     * \`${base}\` written into \`out\` (at least \`dim\` numbers), which it returns:\n` +
+    "     * one call into wasm, nothing allocated.\n     */\n" +
+    `    ${base}Into<T extends Float64Array | number[]>(${params}, out: T): T;\n`
+  );
+}
 
 let intoCount = 0;
 for (const c of classes) {
@@ -151,10 +130,12 @@ for (const c of classes) {
   const der = takeScratch(c, "__derivativeScratch");
   if (ev || der) {
     intoCount += 1;
-    c.text = c.text.replace(/\}\n$/, `${intoMethods(c, ev, der)}}\n`);
+    const methods = intoMethod(c.name, "evaluate", ev) + intoMethod(c.name, "derivative", der);
+    c.text = c.text.replace(/\}\n$/, `${methods}}\n`);
     const dm = new RegExp(`^export class ${c.name} \\{\\n[\\s\\S]*?^\\}\\n`, "m").exec(dts);
     if (!dm) fail(`class ${c.name} missing from the .d.ts`);
-    dts = dts.replace(dm[0], dm[0].replace(/\}\n$/, `${dtsInto(ev, der)}}\n`));
+    const declarations = intoDeclaration("evaluate", ev) + intoDeclaration("derivative", der);
+    dts = dts.replace(dm[0], dm[0].replace(/\}\n$/, `${declarations}}\n`));
   }
   if (/^ {4}__(evaluate|derivative)Scratch\(/m.test(c.text))
     fail(`${c.name}: a scratch method was left`);
