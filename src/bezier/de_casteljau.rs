@@ -45,19 +45,38 @@ pub fn de_casteljau_point<P: Point>(points: &[P], s: f64, scratch: &mut Vec<P>) 
 /// may compute the points, e.g. the differences of a derivative).
 #[inline]
 pub fn bernstein_small<P: Point>(m: usize, s: f64, c: impl Fn(usize) -> P) -> P {
+    let m = m.min(STACK_DEGREE);
     let r = 1.0 - s;
     let mut r_pow = [1.0; STACK_DEGREE + 1];
-    for k in 1..=m.min(STACK_DEGREE) {
+    for k in 1..=m {
         r_pow[k] = r_pow[k - 1] * r;
     }
-    let (mut sum, mut s_pow, mut binom) = (P::ZERO, 1.0, 1.0);
-    for i in 0..=m.min(STACK_DEGREE) {
-        sum = sum + c(i) * (binom * s_pow * r_pow[m - i]);
+    // The binomials from a table: a running C(m, i+1) = C(m, i)(m − i)/(i + 1) would chain
+    // m divisions, most of this function's time.
+    let binom = &PASCAL[m];
+    let (mut sum, mut s_pow) = (P::ZERO, 1.0);
+    for i in 0..=m {
+        sum = sum + c(i) * (binom[i] * s_pow * r_pow[m - i]);
         s_pow *= s;
-        binom = binom * (m - i) as f64 / (i + 1) as f64;
     }
     sum
 }
+
+/// `PASCAL[m][i] = C(m, i)` for `m ≤ STACK_DEGREE` (Pascal's triangle, exact in f64).
+const PASCAL: [[f64; STACK_DEGREE + 1]; STACK_DEGREE + 1] = {
+    let mut t = [[0.0; STACK_DEGREE + 1]; STACK_DEGREE + 1];
+    let mut m = 0;
+    while m <= STACK_DEGREE {
+        t[m][0] = 1.0;
+        let mut i = 1;
+        while i <= m {
+            t[m][i] = t[m - 1][i - 1] + t[m - 1][i];
+            i += 1;
+        }
+        m += 1;
+    }
+    t
+};
 
 /// All levels of de Casteljau's triangle, concatenated: level 0 (the `n + 1` control points)
 /// first, then level `r` with its `n + 1 − r` points; `(n + 1)(n + 2)/2` points in all, the last
