@@ -217,6 +217,81 @@ function scratchInto(i, out) {
     return out;
 }
 
+// A Bézier curve's point at t in JavaScript, on a copy of its homogeneous control points kept
+// on the object (made at the first call, dropped by setControlPoint and setWeight): a call into
+// wasm alone costs ~5 ns, a sixth of what a cubic costs in a JS library, so for degree ≤ 7 the
+// per-point path stays in JS, with the core's formula and operation order (src/bezier/
+// de_casteljau.rs bernstein_small: Σ P_i · (C(m,i) s^i · (1 − s)^{m−i}) over a Pascal table,
+// then the product with 1/w), so it returns the very same numbers as evaluate(t).
+const BEZIER_JS_DEGREE = 7;
+const PASCAL = [[1]];
+for (let m = 1; m <= BEZIER_JS_DEGREE; m++) {
+    PASCAL.push(PASCAL[m - 1].map((c, i) => c + (i > 0 ? PASCAL[m - 1][i - 1] : 0)).concat(1));
+}
+const powersOfR = new Float64Array(BEZIER_JS_DEGREE + 1);
+
+/** The curve's mirror { degree, dim, rational, a, b, h } (h: homogeneous points, dim + 1 each). */
+function bezierMirror(curve) {
+    const degree = curve.degree;
+    if (degree > BEZIER_JS_DEGREE) return (curve.__jsMirror = null);
+    const [a, b] = curve.domain();
+    return (curve.__jsMirror = { degree, dim: curve.dim, rational: curve.rational, a, b, h: curve.homogeneousPoints() });
+}
+
+{
+    const viaWasm = BezierCurve.prototype.evaluateInto;
+    BezierCurve.prototype.evaluateInto = function evaluateInto(t, out) {
+        livePtr(this, "BezierCurve");
+        const m = this.__jsMirror === undefined ? bezierMirror(this) : this.__jsMirror;
+        // Anything unusual (a high degree, t outside, a short out) takes the checked wasm path.
+        if (m === null || !(t >= m.a && t <= m.b) || out === null || typeof out !== "object" || !(out.length >= m.dim)) {
+            return viaWasm.call(this, t, out);
+        }
+        const s = m.a === 0 && m.b === 1 ? t : Math.min(Math.max((t - m.a) / (m.b - m.a), 0), 1);
+        const n = m.degree;
+        const r = 1 - s;
+        powersOfR[0] = 1;
+        for (let k = 1; k <= n; k++) powersOfR[k] = powersOfR[k - 1] * r;
+        const binom = PASCAL[n];
+        const h = m.h;
+        const stride = m.dim + 1;
+        let x = 0;
+        let y = 0;
+        let z = 0;
+        let w = 0;
+        let sPow = 1;
+        for (let i = 0, j = 0; i <= n; i++, j += stride) {
+            const basis = binom[i] * sPow * powersOfR[n - i];
+            x = x + h[j] * basis;
+            y = y + h[j + 1] * basis;
+            if (stride === 4) {
+                z = z + h[j + 2] * basis;
+                w = w + h[j + 3] * basis;
+            } else {
+                w = w + h[j + 2] * basis;
+            }
+            sPow *= s;
+        }
+        if (m.rational) {
+            const inverse = 1 / w; // the core multiplies by 1/w (Cartesian::project)
+            x *= inverse;
+            y *= inverse;
+            z *= inverse;
+        }
+        out[0] = x;
+        out[1] = y;
+        if (m.dim === 3) out[2] = z;
+        return out;
+    };
+    for (const name of ["setControlPoint", "setWeight"]) {
+        const method = BezierCurve.prototype[name];
+        BezierCurve.prototype[name] = function (...args) {
+            this.__jsMirror = undefined;
+            return method.apply(this, args);
+        };
+    }
+}
+
 /** Copies \`values\` into \`out\` (the rare path: the scratch call failed but evaluate did not). */
 function copyInto(values, out) {
     if (out === null || typeof out !== "object" || !(out.length >= values.length)) {

@@ -119,6 +119,51 @@ const checks = [
     },
   ],
   [
+    "BezierCurve.evaluateInto (computed in JS up to degree 7) returns evaluate's very numbers: degrees 1–9, 2D and 3D, rational, on [a, b], after setControlPoint and setWeight",
+    () => {
+      let seed = 7;
+      const rnd = () => {
+        seed = (seed * 1103515245 + 12345) % 2147483648;
+        return seed / 2147483648;
+      };
+      const out = new Float64Array(3);
+      let cases = 0;
+      for (let degree = 1; degree <= 9; degree++) {
+        for (const dim of [2, 3]) {
+          for (const rational of [false, true]) {
+            const points = Array.from({ length: (degree + 1) * dim }, () => 20 * rnd() - 10);
+            const weights = rational
+              ? Array.from({ length: degree + 1 }, () => 0.2 + 3 * rnd())
+              : undefined;
+            const [a, b] = rnd() < 0.5 ? [0, 1] : [-2 + rnd(), 1 + 3 * rnd()];
+            const c = sl.BezierCurve.withInterval(points, dim, a, b, weights);
+            const check = (what) => {
+              for (const t of [a, b, a + (b - a) * rnd(), a + (b - a) * rnd(), (a + b) / 2]) {
+                near(
+                  c.evaluateInto(t, out).subarray(0, dim),
+                  c.evaluate(t),
+                  0,
+                  `${what} degree ${degree} ${dim}D${rational ? " rational" : ""} t = ${t}`,
+                );
+                cases++;
+              }
+            };
+            check("as built");
+            c.setControlPoint(
+              degree,
+              Array.from({ length: dim }, () => 5 * rnd()),
+            );
+            check("after setControlPoint");
+            c.setWeight(0, 2.5);
+            check("after setWeight");
+            c.free();
+          }
+        }
+      }
+      assert(cases === 9 * 2 * 2 * 15, `${cases} comparisons`);
+    },
+  ],
+  [
     "evaluateInto / derivativeInto agree with evaluate / derivative on every curve class (2D, 3D, rational; typed array and array)",
     () => {
       for (const [name, c, given] of curves()) {
