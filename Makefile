@@ -52,6 +52,8 @@ build: tools
 	@# Built beside www/ and swapped in at the end, so a page loading meanwhile sees whole files.
 	rm -rf target/pkg-next
 	$(TOOLS)/bin/wasm-bindgen --target web --out-dir target/pkg-next --out-name splinelab $(WASM_OUT)
+	@# The …Into per-call methods and the freed-object checks (see the script's header).
+	node scripts/glue.mjs target/pkg-next
 	node_modules/.bin/wasm-opt -O target/pkg-next/splinelab_bg.wasm -o target/pkg-next/splinelab_bg.wasm
 	rm -rf $(PKG) && mv target/pkg-next $(PKG)
 	node scripts/vendor.mjs

@@ -36,6 +36,18 @@ export function cubicSample2d(points, ts, out) {
   return out;
 }
 
+/** One point of a 2D cubic Bézier into `out` (the per-call form of cubicSample2d). */
+export function cubicPoint2d(points, t, out) {
+  const mt = 1 - t;
+  const b0 = mt * mt * mt;
+  const b1 = 3 * mt * mt * t;
+  const b2 = 3 * mt * t * t;
+  const b3 = t * t * t;
+  out[0] = b0 * points[0] + b1 * points[2] + b2 * points[4] + b3 * points[6];
+  out[1] = b0 * points[1] + b1 * points[3] + b2 * points[5] + b3 * points[7];
+  return out;
+}
+
 /**
  * A B-spline prepared for the loops below: homogeneous points `(w·P, w)` with stride dim + 1 when
  * rational, plain points with stride dim otherwise (a user would not carry weights of 1).
@@ -81,33 +93,42 @@ function spanFrom(knots, n, p, u, k) {
 
 /** Curve points at every u of `us` by de Boor's algorithm (NURBS Book A4.1 / eq. 5.x), into `out`. */
 export function deBoorSample(curve, us, out) {
-  const { dim, p, n, rational, stride, cw, knots } = curve;
-  const d = new Float64Array((p + 1) * stride);
-  let k = p;
+  const d = new Float64Array((curve.p + 1) * curve.stride);
+  let k = curve.p;
   for (let s = 0; s < us.length; s++) {
-    const u = us[s];
-    k = spanFrom(knots, n, p, u, k);
-    const base = (k - p) * stride;
-    for (let i = 0; i < (p + 1) * stride; i++) d[i] = cw[base + i];
-    for (let r = 1; r <= p; r++) {
-      for (let j = p; j >= r; j--) {
-        const i = k - p + j;
-        const denom = knots[i + p - r + 1] - knots[i];
-        const a = denom === 0 ? 0 : (u - knots[i]) / denom;
-        const b = 1 - a;
-        for (let c = 0; c < stride; c++)
-          d[j * stride + c] = b * d[(j - 1) * stride + c] + a * d[j * stride + c];
-      }
-    }
-    const o = p * stride;
-    if (rational) {
-      const inv = 1 / d[o + dim];
-      for (let c = 0; c < dim; c++) out[s * dim + c] = d[o + c] * inv;
-    } else {
-      for (let c = 0; c < dim; c++) out[s * dim + c] = d[o + c];
-    }
+    k = spanFrom(curve.knots, curve.n, curve.p, us[s], k);
+    deBoorInSpan(curve, k, us[s], d, out, s * curve.dim);
   }
   return out;
+}
+
+/** One point by de Boor into `out` (the per-call path): a binary span search, the scratch kept
+ * on the curve. */
+export function deBoorPoint(curve, u, out) {
+  curve.deBoorScratch ??= new Float64Array((curve.p + 1) * curve.stride);
+  const k = findSpan(curve.knots, curve.n, curve.p, u);
+  deBoorInSpan(curve, k, u, curve.deBoorScratch, out, 0);
+  return out;
+}
+
+/** De Boor's triangle in span k on the scratch `d`, the point written at out[o…]. */
+function deBoorInSpan(curve, k, u, d, out, o) {
+  const { dim, p, rational, stride, cw, knots } = curve;
+  const base = (k - p) * stride;
+  for (let i = 0; i < (p + 1) * stride; i++) d[i] = cw[base + i];
+  for (let r = 1; r <= p; r++) {
+    for (let j = p; j >= r; j--) {
+      const i = k - p + j;
+      const denom = knots[i + p - r + 1] - knots[i];
+      const a = denom === 0 ? 0 : (u - knots[i]) / denom;
+      const b = 1 - a;
+      for (let c = 0; c < stride; c++)
+        d[j * stride + c] = b * d[(j - 1) * stride + c] + a * d[j * stride + c];
+    }
+  }
+  const last = p * stride;
+  const inv = rational ? 1 / d[last + dim] : 1;
+  for (let c = 0; c < dim; c++) out[o + c] = d[last + c] * inv;
 }
 
 /** The p + 1 non-zero basis values N_{k−p..k, p}(u) at span k into N (NURBS Book A2.2). */
@@ -131,55 +152,74 @@ export function basisFunctions(knots, p, k, u, N, left, right) {
  * per point (NURBS Book A2.3 with n = 1), summed; the quotient rule C' = (A' − w'C)/w for NURBS.
  */
 export function deBoorFirstDerivatives(curve, us, out) {
-  const { dim, p, n, rational, stride, cw, knots } = curve;
-  const N = new Float64Array(p + 1);
-  const Nm = new Float64Array(p + 1);
-  const dN = new Float64Array(p + 1);
-  const left = new Float64Array(p + 1);
-  const right = new Float64Array(p + 1);
-  const A = new Float64Array(stride);
-  const dA = new Float64Array(stride);
-  let k = p;
+  const scratch = derivativeScratch(curve);
+  let k = curve.p;
   for (let s = 0; s < us.length; s++) {
-    const u = us[s];
-    k = spanFrom(knots, n, p, u, k);
-    // Degree p − 1 values (for the derivative), then one more Cox–de Boor step to degree p.
-    basisFunctions(knots, p - 1, k, u, Nm, left, right);
-    for (let j = 0; j < p; j++) N[j] = Nm[j];
-    left[p] = u - knots[k + 1 - p];
-    right[p] = knots[k + p] - u;
-    let saved = 0;
-    for (let r = 0; r < p; r++) {
-      const temp = N[r] / (right[r + 1] + left[p - r]);
-      N[r] = saved + right[r + 1] * temp;
-      saved = left[p - r] * temp;
-    }
-    N[p] = saved;
-    // N'_{i,p} = p/(u_{i+p} − u_i) N_{i,p−1} − p/(u_{i+p+1} − u_{i+1}) N_{i+1,p−1}, i = k − p + j.
-    for (let j = 0; j <= p; j++) {
-      let v = 0;
-      if (j > 0) v += Nm[j - 1] / (knots[k + j] - knots[k - p + j]);
-      if (j < p) v -= Nm[j] / (knots[k + j + 1] - knots[k - p + j + 1]);
-      dN[j] = p * v;
-    }
-    A.fill(0);
-    dA.fill(0);
-    for (let j = 0; j <= p; j++) {
-      const base = (k - p + j) * stride;
-      for (let c = 0; c < stride; c++) {
-        A[c] += N[j] * cw[base + c];
-        dA[c] += dN[j] * cw[base + c];
-      }
-    }
-    if (rational) {
-      const w = A[dim];
-      const dw = dA[dim];
-      for (let c = 0; c < dim; c++) out[s * dim + c] = (dA[c] - (dw * A[c]) / w) / w;
-    } else {
-      for (let c = 0; c < dim; c++) out[s * dim + c] = dA[c];
-    }
+    k = spanFrom(curve.knots, curve.n, curve.p, us[s], k);
+    firstDerivativeInSpan(curve, k, us[s], scratch, out, s * curve.dim);
   }
   return out;
+}
+
+/** One first derivative into `out` (the per-call path): binary span search, scratch on the curve. */
+export function firstDerivativePoint(curve, u, out) {
+  curve.derivativeScratch ??= derivativeScratch(curve);
+  const k = findSpan(curve.knots, curve.n, curve.p, u);
+  firstDerivativeInSpan(curve, k, u, curve.derivativeScratch, out, 0);
+  return out;
+}
+
+function derivativeScratch({ p, stride }) {
+  const f = (n) => new Float64Array(n);
+  return {
+    N: f(p + 1),
+    Nm: f(p + 1),
+    dN: f(p + 1),
+    left: f(p + 1),
+    right: f(p + 1),
+    A: f(stride),
+    dA: f(stride),
+  };
+}
+
+/** C'(u) in span k, written at out[o…]. */
+function firstDerivativeInSpan(curve, k, u, { N, Nm, dN, left, right, A, dA }, out, o) {
+  const { dim, p, rational, stride, cw, knots } = curve;
+  // Degree p − 1 values (for the derivative), then one more Cox–de Boor step to degree p.
+  basisFunctions(knots, p - 1, k, u, Nm, left, right);
+  for (let j = 0; j < p; j++) N[j] = Nm[j];
+  left[p] = u - knots[k + 1 - p];
+  right[p] = knots[k + p] - u;
+  let saved = 0;
+  for (let r = 0; r < p; r++) {
+    const temp = N[r] / (right[r + 1] + left[p - r]);
+    N[r] = saved + right[r + 1] * temp;
+    saved = left[p - r] * temp;
+  }
+  N[p] = saved;
+  // N'_{i,p} = p/(u_{i+p} − u_i) N_{i,p−1} − p/(u_{i+p+1} − u_{i+1}) N_{i+1,p−1}, i = k − p + j.
+  for (let j = 0; j <= p; j++) {
+    let v = 0;
+    if (j > 0) v += Nm[j - 1] / (knots[k + j] - knots[k - p + j]);
+    if (j < p) v -= Nm[j] / (knots[k + j + 1] - knots[k - p + j + 1]);
+    dN[j] = p * v;
+  }
+  A.fill(0);
+  dA.fill(0);
+  for (let j = 0; j <= p; j++) {
+    const base = (k - p + j) * stride;
+    for (let c = 0; c < stride; c++) {
+      A[c] += N[j] * cw[base + c];
+      dA[c] += dN[j] * cw[base + c];
+    }
+  }
+  if (rational) {
+    const w = A[dim];
+    const dw = dA[dim];
+    for (let c = 0; c < dim; c++) out[o + c] = (dA[c] - (dw * A[c]) / w) / w;
+  } else {
+    for (let c = 0; c < dim; c++) out[o + c] = dA[c];
+  }
 }
 
 /**

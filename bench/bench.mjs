@@ -99,6 +99,26 @@ function pointByPoint(params, n, out, point) {
   return out;
 }
 
+/** The hand-written JS of the per-call rows: a baseline, apart from the batched one's targets. */
+const JS_PER_CALL = "js per call";
+
+/**
+ * Per-call rows (issue 15): `calls` = [[lib, method, point(u, scratch) → indexable [x, y]], …],
+ * each run one point at a time over the same strided subset `pe` ({ n, stride, us, out }) of the
+ * workload's parameters and checked against its reference there. `point` gets one reused
+ * 2-number Float64Array to write into (the …Into convention).
+ */
+function perCall(pe, check, calls) {
+  const scratch = new Float64Array(2);
+  return calls.map(([lib, method, point]) => ({
+    lib,
+    method,
+    n: pe.n,
+    run: () => pointByPoint(pe.us, pe.n, pe.out, (u) => point(u, scratch)),
+    check: (o) => check(o, pe.n, pe.stride),
+  }));
+}
+
 function stridedDiff(out, ref, n, dim, stride) {
   let m = 0;
   for (let k = 0; k < n; k++) {
@@ -244,6 +264,7 @@ const fallbacks = [];
   for (let i = 0; i < 4; i++) rc.points().set(i, [cp[2 * i], cp[2 * i + 1], 0, 1]);
   [0, 0, 0, 1, 1, 1].forEach((k, i) => rc.knots().set(i, k));
   const pr = peer(sizes(100_000));
+  const pc = peer(sizes(200_000));
   const tmp = [0, 0];
 
   results.push(
@@ -270,6 +291,17 @@ const fallbacks = [];
           check,
         },
         ...views(curve, ts, N, check),
+        ...(curve.evaluateInto
+          ? perCall({ ...pc, us: pc.ts }, check, [
+              ["splinelab", "evaluateInto(t, out) per point", (t, o) => curve.evaluateInto(t, o)],
+              ["splinelab", "evaluate(t) per point (new array)", (t) => curve.evaluate(t)],
+              [
+                JS_PER_CALL,
+                "cubicPoint2d(cp, t, out) per point",
+                (t, o) => base.cubicPoint2d(cp, t, o),
+              ],
+            ])
+          : []),
         {
           lib: "js-baseline",
           method: "de Casteljau loop",
@@ -399,6 +431,7 @@ for (const rational of [false, true]) {
   const pn = peer(sizes(200_000));
   const rc = rhinoCurve(input);
   const pr = peer(sizes(100_000));
+  const pc = peer(sizes(200_000));
   const tmp = [0, 0];
   const kind = rational ? "NURBS (weights in [0.5, 2])" : "B-spline";
   results.push(
@@ -425,6 +458,17 @@ for (const rational of [false, true]) {
           check,
         },
         ...views(curve, us, N, check),
+        ...(curve.evaluateInto
+          ? perCall(pc, check, [
+              ["splinelab", "evaluateInto(u, out) per point", (u, o) => curve.evaluateInto(u, o)],
+              ["splinelab", "evaluate(u) per point (new array)", (u) => curve.evaluate(u)],
+              [
+                JS_PER_CALL,
+                "deBoorPoint(u, out) per point, binary span search",
+                (u, o) => base.deBoorPoint(jsCurve, u, o),
+              ],
+            ])
+          : []),
         {
           lib: "js-baseline",
           method: "de Boor, span hint",
@@ -685,6 +729,22 @@ for (const rational of [false, true]) {
         },
       ];
   if (!has.sampleDerivatives && !fallbacks.includes("(d)")) fallbacks.push("(d)");
+  if (curve.derivativeInto) {
+    contenders.push(
+      ...perCall(pp, check, [
+        [
+          "splinelab",
+          "derivativeInto(u, 1, out) per point",
+          (u, o) => curve.derivativeInto(u, 1, o),
+        ],
+        [
+          JS_PER_CALL,
+          "firstDerivativePoint(u, out) per point, binary span search",
+          (u, o) => base.firstDerivativePoint(jsCurve, u, o),
+        ],
+      ]),
+    );
+  }
   contenders.push(
     {
       lib: "js-baseline",
@@ -966,6 +1026,14 @@ function referenceArcLength(cp, accuracy = REF_ACCURACY) {
             check: relErr,
             note: "absolute accuracy; polygons here are ~1–3 long",
           },
+          {
+            lib: "splinelab",
+            method: "arcLengths(points, 2, 3, 1e-3)",
+            n: C,
+            run: () => sl.arcLengths(cps, 2, 3, 1e-3),
+            check: relErr,
+            note: "issue 15: the accuracy argument picks cheaper rules",
+          },
         ]
       : []),
     {
@@ -1210,7 +1278,7 @@ const best = (id, lib) =>
 const fastestPeer = (id) =>
   results
     .find((w) => w.id === id)
-    ?.rows.filter((r) => !r.error && !["splinelab", "js-baseline"].includes(r.lib))
+    ?.rows.filter((r) => !r.error && !["splinelab", "js-baseline", JS_PER_CALL].includes(r.lib))
     .sort((a, b) => b.throughput - a.throughput)[0];
 const ratio = (a, b) => (a && b ? a.throughput / b.throughput : NaN);
 const targets = [];
@@ -1269,6 +1337,31 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
       `${se?.method} vs ${je?.method}`,
     );
   }
+  // Issue 15: one point per call, the …Into path against the fastest peer's per-point path.
+  for (const [id, prefix] of [
+    ["(a)", "evaluateInto"],
+    ["(b2)", "evaluateInto"],
+    ["(d2)", "derivativeInto"],
+  ]) {
+    const sp = row(id, (x) => x.lib === "splinelab" && x.method.startsWith(prefix));
+    const pp = results
+      .find((w) => w.id === id)
+      ?.rows.filter(
+        (x) =>
+          !x.error &&
+          !["splinelab", "js-baseline", JS_PER_CALL].includes(x.lib) &&
+          x.method.includes("per point"),
+      )
+      .sort((a, b) => b.throughput - a.throughput)[0];
+    const rp = ratio(sp, pp);
+    target(
+      `${id} per call vs fastest peer per call`,
+      rp,
+      "≥ 1×",
+      sp ? rp >= 1 : null,
+      sp ? `${sp.method} vs ${pp?.lib} ${pp?.method}` : "no …Into in this build",
+    );
+  }
   // The fastest splinelab row that is accurate enough, against the plain 24-point rule.
   const sf = results
     .find((w) => w.id === "(f)")
@@ -1289,6 +1382,19 @@ const target = (what, value, goal, met, detail) => targets.push({ what, value, g
     "≤ 1e-12",
     sf ? sf.agreement <= 1e-12 : false,
     sf?.method,
+  );
+  // Issue 15: at accuracy 1e-3 (absolute; the polygons are ~1–3 long), at least the plain
+  // 24-point rule's speed, with the error within what was asked.
+  const sf3 = row("(f)", (x) => x.lib === "splinelab" && x.method.endsWith("1e-3)"));
+  const rf3 = ratio(sf3, jf);
+  target(
+    "(f) arcLengths(…, 1e-3) vs JS Gauss–Legendre 24",
+    rf3,
+    "≥ 1×, error ≤ 1e-3",
+    sf3 ? rf3 >= 1 && sf3.agreement <= 1e-3 : null,
+    sf3
+      ? `max relative error ${sf3.agreement.toExponential(1)} (JS rule: ${jf?.agreement.toExponential(1)})`
+      : "no accuracy row",
   );
   // Context, not a target: against the JS rule that is as accurate.
   const jfa = results

@@ -673,6 +673,93 @@ fn arc_length_against_closed_forms() {
 }
 
 #[test]
+fn arc_length_meets_every_requested_accuracy_on_closed_forms() {
+    // (curve, exact length): a line with uneven speed, y = x² as a quadratic and as its degree
+    // elevation (a cubic with a linear hodograph), the cusp (t², t³) on [0, 1], the same
+    // parabola 1000 times larger (the accuracy is absolute), and a rational quarter circle.
+    let parabola = (2.0 * 5f64.sqrt() + 2f64.asinh()) / 4.0;
+    let curves = [
+        (
+            pts2(&[(0.0, 0.0), (3.0, 4.0), (3.0, 4.0), (6.0, 8.0)]),
+            None,
+            10.0,
+        ),
+        (pts2(&[(0.0, 0.0), (0.5, 0.0), (1.0, 1.0)]), None, parabola),
+        (
+            pts2(&[
+                (0.0, 0.0),
+                (1.0 / 3.0, 0.0),
+                (2.0 / 3.0, 1.0 / 3.0),
+                (1.0, 1.0),
+            ]),
+            None,
+            parabola,
+        ),
+        (
+            pts2(&[(0.0, 0.0), (0.0, 0.0), (1.0 / 3.0, 0.0), (1.0, 1.0)]),
+            None,
+            (13f64.powf(1.5) - 8.0) / 27.0,
+        ),
+        (
+            pts2(&[(0.0, 0.0), (500.0, 0.0), (1000.0, 1000.0)]),
+            None,
+            1000.0 * parabola,
+        ),
+        (
+            pts2(&[(1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]),
+            Some(vec![1.0, FRAC_1_SQRT_2, 1.0]),
+            PI / 2.0,
+        ),
+    ];
+    for (points, weights, exact) in curves {
+        let c = BezierCurve::new(points, weights.as_deref()).unwrap();
+        for accuracy in [0.3, 1e-2, 1e-3, 1e-4, 1e-6, 1e-9, 1e-12] {
+            let got = c.arc_length(Some(accuracy)).unwrap();
+            assert!(
+                (got - exact).abs() <= accuracy,
+                "length {got} vs {exact} at accuracy {accuracy} (error {:e})",
+                (got - exact).abs()
+            );
+            let batch = bezier::arc_lengths::<DVec2>(
+                &c.control_points()
+                    .iter()
+                    .flat_map(|p| [p.x, p.y])
+                    .collect::<Vec<_>>(),
+                c.degree(),
+                Some(accuracy),
+            );
+            if weights.is_none() {
+                assert_eq!(
+                    batch.unwrap()[0],
+                    got,
+                    "arcLengths = arcLength at {accuracy}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_loose_arc_length_accuracy_holds_on_random_cubics() {
+    // Random cubics (control points in a square of side 10), against the adaptive
+    // method at 1e-14: the error stays within each requested accuracy.
+    let mut rng = Rng::new(20_260_509);
+    for accuracy in [1e-2, 1e-3, 1e-5, 1e-8] {
+        let mut worst: f64 = 0.0;
+        for _ in 0..2000 {
+            let c = BezierCurve::new(random_curve(&mut rng, 3), None).unwrap();
+            let reference = c.arc_length_adaptive(Some(1e-14)).unwrap();
+            let got = c.arc_length(Some(accuracy)).unwrap();
+            worst = worst.max((got - reference).abs());
+        }
+        assert!(
+            worst <= accuracy,
+            "worst error {worst:e} at accuracy {accuracy:e}"
+        );
+    }
+}
+
+#[test]
 fn curvature_of_known_curves() {
     // y = x² at the apex: κ = 2, turning left.
     let parabola = BezierCurve::new(pts2(&[(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)]), None).unwrap();

@@ -6,7 +6,7 @@ use crate::prelude::*;
 mod adaptive;
 mod planar;
 
-pub use planar::{FAST_PATH_RELATIVE_ERROR, RULE_RHO};
+pub use planar::{FAST_PATH_RELATIVE_ERROR, RULE_RHO, RULE_RHO_BY_ACCURACY};
 
 use super::BezierCurve;
 use crate::error::{check_tolerance, Result};
@@ -38,7 +38,10 @@ impl<C: Cartesian> BezierCurve<C> {
     /// root has `ρ ≥ 3`). A root with `|Im r| ≤ 1e-9` is treated as real: the split is exactly at
     /// `x` and the root is then no singularity of either side, so an exact cusp costs two pieces.
     /// Relative errors of the pieces bound the relative error of their sum (all positive), so
-    /// the result is within 1e-13 relative. Random cubics in a square (the benchmark's) take ~70
+    /// the result is within 1e-13 relative. A looser `accuracy` `a` asks for the relative
+    /// accuracy `τ = a / L` (`L` the polygon's length, ≥ the arc length) and takes the
+    /// thresholds of [`RULE_RHO_BY_ACCURACY`] for the largest tabulated `τ` below it,
+    /// calibrated the same way: fewer and shorter rules, the absolute error still ≤ `a`. Random cubics in a square (the benchmark's) take ~70
     /// speed evaluations in ~6 pieces: their nearest root is typically close to `[0, 1]`;
     /// the work is bounded (at most 200 pieces, a stack of 64), and the adaptive method below
     /// takes over if a limit is reached.
@@ -52,8 +55,8 @@ impl<C: Cartesian> BezierCurve<C> {
         let accuracy = accuracy.map(check_tolerance).transpose()?;
         if let Some((flat, len)) = self.planar_flat() {
             let p = flat.get(..len).unwrap_or(&[]);
-            if accuracy.is_none_or(|a| a >= FAST_PATH_RELATIVE_ERROR * planar_polygon(p)) {
-                if let Some(l) = planar_arc_length(p) {
+            if let Some(tau) = fast_path_tau(accuracy, p) {
+                if let Some(l) = planar_arc_length(p, tau) {
                     return Ok(l);
                 }
             }
@@ -141,13 +144,21 @@ pub fn arc_lengths<C: Cartesian>(
         // The checks of `from_flat` then `arc_length`, in their order.
         check_all_finite(p, "coordinate")?;
         let accuracy = accuracy.map(check_tolerance).transpose()?;
-        let fast = accuracy.is_none_or(|a| a >= FAST_PATH_RELATIVE_ERROR * planar_polygon(p));
-        match if fast { planar_arc_length(p) } else { None } {
+        match fast_path_tau(accuracy, p).and_then(|tau| planar_arc_length(p, tau)) {
             Some(l) => out.push(l),
             None => out.push(BezierCurve::<C>::from_flat(p, None)?.arc_length_adaptive(accuracy)?),
         }
     }
     Ok(out)
+}
+
+/// The relative accuracy the fast path must reach for the absolute `accuracy` on the flat 2D
+/// curve `p`: `accuracy / L` with `L` the control polygon's length (≥ the arc length, so a
+/// relative error ≤ τ is an absolute one ≤ accuracy), the default `FAST_PATH_RELATIVE_ERROR`;
+/// `None` when that is tighter than the fast path's floor (the adaptive method then runs).
+fn fast_path_tau(accuracy: Option<f64>, p: &[f64]) -> Option<f64> {
+    let tau = accuracy.map_or(FAST_PATH_RELATIVE_ERROR, |a| a / planar_polygon(p));
+    (tau >= FAST_PATH_RELATIVE_ERROR).then_some(tau)
 }
 
 #[cfg(test)]
@@ -215,7 +226,7 @@ mod tests {
         let (mut evals, mut fallbacks) = (0, 0);
         for _ in 0..count {
             let p: [f64; 8] = std::array::from_fn(|_| random());
-            if planar_arc_length_counted(&p, &mut evals).is_none() {
+            if planar_arc_length_counted(&p, &mut evals, &super::RULE_RHO).is_none() {
                 fallbacks += 1;
             }
         }

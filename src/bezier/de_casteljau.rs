@@ -1,7 +1,7 @@
 //! de Casteljau's algorithm on any point type (Cartesian or homogeneous), Bernstein
 //! polynomials, subdivision and degree elevation (syllabus §2).
 
-use crate::geom::{binomial, Params, Point};
+use crate::geom::{binomial, Params, Point, STACK_DEGREE};
 use std::ops::Range;
 
 /// The Bernstein polynomial `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`; 0 when `i > n`.
@@ -34,6 +34,49 @@ pub fn de_casteljau_point<P: Point>(points: &[P], s: f64, scratch: &mut Vec<P>) 
     }
     scratch[0]
 }
+
+/// `Σ_{i=0..m} B_i^m(s) c_i` for `m ≤ STACK_DEGREE`, with the coefficients given by `c(i)`,
+/// straight from the Bernstein form: `B_i^m(s) = C(m,i) s^i (1 − s)^{m−i}`, the powers of
+/// `1 − s` in a stack array and those of `s` running. Every basis value is a product of
+/// non-negative numbers (no cancellation), so the sum is as accurate as de Casteljau's (a few
+/// ulps of `Σ |c_i| B_i^m(s)`), and exact where de Casteljau is (small dyadic data: the worked
+/// example's `P(1/4) = (29/16, 23/16)`); `s = 0` and `s = 1` give `c_0` and `c_m` exactly. One
+/// point of a low degree: `m + 1` multiply-adds per coordinate, nothing allocated or copied (`c`
+/// may compute the points, e.g. the differences of a derivative).
+#[inline]
+pub fn bernstein_small<P: Point>(m: usize, s: f64, c: impl Fn(usize) -> P) -> P {
+    let m = m.min(STACK_DEGREE);
+    let r = 1.0 - s;
+    let mut r_pow = [1.0; STACK_DEGREE + 1];
+    for k in 1..=m {
+        r_pow[k] = r_pow[k - 1] * r;
+    }
+    // The binomials from a table: a running C(m, i+1) = C(m, i)(m − i)/(i + 1) would chain
+    // m divisions, most of this function's time.
+    let binom = &PASCAL[m];
+    let (mut sum, mut s_pow) = (P::ZERO, 1.0);
+    for i in 0..=m {
+        sum = sum + c(i) * (binom[i] * s_pow * r_pow[m - i]);
+        s_pow *= s;
+    }
+    sum
+}
+
+/// `PASCAL[m][i] = C(m, i)` for `m ≤ STACK_DEGREE` (Pascal's triangle, exact in f64).
+const PASCAL: [[f64; STACK_DEGREE + 1]; STACK_DEGREE + 1] = {
+    let mut t = [[0.0; STACK_DEGREE + 1]; STACK_DEGREE + 1];
+    let mut m = 0;
+    while m <= STACK_DEGREE {
+        t[m][0] = 1.0;
+        let mut i = 1;
+        while i <= m {
+            t[m][i] = t[m - 1][i - 1] + t[m - 1][i];
+            i += 1;
+        }
+        m += 1;
+    }
+    t
+};
 
 /// All levels of de Casteljau's triangle, concatenated: level 0 (the `n + 1` control points)
 /// first, then level `r` with its `n + 1 − r` points; `(n + 1)(n + 2)/2` points in all, the last

@@ -1,12 +1,13 @@
 //! Derivatives of Bézier curves: the hodograph, derivatives of any order (rational ones by the
 //! quotient rule on homogeneous derivatives) and curvature (syllabus §2, §4).
 
+use super::de_casteljau::bernstein_small;
 use super::{de_casteljau_point, differences, BezierCurve};
 use crate::error::{Error, Result};
-use crate::geom::{Cartesian, Point};
+use crate::geom::{binomial, Cartesian, Point};
 use crate::prelude::*;
 
-use crate::geom::MAX_DERIVATIVE_ORDER;
+use crate::geom::{MAX_DERIVATIVE_ORDER, STACK_DEGREE};
 
 /// The control points of the `k`-th derivative in local parameter `s`: `n!/(n−k)! Δ^k P_i`.
 fn derivative_points<P: Point>(points: &[P], k: usize) -> Vec<P> {
@@ -35,6 +36,9 @@ impl<C: Cartesian> BezierCurve<C> {
         let s = self.local_parameter(t)?;
         let n = self.degree();
         let scale = (self.b - self.a).powi(-(order.min(n + MAX_DERIVATIVE_ORDER) as i32));
+        if n <= STACK_DEGREE && order <= STACK_DEGREE && (self.rational || order <= n) {
+            return Ok(self.derivative_on_stack(s, order) * scale);
+        }
         let mut scratch = Vec::new();
         if !self.rational {
             if order > n {
@@ -67,6 +71,47 @@ impl<C: Cartesian> BezierCurve<C> {
             homogeneous_derivs.push(de_casteljau_point(&pts, s, &mut scratch));
         }
         Ok(crate::geom::rational_derivative::<C>(&homogeneous_derivs) * scale)
+    }
+
+    /// The derivative of order `order` in the local parameter `s`, for `n, order ≤
+    /// STACK_DEGREE` (and `order ≤ n` when polynomial), allocation-free: the homogeneous
+    /// derivative of order `j` is `n!/(n−j)! Σ_i B_i^{n−j}(s) Δ^j P_i` with
+    /// `Δ^j P_i = Σ_l (−1)^{j−l} C(j,l) P_{i+l}`, each by [`bernstein_small`]; a rational
+    /// curve then takes the quotient rule over the orders `0..=order`.
+    fn derivative_on_stack(&self, s: f64, order: usize) -> C {
+        let n = self.degree();
+        let h = &self.homogeneous;
+        let level = |j: usize| -> C::Homogeneous {
+            let falling = (n + 1 - j..=n).fold(1.0, |f, m| f * m as f64);
+            let delta = |i: usize| match j {
+                0 => h[i],
+                1 => h[i + 1] - h[i],
+                _ => (0..=j).fold(C::Homogeneous::ZERO, |acc, l| {
+                    let sign = if (j - l).is_multiple_of(2) { 1.0 } else { -1.0 };
+                    acc + h[i + l] * (sign * binomial(j, l))
+                }),
+            };
+            bernstein_small(n - j, s, delta) * falling
+        };
+        if !self.rational {
+            return C::numerator(level(order));
+        }
+        if order <= 1 {
+            let a = [
+                level(0),
+                if order == 1 {
+                    level(1)
+                } else {
+                    C::Homogeneous::ZERO
+                },
+            ];
+            return crate::geom::rational_derivative::<C>(&a[..=order]);
+        }
+        let mut a = [C::Homogeneous::ZERO; STACK_DEGREE + 1];
+        for (j, aj) in a.iter_mut().enumerate().take(order.min(n) + 1) {
+            *aj = level(j);
+        }
+        crate::geom::rational_derivative::<C>(&a[..=order])
     }
 
     /// The hodograph: the polynomial curve `P'(t)` of degree `n − 1` with control points

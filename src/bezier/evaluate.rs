@@ -1,12 +1,13 @@
 //! Points by de Casteljau (one at a time, or dense by Horner on the power form), the
 //! construction triangle, subdivision and degree elevation.
 
+use super::de_casteljau::bernstein_small;
 use super::{
     de_casteljau_point, de_casteljau_triangle, elevate_points, horner_run, split_points,
     to_power_form, BezierCurve, PowerForm, HORNER_MAX_DEGREE, MAX_DEGREE,
 };
 use crate::error::{check_finite, Error, Result};
-use crate::geom::{check_out_len, Cartesian, Params};
+use crate::geom::{check_out_len, Cartesian, Params, STACK_DEGREE};
 use crate::prelude::*;
 
 impl<C: Cartesian> BezierCurve<C> {
@@ -16,6 +17,12 @@ impl<C: Cartesian> BezierCurve<C> {
     /// [`Error::NotFinite`] or [`Error::ParameterOutOfRange`] for a bad `t`.
     pub fn evaluate(&self, t: f64) -> Result<C> {
         let s = self.local_parameter(t)?;
+        let n = self.degree();
+        if n <= STACK_DEGREE {
+            // One point allocates nothing: the Bernstein form on the stack.
+            let h = &self.homogeneous;
+            return Ok(self.project(bernstein_small(n, s, |i| h[i])));
+        }
         let mut scratch = Vec::new();
         Ok(self.evaluate_local(s, &mut scratch))
     }

@@ -27,7 +27,7 @@ mod evaluate;
 mod flatten;
 mod intersect;
 
-pub use arc_length::{arc_lengths, FAST_PATH_RELATIVE_ERROR, RULE_RHO};
+pub use arc_length::{arc_lengths, FAST_PATH_RELATIVE_ERROR, RULE_RHO, RULE_RHO_BY_ACCURACY};
 pub use bernstein::{bernstein_basis, try_bernstein};
 pub use composite::{
     check_continuity, from_polynomial, join, CompositeCurve, Continuity, JoinRule,

@@ -33,10 +33,34 @@ pub fn basis_functions(
     p: usize,
     out: &mut [f64],
     scratch: &mut BasisScratch,
-    mut levels: Option<&mut Vec<Vec<f64>>>,
+    levels: Option<&mut Vec<Vec<f64>>>,
 ) {
     scratch.prepare(p);
-    let (left, right) = (&mut scratch.left, &mut scratch.right);
+    basis_functions_with(
+        knots,
+        k,
+        u,
+        p,
+        out,
+        &mut scratch.left,
+        &mut scratch.right,
+        levels,
+    );
+}
+
+/// [`basis_functions`] with the caller's `left` and `right` buffers (`p + 1` values each), so a
+/// single point can keep them on the stack.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn basis_functions_with(
+    knots: &[f64],
+    k: usize,
+    u: f64,
+    p: usize,
+    out: &mut [f64],
+    left: &mut [f64],
+    right: &mut [f64],
+    mut levels: Option<&mut Vec<Vec<f64>>>,
+) {
     out[0] = 1.0;
     if let Some(l) = levels.as_deref_mut() {
         l.clear();

@@ -1,11 +1,13 @@
 //! Points, derivatives, curvature and the de Boor triangle at one parameter.
 
+use super::basis::basis_functions_with;
+use super::de_boor::de_boor_alpha;
 use super::{
     basis_derivatives, basis_functions, de_boor_alphas, de_boor_triangle, BSplineCurve,
     BasisScratch, DeBoorAlpha,
 };
 use crate::error::{Error, Result};
-use crate::geom::{rational_derivative, Cartesian, Point, MAX_DERIVATIVE_ORDER};
+use crate::geom::{rational_derivative, Cartesian, Point, MAX_DERIVATIVE_ORDER, STACK_DEGREE};
 use crate::prelude::*;
 
 impl<C: Cartesian> BSplineCurve<C> {
@@ -15,8 +17,23 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// [`Error::NotFinite`] or [`Error::ParameterOutOfRange`] for a bad `u`.
     pub fn evaluate(&self, u: f64) -> Result<C> {
         let u = self.knots.check_parameter(u)?;
-        let mut basis = vec![0.0; self.degree() + 1];
-        let k = self.knots.span(u);
+        let k = self.knots.span_hinted(u);
+        let p = self.degree();
+        if p <= STACK_DEGREE {
+            // de Boor's triangle on a stack copy of the span's p + 1 points: nothing allocated,
+            // and its α are independent divisions (the basis recurrence chains them).
+            let knots = self.knots.as_slice();
+            let h = &self.homogeneous[k - p..=k];
+            let mut d: [C::Homogeneous; STACK_DEGREE + 1] =
+                std::array::from_fn(|j| h.get(j).copied().unwrap_or(C::Homogeneous::ZERO));
+            for r in 1..=p {
+                for j in (r..=p).rev() {
+                    d[j] = d[j - 1].lerp_to(d[j], de_boor_alpha(knots, p, k, r, j, u));
+                }
+            }
+            return Ok(self.project(d[p]));
+        }
+        let mut basis = vec![0.0; p + 1];
         Ok(self.evaluate_in_span(k, u, &mut basis, &mut BasisScratch::default()))
     }
 
@@ -56,7 +73,13 @@ impl<C: Cartesian> BSplineCurve<C> {
                 max: MAX_DERIVATIVE_ORDER,
             });
         }
-        let k = self.knots.span(u);
+        let k = self.knots.span_hinted(u);
+        if p <= STACK_DEGREE && order == 1 {
+            return Ok(self.first_derivative_in_span(k, u));
+        }
+        if p <= STACK_DEGREE && order <= STACK_DEGREE {
+            return Ok(self.derivative_in_span(k, u, order));
+        }
         let ders = basis_derivatives(self.knots.as_slice(), k, u, p, order);
         let homogeneous: Vec<C::Homogeneous> = ders
             .iter()
@@ -72,6 +95,95 @@ impl<C: Cartesian> BSplineCurve<C> {
             Ok(rational_derivative::<C>(&homogeneous))
         } else {
             Ok(C::numerator(homogeneous[order]))
+        }
+    }
+
+    /// `C'(u)` in span `k` (degree `1 ≤ p ≤ STACK_DEGREE`) with no buffer beyond three small
+    /// arrays of numbers: from the degree `p − 1` basis `N_{i,p−1}` (zero outside
+    /// `i = k−p+1 … k`), with `T_i = N_{i,p−1}/(u_{i+p} − u_i)` (never 0/0 in a non-empty span),
+    /// `N_{i,p} = (u − u_i) T_i + (u_{i+p+1} − u) T_{i+1}` and
+    /// `N'_{i,p} = p (T_i − T_{i+1})` (NURBS Book eq. 2.5, 2.7); then `A = Σ N_{i,p} P^w_i`,
+    /// `A' = Σ N'_{i,p} P^w_i` and, for a rational curve, `C' = (A'_num − w' C)/w`.
+    fn first_derivative_in_span(&self, k: usize, u: f64) -> C {
+        let p = self.degree();
+        let knots = self.knots.as_slice();
+        let (mut b, mut left, mut right) = (
+            [0.0; STACK_DEGREE + 1],
+            [0.0; STACK_DEGREE + 1],
+            [0.0; STACK_DEGREE + 1],
+        );
+        // b[t] = N_{k−p+1+t, p−1}(u), t = 0..p−1.
+        basis_functions_with(knots, k, u, p - 1, &mut b, &mut left, &mut right, None);
+        let term = |t: usize| -> f64 {
+            // T_{k−p+t}, t = 0..=p+1 (zero at both ends).
+            if t == 0 || t > p {
+                return 0.0;
+            }
+            let i = k - p + t;
+            b[t - 1] / (knots[i + p] - knots[i])
+        };
+        let (mut a0, mut a1) = (C::Homogeneous::ZERO, C::Homogeneous::ZERO);
+        let mut t_here = term(0);
+        for t in 0..=p {
+            let i = k - p + t;
+            let t_next = term(t + 1);
+            let n0 = (u - knots[i]) * t_here + (knots[i + p + 1] - u) * t_next;
+            let n1 = p as f64 * (t_here - t_next);
+            let h = self.homogeneous[i];
+            a0 = a0 + h * n0;
+            a1 = a1 + h * n1;
+            t_here = t_next;
+        }
+        if self.rational {
+            rational_derivative::<C>(&[a0, a1])
+        } else {
+            C::numerator(a1)
+        }
+    }
+
+    /// The derivative of order `order ≤ STACK_DEGREE` at `u` in span `k` (degree
+    /// `p ≤ STACK_DEGREE`), allocation-free: the span's `p + 1` homogeneous points are
+    /// differenced in place, `Q^{(j)}_i = (p − j + 1)(Q^{(j−1)}_i − Q^{(j−1)}_{i−1}) /
+    /// (u_{i+p−j+1} − u_i)` for `i = k−p+j … k` (never 0/0: `u_{i+p−j+1} − u_i ≥ u_{k+1} − u_k > 0`),
+    /// and `A^{(j)}(u) = Σ_i N_{i,p−j}(u) Q^{(j)}_i` (NURBS Book eq. 3.8 and 4.8 restricted to the
+    /// span); a rational curve needs every `A^{(j)}`, `j ≤ order`, for the quotient rule.
+    /// O(order·p²), the same numbers as A2.3 up to rounding.
+    fn derivative_in_span(&self, k: usize, u: f64, order: usize) -> C {
+        let p = self.degree();
+        let knots = self.knots.as_slice();
+        let mut q = [C::Homogeneous::ZERO; STACK_DEGREE + 1];
+        for (t, qt) in q.iter_mut().enumerate().take(p + 1) {
+            *qt = self.homogeneous[k - p + t];
+        }
+        let mut a = [C::Homogeneous::ZERO; STACK_DEGREE + 1];
+        let (mut b, mut left, mut right) = (
+            [0.0; STACK_DEGREE + 1],
+            [0.0; STACK_DEGREE + 1],
+            [0.0; STACK_DEGREE + 1],
+        );
+        let top = order.min(p);
+        for j in 0..=top {
+            if j > 0 {
+                let m = (p - j + 1) as f64;
+                for t in (j..=p).rev() {
+                    let i = k - p + t;
+                    q[t] = (q[t] - q[t - 1]) * (m / (knots[i + p - j + 1] - knots[i]));
+                }
+            }
+            if self.rational || j == order {
+                let d = p - j;
+                basis_functions_with(knots, k, u, d, &mut b, &mut left, &mut right, None);
+                let mut h = C::Homogeneous::ZERO;
+                for (t, &bt) in b[..=d].iter().enumerate() {
+                    h = h + q[j + t] * bt;
+                }
+                a[j] = h;
+            }
+        }
+        if self.rational {
+            rational_derivative::<C>(&a[..=order])
+        } else {
+            C::numerator(a[order])
         }
     }
 

@@ -9,6 +9,20 @@ use crate::error::{check_finite, check_in_range, Error, Result};
 pub struct KnotVector {
     knots: Vec<f64>,
     degree: usize,
+    /// The span [`KnotVector::span_hinted`] found last (not part of the value).
+    hint: SpanHint,
+}
+
+/// The span of the last one-point query, so that the next one, usually at a nearby parameter,
+/// starts there: O(1) instead of a binary search when a caller walks along the curve point by
+/// point. A cache only: equal for every two knot vectors, reset by a clone's first miss.
+#[derive(Debug, Clone, Default)]
+struct SpanHint(std::cell::Cell<usize>);
+
+impl PartialEq for SpanHint {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl KnotVector {
@@ -65,7 +79,11 @@ impl KnotVector {
             }
             i = j + 1;
         }
-        Ok(KnotVector { knots, degree })
+        Ok(KnotVector {
+            knots,
+            degree,
+            hint: SpanHint::default(),
+        })
     }
 
     /// The knot values.
@@ -127,6 +145,15 @@ impl KnotVector {
             return k + 1;
         }
         self.span(u)
+    }
+
+    /// As [`KnotVector::span`], starting from the span the previous call found (see
+    /// [`SpanHint`]): the per-point `evaluate`/`derivative` path. The same span as `span(u)`.
+    #[inline]
+    pub fn span_hinted(&self, u: f64) -> usize {
+        let k = self.span_from(u, self.hint.0.get());
+        self.hint.0.set(k);
+        k
     }
 
     /// The last span with `u_k < u_{k+1}` (`k <= n`): the one that owns the domain's end.

@@ -9,5 +9,10 @@ pub const MAX_DEGREE: usize = 64;
 /// polynomial curves accept any order (zero above the degree).
 pub const MAX_DERIVATIVE_ORDER: usize = 32;
 
+/// Degrees (and derivative orders) up to this evaluate one point in stack arrays of
+/// `STACK_DEGREE + 1` entries: `evaluate(t)` and `derivative(t, order)` allocate nothing, which
+/// is most of their cost per call. Above it the same formulas run on heap buffers.
+pub const STACK_DEGREE: usize = 7;
+
 /// Largest number of samples one dense call may produce.
 pub const MAX_SAMPLES: usize = 1 << 24;

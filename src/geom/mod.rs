@@ -15,7 +15,7 @@ pub use check::{
     check_all_finite, check_dim, check_flat, check_out_len, check_table_count, check_weights,
     points_from_flat,
 };
-pub use limits::{MAX_DEGREE, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
+pub use limits::{MAX_DEGREE, MAX_DERIVATIVE_ORDER, MAX_SAMPLES, STACK_DEGREE};
 pub use params::Params;
 pub use point::{curvature, rational_derivative, Cartesian, Point};
 

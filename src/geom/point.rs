@@ -184,6 +184,13 @@ impl_cartesian!(DVec3, DVec4, w, |a, b| a.cross(b).length());
 pub fn rational_derivative<C: Cartesian>(homogeneous_derivs: &[C::Homogeneous]) -> C {
     let order = (homogeneous_derivs.len() - 1).min(MAX_DERIVATIVE_ORDER);
     let w0 = C::weight_of(homogeneous_derivs[0]);
+    if order == 1 {
+        // The common case without the table (whose zeroing costs more than the sum):
+        // C' = (A'_num − w' C)/w with C = A_num/w.
+        let (a0, a1) = (homogeneous_derivs[0], homogeneous_derivs[1]);
+        let c0 = C::numerator(a0) * (1.0 / w0);
+        return (C::numerator(a1) - c0 * C::weight_of(a1)) * (1.0 / w0);
+    }
     // Lower orders on the stack: dense sampling calls this once per point.
     let mut cs = [C::ZERO; MAX_DERIVATIVE_ORDER + 1];
     for k in 0..=order {

@@ -129,6 +129,23 @@ macro_rules! class_curve_methods {
                 Ok(with_curve!(&self.inner, c => $crate::wasm::bezier::flatten_points(&[c.derivative($t, order)?])))
             }
 
+            /// `evaluate` into the per-call buffer (see `wasm::scratch`): its index, 0 on an error.
+            /// Internal: `evaluateInto(t, out)` (added by `scripts/glue.mjs`) calls it.
+            #[wasm_bindgen(js_name = __evaluateScratch, skip_typescript)]
+            pub fn evaluate_scratch(&self, $t: f64) -> u32 {
+                with_curve!(&self.inner, c => $crate::wasm::scratch::put(c.evaluate($t)))
+            }
+
+            /// `derivative` into the per-call buffer: its index, 0 on an error (a bad order too).
+            /// Internal: `derivativeInto(t, order, out)` calls it.
+            #[wasm_bindgen(js_name = __derivativeScratch, skip_typescript)]
+            pub fn derivative_scratch(&self, $t: f64, order: f64) -> u32 {
+                let Ok(order) = $crate::wasm::whole("order", order) else {
+                    return 0;
+                };
+                with_curve!(&self.inner, c => $crate::wasm::scratch::put(c.derivative($t, order)))
+            }
+
             /// Points at every parameter of the array (`ts` or `us`), flat (length·dim numbers), in one
             /// pass (a B-spline walks its spans once for sorted input).
             pub fn sample(

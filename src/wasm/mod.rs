@@ -18,6 +18,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod interp;
 pub mod rational;
+mod scratch;
 pub mod surface;
 mod surface_build;
 mod surface_mesh;

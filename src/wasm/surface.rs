@@ -251,6 +251,22 @@ macro_rules! surface_methods {
                 Ok(self.inner.derivative(u, v, du, dv)?.to_array().to_vec())
             }
 
+            /// `evaluate` into the per-call buffer (see `wasm::scratch`): its index, 0 on an
+            /// error. Internal: `evaluateInto(u, v, out)` (added by `scripts/glue.mjs`) calls it.
+            #[wasm_bindgen(js_name = __evaluateScratch, skip_typescript)]
+            pub fn evaluate_scratch(&self, u: f64, v: f64) -> u32 {
+                $crate::wasm::scratch::put(self.inner.evaluate(u, v))
+            }
+
+            /// `derivative` into the per-call buffer: its index, 0 on an error.
+            #[wasm_bindgen(js_name = __derivativeScratch, skip_typescript)]
+            pub fn derivative_scratch(&self, u: f64, v: f64, du: f64, dv: f64) -> u32 {
+                let (Ok(du), Ok(dv)) = (whole("du", du), whole("dv", dv)) else {
+                    return 0;
+                };
+                $crate::wasm::scratch::put(self.inner.derivative(u, v, du, dv))
+            }
+
             /// The unit normal `S_u × S_v / |S_u × S_v|` at (u, v): Float64Array(3). At a collapsed
             /// edge or pole, the limit from inside the domain; throws where there is none.
             pub fn normal(&self, u: f64, v: f64) -> Result<Vec<f64>, JsError> {

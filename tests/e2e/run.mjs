@@ -977,6 +977,11 @@ try {
     equal(formatNumber(-0.0001), "0", "no minus zero");
   });
 
+  // What scripts/glue.mjs adds to the glue (…Into methods, freed objects), checked in Node.
+  for (const [what, body] of (await import("./per-call.mjs")).default) {
+    await test(`per-call glue: ${what}`, async () => body());
+  }
+
   await test("the TypeScript declarations type every public parameter and result (no `any`)", async () => {
     // The package's .d.ts as a JS developer's editor reads it; the raw wasm exports after
     // `InitInput` are wasm-bindgen's own.
@@ -986,7 +991,11 @@ try {
     const loose = code.filter((line) => /\bany\b/.test(line));
     assert(
       publicPart.includes("class BSplineSurface") &&
-        publicPart.includes("basisNonZero(u: number): Float64Array"),
+        publicPart.includes("basisNonZero(u: number): Float64Array") &&
+        publicPart.includes(
+          "evaluateInto<T extends Float64Array | number[]>(t: number, out: T): T;",
+        ) &&
+        !publicPart.includes("Scratch"),
       "declarations of this build",
     );
     assert(loose.length === 0, `untyped declarations:\n${loose.join("\n")}`);

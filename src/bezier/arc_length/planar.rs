@@ -61,6 +61,34 @@ pub(super) const GL24: [(f64, f64); 12] = [
 /// those values times 1.1, which divides the error by `1.1^(2n)` (≥ 4.5 for GL8, 98 for GL24).
 pub const RULE_RHO: [f64; 4] = [7.4, 3.8, 2.75, 1.95];
 
+/// [`RULE_RHO`] for looser accuracies: `(τ, thresholds)`, loosest first. The same script and
+/// the same worst cases (`python3 tests/fixtures/arc_length_thresholds.py --loose`: ρ scanned
+/// from 1.01, the reference on 128 pieces) give the smallest ρ from which each rule's worst relative error is ≤ τ per
+/// piece; these are those values times the same safety factor 1.1. A caller asking for an
+/// absolute accuracy `a` on a curve whose control polygon has length `L` (≥ the arc length)
+/// gets the row of the largest `τ ≤ a/L`: per-piece relative errors ≤ τ bound the relative
+/// error of the sum of positive pieces, so the absolute error is ≤ τ·length ≤ a. Looser rows
+/// take fewer and shorter rules: on the benchmark's random cubics, accuracy 1e-3 runs ~1.5×
+/// as fast as the default (measured error 4e-5 relative; the thresholds cover the worst
+/// placement of the singularity on each ellipse, which these curves rarely have).
+pub const RULE_RHO_BY_ACCURACY: [(f64, [f64; 4]); 7] = [
+    (1e-3, [1.448, 1.302, 1.235, 1.141]),
+    (1e-4, [1.697, 1.448, 1.338, 1.202]),
+    (1e-5, [1.937, 1.568, 1.410, 1.268]),
+    (1e-6, [2.211, 1.742, 1.527, 1.338]),
+    (1e-8, [2.958, 2.097, 1.742, 1.486]),
+    (1e-10, [3.958, 2.523, 2.043, 1.609]),
+    (1e-12, [5.295, 3.037, 2.331, 1.789]),
+];
+
+/// The thresholds for a relative accuracy `tau` (≥ [`FAST_PATH_RELATIVE_ERROR`]).
+pub(super) fn rule_rho(tau: f64) -> &'static [f64; 4] {
+    RULE_RHO_BY_ACCURACY
+        .iter()
+        .find(|(t, _)| *t <= tau)
+        .map_or(&RULE_RHO, |(_, rho)| rho)
+}
+
 /// A root with `|Im r| ≤ NEAR_REAL` (in units of the curve's local parameter on `[0, 1]`) is
 /// treated as real: `|t − r| = √((t − x)² + y²)` is replaced by `|t − x|`, which is linear on
 /// either side of `x`. The pieces are split exactly at `x`, so the root sits at a piece's end
@@ -219,7 +247,7 @@ impl PlanarSpeed {
     /// adaptive method). See [`BezierCurve::arc_length`] for the method. `evals` counts the
     /// speed evaluations (for the tests; optimised away otherwise).
     #[inline(always)]
-    pub(super) fn arc_length(&self, evals: &mut usize) -> Option<f64> {
+    pub(super) fn arc_length(&self, evals: &mut usize, rule_rho: &[f64; 4]) -> Option<f64> {
         let (roots, count) = self.roots();
         let roots = roots.get(..count).unwrap_or(&[]);
         let mut stack = [(0.0, 0.0); MAX_STACK];
@@ -248,16 +276,16 @@ impl PlanarSpeed {
             }
             let foci_sum = nearest.map_or(f64::INFINITY, |(s, _)| s);
             let meets = |rho: f64| foci_sum >= 0.5 * (rho + 1.0 / rho) * h;
-            if meets(RULE_RHO[0]) {
+            if meets(rule_rho[0]) {
                 total += self.gauss(lo, hi, &GL8);
                 *evals += 8;
-            } else if meets(RULE_RHO[1]) {
+            } else if meets(rule_rho[1]) {
                 total += self.gauss(lo, hi, &GL12);
                 *evals += 12;
-            } else if meets(RULE_RHO[2]) {
+            } else if meets(rule_rho[2]) {
                 total += self.gauss(lo, hi, &GL16);
                 *evals += 16;
-            } else if meets(RULE_RHO[3]) {
+            } else if meets(rule_rho[3]) {
                 total += self.gauss(lo, hi, &GL24);
                 *evals += 24;
             } else {
@@ -280,18 +308,23 @@ impl PlanarSpeed {
 }
 
 /// Arc length of the 2D polynomial Bézier curve with flat finite control points `p` (degree
-/// 1–3): `Some(0)` for a zero hodograph, `None` when the fast path gives up.
-pub(super) fn planar_arc_length(p: &[f64]) -> Option<f64> {
-    planar_arc_length_counted(p, &mut 0)
+/// 1–3) to the relative accuracy `tau` (≥ [`FAST_PATH_RELATIVE_ERROR`]; see
+/// [`RULE_RHO_BY_ACCURACY`]): `Some(0)` for a zero hodograph, `None` when the fast path gives up.
+pub(super) fn planar_arc_length(p: &[f64], tau: f64) -> Option<f64> {
+    planar_arc_length_counted(p, &mut 0, rule_rho(tau))
 }
 
 #[inline(always)]
-pub(super) fn planar_arc_length_counted(p: &[f64], evals: &mut usize) -> Option<f64> {
+pub(super) fn planar_arc_length_counted(
+    p: &[f64],
+    evals: &mut usize,
+    rule_rho: &[f64; 4],
+) -> Option<f64> {
     match PlanarSpeed::from_flat(p) {
         Planar::Zero => Some(0.0),
         Planar::Overflow => None,
         Planar::Speed(s) if p.len() == 4 => Some(s.c0.length() * s.scale),
-        Planar::Speed(s) => s.arc_length(evals),
+        Planar::Speed(s) => s.arc_length(evals, rule_rho),
     }
 }
 

@@ -5,7 +5,7 @@ use crate::bezier::{self, CompositeCurve, Continuity, JoinRule, DEFAULT_CONTINUI
 use crate::error::Error;
 use crate::geom::check_dim;
 use crate::prelude::*;
-use crate::wasm::{numbers, optional_numbers, string_arg, whole};
+use crate::wasm::{numbers, optional_numbers, scratch, string_arg, whole};
 use glam::{DVec2, DVec3};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -195,6 +195,22 @@ impl JsCompositeBezier {
     pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
         let order = whole("order", order)?;
         Ok(with_composite!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
+    }
+
+    /// `evaluate` into the per-call buffer (see `wasm::scratch`): its index, 0 on an error.
+    /// Internal: `evaluateInto(t, out)` (added by `scripts/glue.mjs`) calls it.
+    #[wasm_bindgen(js_name = __evaluateScratch, skip_typescript)]
+    pub fn evaluate_scratch(&self, t: f64) -> u32 {
+        with_composite!(&self.inner, c => scratch::put(c.evaluate(t)))
+    }
+
+    /// `derivative` into the per-call buffer: its index, 0 on an error.
+    #[wasm_bindgen(js_name = __derivativeScratch, skip_typescript)]
+    pub fn derivative_scratch(&self, t: f64, order: f64) -> u32 {
+        let Ok(order) = whole("order", order) else {
+            return 0;
+        };
+        with_composite!(&self.inner, c => scratch::put(c.derivative(t, order)))
     }
 
     /// Points at every t of `ts`, flat.

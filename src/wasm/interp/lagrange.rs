@@ -80,6 +80,16 @@ impl JsLagrangeCurve {
         Ok(flat_points(&[self.inner.evaluate(t)?], self.dim))
     }
 
+    /// `evaluate` into the per-call buffer (see `wasm::scratch`): its index, 0 on an error.
+    /// Internal: `evaluateInto(t, out)` (added by `scripts/glue.mjs`) calls it.
+    #[wasm_bindgen(js_name = __evaluateScratch, skip_typescript)]
+    pub fn evaluate_scratch(&self, t: f64) -> u32 {
+        match self.inner.evaluate(t) {
+            Ok(p) => crate::wasm::scratch::put_coords(self.dim, p.to_array()),
+            Err(_) => 0,
+        }
+    }
+
     /// Points at every t of `ts`, flat (ts.length·dim numbers).
     pub fn sample(
         &self,

@@ -172,6 +172,22 @@ impl JsCubicSpline {
         Ok(with_spline!(&self.inner, c => flatten_points(&[c.derivative_at(t, order)?])))
     }
 
+    /// `evaluate` into the per-call buffer (see `wasm::scratch`): its index, 0 on an error.
+    /// Internal: `evaluateInto(t, out)` (added by `scripts/glue.mjs`) calls it.
+    #[wasm_bindgen(js_name = __evaluateScratch, skip_typescript)]
+    pub fn evaluate_scratch(&self, t: f64) -> u32 {
+        with_spline!(&self.inner, c => crate::wasm::scratch::put(c.evaluate(t)))
+    }
+
+    /// `derivative` into the per-call buffer: its index, 0 on an error.
+    #[wasm_bindgen(js_name = __derivativeScratch, skip_typescript)]
+    pub fn derivative_scratch(&self, t: f64, order: f64) -> u32 {
+        let Ok(order) = whole("order", order) else {
+            return 0;
+        };
+        with_spline!(&self.inner, c => crate::wasm::scratch::put(c.derivative_at(t, order)))
+    }
+
     /// Points at every t of `ts`, flat (ts.length·dim), walking the pieces once for sorted ts.
     pub fn sample(
         &self,
