@@ -550,6 +550,60 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("formula panel: a line changed in its digits only is the line KaTeX typesets, patched in place", async () => {
+    // KaTeX's own typesetting of each final line is the reference; the panel rewrites digits in
+    // the tree it showed (same element) when the shape is kept, and typesets whole otherwise.
+    const problems = await page.evaluate(async () => {
+      const { FormulaPanel, loadKatex } = await import("./lib/formula.js");
+      const katex = await loadKatex();
+      const host = document.createElement("div");
+      host.style.width = "600px";
+      document.body.append(host);
+      const panel = new FormulaPanel(host);
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      const options = { displayMode: true, throwOnError: false, output: "htmlAndMathml" };
+      const pairs = [
+        ["P(0.250) = (2.000,\\ 3.125)", "P(0.75) = (12.5,\\ 3.125)", true],
+        [
+          "\\frac{1}{3} + x_{2}^{10} = \\sqrt[3]{27}",
+          "\\frac{7}{9} + x_{5}^{11} = \\sqrt[4]{256}",
+          true,
+        ],
+        [
+          "\\begin{pmatrix} 1 & 2 \\\\ 3 & 4 \\end{pmatrix}",
+          "\\begin{pmatrix} 10 & 0 \\\\ 3 & 44 \\end{pmatrix}",
+          true,
+        ],
+        ["\\text{step 3 of 10}: t = 0.5", "\\text{step 4 of 10}: t = 0.625", true],
+        ["x^23 + 1", "x^45 + 1", false], // a digit after ^ is TeX's syntax: another shape
+        ["|P'|^3 = {1.5}^3", "|P'|^3 = {12.25}^3", true], // … and stays while the number changes
+        ["1.5^3", "1.75^3", false], // ^ raises the last digit alone: it is part of the shape
+        ["\\frac12 + 0.5", "\\frac12 + 0.75", true],
+        ["\\hspace{3pt} 5", "\\hspace{9pt} 5", false], // a dimension: typeset whole
+        ["-1.5", "2.5", false], // another shape
+      ];
+      const found = [];
+      for (const [first, second, kept] of pairs) {
+        panel.set([first, "a = 1"]);
+        const tree = host.querySelector(".sl-formula-line .katex");
+        panel.set([second, "a = 2"]);
+        const reference = document.createElement("div");
+        for (const [i, tex] of [second, "a = 2"].entries()) {
+          katex.render(tex, reference, options);
+          const shown = host.querySelectorAll(".sl-formula-line")[i].innerHTML;
+          if (shown !== reference.innerHTML)
+            found.push(`${tex}: ${shown} is not ${reference.innerHTML}`);
+        }
+        const same = host.querySelector(".sl-formula-line .katex") === tree;
+        if (same !== kept) found.push(`${first} → ${second}: tree ${same ? "kept" : "replaced"}`);
+      }
+      panel.destroy();
+      host.remove();
+      return found;
+    });
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("an embed of one demo requests no other demo module", async () => {
     // A course page with one <spline-lab>, served beside embed.js; every request is watched.
     const pageUrl = `${base}/one-embed-test.html`;

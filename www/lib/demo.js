@@ -55,8 +55,9 @@
  *
  * Changes flow one way: a control, handle or tool calls `ui.set(field, value, final)`; the field
  * is marked changed; before the next frame the runtime rebuilds the model if `derive.from`
- * names the field, recomputes the `compute` cells that depend on it, syncs the controls, and
- * calls `formula`, `label` and `setup`'s `update` once. A final change is committed (undo step,
+ * names the field, recomputes the `compute` cells that depend on it, draws, then syncs the
+ * controls and calls `label`, `setup`'s `update` and `formula` once (after the drawing, so the
+ * document is restyled and laid out once per frame). A final change is committed (undo step,
  * URL). States from outside (undo, reset, link, file) rebuild everything, model first: when the
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
@@ -104,6 +105,8 @@ export function mountDeclared(demo, initialState, ctx) {
   /** Fields changed since the last frame; `null` after an outside state (everything changed). */
   let changed = null;
   let modelStale = false;
+  /** The panels (controls, label, tables, formula) have not shown the last refresh yet. */
+  let panelsStale = false;
   let built = [];
 
   // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`).
@@ -162,6 +165,7 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
+      publish();
       if (final) ctx.commit(work);
     },
     status: ctx.status,
@@ -264,11 +268,22 @@ export function mountDeclared(demo, initialState, ctx) {
       if (touches(deps)) data[name] = run(work, data, ui);
     }
     if (ui.handles && ui.handles.selected >= ui.handles.source.count()) ui.handles.select(-1);
+    changed = new Set();
+    panelsStale = true;
+  }
+
+  /**
+   * Brings the page around the figure up to date: controls, the figure's name, the demo's
+   * tables, then the formula (its fit reads the layout once, after every other write). In a
+   * frame this runs after the figure is drawn; it does nothing when nothing was refreshed.
+   */
+  function publish() {
+    if (!panelsStale) return;
+    panelsStale = false;
     for (const control of built) control.sync?.(work, data);
-    if (demo.formula) formula.set(demo.formula(work, data));
     if (demo.label) view.setLabel(demo.label(work, data));
     extra.update?.(work, data);
-    changed = new Set();
+    if (demo.formula) formula.set(demo.formula(work, data));
   }
 
   // ------------------------------------------------------------ figure parts, handles, panel
@@ -348,7 +363,9 @@ export function mountDeclared(demo, initialState, ctx) {
   const extra = demo.setup?.(ui) ?? {};
   // After the handles' hook, which applies the newest pointer position first.
   view.beforeFrame(() => refresh());
+  view.afterFrame(() => publish());
   refresh();
+  publish();
 
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */
@@ -366,6 +383,7 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
+      publish();
     },
     destroy() {
       extra.destroy?.();
