@@ -552,7 +552,8 @@ try {
 
   await test("formula panel: a line changed in its digits only is the line KaTeX typesets, patched in place", async () => {
     // KaTeX's own typesetting of each final line is the reference; the panel rewrites digits in
-    // the tree it showed (same element) when the shape is kept, and typesets whole otherwise.
+    // the tree it showed (same element) when the shape is kept, and typesets whole otherwise;
+    // the picture follows at once, the MathML once the change is final (settle()).
     const problems = await page.evaluate(async () => {
       const { FormulaPanel, loadKatex } = await import("./lib/formula.js");
       const katex = await loadKatex();
@@ -588,12 +589,18 @@ try {
         const tree = host.querySelector(".sl-formula-line .katex");
         panel.set([second, "a = 2"]);
         const reference = document.createElement("div");
-        for (const [i, tex] of [second, "a = 2"].entries()) {
-          katex.render(tex, reference, options);
-          const shown = host.querySelectorAll(".sl-formula-line")[i].innerHTML;
-          if (shown !== reference.innerHTML)
-            found.push(`${tex}: ${shown} is not ${reference.innerHTML}`);
-        }
+        const compare = (what, part) => {
+          for (const [i, tex] of [second, "a = 2"].entries()) {
+            katex.render(tex, reference, options);
+            const line = host.querySelectorAll(".sl-formula-line")[i];
+            const shown = part ? line.querySelector(part).outerHTML : line.innerHTML;
+            const expected = part ? reference.querySelector(part).outerHTML : reference.innerHTML;
+            if (shown !== expected) found.push(`${what}, ${tex}: ${shown} is not ${expected}`);
+          }
+        };
+        compare("the picture at once", ".katex-html");
+        panel.settle(); // the change is final: the MathML follows
+        compare("the whole line after settle()", null);
         const same = host.querySelector(".sl-formula-line .katex") === tree;
         if (same !== kept) found.push(`${first} → ${second}: tree ${same ? "kept" : "replaced"}`);
       }

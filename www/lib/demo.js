@@ -107,6 +107,14 @@ export function mountDeclared(demo, initialState, ctx) {
   let modelStale = false;
   /** The panels (controls, label, tables, formula) have not shown the last refresh yet. */
   let panelsStale = false;
+  /** The formula panel (made after the controls). */
+  let formula = null;
+
+  /** Records the working state (undo step, URL); the formula's MathML catches up at once. */
+  function commit(merge = null) {
+    ctx.commit(work, merge);
+    formula?.settle();
+  }
   let built = [];
 
   // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`).
@@ -135,7 +143,7 @@ export function mountDeclared(demo, initialState, ctx) {
       work[field] = value;
       markChanged(field);
       adjust(work);
-      if (final) ctx.commit(work, merge);
+      if (final) commit(merge);
     },
     /**
      * Sets `state.weights[i]`: in place through `derive.weighted` when the demo has it (no
@@ -150,12 +158,12 @@ export function mountDeclared(demo, initialState, ctx) {
       } else {
         markChanged("weights");
       }
-      if (final) ctx.commit(work);
+      if (final) commit();
     },
     /** Marks a field changed after mutating it in place (a dragged point). */
     touch: markChanged,
     /** Records the working state as it is now. */
-    commit: (merge = null) => ctx.commit(work, merge),
+    commit: (merge = null) => commit(merge),
     /** Replaces the whole working state (after an add/remove): the model is rebuilt first. */
     replace(next, final = true) {
       demo.adjust?.(next);
@@ -166,7 +174,7 @@ export function mountDeclared(demo, initialState, ctx) {
       view.requestDraw();
       refresh();
       publish();
-      if (final) ctx.commit(work);
+      if (final) commit();
     },
     status: ctx.status,
     /** Fits the figure to its content and writes the window into the state (the Fit button). */
@@ -308,7 +316,7 @@ export function mountDeclared(demo, initialState, ctx) {
         moved,
         placed: markChanged,
       }),
-      commit: (kind, i, merge) => ctx.commit(work, merge),
+      commit: (kind, i, merge) => commit(merge),
     });
     data.handles = ui.handles;
   } else if (handleSpec) {
@@ -351,7 +359,7 @@ export function mountDeclared(demo, initialState, ctx) {
       polygon: handleSpec.polygon,
       constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
       select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
-      commit: (kind, i, merge) => ctx.commit(work, merge),
+      commit: (kind, i, merge) => commit(merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => i < listed() && ui.pointList?.remove(i),
     });
@@ -359,7 +367,7 @@ export function mountDeclared(demo, initialState, ctx) {
   }
   built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
   ctx.slots.controls.append(...built.map((control) => control.element).filter(Boolean));
-  const formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
+  formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
   const extra = demo.setup?.(ui) ?? {};
   // After the handles' hook, which applies the newest pointer position first.
   view.beforeFrame(() => refresh());

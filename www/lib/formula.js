@@ -45,6 +45,8 @@ export function ensureKatexStyles(root) {
  * this scale is about the normal size); a line still too wide scrolls sideways.
  */
 export const MIN_FIT_SCALE = 0.6;
+/** The MathML of a line follows its picture once the digits rest this long (ms); see `settle`. */
+const SPOKEN_DELAY_MS = 250;
 /** A shrunk line that fits grows again only by more than this (no flicker between frames). */
 const REFIT_SLACK = 0.02;
 
@@ -82,8 +84,9 @@ export const texShape = (tex) => tex.replace(DIGITS, "0");
 
 /**
  * Typesets the shape of `tex` with probes in place of its digit runs, and finds where each run
- * lands: `{ tree, slots }`, `slots` a list of `[text node index, parts]` in document order, parts
- * alternating literal text and run indices. `null` when the runs do not come through as text
+ * lands: `{ tree, slots }`, `slots` a list of `[text node index, parts, spoken]` in document
+ * order, parts alternating literal text and run indices, `spoken` for a node outside the picture
+ * (the MathML and its TeX annotation, which screen readers read). `null` when the runs do not come through as text
  * one for one, in the picture and in the MathML (a digit read as a dimension or an argument, a
  * TeX error): such lines are typeset whole every time.
  */
@@ -131,7 +134,7 @@ export function typesetTemplate(katex, tex) {
     }
     if (parts.length) {
       parts.push(text.slice(last));
-      slots.push([index, parts]);
+      slots.push([index, parts, seen !== inHtml]);
     }
   }
   // Every run must come through whole, in the picture and (when there is one) in the MathML.
@@ -165,8 +168,13 @@ export class FormulaPanel {
   constructor(element) {
     this.element = element;
     this.element.classList.add("sl-formula");
-    /** Per line: `{ div, tex, shape, nodes, slots, scale }` (shape null: typeset whole). */
+    /**
+     * Per line: `{ div, tex, shape, nodes, slots, runs, spokenStale, scale }` (shape null:
+     * typeset whole; `spokenStale`: its MathML still shows earlier digits).
+     */
     this._lines = [];
+    this._spokenTimer = 0;
+    this._settleNext = false;
     this._next = [];
     this._katex = null;
     this._destroyed = false;
@@ -198,13 +206,53 @@ export class FormulaPanel {
     this._render(false);
   }
 
+  /**
+   * The change is final (a drag ended, a key was pressed: the demo committed it): the MathML is
+   * brought up to date now and by the next `set`, not after the pause. While a point moves, only
+   * the picture follows every frame; the MathML (half of the layout work) follows once the
+   * numbers rest for SPOKEN_DELAY_MS, or here.
+   */
+  settle() {
+    this._settleNext = true;
+    this._syncSpoken();
+  }
+
+  _syncSpoken() {
+    clearTimeout(this._spokenTimer);
+    this._spokenTimer = 0;
+    for (const line of this._lines) {
+      if (!line.spokenStale) continue;
+      line.spokenStale = false;
+      if (line.shape !== null) this._write(line, true);
+    }
+  }
+
+  /** Writes the line's digit runs into its picture's text nodes, or into its spoken ones. */
+  _write(line, spoken) {
+    for (let k = 0; k < line.nodes.length; k++) {
+      const [, parts, isSpoken] = line.slots[k];
+      if (isSpoken !== spoken) continue;
+      const text = slotText(parts, line.runs);
+      if (line.nodes[k].nodeValue !== text) line.nodes[k].nodeValue = text;
+    }
+  }
+
   _render(all) {
     const lines = this._next;
     while (this._lines.length < lines.length) {
       const div = document.createElement("div");
       div.className = "sl-formula-line";
       this.element.append(div);
-      this._lines.push({ div, tex: null, shape: null, nodes: null, slots: null, scale: 1 });
+      this._lines.push({
+        div,
+        tex: null,
+        shape: null,
+        nodes: null,
+        slots: null,
+        runs: null,
+        spokenStale: false,
+        scale: 1,
+      });
     }
     while (this._lines.length > lines.length) this._lines.pop().div.remove();
     const changed = [];
@@ -217,6 +265,7 @@ export class FormulaPanel {
       if (this._katex) this._typeset(line, tex);
       else line.div.textContent = tex;
     });
+    this._settleNext = false;
     this._fit(changed);
   }
 
@@ -224,6 +273,8 @@ export class FormulaPanel {
   _typeset(line, tex) {
     const shape = texShape(tex);
     const runs = tex.match(DIGITS) ?? [];
+    line.runs = runs;
+    line.spokenStale = false;
     if (line.shape !== shape) {
       let template = null;
       try {
@@ -257,9 +308,13 @@ export class FormulaPanel {
       line.div.replaceChildren(...tree.childNodes);
       return;
     }
-    for (let k = 0; k < line.nodes.length; k++) {
-      const text = slotText(line.slots[k][1], runs);
-      if (line.nodes[k].nodeValue !== text) line.nodes[k].nodeValue = text;
+    this._write(line, false);
+    if (this._settleNext) {
+      this._write(line, true);
+    } else {
+      line.spokenStale = true;
+      clearTimeout(this._spokenTimer);
+      this._spokenTimer = setTimeout(() => this._syncSpoken(), SPOKEN_DELAY_MS);
     }
   }
 
@@ -296,6 +351,7 @@ export class FormulaPanel {
   }
 
   destroy() {
+    clearTimeout(this._spokenTimer);
     this._destroyed = true;
     this._observer.disconnect();
     this.element.textContent = "";

@@ -27,6 +27,7 @@ export function segmentBlocked(mesh, ex, ey, ez, px, py, pz, margin) {
   const length = Math.hypot(dx, dy, dz);
   if (length <= margin) return false;
   const sMax = 1 - margin / length;
+  const parallel2 = PARALLEL * PARALLEL * length * length;
   for (let t = 0; t + 2 < idx.length; t += 3) {
     const a = 3 * idx[t];
     const b = 3 * idx[t + 1];
@@ -44,8 +45,11 @@ export function segmentBlocked(mesh, ex, ey, ez, px, py, pz, margin) {
     const qy = dz * e2x - dx * e2z;
     const qz = dx * e2y - dy * e2x;
     const det = e1x * qx + e1y * qy + e1z * qz;
-    const scale = length * Math.hypot(e1x, e1y, e1z) * Math.hypot(e2x, e2y, e2z);
-    if (Math.abs(det) <= PARALLEL * scale) continue;
+    // |det| ≤ PARALLEL·|d|·|e1|·|e2|, squared: no square roots in the loop (Math.hypot twice per
+    // triangle was most of a drag frame's time).
+    const e1 = e1x * e1x + e1y * e1y + e1z * e1z;
+    const e2 = e2x * e2x + e2y * e2y + e2z * e2z;
+    if (det * det <= parallel2 * e1 * e2) continue;
     const inv = 1 / det;
     const tx = ex - ax;
     const ty = ey - ay;
