@@ -565,6 +565,8 @@ try {
       const options = { displayMode: true, throwOnError: false, output: "htmlAndMathml" };
       const pairs = [
         ["P(0.250) = (2.000,\\ 3.125)", "P(0.75) = (12.5,\\ 3.125)", true],
+        ["(7,\\ 8) + 0.5\\,(1, 2)", "(6.156,\\ 8.02) + 0.25\\,(1.5, 2)", true], // whole or decimal
+        ["0.5em + 4pt \\hspace{0.5em} 3", "0.5em + 4pt \\hspace{0.5em} 7.25", true], // units stay
         [
           "\\frac{1}{3} + x_{2}^{10} = \\sqrt[3]{27}",
           "\\frac{7}{9} + x_{5}^{11} = \\sqrt[4]{256}",

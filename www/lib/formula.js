@@ -51,14 +51,16 @@ const SPOKEN_DELAY_MS = 250;
 const REFIT_SLACK = 0.02;
 
 /**
- * A run of digits that may change from one frame of a formula to the next. A run that is a
- * token of TeX's syntax rather than a number shown is left in the shape: a one-character
- * argument (`x^2`, `P_1`, `\\frac12`: after `^`, `_` or a letter), a run before `^` or `_`
- * (`1.5^3` raises the 5 alone; write `{1.5}^3`), a colour (`#1f77b4`) and a dimension (`4pt`,
- * `0.5em`).
+ * A number that may change from one frame of a formula to the next: digits with an optional
+ * decimal part ("7" and "6.156" are laid out alike: one run of digits and points, which KaTeX
+ * sets as one box and one <mn>). A run that is a token of TeX's syntax rather than a number
+ * shown is left in the shape: a one-character argument (`x^2`, `P_1`, `\\frac12`: after `^`,
+ * `_` or a letter), a number before `^` or `_` (`1.5^3` raises the 5 alone; write `{1.5}^3`), a
+ * colour (`#1f77b4`) and a dimension (`4pt`, `0.5em`). A sign is part of the shape (a minus is
+ * a box of its own, spaced as a sign or an operation).
  */
 const DIGITS =
-  /(?<![A-Za-z#^_\d])\d+(?!\d|\s*[\^_]|(?:\.\d+)?\s*(?:pt|em|ex|mu|px|cm|mm|in|bp|pc|dd|sp)(?![A-Za-z]))/g;
+  /(?<![A-Za-z#^_\d.])\d+(?:\.\d+)?(?![\d.]|\s*[\^_]|\s*(?:pt|em|ex|mu|px|cm|mm|in|bp|pc|dd|sp)(?![A-Za-z]))/g;
 /** Any digits, in the typeset text. */
 const ANY_DIGITS = /\d+/g;
 /**
