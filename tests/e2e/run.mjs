@@ -613,6 +613,30 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("formula panel: after a drag the panel is the one a link to the same state typesets afresh", async () => {
+    // Every frame of the drag rewrote digits in place; the reload typesets each line whole.
+    for (const id of ["conics", "de-boor", "cardinal", "bezier-patch"]) {
+      const h = await openDemo(page, base, id);
+      const handles = await h.handles();
+      const start = handles[1] ?? handles[0];
+      await page.mouse.move(start.x, start.y);
+      await page.mouse.down();
+      for (let k = 1; k <= 12; k++) {
+        await page.mouse.move(start.x + 3 * k, start.y - 2 * k);
+        await settle(page);
+      }
+      await page.mouse.up();
+      await settle(page);
+      const formula = page.locator(".sl-formula").first();
+      const patched = await formula.evaluate((e) => e.innerHTML);
+      await page.reload();
+      await h.ready();
+      equal(await formula.evaluate((e) => e.innerHTML), patched, `${id}: the formula panel`);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("an embed of one demo requests no other demo module", async () => {
     // A course page with one <spline-lab>, served beside embed.js; every request is watched.
     const pageUrl = `${base}/one-embed-test.html`;
