@@ -637,6 +637,39 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("occlusion: culling by triangle blocks gives the full test's answer on 3000 random segments", async () => {
+    const counts = await page.evaluate(async () => {
+      const { segmentBlocked, triangleBlocks } = await import("./lib/occlusion3d.js");
+      const { loadWasm } = await import("./lib/wasm.js");
+      const sl = await loadWasm();
+      // A wavy bicubic patch (4×4 net, rows along u), tessellated as a 3D figure shows it.
+      const net = [];
+      for (let i = 0; i < 4; i++)
+        for (let j = 0; j < 4; j++) net.push(i, j, ((i * 7 + j * 3) % 5) - 2);
+      const patch = new sl.BezierSurface(net, 4, 4);
+      const mesh = patch.tessellate(40, 40);
+      patch.free();
+      const blocks = triangleBlocks(mesh);
+      let seed = 7;
+      const random = () => {
+        seed = (seed * 16807) % 2147483647;
+        return seed / 2147483647;
+      };
+      const found = { blocked: 0, clear: 0, differ: 0 };
+      for (let k = 0; k < 3000; k++) {
+        const eye = [-4 + 11 * random(), -4 + 11 * random(), -6 + 12 * random()];
+        const point = [3 * random(), 3 * random(), -2 + 4 * random()];
+        const args = [mesh, ...eye, ...point, 1e-3];
+        const full = segmentBlocked(...args);
+        if (segmentBlocked(...args, blocks) !== full) found.differ++;
+        found[full ? "blocked" : "clear"]++;
+      }
+      return found;
+    });
+    equal(counts.differ, 0, "segments where the culled test differs");
+    assert(counts.blocked > 300 && counts.clear > 300, `a mix of cases: ${JSON.stringify(counts)}`);
+  });
+
   await test("an embed of one demo requests no other demo module", async () => {
     // A course page with one <spline-lab>, served beside embed.js; every request is watched.
     const pageUrl = `${base}/one-embed-test.html`;
