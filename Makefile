@@ -91,9 +91,11 @@ format: npm-deps
 screenshots: build chromium
 	node scripts/screenshots.mjs
 
-# Prints the table and writes bench/results/latest.json; see bench/README.md. No timing asserts.
+# Prints the tables and writes bench/results/latest.json and frames.json (row (l), every demo's
+# frame cost in Chromium); see bench/README.md. No timing asserts.
 bench: build chromium
 	node bench/bench.mjs $(BENCH_ARGS)
+	node bench/frames.mjs $(BENCH_ARGS)
 
 clean:
 	cargo clean

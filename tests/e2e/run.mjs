@@ -779,6 +779,124 @@ try {
     } finally {
       await page.unroute(pageUrl);
     }
+  await test("formula panel: a line changed in its digits only is the line KaTeX typesets, patched in place", async () => {
+    // KaTeX's own typesetting of each final line is the reference; the panel rewrites digits in
+    // the tree it showed (same element) when the shape is kept, and typesets whole otherwise;
+    // the picture follows at once, the MathML once the change is final (settle()).
+    const problems = await page.evaluate(async () => {
+      const { FormulaPanel, loadKatex } = await import("./lib/formula.js");
+      const katex = await loadKatex();
+      const host = document.createElement("div");
+      host.style.width = "600px";
+      document.body.append(host);
+      const panel = new FormulaPanel(host);
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      const options = { displayMode: true, throwOnError: false, output: "htmlAndMathml" };
+      const pairs = [
+        ["P(0.250) = (2.000,\\ 3.125)", "P(0.75) = (12.5,\\ 3.125)", true],
+        ["(7,\\ 8) + 0.5\\,(1, 2)", "(6.156,\\ 8.02) + 0.25\\,(1.5, 2)", true], // whole or decimal
+        ["0.5em + 4pt \\hspace{0.5em} 3", "0.5em + 4pt \\hspace{0.5em} 7.25", true], // units stay
+        [
+          "\\frac{1}{3} + x_{2}^{10} = \\sqrt[3]{27}",
+          "\\frac{7}{9} + x_{5}^{11} = \\sqrt[4]{256}",
+          true,
+        ],
+        [
+          "\\begin{pmatrix} 1 & 2 \\\\ 3 & 4 \\end{pmatrix}",
+          "\\begin{pmatrix} 10 & 0 \\\\ 3 & 44 \\end{pmatrix}",
+          true,
+        ],
+        ["\\text{step 3 of 10}: t = 0.5", "\\text{step 4 of 10}: t = 0.625", true],
+        ["x^23 + 1", "x^45 + 1", false], // a digit after ^ is TeX's syntax: another shape
+        ["|P'|^3 = {1.5}^3", "|P'|^3 = {12.25}^3", true], // … and stays while the number changes
+        ["1.5^3", "1.75^3", false], // ^ raises the last digit alone: it is part of the shape
+        ["\\frac12 + 0.5", "\\frac12 + 0.75", true],
+        ["\\hspace{3pt} 5", "\\hspace{9pt} 5", false], // a dimension: typeset whole
+        ["-1.5", "2.5", false], // another shape
+      ];
+      const found = [];
+      for (const [first, second, kept] of pairs) {
+        panel.set([first, "a = 1"]);
+        const tree = host.querySelector(".sl-formula-line .katex");
+        panel.set([second, "a = 2"]);
+        const reference = document.createElement("div");
+        const compare = (what, part) => {
+          for (const [i, tex] of [second, "a = 2"].entries()) {
+            katex.render(tex, reference, options);
+            const line = host.querySelectorAll(".sl-formula-line")[i];
+            const shown = part ? line.querySelector(part).outerHTML : line.innerHTML;
+            const expected = part ? reference.querySelector(part).outerHTML : reference.innerHTML;
+            if (shown !== expected) found.push(`${what}, ${tex}: ${shown} is not ${expected}`);
+          }
+        };
+        compare("the picture at once", ".katex-html");
+        panel.settle(); // the change is final: the MathML follows
+        compare("the whole line after settle()", null);
+        const same = host.querySelector(".sl-formula-line .katex") === tree;
+        if (same !== kept) found.push(`${first} → ${second}: tree ${same ? "kept" : "replaced"}`);
+      }
+      panel.destroy();
+      host.remove();
+      return found;
+    });
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("formula panel: after a drag the panel is the one a link to the same state typesets afresh", async () => {
+    // Every frame of the drag rewrote digits in place; the reload typesets each line whole.
+    for (const id of ["conics", "de-boor", "cardinal", "bezier-patch"]) {
+      const h = await openDemo(page, base, id);
+      const handles = await h.handles();
+      const start = handles[1] ?? handles[0];
+      await page.mouse.move(start.x, start.y);
+      await page.mouse.down();
+      for (let k = 1; k <= 12; k++) {
+        await page.mouse.move(start.x + 3 * k, start.y - 2 * k);
+        await settle(page);
+      }
+      await page.mouse.up();
+      await settle(page);
+      const formula = page.locator(".sl-formula").first();
+      const patched = await formula.evaluate((e) => e.innerHTML);
+      await page.reload();
+      await h.ready();
+      equal(await formula.evaluate((e) => e.innerHTML), patched, `${id}: the formula panel`);
+    }
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("occlusion: culling by triangle blocks gives the full test's answer on 3000 random segments", async () => {
+    const counts = await page.evaluate(async () => {
+      const { segmentBlocked, triangleBlocks } = await import("./lib/occlusion3d.js");
+      const { loadWasm } = await import("./lib/wasm.js");
+      const sl = await loadWasm();
+      // A wavy bicubic patch (4×4 net, rows along u), tessellated as a 3D figure shows it.
+      const net = [];
+      for (let i = 0; i < 4; i++)
+        for (let j = 0; j < 4; j++) net.push(i, j, ((i * 7 + j * 3) % 5) - 2);
+      const patch = new sl.BezierSurface(net, 4, 4);
+      const mesh = patch.tessellate(40, 40);
+      patch.free();
+      const blocks = triangleBlocks(mesh);
+      let seed = 7;
+      const random = () => {
+        seed = (seed * 16807) % 2147483647;
+        return seed / 2147483647;
+      };
+      const found = { blocked: 0, clear: 0, differ: 0 };
+      for (let k = 0; k < 3000; k++) {
+        const eye = [-4 + 11 * random(), -4 + 11 * random(), -6 + 12 * random()];
+        const point = [3 * random(), 3 * random(), -2 + 4 * random()];
+        const args = [mesh, ...eye, ...point, 1e-3];
+        const full = segmentBlocked(...args);
+        if (segmentBlocked(...args, blocks) !== full) found.differ++;
+        found[full ? "blocked" : "clear"]++;
+      }
+      return found;
+    });
+    equal(counts.differ, 0, "segments where the culled test differs");
+    assert(counts.blocked > 300 && counts.clear > 300, `a mix of cases: ${JSON.stringify(counts)}`);
   });
 
   await test("an embed of one demo requests no other demo module", async () => {

@@ -235,7 +235,7 @@ const PROPERTY = {
         distance,
       } = d.affine;
       return [
-        `A = R(${fmt(s.rotation, 0)}^\\circ)\\cdot ${fmt(s.scale, 2)}\\cdot` +
+        `A = R({${fmt(s.rotation, 0)}}^\\circ)\\cdot ${fmt(s.scale, 2)}\\cdot` +
           `\\begin{pmatrix}1 & ${fmt(s.shear, 2)}\\\\ 0 & 1\\end{pmatrix} = ` +
           `\\begin{pmatrix}${fmt(a)} & ${fmt(b)}\\\\ ${fmt(c)} & ${fmt(e)}\\end{pmatrix},\\quad ` +
           `c = (${fmt(centre[0])},\\ ${fmt(centre[1])})`,

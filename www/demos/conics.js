@@ -314,7 +314,7 @@ export function formula(s, d) {
   const text = (key) => `\\text{${t(key)}}`;
   const legs = `|P_0P_1| = ${fmt(tri.a)},\\ |P_1P_2| = ${fmt(tri.b)}`;
   const circleNumbers = Number.isFinite(tri.theta)
-    ? `${legs},\\ \\theta = ${fmt(tri.theta * DEGREES, 2)}^\\circ,\\ \\sin\\theta = ${fmt(tri.sin)}\\quad ` +
+    ? `${legs},\\ \\theta = {${fmt(tri.theta * DEGREES, 2)}}^\\circ,\\ \\sin\\theta = ${fmt(tri.sin)}\\quad ` +
       (circular ? `\\Rightarrow\\ ${text("conics.formula.circle")}` : `(w_1 = ${w1})`)
     : legs;
   return [

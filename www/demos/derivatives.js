@@ -385,7 +385,7 @@ export function formula(s, d) {
   const speed = fmt(Math.hypot(d1[0], d1[1]));
   const kappaLine = Number.isFinite(kappa)
     ? `\\kappa(t) = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{(${short(d1[0])})(${short(d2[1])}) - (${short(d1[1])})` +
-      `(${short(d2[0])})}{${speed}^3} = ${kappaText}${straight ? "" : `,\\quad \\rho = 1/|\\kappa| = ${radiusText}`}`
+      `(${short(d2[0])})}{{${speed}}^3} = ${kappaText}${straight ? "" : `,\\quad \\rho = 1/|\\kappa| = ${radiusText}`}`
     : `P'(t) = 0:\\ \\kappa = \\infty\\ \\text{(${t("derivatives.cuspShort")})}`;
   const lines = [
     `P'(t) = n\\sum_{i=0}^{n-1} B_i^{n-1}(t)\\,(P_{i+1} - P_i) = ${n}\\,\\big[${legs.join(" + ")}\\big] = ` +

@@ -390,7 +390,7 @@ export function formula(s, d) {
     `w_i = 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1,\\qquad ` +
       `U = \\{0,0,0,\\tfrac14,\\tfrac14,\\tfrac12,\\tfrac12,\\tfrac34,\\tfrac34,1,1,1\\}`,
     `\\text{${t("nurbsCircle.formula.here")}: } ${pieces} \\text{ ${tp("nurbsCircle.formula.pieces", pieces)} } ` +
-      `\\Delta = \\tfrac{${fmt(Math.abs(s.sweep), 0)}^\\circ}{${pieces}} = ${fmt(delta, 2)}^\\circ \\le 90^\\circ,\\ ` +
+      `\\Delta = \\tfrac{{${fmt(Math.abs(s.sweep), 0)}}^\\circ}{${pieces}} = {${fmt(delta, 2)}}^\\circ \\le 90^\\circ,\\ ` +
       `\\text{${t("nurbsCircle.formula.middleWeights")} } \\cos\\tfrac{\\Delta}{2} = ${weightText(middle, true)},\\ ` +
       `U = \\{${Array.from(d.knots, (u) => knotText(u, true)).join(", ")}\\}`,
     s.ellipse

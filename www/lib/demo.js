@@ -55,8 +55,9 @@
  *
  * Changes flow one way: a control, handle or tool calls `ui.set(field, value, final)`; the field
  * is marked changed; before the next frame the runtime rebuilds the model if `derive.from`
- * names the field, recomputes the `compute` cells that depend on it, syncs the controls, and
- * calls `formula`, `label` and `setup`'s `update` once. A final change is committed (undo step,
+ * names the field, recomputes the `compute` cells that depend on it, draws, then syncs the
+ * controls and calls `label`, `setup`'s `update` and `formula` once (after the drawing, so the
+ * document is restyled and laid out once per frame). A final change is committed (undo step,
  * URL). States from outside (undo, reset, link, file) rebuild everything, model first: when the
  * core refuses the state, nothing has changed and the shell keeps the last good one.
  */
@@ -104,6 +105,16 @@ export function mountDeclared(demo, initialState, ctx) {
   /** Fields changed since the last frame; `null` after an outside state (everything changed). */
   let changed = null;
   let modelStale = false;
+  /** The panels (controls, label, tables, formula) have not shown the last refresh yet. */
+  let panelsStale = false;
+  /** The formula panel (made after the controls). */
+  let formula = null;
+
+  /** Records the working state (undo step, URL); the formula's MathML catches up at once. */
+  function commit(merge = null) {
+    ctx.commit(work, merge);
+    formula?.settle();
+  }
   let built = [];
 
   // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`).
@@ -132,7 +143,7 @@ export function mountDeclared(demo, initialState, ctx) {
       work[field] = value;
       markChanged(field);
       adjust(work);
-      if (final) ctx.commit(work, merge);
+      if (final) commit(merge);
     },
     /**
      * Sets `state.weights[i]`: in place through `derive.weighted` when the demo has it (no
@@ -147,12 +158,12 @@ export function mountDeclared(demo, initialState, ctx) {
       } else {
         markChanged("weights");
       }
-      if (final) ctx.commit(work);
+      if (final) commit();
     },
     /** Marks a field changed after mutating it in place (a dragged point). */
     touch: markChanged,
     /** Records the working state as it is now. */
-    commit: (merge = null) => ctx.commit(work, merge),
+    commit: (merge = null) => commit(merge),
     /** Replaces the whole working state (after an add/remove): the model is rebuilt first. */
     replace(next, final = true) {
       demo.adjust?.(next);
@@ -162,7 +173,8 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
-      if (final) ctx.commit(work);
+      publish();
+      if (final) commit();
     },
     status: ctx.status,
     /** Fits the figure to its content and writes the window into the state (the Fit button). */
@@ -264,11 +276,22 @@ export function mountDeclared(demo, initialState, ctx) {
       if (touches(deps)) data[name] = run(work, data, ui);
     }
     if (ui.handles && ui.handles.selected >= ui.handles.source.count()) ui.handles.select(-1);
+    changed = new Set();
+    panelsStale = true;
+  }
+
+  /**
+   * Brings the page around the figure up to date: controls, the figure's name, the demo's
+   * tables, then the formula (its fit reads the layout once, after every other write). In a
+   * frame this runs after the figure is drawn; it does nothing when nothing was refreshed.
+   */
+  function publish() {
+    if (!panelsStale) return;
+    panelsStale = false;
     for (const control of built) control.sync?.(work, data);
-    if (demo.formula) formula.set(demo.formula(work, data));
     if (demo.label) view.setLabel(demo.label(work, data));
     extra.update?.(work, data);
-    changed = new Set();
+    if (demo.formula) formula.set(demo.formula(work, data));
   }
 
   // ------------------------------------------------------------ figure parts, handles, panel
@@ -293,7 +316,7 @@ export function mountDeclared(demo, initialState, ctx) {
         moved,
         placed: markChanged,
       }),
-      commit: (kind, i, merge) => ctx.commit(work, merge),
+      commit: (kind, i, merge) => commit(merge),
     });
     data.handles = ui.handles;
   } else if (handleSpec) {
@@ -336,7 +359,7 @@ export function mountDeclared(demo, initialState, ctx) {
       polygon: handleSpec.polygon,
       constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
       select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
-      commit: (kind, i, merge) => ctx.commit(work, merge),
+      commit: (kind, i, merge) => commit(merge),
       add: (i) => ui.pointList?.add(i),
       remove: (i) => i < listed() && ui.pointList?.remove(i),
     });
@@ -344,11 +367,13 @@ export function mountDeclared(demo, initialState, ctx) {
   }
   built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
   ctx.slots.controls.append(...built.map((control) => control.element).filter(Boolean));
-  const formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
+  formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
   const extra = demo.setup?.(ui) ?? {};
   // After the handles' hook, which applies the newest pointer position first.
   view.beforeFrame(() => refresh());
+  view.afterFrame(() => publish());
   refresh();
+  publish();
 
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */
@@ -366,6 +391,7 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
+      publish();
     },
     destroy() {
       extra.destroy?.();

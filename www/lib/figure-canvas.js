@@ -51,6 +51,7 @@ export class FigureCanvas {
     this._interactors = [];
     this._captured = new Map(); // pointerId -> interactor that claimed it
     this._beforeFrame = [];
+    this._afterFrame = [];
     this._frameRequested = false;
     this._frame = () => this._onFrame();
     this._destroyed = false;
@@ -76,6 +77,15 @@ export class FigureCanvas {
     this._beforeFrame.push(hook);
   }
 
+  /**
+   * Registers a hook run at the end of each animation frame, after drawing: the page's own
+   * updates (panels, tables), so the canvas draws against a document whose style is clean
+   * (measuring text would otherwise recompute it) and the DOM is laid out once per frame.
+   */
+  afterFrame(hook) {
+    this._afterFrame.push(hook);
+  }
+
   /** Asks for one redraw at the next animation frame; many requests make one draw. */
   requestDraw() {
     if (this._frameRequested || this._destroyed) return;
@@ -88,6 +98,7 @@ export class FigureCanvas {
     if (this._destroyed) return;
     for (const hook of this._beforeFrame) hook();
     this.drawNow();
+    for (const hook of this._afterFrame) hook();
   }
 
   /**

@@ -57,7 +57,7 @@ export function parametrizationFormula(s, shown, alphaCurve) {
   const note = same >= 0 ? `\\ =\\ ${text(NAMES[same])}` : "";
   lines.push(
     `\\alpha = ${a}:\\ \\ t_{${i + 1}} = t_{${i}} + |p_{${i + 1}} - p_{${i}}|^{${a}} = ` +
-      `${shortNumber(params[i])} + ${shortNumber(legs[i])}^{${a}} = ${shortNumber(params[i + 1])},` +
+      `${shortNumber(params[i])} + {${shortNumber(legs[i])}}^{${a}} = ${shortNumber(params[i + 1])},` +
       `\\quad t = ${listTex(Array.from(params))}${note}`,
   );
   return lines;

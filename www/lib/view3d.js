@@ -27,7 +27,7 @@ import { renderShared } from "./shared-gl.js";
 import { SceneContent } from "./scene3d.js";
 import { drawTriad, drawVectorScene } from "./draw3d.js";
 import { drawLegend, legendNumber } from "./shading3d.js";
-import { segmentBlocked } from "./occlusion3d.js";
+import { segmentBlocked, triangleBlocks } from "./occlusion3d.js";
 import {
   FIELD_OF_VIEW,
   verticalFieldOfView,
@@ -84,6 +84,8 @@ export class View3D extends FigureCanvas {
 
     this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
     this.content = new SceneContent(THREE);
+    /** Culling boxes of the shown meshes for `occluded`, by mesh; emptied by every scene update. */
+    this._occlusionBlocks = new Map();
     this.content.attachLight(this.camera);
     this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
@@ -232,7 +234,13 @@ export class View3D extends FigureCanvas {
     const margin = OCCLUSION_MARGIN_PX * this.worldPerPixel(x, y, z);
     for (const slot of this.content.surfaceSlots) {
       if (!slot.object.visible || !slot.mesh) continue;
-      if (segmentBlocked(slot.mesh, eye.x, eye.y, eye.z, x, y, z, margin)) return true;
+      // The meshes change only in `_paint` (the scene update), which forgets these boxes.
+      let blocks = this._occlusionBlocks.get(slot.mesh);
+      if (!blocks) {
+        blocks = triangleBlocks(slot.mesh);
+        this._occlusionBlocks.set(slot.mesh, blocks);
+      }
+      if (segmentBlocked(slot.mesh, eye.x, eye.y, eye.z, x, y, z, margin, blocks)) return true;
     }
     return false;
   }
@@ -264,6 +272,7 @@ export class View3D extends FigureCanvas {
   _paint(r, w, h, theme) {
     this._layout(w, h);
     this.content.update(this.sceneOf());
+    this._occlusionBlocks.clear();
     // A hook for tests, as `data-handles`: geometries made so far (a drag refills, makes none).
     const made = String(this.content.geometriesMade);
     if (this.host.dataset.geometries !== made) this.host.dataset.geometries = made;
