@@ -779,6 +779,8 @@ try {
     } finally {
       await page.unroute(pageUrl);
     }
+  });
+
   await test("formula panel: a line changed in its digits only is the line KaTeX typesets, patched in place", async () => {
     // KaTeX's own typesetting of each final line is the reference; the panel rewrites digits in
     // the tree it showed (same element) when the shape is kept, and typesets whole otherwise;
