@@ -7,6 +7,7 @@
 #   make format       Biome formats the JS and applies its safe fixes (writes)
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
 #   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
+#   make fuzz         build, then 1 000 000 seeded random calls of the whole JS API in Node (FUZZ_ARGS)
 SHELL := /bin/bash
 PORT ?= 8000
 TOOLS := $(CURDIR)/.tools
@@ -18,9 +19,9 @@ WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
 BIOME := node_modules/.bin/biome
 # The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
-JS_DIRS := www tests/e2e scripts bench
+JS_DIRS := www tests/e2e tests/fuzz scripts bench
 
-.PHONY: all build serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
+.PHONY: all build serve test test-native test-wasm test-e2e lint lint-js format screenshots bench fuzz clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -88,6 +89,11 @@ screenshots: build chromium
 # Prints the table and writes bench/results/latest.json; see bench/README.md. No timing asserts.
 bench: build chromium
 	node bench/bench.mjs $(BENCH_ARGS)
+
+# Every call returns or throws a plain Error; exits 1 with the seed and a reproduction otherwise.
+# See tests/fuzz/run.mjs for the options (--calls, --seed, --slow-ms, --trace-from).
+fuzz: build
+	node tests/fuzz/run.mjs --calls 1000000 $(FUZZ_ARGS)
 
 clean:
 	cargo clean
