@@ -93,7 +93,7 @@ bench: build chromium
 # Every call returns or throws a plain Error; exits 1 with the seed and a reproduction otherwise.
 # See tests/fuzz/run.mjs for the options (--calls, --seed, --slow-ms, --trace-from).
 fuzz: build
-	node tests/fuzz/run.mjs --calls 1000000 $(FUZZ_ARGS)
+	node tests/fuzz/run.mjs --calls 1000000 --freed-soak 100000 $(FUZZ_ARGS)
 
 clean:
 	cargo clean

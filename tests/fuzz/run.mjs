@@ -8,6 +8,11 @@
 //                           [--trace-from K]   (log every call from index K on, before it runs)
 //                           [--budgets warn]   (slow calls are printed but do not fail the run:
 //                                               make test, where timing is not asserted)
+//                           [--no-freed]       (never call or pass a freed object: each such call
+//                                               leaks wasm shadow stack until percall's fix, and
+//                                               ~22 000 of them make the module trap)
+//                           [--freed-soak N]   (end with N calls on a freed curve, then the sanity
+//                                               call: make fuzz uses 100 000)
 import { readFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 import { Worker, isMainThread, parentPort, workerData } from "node:worker_threads";
@@ -32,6 +37,8 @@ function options() {
     hangS: get("hang-s", 60),
     traceFrom: get("trace-from", Infinity),
     budgetsFail: budgets < 0 || args[budgets + 1] !== "warn",
+    useFreed: !args.includes("--no-freed"),
+    freedSoak: get("freed-soak", 0),
   };
 }
 
@@ -118,7 +125,7 @@ async function main() {
   process.exit(failed ? 1 : 0);
 }
 
-async function work({ calls, seed, slowMs, traceFrom, progress }) {
+async function work({ calls, seed, slowMs, traceFrom, progress, useFreed, freedSoak }) {
   const { fuzzApi } = await import("./fuzz.mjs");
   const { default: init, ...mod } = await import(`${PKG}splinelab.js`);
   const exports = await init({ module_or_path: readFileSync(`${PKG}splinelab_bg.wasm`) });
@@ -132,6 +139,8 @@ async function work({ calls, seed, slowMs, traceFrom, progress }) {
     slowMs,
     traceFrom,
     progress,
+    useFreed,
+    freedSoak,
     log: (text) => parentPort.postMessage({ type: "log", text }),
     onBatch: (m) => parentPort.postMessage({ type: "batch", ...m }),
   });
