@@ -265,10 +265,7 @@ export function fuzzApi({
     // Drop trailing arguments now and then (optional ones, or a forgotten one).
     if (args.length && chance(0.05)) args.length = int(0, args.length - 1);
     const text = describeCall(c, target, args);
-    if (index >= traceFrom) {
-      const names = new Map([...entryOf.entries()].map(([obj, e]) => [obj, `o${e.id}`]));
-      log(`#${index} ${text(names)}`);
-    }
+    if (index >= traceFrom) log(`#${index}:\n${reproduction(target, text, args)}`);
     const usesFreed = (target?.freed ?? false) || refsOf(args).some((e) => e.freed);
     const stat = stats.get(c.key);
     stat.called++;

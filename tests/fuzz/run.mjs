@@ -59,7 +59,8 @@ async function main() {
   const result = await new Promise((resolve) => {
     const watchdog = setInterval(() => {
       const now = Atomics.load(progress, 0);
-      if (now !== lastIndex) {
+      // -1 until the first call: loading the module is not a call.
+      if (now !== lastIndex || now < 0) {
         lastIndex = now;
         lastChange = Date.now();
       } else if (Date.now() - lastChange > opts.hangS * 1000) {
