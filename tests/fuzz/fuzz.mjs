@@ -79,6 +79,7 @@ export function fuzzApi({
   freedSoak = 0,
   log = () => {},
   onBatch = () => {},
+  onFinding = () => {},
 }) {
   const r = random(seed);
   const { int, pick, chance } = r;
@@ -170,6 +171,7 @@ export function fuzzApi({
     };
     seen.set(key, finding);
     findings.push(finding);
+    onFinding(finding);
   }
 
   /** Adds an exported-class instance to the pool, probing its dim and domain. */

@@ -53,6 +53,8 @@ async function main() {
     workerData: { ...opts, progress },
     resourceLimits: { maxOldGenerationSizeMb: 2048 },
   });
+  /** Findings as they happen: a hang ends the worker before it can report them. */
+  const early = [];
   let lastIndex = -1;
   let lastChange = Date.now();
   let lastPrint = Date.now();
@@ -74,6 +76,7 @@ async function main() {
         lastPrint = Date.now();
         console.log(`  ${m.calls} calls, ${m.errors} errors, ${(m.ms / 1000).toFixed(1)} s`);
       } else if (m.type === "log") console.log(m.text);
+      else if (m.type === "finding") early.push(m.finding);
       else if (m.type === "done") {
         clearInterval(watchdog);
         resolve(m.result);
@@ -85,11 +88,23 @@ async function main() {
     });
   });
   let failed = false;
+  const printFindings = (findings) => {
+    for (const f of findings) {
+      const counts = f.kind !== "budget" || opts.budgetsFail;
+      failed ||= counts;
+      console.log(
+        `${counts ? "FAIL" : "WARN"} ${f.kind}: ${f.callable} at call #${f.call} (seed ${opts.seed}; ${f.times} such): ${f.detail}`,
+      );
+      if (f.repro) console.log(`  reproduce:\n    ${f.repro.split("\n").join("\n    ")}`);
+    }
+  };
+  if (result.hang !== undefined || result.crash) printFindings(early);
   if (result.hang !== undefined) {
     failed = true;
     console.log(
       `FAIL call #${result.hang} (seed ${opts.seed}) ran over ${opts.hangS} s: see it with\n` +
-        `  node tests/fuzz/run.mjs --seed ${opts.seed} --calls ${result.hang + 1} --trace-from ${result.hang}`,
+        `  node tests/fuzz/run.mjs --seed ${opts.seed} --calls ${result.hang + 1} --trace-from ${result.hang}` +
+        (opts.useFreed ? "" : " --no-freed"),
     );
   } else if (result.crash) {
     failed = true;
@@ -113,14 +128,7 @@ async function main() {
       failed = true;
       console.log(`FAIL not covered (never called): ${coverage.neverCalled.join(" ")}`);
     }
-    for (const f of findings) {
-      const counts = f.kind !== "budget" || opts.budgetsFail;
-      failed ||= counts;
-      console.log(
-        `${counts ? "FAIL" : "WARN"} ${f.kind}: ${f.callable} at call #${f.call} (seed ${opts.seed}; ${f.times} such): ${f.detail}`,
-      );
-      if (f.repro) console.log(`  reproduce:\n    ${f.repro.split("\n").join("\n    ")}`);
-    }
+    printFindings(findings);
   }
   console.log(`fuzz: ${failed ? 0 : 1} passed, ${failed ? 1 : 0} failed`);
   process.exit(failed ? 1 : 0);
@@ -144,6 +152,7 @@ async function work({ calls, seed, slowMs, traceFrom, progress, useFreed, freedS
     freedSoak,
     log: (text) => parentPort.postMessage({ type: "log", text }),
     onBatch: (m) => parentPort.postMessage({ type: "batch", ...m }),
+    onFinding: (finding) => parentPort.postMessage({ type: "finding", finding }),
   });
   parentPort.postMessage({ type: "done", result });
 }
