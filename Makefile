@@ -8,6 +8,7 @@
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
 #   make package      build, then write the npm package dist/splinelab-<version>.tgz (npm pack)
 #   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
+#   make fuzz         build, then 1 000 000 seeded random calls of the whole JS API in Node (FUZZ_ARGS)
 SHELL := /bin/bash
 PORT ?= 8000
 TOOLS := $(CURDIR)/.tools
@@ -19,9 +20,9 @@ WASM_OUT := target/$(WASM_TARGET)/release/splinelab.wasm
 PKG := www/pkg
 BIOME := node_modules/.bin/biome
 # The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
-JS_DIRS := www tests/e2e tests/package tests/i18n scripts bench
+JS_DIRS := www tests/e2e tests/fuzz tests/package tests/i18n scripts bench
 
-.PHONY: all build package serve test test-native test-wasm test-e2e lint lint-js format screenshots bench clean tools rust-target npm-deps chromium
+.PHONY: all build package serve test test-native test-wasm test-e2e lint lint-js format screenshots bench fuzz clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -96,6 +97,11 @@ screenshots: build chromium
 bench: build chromium
 	node bench/bench.mjs $(BENCH_ARGS)
 	node bench/frames.mjs $(BENCH_ARGS)
+
+# Every call returns or throws a plain Error; exits 1 with the seed and a reproduction otherwise.
+# See tests/fuzz/run.mjs for the options (--calls, --seed, --slow-ms, --trace-from).
+fuzz: build
+	node tests/fuzz/run.mjs --calls 1000000 --freed-soak 100000 $(FUZZ_ARGS)
 
 clean:
 	cargo clean

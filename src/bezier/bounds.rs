@@ -26,8 +26,19 @@ impl<C: Cartesian> BezierCurve<C> {
 
     /// `max_t sign·P(t)[axis]` (so `−min` for `sign = −1`), starting from the known lower bound `start` (an end point).
     fn extreme(&self, axis: usize, sign: f64, start: f64) -> f64 {
+        self.extreme_counted(axis, sign, start).0
+    }
+
+    /// [`BezierCurve::extreme`] and the number of pieces it examined.
+    fn extreme_counted(&self, axis: usize, sign: f64, start: f64) -> (f64, usize) {
         /// Subdivision depth after which a piece's hull bound is accepted as is.
         const MAX_DEPTH: u32 = 60;
+        let mut pieces = 0;
+        /// Most pieces examined: past it each remaining piece's hull bound is accepted as is
+        /// (still an upper bound). Curves take ~100; coordinates that overflow (an end point of
+        /// −∞ makes `best + accuracy` NaN, so nothing is ever pruned) would otherwise split to
+        /// the depth cap, 2^60 pieces — the API fuzz found boundingBox() hanging on one.
+        const MAX_PIECES: usize = 1 << 12;
         let scale = self
             .control_points()
             .iter()
@@ -37,6 +48,7 @@ impl<C: Cartesian> BezierCurve<C> {
         let mut best = start;
         let mut stack = vec![(self.homogeneous.clone(), 0u32)];
         while let Some((pts, depth)) = stack.pop() {
+            pieces += 1;
             let coords = pts.iter().map(|&h| sign * self.project(h).coord(axis));
             let upper = coords.fold(f64::NEG_INFINITY, f64::max);
             if upper <= best + accuracy {
@@ -47,7 +59,7 @@ impl<C: Cartesian> BezierCurve<C> {
                     .project(de_casteljau_point(&pts, 0.5, &mut Vec::new()))
                     .coord(axis);
             best = best.max(mid);
-            if depth >= MAX_DEPTH {
+            if depth >= MAX_DEPTH || pieces >= MAX_PIECES {
                 best = best.max(upper);
                 continue;
             }
@@ -55,7 +67,7 @@ impl<C: Cartesian> BezierCurve<C> {
             stack.push((l, depth + 1));
             stack.push((r, depth + 1));
         }
-        best
+        (best, pieces)
     }
 
     /// Number of times the infinite line through `p0` and `p1` crosses the control polygon
@@ -83,5 +95,49 @@ impl<C: Cartesian> BezierCurve<C> {
             }
         }
         count
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::BezierCurve;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+    use glam::DVec2;
+
+    #[test]
+    fn overflowing_homogeneous_points_end_the_search() {
+        // Finite points and weights whose products overflow (x·w = −∞): the API fuzz found
+        // boundingBox() of such a curve (split from a circular arc centred at x = −1e308)
+        // running for minutes.
+        let weights = [
+            2.4636665425729007,
+            1.1952868450047331e308,
+            1.174269291320791e308,
+            1.1538690437544182e308,
+        ];
+        let yw = [
+            -0.94935108668173,
+            -4.4426325190583735e307,
+            -1.3728633629450694e307,
+            9.471882720169021e306,
+        ];
+        let points = (0..4)
+            .map(|i| DVec2::new(-1e308, yw[i] / weights[i]))
+            .collect();
+        let curve = BezierCurve::new(points, Some(&weights)).unwrap();
+        // bounding_box() starts the x search from the end points' x: −∞.
+        let (x, pieces) = curve.extreme_counted(0, 1.0, f64::NEG_INFINITY);
+        // the budget, then the pieces still on the stack (one per level at most)
+        assert!(pieces <= (1 << 12) + 64, "{pieces} pieces");
+        assert!(
+            x.is_nan() || x == f64::INFINITY || x == f64::NEG_INFINITY,
+            "{x}"
+        );
+        let b = curve.bounding_box();
+        assert!(
+            (b.max.y - 0.0821).abs() < 1e-3 && (b.min.y + 0.3853).abs() < 1e-3,
+            "{b:?}"
+        );
     }
 }

@@ -13,7 +13,6 @@ import { join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { createHash } from "node:crypto";
 import { startServer } from "../../scripts/serve.mjs";
-import { fuzzApi } from "./api-fuzz.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
 import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
@@ -1546,22 +1545,6 @@ try {
       for (let demo = queue.shift(); demo; demo = queue.shift()) await demoSuite(worker, demo);
     }),
   );
-
-  await test("the JS API throws an Error on random arguments, never traps (3 seeds × 700 rounds)", async () => {
-    await page.goto("about:blank");
-    await page.goto(`${base}/index.html`);
-    for (const seedValue of [1, 2, 3]) {
-      const result = await page.evaluate(fuzzApi, { seedValue, iterations: 700 });
-      assert(result.bad.length === 0, `seed ${seedValue}:\n${result.bad.join("\n")}`);
-      assert(
-        result.calls > 3000 && result.errors > 1000,
-        `seed ${seedValue}: ${result.calls} calls, ${result.errors} errors`,
-      );
-      equal(result.alive, "0.5,0.5", "the module works afterwards");
-    }
-    const problems = errors.take();
-    assert(problems.length === 0, problems.join("\n"));
-  });
 
   await test("random states from links and files are refused with an Error or mount cleanly (every demo × 60)", async () => {
     await page.goto("about:blank");

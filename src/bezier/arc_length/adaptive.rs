@@ -13,6 +13,25 @@ pub(super) const MAX_QUADRATURE_DEPTH: u32 = 40;
 /// them: a frozen page); past the budget the remaining intervals keep their two-half
 /// estimate.
 pub(super) const MAX_QUADRATURE_INTERVALS: usize = 1 << 14;
+/// Fewest intervals the budget allows, whatever the degree.
+const MIN_QUADRATURE_INTERVALS: usize = 1 << 8;
+/// The work budget behind the interval budget, in units of one control-point operation per
+/// speed evaluation: a speed evaluation costs `n + 1` of them for a polynomial curve (Horner)
+/// and `(n + 1)²` for a rational one (de Casteljau), so a rational cubic keeps all
+/// [`MAX_QUADRATURE_INTERVALS`] and a degree-40 rational curve 256 (the API fuzz found one
+/// spending 12 s on an accuracy below its rounding).
+const QUADRATURE_WORK: usize = MAX_QUADRATURE_INTERVALS * 16;
+
+/// The interval budget of a curve of degree `n`: [`QUADRATURE_WORK`] over the cost of one speed
+/// evaluation, between [`MIN_QUADRATURE_INTERVALS`] and [`MAX_QUADRATURE_INTERVALS`].
+pub(super) fn interval_budget(n: usize, rational: bool) -> usize {
+    let cost = if rational {
+        (n + 1).saturating_mul(n + 1)
+    } else {
+        n + 1
+    };
+    (QUADRATURE_WORK / cost.max(1)).clamp(MIN_QUADRATURE_INTERVALS, MAX_QUADRATURE_INTERVALS)
+}
 
 /// Node `i` (largest first) and its weight of the `n`-point Gauss–Legendre rule on `[-1, 1]`:
 /// Newton's method on the Legendre polynomial `P_n` (three-term recurrence) from the
@@ -77,7 +96,7 @@ impl<'a, C: Cartesian> Speed<'a, C> {
             first,
             velocity,
             scratch: Vec::new(),
-            budget: MAX_QUADRATURE_INTERVALS,
+            budget: interval_budget(curve.degree(), curve.rational),
         }
     }
 
@@ -121,7 +140,10 @@ impl<'a, C: Cartesian> Speed<'a, C> {
         // Halving cannot resolve differences at the rounding level of the interval's own
         // integral; the budget is the last guard.
         let floor = 16.0 * f64::EPSILON * (left + right);
-        if depth >= MAX_QUADRATURE_DEPTH
+        // A NaN or infinite estimate (coordinates near f64::MAX overflow the speed) never
+        // converges: refining it would only spend the whole budget to return the same.
+        if !(left + right).is_finite()
+            || depth >= MAX_QUADRATURE_DEPTH
             || self.budget == 0
             || (left + right - whole).abs() <= accuracy.max(floor)
         {
@@ -130,5 +152,74 @@ impl<'a, C: Cartesian> Speed<'a, C> {
         self.budget -= 1;
         self.adaptive(lo, mid, left, 0.5 * accuracy, depth + 1)
             + self.adaptive(mid, hi, right, 0.5 * accuracy, depth + 1)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{interval_budget, Speed, MAX_QUADRATURE_INTERVALS};
+    use crate::bezier::BezierCurve;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+    use glam::DVec2;
+
+    #[test]
+    fn an_overflowing_speed_does_not_spend_the_refinement_budget() {
+        // Finite control points whose differences overflow: the speed is infinite, the
+        // estimates NaN or ∞, and no halving can make them agree (the API fuzz found this
+        // spending all 2^14 intervals of a degree-23 rational curve: 2 s for a NaN).
+        let curve = BezierCurve::new(
+            vec![
+                DVec2::new(-1e308, 0.0),
+                DVec2::new(1e308, 1.0),
+                DVec2::new(-1e308, 2.0),
+                DVec2::new(1e308, 0.0),
+            ],
+            Some(&[1.0, 2.0, 0.5, 1.0]),
+        )
+        .unwrap();
+        let mut speed = Speed::new(&curve);
+        let whole = speed.gauss(0.0, 1.0);
+        let length = speed.adaptive(0.0, 1.0, whole, 1e-9, 0);
+        assert!(!length.is_finite(), "{length}");
+        assert_eq!(speed.budget, interval_budget(3, true), "intervals refined");
+    }
+
+    #[test]
+    fn the_interval_budget_shrinks_with_the_cost_of_a_speed_evaluation() {
+        // A degree-40 rational curve (3D, coordinates up to 1e17) with an absolute accuracy of
+        // 1e-3, far below its rounding: every interval keeps halving until the budget is spent.
+        let points: Vec<glam::DVec3> = (0..41)
+            .map(|i| {
+                let x = i as f64;
+                let big = if i % 7 == 3 { 8e16 } else { 0.0 };
+                glam::DVec3::new(60.0 * (x * 1.3).sin() + big, 50.0 * (x * 0.7).cos(), x)
+            })
+            .collect();
+        let weights: Vec<f64> = (0..41).map(|i| 1.0 + 0.8 * f64::from(i % 3 == 1)).collect();
+        let curve = BezierCurve::new(points, Some(&weights)).unwrap();
+        let mut speed = Speed::new(&curve);
+        let budget = speed.budget;
+        let whole = speed.gauss(0.0, 1.0);
+        let length = speed.adaptive(0.0, 1.0, whole, 1e-3, 0);
+        assert!(length.is_finite() && length > 8e16, "{length}");
+        // Refined at most 256 intervals (16 384 before: 12 s in Node), and the work budget
+        // (intervals × control-point operations per speed evaluation) holds for every degree.
+        assert!(
+            budget - speed.budget <= 256,
+            "{} intervals",
+            budget - speed.budget
+        );
+        for n in 1..=64 {
+            for (rational, cost) in [(false, n + 1), (true, (n + 1) * (n + 1))] {
+                let b = interval_budget(n, rational);
+                assert!(b == 256 || b * cost <= (1 << 18), "degree {n}: {b}");
+                assert!(
+                    b == MAX_QUADRATURE_INTERVALS || b * cost > (1 << 17),
+                    "degree {n}: {b}"
+                );
+            }
+        }
+        assert_eq!(interval_budget(3, true), MAX_QUADRATURE_INTERVALS);
     }
 }
