@@ -17,11 +17,13 @@ run native cargo test --lib --tests
 run doc cargo test --doc
 run wasm cargo test --target wasm32-unknown-unknown --lib --tests
 run build make --no-print-directory build
+run memory node --expose-gc tests/e2e/memory.mjs
 run e2e node tests/e2e/run.mjs
-# cargo/wasm-bindgen-test: "test result: ok. 12 passed; 0 failed"; e2e: "e2e: 5 passed, 0 failed"
-read -r passed failed < <(cat "$logs"/{native,doc,wasm,e2e}.log 2>/dev/null | awk '
+# cargo/wasm-bindgen-test: "test result: ok. 12 passed; 0 failed"; e2e: "e2e: 5 passed, 0 failed";
+# memory: "memory: 11 passed, 0 failed"
+read -r passed failed < <(cat "$logs"/{native,doc,wasm,memory,e2e}.log 2>/dev/null | awk '
   /test result:/ { for (i = 1; i <= NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
-  /^e2e: [0-9]+ passed, [0-9]+ failed/ { p += $2; f += $4 }
+  /^(e2e|memory): [0-9]+ passed, [0-9]+ failed/ { p += $2; f += $4 }
   END { print p + 0, f + 0 }')
 [ "$failed" -eq 0 ] || status=1
 [ "$passed" -gt 0 ] || { echo "!! no test ran"; status=1; }

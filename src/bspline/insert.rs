@@ -4,7 +4,7 @@
 use super::{BSplineCurve, KnotVector};
 use crate::bezier::BezierCurve;
 use crate::error::{check_finite, Error, Result};
-use crate::geom::{Cartesian, Point};
+use crate::geom::{result_len, Cartesian, Point};
 
 /// The continuity at one distinct interior knot: multiplicity `r` gives `C^{p−r}`
 /// (`continuity = −1` for `r = p + 1`, where the curve may break).
@@ -21,6 +21,11 @@ pub struct KnotContinuity {
 /// Inserting a knot `times` times where it already has multiplicity `s`: at most `p + 1` in all
 /// (the curve breaks there), so more is [`Error::InsertionMultiplicity`]. `name` is the parameter's name in
 /// the message (`None` for a curve, `"u"` or `"v"` for a surface).
+///
+/// This is the budget of the insertion loops (one Boehm pass per copy): `times ≤ p + 1 − s ≤
+/// MAX_DEGREE + 1`. It compares `times` with the room left, `p + 1 − s` (`s ≤ p + 1` holds for
+/// a valid knot vector), so a count near `usize::MAX` from JavaScript cannot wrap `s + times`
+/// round to a small number and start billions of insertions.
 pub(crate) fn check_insertion(
     name: Option<&'static str>,
     knot: f64,
@@ -28,14 +33,15 @@ pub(crate) fn check_insertion(
     times: usize,
     p: usize,
 ) -> Result<()> {
-    if s + times <= p + 1 {
+    if (p + 1).checked_sub(s).is_some_and(|room| times <= room) {
         return Ok(());
     }
     Err(Error::InsertionMultiplicity {
         name,
         knot,
         times,
-        multiplicity: s + times,
+        // Shown in the message only; beyond usize the count itself says enough.
+        multiplicity: s.checked_add(times).unwrap_or(usize::MAX),
         degree: p,
     })
 }
@@ -181,9 +187,15 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// insertions.
     ///
     /// # Errors
-    /// A value outside the domain or not finite (naming it), or a knot whose multiplicity
-    /// would exceed `p + 1`.
+    /// A value outside the domain or not finite (naming it), a knot whose multiplicity would
+    /// exceed `p + 1`, or [`Error::ResultTooLarge`] for a result above
+    /// [`crate::geom::MAX_RESULT_BYTES`].
     pub fn refine(&self, us: &[f64]) -> Result<Self> {
+        result_len(
+            "refine: (control points + us.length) × homogeneous coordinates",
+            // Two lengths of arrays in memory: their sum cannot overflow.
+            &[self.homogeneous.len() + us.len(), C::DIM + 1],
+        )?;
         let mut x = us.to_vec();
         for (i, &u) in x.iter().enumerate() {
             check_finite(|| format!("knot {i} to insert"), u)?;
