@@ -40,8 +40,9 @@ pub(crate) fn check_insertion(
         name,
         knot,
         times,
-        // Shown in the message only; beyond usize the count itself says enough.
-        multiplicity: s.checked_add(times).unwrap_or(usize::MAX),
+        // Shown in the message only (the check above does not add); beyond usize the count
+        // itself says enough.
+        multiplicity: s.saturating_add(times),
         degree: p,
     })
 }
