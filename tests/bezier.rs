@@ -1426,7 +1426,7 @@ fn flatten_estimate_is_never_below_the_polyline_it_bounds() {
     curves.push(("degree 64", degree_64(false)));
     curves.push(("rational degree 64", degree_64(true)));
     for (name, c) in curves {
-        for tol in [0.1, 1e-3, 1e-5] {
+        for tol in [0.1, 1e-3, 1e-4] {
             let segments = c.flatten(tol).unwrap().len() - 1;
             let estimate = c.flatten_estimate(tol).unwrap();
             assert!(
@@ -1442,12 +1442,12 @@ fn flatten_of_a_degree_64_curve_stays_within_the_tolerance() {
     for rational in [false, true] {
         let c = degree_64(rational);
         let (pts, w) = (c.control_points(), c.weights());
-        for tol in [1e-2, 1e-4] {
+        for tol in [1e-2, 1e-3] {
             let poly = c.flatten(tol).unwrap();
             assert_eq!((poly[0], poly[poly.len() - 1]), (pts[0], pts[64]));
             let mut worst = 0.0f64;
-            for k in 0..=5000 {
-                let p = bernstein_sum2(&pts, Some(&w), k as f64 / 5000.0);
+            for k in 0..=2000 {
+                let p = bernstein_sum2(&pts, Some(&w), k as f64 / 2000.0);
                 worst = worst.max(distance_to_polyline(p, &poly));
             }
             assert!(
