@@ -1478,3 +1478,69 @@ fn capability_traits_agree_across_curve_types() {
     assert_eq!(bez.control_box().unwrap().max, DVec2::new(8.0, 4.0));
     assert!(ParamCurve::sample_into(&comp, &[2.0], &mut [0.0; 2]).is_err());
 }
+
+/// A degree-64 curve: 65 seeded random control points in [0, 100]², with weights in
+/// [0.5, 2] when `rational` (the hostile case of issue 15: a fine tolerance on it used to take
+/// seconds before failing).
+fn degree_64(rational: bool) -> BezierCurve<DVec2> {
+    let mut rng = Rng::new(64);
+    let pts: Vec<DVec2> = (0..65)
+        .map(|_| DVec2::new(rng.range(0.0, 100.0), rng.range(0.0, 100.0)))
+        .collect();
+    let w: Vec<f64> = (0..65).map(|_| rng.range(0.5, 2.0)).collect();
+    BezierCurve::new(pts, rational.then_some(&w[..])).unwrap()
+}
+
+#[test]
+fn flatten_refuses_a_too_fine_tolerance_from_its_estimate() {
+    for rational in [false, true] {
+        let c = degree_64(rational);
+        let e = c.flatten(3e-8).unwrap_err();
+        let m = e.to_string();
+        assert!(matches!(e, Error::TooLarge { .. }), "{m}");
+        // The refusal comes from the estimate made before flattening, not from the guard.
+        assert!(m.contains("estimated before flattening"), "{m}");
+        assert!(m.contains("at most 65536"), "{m}");
+        assert!(c.flatten_estimate(3e-8).is_err());
+    }
+}
+
+#[test]
+fn flatten_estimate_is_never_below_the_polyline_it_bounds() {
+    // The estimate is a count of equal steps per piece that provably suffices; the greedy
+    // polyline (near the fewest chords) must not need more.
+    let mut curves = hard_curves();
+    curves.push(("degree 64", degree_64(false)));
+    curves.push(("rational degree 64", degree_64(true)));
+    for (name, c) in curves {
+        for tol in [0.1, 1e-3, 1e-4] {
+            let segments = c.flatten(tol).unwrap().len() - 1;
+            let estimate = c.flatten_estimate(tol).unwrap();
+            assert!(
+                segments <= estimate,
+                "{name}, tolerance {tol}: {segments} segments, estimate {estimate}"
+            );
+        }
+    }
+}
+
+#[test]
+fn flatten_of_a_degree_64_curve_stays_within_the_tolerance() {
+    for rational in [false, true] {
+        let c = degree_64(rational);
+        let (pts, w) = (c.control_points(), c.weights());
+        for tol in [1e-2, 1e-3] {
+            let poly = c.flatten(tol).unwrap();
+            assert_eq!((poly[0], poly[poly.len() - 1]), (pts[0], pts[64]));
+            let mut worst = 0.0f64;
+            for k in 0..=2000 {
+                let p = bernstein_sum2(&pts, Some(&w), k as f64 / 2000.0);
+                worst = worst.max(distance_to_polyline(p, &poly));
+            }
+            assert!(
+                worst <= tol * (1.0 + 1e-9),
+                "rational {rational}, tolerance {tol}: a curve point is {worst} from the polyline"
+            );
+        }
+    }
+}

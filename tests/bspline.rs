@@ -985,3 +985,58 @@ fn one_pass_refinement_equals_repeated_insertion() {
         .contains("u = 5 is outside"));
     assert_eq!(c.refine(&[]).unwrap().control_points(), c.control_points());
 }
+
+/// A clamped knot vector for `count` points of degree `p` whose interior knots are the whole
+/// numbers 1, 2, … with multiplicities cycling through `mults`; also returns how many distinct
+/// interior knots it has.
+fn knots_with_multiplicities(count: usize, p: usize, mults: &[usize]) -> (Vec<f64>, usize) {
+    let interior = count - p - 1;
+    let mut knots = vec![0.0; p + 1];
+    let mut distinct = 0;
+    while knots.len() < p + 1 + interior {
+        distinct += 1;
+        let r = mults[distinct % mults.len()].min(p + 1 + interior - knots.len());
+        knots.extend(std::iter::repeat_n(distinct as f64, r));
+    }
+    let end = distinct as f64 + 1.0;
+    knots.extend([end; 4][..p + 1].iter());
+    (knots, distinct)
+}
+
+#[test]
+fn a_long_curve_splits_into_one_bezier_piece_per_distinct_knot_plus_one() {
+    // 3000 points: the extraction is one refinement pass (it was one Boehm insertion per knot,
+    // O(n²)). Pieces are checked by the Bernstein sum against the curve's de Boor evaluation.
+    let mut rng = Rng::new(41);
+    let count = 3000;
+    for (p, rational) in [(3, false), (3, true), (2, true)] {
+        let (knots, distinct) = knots_with_multiplicities(count, p, &[1, 1, 2, 3]);
+        let pts: Vec<DVec2> = (0..count).map(|_| rng.point2(5.0)).collect();
+        let w: Vec<f64> = (0..count).map(|_| rng.range(0.5, 2.0)).collect();
+        let c = BSplineCurve::new(pts, p, knots, rational.then_some(&w[..])).unwrap();
+        let pieces = c.to_bezier().unwrap();
+        assert_eq!(
+            pieces.len(),
+            distinct + 1,
+            "degree {p}, rational {rational}"
+        );
+        for (k, piece) in pieces.iter().enumerate() {
+            assert_eq!(piece.degree(), p);
+            let (a, b) = (k as f64, k as f64 + 1.0);
+            let cps = piece.control_points();
+            let w = piece.weights();
+            for j in 0..=7 {
+                // The end of a piece at a knot of multiplicity p + 1 may differ from the curve's
+                // right-continuous value there; stop short of it.
+                let s = j as f64 / 7.0 * (1.0 - 1e-9);
+                let u = a + s * (b - a);
+                assert_close2(
+                    bernstein_sum2(&cps, Some(&w), s),
+                    c.evaluate(u).unwrap(),
+                    1e-9,
+                    &format!("degree {p}, piece {k} at u = {u}"),
+                );
+            }
+        }
+    }
+}

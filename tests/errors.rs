@@ -980,6 +980,65 @@ fn from_polynomial_refuses_the_degree_before_converting() {
     );
 }
 
+#[test]
+fn result_too_large_names_the_counts() {
+    // sampleGrid 5000 × 5000 on a surface: 5000 × 5000 × 3 numbers, 600 MB, refused before
+    // anything is allocated (it used to be allocated, or abort the page when memory ran out).
+    let us: Vec<f64> = (0..5000).map(|i| i as f64 / 4999.0).collect();
+    let mut out = Vec::new();
+    fails(
+        bump_patch().sample_grid_into(&us, &us, &mut out),
+        "result-too-large",
+        &[
+            "sampleGrid: us.length × vs.length × 3 coordinates",
+            "= 5000 × 5000 × 3 values of 8 bytes = 600000000 bytes",
+            "at most 268435456 bytes (256 MiB)",
+        ],
+    );
+    assert!(out.capacity() == 0, "nothing was allocated");
+    // 12 million points of a 3D curve: under MAX_SAMPLES (2^24) points, over 256 MiB.
+    let curve = BezierCurve::new(vec![DVec3::ZERO, DVec3::ONE], None).unwrap();
+    fails(
+        curve.sample_uniform_into(12_000_000, &mut []),
+        "result-too-large",
+        &["12000000 × 3 values of 8 bytes = 288000000 bytes"],
+    );
+    // Counts whose product overflows a usize are refused the same way (checked_mul), naming
+    // the counts rather than a wrapped or saturated product.
+    fails(
+        splinelab::geom::result_len("a table", &[usize::MAX, 2]),
+        "result-too-large",
+        &[&format!("a table = {} × 2 values", usize::MAX)],
+    );
+    // At the cap exactly: allowed.
+    assert_eq!(
+        splinelab::geom::result_len("a table", &[splinelab::geom::MAX_RESULT_BYTES / 8]),
+        Ok(1 << 25)
+    );
+}
+
+#[test]
+fn insertion_count_near_usize_max_is_refused_not_wrapped() {
+    // `s + times` used to wrap round for times near usize::MAX (JavaScript's insertKnot(u,
+    // 4294967295) on wasm32), pass the multiplicity check and start billions of insertions.
+    let times = usize::MAX;
+    fails(
+        clamped_cubic().insert_knot(0.5, times),
+        "insertion-multiplicity",
+        &[&format!("knot 0.5 {times} time(s)"), "p+1 = 4"],
+    );
+    fails(
+        unit_patch().insert_knot_u(0.25, times),
+        "insertion-multiplicity",
+        &[&format!("knot u = 0.25 {times} time(s)")],
+    );
+    fails(
+        unit_patch().insert_knot_v(0.25, times - 1),
+        "insertion-multiplicity",
+        &[&format!("knot v = 0.25 {} time(s)", times - 1)],
+    );
+}
+
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {
@@ -1006,6 +1065,17 @@ mod js {
 
     fn cubic() -> JsBezierCurve {
         curve(&[0.0, 0.0, 2.0, 2.0, 6.0, 4.0, 8.0, 2.0], 2.0)
+    }
+
+    #[test]
+    fn result_too_large_from_javascript_counts() {
+        // sampleUniform(12e6) of a 3D curve: 288 MB of numbers, refused before allocating.
+        let mut c = curve(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 3.0);
+        fails(
+            c.sample_uniform(12e6),
+            &["sampleUniform: count × coordinates = 12000000 × 3 values of 8 bytes"],
+        );
+        fails(c.sample_uniform_view(12e6), &["12000000 × 3 values"]);
     }
 
     #[test]

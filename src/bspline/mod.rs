@@ -30,8 +30,8 @@ pub use basis::{basis_derivatives, basis_functions, BasisScratch};
 pub use construct::{knot_vector, parameterize, phantom_points, KnotKind, Parameterization};
 pub(crate) use curve::check_degree;
 pub use de_boor::{de_boor_alpha, de_boor_alphas, de_boor_triangle, DeBoorAlpha};
-pub(crate) use insert::check_insertion;
 pub use insert::{boehm_alpha, boehm_alphas, boehm_insert, KnotContinuity};
+pub(crate) use insert::{check_insertion, refine_points};
 pub use knots::KnotVector;
 pub use matrix::{uniform_segment_matrix, MatrixFormPoint};
 

@@ -61,6 +61,7 @@ impl Error {
             Error::NoNormal { .. } => "no-normal",
             Error::EmptyTessellation { .. } => "empty-tessellation",
             Error::TooLarge { .. } => "too-large",
+            Error::ResultTooLarge { .. } => "result-too-large",
             Error::ArgumentType { .. } => "argument-type",
             Error::NotWholeNumber { .. } => "not-whole-number",
             Error::Needs2D { .. } => "needs-2d",

@@ -307,6 +307,26 @@ impl fmt::Display for Error {
             Error::TooLarge { what, value, max } => {
                 write!(f, "{what} = {value} is too large; at most {max} is allowed")
             }
+            Error::ResultTooLarge {
+                what,
+                counts,
+                value_bytes,
+                max_bytes,
+            } => {
+                let counts: Vec<String> = counts.iter().map(usize::to_string).collect();
+                // u128: up to three 32-bit counts and the value size cannot overflow it.
+                let bytes = counts
+                    .iter()
+                    .filter_map(|c| c.parse::<u128>().ok())
+                    .fold(*value_bytes as u128, |a, c| a.saturating_mul(c));
+                write!(
+                    f,
+                    "{what} = {} values of {value_bytes} bytes = {bytes} bytes is too large; one \
+                     result may take at most {max_bytes} bytes ({} MiB)",
+                    counts.join(" × "),
+                    max_bytes >> 20
+                )
+            }
             Error::ArgumentType {
                 name,
                 expected,

@@ -411,6 +411,20 @@ pub enum Error {
         /// The cap.
         max: usize,
     },
+    /// A result would take more than [`crate::geom::MAX_RESULT_BYTES`] bytes (or its size
+    /// overflows): `surface.sample_grid(&us, &vs)` with 5000 values each (5000 × 5000 × 3
+    /// numbers, 600 MB).
+    ResultTooLarge {
+        /// What the result is and what its counts are ("sampleGrid: us.length × vs.length ×
+        /// 3 coordinates").
+        what: &'static str,
+        /// The counts asked for, multiplied together to give the number of values.
+        counts: Vec<usize>,
+        /// Bytes per value (8 for `f64`, 4 for `f32` and `u32`).
+        value_bytes: usize,
+        /// The cap in bytes.
+        max_bytes: usize,
+    },
     /// An argument from JavaScript has the wrong type: `null` or `undefined` for an array, a
     /// number for a string (`new BezierCurve(null, 2)`).
     ArgumentType {

@@ -1,6 +1,6 @@
 //! Input checks shared by every family: weights, output lengths, flat coordinates, `dim`.
 
-use super::{Point, MAX_SAMPLES};
+use super::{Point, MAX_RESULT_BYTES, MAX_SAMPLES};
 use crate::error::{check_finite, Error, Result};
 
 /// Validates a weight list: count, finite, > 0.
@@ -33,7 +33,39 @@ pub fn check_table_count(count: usize, functions: usize) -> Result<()> {
     Ok(())
 }
 
-/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count`.
+/// The number of values of a result of `counts` multiplied together (points × coordinates,
+/// rows × columns × 3…), each `value_bytes` long, checked before anything is allocated: every
+/// product by `checked_mul` (a wasm32 `usize` overflows at 4 GiB), the total at most
+/// [`MAX_RESULT_BYTES`]; otherwise [`Error::ResultTooLarge`] naming `what` and the counts.
+pub fn check_result_bytes(
+    what: &'static str,
+    counts: &[usize],
+    value_bytes: usize,
+) -> Result<usize> {
+    let values = counts.iter().try_fold(1usize, |a, &c| a.checked_mul(c));
+    match values {
+        Some(v)
+            if v.checked_mul(value_bytes)
+                .is_some_and(|b| b <= MAX_RESULT_BYTES) =>
+        {
+            Ok(v)
+        }
+        _ => Err(Error::ResultTooLarge {
+            what,
+            counts: counts.to_vec(),
+            value_bytes,
+            max_bytes: MAX_RESULT_BYTES,
+        }),
+    }
+}
+
+/// [`check_result_bytes`] for a result of `f64` values (8 bytes each).
+pub fn result_len(what: &'static str, counts: &[usize]) -> Result<usize> {
+    check_result_bytes(what, counts, 8)
+}
+
+/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count` (at
+/// [`MAX_SAMPLES`] points and [`MAX_RESULT_BYTES`] bytes).
 pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
     if count > MAX_SAMPLES {
         return Err(Error::TooLarge {
@@ -42,6 +74,7 @@ pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
             max: MAX_SAMPLES,
         });
     }
+    result_len("samples (points × coordinates)", &[count, dim])?;
     if len != count * dim {
         return Err(Error::BufferLength {
             len,

@@ -16,3 +16,10 @@ pub const STACK_DEGREE: usize = 7;
 
 /// Largest number of samples one dense call may produce.
 pub const MAX_SAMPLES: usize = 1 << 24;
+
+/// Largest result one call may allocate, in bytes (256 MiB): every count from JavaScript
+/// (points × coordinates, grid rows × columns × 3, mesh vertices × 8 numbers…) is multiplied
+/// with `checked_mul` and refused above this before anything is allocated
+/// ([`crate::Error::ResultTooLarge`]), so a page gets an `Error` instead of a wasm abort
+/// when the memory runs out (a wasm32 memory holds 4 GiB at most).
+pub const MAX_RESULT_BYTES: usize = 256 << 20;

@@ -4,7 +4,7 @@
 use super::{basis, checked_count, in_element, BSplineSurface};
 use crate::bspline::BasisScratch;
 use crate::error::Result;
-use crate::geom::MAX_SAMPLES;
+use crate::geom::{result_len, MAX_SAMPLES};
 use glam::DVec4;
 
 impl BSplineSurface {
@@ -30,9 +30,14 @@ impl BSplineSurface {
     /// division. The same sums as [`BSplineSurface::evaluate`], grouped differently.
     ///
     /// # Errors
-    /// A bad value in `us` or `vs` (named by index), and [`crate::Error::TooLarge`] for more than
-    /// [`MAX_SAMPLES`] points.
+    /// A bad value in `us` or `vs` (named by index), [`crate::Error::ResultTooLarge`] for more
+    /// than [`crate::geom::MAX_RESULT_BYTES`] bytes of result, and [`crate::Error::TooLarge`]
+    /// for more than [`MAX_SAMPLES`] points.
     pub fn sample_grid_into(&self, us: &[f64], vs: &[f64], out: &mut Vec<f64>) -> Result<()> {
+        result_len(
+            "sampleGrid: us.length × vs.length × 3 coordinates",
+            &[us.len(), vs.len(), 3],
+        )?;
         let points = checked_count(
             "grid points us.length·vs.length",
             us.len(),

@@ -3,7 +3,7 @@
 use super::BSplineSurface;
 use crate::bezier::split_points;
 use crate::bspline::boehm_insert;
-use crate::bspline::{check_insertion, KnotVector};
+use crate::bspline::{check_insertion, refine_points, KnotVector};
 use crate::error::Result;
 use glam::DVec4;
 
@@ -65,6 +65,42 @@ impl BSplineSurface {
             knots_u: self.knots_u.clone(),
             knots_v: knots,
         })
+    }
+
+    /// The same surface with every value of `x` inserted into the v knots at once: A5.4
+    /// ([`refine_points`]) on every row of the net, O(rows · (cols + m·q)) for m new knots.
+    /// `x` must be sorted, inside the v domain and keep every multiplicity ≤ `q + 1`.
+    pub(super) fn refined_v(&self, x: &[f64]) -> Result<Self> {
+        if x.is_empty() {
+            return Ok(self.clone());
+        }
+        let mut net = Vec::with_capacity(self.rows * (self.cols + x.len()));
+        let mut knots = Vec::new();
+        for row in self.net.chunks_exact(self.cols) {
+            let (q, ubar) = refine_points(&self.knots_v, row, x);
+            net.extend(q);
+            knots = ubar;
+        }
+        let cols = self.cols + x.len();
+        if !self.rational {
+            // Keep polynomial weights exactly 1 ((1 − α)·1 + α·1 may round).
+            for h in &mut net {
+                h.w = 1.0;
+            }
+        }
+        Ok(BSplineSurface {
+            net,
+            rows: self.rows,
+            cols,
+            rational: self.rational,
+            knots_u: self.knots_u.clone(),
+            knots_v: KnotVector::new(knots, self.degree_v(), cols)?,
+        })
+    }
+
+    /// [`BSplineSurface::refined_v`] along u (on the transposed net).
+    pub(super) fn refined_u(&self, x: &[f64]) -> Result<Self> {
+        Ok(self.transposed().refined_v(x)?.transposed())
     }
 
     /// The same surface with the knot `u` inserted `times` times: a new row of control points

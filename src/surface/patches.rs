@@ -45,31 +45,12 @@ fn bezier_knots(count: usize) -> Result<KnotVector> {
 
 impl BSplineSurface {
     /// The same surface with every distinct knot of the domain (ends included) raised to
-    /// multiplicity `p` in u and `q` in v by insertion, so the `(p + 1)(q + 1)` active control
-    /// points of each non-empty span pair are that span's Bézier net (NURBS Book §5.4).
+    /// multiplicity `p` in u and `q` in v, so the `(p + 1)(q + 1)` active control points of
+    /// each non-empty span pair are that span's Bézier net (NURBS Book §5.4): one refinement
+    /// (A5.4) per direction, not one insertion per knot.
     fn extracted(&self) -> Result<Self> {
-        let mut surface = self.clone();
-        let (a, b) = self.knots_u.domain();
-        let mut values: Vec<f64> = self.knots_u.as_slice().to_vec();
-        values.retain(|&t| (a..=b).contains(&t));
-        values.dedup();
-        for t in values {
-            let have = surface.knots_u.multiplicity(t);
-            if have < self.degree_u() {
-                surface = surface.insert_knot_u(t, self.degree_u() - have)?;
-            }
-        }
-        let (a, b) = self.knots_v.domain();
-        let mut values: Vec<f64> = self.knots_v.as_slice().to_vec();
-        values.retain(|&t| (a..=b).contains(&t));
-        values.dedup();
-        for t in values {
-            let have = surface.knots_v.multiplicity(t);
-            if have < self.degree_v() {
-                surface = surface.insert_knot_v(t, self.degree_v() - have)?;
-            }
-        }
-        Ok(surface)
+        self.refined_u(&self.knots_u.extraction_knots())?
+            .refined_v(&self.knots_v.extraction_knots())
     }
 
     /// The Bézier patches with their rectangles, u spans outer; see

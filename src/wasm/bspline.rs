@@ -125,7 +125,11 @@ impl JsBSplineCurve {
     ) -> Result<Vec<f64>, JsError> {
         let us = &*numbers("us", &us)?;
         let order = whole("order", order)?;
-        let mut out = vec![0.0; us.len().saturating_mul(self.dim())];
+        let len = crate::geom::result_len(
+            "sampleDerivatives: us.length × coordinates",
+            &[us.len(), self.dim()],
+        )?;
+        let mut out = vec![0.0; len];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
         Ok(out)
     }

@@ -277,7 +277,11 @@ pub(crate) fn set_weight(curve: &mut impl ClassCurve, i: f64, w: f64) -> Result<
 
 /// `sample(params)`: a new array of `params.length · dim` numbers.
 pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>, JsError> {
-    let mut out = vec![0.0; params.len().saturating_mul(curve.dim())];
+    let len = crate::geom::result_len(
+        "sample: params.length × coordinates",
+        &[params.len(), curve.dim()],
+    )?;
+    let mut out = vec![0.0; len];
     curve.sample_into(params, &mut out)?;
     Ok(out)
 }
@@ -285,7 +289,8 @@ pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>
 /// `sampleUniform(count)`: a new array of `count · dim` numbers.
 pub(crate) fn sample_uniform(curve: &impl ClassCurve, count: usize) -> Result<Vec<f64>, JsError> {
     check_count(count)?;
-    let mut out = vec![0.0; count * curve.dim()];
+    let len = crate::geom::result_len("sampleUniform: count × coordinates", &[count, curve.dim()])?;
+    let mut out = vec![0.0; len];
     curve.sample_uniform_into(count, &mut out)?;
     Ok(out)
 }
@@ -297,7 +302,11 @@ pub(crate) fn sample_view(
     buffer: &mut Vec<f64>,
     params: &[f64],
 ) -> Result<Float64Array, JsError> {
-    buffer.resize(params.len().saturating_mul(curve.dim()), 0.0);
+    let len = crate::geom::result_len(
+        "sampleView: params.length × coordinates",
+        &[params.len(), curve.dim()],
+    )?;
+    buffer.resize(len, 0.0);
     curve.sample_into(params, buffer)?;
     super::memory_view(buffer)
 }
@@ -309,7 +318,11 @@ pub(crate) fn sample_uniform_view(
     count: usize,
 ) -> Result<Float64Array, JsError> {
     check_count(count)?;
-    buffer.resize(count * curve.dim(), 0.0);
+    let len = crate::geom::result_len(
+        "sampleUniformView: count × coordinates",
+        &[count, curve.dim()],
+    )?;
+    buffer.resize(len, 0.0);
     curve.sample_uniform_into(count, buffer)?;
     super::memory_view(buffer)
 }

@@ -223,7 +223,8 @@ impl JsCompositeBezier {
             Composite::D2(_) => 2,
             Composite::D3(_) => 3,
         };
-        let mut out = vec![0.0; ts.len().saturating_mul(dim)];
+        let len = crate::geom::result_len("sample: ts.length × coordinates", &[ts.len(), dim])?;
+        let mut out = vec![0.0; len];
         with_composite!(&self.inner, c => c.sample_into(ts, &mut out))?;
         Ok(out)
     }

@@ -96,7 +96,8 @@ impl JsLagrangeCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, JsError> {
         let ts = &*numbers("ts", &ts)?;
-        let mut out = vec![0.0; ts.len().saturating_mul(3)];
+        let len = crate::geom::result_len("sample: ts.length × coordinates", &[ts.len(), 3])?;
+        let mut out = vec![0.0; len];
         self.inner.sample_into(ts, &mut out)?;
         Ok(narrow(out, self.dim))
     }
@@ -106,7 +107,8 @@ impl JsLagrangeCurve {
     pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
         let count = whole("count", count)?;
         check_count(count)?;
-        let mut out = vec![0.0; count * 3];
+        let len = crate::geom::result_len("sampleUniform: count × coordinates", &[count, 3])?;
+        let mut out = vec![0.0; len];
         self.inner.sample_uniform_into(count, &mut out)?;
         Ok(narrow(out, self.dim))
     }

@@ -81,14 +81,22 @@ impl JsCubicSpline {
 
     /// The derivative of `order` at every t of `ts` into `out` (resized).
     fn sample_into(&self, ts: &[f64], order: usize, out: &mut Vec<f64>) -> Result<(), Error> {
-        out.resize(ts.len().saturating_mul(self.dim_of()), 0.0);
+        let len = crate::geom::result_len(
+            "sample: ts.length × coordinates",
+            &[ts.len(), self.dim_of()],
+        )?;
+        out.resize(len, 0.0);
         with_spline!(&self.inner, c => c.sample_derivatives_into(ts, order, out))
     }
 
     /// `count` points over the domain into `out` (resized).
     fn sample_uniform_into(&self, count: usize, out: &mut Vec<f64>) -> Result<(), Error> {
         check_count(count)?;
-        out.resize(count * self.dim_of(), 0.0);
+        let len = crate::geom::result_len(
+            "sampleUniform: count × coordinates",
+            &[count, self.dim_of()],
+        )?;
+        out.resize(len, 0.0);
         with_spline!(&self.inner, c => c.sample_uniform_into(count, out))
     }
 }
