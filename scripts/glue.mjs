@@ -151,7 +151,7 @@ for (const c of classes) {
   c.text = replaceCounted(
     c.text,
     /( {4}free\(\) \{\n {8}const ptr = this\.__destroy_into_raw\(\);\n {8})(wasm\.__wbg_\w+_free\(ptr, 0\);)/g,
-    (_, head, call) => `${head}if (ptr !== 0) ${call}`,
+    (_, head, call) => `${head}if (ptr) ${call}`,
     1,
     `${c.name}: free()`,
   );
