@@ -235,7 +235,12 @@ function bezierMirror(curve) {
     const degree = curve.degree;
     if (degree > BEZIER_JS_DEGREE) return (curve.__jsMirror = null);
     const [a, b] = curve.domain();
-    return (curve.__jsMirror = { degree, dim: curve.dim, rational: curve.rational, a, b, h: curve.homogeneousPoints() });
+    const dim = curve.dim;
+    const rational = curve.rational;
+    const h = curve.homogeneousPoints();
+    // The plain planar cubic, the common case, unrolled below: its numbers by name.
+    const cubic = degree === 3 && dim === 2 && !rational ? [h[0], h[1], h[3], h[4], h[6], h[7], h[9], h[10]] : null;
+    return (curve.__jsMirror = { degree, dim, rational, a, b, h, cubic });
 }
 
 {
@@ -248,6 +253,20 @@ function bezierMirror(curve) {
             return viaWasm.call(this, t, out);
         }
         const s = m.a === 0 && m.b === 1 ? t : Math.min(Math.max((t - m.a) / (m.b - m.a), 0), 1);
+        const q = m.cubic;
+        if (q !== null) {
+            // bernstein_small for m = 3 written out, the same products in the same order.
+            const r = 1 - s;
+            const r2 = r * r;
+            const s2 = s * s;
+            const b0 = 1 * 1 * (r2 * r);
+            const b1 = 3 * s * r2;
+            const b2 = 3 * s2 * r;
+            const b3 = 1 * (s2 * s) * 1;
+            out[0] = 0 + q[0] * b0 + q[2] * b1 + q[4] * b2 + q[6] * b3;
+            out[1] = 0 + q[1] * b0 + q[3] * b1 + q[5] * b2 + q[7] * b3;
+            return out;
+        }
         const n = m.degree;
         const r = 1 - s;
         powersOfR[0] = 1;
