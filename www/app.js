@@ -221,28 +221,41 @@ function thumbnail(demo, sl) {
 }
 
 // ------------------------------------------------------------------ demo view
+/**
+ * The state a link gives (`encoded`, the hash's `s=`), validated over `start`; when there is
+ * none, `start` itself; a bad link keeps `start` and says why in `linkError`.
+ */
+function stateFromLink(demo, start, encoded) {
+  const fallback = validateState(demo, structuredClone(start));
+  if (!encoded) return { state: fallback, linkError: null };
+  try {
+    return { state: validateState(demo, decodeState(encoded)), linkError: null };
+  } catch (err) {
+    return { state: fallback, linkError: err.message };
+  }
+}
+
+/** A demo page in `main` (the link back to the gallery, then the slot returned for the demo). */
+function demoPageRoot() {
+  const root = el("div");
+  main.append(
+    el(
+      "div",
+      { class: "demo-page" },
+      el("a", { class: "back", href: "#", text: t("app.backToGallery") }),
+      root,
+    ),
+  );
+  return root;
+}
+
 /** Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any. */
 function showDemo(entry, demo, encoded, sl) {
   unmount();
   currentId = demo.id;
   document.title = t("app.demoTitle", { title: t(`${entry.strings}.title`), app: t("app.name") });
-  let state = validateState(demo, structuredClone(demo.defaultState));
-  let linkError = null;
-  if (encoded) {
-    try {
-      state = validateState(demo, decodeState(encoded));
-    } catch (err) {
-      linkError = err.message;
-    }
-  }
-  const holder = el(
-    "div",
-    { class: "demo-page" },
-    el("a", { class: "back", href: "#", text: t("app.backToGallery") }),
-  );
-  const root = el("div");
-  holder.append(root);
-  main.append(holder);
+  let { state, linkError } = stateFromLink(demo, demo.defaultState, encoded);
+  const root = demoPageRoot();
   try {
     controller = mountDemo(root, demo, {
       sl,
@@ -320,28 +333,12 @@ async function showExercise(entry, encoded, sl) {
     title: t(`exercise.${entry.id}.title`),
     app: t("app.name"),
   });
-  const start = validateState(demo, structuredClone(entry.state));
-  let state = start;
-  let linkError = null;
-  if (encoded) {
-    try {
-      state = validateState(demo, decodeState(encoded));
-    } catch (err) {
-      linkError = err.message;
-    }
-  }
+  const { state, linkError } = stateFromLink(demo, entry.state, encoded);
   const write = (s) => {
     lastHash = `#exercise=${encodeURIComponent(entry.id)}&s=${encodeState(s)}`;
     history.replaceState(null, "", lastHash);
   };
-  const holder = el(
-    "div",
-    { class: "demo-page" },
-    el("a", { class: "back", href: "#", text: t("app.backToGallery") }),
-  );
-  const root = el("div");
-  holder.append(root);
-  main.append(holder);
+  const root = demoPageRoot();
   controller = mountExercise(root, entry, demo, {
     sl,
     state,
