@@ -19,6 +19,8 @@ export function captionOf(scene) {
   return caption[locale()] ?? caption.en ?? "";
 }
 
+/** Narrower windows (phones) show scenes without lecture mode's large type (CSS px). */
+const LECTURE_TYPE_MIN_WIDTH = 900;
 /** Keys that step scenes wherever the focus is (a clicker's). */
 const CLICKER = { PageDown: 1, PageUp: -1 };
 /** Keys that step scenes unless a control or the figure has the focus. */
@@ -107,7 +109,9 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
       state,
       mode: "page",
       headingLevel: "h2",
-      lecture: true,
+      // Projection type (×1.6) on a projector-sized window; a phone keeps the normal size,
+      // where the large type would crowd the figure.
+      lecture: window.innerWidth >= LECTURE_TYPE_MIN_WIDTH,
       shareUrl: (s) => new URL(buildHash(demo.id, s), location.href).href,
     });
     if (problem) controller.status(t("status.rejected", { message: problem }), "error");
