@@ -123,6 +123,14 @@ function intoDeclaration(base, scratch) {
   );
 }
 
+/** The exported functions documented to return class `name`: "sl.cubicSpline(…), sl.…(…)". */
+function makersOf(name) {
+  const makers = [...js.matchAll(/@returns \{(\w+)\}\n\s*\*\/\nexport function (\w+)\(/g)]
+    .filter((m) => m[1] === name)
+    .map((m) => `sl.${m[2]}(…)`);
+  return makers.length ? makers.join(", ") : "the library's functions";
+}
+
 let intoCount = 0;
 for (const c of classes) {
   const original = c.text;
@@ -155,6 +163,17 @@ for (const c of classes) {
     1,
     `${c.name}: free()`,
   );
+  // A class the library only returns (no wasm constructor): `new` would make an object with
+  // no pointer; it says where such objects come from instead.
+  if (!/^ {4}constructor\(/m.test(c.text)) {
+    c.text = c.text.replace(
+      `export class ${c.name} {\n`,
+      `export class ${c.name} {\n` +
+        "    constructor() {\n" +
+        `        throw new Error(${JSON.stringify(`new ${c.name}() is not available: a ${c.name} comes from ${makersOf(c.name)}`)});\n` +
+        "    }\n",
+    );
+  }
   js = js.replace(original, c.text);
 }
 if (intoCount < 5) fail(`only ${intoCount} classes have scratch methods`);

@@ -286,6 +286,21 @@ const checks = [
     },
   ],
   [
+    "new on a class the library only returns (CubicSpline, LagrangeCurve) throws an Error naming the functions that make one",
+    () => {
+      throwsWith(
+        () => new sl.CubicSpline(),
+        /sl\.cubicSpline\(…\).*|.*sl\.cubicSpline/,
+        "CubicSpline",
+      );
+      throwsWith(() => new sl.LagrangeCurve(), /comes from sl\.lagrange\(…\)/, "LagrangeCurve");
+      const spline = sl.cubicSpline([0, 0, 1, 1, 2, 0], 2, [0, 1, 2], "natural");
+      assert(spline instanceof sl.CubicSpline, "the functions still make them");
+      near(spline.evaluate(1), [1, 1], 1e-15, "through its middle point");
+      spline.free();
+    },
+  ],
+  [
     'a method on a freed object of every class throws Error("this <Class> was freed"); free() twice does nothing',
     () => {
       const net = new Float64Array(27).map((_, k) => k % 5);
