@@ -2,7 +2,6 @@
 
 use super::BSplineSurface;
 use crate::bezier::split_points;
-use crate::bspline::boehm_insert;
 use crate::bspline::{check_insertion, refine_points, KnotVector};
 use crate::error::Result;
 use glam::DVec4;
@@ -29,42 +28,19 @@ impl BSplineSurface {
         }
     }
 
-    /// Inserts `value` `times` times into the v knots: Boehm's algorithm on every row of the
-    /// net (each row is a B-spline curve in v). `name` is the parameter's name in errors.
+    /// Inserts `value` `times` times into the v knots: checked like a curve's insertion, then
+    /// one refinement pass ([`BSplineSurface::refined_v`]) with `value` repeated `times` times.
+    /// `name` is the parameter's name in errors.
     fn insert_along_v(&self, name: &'static str, value: f64, times: usize) -> Result<Self> {
         let v = self.knots_v.check_named(name, value)?;
-        let q = self.degree_v();
-        check_insertion(Some(name), v, self.knots_v.multiplicity(v), times, q)?;
-        let mut rows: Vec<Vec<DVec4>> = self
-            .net
-            .chunks_exact(self.cols)
-            .map(<[DVec4]>::to_vec)
-            .collect();
-        let mut knots = self.knots_v.clone();
-        for _ in 0..times {
-            let k = knots.span(v);
-            for row in &mut rows {
-                *row = boehm_insert(row, knots.as_slice(), q, k, v);
-            }
-            let cols = rows.first().map_or(0, Vec::len);
-            knots = KnotVector::new(knots.with_inserted(v, 1), q, cols)?;
-        }
-        let cols = knots.point_count();
-        let mut net: Vec<DVec4> = rows.concat();
-        if !self.rational {
-            // Keep polynomial weights exactly 1 ((1 − α)·1 + α·1 may round).
-            for h in &mut net {
-                h.w = 1.0;
-            }
-        }
-        Ok(BSplineSurface {
-            net,
-            rows: self.rows,
-            cols,
-            rational: self.rational,
-            knots_u: self.knots_u.clone(),
-            knots_v: knots,
-        })
+        check_insertion(
+            Some(name),
+            v,
+            self.knots_v.multiplicity(v),
+            times,
+            self.degree_v(),
+        )?;
+        self.refined_v(&vec![v; times])
     }
 
     /// The same surface with every value of `x` inserted into the v knots at once: A5.4

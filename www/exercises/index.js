@@ -32,6 +32,14 @@ function jointOrder(sl, state) {
   }
 }
 
+/** The first cubic of both joint exercises: P₀ … P₃, ending at P₃ = (4, 1). */
+const LEFT_CUBIC = [
+  [0, 0],
+  [1, 3],
+  [3, 3],
+  [4, 1],
+];
+
 export const exercises = Object.freeze(
   [
     {
@@ -39,12 +47,7 @@ export const exercises = Object.freeze(
       section: 1,
       demo: "joining",
       state: {
-        left: [
-          [0, 0],
-          [1, 3],
-          [3, 3],
-          [4, 1],
-        ],
+        left: LEFT_CUBIC,
         right: [
           [5, 2],
           [6, -1],
@@ -67,12 +70,7 @@ export const exercises = Object.freeze(
       section: 2,
       demo: "joining",
       state: {
-        left: [
-          [0, 0],
-          [1, 3],
-          [3, 3],
-          [4, 1],
-        ],
+        left: LEFT_CUBIC,
         right: [
           [4, 1],
           [6, 0],

@@ -243,6 +243,20 @@ function num(value) {
 }
 
 /**
+ * A recorder's path moved (or, with a current point elsewhere, lined) to where the canvas arc
+ * of centre (x, y), radius r starts at angle a0, as CanvasRenderingContext2D.arc does; returns
+ * that start [x0, y0]. For SvgRecorder and TikzRecorder (`_x`/`_y` their current point).
+ */
+export function moveToArcStart(recorder, x, y, r, a0) {
+  const x0 = x + r * Math.cos(a0);
+  const y0 = y + r * Math.sin(a0);
+  if (recorder._x === null) recorder.moveTo(x0, y0);
+  else if (Math.abs(recorder._x - x0) > 1e-6 || Math.abs(recorder._y - y0) > 1e-6)
+    recorder.lineTo(x0, y0);
+  return [x0, y0];
+}
+
+/**
  * Records the drawing interface as an SVG document. Only used for export, so it may build
  * strings freely.
  */
@@ -298,10 +312,7 @@ export class SvgRecorder {
 
   /** Canvas arc semantics written as SVG elliptical arcs (a full turn becomes two halves). */
   arc(x, y, r, a0, a1, counterClockwise = false) {
-    const x0 = x + r * Math.cos(a0);
-    const y0 = y + r * Math.sin(a0);
-    if (this._x === null) this.moveTo(x0, y0);
-    else if (Math.abs(this._x - x0) > 1e-6 || Math.abs(this._y - y0) > 1e-6) this.lineTo(x0, y0);
+    const [x0, y0] = moveToArcStart(this, x, y, r, a0);
     if (!r) return;
     let da = counterClockwise ? a0 - a1 : a1 - a0;
     const sweep = counterClockwise ? 0 : 1;

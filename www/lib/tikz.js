@@ -10,7 +10,7 @@
  * y points down as on the screen and a canvas arc's angles are TikZ's angles unchanged (TikZ
  * places `(a:r)` at r·(cos a · x + sin a · y), and y is the downward vector here).
  */
-import { keepLabelInside, measureLabel } from "./draw.js";
+import { keepLabelInside, measureLabel, moveToArcStart } from "./draw.js";
 
 const TAU = 2 * Math.PI;
 /** Arcs closer than this to a full turn are drawn as full circles (radians). */
@@ -196,10 +196,7 @@ export class TikzRecorder {
 
   /** Canvas arc semantics: from angle a0 to a1, clockwise on the screen unless told otherwise. */
   arc(x, y, r, a0, a1, counterClockwise = false) {
-    const x0 = x + r * Math.cos(a0);
-    const y0 = y + r * Math.sin(a0);
-    if (this._x === null) this.moveTo(x0, y0);
-    else if (Math.abs(this._x - x0) > 1e-6 || Math.abs(this._y - y0) > 1e-6) this.lineTo(x0, y0);
+    moveToArcStart(this, x, y, r, a0);
     if (!r) return;
     let sweep = counterClockwise ? a0 - a1 : a1 - a0;
     sweep = sweep >= TAU - FULL_TURN_EPSILON ? TAU : ((sweep % TAU) + TAU) % TAU;
