@@ -749,7 +749,7 @@ fn bad_input_gives_clear_errors() {
     assert!(err(2, vec![0.0, 0.0, 0.0, 2.0, 1.0, 3.0, 3.0], None)
         .contains("u_4 = 1 comes after u_3 = 2"));
     assert!(err(2, vec![0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0], None).contains("empty"));
-    assert!(err(2, vec![0.0, 0.0, 0.0, f64::NAN, 1.0, 1.0, 1.0], None).contains("knot u_3 is NaN"));
+    assert!(err(2, vec![0.0, 0.0, 0.0, f64::NAN, 1.0, 1.0, 1.0], None).contains("knot 3 is NaN"));
     assert_eq!(
         err(0, vec![0.0; 5], None),
         "degree must be at least 1, got 0"

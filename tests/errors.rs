@@ -908,8 +908,8 @@ fn adaptive_tolerance_nan() {
     );
     fails(
         bump_patch().intersect_line(DVec3::new(0.0, f64::NAN, 0.0), DVec3::Z, 1e-6),
-        "not-finite",
-        &["origin coordinate 1"],
+        "in-argument",
+        &["origin: coordinate 1"],
     );
 }
 

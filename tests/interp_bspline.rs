@@ -868,7 +868,7 @@ fn validation_follows_the_documented_order() {
     };
     let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &bad_derivative).unwrap_err();
     assert!(
-        e.to_string().contains("startDerivative coordinate 0"),
+        e.to_string().contains("startDerivative: coordinate 0"),
         "{e}"
     );
 }

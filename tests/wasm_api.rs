@@ -111,7 +111,7 @@ fn counts_indices_and_degrees_must_be_whole_numbers() {
         arr(&[1.0, 1.5]),
         JsValue::UNDEFINED
     ))
-    .contains("degree 1 must be a whole number"));
+    .contains("degrees 1 must be a whole number"));
     let knots = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0];
     let b =
         splinelab::wasm::JsBSplineCurve::new(arr(&pts), 2.0, 2.0, arr(&knots), JsValue::UNDEFINED)

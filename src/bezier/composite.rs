@@ -215,7 +215,7 @@ pub fn from_polynomial<C: Cartesian>(coeffs: &[C], a: f64, b: f64) -> Result<Bez
         return Err(Error::TooFewPoints {
             needed: 1,
             got: 0,
-            what: "a polynomial",
+            what: "polynomial",
         });
     }
     // The degree first: the conversion below is O(n²) (a 2000-coefficient call took 10 s
@@ -272,7 +272,7 @@ impl<C: Cartesian> CompositeCurve<C> {
             return Err(Error::TooFewPoints {
                 needed: 1,
                 got: 0,
-                what: "a composite curve (pieces)",
+                what: "composite-curve",
             });
         }
         if breaks.len() != pieces.len() + 1 {
@@ -309,7 +309,7 @@ impl<C: Cartesian> CompositeCurve<C> {
             return Err(Error::TooFewPoints {
                 needed: 2,
                 got: d + 1,
-                what: "every piece (degree >= 1)",
+                what: "every-piece",
             });
         }
         let pts: Vec<C> = crate::geom::points_from_flat(coords)?;

@@ -20,7 +20,7 @@ impl<C: Cartesian> BezierCurve<C> {
             return Err(Error::TooFewPoints {
                 needed: 2,
                 got: points.len(),
-                what: "a Bézier curve",
+                what: "bezier-curve",
             });
         }
         if points.len() - 1 > MAX_DEGREE {
@@ -32,7 +32,7 @@ impl<C: Cartesian> BezierCurve<C> {
         }
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite(|| format!("coordinate {}", i * C::DIM + k), p.coord(k))?;
+                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         let homogeneous = match weights {
@@ -79,8 +79,8 @@ impl<C: Cartesian> BezierCurve<C> {
     /// # Errors
     /// [`Error::NotFinite`], or [`Error::InvalidInterval`] unless `a < b`.
     pub fn with_interval(mut self, a: f64, b: f64) -> Result<Self> {
-        check_finite(|| "a".into(), a)?;
-        check_finite(|| "b".into(), b)?;
+        check_finite("a", None, a)?;
+        check_finite("b", None, b)?;
         if a >= b || !(b - a).is_finite() {
             return Err(Error::InvalidInterval { a, b });
         }

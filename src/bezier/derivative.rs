@@ -49,7 +49,7 @@ impl<C: Cartesian> BezierCurve<C> {
         }
         if order > MAX_DERIVATIVE_ORDER {
             return Err(Error::TooLarge {
-                what: "derivative order of a rational curve",
+                what: "rational-derivative-order",
                 value: order,
                 max: MAX_DERIVATIVE_ORDER,
             });

@@ -42,7 +42,7 @@ impl<C: Cartesian> BezierCurve<C> {
     pub fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
         check_out_len(out.len(), ts.len(), C::DIM)?;
         for (i, &t) in ts.iter().enumerate() {
-            check_finite(|| format!("parameter {i}"), t)?;
+            check_finite("parameter", Some(i), t)?;
             self.local_parameter(t)?;
         }
         if self.a == 0.0 && self.b == 1.0 {

@@ -163,7 +163,7 @@ impl<C: Cartesian> BezierCurve<C> {
             }
             if out.len() > MAX_FLATTEN_SEGMENTS + 1 {
                 return Err(Error::TooLarge {
-                    what: "number of flattening segments",
+                    what: "flattening-segments",
                     value: out.len() - 1,
                     max: MAX_FLATTEN_SEGMENTS,
                 });
@@ -246,8 +246,7 @@ impl<C: Cartesian> BezierCurve<C> {
             });
             if total > MAX_FLATTEN_SEGMENTS {
                 return Err(Error::TooLarge {
-                    what: "number of flattening segments (estimated before flattening: lower the \
-                           degree or raise the tolerance)",
+                    what: "flattening-segments-estimated",
                     value: total,
                     max: MAX_FLATTEN_SEGMENTS,
                 });

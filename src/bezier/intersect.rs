@@ -58,7 +58,7 @@ impl BezierCurve<DVec2> {
     /// [`Error::InvalidTolerance`] unless `tolerance` is finite and > 0.
     pub fn intersect_line(&self, p0: DVec2, p1: DVec2, tolerance: f64) -> Result<LineIntersection> {
         for (k, v) in [p0.x, p0.y, p1.x, p1.y].into_iter().enumerate() {
-            check_finite(|| ["x0", "y0", "x1", "y1"][k].into(), v)?;
+            check_finite(["x0", "y0", "x1", "y1"][k], None, v)?;
         }
         check_tolerance(tolerance)?;
         let dir = (p1 - p0)

@@ -134,7 +134,7 @@ pub fn parameterize<P: Point>(points: &[P], kind: Parameterization) -> Result<Ve
         return Err(Error::TooFewPoints {
             needed: 2,
             got: points.len(),
-            what: "a parametrisation",
+            what: "parametrisation",
         });
     }
     let mut out = Vec::with_capacity(points.len());
@@ -199,7 +199,7 @@ pub fn phantom_points<P: Point>(points: &[P], degree: usize) -> Result<Vec<P>> {
         return Err(Error::TooFewPoints {
             needed: extra + 2,
             got: points.len(),
-            what: "phantom points of this degree",
+            what: "phantom-points",
         });
     }
     let n = points.len() - 1;

@@ -23,7 +23,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     ) -> Result<Self> {
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite(|| format!("coordinate {}", i * C::DIM + k), p.coord(k))?;
+                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         check_degree(degree, points.len())?;
@@ -72,7 +72,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     pub fn closed(points: Vec<C>, degree: usize, weights: Option<&[f64]>) -> Result<Self> {
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite(|| format!("coordinate {}", i * C::DIM + k), p.coord(k))?;
+                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         check_degree(degree, points.len())?;

@@ -68,7 +68,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         }
         if order > MAX_DERIVATIVE_ORDER {
             return Err(Error::TooLarge {
-                what: "derivative order of a rational curve",
+                what: "rational-derivative-order",
                 value: order,
                 max: MAX_DERIVATIVE_ORDER,
             });

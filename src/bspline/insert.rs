@@ -193,13 +193,13 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// [`crate::geom::MAX_RESULT_BYTES`].
     pub fn refine(&self, us: &[f64]) -> Result<Self> {
         result_len(
-            "refine: (control points + us.length) × homogeneous coordinates",
+            "refine-result",
             // Two lengths of arrays in memory: their sum cannot overflow.
             &[self.homogeneous.len() + us.len(), C::DIM + 1],
         )?;
         let mut x = us.to_vec();
         for (i, &u) in x.iter().enumerate() {
-            check_finite(|| format!("knot {i} to insert"), u)?;
+            check_finite("knot-to-insert", Some(i), u)?;
             self.knots.check_parameter(u)?;
         }
         x.sort_unstable_by(f64::total_cmp);

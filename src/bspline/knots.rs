@@ -43,7 +43,7 @@ impl KnotVector {
             });
         }
         for (i, &u) in knots.iter().enumerate() {
-            check_finite(|| format!("knot u_{i}"), u)?;
+            check_finite("knot", Some(i), u)?;
         }
         if let Some(i) = (1..knots.len()).find(|&i| knots[i] < knots[i - 1]) {
             return Err(Error::KnotOrder {
@@ -275,6 +275,6 @@ mod tests {
         let e = KnotVector::new(vec![0.0, 0.0, 0.0, f64::NAN, 2.0, 3.0, 4.0, 4.0, 4.0], 2, 6)
             .unwrap_err()
             .to_string();
-        assert!(e.contains("knot u_3 is NaN"), "{e}");
+        assert!(e.contains("knot 3 is NaN"), "{e}");
     }
 }

@@ -288,7 +288,7 @@ impl<C: Cartesian> BSplineCurve<C> {
         check_out_len(out.len(), us.len(), C::DIM)?;
         if order > MAX_DERIVATIVE_ORDER {
             return Err(Error::TooLarge {
-                what: "derivative order",
+                what: "derivative-order",
                 value: order,
                 max: MAX_DERIVATIVE_ORDER,
             });

@@ -2,16 +2,24 @@
 
 use super::{Error, Result};
 
-/// Checks that `value` is finite; `what` names it in the error.
-pub(crate) fn check_finite(what: impl FnOnce() -> String, value: f64) -> Result<f64> {
+/// Checks that `value` is finite; `what` (a subject: an argument's name or a phrase key, see
+/// `phrase.rs`) and `index` name it in the error: `("coordinate", Some(3))` gives "coordinate 3".
+pub(crate) fn check_finite(what: &'static str, index: Option<usize>, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(Error::NotFinite {
-            what: what(),
-            value,
-        })
+        Err(Error::NotFinite { what, index, value })
     }
+}
+
+/// Checks that coordinate `k` of the vector argument `name` is finite: the error is
+/// "center: coordinate 1 is NaN; …" ([`Error::InArgument`] around [`Error::NotFinite`]).
+pub(crate) fn check_coordinate_of(name: &'static str, k: usize, value: f64) -> Result<f64> {
+    check_finite("coordinate", Some(k), value).map_err(|source| Error::InArgument {
+        name,
+        index: None,
+        source: Box::new(source),
+    })
 }
 
 /// Checks a tolerance: finite and > 0.
@@ -30,7 +38,7 @@ pub(crate) fn check_in_range(
     value: f64,
     (min, max): (f64, f64),
 ) -> Result<f64> {
-    check_finite(|| name.into(), value)?;
+    check_finite(name, None, value)?;
     if value < min || value > max {
         return Err(Error::ParameterOutOfRange {
             name,

@@ -1,5 +1,6 @@
 //! The English message of every variant: it speaks to a student and carries the numbers.
 
+use super::phrase::phrase;
 use super::Error;
 use std::fmt;
 
@@ -16,6 +17,20 @@ impl fmt::Display for Num {
     }
 }
 
+/// A subject ([`super::phrase`]) in English, with its index when it is one of a list:
+/// "coordinate 3", "a Bézier curve", "t".
+struct Subject<'a>(&'a str, Option<usize>);
+
+impl fmt::Display for Subject<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(phrase(self.0))?;
+        match self.1 {
+            Some(i) => write!(f, " {i}"),
+            None => Ok(()),
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -25,12 +40,18 @@ impl fmt::Display for Error {
                 "coordinate count {count} is not a multiple of dim = {dim}; points are given as flat [x0, y0{}, x1, …]",
                 if *dim == 3 { ", z0" } else { "" }
             ),
-            Error::NotFinite { what, value } => {
-                write!(f, "{what} is {}; every number must be finite", Num(*value))
+            Error::NotFinite { what, index, value } => {
+                write!(
+                    f,
+                    "{} is {}; every number must be finite",
+                    Subject(what, *index),
+                    Num(*value)
+                )
             }
             Error::TooFewPoints { needed, got, what } => write!(
                 f,
-                "{what} needs at least {needed} control point{}, got {got}",
+                "{} needs at least {needed} control point{}, got {got}",
+                phrase(what),
                 if *needed == 1 { "" } else { "s" }
             ),
             Error::WeightCount { expected, got } => write!(
@@ -97,8 +118,8 @@ impl fmt::Display for Error {
                 index,
                 source,
             } => match index {
-                Some(i) => write!(f, "{name}[{i}]: {source}"),
-                None => write!(f, "{name}: {source}"),
+                Some(i) => write!(f, "{}[{i}]: {source}", phrase(name)),
+                None => write!(f, "{}: {source}", phrase(name)),
             },
             Error::KnotCount {
                 expected,
@@ -261,7 +282,7 @@ impl fmt::Display for Error {
                 "center, axisX and axisY need the same length, got {center}, {axis_x}, {axis_y}"
             ),
             Error::NotPositive { name, value } => {
-                write!(f, "{name} must be > 0, got {}", Num(*value))
+                write!(f, "{} must be > 0, got {}", phrase(name), Num(*value))
             }
             Error::DimensionMismatch { left, right } => write!(
                 f,
@@ -305,7 +326,11 @@ impl fmt::Display for Error {
                 "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
             ),
             Error::TooLarge { what, value, max } => {
-                write!(f, "{what} = {value} is too large; at most {max} is allowed")
+                write!(
+                    f,
+                    "{} = {value} is too large; at most {max} is allowed",
+                    phrase(what)
+                )
             }
             Error::ResultTooLarge {
                 what,
@@ -321,8 +346,9 @@ impl fmt::Display for Error {
                     .fold(*value_bytes as u128, |a, c| a.saturating_mul(c));
                 write!(
                     f,
-                    "{what} = {} values of {value_bytes} bytes = {bytes} bytes is too large; one \
+                    "{} = {} values of {value_bytes} bytes = {bytes} bytes is too large; one \
                      result may take at most {max_bytes} bytes ({} MiB)",
+                    phrase(what),
                     counts.join(" × "),
                     max_bytes >> 20
                 )
@@ -331,10 +357,11 @@ impl fmt::Display for Error {
                 name,
                 expected,
                 got,
-            } => write!(f, "{name} must be {expected}, got {got}"),
-            Error::NotWholeNumber { what, value } => write!(
+            } => write!(f, "{name} must be {}, got {got}", phrase(expected)),
+            Error::NotWholeNumber { what, index, value } => write!(
                 f,
-                "{what} must be a whole number from 0 to {}, got {}",
+                "{} must be a whole number from 0 to {}, got {}",
+                Subject(what, *index),
                 u32::MAX,
                 Num(*value)
             ),
@@ -372,7 +399,7 @@ impl fmt::Display for Error {
                 Num(*previous)
             ),
             Error::MissingArgument { name, needed_by } => {
-                write!(f, "{needed_by} needs {name}, which was not given")
+                write!(f, "{} needs {name}, which was not given", phrase(needed_by))
             }
             Error::ArgumentLength {
                 name,
@@ -408,12 +435,14 @@ impl fmt::Display for Error {
             ),
             Error::TooFewDataPoints { needed, got, what } => write!(
                 f,
-                "{what} needs at least {needed} data point{}, got {got}",
+                "{} needs at least {needed} data point{}, got {got}",
+                phrase(what),
                 if *needed == 1 { "" } else { "s" }
             ),
             Error::SingularSystem { what, row } => write!(
                 f,
-                "{what} is singular: elimination met a zero pivot in row {row}"
+                "{} is singular: elimination met a zero pivot in row {row}",
+                phrase(what)
             ),
             Error::SplineKind {
                 operation,
@@ -427,7 +456,11 @@ impl fmt::Display for Error {
                 first,
                 second,
                 reason,
-            } => write!(f, "{first} cannot be combined with {second}: {reason}"),
+            } => write!(
+                f,
+                "{first} cannot be combined with {second}: {}",
+                phrase(reason)
+            ),
             Error::KnotsNotClamped { end, param, degree } => write!(
                 f,
                 "a least-squares fit with exact ends needs clamped knots: the {end} p+1 = {} knots must equal {}",

@@ -7,8 +7,11 @@
 mod check;
 mod code;
 mod message;
+mod phrase;
 
-pub(crate) use check::{check_finite, check_in_range, check_tolerance};
+pub use phrase::{phrase, PHRASES};
+
+pub(crate) use check::{check_coordinate_of, check_finite, check_in_range, check_tolerance};
 
 /// Everything that can go wrong when building or querying a curve.
 ///
@@ -16,6 +19,12 @@ pub(crate) use check::{check_finite, check_in_range, check_tolerance};
 /// numbers, number of points against the degree, knots, weights — so the first problem found
 /// is always the same one for the same input.
 #[derive(Debug, Clone, PartialEq)]
+// In the wasm build the fields become a thrown Error's `params` (camelCase), see src/wasm/error.rs.
+#[cfg_attr(
+    all(target_arch = "wasm32", target_os = "unknown"),
+    derive(serde::Serialize),
+    serde(untagged, rename_all_fields = "camelCase")
+)]
 pub enum Error {
     /// `dim` is not 2 or 3: `geom::check_dim(4)`, or `new BezierCurve(points, 4)` from JavaScript.
     InvalidDimension {
@@ -33,8 +42,10 @@ pub enum Error {
     /// A coordinate, weight, parameter or tolerance is NaN or infinite:
     /// `BezierCurve::<DVec2>::from_flat(&[0.0, f64::NAN, 1.0, 1.0], None)`.
     NotFinite {
-        /// What the number is ("coordinate 3", "t", "weight 1").
-        what: String,
+        /// What the number is: a subject (`phrase.rs`), "coordinate", "t", "weight".
+        what: &'static str,
+        /// Its index in a list ("coordinate 3"), if it is one of many.
+        index: Option<usize>,
         /// The offending value.
         value: f64,
     },
@@ -135,6 +146,10 @@ pub enum Error {
         /// The element of the argument, when the argument is a list (`us[3]`).
         index: Option<usize>,
         /// What went wrong with it.
+        #[cfg_attr(
+            all(target_arch = "wasm32", target_os = "unknown"),
+            serde(serialize_with = "crate::wasm::error::coded")
+        )]
         source: Box<Error>,
     },
     /// A knot vector of the wrong length: `KnotVector::new(vec![0.0; 8], 3, 5)` (5 points of
@@ -218,6 +233,10 @@ pub enum Error {
         /// Index `i` of the first of the two points `P_i = P_{i+1}`.
         index: usize,
         /// The spacing asked for.
+        #[cfg_attr(
+            all(target_arch = "wasm32", target_os = "unknown"),
+            serde(serialize_with = "crate::wasm::error::display")
+        )]
         kind: crate::bspline::Parameterization,
     },
     /// Phantom end points need an odd degree: `phantom_points(&points, 2)`.
@@ -238,6 +257,10 @@ pub enum Error {
     /// Pieces of too low degree for a joining rule: `join(&line, &line, JoinRule::C2, true)`.
     JoinDegree {
         /// The rule.
+        #[cfg_attr(
+            all(target_arch = "wasm32", target_os = "unknown"),
+            serde(serialize_with = "crate::wasm::error::debug")
+        )]
         rule: crate::bezier::JoinRule,
         /// Degree `n` of the left piece.
         left: usize,
@@ -438,8 +461,10 @@ pub enum Error {
     /// A count, index, degree, order or dimension given from JavaScript is not a whole number
     /// from 0 to `u32::MAX` (2.5, −1, NaN, a missing argument): `new BezierCurve(points, 2.5)`.
     NotWholeNumber {
-        /// What the number is ("count", "i", "degree 1").
-        what: String,
+        /// What the number is: an argument's name ("count", "i", "degrees").
+        what: &'static str,
+        /// Its index when the argument is a list ("degrees" 1).
+        index: Option<usize>,
         /// The value given.
         value: f64,
     },

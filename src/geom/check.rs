@@ -25,7 +25,7 @@ pub fn check_table_count(count: usize, functions: usize) -> Result<()> {
     let max = MAX_SAMPLES / functions.max(1);
     if count > max {
         return Err(Error::TooLarge {
-            what: "count (samples per basis function: one value per function each)",
+            what: "basis-sample-count",
             value: count,
             max,
         });
@@ -69,12 +69,12 @@ pub fn result_len(what: &'static str, counts: &[usize]) -> Result<usize> {
 pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
     if count > MAX_SAMPLES {
         return Err(Error::TooLarge {
-            what: "sample count",
+            what: "sample-count",
             value: count,
             max: MAX_SAMPLES,
         });
     }
-    result_len("samples (points × coordinates)", &[count, dim])?;
+    result_len("samples-result", &[count, dim])?;
     if len != count * dim {
         return Err(Error::BufferLength {
             len,
@@ -105,10 +105,10 @@ pub fn check_flat(coords: &[f64], dim: usize) -> Result<()> {
     check_all_finite(coords, "coordinate")
 }
 
-/// Checks every value of `values` is finite; the error names `"{what} {index}"`.
-pub fn check_all_finite(values: &[f64], what: &str) -> Result<()> {
+/// Checks every value of `values` is finite; the error names `what` and the index.
+pub fn check_all_finite(values: &[f64], what: &'static str) -> Result<()> {
     for (i, &v) in values.iter().enumerate() {
-        check_finite(|| format!("{what} {i}"), v)?;
+        check_finite(what, Some(i), v)?;
     }
     Ok(())
 }
@@ -129,7 +129,7 @@ pub(crate) fn check_point_edit<P: Point>(i: usize, count: usize, p: P) -> Result
         return Err(Error::IndexOutOfRange { index: i, count });
     }
     for k in 0..P::DIM {
-        check_finite(|| format!("coordinate {k} of the new point"), p.coord(k))?;
+        check_finite("new-point-coordinate", Some(k), p.coord(k))?;
     }
     Ok(())
 }
@@ -140,7 +140,7 @@ pub(crate) fn check_weight_edit(i: usize, count: usize, w: f64) -> Result<()> {
     if i >= count {
         return Err(Error::IndexOutOfRange { index: i, count });
     }
-    check_finite(|| format!("weight {i}"), w)?;
+    check_finite("weight", Some(i), w)?;
     if w <= 0.0 {
         return Err(Error::NonPositiveWeight { index: i, value: w });
     }

@@ -10,13 +10,13 @@ use super::params::{check_point_count, ParamChoice};
 use super::tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
 use super::tridiagonal::Tridiagonal;
 use crate::bspline::Parameterization;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate_of, check_finite, Error, Result};
 use crate::geom::check::check_point_edit;
 use crate::geom::{Cartesian, Point};
 use glam::DVec3;
 
 /// What the system of [`CubicSpline::system`] is called in [`Error::SingularSystem`].
-const SYSTEM_NAME: &str = "the cubic spline's tangent system";
+const SYSTEM_NAME: &str = "cubic-spline-system";
 
 /// How a [`CubicSpline`]'s tangents are found from its points and parameters.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -189,7 +189,7 @@ impl<C: Cartesian> CubicSpline<C> {
         params: impl Into<ParamChoice>,
         end: EndCondition<C>,
     ) -> Result<Self> {
-        let data = data(points, params.into(), end.min_points(), "a cubic spline")?;
+        let data = data(points, params.into(), end.min_points(), "cubic-spline")?;
         if let EndCondition::Clamped { start, end } = end {
             check_vector("startTangent", start)?;
             check_vector("endTangent", end)?;
@@ -213,7 +213,7 @@ impl<C: Cartesian> CubicSpline<C> {
         params: impl Into<ParamChoice>,
         tangents: Vec<C>,
     ) -> Result<Self> {
-        let data = data(points, params.into(), 2, "a Hermite spline")?;
+        let data = data(points, params.into(), 2, "hermite-spline")?;
         if tangents.len() != data.points.len() {
             return Err(Error::ArgumentLength {
                 name: "tangents",
@@ -223,7 +223,7 @@ impl<C: Cartesian> CubicSpline<C> {
         }
         for (i, m) in tangents.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite(|| format!("tangents {}", i * C::DIM + k), m.coord(k))?;
+                check_finite("tangents", Some(i * C::DIM + k), m.coord(k))?;
             }
         }
         Self::build(data, TangentRule::Given, false, tangents)
@@ -234,8 +234,8 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2, the parameter errors, [`Error::NotFinite`] for c.
     pub fn cardinal(points: Vec<C>, params: impl Into<ParamChoice>, tension: f64) -> Result<Self> {
-        let data = data(points, params.into(), 2, "a cardinal spline")?;
-        check_finite(|| "tension".into(), tension)?;
+        let data = data(points, params.into(), 2, "cardinal-spline")?;
+        check_finite("tension", None, tension)?;
         Self::build(data, TangentRule::Cardinal { tension }, false, Vec::new())
     }
 
@@ -251,7 +251,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// also compares the last with the first).
     pub fn catmull_rom(mut points: Vec<C>, alpha: f64, closed: bool) -> Result<Self> {
         let min = if closed { 3 } else { 2 };
-        check_point_count(points.len(), min, "a Catmull–Rom spline")?;
+        check_point_count(points.len(), min, "catmull-rom-spline")?;
         let kind = Parameterization::from_alpha(alpha)?;
         if closed {
             if points.len() > min && points.first() == points.last() {
@@ -264,7 +264,7 @@ impl<C: Cartesian> CubicSpline<C> {
             points,
             ParamChoice::Spacing(kind),
             min,
-            "a Catmull–Rom spline",
+            "catmull-rom-spline",
         )?;
         Self::build(data, TangentRule::CatmullRom, closed, Vec::new())
     }
@@ -274,7 +274,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2, the parameter errors.
     pub fn bessel(points: Vec<C>, params: impl Into<ParamChoice>) -> Result<Self> {
-        let data = data(points, params.into(), 2, "a Bessel spline")?;
+        let data = data(points, params.into(), 2, "bessel-spline")?;
         Self::build(data, TangentRule::Bessel, false, Vec::new())
     }
 
@@ -372,7 +372,7 @@ impl<C: Cartesian> CubicSpline<C> {
 #[inline(never)]
 fn check_vector<P: Point>(name: &'static str, v: P) -> Result<()> {
     for k in 0..P::DIM {
-        check_finite(|| format!("{name} {k}"), v.coord(k))?;
+        check_coordinate_of(name, k, v.coord(k))?;
     }
     Ok(())
 }

@@ -70,7 +70,7 @@ impl<P: Point> EndCondition<P> {
             "not-a-knot" => EndCondition::NotAKnot,
             "periodic" => EndCondition::Periodic,
             "clamped" => {
-                const NEEDED_BY: &str = "the \"clamped\" end condition";
+                const NEEDED_BY: &str = "clamped-end-condition";
                 let start = start.ok_or(Error::MissingArgument {
                     name: "startTangent",
                     needed_by: NEEDED_BY,

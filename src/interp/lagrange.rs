@@ -58,10 +58,10 @@ impl<C: Cartesian> LagrangeCurve<C> {
     /// As [`LagrangeCurve::new`], and [`Error::CoincidentPoints`] for a spacing with α > 0 and
     /// a repeated point.
     pub fn with_params(points: Vec<C>, choice: ParamChoice) -> Result<Self> {
-        check_point_count(points.len(), 2, "a Lagrange curve")?;
+        check_point_count(points.len(), 2, "lagrange-curve")?;
         if points.len() > MAX_LAGRANGE_POINTS {
             return Err(Error::TooLarge {
-                what: "number of points of a Lagrange curve",
+                what: "lagrange-point-count",
                 value: points.len(),
                 max: MAX_LAGRANGE_POINTS,
             });

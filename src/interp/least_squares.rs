@@ -132,7 +132,7 @@ pub(crate) fn approximate_flat(
                 }
             }
         }
-        normal.solve_cholesky(&mut rhs, dim, "the least-squares normal equations")?;
+        normal.solve_cholesky(&mut rhs, dim, "least-squares-system")?;
         control[dim..n * dim].copy_from_slice(&rhs);
     }
     Ok((control, knots.as_slice().to_vec()))
@@ -154,7 +154,7 @@ pub(crate) fn check_fit_shape(count: usize, degree: usize) -> Result<()> {
         return Err(Error::TooFewDataPoints {
             needed,
             got: count,
-            what: "a least-squares B-spline of this degree (p + 1, at least 2)",
+            what: "least-squares-bspline",
         });
     }
     Ok(())

@@ -64,7 +64,7 @@ pub fn check_params(params: &[f64], points: usize) -> Result<()> {
         });
     }
     for (i, &t) in params.iter().enumerate() {
-        check_finite(|| format!("param {i}"), t)?;
+        check_finite("parameter", Some(i), t)?;
     }
     for (i, w) in params.windows(2).enumerate() {
         if w[1] <= w[0] {

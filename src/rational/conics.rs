@@ -2,7 +2,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate_of, check_finite, Error, Result};
 use crate::geom::{sin_cos, Cartesian};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
@@ -69,7 +69,7 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
         ("x2", p2.x),
         ("y2", p2.y),
     ] {
-        check_finite(|| name.into(), v)?;
+        check_finite(name, None, v)?;
     }
     let (a, b) = (p0 - p1, p2 - p1);
     let (la, lb) = (a.length(), b.length());
@@ -107,11 +107,11 @@ pub fn ellipse_arc<C: Cartesian>(
     start: f64,
     sweep: f64,
 ) -> Result<BSplineCurve<C>> {
-    check_finite(|| "start angle".into(), start)?;
-    check_finite(|| "sweep".into(), sweep)?;
+    check_finite("start-angle", None, start)?;
+    check_finite("sweep", None, sweep)?;
     for (what, p) in [("center", center), ("axis_x", axis_x), ("axis_y", axis_y)] {
         for k in 0..C::DIM {
-            check_finite(|| format!("{what} coordinate {k}"), p.coord(k))?;
+            check_coordinate_of(what, k, p.coord(k))?;
         }
     }
     let full = std::f64::consts::TAU;
@@ -186,7 +186,7 @@ pub fn circular_arc(center: DVec2, r: f64, start: f64, sweep: f64) -> Result<BSp
 pub fn ellipse(center: DVec2, rx: f64, ry: f64, rotation: f64) -> Result<BSplineCurve<DVec2>> {
     check_radius("rx", rx)?;
     check_radius("ry", ry)?;
-    check_finite(|| "rotation".into(), rotation)?;
+    check_finite("rotation", None, rotation)?;
     let (sin, cos) = sin_cos(rotation);
     let (ex, ey) = (DVec2::new(cos, sin), DVec2::new(-sin, cos));
     ellipse_arc(center, ex * rx, ey * ry, 0.0, std::f64::consts::TAU)
@@ -194,7 +194,7 @@ pub fn ellipse(center: DVec2, rx: f64, ry: f64, rotation: f64) -> Result<BSpline
 
 /// A radius: finite and > 0 (`name` names it in the error).
 fn check_radius(name: &'static str, r: f64) -> Result<()> {
-    check_finite(|| name.into(), r)?;
+    check_finite(name, None, r)?;
     if r <= 0.0 {
         return Err(Error::NotPositive { name, value: r });
     }

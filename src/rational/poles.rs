@@ -55,7 +55,7 @@ pub fn rational_poles<C: Cartesian>(
         return Err(Error::TooFewPoints {
             needed: 2,
             got: points.len(),
-            what: "a rational Bézier curve",
+            what: "rational-bezier-curve",
         });
     }
     let n = points.len() - 1;
@@ -68,7 +68,7 @@ pub fn rational_poles<C: Cartesian>(
     }
     for (i, p) in points.iter().enumerate() {
         for k in 0..C::DIM {
-            check_finite(|| format!("coordinate {} of point {i}", k), p.coord(k))?;
+            check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
         }
     }
     if weights.len() != points.len() {
@@ -78,7 +78,7 @@ pub fn rational_poles<C: Cartesian>(
         });
     }
     for (i, &w) in weights.iter().enumerate() {
-        check_finite(|| format!("weight {i}"), w)?;
+        check_finite("weight", Some(i), w)?;
     }
     if weights.iter().all(|&w| w == 0.0) {
         return Err(Error::AllWeightsZero {

@@ -66,7 +66,7 @@ pub fn projective_map_bspline(
 }
 
 fn check_matrix(m: &DMat3) -> Result<()> {
-    crate::geom::check_all_finite(&m.to_cols_array(), "matrix entry")?;
+    crate::geom::check_all_finite(&m.to_cols_array(), "matrix-entry")?;
     if m.determinant() == 0.0 {
         return Err(Error::SingularMap {});
     }

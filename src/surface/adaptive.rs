@@ -65,7 +65,7 @@ impl BSplineSurface {
         let patches = spans_u.saturating_mul(spans_v);
         if patches > MAX_ADAPTIVE_VERTICES {
             return Err(Error::TooLarge {
-                what: "adaptive mesh vertices (at least one per Bézier patch)",
+                what: "adaptive-vertices-patches",
                 value: patches,
                 max: MAX_ADAPTIVE_VERTICES,
             });
@@ -84,7 +84,7 @@ impl BSplineSurface {
                 // Each leaf's lower corner is a vertex of its own: leaves ≤ vertices.
                 if leaves.len() >= MAX_ADAPTIVE_VERTICES {
                     return Err(Error::TooLarge {
-                        what: "adaptive mesh vertices (at least one per leaf)",
+                        what: "adaptive-vertices-leaves",
                         value: leaves.len() + 1,
                         max: MAX_ADAPTIVE_VERTICES,
                     });
@@ -94,7 +94,7 @@ impl BSplineSurface {
             }
             if depth >= MAX_ADAPTIVE_DEPTH {
                 return Err(Error::TooLarge {
-                    what: "adaptive subdivision depth (the tolerance is near rounding)",
+                    what: "adaptive-depth",
                     value: depth as usize + 1,
                     max: MAX_ADAPTIVE_DEPTH as usize,
                 });
@@ -126,7 +126,7 @@ impl BSplineSurface {
         by_v.sort_unstable();
         if by_u.len() > MAX_ADAPTIVE_VERTICES {
             return Err(Error::TooLarge {
-                what: "adaptive mesh vertices",
+                what: "adaptive-vertices",
                 value: by_u.len(),
                 max: MAX_ADAPTIVE_VERTICES,
             });
@@ -246,7 +246,7 @@ impl MeshBuilder {
         let k = self.uvs.len() / 2;
         if k >= MAX_ADAPTIVE_VERTICES {
             return Err(Error::TooLarge {
-                what: "adaptive mesh vertices",
+                what: "adaptive-vertices",
                 value: k + 1,
                 max: MAX_ADAPTIVE_VERTICES,
             });

@@ -123,7 +123,7 @@ impl BSplineSurface {
         let order = du.saturating_add(dv);
         if order > MAX_DERIVATIVE_ORDER {
             return Err(Error::TooLarge {
-                what: "derivative order du + dv",
+                what: "surface-derivative-order",
                 value: order,
                 max: MAX_DERIVATIVE_ORDER,
             });

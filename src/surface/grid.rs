@@ -34,16 +34,8 @@ impl BSplineSurface {
     /// than [`crate::geom::MAX_RESULT_BYTES`] bytes of result, and [`crate::Error::TooLarge`]
     /// for more than [`MAX_SAMPLES`] points.
     pub fn sample_grid_into(&self, us: &[f64], vs: &[f64], out: &mut Vec<f64>) -> Result<()> {
-        result_len(
-            "sampleGrid: us.length × vs.length × 3 coordinates",
-            &[us.len(), vs.len(), 3],
-        )?;
-        let points = checked_count(
-            "grid points us.length·vs.length",
-            us.len(),
-            vs.len(),
-            MAX_SAMPLES,
-        )?;
+        result_len("sample-grid-result", &[us.len(), vs.len(), 3])?;
+        let points = checked_count("grid-points", us.len(), vs.len(), MAX_SAMPLES)?;
         for (i, &u) in us.iter().enumerate() {
             self.knots_u
                 .check_named("u", u)

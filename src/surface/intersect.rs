@@ -1,7 +1,7 @@
 //! Surface/line intersection: box recursion on the Bézier patches, then Newton.
 
 use super::{in_argument, BSplineSurface};
-use crate::error::{check_finite, check_tolerance, Error, Result};
+use crate::error::{check_coordinate_of, check_tolerance, Error, Result};
 use glam::{DMat3, DVec3};
 
 /// Deepest subdivision level of the box recursion below a Bézier patch.
@@ -56,17 +56,17 @@ impl BSplineSurface {
         tolerance: f64,
     ) -> Result<Vec<[f64; 3]>> {
         for (k, x) in origin.to_array().into_iter().enumerate() {
-            check_finite(|| format!("origin coordinate {k}"), x)?;
+            check_coordinate_of("origin", k, x)?;
         }
         for (k, x) in direction.to_array().into_iter().enumerate() {
-            check_finite(|| format!("direction coordinate {k}"), x)?;
+            check_coordinate_of("direction", k, x)?;
         }
         let length = direction.length();
         if length == 0.0 {
             return Err(in_argument(
                 "direction",
                 Error::NotPositive {
-                    name: "its length",
+                    name: "length",
                     value: length,
                 },
             ));

@@ -21,12 +21,7 @@ impl BSplineSurface {
             return Err(Error::EmptyTessellation { nu, nv });
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
-        checked_count(
-            "tessellation vertices (nu + 1)(nv + 1)",
-            cu,
-            cv,
-            MAX_MESH_VERTICES,
-        )?;
+        checked_count("tessellation-vertices", cu, cv, MAX_MESH_VERTICES)?;
         let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
             let params = Params::uniform(a, b, n + 1);
             (0..params.len()).map(|i| params.get(i)).collect()

@@ -36,8 +36,8 @@ impl BSplineSurface {
             });
         }
         check_all_finite(coords, "coordinate")?;
-        check_degree(degree_u, rows).map_err(|e| in_argument("degreeU (rows along u)", e))?;
-        check_degree(degree_v, cols).map_err(|e| in_argument("degreeV (columns along v)", e))?;
+        check_degree(degree_u, rows).map_err(|e| in_argument("degree-u-rows", e))?;
+        check_degree(degree_v, cols).map_err(|e| in_argument("degree-v-columns", e))?;
         let knots_u =
             KnotVector::new(knots_u, degree_u, rows).map_err(|e| in_argument("knotsU", e))?;
         let knots_v =
@@ -165,7 +165,7 @@ impl BSplineSurface {
     pub fn set_control_point(&mut self, i: usize, j: usize, p: DVec3) -> Result<()> {
         let k = self.index(i, j)?;
         for (c, value) in p.to_array().into_iter().enumerate() {
-            check_finite(|| format!("coordinate {c} of the new point"), value)?;
+            check_finite("new-point-coordinate", Some(c), value)?;
         }
         if let Some(h) = self.net.get_mut(k) {
             *h = (p * h.w).extend(h.w);
@@ -179,7 +179,7 @@ impl BSplineSurface {
     /// An index out of range, [`Error::NotFinite`], [`Error::NonPositiveWeight`].
     pub fn set_weight(&mut self, i: usize, j: usize, w: f64) -> Result<()> {
         let k = self.index(i, j)?;
-        check_finite(|| format!("weight ({i}, {j})"), w)?;
+        check_finite("weight", Some(k), w)?;
         if w <= 0.0 {
             return Err(Error::NonPositiveWeight { index: k, value: w });
         }

@@ -12,6 +12,7 @@ use crate::bezier::{self, BezierCurve};
 use crate::error::{check_finite, Error};
 use crate::geom::{check_dim, Cartesian, Point};
 use crate::prelude::*;
+use crate::wasm::ApiError;
 use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
@@ -63,7 +64,7 @@ impl JsBezierCurve {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
         dim: f64,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBezierCurve, JsError> {
+    ) -> Result<JsBezierCurve, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
@@ -78,7 +79,7 @@ impl JsBezierCurve {
         a: f64,
         b: f64,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBezierCurve, JsError> {
+    ) -> Result<JsBezierCurve, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
@@ -98,7 +99,7 @@ impl JsBezierCurve {
         dim: f64,
         a: f64,
         b: f64,
-    ) -> Result<JsBezierCurve, JsError> {
+    ) -> Result<JsBezierCurve, ApiError> {
         let coefficients = &*numbers("coefficients", &coefficients)?;
         let dim = whole("dim", dim)?;
         let inner = match check_dim(dim)? {
@@ -125,26 +126,26 @@ impl JsBezierCurve {
     /// de Casteljau's triangle at t: every level concatenated, the control points first;
     /// (n+1)(n+2)/2 points, flat. Rational curves give projected points.
     #[wasm_bindgen(js_name = deCasteljau)]
-    pub fn de_casteljau(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn de_casteljau(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_casteljau(t)?)))
     }
 
     /// The rational basis at t: `R_i(t) = w_i B_i(t) / Σ_j w_j B_j(t)` for i = 0..n, the share
     /// of each control point in P(t) (the Bernstein values for a polynomial curve).
     #[wasm_bindgen(js_name = rationalBasis)]
-    pub fn rational_basis(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn rational_basis(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => c.rational_basis(t))?)
     }
 
     /// de Casteljau's triangle on the homogeneous points `(w·x, w·y, (w·z,) w)`, flat with
     /// dim + 1 numbers per point.
     #[wasm_bindgen(js_name = deCasteljauHomogeneous)]
-    pub fn de_casteljau_homogeneous(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn de_casteljau_homogeneous(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_casteljau_homogeneous(t)?)))
     }
 
     /// `[left, right]`: the halves at t (top edge and hypotenuse of the triangle), each on [0, 1].
-    pub fn split(&self, t: f64) -> Result<Vec<JsBezierCurve>, JsError> {
+    pub fn split(&self, t: f64) -> Result<Vec<JsBezierCurve>, ApiError> {
         let (l, r) = match &self.inner {
             Curve::D2(c) => {
                 let (l, r) = c.split(t)?;
@@ -159,7 +160,7 @@ impl JsBezierCurve {
     }
 
     /// The same curve with degree n + 1.
-    pub fn elevate(&self) -> Result<JsBezierCurve, JsError> {
+    pub fn elevate(&self) -> Result<JsBezierCurve, ApiError> {
         Ok(JsBezierCurve::wrap(
             map_curve!(&self.inner, c => c.elevate()?),
         ))
@@ -171,14 +172,14 @@ impl JsBezierCurve {
     }
 
     /// The hodograph P'(t): a Bézier curve of degree n − 1 (polynomial curves only).
-    pub fn hodograph(&self) -> Result<JsBezierCurve, JsError> {
+    pub fn hodograph(&self) -> Result<JsBezierCurve, ApiError> {
         Ok(JsBezierCurve::wrap(
             map_curve!(&self.inner, c => c.hodograph()?),
         ))
     }
 
     /// Polyline vertices (flat, both ends included) within `tolerance` of the curve.
-    pub fn flatten(&self, tolerance: f64) -> Result<Vec<f64>, JsError> {
+    pub fn flatten(&self, tolerance: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.flatten(tolerance)?)))
     }
 
@@ -191,7 +192,7 @@ impl JsBezierCurve {
         x1: f64,
         y1: f64,
         tolerance: f64,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         Ok(self
             .curve_2d("intersectLine")?
             .intersect_line(DVec2::new(x0, y0), DVec2::new(x1, y1), tolerance)?
@@ -208,7 +209,7 @@ impl JsBezierCurve {
         x1: f64,
         y1: f64,
         tolerance: f64,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let result = self.curve_2d("intersectLineBoxes")?.intersect_line(
             DVec2::new(x0, y0),
             DVec2::new(x1, y1),
@@ -238,9 +239,9 @@ impl JsBezierCurve {
         y0: f64,
         x1: f64,
         y1: f64,
-    ) -> Result<usize, JsError> {
+    ) -> Result<usize, ApiError> {
         for (name, v) in [("x0", x0), ("y0", y0), ("x1", x1), ("y1", y1)] {
-            check_finite(|| name.into(), v)?;
+            check_finite(name, None, v)?;
         }
         Ok(self
             .curve_2d("polygonLineCrossings")?
@@ -249,7 +250,7 @@ impl JsBezierCurve {
 
     /// Arc length; `accuracy` (absolute) defaults to 1e-13 × the control polygon's length.
     #[wasm_bindgen(js_name = arcLength)]
-    pub fn arc_length(&self, accuracy: Option<f64>) -> Result<f64, JsError> {
+    pub fn arc_length(&self, accuracy: Option<f64>) -> Result<f64, ApiError> {
         Ok(with_curve!(&self.inner, c => c.arc_length(accuracy))?)
     }
 
@@ -272,7 +273,7 @@ pub fn arc_lengths(
     dim: f64,
     degree: f64,
     accuracy: Option<f64>,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Vec<f64>, ApiError> {
     let points = &*numbers("points", &points)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;

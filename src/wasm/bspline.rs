@@ -6,6 +6,7 @@ use crate::bspline::{self, BSplineCurve, KnotKind, Parameterization};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::prelude::*;
+use crate::wasm::ApiError;
 use glam::{DVec2, DVec3};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -53,7 +54,7 @@ impl JsBSplineCurve {
         degree: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] knots: JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBSplineCurve, JsError> {
+    ) -> Result<JsBSplineCurve, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let knots = &*numbers("knots", &knots)?;
@@ -74,7 +75,7 @@ impl JsBSplineCurve {
         dim: f64,
         degree: f64,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBSplineCurve, JsError> {
+    ) -> Result<JsBSplineCurve, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let dim = whole("dim", dim)?;
@@ -111,7 +112,7 @@ impl JsBSplineCurve {
 
     /// The span index k of u: `u_k ≤ u < u_{k+1}` with `u_k < u_{k+1}` (u at the end of the
     /// domain is in the last non-empty span); `basisNonZero(u)` holds `N_{k−p,p} … N_{k,p}`.
-    pub fn span(&self, u: f64) -> Result<usize, JsError> {
+    pub fn span(&self, u: f64) -> Result<usize, ApiError> {
         Ok(with_curve!(&self.inner, c => c.span(u))?)
     }
 
@@ -122,34 +123,31 @@ impl JsBSplineCurve {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
         order: f64,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let us = &*numbers("us", &us)?;
         let order = whole("order", order)?;
-        let len = crate::geom::result_len(
-            "sampleDerivatives: us.length × coordinates",
-            &[us.len(), self.dim()],
-        )?;
+        let len = crate::geom::result_len("sample-derivatives-result", &[us.len(), self.dim()])?;
         let mut out = vec![0.0; len];
         with_curve!(&self.inner, c => c.sample_derivatives_into(us, order, &mut out))?;
         Ok(out)
     }
 
     /// `N_{i,p}(u)` for i = 0..n.
-    pub fn basis(&self, u: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis(&self, u: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => c.basis(u))?)
     }
 
     /// The p + 1 basis functions that can be non-zero at u, `N_{k−p,p}(u) … N_{k,p}(u)` with
     /// `k = span(u)`: what `basis(u)` holds at indices k − p … k, without the n − p zeros.
     #[wasm_bindgen(js_name = basisNonZero)]
-    pub fn basis_non_zero(&self, u: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis_non_zero(&self, u: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => c.basis_non_zero(u))?.1)
     }
 
     /// Every basis function at `count` equally spaced u over the domain, i-major:
     /// `N_{i,p}(u_j)` at index `i·count + j`.
     #[wasm_bindgen(js_name = basisCurves)]
-    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, ApiError> {
         let count = whole("count", count)?;
         Ok(with_curve!(&self.inner, c => c.basis_curves(count))?)
     }
@@ -157,7 +155,7 @@ impl JsBSplineCurve {
     /// Derivatives of every basis function at u: row d = 0..=order holds `N^{(d)}_{i,p}(u)`,
     /// i = 0..n, rows concatenated.
     #[wasm_bindgen(js_name = basisDerivatives)]
-    pub fn basis_derivatives(&self, u: f64, order: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis_derivatives(&self, u: f64, order: f64) -> Result<Vec<f64>, ApiError> {
         let order = whole("order", order)?;
         Ok(with_curve!(&self.inner, c => c.basis_derivatives_at(u, order))?)
     }
@@ -165,7 +163,7 @@ impl JsBSplineCurve {
     /// The Cox–de Boor triangle at u: `{ span: k, levels }` where `levels[r]` holds
     /// `N_{k−r,r}(u) … N_{k,r}(u)`.
     #[wasm_bindgen(js_name = basisTable, unchecked_return_type = "{ span: number; levels: number[][] }")]
-    pub fn basis_table(&self, u: f64) -> Result<JsValue, JsError> {
+    pub fn basis_table(&self, u: f64) -> Result<JsValue, ApiError> {
         let (span, levels) = with_curve!(&self.inner, c => c.basis_table(u))?;
         Ok(serde_wasm_bindgen::to_value(&BasisTableJs {
             span,
@@ -176,7 +174,7 @@ impl JsBSplineCurve {
     /// de Boor's triangle at u: levels concatenated, the p + 1 active points first, C(u) last;
     /// (p+1)(p+2)/2 points, flat. Rational curves give projected points.
     #[wasm_bindgen(js_name = deBoor)]
-    pub fn de_boor(&self, u: f64) -> Result<Vec<f64>, JsError> {
+    pub fn de_boor(&self, u: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor(u)?)))
     }
 
@@ -185,7 +183,7 @@ impl JsBSplineCurve {
     /// (k = span(u)); levels r = 1..p in order, j = r..p ascending (the order of `deBoor(u)`'s
     /// points after level 0), p(p+1)/2 alphas.
     #[wasm_bindgen(js_name = deBoorAlphas)]
-    pub fn de_boor_alphas(&self, u: f64) -> Result<Vec<f64>, JsError> {
+    pub fn de_boor_alphas(&self, u: f64) -> Result<Vec<f64>, ApiError> {
         let (_, alphas) = with_curve!(&self.inner, c => c.de_boor_alphas(u))?;
         Ok(alphas
             .iter()
@@ -204,13 +202,13 @@ impl JsBSplineCurve {
 
     /// de Boor's triangle on the homogeneous points, dim + 1 numbers each.
     #[wasm_bindgen(js_name = deBoorHomogeneous)]
-    pub fn de_boor_homogeneous(&self, u: f64) -> Result<Vec<f64>, JsError> {
+    pub fn de_boor_homogeneous(&self, u: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_curve!(&self.inner, c => flatten_points(&c.de_boor_homogeneous(u)?)))
     }
 
     /// A new curve with knot u inserted `times` times (default 1): same shape, more points.
     #[wasm_bindgen(js_name = insertKnot)]
-    pub fn insert_knot(&self, u: f64, times: Option<f64>) -> Result<JsBSplineCurve, JsError> {
+    pub fn insert_knot(&self, u: f64, times: Option<f64>) -> Result<JsBSplineCurve, ApiError> {
         let times = times.map(|v| whole("times", v)).transpose()?;
         let times = times.unwrap_or(1);
         Ok(JsBSplineCurve::wrap(
@@ -221,7 +219,7 @@ impl JsBSplineCurve {
     /// Boehm's rule for inserting u once: `{ span: k, alphas }` with `alphas[m]` =
     /// `α_i = (u − u_i)/(u_{i+p} − u_i)` for i = k − p + 1 + m (m = 0..p−1).
     #[wasm_bindgen(js_name = insertionAlphas, unchecked_return_type = "{ span: number; alphas: number[] }")]
-    pub fn insertion_alphas(&self, u: f64) -> Result<JsValue, JsError> {
+    pub fn insertion_alphas(&self, u: f64) -> Result<JsValue, ApiError> {
         let (span, alphas) = with_curve!(&self.inner, c => c.insertion_alphas(u))?;
         Ok(serde_wasm_bindgen::to_value(&InsertionAlphasJs {
             span,
@@ -233,7 +231,7 @@ impl JsBSplineCurve {
     pub fn refine(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
-    ) -> Result<JsBSplineCurve, JsError> {
+    ) -> Result<JsBSplineCurve, ApiError> {
         let us = &*numbers("us", &us)?;
         Ok(JsBSplineCurve::wrap(
             map_curve!(&self.inner, c => c.refine(us)?),
@@ -242,7 +240,7 @@ impl JsBSplineCurve {
 
     /// The Bézier segments, one per non-empty span, in span order, each on t ∈ [0, 1].
     #[wasm_bindgen(js_name = toBezier)]
-    pub fn to_bezier(&self) -> Result<Vec<JsBezierCurve>, JsError> {
+    pub fn to_bezier(&self) -> Result<Vec<JsBezierCurve>, ApiError> {
         Ok(match &self.inner {
             Curve::D2(c) => c
                 .to_bezier()?
@@ -260,7 +258,7 @@ impl JsBSplineCurve {
     /// `[{ knot, multiplicity, continuity }]` for each distinct interior knot: C^(p − r)
     /// (continuity −1 where the curve may break).
     #[wasm_bindgen(js_name = knotContinuity, unchecked_return_type = "{ knot: number; multiplicity: number; continuity: number }[]")]
-    pub fn knot_continuity(&self) -> Result<JsValue, JsError> {
+    pub fn knot_continuity(&self) -> Result<JsValue, ApiError> {
         let list: Vec<KnotContinuityJs> = with_curve!(&self.inner, c => c.knot_continuity())
             .into_iter()
             .map(|k| KnotContinuityJs {
@@ -275,7 +273,7 @@ impl JsBSplineCurve {
     /// The segment matrix of span k, row-major (p+1)×(p+1): `[x^p … 1] M [P_{k−p} … P_k]`, in
     /// the local t ∈ [0, 1] when `local` (default) or in the global u.
     #[wasm_bindgen(js_name = segmentMatrix)]
-    pub fn segment_matrix(&self, k: f64, local: Option<bool>) -> Result<Vec<f64>, JsError> {
+    pub fn segment_matrix(&self, k: f64, local: Option<bool>) -> Result<Vec<f64>, ApiError> {
         let k = whole("k", k)?;
         let m = with_curve!(&self.inner, c => c.segment_matrix(k, local.unwrap_or(true)))?;
         Ok(m.concat())
@@ -285,7 +283,7 @@ impl JsBSplineCurve {
     /// `[t^p … t 1]` (p + 1), the row `[t^p … 1] M` with M = segmentMatrix(k, true) (p + 1, the
     /// weights of P_{k−p} … P_k), then the point `[t^p … 1] M [P_{k−p} … P_k]^T` (dim).
     #[wasm_bindgen(js_name = evaluateMatrixForm)]
-    pub fn evaluate_matrix_form(&self, k: f64, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn evaluate_matrix_form(&self, k: f64, t: f64) -> Result<Vec<f64>, ApiError> {
         let k = whole("k", k)?;
         Ok(with_curve!(&self.inner, c => {
             let form = c.evaluate_matrix_form(k, t)?;
@@ -309,7 +307,7 @@ pub fn knot_vector(
     dim: f64,
     degree: f64,
     #[wasm_bindgen(unchecked_param_type = "string")] kind: JsValue,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Vec<f64>, ApiError> {
     let points = &*numbers("points", &points)?;
     let kind = &*string_arg("kind", &kind, None)?;
     let dim = whole("dim", dim)?;
@@ -329,7 +327,7 @@ pub fn parameterize(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "string | number")] kind: JsValue,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Vec<f64>, ApiError> {
     let points = &*numbers("points", &points)?;
     let alpha = kind.as_f64();
     let kind = match alpha {
@@ -354,7 +352,7 @@ pub fn phantom_points(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
     dim: f64,
     degree: f64,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Vec<f64>, ApiError> {
     let points = &*numbers("points", &points)?;
     let dim = whole("dim", dim)?;
     let degree = whole("degree", degree)?;
@@ -373,7 +371,7 @@ pub fn phantom_points(
 /// `uniformSegmentMatrix(p)`: the matrix of every interior segment of a uniform B-spline of
 /// degree p (row-major, (p+1)², highest power first), e.g. 1/6·[[−1,3,−3,1],…] for p = 3.
 #[wasm_bindgen(js_name = uniformSegmentMatrix)]
-pub fn uniform_segment_matrix(p: f64) -> Result<Vec<f64>, JsError> {
+pub fn uniform_segment_matrix(p: f64) -> Result<Vec<f64>, ApiError> {
     let p = whole("p", p)?;
     if p == 0 || p > crate::geom::MAX_DEGREE {
         return Err(Error::DegreeOutOfRange {

@@ -3,6 +3,7 @@
 //! [`class_curve_methods!`], the JS methods `BezierCurve` and `BSplineCurve` have in common.
 
 use crate::error::Error;
+use crate::wasm::ApiError;
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
@@ -118,13 +119,13 @@ macro_rules! class_curve_methods {
             }
 
             /// The point at the parameter (t of a Bézier curve, u of a B-spline): dim numbers.
-            pub fn evaluate(&self, $t: f64) -> Result<Vec<f64>, JsError> {
+            pub fn evaluate(&self, $t: f64) -> Result<Vec<f64>, ApiError> {
                 Ok(with_curve!(&self.inner, c => $crate::wasm::bezier::flatten_points(&[c.evaluate($t)?])))
             }
 
             /// The derivative of the given order at the parameter (order 0 = the point; above the
             /// degree of a polynomial curve, the zero vector).
-            pub fn derivative(&self, $t: f64, order: f64) -> Result<Vec<f64>, JsError> {
+            pub fn derivative(&self, $t: f64, order: f64) -> Result<Vec<f64>, ApiError> {
                 let order = $crate::wasm::whole("order", order)?;
                 Ok(with_curve!(&self.inner, c => $crate::wasm::bezier::flatten_points(&[c.derivative($t, order)?])))
             }
@@ -151,14 +152,14 @@ macro_rules! class_curve_methods {
             pub fn sample(
                 &self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] $ts: JsValue,
-            ) -> Result<Vec<f64>, JsError> {
+            ) -> Result<Vec<f64>, ApiError> {
                 let $ts = &*$crate::wasm::numbers(stringify!($ts), &$ts)?;
                 $crate::wasm::class::sample(&self.inner, $ts)
             }
 
             /// `count` points at equally spaced parameters over the whole domain, ends included.
             #[wasm_bindgen(js_name = sampleUniform)]
-            pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
+            pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, ApiError> {
                 let count = $crate::wasm::whole("count", count)?;
                 $crate::wasm::class::sample_uniform(&self.inner, count)
             }
@@ -169,7 +170,7 @@ macro_rules! class_curve_methods {
             /// on this curve and detached (length 0) when the wasm memory grows; read it at once,
             /// or `slice()` it to keep it.
             #[wasm_bindgen(js_name = sampleUniformView)]
-            pub fn sample_uniform_view(&mut self, count: f64) -> Result<js_sys::Float64Array, JsError> {
+            pub fn sample_uniform_view(&mut self, count: f64) -> Result<js_sys::Float64Array, ApiError> {
                 let count = $crate::wasm::whole("count", count)?;
                 $crate::wasm::class::sample_uniform_view(&self.inner, &mut self.view, count)
             }
@@ -179,7 +180,7 @@ macro_rules! class_curve_methods {
             pub fn sample_view(
                 &mut self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] $ts: JsValue,
-            ) -> Result<js_sys::Float64Array, JsError> {
+            ) -> Result<js_sys::Float64Array, ApiError> {
                 let $ts = &*$crate::wasm::numbers(stringify!($ts), &$ts)?;
                 $crate::wasm::class::sample_view(&self.inner, &mut self.view, $ts)
             }
@@ -191,19 +192,19 @@ macro_rules! class_curve_methods {
                 &mut self,
                 i: f64,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-            ) -> Result<(), JsError> {
+            ) -> Result<(), ApiError> {
                 $crate::wasm::class::set_control_point(&mut self.inner, i, &point)
             }
 
             /// Sets weight i (> 0) in place.
             #[wasm_bindgen(js_name = setWeight)]
-            pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), JsError> {
+            pub fn set_weight(&mut self, i: f64, w: f64) -> Result<(), ApiError> {
                 $crate::wasm::class::set_weight(&mut self.inner, i, w)
             }
 
             /// Curvature at the parameter: signed in 2D (positive turning left), ≥ 0 in 3D; Infinity
             /// at a cusp.
-            pub fn curvature(&self, $t: f64) -> Result<f64, JsError> {
+            pub fn curvature(&self, $t: f64) -> Result<f64, ApiError> {
                 Ok(with_curve!(&self.inner, c => c.curvature($t))?)
             }
 
@@ -263,33 +264,30 @@ pub(crate) fn set_control_point(
     curve: &mut impl ClassCurve,
     i: f64,
     point: &JsValue,
-) -> Result<(), JsError> {
+) -> Result<(), ApiError> {
     let point = super::numbers("point", point)?;
     curve.set_control_point(super::whole("i", i)?, &point)?;
     Ok(())
 }
 
 /// `setWeight(i, w)`, in place.
-pub(crate) fn set_weight(curve: &mut impl ClassCurve, i: f64, w: f64) -> Result<(), JsError> {
+pub(crate) fn set_weight(curve: &mut impl ClassCurve, i: f64, w: f64) -> Result<(), ApiError> {
     curve.set_weight(super::whole("i", i)?, w)?;
     Ok(())
 }
 
 /// `sample(params)`: a new array of `params.length · dim` numbers.
-pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>, JsError> {
-    let len = crate::geom::result_len(
-        "sample: params.length × coordinates",
-        &[params.len(), curve.dim()],
-    )?;
+pub(crate) fn sample(curve: &impl ClassCurve, params: &[f64]) -> Result<Vec<f64>, ApiError> {
+    let len = crate::geom::result_len("sample-params-result", &[params.len(), curve.dim()])?;
     let mut out = vec![0.0; len];
     curve.sample_into(params, &mut out)?;
     Ok(out)
 }
 
 /// `sampleUniform(count)`: a new array of `count · dim` numbers.
-pub(crate) fn sample_uniform(curve: &impl ClassCurve, count: usize) -> Result<Vec<f64>, JsError> {
+pub(crate) fn sample_uniform(curve: &impl ClassCurve, count: usize) -> Result<Vec<f64>, ApiError> {
     check_count(count)?;
-    let len = crate::geom::result_len("sampleUniform: count × coordinates", &[count, curve.dim()])?;
+    let len = crate::geom::result_len("sample-uniform-result", &[count, curve.dim()])?;
     let mut out = vec![0.0; len];
     curve.sample_uniform_into(count, &mut out)?;
     Ok(out)
@@ -301,11 +299,8 @@ pub(crate) fn sample_view(
     curve: &impl ClassCurve,
     buffer: &mut Vec<f64>,
     params: &[f64],
-) -> Result<Float64Array, JsError> {
-    let len = crate::geom::result_len(
-        "sampleView: params.length × coordinates",
-        &[params.len(), curve.dim()],
-    )?;
+) -> Result<Float64Array, ApiError> {
+    let len = crate::geom::result_len("sample-view-result", &[params.len(), curve.dim()])?;
     buffer.resize(len, 0.0);
     curve.sample_into(params, buffer)?;
     super::memory_view(buffer)
@@ -316,12 +311,9 @@ pub(crate) fn sample_uniform_view(
     curve: &impl ClassCurve,
     buffer: &mut Vec<f64>,
     count: usize,
-) -> Result<Float64Array, JsError> {
+) -> Result<Float64Array, ApiError> {
     check_count(count)?;
-    let len = crate::geom::result_len(
-        "sampleUniformView: count × coordinates",
-        &[count, curve.dim()],
-    )?;
+    let len = crate::geom::result_len("sample-uniform-view-result", &[count, curve.dim()])?;
     buffer.resize(len, 0.0);
     curve.sample_uniform_into(count, buffer)?;
     super::memory_view(buffer)

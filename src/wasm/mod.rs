@@ -1,7 +1,7 @@
 //! JavaScript bindings (wasm-bindgen): the only module that knows about JS.
 //!
 //! Thin wrappers: flat `Float64Array`s in and out, camelCase names, and every [`crate::Error`]
-//! turned into a thrown JS `Error` carrying its message (via `JsError`). No maths here.
+//! turned into a thrown JS `Error` carrying its message (via `ApiError`). No maths here.
 //! Nothing here may panic (a panic inside wasm kills the module for the whole page), which
 //! clippy enforces for this module tree.
 #![deny(
@@ -16,6 +16,7 @@ mod class;
 
 pub mod bezier;
 pub mod bspline;
+pub(crate) mod error;
 pub mod interp;
 pub mod rational;
 mod scratch;
@@ -26,6 +27,7 @@ mod surface_teaching;
 
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
+pub use error::ApiError;
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
 pub use surface_build::{extrude, interpolate_surface, interpolate_surface_params, revolve, ruled};
@@ -38,14 +40,14 @@ use wasm_bindgen::JsCast;
 /// A `Float64Array` viewing `buffer` where it lies in the wasm memory (no copy). It stays
 /// valid while `buffer` is neither moved nor freed and the memory does not grow (growing
 /// detaches every view: its length becomes 0).
-pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
+pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, ApiError> {
     let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory()
         .dyn_into()
-        .map_err(|_| JsError::new("the wasm memory is not a WebAssembly.Memory"))?;
+        .map_err(|_| ApiError::new("the wasm memory is not a WebAssembly.Memory"))?;
     let offset = u32::try_from(buffer.as_ptr() as usize)
-        .map_err(|_| JsError::new("the buffer lies outside 32-bit wasm memory"))?;
+        .map_err(|_| ApiError::new("the buffer lies outside 32-bit wasm memory"))?;
     let length = u32::try_from(buffer.len())
-        .map_err(|_| JsError::new("the buffer is too long for a Float64Array view"))?;
+        .map_err(|_| ApiError::new("the buffer is too long for a Float64Array view"))?;
     Ok(Float64Array::new_with_byte_offset_and_length(
         &memory.buffer(),
         offset,
@@ -54,10 +56,10 @@ pub(crate) fn memory_view(buffer: &[f64]) -> Result<Float64Array, JsError> {
 }
 
 /// What an array argument must be, for [`numbers`].
-pub(crate) const NUMBERS: &str = "an array of numbers (Float64Array or number[])";
+pub(crate) const NUMBERS: &str = "numbers";
 
 /// An object `{ key: Float64Array, … }`.
-pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, JsError> {
+pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, ApiError> {
     let object = js_sys::Object::new();
     for (key, values) in entries {
         js_sys::Reflect::set(
@@ -65,7 +67,7 @@ pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, JsError> 
             &JsValue::from_str(key),
             &js_sys::Float64Array::from(*values).into(),
         )
-        .map_err(|_| JsError::new("could not build the result object"))?;
+        .map_err(|_| ApiError::new("could not build the result object"))?;
     }
     Ok(object.into())
 }
@@ -76,7 +78,7 @@ pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, JsError> 
 /// error naming the argument: the glue would have failed with a `TypeError` naming nothing, or
 /// silently read a number or object as an empty array (which, repeated, even crashed Node 20).
 #[inline(never)]
-pub(crate) fn numbers(name: &'static str, value: &JsValue) -> Result<Vec<f64>, JsError> {
+pub(crate) fn numbers(name: &'static str, value: &JsValue) -> Result<Vec<f64>, ApiError> {
     if let Some(array) = value.dyn_ref::<Float64Array>() {
         return Ok(array.to_vec());
     }
@@ -96,7 +98,7 @@ pub(crate) fn numbers(name: &'static str, value: &JsValue) -> Result<Vec<f64>, J
 pub(crate) fn optional_numbers(
     name: &'static str,
     value: &JsValue,
-) -> Result<Option<Vec<f64>>, JsError> {
+) -> Result<Option<Vec<f64>>, ApiError> {
     if value.is_undefined() || value.is_null() {
         Ok(None)
     } else {
@@ -121,7 +123,7 @@ pub(crate) fn string_arg(
     name: &'static str,
     value: &JsValue,
     default: Option<&'static str>,
-) -> Result<String, JsError> {
+) -> Result<String, ApiError> {
     if let Some(s) = value.as_string() {
         return Ok(s);
     }
@@ -129,7 +131,7 @@ pub(crate) fn string_arg(
         Some(d) if value.is_undefined() || value.is_null() => Ok(d.into()),
         _ => Err(Error::ArgumentType {
             name,
-            expected: "a string",
+            expected: "string",
             got: type_name(value),
         }
         .into()),
@@ -141,15 +143,20 @@ pub(crate) fn string_arg(
 /// `usize` (`>>> 0`) would silently turn 2.5 into 2, −1 into 4294967295 and NaN or a missing
 /// argument into 0.
 #[inline(never)]
-pub(crate) fn whole(what: &str, value: f64) -> Result<usize, JsError> {
+pub(crate) fn whole(what: &'static str, value: f64) -> Result<usize, ApiError> {
+    whole_at(what, None, value)
+}
+
+/// As [`whole`], for element `index` of a list argument (`degrees[1]`).
+pub(crate) fn whole_at(
+    what: &'static str,
+    index: Option<usize>,
+    value: f64,
+) -> Result<usize, ApiError> {
     if (0.0..=f64::from(u32::MAX)).contains(&value) && value.fract() == 0.0 {
         Ok(value as usize)
     } else {
-        Err(Error::NotWholeNumber {
-            what: what.into(),
-            value,
-        }
-        .into())
+        Err(Error::NotWholeNumber { what, index, value }.into())
     }
 }
 

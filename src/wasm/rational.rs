@@ -8,13 +8,14 @@ use crate::bspline::BSplineCurve;
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::rational;
+use crate::wasm::ApiError;
 use glam::{DMat3, DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
 /// `circle(cx, cy, r)`: the full circle as the 9-point NURBS of degree 2 (knots
 /// 0,0,0,¼,¼,½,½,¾,¾,1,1,1), starting at angle 0 and running counter-clockwise.
 #[wasm_bindgen]
-pub fn circle(cx: f64, cy: f64, r: f64) -> Result<JsBSplineCurve, JsError> {
+pub fn circle(cx: f64, cy: f64, r: f64) -> Result<JsBSplineCurve, ApiError> {
     circular_arc(cx, cy, r, 0.0, std::f64::consts::TAU)
 }
 
@@ -27,7 +28,7 @@ pub fn circular_arc(
     r: f64,
     start_angle: f64,
     sweep: f64,
-) -> Result<JsBSplineCurve, JsError> {
+) -> Result<JsBSplineCurve, ApiError> {
     let c = rational::circular_arc(DVec2::new(cx, cy), r, start_angle, sweep)?;
     Ok(JsBSplineCurve::from_2d(c))
 }
@@ -41,7 +42,7 @@ pub fn ellipse(
     rx: f64,
     ry: f64,
     rotation: Option<f64>,
-) -> Result<JsBSplineCurve, JsError> {
+) -> Result<JsBSplineCurve, ApiError> {
     let c = rational::ellipse(DVec2::new(cx, cy), rx, ry, rotation.unwrap_or(0.0))?;
     Ok(JsBSplineCurve::from_2d(c))
 }
@@ -55,7 +56,7 @@ pub fn ellipse_arc(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] axis_y: JsValue,
     start: f64,
     sweep: f64,
-) -> Result<JsBSplineCurve, JsError> {
+) -> Result<JsBSplineCurve, ApiError> {
     let center = &*numbers("center", &center)?;
     let axis_x = &*numbers("axisX", &axis_x)?;
     let axis_y = &*numbers("axisY", &axis_y)?;
@@ -98,7 +99,7 @@ fn ellipse_arc_flat<C: Cartesian>(
 #[wasm_bindgen(js_name = circularArcBezier)]
 pub fn circular_arc_bezier(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] points: JsValue,
-) -> Result<JsBezierCurve, JsError> {
+) -> Result<JsBezierCurve, ApiError> {
     let points = &*numbers("points", &points)?;
     let pts: Vec<DVec2> = crate::geom::points_from_flat(points)?;
     match pts.as_slice() {
@@ -112,7 +113,7 @@ pub fn circular_arc_bezier(
 /// `conicKind(w0, w1, w2)`: "ellipse" | "parabola" | "hyperbola" for a rational quadratic with
 /// these weights (by the shape factor w1²/(w0·w2) against 1).
 #[wasm_bindgen(js_name = conicKind)]
-pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, JsError> {
+pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, ApiError> {
     Ok(rational::conic_kind(w0, w1, w2)?.name().into())
 }
 
@@ -121,7 +122,7 @@ fn matrix(m: &[f64]) -> Result<DMat3, Error> {
     let rows: &[f64; 9] = m
         .try_into()
         .map_err(|_| Error::MatrixSize { got: m.len() })?;
-    crate::geom::check_all_finite(rows, "matrix entry")?;
+    crate::geom::check_all_finite(rows, "matrix-entry")?;
     Ok(DMat3::from_cols_array(rows).transpose())
 }
 
@@ -135,7 +136,7 @@ macro_rules! projective_map_method {
             pub fn projective_map(
                 &self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m: JsValue,
-            ) -> Result<$ty, JsError> {
+            ) -> Result<$ty, ApiError> {
                 let m = matrix(&numbers("m", &m)?)?;
                 Ok($ty::from_2d($map(self.curve_2d("projectiveMap")?, &m)?))
             }
@@ -167,7 +168,7 @@ pub fn rational_poles(
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] weights: JsValue,
     count: f64,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, ApiError> {
     let points = &*numbers("points", &points)?;
     let weights = &*numbers("weights", &weights)?;
     let dim = whole("dim", dim)?;

@@ -4,6 +4,7 @@
 use super::bezier::point_from;
 use super::{memory_view, numbers, optional_numbers, whole};
 use crate::surface::{BSplineSurface, Mesh};
+use crate::wasm::ApiError;
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
@@ -33,7 +34,7 @@ impl JsBSplineSurface {
         #[wasm_bindgen(js_name = knotsU, unchecked_param_type = "Float64Array | number[]")] knots_u: JsValue,
         #[wasm_bindgen(js_name = knotsV, unchecked_param_type = "Float64Array | number[]")] knots_v: JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBSplineSurface, JsError> {
+    ) -> Result<JsBSplineSurface, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let knots_u = numbers("knotsU", &knots_u)?;
@@ -80,7 +81,7 @@ impl JsBSplineSurface {
     /// The same surface with the knot u inserted `times` times (default 1): a new row of
     /// control points each time (Boehm's algorithm on every column).
     #[wasm_bindgen(js_name = insertKnotU)]
-    pub fn insert_knot_u(&self, u: f64, times: Option<f64>) -> Result<JsBSplineSurface, JsError> {
+    pub fn insert_knot_u(&self, u: f64, times: Option<f64>) -> Result<JsBSplineSurface, ApiError> {
         let times = whole("times", times.unwrap_or(1.0))?;
         Ok(JsBSplineSurface::wrap(self.inner.insert_knot_u(u, times)?))
     }
@@ -88,7 +89,7 @@ impl JsBSplineSurface {
     /// The same surface with the knot v inserted `times` times (default 1): a new column each
     /// time (Boehm's algorithm on every row).
     #[wasm_bindgen(js_name = insertKnotV)]
-    pub fn insert_knot_v(&self, v: f64, times: Option<f64>) -> Result<JsBSplineSurface, JsError> {
+    pub fn insert_knot_v(&self, v: f64, times: Option<f64>) -> Result<JsBSplineSurface, ApiError> {
         let times = whole("times", times.unwrap_or(1.0))?;
         Ok(JsBSplineSurface::wrap(self.inner.insert_knot_v(v, times)?))
     }
@@ -123,7 +124,7 @@ impl JsBezierSurface {
         rows: f64,
         cols: f64,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] weights: JsValue,
-    ) -> Result<JsBezierSurface, JsError> {
+    ) -> Result<JsBezierSurface, ApiError> {
         let weights = optional_numbers("weights", &weights)?;
         let points = &*numbers("points", &points)?;
         let inner = BSplineSurface::bezier(
@@ -140,7 +141,7 @@ impl JsBezierSurface {
 
     /// The four patches of a split at (u, v), each on [0, 1]²: `[u ≤ u0 & v ≤ v0, u ≤ u0 &
     /// v ≥ v0, u ≥ u0 & v ≤ v0, u ≥ u0 & v ≥ v0]` (de Casteljau on every row, then every column).
-    pub fn split(&self, u: f64, v: f64) -> Result<Vec<JsBezierSurface>, JsError> {
+    pub fn split(&self, u: f64, v: f64) -> Result<Vec<JsBezierSurface>, ApiError> {
         Ok(self
             .inner
             .split_bezier(u, v)?
@@ -161,12 +162,12 @@ impl JsBezierSurface {
 }
 
 /// `{ positions, normals, uvs, indices }` as typed arrays.
-pub(super) fn mesh_to_js(mesh: &Mesh) -> Result<JsValue, JsError> {
+pub(super) fn mesh_to_js(mesh: &Mesh) -> Result<JsValue, ApiError> {
     let object = js_sys::Object::new();
     let set = |key: &str, value: &JsValue| {
         js_sys::Reflect::set(&object, &JsValue::from_str(key), value)
             .map(|_| ())
-            .map_err(|_| JsError::new("could not build the mesh object"))
+            .map_err(|_| ApiError::new("could not build the mesh object"))
     };
     set(
         "positions",
@@ -235,7 +236,7 @@ macro_rules! surface_methods {
             }
 
             /// `S(u, v)`: Float64Array(3).
-            pub fn evaluate(&self, u: f64, v: f64) -> Result<Vec<f64>, JsError> {
+            pub fn evaluate(&self, u: f64, v: f64) -> Result<Vec<f64>, ApiError> {
                 Ok(self.inner.evaluate(u, v)?.to_array().to_vec())
             }
 
@@ -246,7 +247,7 @@ macro_rules! surface_methods {
                 v: f64,
                 du: f64,
                 dv: f64,
-            ) -> Result<Vec<f64>, JsError> {
+            ) -> Result<Vec<f64>, ApiError> {
                 let (du, dv) = (whole("du", du)?, whole("dv", dv)?);
                 Ok(self.inner.derivative(u, v, du, dv)?.to_array().to_vec())
             }
@@ -269,7 +270,7 @@ macro_rules! surface_methods {
 
             /// The unit normal `S_u × S_v / |S_u × S_v|` at (u, v): Float64Array(3). At a collapsed
             /// edge or pole, the limit from inside the domain; throws where there is none.
-            pub fn normal(&self, u: f64, v: f64) -> Result<Vec<f64>, JsError> {
+            pub fn normal(&self, u: f64, v: f64) -> Result<Vec<f64>, ApiError> {
                 Ok(self.inner.normal(u, v)?.to_array().to_vec())
             }
 
@@ -280,7 +281,7 @@ macro_rules! surface_methods {
                 &self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] vs: JsValue,
-            ) -> Result<Vec<f64>, JsError> {
+            ) -> Result<Vec<f64>, ApiError> {
                 let (us, vs) = (numbers("us", &us)?, numbers("vs", &vs)?);
                 let mut out = Vec::new();
                 self.inner.sample_grid_into(&us, &vs, &mut out)?;
@@ -295,7 +296,7 @@ macro_rules! surface_methods {
                 &mut self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] us: JsValue,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] vs: JsValue,
-            ) -> Result<Float64Array, JsError> {
+            ) -> Result<Float64Array, ApiError> {
                 let (us, vs) = (numbers("us", &us)?, numbers("vs", &vs)?);
                 self.inner.sample_grid_into(&us, &vs, &mut self.view)?;
                 memory_view(&self.view)
@@ -309,7 +310,7 @@ macro_rules! surface_methods {
                 i: f64,
                 j: f64,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-            ) -> Result<(), JsError> {
+            ) -> Result<(), ApiError> {
                 let point = numbers("point", &point)?;
                 let point = point_from::<glam::DVec3>(&point)?;
                 Ok(self
@@ -319,7 +320,7 @@ macro_rules! surface_methods {
 
             /// Sets the weight (> 0) of control point (i, j) in place.
             #[wasm_bindgen(js_name = setWeight)]
-            pub fn set_weight(&mut self, i: f64, j: f64, w: f64) -> Result<(), JsError> {
+            pub fn set_weight(&mut self, i: f64, j: f64, w: f64) -> Result<(), ApiError> {
                 Ok(self.inner.set_weight(whole("i", i)?, whole("j", j)?, w)?)
             }
 
@@ -328,7 +329,7 @@ macro_rules! surface_methods {
             /// (u, v) over the domain (vertex a·(nv + 1) + b, its (u, v) in uvs), unit normals, and
             /// 2·nu·nv triangles counter-clockwise seen from the side the normals point to.
             #[wasm_bindgen(unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; uvs: Float32Array; indices: Uint32Array }")]
-            pub fn tessellate(&self, nu: f64, nv: f64) -> Result<JsValue, JsError> {
+            pub fn tessellate(&self, nu: f64, nv: f64) -> Result<JsValue, ApiError> {
                 let mesh = self.inner.tessellate(whole("nu", nu)?, whole("nv", nv)?)?;
                 mesh_to_js(&mesh)
             }

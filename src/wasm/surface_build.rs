@@ -7,6 +7,7 @@ use crate::bspline::{BSplineCurve, Parameterization};
 use crate::error::Error;
 use crate::geom::points_from_flat;
 use crate::surface;
+use crate::wasm::ApiError;
 use glam::DVec3;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -37,7 +38,7 @@ extern "C" {
 }
 
 /// What a curve argument must be.
-const CURVE: &str = "a BSplineCurve or BezierCurve";
+const CURVE: &str = "curve";
 
 /// The curve argument `name` as a core 3D B-spline: a `BSplineCurve` as it is, a
 /// `BezierCurve` on `[a, b]` with knots `a…a b…b` (n + 1 of each). Errors: not one of the two
@@ -46,7 +47,7 @@ fn curve_arg(
     name: &'static str,
     operation: &'static str,
     value: &JsValue,
-) -> Result<BSplineCurve<DVec3>, JsError> {
+) -> Result<BSplineCurve<DVec3>, ApiError> {
     let class = js_sys::Reflect::get(value, &JsValue::from_str("constructor"))
         .and_then(|c| js_sys::Reflect::get(&c, &JsValue::from_str("name")))
         .ok()
@@ -86,7 +87,7 @@ fn curve_arg(
 }
 
 /// The error for a curve argument that is neither class (or a freed one).
-fn not_a_curve(name: &'static str, value: &JsValue) -> JsError {
+fn not_a_curve(name: &'static str, value: &JsValue) -> ApiError {
     let got = if value.is_null() {
         "null".into()
     } else {
@@ -101,7 +102,7 @@ fn not_a_curve(name: &'static str, value: &JsValue) -> JsError {
 }
 
 /// A 3-number vector argument.
-fn vector_arg(name: &'static str, value: &JsValue) -> Result<DVec3, JsError> {
+fn vector_arg(name: &'static str, value: &JsValue) -> Result<DVec3, ApiError> {
     let v = numbers(name, value)?;
     match v.as_slice() {
         &[x, y, z] => Ok(DVec3::new(x, y, z)),
@@ -127,7 +128,7 @@ pub fn revolve(
     #[wasm_bindgen(js_name = axisDirection, unchecked_param_type = "Float64Array | number[]")]
     axis_direction: JsValue,
     angle: Option<f64>,
-) -> Result<JsBSplineSurface, JsError> {
+) -> Result<JsBSplineSurface, ApiError> {
     let profile = curve_arg("profile", "revolve", &profile)?;
     let axis_point = vector_arg("axisPoint", &axis_point)?;
     let axis_direction = vector_arg("axisDirection", &axis_direction)?;
@@ -146,7 +147,7 @@ pub fn revolve(
 pub fn extrude(
     #[wasm_bindgen(unchecked_param_type = "BSplineCurve | BezierCurve")] curve: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] direction: JsValue,
-) -> Result<JsBSplineSurface, JsError> {
+) -> Result<JsBSplineSurface, ApiError> {
     let curve = curve_arg("curve", "extrude", &curve)?;
     let direction = vector_arg("direction", &direction)?;
     Ok(JsBSplineSurface::wrap(surface::extrude(&curve, direction)?))
@@ -160,7 +161,7 @@ pub fn ruled(
     curve_a: JsValue,
     #[wasm_bindgen(js_name = curveB, unchecked_param_type = "BSplineCurve | BezierCurve")]
     curve_b: JsValue,
-) -> Result<JsBSplineSurface, JsError> {
+) -> Result<JsBSplineSurface, ApiError> {
     let a = curve_arg("curveA", "ruled", &curve_a)?;
     let b = curve_arg("curveB", "ruled", &curve_b)?;
     Ok(JsBSplineSurface::wrap(surface::ruled(&a, &b)?))
@@ -179,7 +180,7 @@ pub fn interpolate_surface(
     #[wasm_bindgen(js_name = degreeV)] degree_v: f64,
     #[wasm_bindgen(unchecked_optional_param_type = "\"uniform\" | \"chord\" | \"centripetal\"")]
     kind: JsValue,
-) -> Result<JsBSplineSurface, JsError> {
+) -> Result<JsBSplineSurface, ApiError> {
     let points = numbers("points", &points)?;
     let (rows, cols) = (whole("rows", rows)?, whole("cols", cols)?);
     let (degree_u, degree_v) = (whole("degreeU", degree_u)?, whole("degreeV", degree_v)?);
@@ -205,7 +206,7 @@ pub fn interpolate_surface_params(
     cols: f64,
     #[wasm_bindgen(unchecked_optional_param_type = "\"uniform\" | \"chord\" | \"centripetal\"")]
     kind: JsValue,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, ApiError> {
     let points = numbers("points", &points)?;
     let (rows, cols) = (whole("rows", rows)?, whole("cols", cols)?);
     let kind = Parameterization::parse(&string_arg("kind", &kind, Some("chord"))?)?;

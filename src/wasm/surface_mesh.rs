@@ -5,12 +5,13 @@ use super::bezier::point_from;
 use super::numbers;
 use super::surface::{mesh_to_js, JsBSplineSurface, JsBezierSurface};
 use crate::error::Error;
+use crate::wasm::ApiError;
 use glam::DVec3;
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
 /// A 3D point argument (3 numbers), the error naming it.
-fn point_arg(name: &'static str, value: &JsValue) -> Result<DVec3, JsError> {
+fn point_arg(name: &'static str, value: &JsValue) -> Result<DVec3, ApiError> {
     let coords = numbers(name, value)?;
     point_from::<DVec3>(&coords).map_err(|e| {
         Error::InArgument {
@@ -23,10 +24,10 @@ fn point_arg(name: &'static str, value: &JsValue) -> Result<DVec3, JsError> {
 }
 
 /// Sets `object[key] = value`.
-fn set(object: &js_sys::Object, key: &str, value: &JsValue) -> Result<(), JsError> {
+fn set(object: &js_sys::Object, key: &str, value: &JsValue) -> Result<(), ApiError> {
     js_sys::Reflect::set(object, &JsValue::from_str(key), value)
         .map(|_| ())
-        .map_err(|_| JsError::new("could not build the result object"))
+        .map_err(|_| ApiError::new("could not build the result object"))
 }
 
 /// `[knot, c, knot, c, …]` of a list of seams.
@@ -50,7 +51,7 @@ macro_rules! surface_mesh_methods {
             /// different depth; a plane gets 2 triangles per patch. Throws for a tolerance ≤ 0
             /// or NaN and for more than 2^16 vertices.
             #[wasm_bindgen(js_name = tessellateAdaptive, unchecked_return_type = "{ positions: Float32Array; normals: Float32Array; uvs: Float32Array; indices: Uint32Array }")]
-            pub fn tessellate_adaptive(&self, tolerance: f64) -> Result<JsValue, JsError> {
+            pub fn tessellate_adaptive(&self, tolerance: f64) -> Result<JsValue, ApiError> {
                 mesh_to_js(&self.inner.tessellate_adaptive(tolerance)?)
             }
 
@@ -66,7 +67,7 @@ macro_rules! surface_mesh_methods {
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")]
                 direction: JsValue,
                 tolerance: f64,
-            ) -> Result<Vec<f64>, JsError> {
+            ) -> Result<Vec<f64>, ApiError> {
                 let origin = point_arg("origin", &origin)?;
                 let direction = point_arg("direction", &direction)?;
                 let hits = self.inner.intersect_line(origin, direction, tolerance)?;
@@ -78,7 +79,7 @@ macro_rules! surface_mesh_methods {
             /// derivatives of orders 0..k equal across the seam (relative 1e-9), −1 for a gap.
             /// Empty lists on a Bézier patch.
             #[wasm_bindgen(unchecked_return_type = "{ u: Float64Array; v: Float64Array }")]
-            pub fn seams(&self) -> Result<JsValue, JsError> {
+            pub fn seams(&self) -> Result<JsValue, ApiError> {
                 let (u, v) = self.inner.seams()?;
                 let object = js_sys::Object::new();
                 set(&object, "u", &flat_seams(&u).into())?;
@@ -98,7 +99,7 @@ impl JsBSplineSurface {
     /// a·(spans in v) + b is the a-th u span × the b-th v span. Rational surfaces give rational
     /// patches.
     #[wasm_bindgen(js_name = toBezierPatches)]
-    pub fn to_bezier_patches(&self) -> Result<Vec<JsBezierSurface>, JsError> {
+    pub fn to_bezier_patches(&self) -> Result<Vec<JsBezierSurface>, ApiError> {
         Ok(self
             .inner
             .to_bezier_patches()?

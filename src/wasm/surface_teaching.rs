@@ -9,15 +9,16 @@ use crate::bezier::BezierCurve;
 use crate::error::Error;
 use crate::prelude::*;
 use crate::surface::BSplineSurface;
+use crate::wasm::ApiError;
 use wasm_bindgen::prelude::*;
 
 /// `S.curvature(u, v)` and `S.curvatures(uvs)` on the core surface.
-fn curvature(surface: &BSplineSurface, u: f64, v: f64) -> Result<Vec<f64>, JsError> {
+fn curvature(surface: &BSplineSurface, u: f64, v: f64) -> Result<Vec<f64>, ApiError> {
     Ok(surface.curvature(u, v)?.to_vec())
 }
 
 /// `S.curvatures(uvs)`: `[K0, H0, K1, H1, …]`.
-fn curvatures(surface: &BSplineSurface, uvs: &JsValue) -> Result<Vec<f64>, JsError> {
+fn curvatures(surface: &BSplineSurface, uvs: &JsValue) -> Result<Vec<f64>, ApiError> {
     let uvs = numbers("uvs", uvs)?;
     let mut out = Vec::new();
     surface.curvatures_into(&uvs, &mut out)?;
@@ -32,14 +33,14 @@ macro_rules! surface_teaching_methods {
             /// The curve at constant u, running in v (3D, rational when the surface is): the
             /// columns of the net blended by the u basis at u.
             #[wasm_bindgen(js_name = isoCurveU)]
-            pub fn iso_curve_u(&self, u: f64) -> Result<$curve_ty, JsError> {
+            pub fn iso_curve_u(&self, u: f64) -> Result<$curve_ty, ApiError> {
                 let $curve = self.inner.iso_curve_u(u)?;
                 Ok($wrap)
             }
 
             /// The curve at constant v, running in u (3D, rational when the surface is).
             #[wasm_bindgen(js_name = isoCurveV)]
-            pub fn iso_curve_v(&self, v: f64) -> Result<$curve_ty, JsError> {
+            pub fn iso_curve_v(&self, v: f64) -> Result<$curve_ty, ApiError> {
                 let $curve = self.inner.iso_curve_v(v)?;
                 Ok($wrap)
             }
@@ -48,7 +49,7 @@ macro_rules! surface_teaching_methods {
             /// derivatives, H signed with the normal S_u × S_v normalised (H > 0 where the
             /// surface bends towards it). Throws naming (u, v) where there is no normal (a pole,
             /// a collapsed edge, a fold).
-            pub fn curvature(&self, u: f64, v: f64) -> Result<Vec<f64>, JsError> {
+            pub fn curvature(&self, u: f64, v: f64) -> Result<Vec<f64>, ApiError> {
                 curvature(&self.inner, u, v)
             }
 
@@ -59,7 +60,7 @@ macro_rules! surface_teaching_methods {
                 &self,
                 #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")]
                 uvs: JsValue,
-            ) -> Result<Vec<f64>, JsError> {
+            ) -> Result<Vec<f64>, ApiError> {
                 curvatures(&self.inner, &uvs)
             }
         }
@@ -91,7 +92,7 @@ impl JsBezierSurface {
         u: f64,
         v: f64,
         #[wasm_bindgen(unchecked_optional_param_type = "\"rows\" | \"columns\"")] order: JsValue,
-    ) -> Result<JsValue, JsError> {
+    ) -> Result<JsValue, ApiError> {
         let order = string_arg("order", &order, Some("rows"))?;
         let columns_first = match order.as_str() {
             "rows" => false,
@@ -123,7 +124,7 @@ impl JsBezierSurface {
         js_name = matrixForm,
         unchecked_return_type = "{ basisU: Float64Array; basisV: Float64Array; coefficients: Float64Array }"
     )]
-    pub fn matrix_form(&self) -> Result<JsValue, JsError> {
+    pub fn matrix_form(&self) -> Result<JsValue, ApiError> {
         let form = self.inner.matrix_form()?;
         object_of(&[
             ("basisU", &form.basis_u),

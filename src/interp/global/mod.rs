@@ -34,7 +34,7 @@ mod system;
 pub use system::RowKind;
 
 use crate::bspline::{BSplineCurve, BasisScratch, KnotVector};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate_of, check_finite, Error, Result};
 use crate::geom::Cartesian;
 use system::Collocation;
 
@@ -92,7 +92,7 @@ pub struct InterpolationSystem<C> {
 }
 
 /// The system's name in [`Error::SingularSystem`].
-const WHAT: &str = "the B-spline interpolation system";
+const WHAT: &str = "bspline-interpolation-system";
 
 /// The B-spline of degree `degree` (1..=10) through `points` at `params`, `C(t_i) = p_i`.
 ///
@@ -166,14 +166,11 @@ pub(crate) fn check_data_shape(
     check_interpolation_degree(degree)?;
     check_point_cap(count)?;
     let (needed, what) = if closed {
-        (
-            3.max(degree + 1),
-            "a closed interpolating B-spline of this degree (p + 1, at least 3)",
-        )
+        (3.max(degree + 1), "closed-interpolating-bspline")
     } else {
         (
             2.max((degree + 1).saturating_sub(derivatives)),
-            "an interpolating B-spline of this degree (p + 1 − end derivatives, at least 2)",
+            "interpolating-bspline",
         )
     };
     if count < needed {
@@ -190,7 +187,7 @@ pub(crate) fn check_data_shape(
 pub(crate) fn check_point_cap(count: usize) -> Result<()> {
     if count > MAX_INTERPOLATION_POINTS {
         return Err(Error::TooLarge {
-            what: "number of data points",
+            what: "data-point-count",
             value: count,
             max: MAX_INTERPOLATION_POINTS,
         });
@@ -213,7 +210,7 @@ pub(crate) fn check_interpolation_degree(degree: usize) -> Result<()> {
 pub(crate) fn check_points<C: Cartesian>(points: &[C]) -> Result<()> {
     for (i, p) in points.iter().enumerate() {
         for k in 0..C::DIM {
-            check_finite(|| format!("coordinate {}", i * C::DIM + k), p.coord(k))?;
+            check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
         }
     }
     Ok(())
@@ -246,16 +243,13 @@ pub(crate) fn check_params_in_domain(params: &[f64], knots: &KnotVector) -> Resu
 fn conflict_with_closed<C>(
     options: &InterpolationOptions<C>,
 ) -> Option<(&'static str, &'static str)> {
-    const NO_ENDS: &str = "a closed curve has no ends";
+    const NO_ENDS: &str = "closed-has-no-ends";
     if options.start_derivative.is_some() {
         Some(("startDerivative", NO_ENDS))
     } else if options.end_derivative.is_some() {
         Some(("endDerivative", NO_ENDS))
     } else if options.knots.is_some() {
-        Some((
-            "knots",
-            "a closed curve's knots are the periodic ones computed from the params",
-        ))
+        Some(("knots", "closed-knots-computed"))
     } else {
         None
     }
@@ -317,7 +311,7 @@ impl Setup {
         ] {
             if let Some(d) = d {
                 for (k, &v) in d.iter().enumerate() {
-                    check_finite(|| format!("{name} coordinate {k}"), v)?;
+                    check_coordinate_of(name, k, v)?;
                 }
             }
         }
@@ -370,7 +364,7 @@ impl Setup {
         let size = self.rows.size;
         if size > MAX_SYSTEM_SIZE {
             return Err(Error::TooLarge {
-                what: "the interpolation system's size (unknowns)",
+                what: "interpolation-system-size",
                 value: size,
                 max: MAX_SYSTEM_SIZE,
             });

@@ -106,7 +106,7 @@ pub fn check_grid(
                 Error::TooFewDataPoints {
                     needed,
                     got: count,
-                    what: "an interpolating surface of this degree (degree + 1 per direction)",
+                    what: "interpolating-surface",
                 },
             ));
         }

@@ -11,7 +11,7 @@ pub use revolve::{revolve, MAX_REVOLUTION_ARC};
 pub use sweep::{extrude, ruled};
 
 use crate::bspline::BSplineCurve;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate_of, Error, Result};
 use crate::geom::Cartesian;
 use crate::prelude::*;
 use glam::{DVec3, DVec4};
@@ -44,7 +44,7 @@ fn curve_3d<C: Cartesian>(
 /// A 3D vector argument: every coordinate finite (the error names `name` and the coordinate).
 fn check_vector(name: &'static str, v: DVec3) -> Result<()> {
     for (k, c) in v.to_array().into_iter().enumerate() {
-        check_finite(|| format!("{name} coordinate {k}"), c)?;
+        check_coordinate_of(name, k, c)?;
     }
     Ok(())
 }

@@ -40,7 +40,7 @@ pub fn revolve<C: Cartesian>(
     let profile = curve_3d(profile, "revolve")?;
     check_vector("axisPoint", axis_point)?;
     check_direction("axisDirection", axis_direction)?;
-    check_finite(|| "angle".into(), angle)?;
+    check_finite("angle", None, angle)?;
     if !(angle > 0.0 && angle <= TAU * (1.0 + 1e-12)) {
         return Err(Error::InvalidSweep { sweep: angle });
     }

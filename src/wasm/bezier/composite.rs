@@ -5,7 +5,8 @@ use crate::bezier::{self, CompositeCurve, Continuity, JoinRule, DEFAULT_CONTINUI
 use crate::error::Error;
 use crate::geom::check_dim;
 use crate::prelude::*;
-use crate::wasm::{numbers, optional_numbers, scratch, string_arg, whole};
+use crate::wasm::ApiError;
+use crate::wasm::{numbers, optional_numbers, scratch, string_arg, whole, whole_at};
 use glam::{DVec2, DVec3};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -40,7 +41,7 @@ pub fn joint_continuity(
     left: &JsBezierCurve,
     right: &JsBezierCurve,
     tolerance: Option<f64>,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, ApiError> {
     let tol = tolerance.unwrap_or(DEFAULT_CONTINUITY_TOLERANCE);
     let k = match (&left.inner, &right.inner) {
         (Curve::D2(l), Curve::D2(r)) => bezier::check_continuity(l, r, tol)?,
@@ -58,7 +59,7 @@ pub fn join_bezier(
     right: &JsBezierCurve,
     #[wasm_bindgen(unchecked_param_type = "string")] rule: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "string")] adjust: JsValue,
-) -> Result<Vec<JsBezierCurve>, JsError> {
+) -> Result<Vec<JsBezierCurve>, ApiError> {
     let rule = &*string_arg("rule", &rule, None)?;
     let rule = JoinRule::parse(rule)?;
     let adjust_right = match string_arg("adjust", &adjust, Some("right"))?.as_str() {
@@ -143,7 +144,7 @@ impl JsCompositeBezier {
         dim: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] degrees: JsValue,
         #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] breaks: JsValue,
-    ) -> Result<JsCompositeBezier, JsError> {
+    ) -> Result<JsCompositeBezier, ApiError> {
         let breaks = optional_numbers("breaks", &breaks)?;
         let points = &*numbers("points", &points)?;
         let degrees = &*numbers("degrees", &degrees)?;
@@ -151,8 +152,8 @@ impl JsCompositeBezier {
         let degrees = degrees
             .iter()
             .enumerate()
-            .map(|(i, &d)| whole(&format!("degree {i}"), d))
-            .collect::<Result<Vec<usize>, JsError>>()?;
+            .map(|(i, &d)| whole_at("degrees", Some(i), d))
+            .collect::<Result<Vec<usize>, ApiError>>()?;
         let breaks = breaks.as_deref();
         let inner = match check_dim(dim)? {
             2 => Composite::D2(CompositeCurve::from_flat(points, &degrees, breaks)?),
@@ -174,7 +175,7 @@ impl JsCompositeBezier {
     }
 
     /// Piece i as a `BezierCurve` on its own interval (a copy).
-    pub fn piece(&self, i: f64) -> Result<JsBezierCurve, JsError> {
+    pub fn piece(&self, i: f64) -> Result<JsBezierCurve, ApiError> {
         let i = whole("i", i)?;
         let count = self.piece_count();
         let inner = match &self.inner {
@@ -187,12 +188,12 @@ impl JsCompositeBezier {
     }
 
     /// The point at the global parameter t (the right piece at a joint).
-    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_composite!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
     }
 
     /// The derivative of the given order at t (the right piece's at a joint).
-    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
+    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, ApiError> {
         let order = whole("order", order)?;
         Ok(with_composite!(&self.inner, c => flatten_points(&[c.derivative(t, order)?])))
     }
@@ -217,13 +218,13 @@ impl JsCompositeBezier {
     pub fn sample(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let ts = &*numbers("ts", &ts)?;
         let dim = match &self.inner {
             Composite::D2(_) => 2,
             Composite::D3(_) => 3,
         };
-        let len = crate::geom::result_len("sample: ts.length × coordinates", &[ts.len(), dim])?;
+        let len = crate::geom::result_len("sample-ts-result", &[ts.len(), dim])?;
         let mut out = vec![0.0; len];
         with_composite!(&self.inner, c => c.sample_into(ts, &mut out))?;
         Ok(out)
@@ -231,7 +232,7 @@ impl JsCompositeBezier {
 
     /// `[{ c, g }, …]`: the continuity at each joint (see `jointContinuity`).
     #[wasm_bindgen(unchecked_return_type = "{ c: number; g: number }[]")]
-    pub fn continuity(&self, tolerance: Option<f64>) -> Result<JsValue, JsError> {
+    pub fn continuity(&self, tolerance: Option<f64>) -> Result<JsValue, ApiError> {
         let ks = with_composite!(&self.inner, c => c.continuity(tolerance.unwrap_or(DEFAULT_CONTINUITY_TOLERANCE))?);
         let out: Vec<ContinuityJs> = ks.into_iter().map(ContinuityJs::from).collect();
         Ok(serde_wasm_bindgen::to_value(&out)?)

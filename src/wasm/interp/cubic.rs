@@ -7,6 +7,7 @@ use super::{vector_arg, ParamArg};
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::interp::{check_point_count, CubicSpline, EndCondition, ParamChoice};
+use crate::wasm::ApiError;
 use crate::wasm::{numbers, optional_numbers, string_arg, whole};
 use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
@@ -45,7 +46,7 @@ fn build_cubic<C: Cartesian>(
     start_tangent: Option<&[f64]>,
     end_tangent: Option<&[f64]>,
 ) -> Result<CubicSpline<C>, Error> {
-    let (points, choice) = points_and_params::<C>(coords, params, "a cubic spline")?;
+    let (points, choice) = points_and_params::<C>(coords, params, "cubic-spline")?;
     // Parse the name before reading the tangents, so an unknown name is reported first.
     EndCondition::<C>::parse(end, Some(C::ZERO), Some(C::ZERO))?;
     let start = start_tangent
@@ -74,7 +75,7 @@ pub fn cubic_spline(
     #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")]
     start_tangent: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "Float64Array | number[]")] end_tangent: JsValue,
-) -> Result<JsCubicSpline, JsError> {
+) -> Result<JsCubicSpline, ApiError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let end = string_arg("end", &end, Some("natural"))?;
@@ -89,7 +90,7 @@ fn build_hermite<C: Cartesian>(
     params: ParamArg,
     tangents: &[f64],
 ) -> Result<CubicSpline<C>, Error> {
-    let (points, choice) = points_and_params::<C>(coords, params, "a Hermite spline")?;
+    let (points, choice) = points_and_params::<C>(coords, params, "hermite-spline")?;
     if tangents.len() != coords.len() {
         return Err(Error::ArgumentLength {
             name: "tangents",
@@ -111,7 +112,7 @@ pub fn hermite_spline(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
     params: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] tangents: JsValue,
-) -> Result<JsCubicSpline, JsError> {
+) -> Result<JsCubicSpline, ApiError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let tangents = &*numbers("tangents", &tangents)?;
@@ -123,7 +124,7 @@ fn build_cardinal<C: Cartesian>(
     params: ParamArg,
     tension: f64,
 ) -> Result<CubicSpline<C>, Error> {
-    let (points, choice) = points_and_params::<C>(coords, params, "a cardinal spline")?;
+    let (points, choice) = points_and_params::<C>(coords, params, "cardinal-spline")?;
     CubicSpline::cardinal(points, choice, tension)
 }
 
@@ -138,7 +139,7 @@ pub fn cardinal_spline(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
     params: JsValue,
     tension: Option<f64>,
-) -> Result<JsCubicSpline, JsError> {
+) -> Result<JsCubicSpline, ApiError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let c = tension.unwrap_or(0.0);
@@ -166,7 +167,7 @@ pub fn catmull_rom(
     dim: f64,
     alpha: Option<f64>,
     closed: Option<bool>,
-) -> Result<JsCubicSpline, JsError> {
+) -> Result<JsCubicSpline, ApiError> {
     let points = &*numbers("points", &points)?;
     let alpha = alpha.unwrap_or(0.5);
     let closed = closed.unwrap_or(false);
@@ -174,7 +175,7 @@ pub fn catmull_rom(
 }
 
 fn build_bessel<C: Cartesian>(coords: &[f64], params: ParamArg) -> Result<CubicSpline<C>, Error> {
-    let (points, choice) = points_and_params::<C>(coords, params, "a Bessel spline")?;
+    let (points, choice) = points_and_params::<C>(coords, params, "bessel-spline")?;
     CubicSpline::bessel(points, choice)
 }
 
@@ -186,7 +187,7 @@ pub fn bessel_spline(
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
     params: JsValue,
-) -> Result<JsCubicSpline, JsError> {
+) -> Result<JsCubicSpline, ApiError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     spline_by_dim!(dim, build_bessel(points, params))

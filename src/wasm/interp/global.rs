@@ -9,6 +9,7 @@ use crate::geom::{check_dim, check_flat};
 use crate::interp::global::{check_data_shape, Setup};
 use crate::interp::least_squares::{approximate_flat, check_fit_shape, curve_from};
 use crate::interp::InterpolationOptions;
+use crate::wasm::ApiError;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -39,7 +40,7 @@ impl RawOptions {
     fn read(
         options: &JsValue,
         (allowed, listed): (&[&str], &'static str),
-    ) -> Result<Self, JsError> {
+    ) -> Result<Self, ApiError> {
         let mut out = RawOptions::default();
         if options.is_undefined() || options.is_null() {
             return Ok(out);
@@ -49,7 +50,7 @@ impl RawOptions {
             _ => {
                 return Err(Error::ArgumentType {
                     name: "options",
-                    expected: "an object",
+                    expected: "object",
                     got: type_name(options),
                 }
                 .into())
@@ -66,7 +67,7 @@ impl RawOptions {
                 .into());
             }
             let value = js_sys::Reflect::get(object, &JsValue::from_str(&key))
-                .map_err(|_| JsError::new("options: a key could not be read"))?;
+                .map_err(|_| ApiError::new("options: a key could not be read"))?;
             match key.as_str() {
                 "knots" => out.knots = optional_numbers("knots", &value)?,
                 "startDerivative" => {
@@ -79,7 +80,7 @@ impl RawOptions {
                     } else {
                         value.as_bool().ok_or_else(|| Error::ArgumentType {
                             name: "closed",
-                            expected: "a boolean",
+                            expected: "boolean",
                             got: type_name(&value),
                         })?
                     }
@@ -126,7 +127,7 @@ fn type_name(value: &JsValue) -> String {
     if value.is_null() {
         "null".into()
     } else if js_sys::Array::is_array(value) {
-        "an array".into()
+        "array".into()
     } else {
         value.js_typeof().as_string().unwrap_or_default()
     }
@@ -149,7 +150,7 @@ impl FitArgs {
         params: &JsValue,
         options: &JsValue,
         allowed: (&'static [&'static str], &'static str),
-    ) -> Result<Self, JsError> {
+    ) -> Result<Self, ApiError> {
         let options = RawOptions::read(options, allowed)?;
         let points = numbers("points", points)?;
         let params = ParamArg::read(params)?;
@@ -204,7 +205,7 @@ pub fn interpolate_bspline(
         unchecked_optional_param_type = "{ knots?: Float64Array | number[]; startDerivative?: Float64Array | number[]; endDerivative?: Float64Array | number[]; closed?: boolean }"
     )]
     options: JsValue,
-) -> Result<JsBSplineCurve, JsError> {
+) -> Result<JsBSplineCurve, ApiError> {
     let args = FitArgs::read(
         &points,
         dim,
@@ -236,7 +237,7 @@ pub fn approximate_bspline(
     params: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "{ knots?: Float64Array | number[] }")]
     options: JsValue,
-) -> Result<JsBSplineCurve, JsError> {
+) -> Result<JsBSplineCurve, ApiError> {
     let args = FitArgs::read(
         &points,
         dim,
@@ -295,7 +296,7 @@ pub fn bspline_interpolation_system(
         unchecked_optional_param_type = "{ knots?: Float64Array | number[]; startDerivative?: Float64Array | number[]; endDerivative?: Float64Array | number[]; closed?: boolean }"
     )]
     options: JsValue,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, ApiError> {
     let args = FitArgs::read(
         &points,
         dim,

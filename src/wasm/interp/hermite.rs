@@ -4,6 +4,7 @@ use super::flat_points;
 use crate::error::{check_finite, Error};
 use crate::geom::check_dim;
 use crate::interp::{hermite_basis, hermite_basis_derivative, hermite_to_bezier};
+use crate::wasm::ApiError;
 use crate::wasm::{numbers, whole};
 use glam::DVec3;
 use wasm_bindgen::prelude::*;
@@ -12,9 +13,9 @@ use wasm_bindgen::prelude::*;
 /// `H1 = −2s³ + 3s²`, `H2 = s³ − 2s² + s`, `H3 = s³ − s²` (order 1: their derivatives). Any
 /// finite s (the curve piece uses [0, 1]).
 #[wasm_bindgen(js_name = hermiteBasis)]
-pub fn hermite_basis_js(s: f64, order: Option<f64>) -> Result<Vec<f64>, JsError> {
+pub fn hermite_basis_js(s: f64, order: Option<f64>) -> Result<Vec<f64>, ApiError> {
     let order = order.map(|o| whole("order", o)).transpose()?.unwrap_or(0);
-    check_finite(|| "s".into(), s)?;
+    check_finite("s", None, s)?;
     Ok(match order {
         0 => hermite_basis(s).to_vec(),
         1 => hermite_basis_derivative(s).to_vec(),
@@ -66,12 +67,12 @@ pub fn hermite_bezier(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] p1: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] m1: JsValue,
     delta: Option<f64>,
-) -> Result<Vec<f64>, JsError> {
+) -> Result<Vec<f64>, ApiError> {
     let p0 = numbers("p0", &p0)?;
     let m0 = numbers("m0", &m0)?;
     let p1 = numbers("p1", &p1)?;
     let m1 = numbers("m1", &m1)?;
-    let delta = check_finite(|| "delta".into(), delta.unwrap_or(1.0))?;
+    let delta = check_finite("delta", None, delta.unwrap_or(1.0))?;
     let args = [("p0", &*p0), ("m0", &*m0), ("p1", &*p1), ("m1", &*m1)];
     Ok(bezier_points(args, check_dim(p0.len())?, delta)?)
 }

@@ -5,6 +5,7 @@ use crate::error::Error;
 use crate::geom::check_dim;
 use crate::interp::{check_point_count, LagrangeCurve};
 use crate::wasm::class::check_count;
+use crate::wasm::ApiError;
 use crate::wasm::{numbers, whole};
 use glam::DVec3;
 use wasm_bindgen::prelude::*;
@@ -24,7 +25,7 @@ pub struct JsLagrangeCurve {
 /// (whose kind or α is read only after the count).
 fn build(coords: &[f64], dim: usize, params: ParamArg) -> Result<LagrangeCurve<DVec3>, Error> {
     let points = lift_points(coords, dim)?;
-    check_point_count(points.len(), 2, "a Lagrange curve")?;
+    check_point_count(points.len(), 2, "lagrange-curve")?;
     LagrangeCurve::with_params(points, params.choice()?)
 }
 
@@ -37,7 +38,7 @@ pub fn lagrange(
     dim: f64,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[] | string | number")]
     params: JsValue,
-) -> Result<JsLagrangeCurve, JsError> {
+) -> Result<JsLagrangeCurve, ApiError> {
     let points = &*numbers("points", &points)?;
     let params = ParamArg::read(&params)?;
     let dim = check_dim(whole("dim", dim)?)?;
@@ -76,7 +77,7 @@ impl JsLagrangeCurve {
     }
 
     /// The point at t (dim numbers; exactly `p_i` at `t_i`).
-    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(flat_points(&[self.inner.evaluate(t)?], self.dim))
     }
 
@@ -94,9 +95,9 @@ impl JsLagrangeCurve {
     pub fn sample(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let ts = &*numbers("ts", &ts)?;
-        let len = crate::geom::result_len("sample: ts.length × coordinates", &[ts.len(), 3])?;
+        let len = crate::geom::result_len("sample-ts-result", &[ts.len(), 3])?;
         let mut out = vec![0.0; len];
         self.inner.sample_into(ts, &mut out)?;
         Ok(narrow(out, self.dim))
@@ -104,31 +105,31 @@ impl JsLagrangeCurve {
 
     /// `count` points at equally spaced t over the domain, ends included, flat.
     #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
+    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, ApiError> {
         let count = whole("count", count)?;
         check_count(count)?;
-        let len = crate::geom::result_len("sampleUniform: count × coordinates", &[count, 3])?;
+        let len = crate::geom::result_len("sample-uniform-result", &[count, 3])?;
         let mut out = vec![0.0; len];
         self.inner.sample_uniform_into(count, &mut out)?;
         Ok(narrow(out, self.dim))
     }
 
     /// Every `L_i(t)`, i = 0..n (n + 1 numbers, summing to 1).
-    pub fn basis(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(self.inner.basis(t)?)
     }
 
     /// Every `L_i` at `count` equally spaced t over the domain (the t of `sampleUniform`),
     /// i-major: `(n + 1)·count` numbers, value k of function i at `i·count + k`.
     #[wasm_bindgen(js_name = basisCurves)]
-    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, JsError> {
+    pub fn basis_curves(&self, count: f64) -> Result<Vec<f64>, ApiError> {
         let count = whole("count", count)?;
         Ok(self.inner.basis_curves(count)?)
     }
 
     /// Aitken's triangle at t, flat: level 0 the n + 1 points, then level r = 1..n with the
     /// n + 1 − r points `p_i^r`; (n+1)(n+2)/2 points, the last is P(t).
-    pub fn aitken(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn aitken(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(flat_points(&self.inner.aitken(t)?, self.dim))
     }
 
@@ -139,7 +140,7 @@ impl JsLagrangeCurve {
         &mut self,
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), ApiError> {
         let point = numbers("point", &point)?;
         let i = whole("i", i)?;
         let p = lift_point(&point, self.dim)?;

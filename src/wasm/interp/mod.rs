@@ -16,6 +16,7 @@ use crate::bspline::Parameterization;
 use crate::error::Error;
 use crate::geom::{points_from_flat, Point};
 use crate::interp::ParamChoice;
+use crate::wasm::ApiError;
 use glam::{DVec2, DVec3};
 use wasm_bindgen::prelude::*;
 
@@ -31,7 +32,7 @@ enum ParamArg {
 impl ParamArg {
     /// Reads the argument: a string, a number, else an array of numbers (error naming `params`).
     #[inline(never)]
-    fn read(value: &JsValue) -> Result<Self, JsError> {
+    fn read(value: &JsValue) -> Result<Self, ApiError> {
         if let Some(s) = value.as_string() {
             Ok(ParamArg::Kind(s))
         } else if let Some(a) = value.as_f64() {

@@ -9,6 +9,7 @@ use crate::interp::{bezier_points, bspline_form, CubicSpline, TangentRule};
 use crate::prelude::*;
 use crate::wasm::bezier::{flatten_points, point_from};
 use crate::wasm::class::check_count;
+use crate::wasm::ApiError;
 use crate::wasm::{memory_view, numbers, whole, JsBSplineCurve, JsCompositeBezier};
 use glam::{DVec2, DVec3};
 use serde::Serialize;
@@ -81,10 +82,7 @@ impl JsCubicSpline {
 
     /// The derivative of `order` at every t of `ts` into `out` (resized).
     fn sample_into(&self, ts: &[f64], order: usize, out: &mut Vec<f64>) -> Result<(), Error> {
-        let len = crate::geom::result_len(
-            "sample: ts.length × coordinates",
-            &[ts.len(), self.dim_of()],
-        )?;
+        let len = crate::geom::result_len("sample-ts-result", &[ts.len(), self.dim_of()])?;
         out.resize(len, 0.0);
         with_spline!(&self.inner, c => c.sample_derivatives_into(ts, order, out))
     }
@@ -92,10 +90,7 @@ impl JsCubicSpline {
     /// `count` points over the domain into `out` (resized).
     fn sample_uniform_into(&self, count: usize, out: &mut Vec<f64>) -> Result<(), Error> {
         check_count(count)?;
-        let len = crate::geom::result_len(
-            "sampleUniform: count × coordinates",
-            &[count, self.dim_of()],
-        )?;
+        let len = crate::geom::result_len("sample-uniform-result", &[count, self.dim_of()])?;
         out.resize(len, 0.0);
         with_spline!(&self.inner, c => c.sample_uniform_into(count, out))
     }
@@ -169,13 +164,13 @@ impl JsCubicSpline {
     }
 
     /// The point at t (dim numbers; exactly `p_i` at `t_i`).
-    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, JsError> {
+    pub fn evaluate(&self, t: f64) -> Result<Vec<f64>, ApiError> {
         Ok(with_spline!(&self.inner, c => flatten_points(&[c.evaluate(t)?])))
     }
 
     /// The derivative of the given order at t (0 the point; above 3 the zero vector). At an
     /// interior `t_i` the right piece's.
-    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, JsError> {
+    pub fn derivative(&self, t: f64, order: f64) -> Result<Vec<f64>, ApiError> {
         let order = whole("order", order)?;
         Ok(with_spline!(&self.inner, c => flatten_points(&[c.derivative_at(t, order)?])))
     }
@@ -200,7 +195,7 @@ impl JsCubicSpline {
     pub fn sample(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let ts = &*numbers("ts", &ts)?;
         let mut out = Vec::new();
         self.sample_into(ts, 0, &mut out)?;
@@ -213,7 +208,7 @@ impl JsCubicSpline {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
         order: f64,
-    ) -> Result<Vec<f64>, JsError> {
+    ) -> Result<Vec<f64>, ApiError> {
         let ts = &*numbers("ts", &ts)?;
         let order = whole("order", order)?;
         let mut out = Vec::new();
@@ -223,7 +218,7 @@ impl JsCubicSpline {
 
     /// `count` points at equally spaced t over the domain, ends included, flat.
     #[wasm_bindgen(js_name = sampleUniform)]
-    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, JsError> {
+    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, ApiError> {
         let count = whole("count", count)?;
         let mut out = Vec::new();
         self.sample_uniform_into(count, &mut out)?;
@@ -234,7 +229,7 @@ impl JsCubicSpline {
     /// view of the wasm memory (no copy; overwritten by the next `…View` call, detached when
     /// the memory grows: read it at once or `slice()` it).
     #[wasm_bindgen(js_name = sampleUniformView)]
-    pub fn sample_uniform_view(&mut self, count: f64) -> Result<js_sys::Float64Array, JsError> {
+    pub fn sample_uniform_view(&mut self, count: f64) -> Result<js_sys::Float64Array, ApiError> {
         let count = whole("count", count)?;
         let mut buffer = std::mem::take(&mut self.view);
         let result = self.sample_uniform_into(count, &mut buffer);
@@ -248,7 +243,7 @@ impl JsCubicSpline {
     pub fn sample_view(
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
-    ) -> Result<js_sys::Float64Array, JsError> {
+    ) -> Result<js_sys::Float64Array, ApiError> {
         let ts = &*numbers("ts", &ts)?;
         let mut buffer = std::mem::take(&mut self.view);
         let result = self.sample_into(ts, 0, &mut buffer);
@@ -260,7 +255,7 @@ impl JsCubicSpline {
     /// The Bézier form: one cubic per interval, `[p_i, p_i + Δ_i m_i/3, p_{i+1} − Δ_i m_{i+1}/3,
     /// p_{i+1}]`, breaks = params.
     #[wasm_bindgen(js_name = toBezier)]
-    pub fn to_bezier(&self) -> Result<JsCompositeBezier, JsError> {
+    pub fn to_bezier(&self) -> Result<JsCompositeBezier, ApiError> {
         let (points, tangents, params) = self.lifted();
         let q = flat_points(&bezier_points(&points, &tangents, params), self.dim_of());
         let degrees = vec![3; points.len() - 1];
@@ -276,7 +271,7 @@ impl JsCubicSpline {
     /// knots at `t_1..t_{n−1}` and n + 3 control points; the others (C1) double interior knots
     /// and 2n + 2 control points.
     #[wasm_bindgen(js_name = toBSpline)]
-    pub fn to_bspline(&self) -> Result<JsBSplineCurve, JsError> {
+    pub fn to_bspline(&self) -> Result<JsBSplineCurve, ApiError> {
         let (points, tangents, params) = self.lifted();
         let c2 = with_spline!(&self.inner, c => matches!(c.rule(), TangentRule::Spline(_)));
         let (control, knots) = bspline_form(&points, &tangents, params, c2);
@@ -297,7 +292,7 @@ impl JsCubicSpline {
     #[wasm_bindgen(
         unchecked_return_type = "{ size: number; dim: number; lower: number[]; diagonal: number[]; upper: number[]; rhs: number[]; corners: number[]; solution: number[] }"
     )]
-    pub fn system(&self) -> Result<JsValue, JsError> {
+    pub fn system(&self) -> Result<JsValue, ApiError> {
         let system = with_spline!(&self.inner, c => system_of(c))?;
         Ok(serde_wasm_bindgen::to_value(&system)?)
     }
@@ -310,7 +305,7 @@ impl JsCubicSpline {
         &mut self,
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), ApiError> {
         let point = numbers("point", &point)?;
         let i = whole("i", i)?;
         with_spline!(&mut self.inner, c => c.set_point(i, point_from(&point)?))?;
@@ -323,7 +318,7 @@ impl JsCubicSpline {
         &mut self,
         i: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] vector: JsValue,
-    ) -> Result<(), JsError> {
+    ) -> Result<(), ApiError> {
         let vector = numbers("vector", &vector)?;
         let i = whole("i", i)?;
         with_spline!(&mut self.inner, c => c.set_tangent(i, point_from(&vector)?))?;
@@ -331,7 +326,7 @@ impl JsCubicSpline {
     }
 
     /// Curvature at t (signed in 2D, ≥ 0 in 3D; Infinity where the velocity vanishes).
-    pub fn curvature(&self, t: f64) -> Result<f64, JsError> {
+    pub fn curvature(&self, t: f64) -> Result<f64, ApiError> {
         Ok(with_spline!(&self.inner, c => c.curvature(t))?)
     }
 
