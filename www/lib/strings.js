@@ -27,6 +27,8 @@ import { SURFACE_INTERPOLATION } from "./strings/surface-interpolation.js";
 import { SURFACE_REVOLUTION } from "./strings/surface-revolution.js";
 import { PATCH_DE_CASTELJAU } from "./strings/patch-de-casteljau.js";
 import { PATCH_SUBDIVISION } from "./strings/patch-subdivision.js";
+// The curve library's errors by code (lib/core-errors.js writes them).
+import { CORE_ERRORS } from "./strings/core-errors.js";
 
 const EN = {
   // Application and gallery
@@ -1259,6 +1261,7 @@ const EN = {
   ...PARAMETRIZATION,
   ...BSPLINE_INTERPOLATION,
   ...INTERPOLATE_APPROXIMATE,
+  ...CORE_ERRORS,
 };
 
 const locales = { en: EN };

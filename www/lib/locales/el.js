@@ -1881,4 +1881,237 @@ export default {
   "lecture.counter": "{k} / {n}",
   "lecture.unknown": "Δεν υπάρχει διάλεξη «{id}».",
   "lecture.loadFailed": "Η διάλεξη «{id}» δεν φορτώθηκε (HTTP {status}).",
+
+  // ---- The curve library's errors by code (lib/core-errors.js; English: lib/strings/core-errors.js) ----
+  "coreError.number.nan": "NaN",
+  "coreError.number.infinity": "∞",
+  "coreError.number.negativeInfinity": "−∞",
+  "coreError.indexed": "{subject} {index}",
+  "coreError.spacing.uniform": "ομοιόμορφη",
+  "coreError.spacing.chord": "μήκους χορδής",
+  "coreError.spacing.centripetal": "κεντρομόλος",
+  "coreError.spacing.alpha": "alpha = {alpha}",
+  "coreError.end.first": "πρώτοι",
+  "coreError.end.last": "τελευταίοι",
+  "coreError.bufferLength": "μήκος {length}",
+  "coreError.invalid-dimension": "η διάσταση dim πρέπει να είναι 2 ή 3, δόθηκε {dim}",
+  "coreError.coordinate-count":
+    "το πλήθος συντεταγμένων {count} δεν είναι πολλαπλάσιο του dim = {dim}· τα σημεία δίνονται επίπεδα [{firstPoint}, x1, …]",
+  "coreError.not-finite":
+    "{subject}: η τιμή {value} δεν επιτρέπεται· κάθε αριθμός πρέπει να είναι πεπερασμένος",
+  "coreError.too-few-points.one":
+    "{what}: χρειάζεται τουλάχιστον {needed} σημείο ελέγχου, δόθηκαν {got}",
+  "coreError.too-few-points.other":
+    "{what}: χρειάζονται τουλάχιστον {needed} σημεία ελέγχου, δόθηκαν {got}",
+  "coreError.weight-count":
+    "τα βάρη πρέπει να έχουν μία τιμή ανά σημείο ελέγχου ({expected}), δόθηκαν {got}",
+  "coreError.non-positive-weight":
+    "το βάρος {index} είναι {value}· τα βάρη πρέπει να είναι > 0 (μηδενικά ή αρνητικά βάρη μπορούν να δημιουργήσουν πόλους στην καμπύλη)",
+  "coreError.parameter-out-of-range":
+    "{name} = {value} είναι εκτός του πεδίου ορισμού [{min}, {max}]",
+  "coreError.index-out-of-range":
+    "ο δείκτης σημείου ελέγχου {index} είναι εκτός ορίων: η καμπύλη έχει {count} σημεία (0..={last})",
+  "coreError.point-dimension": "ένα σημείο χρειάζεται {expected} συντεταγμένες, δόθηκαν {got}",
+  "coreError.invalid-tolerance":
+    "η ανοχή {value} δεν είναι χρησιμοποιήσιμη: πρέπει να είναι πεπερασμένος αριθμός > 0",
+  "coreError.tolerance-too-small":
+    "η ανοχή {value} δεν είναι χρησιμοποιήσιμη: είναι κάτω από {relative} × το μέγεθος της καμπύλης ({size})· θα κυριαρχούσαν τα σφάλματα στρογγυλοποίησης",
+  "coreError.flattening-stalled":
+    "η ανοχή {value} δεν είναι χρησιμοποιήσιμη: κανένα κομμάτι της καμπύλης δεν είναι αρκετά επίπεδο με αυτή την ακρίβεια",
+  "coreError.invalid-interval": "το διάστημα [{a}, {b}] είναι κενό· χρειάζεται a < b",
+  "coreError.unknown-option": "το {name} πρέπει να είναι ένα από τα {expected}, δόθηκε «{value}»",
+  "coreError.in-argument": "{argument}: {message}",
+  "coreError.knot-count":
+    "η ακολουθία κόμβων πρέπει να έχει n+p+2 = {n} + {degree} + 2 = {expected} τιμές, δόθηκαν {got}",
+  "coreError.knot-order":
+    "οι κόμβοι δεν πρέπει να μειώνονται: u_{index} = {value} έρχεται μετά το u_{previousIndex} = {previous}",
+  "coreError.empty-domain":
+    "το πεδίο ορισμού [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] είναι κενό· χρειάζεται u_{degree} < u_{points}",
+  "coreError.knot-multiplicity":
+    "ο κόμβος {knot} εμφανίζεται {multiplicity} φορές (u_{first}..u_{last})· μια καμπύλη βαθμού {degree} επιτρέπει το πολύ p+1 = {order}",
+  "coreError.insertion-multiplicity.one":
+    "η εισαγωγή του κόμβου {knotValue} {times} φορά θα του έδινε πολλαπλότητα {multiplicity}· ο βαθμός {degree} επιτρέπει το πολύ p+1 = {order}",
+  "coreError.insertion-multiplicity.other":
+    "η εισαγωγή του κόμβου {knotValue} {times} φορές θα του έδινε πολλαπλότητα {multiplicity}· ο βαθμός {degree} επιτρέπει το πολύ p+1 = {order}",
+  "coreError.degree-zero": "ο βαθμός πρέπει να είναι τουλάχιστον 1, δόθηκε 0",
+  "coreError.degree-out-of-range": "ο βαθμός πρέπει να είναι 1..={max}, δόθηκε {degree}",
+  "coreError.too-few-points-for-degree":
+    "ο βαθμός {degree} χρειάζεται τουλάχιστον p+1 = {order} σημεία ελέγχου, δόθηκαν {got}",
+  "coreError.coincident-points":
+    "τα σημεία {index} και {next} συμπίπτουν· η παραμετροποίηση {kind} χρειάζεται διαφορετικά διαδοχικά σημεία",
+  "coreError.phantom-even-degree":
+    "τα φανταστικά σημεία κάνουν μια ομοιόμορφη B-spline περιττού βαθμού να περνά από τα άκρα της· ο βαθμός {degree} είναι άρτιος",
+  "coreError.not-a-span":
+    "το διάστημα {span} δεν είναι μη κενό διάστημα του πεδίου ορισμού (έγκυρα: [{valid}])",
+  "coreError.rational-join":
+    "οι κανόνες συνένωσης αφορούν πολυωνυμικά κομμάτια Bézier· αυτά έχουν βάρη",
+  "coreError.join-degree.one":
+    "ο κανόνας {rule} καθορίζει {needed} σημείο του δεξιού κομματιού· οι βαθμοί {left} και {right} είναι πολύ χαμηλοί (κάθε κομμάτι χρειάζεται βαθμό >= {needed})",
+  "coreError.join-degree.other":
+    "ο κανόνας {rule} καθορίζει {needed} σημεία του δεξιού κομματιού· οι βαθμοί {left} και {right} είναι πολύ χαμηλοί (κάθε κομμάτι χρειάζεται βαθμό >= {needed})",
+  "coreError.no-joint-tangent":
+    "η G1 χρειάζεται εφαπτομένη στη συνένωση, αλλά τα δύο τελευταία σημεία του αριστερού κομματιού συμπίπτουν",
+  "coreError.breakpoint-count":
+    "κομμάτια: {pieces}· χρειάζονται {breakpoints} σημεία αλλαγής, δόθηκαν {got}",
+  "coreError.degenerate-line":
+    "η ευθεία χρειάζεται δύο διαφορετικά σημεία, δόθηκε δύο φορές το ({x}, {y})",
+  "coreError.curve-batch-length":
+    "{count} συντεταγμένες δεν χωρίζονται σε καμπύλες βαθμού {degree} ((degree + 1)·dim = {perCurve} αριθμοί η καθεμία)",
+  "coreError.rational-hodograph":
+    "ο οδογράφος μιας ρητής καμπύλης δεν είναι καμπύλη Bézier βαθμού n − 1· χρησιμοποιήστε δείγματα του derivative(t, 1)",
+  "coreError.mapped-weight":
+    "ο μετασχηματισμός στέλνει το σημείο ελέγχου {index} σε βάρος {weight}· τα βάρη πρέπει να μένουν > 0 (το σημείο θα περνούσε την ευθεία στο άπειρο)",
+  "coreError.singular-map": "ο προβολικός μετασχηματισμός είναι ιδιάζων (ορίζουσα 0)",
+  "coreError.matrix-size":
+    "ένας προβολικός μετασχηματισμός είναι πίνακας 3×3 (9 αριθμοί, γραμμή προς γραμμή), δόθηκαν {got}",
+  "coreError.degenerate-triangle":
+    "ένα κυκλικό τόξο χρειάζεται κανονικό τρίγωνο P0 P1 P2 (χωρίς σημεία που συμπίπτουν ή είναι συνευθειακά)",
+  "coreError.not-isosceles":
+    "ένα κυκλικό τόξο χρειάζεται ισοσκελές τρίγωνο: |P0P1| = {first} αλλά |P1P2| = {second}",
+  "coreError.arc-point-count":
+    "ένα κυκλικό τόξο χρειάζεται 3 σημεία ελέγχου (6 αριθμούς), δόθηκαν {got}",
+  "coreError.invalid-sweep":
+    "το άνοιγμα πρέπει να είναι μη μηδενικό και το πολύ μία πλήρης στροφή (2π), δόθηκε {sweep}",
+  "coreError.parallel-axes":
+    "οι δύο άξονες μιας έλλειψης δεν πρέπει να είναι παράλληλοι ή μηδενικοί",
+  "coreError.axis-lengths":
+    "τα center, axisX και axisY χρειάζονται το ίδιο μήκος, δόθηκαν {center}, {axisX}, {axisY}",
+  "coreError.not-positive": "{name}: πρέπει να είναι > 0, δόθηκε {value}",
+  "coreError.dimension-mismatch":
+    "και τα δύο κομμάτια χρειάζονται την ίδια διάσταση dim, δόθηκαν {left} και {right}",
+  "coreError.piece-point-count":
+    "οι βαθμοί [{degrees}] χρειάζονται συνολικά {needed} σημεία ελέγχου (n + 1 ανά κομμάτι), δόθηκαν {got}",
+  "coreError.buffer-length":
+    "ο πίνακας εξόδου έχει {len} τιμές, {count} σημεία χρειάζονται {needed}",
+  "coreError.net-coordinate-count":
+    "τα σημεία πρέπει να περιέχουν rows·cols·3 = {rows}·{cols}·3 = {total} συντεταγμένες, δόθηκαν {got}",
+  "coreError.patch-too-small":
+    "ένα τμήμα επιφάνειας Bézier χρειάζεται τουλάχιστον 2 γραμμές και 2 στήλες (βαθμό ≥ 1 σε κάθε κατεύθυνση), δόθηκαν {rows} × {cols}",
+  "coreError.net-index-out-of-range":
+    "το σημείο ελέγχου (i, j) = ({i}, {j}) είναι εκτός ορίων: το πλέγμα έχει {rows} × {cols} σημεία (i στο 0..={lastI}, j στο 0..={lastJ})",
+  "coreError.no-normal":
+    "η επιφάνεια δεν έχει κάθετο στο (u, v) = ({u}, {v}): ∂S/∂u × ∂S/∂v = 0 εκεί, ακόμη και στο όριο από το εσωτερικό του πεδίου ορισμού",
+  "coreError.empty-tessellation":
+    "το tessellate χρειάζεται τουλάχιστον 1 τετράπλευρο σε κάθε κατεύθυνση, δόθηκαν nu = {nu}, nv = {nv}",
+  "coreError.too-large": "{what} = {value}: πολύ μεγάλο· επιτρέπεται το πολύ {max}",
+  "coreError.result-too-large":
+    "{what} = {counts} τιμές των {valueBytes} byte = {bytes} byte: πολύ μεγάλο· ένα αποτέλεσμα μπορεί να πιάνει το πολύ {maxBytes} byte ({mib} MiB)",
+  "coreError.argument-type": "το {name} πρέπει να είναι {expected}, δόθηκε {got}",
+  "coreError.not-whole-number":
+    "{subject}: πρέπει να είναι ακέραιος από 0 έως {max}, δόθηκε {value}",
+  "coreError.needs-2d": "το {operation} λειτουργεί σε καμπύλες 2D· αυτή η καμπύλη έχει dim = {dim}",
+  "coreError.needs-3d":
+    "το {operation} κατασκευάζει επιφάνεια 3D και χρειάζεται καμπύλη 3D· αυτή η καμπύλη έχει dim = {dim}",
+  "coreError.zero-direction":
+    "το {name} δεν πρέπει να είναι το μηδενικό διάνυσμα (δεν δίνει κατεύθυνση)",
+  "coreError.needs-polynomial":
+    "το {operation} λειτουργεί σε πολυωνυμικά τμήματα επιφάνειας· αυτό έχει βάρη (ένα ρητό τμήμα έχει παρονομαστή)",
+  "coreError.all-weights-zero":
+    "και τα {count} βάρη είναι 0: ο παρονομαστής w(t) = Σ w_i B_i(t) είναι 0 για κάθε t, άρα δεν υπάρχει καμπύλη",
+  "coreError.param-count":
+    "οι παράμετροι params πρέπει να έχουν μία τιμή ανά σημείο ({points}), δόθηκαν {params}",
+  "coreError.params-not-increasing":
+    "οι παράμετροι params πρέπει να αυξάνονται γνησίως: t_{index} = {value} δεν είναι μεγαλύτερο από t_{previousIndex} = {previous}",
+  "coreError.missing-argument": "{neededBy}: χρειάζεται το {name}, που δεν δόθηκε",
+  "coreError.argument-length": "το {name} πρέπει να έχει {expected} αριθμούς, δόθηκαν {got}",
+  "coreError.not-closed":
+    "η περιοδική παρεμβολή χρειάζεται το τελευταίο σημείο (σημείο {last}) ίσο με το πρώτο",
+  "coreError.alpha-out-of-range":
+    "alpha = {value} είναι εκτός του [0, 1] (0 ομοιόμορφη, 0,5 κεντρομόλος, 1 μήκους χορδής)",
+  "coreError.control-count-out-of-range":
+    "count = {count} σημεία ελέγχου είναι εκτός του [βαθμός + 1, πλήθος σημείων] = [{min}, {max}]",
+  "coreError.schoenberg-whitney":
+    "το σύστημα παρεμβολής είναι ιδιάζον: το t_{index} = {param} πρέπει να βρίσκεται μέσα στον φορέα (u_{index}, u_{hiIndex}) = ({lo}, {hi}) της N_{index},{degree} (συνθήκη Schoenberg–Whitney)",
+  "coreError.too-few-data-points.one":
+    "{what}: χρειάζεται τουλάχιστον {needed} σημείο δεδομένων, δόθηκαν {got}",
+  "coreError.too-few-data-points.other":
+    "{what}: χρειάζονται τουλάχιστον {needed} σημεία δεδομένων, δόθηκαν {got}",
+  "coreError.singular-system":
+    "{what}: το σύστημα είναι ιδιάζον· η απαλοιφή βρήκε μηδενικό οδηγό στη γραμμή {row}",
+  "coreError.spline-kind":
+    "το {operation} λειτουργεί σε splines που κατασκευάστηκαν με {needs}· αυτή κατασκευάστηκε με {got}",
+  "coreError.conflicting-options": "το {first} δεν συνδυάζεται με το {second}: {reason}",
+  "coreError.knots-not-clamped":
+    "μια προσαρμογή ελαχίστων τετραγώνων με ακριβή άκρα χρειάζεται ανοικτούς κόμβους: οι {end} p+1 = {order} κόμβοι πρέπει να είναι ίσοι με {param}",
+  "coreError.freed": "αυτό το {className} έχει αποδεσμευτεί (free)",
+  "coreError.no-constructor":
+    "το new {className}() δεν είναι διαθέσιμο: ένα {className} προκύπτει από {makers}",
+  "coreError.out-buffer":
+    "το out πρέπει να είναι Float64Array ή number[] με τουλάχιστον dim = {dim} αριθμούς, δόθηκε {got}",
+  "coreError.internal": "εσωτερικό σφάλμα της βιβλιοθήκης καμπυλών: {message}",
+  "coreError.subject.adaptive-depth":
+    "βάθος προσαρμοστικής υποδιαίρεσης (η ανοχή είναι κοντά στη στρογγυλοποίηση)",
+  "coreError.subject.adaptive-vertices": "κορυφές προσαρμοστικού πλέγματος",
+  "coreError.subject.adaptive-vertices-leaves":
+    "κορυφές προσαρμοστικού πλέγματος (τουλάχιστον μία ανά φύλλο)",
+  "coreError.subject.adaptive-vertices-patches":
+    "κορυφές προσαρμοστικού πλέγματος (τουλάχιστον μία ανά τμήμα Bézier)",
+  "coreError.subject.basis-sample-count":
+    "count (δείγματα ανά συνάρτηση βάσης: μία τιμή ανά συνάρτηση το καθένα)",
+  "coreError.subject.bessel-spline": "μια spline Bessel",
+  "coreError.subject.bezier-curve": "μια καμπύλη Bézier",
+  "coreError.subject.boolean": "λογική τιμή (boolean)",
+  "coreError.subject.bspline-interpolation-system": "το σύστημα παρεμβολής B-spline",
+  "coreError.subject.cardinal-spline": "μια καρδινάλια spline",
+  "coreError.subject.catmull-rom-spline": "μια spline Catmull–Rom",
+  "coreError.subject.clamped-end-condition": "η συνοριακή συνθήκη «clamped» (πακτωμένη)",
+  "coreError.subject.closed-has-no-ends": "μια κλειστή καμπύλη δεν έχει άκρα",
+  "coreError.subject.closed-interpolating-bspline":
+    "μια κλειστή B-spline παρεμβολής αυτού του βαθμού (p + 1, τουλάχιστον 3)",
+  "coreError.subject.closed-knots-computed":
+    "οι κόμβοι μιας κλειστής καμπύλης είναι οι περιοδικοί που υπολογίζονται από τις params",
+  "coreError.subject.composite-curve": "μια σύνθετη καμπύλη (κομμάτια)",
+  "coreError.subject.coordinate": "συντεταγμένη",
+  "coreError.subject.cubic-spline": "μια κυβική spline",
+  "coreError.subject.cubic-spline-system": "το σύστημα εφαπτομένων της κυβικής spline",
+  "coreError.subject.curve": "BSplineCurve ή BezierCurve",
+  "coreError.subject.data-point-count": "πλήθος σημείων δεδομένων",
+  "coreError.subject.degree-u-rows": "degreeU (γραμμές κατά u)",
+  "coreError.subject.degree-v-columns": "degreeV (στήλες κατά v)",
+  "coreError.subject.derivative-order": "τάξη παραγώγου",
+  "coreError.subject.every-piece": "κάθε κομμάτι (βαθμός >= 1)",
+  "coreError.subject.flattening-segments": "πλήθος ευθύγραμμων τμημάτων επιπέδωσης",
+  "coreError.subject.flattening-segments-estimated":
+    "πλήθος ευθύγραμμων τμημάτων επιπέδωσης (εκτίμηση πριν από την επιπέδωση: μειώστε τον βαθμό ή αυξήστε την ανοχή)",
+  "coreError.subject.grid-points": "σημεία πλέγματος us.length·vs.length",
+  "coreError.subject.hermite-spline": "μια spline Hermite",
+  "coreError.subject.interpolating-bspline":
+    "μια B-spline παρεμβολής αυτού του βαθμού (p + 1 − παράγωγοι στα άκρα, τουλάχιστον 2)",
+  "coreError.subject.interpolating-surface":
+    "μια επιφάνεια παρεμβολής αυτού του βαθμού (βαθμός + 1 ανά κατεύθυνση)",
+  "coreError.subject.interpolation-system-size": "το μέγεθος του συστήματος παρεμβολής (άγνωστοι)",
+  "coreError.subject.knot": "κόμβος",
+  "coreError.subject.knot-to-insert": "κόμβος προς εισαγωγή",
+  "coreError.subject.lagrange-curve": "μια καμπύλη Lagrange",
+  "coreError.subject.lagrange-point-count": "πλήθος σημείων μιας καμπύλης Lagrange",
+  "coreError.subject.least-squares-bspline":
+    "μια B-spline ελαχίστων τετραγώνων αυτού του βαθμού (p + 1, τουλάχιστον 2)",
+  "coreError.subject.least-squares-system": "οι κανονικές εξισώσεις ελαχίστων τετραγώνων",
+  "coreError.subject.length": "το μήκος του",
+  "coreError.subject.matrix-entry": "στοιχείο πίνακα",
+  "coreError.subject.new-point-coordinate": "συντεταγμένη του νέου σημείου",
+  "coreError.subject.numbers": "πίνακας αριθμών (Float64Array ή number[])",
+  "coreError.subject.object": "αντικείμενο",
+  "coreError.subject.parameter": "παράμετρος",
+  "coreError.subject.parametrisation": "μια παραμετροποίηση",
+  "coreError.subject.phantom-points": "φανταστικά σημεία αυτού του βαθμού",
+  "coreError.subject.polynomial": "ένα πολυώνυμο",
+  "coreError.subject.rational-bezier-curve": "μια ρητή καμπύλη Bézier",
+  "coreError.subject.rational-derivative-order": "τάξη παραγώγου ρητής καμπύλης",
+  "coreError.subject.refine-result":
+    "refine: (σημεία ελέγχου + us.length) × ομογενείς συντεταγμένες",
+  "coreError.subject.sample-count": "πλήθος δειγμάτων",
+  "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × συντεταγμένες",
+  "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 συντεταγμένες",
+  "coreError.subject.sample-params-result": "sample: params.length × συντεταγμένες",
+  "coreError.subject.sample-ts-result": "sample: ts.length × συντεταγμένες",
+  "coreError.subject.sample-uniform-result": "sampleUniform: count × συντεταγμένες",
+  "coreError.subject.sample-uniform-view-result": "sampleUniformView: count × συντεταγμένες",
+  "coreError.subject.sample-view-result": "sampleView: params.length × συντεταγμένες",
+  "coreError.subject.samples-result": "δείγματα (σημεία × συντεταγμένες)",
+  "coreError.subject.start-angle": "αρχική γωνία",
+  "coreError.subject.string": "συμβολοσειρά (string)",
+  "coreError.subject.surface-derivative-order": "τάξη παραγώγου du + dv",
+  "coreError.subject.tessellation-vertices": "κορυφές τριγωνοποίησης (nu + 1)(nv + 1)",
+  "coreError.subject.weight": "βάρος",
 };

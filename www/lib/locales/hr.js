@@ -1866,4 +1866,234 @@ export default {
   "lecture.counter": "{k} / {n}",
   "lecture.unknown": "Nema predavanja „{id}”.",
   "lecture.loadFailed": "Predavanje „{id}” nije se moglo učitati (HTTP {status}).",
+
+  // ---- The curve library's errors by code (lib/core-errors.js; English: lib/strings/core-errors.js) ----
+  "coreError.number.nan": "NaN",
+  "coreError.number.infinity": "∞",
+  "coreError.number.negativeInfinity": "−∞",
+  "coreError.indexed": "{subject} {index}",
+  "coreError.spacing.uniform": "uniformna",
+  "coreError.spacing.chord": "tetivna",
+  "coreError.spacing.centripetal": "centripetalna",
+  "coreError.spacing.alpha": "alpha = {alpha}",
+  "coreError.end.first": "prvih",
+  "coreError.end.last": "posljednjih",
+  "coreError.bufferLength": "duljina {length}",
+  "coreError.invalid-dimension": "dim mora biti 2 ili 3, dobiveno {dim}",
+  "coreError.coordinate-count":
+    "broj koordinata {count} nije višekratnik od dim = {dim}; točke se zadaju ravno [{firstPoint}, x1, …]",
+  "coreError.not-finite":
+    "{subject}: vrijednost {value} nije dopuštena; svaki broj mora biti konačan",
+  "coreError.too-few-points.one":
+    "{what}: potrebna je barem {needed} kontrolna točka, dobiveno {got}",
+  "coreError.too-few-points.few":
+    "{what}: potrebne su barem {needed} kontrolne točke, dobiveno {got}",
+  "coreError.too-few-points.other":
+    "{what}: potrebno je barem {needed} kontrolnih točaka, dobiveno {got}",
+  "coreError.weight-count":
+    "težine moraju imati po jednu vrijednost za svaku kontrolnu točku ({expected}), dobiveno {got}",
+  "coreError.non-positive-weight":
+    "težina {index} iznosi {value}; težine moraju biti > 0 (nula ili negativne težine mogu stvoriti polove na krivulji)",
+  "coreError.parameter-out-of-range": "{name} = {value} je izvan domene [{min}, {max}]",
+  "coreError.index-out-of-range":
+    "indeks kontrolne točke {index} je izvan raspona: krivulja ima {count} točaka (0..={last})",
+  "coreError.point-dimension": "točka treba {expected} koordinate, dobiveno {got}",
+  "coreError.invalid-tolerance":
+    "tolerancija {value} nije upotrebljiva: mora biti konačan broj > 0",
+  "coreError.tolerance-too-small":
+    "tolerancija {value} nije upotrebljiva: manja je od {relative} × veličina krivulje ({size}); prevladale bi pogreške zaokruživanja",
+  "coreError.flattening-stalled":
+    "tolerancija {value} nije upotrebljiva: nijedan dio krivulje nije dovoljno ravan uz tu preciznost",
+  "coreError.invalid-interval": "interval [{a}, {b}] je prazan; potrebno je a < b",
+  "coreError.unknown-option": "{name} mora biti jedno od {expected}, dobiveno „{value}”",
+  "coreError.in-argument": "{argument}: {message}",
+  "coreError.knot-count":
+    "vektor uzlova mora imati n+p+2 = {n} + {degree} + 2 = {expected} vrijednosti, dobiveno {got}",
+  "coreError.knot-order":
+    "uzlovi ne smiju padati: u_{index} = {value} dolazi nakon u_{previousIndex} = {previous}",
+  "coreError.empty-domain":
+    "domena [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] je prazna; potrebno je u_{degree} < u_{points}",
+  "coreError.knot-multiplicity":
+    "uzao {knot} pojavljuje se {multiplicity} puta (u_{first}..u_{last}); krivulja stupnja {degree} dopušta najviše p+1 = {order}",
+  "coreError.insertion-multiplicity.one":
+    "umetanje uzla {knotValue} {times} put dalo bi mu višestrukost {multiplicity}; stupanj {degree} dopušta najviše p+1 = {order}",
+  "coreError.insertion-multiplicity.few":
+    "umetanje uzla {knotValue} {times} puta dalo bi mu višestrukost {multiplicity}; stupanj {degree} dopušta najviše p+1 = {order}",
+  "coreError.insertion-multiplicity.other":
+    "umetanje uzla {knotValue} {times} puta dalo bi mu višestrukost {multiplicity}; stupanj {degree} dopušta najviše p+1 = {order}",
+  "coreError.degree-zero": "stupanj mora biti barem 1, dobiveno 0",
+  "coreError.degree-out-of-range": "stupanj mora biti 1..={max}, dobiveno {degree}",
+  "coreError.too-few-points-for-degree":
+    "stupanj {degree} traži barem p+1 = {order} kontrolnih točaka, dobiveno {got}",
+  "coreError.coincident-points":
+    "točke {index} i {next} se podudaraju; {kind} parametrizacija traži različite uzastopne točke",
+  "coreError.phantom-even-degree":
+    "fantomske točke čine da uniformna B-krivulja neparnog stupnja prolazi krajnjim točkama; stupanj {degree} je paran",
+  "coreError.not-a-span": "interval {span} nije neprazan interval domene (valjani: [{valid}])",
+  "coreError.rational-join":
+    "pravila spajanja vrijede za polinomne Bézierove dijelove; ovi imaju težine",
+  "coreError.join-degree.one":
+    "pravilo {rule} određuje {needed} točku desnog dijela; stupnjevi {left} i {right} su preniski (svaki dio treba stupanj >= {needed})",
+  "coreError.join-degree.few":
+    "pravilo {rule} određuje {needed} točke desnog dijela; stupnjevi {left} i {right} su preniski (svaki dio treba stupanj >= {needed})",
+  "coreError.join-degree.other":
+    "pravilo {rule} određuje {needed} točaka desnog dijela; stupnjevi {left} i {right} su preniski (svaki dio treba stupanj >= {needed})",
+  "coreError.no-joint-tangent":
+    "G1 traži tangentu u spoju, ali se posljednje dvije točke lijevog dijela podudaraju",
+  "coreError.breakpoint-count":
+    "broj dijelova: {pieces}; potrebno je {breakpoints} točaka loma, dobiveno {got}",
+  "coreError.degenerate-line": "pravac treba dvije različite točke, dvaput je dobivena ({x}, {y})",
+  "coreError.curve-batch-length":
+    "{count} koordinata ne dijeli se na krivulje stupnja {degree} ((degree + 1)·dim = {perCurve} brojeva svaka)",
+  "coreError.rational-hodograph":
+    "hodograf racionalne krivulje nije Bézierova krivulja stupnja n − 1; umjesto toga uzorkujte derivative(t, 1)",
+  "coreError.mapped-weight":
+    "preslikavanje šalje kontrolnu točku {index} u težinu {weight}; težine moraju ostati > 0 (točka bi prešla beskonačno daleki pravac)",
+  "coreError.singular-map": "projektivno preslikavanje je singularno (determinanta 0)",
+  "coreError.matrix-size":
+    "projektivno preslikavanje je matrica 3×3 (9 brojeva, redak po redak), dobiveno {got}",
+  "coreError.degenerate-triangle":
+    "kružni luk treba pravi trokut P0 P1 P2 (bez podudarnih ili kolinearnih točaka)",
+  "coreError.not-isosceles":
+    "kružni luk treba jednakokračan trokut: |P0P1| = {first}, ali |P1P2| = {second}",
+  "coreError.arc-point-count": "kružni luk treba 3 kontrolne točke (6 brojeva), dobiveno {got}",
+  "coreError.invalid-sweep":
+    "opseg luka mora biti različit od nule i najviše jedan puni okret (2π), dobiveno {sweep}",
+  "coreError.parallel-axes": "dvije osi elipse ne smiju biti paralelne ni nul-vektori",
+  "coreError.axis-lengths":
+    "center, axisX i axisY moraju imati istu duljinu, dobiveno {center}, {axisX}, {axisY}",
+  "coreError.not-positive": "{name}: mora biti > 0, dobiveno {value}",
+  "coreError.dimension-mismatch": "oba dijela moraju imati isti dim, dobiveno {left} i {right}",
+  "coreError.piece-point-count":
+    "stupnjevi [{degrees}] traže ukupno {needed} kontrolnih točaka (n + 1 po dijelu), dobiveno {got}",
+  "coreError.buffer-length":
+    "izlazni spremnik ima {len} vrijednosti, a broj točaka {count} traži {needed}",
+  "coreError.net-coordinate-count":
+    "točke moraju sadržavati rows·cols·3 = {rows}·{cols}·3 = {total} koordinata, dobiveno {got}",
+  "coreError.patch-too-small":
+    "Bézierova krpica treba barem 2 retka i 2 stupca (stupanj ≥ 1 u svakom smjeru), dobiveno {rows} × {cols}",
+  "coreError.net-index-out-of-range":
+    "kontrolna točka (i, j) = ({i}, {j}) je izvan raspona: mreža ima {rows} × {cols} točaka (i u 0..={lastI}, j u 0..={lastJ})",
+  "coreError.no-normal":
+    "površina nema normalu u (u, v) = ({u}, {v}): ondje je ∂S/∂u × ∂S/∂v = 0, čak i u limesu iz unutrašnjosti domene",
+  "coreError.empty-tessellation":
+    "tessellate treba barem 1 četverokut u svakom smjeru, dobiveno nu = {nu}, nv = {nv}",
+  "coreError.too-large": "{what} = {value}: previše; dopušteno je najviše {max}",
+  "coreError.result-too-large":
+    "{what} = {counts} vrijednosti po {valueBytes} bajtova = {bytes} bajtova je previše; jedan rezultat smije zauzeti najviše {maxBytes} bajtova ({mib} MiB)",
+  "coreError.argument-type": "{name} mora biti {expected}, dobiveno {got}",
+  "coreError.not-whole-number": "{subject}: mora biti cijeli broj od 0 do {max}, dobiveno {value}",
+  "coreError.needs-2d": "{operation} radi na 2D krivuljama; ova krivulja ima dim = {dim}",
+  "coreError.needs-3d":
+    "{operation} gradi 3D površinu i treba 3D krivulju; ova krivulja ima dim = {dim}",
+  "coreError.zero-direction": "{name} ne smije biti nul-vektor (ne daje smjer)",
+  "coreError.needs-polynomial":
+    "{operation} radi na polinomnim krpicama; ova ima težine (racionalna krpica ima nazivnik)",
+  "coreError.all-weights-zero":
+    "sve težine ({count}) su 0: nazivnik w(t) = Σ w_i B_i(t) je 0 za svaki t, pa krivulje nema",
+  "coreError.param-count":
+    "params moraju imati po jednu vrijednost za svaku točku ({points}), dobiveno {params}",
+  "coreError.params-not-increasing":
+    "params moraju strogo rasti: t_{index} = {value} nije veće od t_{previousIndex} = {previous}",
+  "coreError.missing-argument": "{neededBy}: potreban je {name}, a nije zadan",
+  "coreError.argument-length": "{name} mora imati {expected} brojeva, dobiveno {got}",
+  "coreError.not-closed":
+    "periodička interpolacija traži da posljednja točka (točka {last}) bude jednaka prvoj",
+  "coreError.alpha-out-of-range":
+    "alpha = {value} je izvan [0, 1] (0 uniformna, 0,5 centripetalna, 1 tetivna)",
+  "coreError.control-count-out-of-range":
+    "count = {count} kontrolnih točaka je izvan [stupanj + 1, broj točaka] = [{min}, {max}]",
+  "coreError.schoenberg-whitney":
+    "interpolacijski sustav je singularan: t_{index} = {param} mora ležati unutar nosača (u_{index}, u_{hiIndex}) = ({lo}, {hi}) od N_{index},{degree} (Schoenberg–Whitneyjev uvjet)",
+  "coreError.too-few-data-points.one":
+    "{what}: potrebna je barem {needed} zadana točka, dobiveno {got}",
+  "coreError.too-few-data-points.few":
+    "{what}: potrebne su barem {needed} zadane točke, dobiveno {got}",
+  "coreError.too-few-data-points.other":
+    "{what}: potrebno je barem {needed} zadanih točaka, dobiveno {got}",
+  "coreError.singular-system":
+    "{what}: sustav je singularan; eliminacija je naišla na nul-pivot u retku {row}",
+  "coreError.spline-kind":
+    "{operation} radi na splajnovima izgrađenima s {needs}; ovaj je izgrađen s {got}",
+  "coreError.conflicting-options": "{first} se ne može kombinirati sa {second}: {reason}",
+  "coreError.knots-not-clamped":
+    "aproksimacija najmanjim kvadratima s točnim krajevima traži stegnute uzlove: {end} p+1 = {order} uzlova mora biti jednako {param}",
+  "coreError.freed": "ovaj {className} je oslobođen (free)",
+  "coreError.no-constructor": "new {className}() nije dostupan: {className} se dobiva iz {makers}",
+  "coreError.out-buffer":
+    "out mora biti Float64Array ili number[] s barem dim = {dim} brojeva, dobiveno {got}",
+  "coreError.internal": "unutarnja pogreška biblioteke krivulja: {message}",
+  "coreError.subject.adaptive-depth":
+    "dubina adaptivne podjele (tolerancija je blizu pogreške zaokruživanja)",
+  "coreError.subject.adaptive-vertices": "vrhovi adaptivne mreže",
+  "coreError.subject.adaptive-vertices-leaves": "vrhovi adaptivne mreže (barem jedan po listu)",
+  "coreError.subject.adaptive-vertices-patches":
+    "vrhovi adaptivne mreže (barem jedan po Bézierovoj krpici)",
+  "coreError.subject.basis-sample-count":
+    "count (uzorci po baznoj funkciji: svaki po jedna vrijednost za svaku funkciju)",
+  "coreError.subject.bessel-spline": "Besselov splajn",
+  "coreError.subject.bezier-curve": "Bézierova krivulja",
+  "coreError.subject.boolean": "logička vrijednost (boolean)",
+  "coreError.subject.bspline-interpolation-system": "sustav B-spline interpolacije",
+  "coreError.subject.cardinal-spline": "kardinalni splajn",
+  "coreError.subject.catmull-rom-spline": "Catmull–Rom splajn",
+  "coreError.subject.clamped-end-condition": "rubni uvjet „clamped” (stegnuti)",
+  "coreError.subject.closed-has-no-ends": "zatvorena krivulja nema krajeva",
+  "coreError.subject.closed-interpolating-bspline":
+    "zatvorena interpolacijska B-krivulja ovog stupnja (p + 1, barem 3)",
+  "coreError.subject.closed-knots-computed":
+    "uzlovi zatvorene krivulje su periodički, izračunati iz params",
+  "coreError.subject.composite-curve": "složena krivulja (dijelovi)",
+  "coreError.subject.coordinate": "koordinata",
+  "coreError.subject.cubic-spline": "kubni splajn",
+  "coreError.subject.cubic-spline-system": "sustav tangenti kubnog splajna",
+  "coreError.subject.curve": "BSplineCurve ili BezierCurve",
+  "coreError.subject.data-point-count": "broj zadanih točaka",
+  "coreError.subject.degree-u-rows": "degreeU (retci duž u)",
+  "coreError.subject.degree-v-columns": "degreeV (stupci duž v)",
+  "coreError.subject.derivative-order": "red derivacije",
+  "coreError.subject.every-piece": "svaki dio (stupanj >= 1)",
+  "coreError.subject.flattening-segments": "broj segmenata izravnavanja",
+  "coreError.subject.flattening-segments-estimated":
+    "broj segmenata izravnavanja (procijenjen prije izravnavanja: smanjite stupanj ili povećajte toleranciju)",
+  "coreError.subject.grid-points": "točke mreže us.length·vs.length",
+  "coreError.subject.hermite-spline": "Hermiteov splajn",
+  "coreError.subject.interpolating-bspline":
+    "interpolacijska B-krivulja ovog stupnja (p + 1 − derivacije na krajevima, barem 2)",
+  "coreError.subject.interpolating-surface":
+    "interpolacijska površina ovog stupnja (stupanj + 1 u svakom smjeru)",
+  "coreError.subject.interpolation-system-size": "veličina interpolacijskog sustava (nepoznanice)",
+  "coreError.subject.knot": "uzao",
+  "coreError.subject.knot-to-insert": "uzao za umetanje",
+  "coreError.subject.lagrange-curve": "Lagrangeova krivulja",
+  "coreError.subject.lagrange-point-count": "broj točaka Lagrangeove krivulje",
+  "coreError.subject.least-squares-bspline":
+    "B-krivulja najmanjih kvadrata ovog stupnja (p + 1, barem 2)",
+  "coreError.subject.least-squares-system": "normalne jednadžbe najmanjih kvadrata",
+  "coreError.subject.length": "njegova duljina",
+  "coreError.subject.matrix-entry": "element matrice",
+  "coreError.subject.new-point-coordinate": "koordinata nove točke",
+  "coreError.subject.numbers": "niz brojeva (Float64Array ili number[])",
+  "coreError.subject.object": "objekt",
+  "coreError.subject.parameter": "parametar",
+  "coreError.subject.parametrisation": "parametrizacija",
+  "coreError.subject.phantom-points": "fantomske točke ovog stupnja",
+  "coreError.subject.polynomial": "polinom",
+  "coreError.subject.rational-bezier-curve": "racionalna Bézierova krivulja",
+  "coreError.subject.rational-derivative-order": "red derivacije racionalne krivulje",
+  "coreError.subject.refine-result": "refine: (kontrolne točke + us.length) × homogene koordinate",
+  "coreError.subject.sample-count": "broj uzoraka",
+  "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × koordinate",
+  "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 koordinate",
+  "coreError.subject.sample-params-result": "sample: params.length × koordinate",
+  "coreError.subject.sample-ts-result": "sample: ts.length × koordinate",
+  "coreError.subject.sample-uniform-result": "sampleUniform: count × koordinate",
+  "coreError.subject.sample-uniform-view-result": "sampleUniformView: count × koordinate",
+  "coreError.subject.sample-view-result": "sampleView: params.length × koordinate",
+  "coreError.subject.samples-result": "uzorci (točke × koordinate)",
+  "coreError.subject.start-angle": "početni kut",
+  "coreError.subject.string": "znakovni niz (string)",
+  "coreError.subject.surface-derivative-order": "red derivacije du + dv",
+  "coreError.subject.tessellation-vertices": "vrhovi teselacije (nu + 1)(nv + 1)",
+  "coreError.subject.weight": "težina",
 };

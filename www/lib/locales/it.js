@@ -1878,4 +1878,240 @@ export default {
   "lecture.counter": "{k} / {n}",
   "lecture.unknown": "Non esiste una lezione “{id}”.",
   "lecture.loadFailed": "Impossibile caricare la lezione “{id}” (HTTP {status}).",
+
+  // ---- The curve library's errors by code (lib/core-errors.js; English: lib/strings/core-errors.js) ----
+  "coreError.number.nan": "NaN",
+  "coreError.number.infinity": "∞",
+  "coreError.number.negativeInfinity": "−∞",
+  "coreError.indexed": "{subject} {index}",
+  "coreError.spacing.uniform": "uniforme",
+  "coreError.spacing.chord": "a lunghezza di corda",
+  "coreError.spacing.centripetal": "centripeta",
+  "coreError.spacing.alpha": "alpha = {alpha}",
+  "coreError.end.first": "primi",
+  "coreError.end.last": "ultimi",
+  "coreError.bufferLength": "lunghezza {length}",
+  "coreError.invalid-dimension": "dim deve essere 2 o 3, ricevuto {dim}",
+  "coreError.coordinate-count":
+    "il numero di coordinate {count} non è multiplo di dim = {dim}; i punti si danno in forma piatta [{firstPoint}, x1, …]",
+  "coreError.not-finite":
+    "{subject}: il valore {value} non è ammesso; ogni numero deve essere finito",
+  "coreError.too-few-points.one":
+    "{what}: serve almeno {needed} punto di controllo, ricevuti {got}",
+  "coreError.too-few-points.many":
+    "{what}: servono almeno {needed} punti di controllo, ricevuti {got}",
+  "coreError.too-few-points.other":
+    "{what}: servono almeno {needed} punti di controllo, ricevuti {got}",
+  "coreError.weight-count":
+    "i pesi devono avere un valore per punto di controllo ({expected}), ricevuti {got}",
+  "coreError.non-positive-weight":
+    "il peso {index} vale {value}; i pesi devono essere > 0 (pesi nulli o negativi possono creare poli sulla curva)",
+  "coreError.parameter-out-of-range": "{name} = {value} è fuori dal dominio [{min}, {max}]",
+  "coreError.index-out-of-range":
+    "l'indice di punto di controllo {index} è fuori intervallo: la curva ha {count} punti (0..={last})",
+  "coreError.point-dimension": "un punto richiede {expected} coordinate, ricevute {got}",
+  "coreError.invalid-tolerance":
+    "la tolleranza {value} non è utilizzabile: deve essere un numero finito > 0",
+  "coreError.tolerance-too-small":
+    "la tolleranza {value} non è utilizzabile: è sotto {relative} × la dimensione della curva ({size}); dominerebbero gli errori di arrotondamento",
+  "coreError.flattening-stalled":
+    "la tolleranza {value} non è utilizzabile: nessun pezzo della curva è abbastanza piatto a questa precisione",
+  "coreError.invalid-interval": "l'intervallo [{a}, {b}] è vuoto; serve a < b",
+  "coreError.unknown-option": "{name} deve essere uno tra {expected}, ricevuto “{value}”",
+  "coreError.in-argument": "{argument}: {message}",
+  "coreError.knot-count":
+    "il vettore dei nodi deve avere n+p+2 = {n} + {degree} + 2 = {expected} valori, ricevuti {got}",
+  "coreError.knot-order":
+    "i nodi non devono decrescere: u_{index} = {value} viene dopo u_{previousIndex} = {previous}",
+  "coreError.empty-domain":
+    "il dominio [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] è vuoto; serve u_{degree} < u_{points}",
+  "coreError.knot-multiplicity":
+    "il nodo {knot} compare {multiplicity} volte (u_{first}..u_{last}); una curva di grado {degree} ammette al massimo p+1 = {order}",
+  "coreError.insertion-multiplicity.one":
+    "inserire il nodo {knotValue} {times} volta gli darebbe molteplicità {multiplicity}; il grado {degree} ammette al massimo p+1 = {order}",
+  "coreError.insertion-multiplicity.many":
+    "inserire il nodo {knotValue} {times} volte gli darebbe molteplicità {multiplicity}; il grado {degree} ammette al massimo p+1 = {order}",
+  "coreError.insertion-multiplicity.other":
+    "inserire il nodo {knotValue} {times} volte gli darebbe molteplicità {multiplicity}; il grado {degree} ammette al massimo p+1 = {order}",
+  "coreError.degree-zero": "il grado deve essere almeno 1, ricevuto 0",
+  "coreError.degree-out-of-range": "il grado deve essere 1..={max}, ricevuto {degree}",
+  "coreError.too-few-points-for-degree":
+    "il grado {degree} richiede almeno p+1 = {order} punti di controllo, ricevuti {got}",
+  "coreError.coincident-points":
+    "i punti {index} e {next} coincidono; la parametrizzazione {kind} richiede punti consecutivi distinti",
+  "coreError.phantom-even-degree":
+    "i punti fantasma fanno passare una B-spline uniforme di grado dispari per i suoi estremi; il grado {degree} è pari",
+  "coreError.not-a-span":
+    "l'intervallo {span} non è un intervallo non vuoto del dominio (validi: [{valid}])",
+  "coreError.rational-join":
+    "le regole di giunzione valgono per pezzi di Bézier polinomiali; questi hanno pesi",
+  "coreError.join-degree.one":
+    "la regola {rule} fissa {needed} punto del pezzo destro; i gradi {left} e {right} sono troppo bassi (ogni pezzo richiede grado >= {needed})",
+  "coreError.join-degree.many":
+    "la regola {rule} fissa {needed} punti del pezzo destro; i gradi {left} e {right} sono troppo bassi (ogni pezzo richiede grado >= {needed})",
+  "coreError.join-degree.other":
+    "la regola {rule} fissa {needed} punti del pezzo destro; i gradi {left} e {right} sono troppo bassi (ogni pezzo richiede grado >= {needed})",
+  "coreError.no-joint-tangent":
+    "G1 richiede una tangente nella giunzione, ma gli ultimi due punti del pezzo sinistro coincidono",
+  "coreError.breakpoint-count":
+    "pezzi: {pieces}; servono {breakpoints} punti di raccordo, ricevuti {got}",
+  "coreError.degenerate-line": "la retta richiede due punti diversi, ricevuto due volte ({x}, {y})",
+  "coreError.curve-batch-length":
+    "{count} coordinate non si dividono in curve di grado {degree} ((degree + 1)·dim = {perCurve} numeri ciascuna)",
+  "coreError.rational-hodograph":
+    "l'odografo di una curva razionale non è una curva di Bézier di grado n − 1; campiona invece derivative(t, 1)",
+  "coreError.mapped-weight":
+    "la trasformazione porta il punto di controllo {index} al peso {weight}; i pesi devono restare > 0 (il punto attraverserebbe la retta all'infinito)",
+  "coreError.singular-map": "la trasformazione proiettiva è singolare (determinante 0)",
+  "coreError.matrix-size":
+    "una trasformazione proiettiva è una matrice 3×3 (9 numeri, riga per riga), ricevuti {got}",
+  "coreError.degenerate-triangle":
+    "un arco di circonferenza richiede un vero triangolo P0 P1 P2 (nessun punto coincidente o allineato)",
+  "coreError.not-isosceles":
+    "un arco di circonferenza richiede un triangolo isoscele: |P0P1| = {first} ma |P1P2| = {second}",
+  "coreError.arc-point-count":
+    "un arco di circonferenza richiede 3 punti di controllo (6 numeri), ricevuti {got}",
+  "coreError.invalid-sweep":
+    "l'ampiezza deve essere non nulla e al massimo un giro completo (2π), ricevuto {sweep}",
+  "coreError.parallel-axes": "i due assi di un'ellisse non devono essere paralleli né nulli",
+  "coreError.axis-lengths":
+    "center, axisX e axisY devono avere la stessa lunghezza, ricevuti {center}, {axisX}, {axisY}",
+  "coreError.not-positive": "{name}: deve essere > 0, ricevuto {value}",
+  "coreError.dimension-mismatch":
+    "entrambi i pezzi devono avere la stessa dim, ricevuti {left} e {right}",
+  "coreError.piece-point-count":
+    "i gradi [{degrees}] richiedono in tutto {needed} punti di controllo (n + 1 per pezzo), ricevuti {got}",
+  "coreError.buffer-length":
+    "il buffer di uscita ha {len} valori, {count} punti ne richiedono {needed}",
+  "coreError.net-coordinate-count":
+    "i punti devono contenere rows·cols·3 = {rows}·{cols}·3 = {total} coordinate, ricevute {got}",
+  "coreError.patch-too-small":
+    "una patch di Bézier richiede almeno 2 righe e 2 colonne (grado ≥ 1 in ogni direzione), ricevuto {rows} × {cols}",
+  "coreError.net-index-out-of-range":
+    "il punto di controllo (i, j) = ({i}, {j}) è fuori intervallo: la rete ha {rows} × {cols} punti (i in 0..={lastI}, j in 0..={lastJ})",
+  "coreError.no-normal":
+    "la superficie non ha normale in (u, v) = ({u}, {v}): lì ∂S/∂u × ∂S/∂v = 0, anche nel limite dall'interno del dominio",
+  "coreError.empty-tessellation":
+    "tessellate richiede almeno 1 quadrilatero in ogni direzione, ricevuti nu = {nu}, nv = {nv}",
+  "coreError.too-large": "{what} = {value}: troppo; è ammesso al massimo {max}",
+  "coreError.result-too-large":
+    "{what} = {counts} valori da {valueBytes} byte = {bytes} byte: troppo; un risultato può occupare al massimo {maxBytes} byte ({mib} MiB)",
+  "coreError.argument-type": "{name} deve essere {expected}, ricevuto {got}",
+  "coreError.not-whole-number":
+    "{subject}: deve essere un numero intero da 0 a {max}, ricevuto {value}",
+  "coreError.needs-2d": "{operation} funziona su curve 2D; questa curva ha dim = {dim}",
+  "coreError.needs-3d":
+    "{operation} costruisce una superficie 3D e richiede una curva 3D; questa curva ha dim = {dim}",
+  "coreError.zero-direction": "{name} non deve essere il vettore nullo (non dà una direzione)",
+  "coreError.needs-polynomial":
+    "{operation} funziona su patch polinomiali; questa ha pesi (una patch razionale ha un denominatore)",
+  "coreError.all-weights-zero":
+    "tutti i {count} pesi sono 0: il denominatore w(t) = Σ w_i B_i(t) è 0 per ogni t, quindi non c'è alcuna curva",
+  "coreError.param-count": "params deve avere un valore per punto ({points}), ricevuti {params}",
+  "coreError.params-not-increasing":
+    "params deve crescere strettamente: t_{index} = {value} non è maggiore di t_{previousIndex} = {previous}",
+  "coreError.missing-argument": "{neededBy}: serve {name}, che non è stato dato",
+  "coreError.argument-length": "{name} deve avere {expected} numeri, ricevuti {got}",
+  "coreError.not-closed":
+    "l'interpolazione periodica richiede che l'ultimo punto (punto {last}) sia uguale al primo",
+  "coreError.alpha-out-of-range":
+    "alpha = {value} è fuori da [0, 1] (0 uniforme, 0,5 centripeta, 1 corda)",
+  "coreError.control-count-out-of-range":
+    "count = {count} punti di controllo è fuori da [grado + 1, numero di punti] = [{min}, {max}]",
+  "coreError.schoenberg-whitney":
+    "il sistema di interpolazione è singolare: t_{index} = {param} deve stare nel supporto (u_{index}, u_{hiIndex}) = ({lo}, {hi}) di N_{index},{degree} (condizione di Schoenberg–Whitney)",
+  "coreError.too-few-data-points.one": "{what}: serve almeno {needed} punto dato, ricevuti {got}",
+  "coreError.too-few-data-points.many":
+    "{what}: servono almeno {needed} punti dati, ricevuti {got}",
+  "coreError.too-few-data-points.other":
+    "{what}: servono almeno {needed} punti dati, ricevuti {got}",
+  "coreError.singular-system":
+    "{what}: il sistema è singolare; l'eliminazione ha incontrato un pivot nullo nella riga {row}",
+  "coreError.spline-kind":
+    "{operation} funziona su spline costruite con {needs}; questa è stata costruita con {got}",
+  "coreError.conflicting-options": "{first} non si può combinare con {second}: {reason}",
+  "coreError.knots-not-clamped":
+    "un'approssimazione ai minimi quadrati con estremi esatti richiede nodi clamped: i {end} p+1 = {order} nodi devono essere uguali a {param}",
+  "coreError.freed": "questo {className} è stato liberato (free)",
+  "coreError.no-constructor":
+    "new {className}() non è disponibile: un {className} si ottiene da {makers}",
+  "coreError.out-buffer":
+    "out deve essere un Float64Array o number[] di almeno dim = {dim} numeri, ricevuto {got}",
+  "coreError.internal": "errore interno della libreria di curve: {message}",
+  "coreError.subject.adaptive-depth":
+    "profondità della suddivisione adattiva (la tolleranza è vicina all'arrotondamento)",
+  "coreError.subject.adaptive-vertices": "vertici della mesh adattiva",
+  "coreError.subject.adaptive-vertices-leaves":
+    "vertici della mesh adattiva (almeno uno per foglia)",
+  "coreError.subject.adaptive-vertices-patches":
+    "vertici della mesh adattiva (almeno uno per patch di Bézier)",
+  "coreError.subject.basis-sample-count":
+    "count (campioni per funzione di base: un valore per funzione ciascuno)",
+  "coreError.subject.bessel-spline": "una spline di Bessel",
+  "coreError.subject.bezier-curve": "una curva di Bézier",
+  "coreError.subject.boolean": "un booleano",
+  "coreError.subject.bspline-interpolation-system": "il sistema di interpolazione B-spline",
+  "coreError.subject.cardinal-spline": "una spline cardinale",
+  "coreError.subject.catmull-rom-spline": "una spline di Catmull–Rom",
+  "coreError.subject.clamped-end-condition": "la condizione agli estremi “clamped” (vincolata)",
+  "coreError.subject.closed-has-no-ends": "una curva chiusa non ha estremi",
+  "coreError.subject.closed-interpolating-bspline":
+    "una B-spline interpolante chiusa di questo grado (p + 1, almeno 3)",
+  "coreError.subject.closed-knots-computed":
+    "i nodi di una curva chiusa sono quelli periodici calcolati dai params",
+  "coreError.subject.composite-curve": "una curva composta (pezzi)",
+  "coreError.subject.coordinate": "coordinata",
+  "coreError.subject.cubic-spline": "una spline cubica",
+  "coreError.subject.cubic-spline-system": "il sistema delle tangenti della spline cubica",
+  "coreError.subject.curve": "una BSplineCurve o BezierCurve",
+  "coreError.subject.data-point-count": "numero di punti dati",
+  "coreError.subject.degree-u-rows": "degreeU (righe lungo u)",
+  "coreError.subject.degree-v-columns": "degreeV (colonne lungo v)",
+  "coreError.subject.derivative-order": "ordine di derivazione",
+  "coreError.subject.every-piece": "ogni pezzo (grado >= 1)",
+  "coreError.subject.flattening-segments": "numero di segmenti dell'appiattimento",
+  "coreError.subject.flattening-segments-estimated":
+    "numero di segmenti dell'appiattimento (stimato prima di appiattire: abbassa il grado o aumenta la tolleranza)",
+  "coreError.subject.grid-points": "punti della griglia us.length·vs.length",
+  "coreError.subject.hermite-spline": "una spline di Hermite",
+  "coreError.subject.interpolating-bspline":
+    "una B-spline interpolante di questo grado (p + 1 − derivate agli estremi, almeno 2)",
+  "coreError.subject.interpolating-surface":
+    "una superficie interpolante di questo grado (grado + 1 per direzione)",
+  "coreError.subject.interpolation-system-size":
+    "la dimensione del sistema di interpolazione (incognite)",
+  "coreError.subject.knot": "nodo",
+  "coreError.subject.knot-to-insert": "nodo da inserire",
+  "coreError.subject.lagrange-curve": "una curva di Lagrange",
+  "coreError.subject.lagrange-point-count": "numero di punti di una curva di Lagrange",
+  "coreError.subject.least-squares-bspline":
+    "una B-spline ai minimi quadrati di questo grado (p + 1, almeno 2)",
+  "coreError.subject.least-squares-system": "le equazioni normali dei minimi quadrati",
+  "coreError.subject.length": "la sua lunghezza",
+  "coreError.subject.matrix-entry": "elemento della matrice",
+  "coreError.subject.new-point-coordinate": "la coordinata del nuovo punto",
+  "coreError.subject.numbers": "un array di numeri (Float64Array o number[])",
+  "coreError.subject.object": "un oggetto",
+  "coreError.subject.parameter": "parametro",
+  "coreError.subject.parametrisation": "una parametrizzazione",
+  "coreError.subject.phantom-points": "punti fantasma di questo grado",
+  "coreError.subject.polynomial": "un polinomio",
+  "coreError.subject.rational-bezier-curve": "una curva di Bézier razionale",
+  "coreError.subject.rational-derivative-order": "ordine di derivazione di una curva razionale",
+  "coreError.subject.refine-result":
+    "refine: (punti di controllo + us.length) × coordinate omogenee",
+  "coreError.subject.sample-count": "numero di campioni",
+  "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × coordinate",
+  "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 coordinate",
+  "coreError.subject.sample-params-result": "sample: params.length × coordinate",
+  "coreError.subject.sample-ts-result": "sample: ts.length × coordinate",
+  "coreError.subject.sample-uniform-result": "sampleUniform: count × coordinate",
+  "coreError.subject.sample-uniform-view-result": "sampleUniformView: count × coordinate",
+  "coreError.subject.sample-view-result": "sampleView: params.length × coordinate",
+  "coreError.subject.samples-result": "campioni (punti × coordinate)",
+  "coreError.subject.start-angle": "angolo iniziale",
+  "coreError.subject.string": "una stringa",
+  "coreError.subject.surface-derivative-order": "ordine di derivazione du + dv",
+  "coreError.subject.tessellation-vertices": "vertici della tassellazione (nu + 1)(nv + 1)",
+  "coreError.subject.weight": "peso",
 };

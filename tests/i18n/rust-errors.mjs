@@ -1,0 +1,65 @@
+// What the curve library's errors are, read from the Rust sources (for tests/i18n/check.mjs):
+// the code of every variant (src/error/code.rs), the subject keys (src/error/phrase.rs) and
+// every variant's fields as the thrown Error's `params` name them (src/error/mod.rs, camelCase),
+// plus the errors the JS glue throws itself (scripts/glue.mjs).
+import { readFileSync } from "node:fs";
+import { fileURLToPath } from "node:url";
+
+const source = (path) =>
+  readFileSync(fileURLToPath(new URL(`../../src/error/${path}`, import.meta.url)), "utf8");
+
+/** The errors of scripts/glue.mjs and the bindings (code → params' names). */
+export const GLUE_ERRORS = {
+  freed: ["className"],
+  "no-constructor": ["className", "makers"],
+  "out-buffer": ["dim", "got"],
+  internal: [],
+};
+
+/** `needed_by` → `neededBy` (serde's rename_all_fields = "camelCase"). */
+const camel = (name) => name.replace(/_([a-z0-9])/g, (_, c) => c.toUpperCase());
+
+/** Variant name → code, from `Error::Name { .. } => "code"` in code.rs. */
+export function variantCodes() {
+  const codes = new Map();
+  for (const m of source("code.rs").matchAll(/Error::(\w+) \{ \.\. \} => "([a-z0-9-]+)"/g)) {
+    codes.set(m[1], m[2]);
+  }
+  if (codes.size < 70) throw new Error(`only ${codes.size} codes read from src/error/code.rs`);
+  return codes;
+}
+
+/** The keys of `PHRASES` in phrase.rs: `("key", "English")`. */
+export function phraseKeys() {
+  const body = /pub const PHRASES[^=]*= &\[([\s\S]*?)\n\];/.exec(source("phrase.rs"));
+  if (!body) throw new Error("PHRASES not found in src/error/phrase.rs");
+  const keys = [...body[1].matchAll(/^\s*\("([^"]+)",/gm)].map((m) => m[1]);
+  if (keys.length < 10) throw new Error(`only ${keys.length} phrase keys read`);
+  return keys;
+}
+
+/** Code → the camelCase names of its variant's fields (enum Error in mod.rs), glue's included. */
+export function codeFields() {
+  const codes = variantCodes();
+  const body = /pub enum Error \{\n([\s\S]*?)\n\}\n/.exec(source("mod.rs"));
+  if (!body) throw new Error("enum Error not found in src/error/mod.rs");
+  const fields = new Map(Object.entries(GLUE_ERRORS));
+  let variant = null;
+  for (const line of body[1].split("\n")) {
+    const start = /^ {4}(\w+) \{(\},?)?$/.exec(line);
+    if (start) {
+      variant = start[1];
+      if (!codes.has(variant)) throw new Error(`variant ${variant} has no code in code.rs`);
+      fields.set(codes.get(variant), []);
+      if (start[2]) variant = null;
+      continue;
+    }
+    if (/^ {4}\},?$/.test(line)) variant = null;
+    const field = /^ {8}(\w+): /.exec(line);
+    if (variant && field) fields.get(codes.get(variant)).push(camel(field[1]));
+  }
+  for (const code of codes.values()) {
+    if (!fields.has(code)) throw new Error(`code ${code}: variant not found in mod.rs`);
+  }
+  return fields;
+}

@@ -1,0 +1,226 @@
+/**
+ * The curve library's errors in the active language.
+ *
+ * Every Error the library throws has `message` (English), `code` (a stable kebab-case code per
+ * kind of failure: src/error/code.rs, and the glue's "freed", "no-constructor", "out-buffer",
+ * "internal") and `params` (the failure's numbers and names, camelCase). `errorText(err)`
+ * writes the message again from `code` and `params` with the `coreError.<code>` template of the
+ * active language (lib/strings/core-errors.js for English, lib/locales/*.js): it never reads
+ * the English text, so English is the library's message word for word and a translation is
+ * complete. In the text:
+ * - numbers are written by `formatNumber` of the active language with the shortest digits that
+ *   give the number back (as `String(x)` does in English: 0.1, 1.5e-7), ±Infinity and NaN by
+ *   `coreError.number.*`;
+ * - a subject (a field naming what went wrong: `what`, `expected`, `neededBy`, `reason`, the
+ *   `name` of "in-argument" and "not-positive") is `coreError.subject.<value>` when there is
+ *   one, else an API identifier shown as it is ("degree", "knotsU");
+ * - lists are joined with ", " (result counts with " × ");
+ * - the placeholders the English message computes (n = points − 1, p+1 = degree + 1, bytes,
+ *   MiB, …) are derived here, listed per code in `DERIVED_PLACEHOLDERS`;
+ * - "in-argument" is "{argument}: {message}", the cause (`params.source`) written the same way.
+ * Anything else (no `code`, a code without a template, params that do not fill the template,
+ * the UI's own errors, which are translated already, a thrown non-Error) gives `err.message`,
+ * or `String(err)`. A pure function: no DOM, no state but the active language.
+ */
+import { formatNumber, has, t, tp } from "./strings.js";
+
+/** Whole numbers: every digit, no grouping (a count, an index, a byte size). */
+const INTEGER = Object.freeze({
+  maximumFractionDigits: 0,
+  useGrouping: false,
+  signDisplay: "negative",
+});
+/** Other numbers: `SIGNIFICANT[k - 1]` writes k significant digits (k ≤ 21, Intl's limit). */
+const SIGNIFICANT = Object.freeze(
+  Array.from({ length: 21 }, (_, i) =>
+    Object.freeze({ maximumSignificantDigits: i + 1, useGrouping: false, signDisplay: "negative" }),
+  ),
+);
+
+/**
+ * `x` in the active language with the digits of `String(x)` (its shortest round-trip digits),
+ * so that no value changes: "1.5" → "1,5" in Croatian; below 1e-6 and from 1e21 on, as
+ * `String` does, mantissa "e" exponent ("1.5e-7"). A BigInt is written whole.
+ */
+export function exactNumber(x) {
+  if (typeof x === "bigint") return formatNumber(x, INTEGER);
+  if (Number.isNaN(x)) return t("coreError.number.nan");
+  if (!Number.isFinite(x)) {
+    return t(x > 0 ? "coreError.number.infinity" : "coreError.number.negativeInfinity");
+  }
+  const size = Math.abs(x);
+  if (size !== 0 && (size < 1e-6 || size >= 1e21)) {
+    const [mantissa, exponent] = x.toExponential().split("e");
+    return `${decimal(Number(mantissa))}e${exponent}`;
+  }
+  return decimal(x);
+}
+
+/** `x` (finite, 1e-6 ≤ |x| < 1e21 or 0) with the significant digits of `String(x)`. */
+function decimal(x) {
+  if (Number.isInteger(x)) return formatNumber(x, INTEGER);
+  const digits = String(Math.abs(x)).replace(".", "").replace(/^0+/, "").length;
+  return formatNumber(x, SIGNIFICANT[Math.min(digits, SIGNIFICANT.length) - 1]);
+}
+
+/** u32::MAX, the largest whole number an argument may be ("not-whole-number"). */
+const U32_MAX = 4294967295;
+
+/** The fields of each code that hold a subject (src/error/phrase.rs), translated by key. */
+const SUBJECT_FIELDS = {
+  "too-few-points": ["what"],
+  "too-few-data-points": ["what"],
+  "too-large": ["what"],
+  "result-too-large": ["what"],
+  "singular-system": ["what"],
+  "argument-type": ["expected"],
+  "missing-argument": ["neededBy"],
+  "conflicting-options": ["reason"],
+  "not-positive": ["name"],
+};
+
+/** The list fields joined with another separator than ", ". */
+const JOINED = { counts: " × " };
+
+/**
+ * The count that picks the plural form where a code's English has `.one`/`.other` (and a
+ * language its own categories): the field's name.
+ */
+export const PLURAL_COUNT = Object.freeze({
+  "too-few-points": "needed",
+  "too-few-data-points": "needed",
+  "insertion-multiplicity": "times",
+  "join-degree": "needed",
+});
+
+/** `value` as its phrase when it is a subject key, else as it is (an identifier). */
+function subject(value) {
+  const key = `coreError.subject.${value}`;
+  return has(key) ? t(key) : String(value);
+}
+
+/** A subject with its index when it is one of a list: "coordinate 3". */
+function indexedSubject(what, index) {
+  if (index === undefined || index === null) return subject(what);
+  return t("coreError.indexed", { subject: subject(what), index: exactNumber(index) });
+}
+
+/** `a − b`, stopping at 0 as Rust's `saturating_sub` does. */
+const minus = (a, b) => Math.max(a - b, 0);
+
+/**
+ * The placeholders a template may use beyond the code's params, as functions of the params
+ * (and of the Error, for "internal"): what the English message computes.
+ */
+const DERIVED = {
+  "coordinate-count": { firstPoint: (p) => (p.dim === 3 ? "x0, y0, z0" : "x0, y0") },
+  "not-finite": { subject: (p) => indexedSubject(p.what, p.index) },
+  "not-whole-number": {
+    subject: (p) => indexedSubject(p.what, p.index),
+    max: () => U32_MAX,
+  },
+  "index-out-of-range": { last: (p) => minus(p.count, 1) },
+  "in-argument": {
+    argument: (p) =>
+      p.index === undefined || p.index === null
+        ? subject(p.name)
+        : `${subject(p.name)}[${exactNumber(p.index)}]`,
+    message: (p) => coded(p.source?.code, p.source?.params),
+  },
+  "knot-count": { n: (p) => minus(p.points, 1) },
+  "knot-order": { previousIndex: (p) => minus(p.index, 1) },
+  "knot-multiplicity": { order: (p) => p.degree + 1 },
+  "insertion-multiplicity": {
+    knotValue: (p) =>
+      p.name === undefined || p.name === null
+        ? exactNumber(p.knot)
+        : `${p.name} = ${exactNumber(p.knot)}`,
+    order: (p) => p.degree + 1,
+  },
+  "too-few-points-for-degree": { order: (p) => p.degree + 1 },
+  "coincident-points": { next: (p) => p.index + 1 },
+  "breakpoint-count": { breakpoints: (p) => p.pieces + 1 },
+  "net-coordinate-count": {
+    // usize arithmetic of the wasm build (32 bits), saturating as in message.rs.
+    total: (p) => Math.min(p.rows * p.cols * 3, U32_MAX),
+  },
+  "net-index-out-of-range": { lastI: (p) => minus(p.rows, 1), lastJ: (p) => minus(p.cols, 1) },
+  "result-too-large": {
+    bytes: (p) => p.counts.reduce((a, c) => a * BigInt(c), BigInt(p.valueBytes)),
+    mib: (p) => BigInt(p.maxBytes) >> 20n,
+  },
+  "params-not-increasing": { previousIndex: (p) => p.index - 1 },
+  "schoenberg-whitney": { hiIndex: (p) => p.index + p.degree + 1 },
+  "knots-not-clamped": { order: (p) => p.degree + 1 },
+  internal: { message: (_, err) => err.message },
+};
+
+/** The names of the derived placeholders per code (for tests/i18n/check.mjs). */
+export const DERIVED_PLACEHOLDERS = Object.freeze(
+  Object.fromEntries(Object.entries(DERIVED).map(([code, d]) => [code, Object.keys(d)])),
+);
+
+/** A param's text: numbers exact, lists joined, the few fields with words of their own. */
+function paramText(code, name, value) {
+  if (typeof value === "number" || typeof value === "bigint") return exactNumber(value);
+  if (Array.isArray(value)) {
+    return value.map((v) => paramText(code, name, v)).join(JOINED[name] ?? ", ");
+  }
+  if (SUBJECT_FIELDS[code]?.includes(name)) return subject(value);
+  if (code === "coincident-points" && name === "kind") return spacing(value);
+  if (code === "knots-not-clamped" && name === "end") {
+    return has(`coreError.end.${value}`) ? t(`coreError.end.${value}`) : String(value);
+  }
+  if (code === "out-buffer" && name === "got") {
+    const length = /^length (\d+)$/.exec(value);
+    if (length) return t("coreError.bufferLength", { length: exactNumber(Number(length[1])) });
+  }
+  return value === undefined || value === null ? value : String(value);
+}
+
+/** A parametrisation as the library names it ("Chord", "alpha = 0.3"), in the language. */
+function spacing(kind) {
+  const alpha = /^alpha = (.*)$/.exec(kind);
+  if (alpha) return t("coreError.spacing.alpha", { alpha: exactNumber(Number(alpha[1])) });
+  const key = `coreError.spacing.${String(kind).toLowerCase()}`;
+  return has(key) ? t(key) : String(kind);
+}
+
+/**
+ * The text of `code` with `params` in the active language, or null when there is no template
+ * or the params do not fill it. `err` is the thrown Error (for "internal").
+ */
+function coded(code, params = {}, err = {}) {
+  if (typeof code !== "string") return null;
+  const key = `coreError.${code}`;
+  const plural = has(`${key}.other`);
+  if (!plural && !has(key)) return null;
+  const values = {};
+  for (const [name, value] of Object.entries(params ?? {})) {
+    const text = paramText(code, name, value);
+    if (text !== undefined && text !== null) values[name] = text;
+  }
+  for (const [name, derive] of Object.entries(DERIVED[code] ?? {})) {
+    let value;
+    try {
+      value = derive(params ?? {}, err);
+    } catch {
+      return null; // params of another shape than this code's
+    }
+    if (value === null || value === undefined) return null;
+    values[name] = typeof value === "string" ? value : exactNumber(value);
+  }
+  const text = plural ? tp(key, params?.[PLURAL_COUNT[code]] ?? 0, values) : t(key, values);
+  return /\{\w+\}/.test(text) ? null : text;
+}
+
+/**
+ * The message of `err` in the active language: from its `code` and `params` when it is one of
+ * the library's errors (see the module's comment), else `err.message` (or `String(err)` for a
+ * thrown value that is no Error).
+ */
+export function errorText(err) {
+  const fallback = err instanceof Error ? err.message : String(err?.message ?? err);
+  if (err === null || typeof err !== "object") return fallback;
+  return coded(err.code, err.params, err) ?? fallback;
+}
