@@ -170,7 +170,7 @@ for (const c of classes) {
       `export class ${c.name} {\n`,
       `export class ${c.name} {\n` +
         "    constructor() {\n" +
-        `        throw new Error(${JSON.stringify(`new ${c.name}() is not available: a ${c.name} comes from ${makersOf(c.name)}`)});\n` +
+        `        throw codedError(${JSON.stringify(`new ${c.name}() is not available: a ${c.name} comes from ${makersOf(c.name)}`)}, "no-constructor", ${JSON.stringify({ className: c.name, makers: makersOf(c.name) })});\n` +
         "    }\n",
     );
   }
@@ -205,24 +205,38 @@ if (!js.includes('liveArg(curveA, "curveA")') || !js.includes('liveArg(left, "le
 js += `
 // ---- added by scripts/glue.mjs (reviewed against wasm-bindgen ${REVIEWED}) ----
 
+/** An Error with \`code\` and \`params\`, like the ones the library throws (src/wasm/error.rs). */
+function codedError(message, code, params) {
+    const error = new Error(message);
+    error.code = code;
+    error.params = params;
+    return error;
+}
+
 /** The pointer of a live object, or an Error naming its class if it was freed. */
 function livePtr(obj, name) {
     const ptr = obj.__wbg_ptr;
-    if (!ptr) throw new Error(\`this \${name} was freed\`);
+    if (!ptr) throw codedError(\`this \${name} was freed\`, "freed", { className: name });
     return ptr;
 }
 
 /** Throws if \`value\` is an object of one of the classes that was freed. */
 function liveArg(value, param) {
     if (value !== null && typeof value === "object" && value.__wbg_ptr === 0) {
-        throw new Error(\`\${param}: this \${value.constructor.name} was freed\`);
+        const className = value.constructor.name;
+        throw codedError(\`\${param}: this \${className} was freed\`, "in-argument", {
+            name: param,
+            source: { code: "freed", params: { className } },
+        });
     }
 }
 
 /** The Error for an \`out\` that cannot take \`dim\` numbers. */
 function outError(out, dim) {
-    const got = out === null ? "null" : Array.isArray(out) || ArrayBuffer.isView(out) ? \`length \${out.length}\` : typeof out;
-    return new Error(\`out must be a Float64Array or number[] of at least dim = \${dim} numbers, got \${got}\`);
+    const array = Array.isArray(out) || ArrayBuffer.isView(out);
+    const got = out === null ? "null" : array ? "array" : typeof out;
+    const params = array ? { dim, got, length: out.length } : { dim, got };
+    return codedError(\`out must be a Float64Array or number[] of at least dim = \${dim} numbers, got \${array ? \`length \${out.length}\` : got}\`, "out-buffer", params);
 }
 
 /** Copies the point the scratch buffer holds at index \`i\` ([dim, x, y, z]) into \`out\`. */

@@ -1042,13 +1042,14 @@ fn insertion_count_near_usize_max_is_refused_not_wrapped() {
 /// The variants only the JavaScript layer raises, through the exported functions.
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod js {
+    use splinelab::wasm::ApiError;
     use splinelab::wasm::{self, JsBezierCurve, JsCompositeBezier};
-    use wasm_bindgen::{JsError, JsValue};
+    use wasm_bindgen::JsValue;
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     /// Asserts the export threw a JS `Error` whose message contains every one of `parts`.
     #[track_caller]
-    fn fails<T>(result: Result<T, JsError>, parts: &[&str]) {
+    fn fails<T>(result: Result<T, ApiError>, parts: &[&str]) {
         let message = super::js_message(result);
         for part in parts {
             assert!(message.contains(part), "message {message:?} lacks {part:?}");
@@ -1177,4 +1178,88 @@ mod js {
             &["works on 2D curves; this curve has dim = 3"],
         );
     }
+}
+
+/// Subjects inside messages (`what`, `expected`, `needed_by`, `reason`, …) are keys of
+/// `error::PHRASES` or identifiers, never English text, so a page translates them by key
+/// (www/lib/core-errors.js): every such literal in the source is one word (or a list of option
+/// words), and every hyphenated
+/// one is a key with an English phrase.
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn subjects_are_keys_or_identifiers() {
+    use splinelab::error::{phrase, PHRASES};
+    let keys: Vec<&str> = PHRASES.iter().map(|(k, _)| *k).collect();
+    let mut sorted = keys.clone();
+    sorted.sort_unstable();
+    sorted.dedup();
+    assert_eq!(keys, sorted, "PHRASES sorted by key, each key once");
+    assert_eq!(phrase("bezier-curve"), "a Bézier curve");
+    assert_eq!(
+        phrase("knotsU"),
+        "knotsU",
+        "an identifier is its own phrase"
+    );
+
+    let field = subject_fields();
+    let mut checked = 0;
+    for path in rust_files(std::path::Path::new("src")) {
+        let text = std::fs::read_to_string(&path).unwrap();
+        for line in text.lines() {
+            let line = line.trim();
+            for name in &field {
+                let Some(rest) = line.strip_prefix(name) else {
+                    continue;
+                };
+                let Some(literal) = rest.strip_prefix('"').and_then(|r| r.split('"').next()) else {
+                    continue;
+                };
+                checked += 1;
+                // One word, or a list of option words ("0, 1").
+                assert!(
+                    literal.split(", ").all(|word| !word.contains(' ')),
+                    "{}: {name}\"{literal}\" is English text; add a key to error/phrase.rs",
+                    path.display()
+                );
+                if literal.contains('-') {
+                    assert!(
+                        keys.contains(&literal),
+                        "{}: no phrase for key {literal:?}",
+                        path.display()
+                    );
+                }
+            }
+        }
+    }
+    assert!(
+        checked > 40,
+        "only {checked} subject literals found: the scan is broken"
+    );
+}
+
+/// The field prefixes that hold a subject, as they appear in a struct literal.
+#[cfg(not(target_arch = "wasm32"))]
+fn subject_fields() -> Vec<&'static str> {
+    vec![
+        "what: ",
+        "expected: ",
+        "needed_by: ",
+        "reason: ",
+        "check_finite(",
+        "check_all_finite(values, ",
+    ]
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn rust_files(dir: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            out.extend(rust_files(&path));
+        } else if path.extension().is_some_and(|e| e == "rs") && !path.starts_with("src/error") {
+            out.push(path);
+        }
+    }
+    out
 }

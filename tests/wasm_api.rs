@@ -25,6 +25,87 @@ fn example() -> JsBezierCurve {
     .unwrap()
 }
 
+/// `error[key]` (undefined when absent).
+fn field(error: &JsValue, key: &str) -> JsValue {
+    js_sys::Reflect::get(error, &key.into()).unwrap()
+}
+
+/// A thrown Error carries `code` and `params` (the variant's fields, camelCase) besides the
+/// English message, so a page can word it in its own language (README "Errors").
+#[test]
+fn errors_carry_code_and_params() {
+    let knots = arr(&[0.0; 8]); // 5 cubic points need n + p + 2 = 9 knots
+    let pts = arr(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 3.0, 1.0, 4.0, 0.0]);
+    let e: JsValue = common::js_error(wasm::JsBSplineCurve::new(
+        pts,
+        2.0,
+        3.0,
+        knots,
+        JsValue::UNDEFINED,
+    ))
+    .into();
+    assert_eq!(field(&e, "code"), "knot-count");
+    let params = field(&e, "params");
+    for (key, value) in [
+        ("expected", 9.0),
+        ("got", 8.0),
+        ("points", 5.0),
+        ("degree", 3.0),
+    ] {
+        assert_eq!(field(&params, key).as_f64(), Some(value), "params.{key}");
+    }
+    // A subject is a key of error/phrase.rs, not English; snake_case fields become camelCase.
+    let e: JsValue = common::js_error(JsBezierCurve::new(
+        arr(&[0.0, 0.0]),
+        2.0,
+        JsValue::UNDEFINED,
+    ))
+    .into();
+    assert_eq!(field(&e, "code"), "too-few-points");
+    assert_eq!(field(&field(&e, "params"), "what"), "bezier-curve");
+    // 12e6 3D points: 288 MB of numbers, above the 256 MiB cap.
+    let mut line3d = JsBezierCurve::new(
+        arr(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+        3.0,
+        JsValue::UNDEFINED,
+    )
+    .unwrap();
+    let e: JsValue = common::js_error(line3d.sample_uniform(12e6)).into();
+    assert_eq!(field(&e, "code"), "result-too-large");
+    assert_eq!(
+        field(&field(&e, "params"), "valueBytes").as_f64(),
+        Some(8.0)
+    );
+    // An error about one argument nests its cause as { code, params }.
+    let e: JsValue = common::js_error(wasm::interpolate_surface(
+        arr(&[0.0; 12]),
+        2.0,
+        2.0,
+        3.0,
+        1.0,
+        JsValue::UNDEFINED,
+    ))
+    .into();
+    assert_eq!(field(&e, "code"), "in-argument");
+    let source = field(&field(&e, "params"), "source");
+    assert_eq!(field(&source, "code"), "too-few-data-points");
+    assert_eq!(
+        field(&field(&source, "params"), "needed").as_f64(),
+        Some(4.0)
+    );
+    // NotFinite names a subject and an index.
+    let e: JsValue = common::js_error(JsBezierCurve::new(
+        arr(&[0.0, 0.0, f64::NAN, 1.0]),
+        2.0,
+        JsValue::UNDEFINED,
+    ))
+    .into();
+    let params = field(&e, "params");
+    assert_eq!(field(&params, "what"), "coordinate");
+    assert_eq!(field(&params, "index").as_f64(), Some(2.0));
+    assert!(field(&params, "value").as_f64().unwrap().is_nan());
+}
+
 #[test]
 fn constructor_errors_name_the_bad_value() {
     assert_eq!(

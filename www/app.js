@@ -18,6 +18,7 @@ import { playLecture } from "./lib/lecture.js";
 import { exercises, findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
+import { errorText } from "./lib/core-errors.js";
 
 /**
  * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
@@ -231,7 +232,7 @@ function stateFromLink(demo, start, encoded) {
   try {
     return { state: validateState(demo, decodeState(encoded)), linkError: null };
   } catch (err) {
-    return { state: fallback, linkError: err.message };
+    return { state: fallback, linkError: errorText(err) };
   }
 }
 
@@ -267,7 +268,7 @@ function showDemo(entry, demo, encoded, sl) {
     });
   } catch (err) {
     // The wasm constructor refused a state that passed validation: fall back to the default.
-    linkError = err.message;
+    linkError = errorText(err);
     controller = mountDemo(root, demo, {
       sl,
       state: validateState(demo, structuredClone(demo.defaultState)),
@@ -289,7 +290,7 @@ async function showLecture(id, scene, sl) {
   try {
     lecture = await loadLecture(id);
   } catch (err) {
-    showAppStatus(err.message, "error");
+    showAppStatus(errorText(err), "error");
     return;
   }
   if (routed !== routeCount) return;
@@ -324,7 +325,7 @@ async function showExercise(entry, encoded, sl) {
     demo = await loadDemo(entry.demo);
     await prepareFigure(demo);
   } catch (err) {
-    showAppStatus(err.message, "error");
+    showAppStatus(errorText(err), "error");
     return;
   }
   if (routed !== routeCount) return;
@@ -384,7 +385,7 @@ async function route(sl) {
     demo = await loadDemo(id);
     await prepareFigure(demo); // three.js, for a 3D demo only
   } catch (err) {
-    if (routed === routeCount) showAppStatus(err.message, "error");
+    if (routed === routeCount) showAppStatus(errorText(err), "error");
     return;
   }
   if (routed !== routeCount) return; // another link was followed while this module loaded
@@ -396,7 +397,7 @@ async function route(sl) {
         errorKey: "status.badLink",
       });
     } catch (err) {
-      controller.status(t("status.badLink", { message: err.message }), "error");
+      controller.status(t("status.badLink", { message: errorText(err) }), "error");
     }
     writeHash(id, controller.state);
     return;
@@ -441,7 +442,7 @@ async function start() {
   window.addEventListener("hashchange", () => {
     if (location.hash === lastHash) return;
     if (location.hash === "" || location.hash === "#") showAppStatus("");
-    route(sl).catch((err) => showAppStatus(err.message, "error"));
+    route(sl).catch((err) => showAppStatus(errorText(err), "error"));
   });
   // Ctrl+Z / Ctrl+Shift+Z also work when nothing in the demo has focus.
   document.addEventListener("keydown", (event) => {

@@ -9,9 +9,10 @@
  * Fit and Share link; `controls="none"` the figure alone (default "full"). `theme="light" |
  * "dark"` fixes the colours (default "auto": the reader's preference).
  * `exercise="<id>"` (exercises/index.js) shows that exercise around its demo instead of `demo`.
- * `lang="el" | "hr" | "it" | "en"` chooses the language (else the page's `?lang=`, else the
- * browser's); the strings are one table per page,
- * so the embeds of one page share the language of the last one that started.
+ * `lang="el" | "hr" | "it" | "en"` chooses the language. A page speaks one language in all its
+ * embeds (the strings are one table per page), chosen once: the page's `?lang=` (a reader's
+ * choice), else the `lang` of the first `<spline-lab>` that has one (the author's), else the
+ * browser's languages, else English (`pageLanguage`).
  */
 import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
@@ -23,6 +24,7 @@ import { t } from "./lib/strings.js";
 import { chooseLanguage, useLanguage } from "./lib/language.js";
 import { findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
+import { errorText } from "./lib/core-errors.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -41,6 +43,18 @@ const HOST_CSS = `
 .sl-embed-error { color: #d55e00; font: 600 15px system-ui, sans-serif; }
 .sl-embed-error::before { content: "⚠ "; }
 `;
+
+/** The language every embed of the page speaks, loaded once (see the header). */
+let pageChoice = null;
+function pageLanguage() {
+  pageChoice ??= useLanguage(
+    chooseLanguage(
+      new URLSearchParams(location.search).get("lang") ??
+        document.querySelector("spline-lab[lang]")?.getAttribute("lang"),
+    ),
+  );
+  return pageChoice;
+}
 
 /** The element's own styles, one CSSStyleSheet for every embed of the page (made when needed). */
 let hostSheet = null;
@@ -90,9 +104,7 @@ class SplineLabElement extends HTMLElement {
 
   /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
-    await useLanguage(
-      chooseLanguage(this.getAttribute("lang") ?? new URLSearchParams(location.search).get("lang")),
-    );
+    await pageLanguage();
     const exerciseId = this.getAttribute("exercise");
     const exercise = exerciseId === null ? null : findExercise(exerciseId);
     if (exerciseId !== null && !exercise)
@@ -110,7 +122,7 @@ class SplineLabElement extends HTMLElement {
       demo = await loadDemo(id);
       await prepareFigure(demo); // three.js, for a 3D demo only
     } catch (err) {
-      return this._fail(err.message);
+      return this._fail(errorText(err));
     }
     if (!this.isConnected || this._controller) return;
     // An exercise starts from its own state; attributes may still change fields of it.
@@ -120,7 +132,7 @@ class SplineLabElement extends HTMLElement {
     try {
       state = validateState(demo, stateFromAttributes(this, start));
     } catch (err) {
-      problem = err.message;
+      problem = errorText(err);
     }
     const root = document.createElement("div");
     this._root.replaceWith(root);
@@ -144,7 +156,7 @@ class SplineLabElement extends HTMLElement {
     try {
       this._controller = mount(state);
     } catch (err) {
-      problem = err.message; // refused by the wasm constructor: show the start instead
+      problem = errorText(err); // refused by the wasm constructor: show the start instead
       this._controller = mount(start);
     }
     if (problem) this._controller.status(t("status.rejected", { message: problem }), "error");
@@ -154,7 +166,7 @@ class SplineLabElement extends HTMLElement {
       try {
         this._controller?.accept(stateFromAttributes(this, start));
       } catch (err) {
-        this._controller?.status(t("status.rejected", { message: err.message }), "error");
+        this._controller?.status(t("status.rejected", { message: errorText(err) }), "error");
       }
     });
     this._attributes.observe(this, { attributes: true });

@@ -10,6 +10,7 @@ use wasm_bindgen::prelude::*;
 
 /// A thrown JS `Error`, from a crate [`Error`] (with `code` and `params`) or from a message
 /// of the bindings' own (`ApiError::new`, code `"internal"`).
+#[derive(Debug)]
 pub struct ApiError(JsValue);
 
 impl ApiError {

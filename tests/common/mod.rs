@@ -8,18 +8,20 @@ use splinelab::{DVec2, DVec3};
 /// `splinelab::error` on numbers in messages).
 pub const INFINITY_TEXT: &str = "Infinity";
 
-/// The message of the JS `Error` a wasm export threw (panics if it returned `Ok`).
+/// The JS `Error` a wasm export threw (panics if it returned `Ok` or threw something else).
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
-pub fn js_message<T>(r: Result<T, wasm_bindgen::JsError>) -> String {
+pub fn js_error<T, E: Into<wasm_bindgen::JsValue>>(r: Result<T, E>) -> js_sys::Error {
     use wasm_bindgen::JsCast;
     match r {
         Ok(_) => panic!("expected an error"),
-        Err(e) => wasm_bindgen::JsValue::from(e)
-            .dyn_into::<js_sys::Error>()
-            .expect("a JS Error")
-            .message()
-            .into(),
+        Err(e) => e.into().dyn_into::<js_sys::Error>().expect("a JS Error"),
     }
+}
+
+/// The message of the JS `Error` a wasm export threw (panics if it returned `Ok`).
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+pub fn js_message<T, E: Into<wasm_bindgen::JsValue>>(r: Result<T, E>) -> String {
+    js_error(r).message().into()
 }
 
 /// `object[key]`, a `Float64Array` a wasm export returned inside an object, as numbers (panics,

@@ -566,6 +566,39 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("the embeds of a page speak one language: ?lang=, else the first lang attribute", async () => {
+    const pageUrl = `${base}/lang-embed-test.html`;
+    const body =
+      '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="a" demo="de-casteljau" controls="minimal"></spline-lab><spline-lab id="b" demo="de-casteljau" controls="minimal" lang="it"></spline-lab><spline-lab id="c" demo="de-casteljau" controls="minimal" lang="hr"></spline-lab></body></html>';
+    const resets = async () => {
+      for (const id of ["a", "b", "c"]) {
+        await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+        await demoHelpers(page, `spline-lab#${id} `).ready();
+      }
+      return page.evaluate(() =>
+        ["a", "b", "c"]
+          .map((id) =>
+            document
+              .getElementById(id)
+              .shadowRoot.querySelector('[data-action="reset"]')
+              .textContent.trim(),
+          )
+          .join(","),
+      );
+    };
+    await page.route(`${pageUrl}*`, (route) => route.fulfill({ contentType: "text/html", body }));
+    try {
+      await page.goto("about:blank");
+      await page.goto(pageUrl);
+      equal(await resets(), "Reimposta,Reimposta,Reimposta", "the first lang attribute (it)");
+      await page.goto("about:blank");
+      await page.goto(`${pageUrl}?lang=el`);
+      equal(await resets(), "Επαναφορά,Επαναφορά,Επαναφορά", "?lang=el, the reader's choice");
+    } finally {
+      await page.unroute(`${pageUrl}*`);
+    }
+  });
+
   await test('<spline-lab controls="minimal" | "none"> keeps the figure with three buttons, or alone', async () => {
     const pageUrl = `${base}/controls-embed-test.html`;
     await page.goto("about:blank");
@@ -1377,6 +1410,24 @@ try {
     await demoHelpers(page).ready();
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("hr: a refusal of the curve library is worded in Croatian from its code and numbers", async () => {
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html?lang=hr#demo=knot-insertion`);
+    await demoHelpers(page).ready();
+    // u = 2.5 into the quadratic: multiplicity 1, 2, 3 = p + 1 are allowed, a fourth is not.
+    for (let k = 0; k < 4; k++) {
+      await page.locator('[data-action="insert"]').click();
+      await settle(page);
+    }
+    const status = await page.locator(".sl-status").first().textContent();
+    assert(
+      status.includes("umetanje uzla 2,5") &&
+        status.includes("višestrukost 4") &&
+        !/would give/.test(status),
+      `status: ${status}`,
+    );
   });
 
   await test("typed numbers take a decimal point or comma; a list with semicolons keeps its decimal commas", async () => {

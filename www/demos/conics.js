@@ -18,6 +18,7 @@ import { drawLegend } from "../lib/legend.js";
 import { scaledInsets } from "../lib/view.js";
 import { el } from "../lib/controls.js";
 import { titledTable } from "../lib/table.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "conics";
 export const strings = "conics";
@@ -174,7 +175,7 @@ function makeCircular(ui) {
     w = arc.weights()[1];
     arc.free();
   } catch (err) {
-    ui.status(t("conics.notCircular", { message: err.message }), "error");
+    ui.status(t("conics.notCircular", { message: errorText(err) }), "error");
     return;
   }
   if (w < W1_MIN) {

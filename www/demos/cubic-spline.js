@@ -46,6 +46,7 @@ import {
   numericRowTex,
   showSplineSystem,
 } from "../lib/spline-system.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "cubic-spline";
 export const strings = "cubicSpline";
@@ -219,7 +220,7 @@ export const derive = {
         if (m.ends[k] === "clamped" && s.parametrization !== "uniform") remakeClamped(m, s, k);
         else spline.setPoint(i, xy);
       } catch (err) {
-        m.refusal.message = err.message;
+        m.refusal.message = errorText(err);
       }
     });
   },
@@ -231,7 +232,7 @@ export const derive = {
       try {
         remakeClamped(m, s, k);
       } catch (err) {
-        m.refusal.message = err.message;
+        m.refusal.message = errorText(err);
       }
     },
   },

@@ -31,6 +31,7 @@ import { DeBoorTable } from "../lib/de-boor-table.js";
 import { alphasByLevel, deBoorExact } from "../lib/de-boor-exact.js";
 import { drawKnotSpanStrip, knotSpanLabels } from "../lib/knot-span-strip.js";
 import { scaledInsets } from "../lib/view.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "de-boor";
 export const strings = "deBoor";
@@ -160,7 +161,7 @@ function typedKnots(ui, values) {
     checkKnots(candidate, "knots");
     fields.u(candidate, "u");
   } catch (err) {
-    ui.status(t("status.rejected", { message: err.message }), "error");
+    ui.status(t("status.rejected", { message: errorText(err) }), "error");
     return;
   }
   if (values.every((v, i) => v === ui.state.knots[i])) return;

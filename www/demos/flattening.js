@@ -11,6 +11,7 @@ import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { scaledInsets } from "../lib/view.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "flattening";
 export const strings = "flattening";
@@ -141,7 +142,7 @@ export const compute = {
         return flattenBoth(d.curve, s.tolerance);
       } catch (err) {
         // Only a far too small ε for a huge curve: keep the last polyline, say why.
-        ui.status(t("flattening.flattenFailed", { message: err.message }), "error");
+        ui.status(t("flattening.flattenFailed", { message: errorText(err) }), "error");
         return d.flattened ?? NOTHING;
       }
     },

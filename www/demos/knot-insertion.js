@@ -35,6 +35,7 @@ import { labelOffLeg } from "../lib/leg-label.js";
 import { knotListText, knotVectorReadout } from "../lib/knot-readout.js";
 import { flatPath } from "../lib/draw.js";
 import { scaledInsets } from "../lib/view.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "knot-insertion";
 export const strings = "knotInsertion";
@@ -200,7 +201,7 @@ function insertAll(ui, more) {
   try {
     ui.replace({ ...s, inserted: [...s.inserted, ...more] });
   } catch (err) {
-    ui.status(t("knotInsertion.refused", { message: err.message }), "error");
+    ui.status(t("knotInsertion.refused", { message: errorText(err) }), "error");
   }
 }
 

@@ -18,6 +18,7 @@ import { titledTable } from "../lib/table.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
 import { el, setText } from "../lib/controls.js";
 import { replaceOrReport } from "../lib/wasm.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "knot-vectors";
 export const strings = "knotVectors";
@@ -110,7 +111,7 @@ export const derive = {
       m.curves[0].free();
       m.curves[0] = next;
     } catch (err) {
-      m.refusal.message = err.message;
+      m.refusal.message = errorText(err);
     }
   },
 };

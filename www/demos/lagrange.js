@@ -43,6 +43,7 @@ import { SignedBasisPlot } from "../lib/signed-basis-plot.js";
 import { PARAM_KINDS, withTIn } from "../lib/data-params.js";
 import { countSlider } from "../lib/runge.js";
 import { exactness, lagrangeFormula, LagrangeTables } from "../lib/aitken-text.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "lagrange";
 export const strings = "lagrange";
@@ -152,7 +153,7 @@ export const derive = {
       fit.spline.setPoint(i, xy);
       fit.lagrange.setPoint(i, xy);
     } catch (err) {
-      m.refusal.message = err.message;
+      m.refusal.message = errorText(err);
       return;
     }
     if (s.params === "uniform") return;

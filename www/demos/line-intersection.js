@@ -20,6 +20,7 @@ import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { detailsTable } from "../lib/table.js";
 import { flatPath } from "../lib/draw.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "line-intersection";
 export const strings = "lineIntersection";
@@ -122,7 +123,7 @@ function intersect(curve, [[ax, ay], [bx, by]], previous = NOTHING_FOUND) {
       labels: Array.from(roots, (root) => t("lineIntersection.rootLabel", { t: fmt(root) })),
     };
   } catch (err) {
-    return { ...previous, error: err.message };
+    return { ...previous, error: errorText(err) };
   }
 }
 

@@ -17,6 +17,7 @@ import { flatten, boundsOf, inTriangle } from "../lib/geometry.js";
 import { drawCaption, pointsPath } from "../lib/draw.js";
 import { projectedPath, ExitMarks } from "../lib/clip.js";
 import { PlotStrip, drawPlotStrip } from "../lib/plot-strip.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "negative-weights";
 export const strings = "negativeWeights";
@@ -102,7 +103,7 @@ function askLibrary(library, s, sl) {
     new sl.BezierCurve(flatten(s.points), 2, weightsOf(s)).free(); // never gets here
     library.refusal = "";
   } catch (err) {
-    library.refusal = err.message;
+    library.refusal = errorText(err);
   }
 }
 

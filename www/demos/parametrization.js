@@ -37,6 +37,7 @@ import { ParametrizationTable, parametrizationFormula } from "../lib/parametriza
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { replaceOrReport } from "../lib/wasm.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "parametrization";
 export const strings = "parametrization";
@@ -162,7 +163,7 @@ export const derive = {
       try {
         curve.setPoint(i, xy);
       } catch (err) {
-        m.refusal.message = err.message;
+        m.refusal.message = errorText(err);
       }
     }
   },

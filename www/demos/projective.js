@@ -18,6 +18,7 @@ import { flatPath, pointsPath } from "../lib/draw.js";
 import { drawCornerLegend } from "../lib/legend.js";
 import { squareToQuad, applyHomography, denominator } from "../lib/homography.js";
 import { scaledInsets, NARROW_CANVAS_PX } from "../lib/view.js";
+import { errorText } from "../lib/core-errors.js";
 
 export const id = "projective";
 export const strings = "projective";
@@ -157,7 +158,7 @@ function remap(m, matrix, ui) {
   try {
     next = m.curve.projectiveMap(matrix);
   } catch (err) {
-    ui.status(t("projective.refused", { message: err.message }), "error");
+    ui.status(t("projective.refused", { message: errorText(err) }), "error");
     m.refusal.shown = true;
     return false;
   }
@@ -240,7 +241,7 @@ function makeAffine(ui) {
   try {
     ui.replace({ ...ui.state, corners });
   } catch (err) {
-    ui.status(t("projective.refused", { message: err.message }), "error");
+    ui.status(t("projective.refused", { message: errorText(err) }), "error");
     return;
   }
   if (shown) ui.status("", "info");

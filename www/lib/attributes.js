@@ -18,6 +18,7 @@
  */
 import { parseNumberInput } from "./format.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 /** `startTangent` → `start-tangent`. */
 export function attributeName(field) {
@@ -76,7 +77,7 @@ export function stateFromAttributes(element, defaultState) {
     try {
       state[field] = parseAttribute(element.getAttribute(name), example);
     } catch (err) {
-      throw new Error(t("error.attribute", { name, message: err.message }));
+      throw new Error(t("error.attribute", { name, message: errorText(err) }));
     }
   }
   if (element.hasAttribute("view")) state.view = parseList(element.getAttribute("view"));

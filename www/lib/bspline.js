@@ -12,6 +12,7 @@ import { checkNumber, checkNumbers } from "./validate.js";
 import { flatten } from "./geometry.js";
 import { loadedWasm } from "./wasm.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 /** The new wasm curve for `{ points, degree, knots, weights? }` (throws the core's refusal). */
 export function bsplineCurve(sl, { points, degree, knots, weights = undefined }) {
@@ -73,7 +74,7 @@ export function knotsRefusal(count, degree, knots) {
     probe = new sl.BSplineCurve(new Float64Array(2 * count), 2, degree, Float64Array.from(knots));
     return null;
   } catch (err) {
-    return err.message;
+    return errorText(err);
   } finally {
     probe?.free();
   }

@@ -161,19 +161,18 @@ export const DERIVED_PLACEHOLDERS = Object.freeze(
 );
 
 /** A param's text: numbers exact, lists joined, the few fields with words of their own. */
-function paramText(code, name, value) {
+function paramText(code, name, value, params) {
   if (typeof value === "number" || typeof value === "bigint") return exactNumber(value);
   if (Array.isArray(value)) {
-    return value.map((v) => paramText(code, name, v)).join(JOINED[name] ?? ", ");
+    return value.map((v) => paramText(code, name, v, params)).join(JOINED[name] ?? ", ");
   }
   if (SUBJECT_FIELDS[code]?.includes(name)) return subject(value);
   if (code === "coincident-points" && name === "kind") return spacing(value);
   if (code === "knots-not-clamped" && name === "end") {
     return has(`coreError.end.${value}`) ? t(`coreError.end.${value}`) : String(value);
   }
-  if (code === "out-buffer" && name === "got") {
-    const length = /^length (\d+)$/.exec(value);
-    if (length) return t("coreError.bufferLength", { length: exactNumber(Number(length[1])) });
+  if (code === "out-buffer" && name === "got" && value === "array") {
+    return t("coreError.bufferLength", { length: exactNumber(params.length) });
   }
   return value === undefined || value === null ? value : String(value);
 }
@@ -197,7 +196,7 @@ function coded(code, params = {}, err = {}) {
   if (!plural && !has(key)) return null;
   const values = {};
   for (const [name, value] of Object.entries(params ?? {})) {
-    const text = paramText(code, name, value);
+    const text = paramText(code, name, value, params);
     if (text !== undefined && text !== null) values[name] = text;
   }
   for (const [name, derive] of Object.entries(DERIVED[code] ?? {})) {

@@ -66,6 +66,7 @@ import { Handles, pointHandles, pointLabel, pointListsHandles } from "./handles.
 import { Handles3D } from "./handles3d.js";
 import { listHandles3 } from "./handle-lists3d.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
@@ -268,7 +269,7 @@ export function mountDeclared(demo, initialState, ctx) {
       try {
         swapModel(derive.build(work, sl));
       } catch (err) {
-        ctx.status(err.message, "error");
+        ctx.status(errorText(err), "error");
       }
       changed = null;
     }

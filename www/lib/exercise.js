@@ -7,6 +7,7 @@
 import { el, setText } from "./controls.js";
 import { mountDemo } from "./shell.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 /**
  * Mounts `exercise` with its loaded `demo` in `root`. `options` are mountDemo's (sl, state,
@@ -60,7 +61,7 @@ export function mountExercise(root, exercise, demo, options) {
     try {
       outcome = exercise.check(options.sl, controller.state);
     } catch (err) {
-      outcome = { solved: false, detail: err.message };
+      outcome = { solved: false, detail: errorText(err) };
     }
     result.dataset.kind = outcome.solved ? "solved" : "not-yet";
     setText(

@@ -8,6 +8,7 @@
  * when it could not (G1 with P_{n−1} = P_n: no tangent to follow), for the demo to show.
  */
 import { flatten } from "./geometry.js";
+import { errorText } from "./core-errors.js";
 
 export class JoinedPieces {
   /** `intervals`: `{ left: [a, b], right: [b, c] }`; throws what the core throws (nothing leaks). */
@@ -53,7 +54,7 @@ export class JoinedPieces {
     try {
       this.follow(state, adjust);
     } catch (err) {
-      this.error = err.message;
+      this.error = errorText(err);
     }
   }
 

@@ -12,6 +12,7 @@ import { prepareFigure } from "./three-loader.js";
 import { loadDemo } from "../demos/index.js";
 import { locale, t } from "./strings.js";
 import { buildHash } from "./state.js";
+import { errorText } from "./core-errors.js";
 
 /** A caption in the active language, else English. */
 export function captionOf(scene) {
@@ -87,7 +88,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
       demo = await loadDemo(scene.demo);
       await prepareFigure(demo);
     } catch (err) {
-      setText(caption, err.message);
+      setText(caption, errorText(err));
       return;
     }
     if (ticket !== loading) return;
@@ -99,7 +100,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     try {
       state = validateState(demo, scene.state ?? {});
     } catch (err) {
-      problem = err.message;
+      problem = errorText(err);
       state = validateState(demo, structuredClone(demo.defaultState));
     }
     const slot = el("div");

@@ -19,6 +19,7 @@ import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
 import { parseNumberInput, splitNumberList } from "./format.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
 function fragment(...nodes) {
@@ -180,7 +181,7 @@ export function choice(
           ui.replace(next);
         } catch (err) {
           control.set(ui.state[field]);
-          ui.status(err.message, "error");
+          ui.status(errorText(err), "error");
         }
       };
       const control = radios({
@@ -250,7 +251,7 @@ export function pointButtons(field, o) {
           ui.replace(state);
           return true;
         } catch (err) {
-          ui.status(err.message, "error");
+          ui.status(errorText(err), "error");
           return false;
         }
       };

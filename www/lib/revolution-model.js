@@ -1,3 +1,4 @@
+import { errorText } from "./core-errors.js";
 /**
  * The wasm side of the surface-revolution demo: the curves of the current mode and the surface
  * the core makes from them (`sl.revolve`, `sl.extrude`, `sl.ruled`), kept as one object with a
@@ -121,7 +122,7 @@ export class Construction {
       this.surface.free();
       this.surface = next;
     } catch (err) {
-      ui.status(err.message, "error");
+      ui.status(errorText(err), "error");
     }
   }
 

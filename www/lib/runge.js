@@ -10,6 +10,7 @@
  */
 import { slider as sliderElement } from "./controls.js";
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 export const RUNGE_HALF_WIDTH = 6;
 export const RUNGE_HEIGHT = 4;
@@ -45,7 +46,7 @@ export function countSlider({ prefix, min, max, rescaled }) {
         try {
           ui.replace(next, final);
         } catch (err) {
-          ui.status(err.message, "error");
+          ui.status(errorText(err), "error");
         }
       };
       const control = sliderElement({

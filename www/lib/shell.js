@@ -24,6 +24,7 @@ import { el, button } from "./controls.js";
 import { formatNumber, has, t } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
 import { mountDeclared, validateDeclared } from "./demo.js";
+import { errorText } from "./core-errors.js";
 
 /** Info messages clear themselves after this many ms; errors stay until replaced. */
 const INFO_MESSAGE_MS = 8000;
@@ -296,7 +297,7 @@ export function mountDemo(
     try {
       next = validateState(demo, candidate);
     } catch (err) {
-      showStatus(t(errorKey, { message: err.message, name }), "error");
+      showStatus(t(errorKey, { message: errorText(err), name }), "error");
       return false;
     }
     const previous = history.current;
@@ -304,7 +305,7 @@ export function mountDemo(
       instance.update(next);
     } catch (err) {
       // The wasm constructors validate again; keep the page alive on their refusal too.
-      showStatus(t(errorKey, { message: err.message, name }), "error");
+      showStatus(t(errorKey, { message: errorText(err), name }), "error");
       try {
         instance.update(previous);
       } catch {
@@ -406,7 +407,7 @@ export function mountDemo(
       if (accept(candidate, { errorKey: "status.badImport", name }))
         showStatus(t("status.imported", { name }));
     } catch (err) {
-      showStatus(t("status.badImport", { name, message: err.message }), "error");
+      showStatus(t("status.badImport", { name, message: errorText(err) }), "error");
     }
   });
 

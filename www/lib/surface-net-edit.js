@@ -12,6 +12,7 @@ import { slider as sliderElement, setText } from "./controls.js";
 import { shortNumber, subscript } from "./format.js";
 import { t } from "./strings.js";
 import { weightText } from "./weight-sliders.js";
+import { errorText } from "./core-errors.js";
 
 const LABELS = new Map();
 /** "P₂,₃": row i (along u), column j (along v), for a net of `cols` columns (cached). */
@@ -61,7 +62,7 @@ export function insertAtProbe(ui, dir, { prefix, maxLines }) {
       }),
     );
   } catch (err) {
-    ui.status(err.message, "error");
+    ui.status(errorText(err), "error");
   } finally {
     refined?.free();
   }
@@ -104,7 +105,7 @@ export function resetKnots(ui, dir, kind, degree = null) {
       fresh: [],
     });
   } catch (err) {
-    ui.status(err.message, "error");
+    ui.status(errorText(err), "error");
   }
 }
 
@@ -113,7 +114,7 @@ export function typedKnots(ui, dir, values) {
   try {
     ui.replace({ ...ui.state, [dir === "u" ? "knotsU" : "knotsV"]: values, fresh: [] });
   } catch (err) {
-    ui.status(err.message, "error");
+    ui.status(errorText(err), "error");
   }
 }
 

@@ -5,6 +5,7 @@
  */
 
 import { t } from "./strings.js";
+import { errorText } from "./core-errors.js";
 
 const PACKAGE_URL = new URL("../pkg/splinelab.js", import.meta.url);
 
@@ -67,7 +68,7 @@ export function replaceOrReport(ui, next) {
     ui.replace(next);
     return true;
   } catch (err) {
-    ui.status(t("status.rejected", { message: err.message }), "error");
+    ui.status(t("status.rejected", { message: errorText(err) }), "error");
     return false;
   }
 }

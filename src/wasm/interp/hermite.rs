@@ -23,7 +23,7 @@ pub fn hermite_basis_js(s: f64, order: Option<f64>) -> Result<Vec<f64>, ApiError
             return Err(Error::UnknownOption {
                 name: "order",
                 value: order.to_string(),
-                expected: "0 or 1",
+                expected: "0, 1",
             }
             .into())
         }
