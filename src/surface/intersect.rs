@@ -7,14 +7,22 @@ use glam::{DMat3, DVec3};
 /// Deepest subdivision level of the box recursion below a Bézier patch.
 pub const MAX_SURFACE_INTERSECTION_DEPTH: u32 = 32;
 
-/// Most boxes one search looks at; past this, every box still pending starts a Newton
-/// refinement instead of being split.
-const MAX_INTERSECTION_BOXES: usize = 50_000;
+/// The work one search may spend on boxes, in units of `(p + 1)(q + 1)(p + q + 2)`, what
+/// looking at and quartering one box of a degree-(p, q) patch costs (bounds of its net, then de
+/// Casteljau along both directions): 50 000 boxes of a bicubic. Past it, every box still
+/// pending starts a Newton refinement instead of being split. A work budget: a high-degree
+/// surface would otherwise spend seconds on the same number of boxes.
+pub const MAX_INTERSECTION_WORK: usize = 50_000 * 16 * 8;
 
 /// A piece is split until its net is this close to a parallelogram (`2δ + |D|/4`, see
 /// `flatness`) relative to its bounding box's diagonal: a line then meets it at most once,
 /// unless it nearly lies in it, and Newton from its centre converges.
 const FLAT_ENOUGH: f64 = 1e-2;
+
+/// The boxes [`MAX_INTERSECTION_WORK`] pays for on a degree-(p, q) surface (at least one).
+fn max_boxes(p: usize, q: usize) -> usize {
+    (MAX_INTERSECTION_WORK / ((p + 1) * (q + 1) * (p + q + 2))).max(1)
+}
 
 /// Newton steps from one start.
 const MAX_NEWTON_STEPS: usize = 40;
@@ -28,7 +36,8 @@ impl BSplineSurface {
     /// `(½, ½)` while the line meets the bounding box of their control points (grown by
     /// `tolerance`; the patch lies in the convex hull of its net, weights being > 0), until a
     /// piece is nearly a parallelogram (`2δ + |D|/4 ≤ 1e-2 ×` its diagonal), smaller than
-    /// `tolerance`, or [`MAX_SURFACE_INTERSECTION_DEPTH`] deep. Boxes the line misses are
+    /// `tolerance`, or [`MAX_SURFACE_INTERSECTION_DEPTH`] deep, and while the boxes' work stays
+    /// within [`MAX_INTERSECTION_WORK`]. Boxes the line misses are
     /// pruned, so a line missing the surface's bounding box costs one test per patch.
     ///
     /// **Refinement.** From each remaining piece's centre, Newton's method on
@@ -73,6 +82,37 @@ impl BSplineSurface {
         }
         let tolerance = check_tolerance(tolerance)?;
         let unit = direction / length;
+        let max_boxes = max_boxes(self.degree_u(), self.degree_v());
+        let (starts, _) = self.boxes_on_line(origin, unit, tolerance, max_boxes)?;
+        let mut hits: Vec<([f64; 3], DVec3)> = Vec::new();
+        for (u, v) in starts {
+            let Some((u, v, point)) = self.newton_on_line(u, v, origin, direction)? else {
+                continue;
+            };
+            let foot = origin + (point - origin).dot(unit) * unit;
+            if (point - foot).length() > tolerance
+                || hits.iter().any(|(_, q)| (*q - point).length() <= tolerance)
+            {
+                continue;
+            }
+            let s = (point - origin).dot(direction) / (length * length);
+            // Few hits: kept sorted by s as they come (no sort instantiation in the wasm).
+            let at = hits.partition_point(|(h, _)| h[2] <= s);
+            hits.insert(at, ([u, v, s], point));
+        }
+        Ok(hits.into_iter().map(|(h, _)| h).collect())
+    }
+
+    /// The search of [`BSplineSurface::intersect_line`]: the `(u, v)` centres of the pieces
+    /// Newton starts from, and the number of boxes looked at (at most `max_boxes`, plus the
+    /// four of the last split).
+    fn boxes_on_line(
+        &self,
+        origin: DVec3,
+        unit: DVec3,
+        tolerance: f64,
+        max_boxes: usize,
+    ) -> Result<(Vec<(f64, f64)>, usize)> {
         let mut starts = Vec::new();
         let mut stack: Vec<_> = self
             .pieces()?
@@ -93,7 +133,7 @@ impl BSplineSurface {
             if flat
                 || diagonal <= 3.0 * tolerance
                 || depth >= MAX_SURFACE_INTERSECTION_DEPTH
-                || visited + stack.len() >= MAX_INTERSECTION_BOXES
+                || visited + stack.len() >= max_boxes
             {
                 starts.push((0.5 * (u.0 + u.1), 0.5 * (v.0 + v.1)));
                 continue;
@@ -105,23 +145,7 @@ impl BSplineSurface {
             stack.push((b, (u.0, um), (vm, v.1), depth + 1));
             stack.push((a, (u.0, um), (v.0, vm), depth + 1));
         }
-        let mut hits: Vec<([f64; 3], DVec3)> = Vec::new();
-        for (u, v) in starts {
-            let Some((u, v, point)) = self.newton_on_line(u, v, origin, direction)? else {
-                continue;
-            };
-            let foot = origin + (point - origin).dot(unit) * unit;
-            if (point - foot).length() > tolerance
-                || hits.iter().any(|(_, q)| (*q - point).length() <= tolerance)
-            {
-                continue;
-            }
-            let s = (point - origin).dot(direction) / (length * length);
-            // Few hits: kept sorted by s as they come (no sort instantiation in the wasm).
-            let at = hits.partition_point(|(h, _)| h[2] <= s);
-            hits.insert(at, ([u, v, s], point));
-        }
-        Ok(hits.into_iter().map(|(h, _)| h).collect())
+        Ok((starts, visited))
     }
 
     /// Damped Newton on `S(u, v) − origin − s·direction = 0` from `(u, v)`, `(u, v)` clamped to
@@ -189,4 +213,45 @@ fn line_meets_box(origin: DVec3, unit: DVec3, lo: DVec3, hi: DVec3) -> bool {
         leave = leave.min(t0.max(t1));
     }
     enter <= leave
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    #[test]
+    fn the_work_budget_gives_fewer_boxes_to_higher_degrees() {
+        assert_eq!(max_boxes(3, 3), 50_000, "a bicubic keeps its 50 000 boxes");
+        assert_eq!(max_boxes(30, 2), MAX_INTERSECTION_WORK / (31 * 3 * 34));
+        assert!(max_boxes(64, 64) >= 1);
+    }
+
+    #[test]
+    fn the_box_search_stops_at_its_budget() {
+        // A ruling of an extruded degree-24 wiggle lies in the surface: the pieces along it
+        // split until flat; with a budget of 16 boxes the search stops early, and Newton from
+        // the pieces it has still finds the line's points on the surface.
+        let n = 24;
+        let mut seed = 7u32;
+        let mut random = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            f64::from(seed >> 8) / f64::from(1u32 << 24) * 2.0 - 1.0
+        };
+        let points: Vec<DVec3> = (0..=n)
+            .map(|i| DVec3::new(i as f64 / n as f64, random(), 0.0))
+            .collect();
+        let knots = [vec![0.0; n + 1], vec![1.0; n + 1]].concat();
+        let curve = crate::BSplineCurve::new(points, n, knots, None).unwrap();
+        let s = crate::surface::extrude(&curve, DVec3::Z).unwrap();
+        let origin = s.evaluate(0.37, 0.5).unwrap();
+        let (_, free) = s
+            .boxes_on_line(origin, DVec3::Z, 1e-12, usize::MAX)
+            .unwrap();
+        let (starts, capped) = s.boxes_on_line(origin, DVec3::Z, 1e-12, 16).unwrap();
+        assert!(free > 16, "the budget must bind: {free} boxes without it");
+        assert!(capped <= 16 + 4, "{capped} boxes, budget 16");
+        assert!(!starts.is_empty());
+    }
 }

@@ -6,11 +6,19 @@ use crate::error::{Error, Result};
 use crate::geom::Params;
 use glam::{DVec3, DVec4};
 
+/// Most vertices of one mesh whose normal is taken from [`BSplineSurface::normal`]'s limits
+/// (where `S_u × S_v` degenerates: a pole, a collapsed edge, derivatives that underflow). Each
+/// costs a few surface evaluations; past this, such vertices take the mean of the adjacent
+/// triangles' normals, as those where even the limit gives none. A work budget: a surface
+/// degenerate everywhere (a huge parameter interval) would otherwise spend seconds here.
+pub const MAX_LIMIT_NORMALS: usize = 1 << 14;
+
 impl BSplineSurface {
     /// A triangle mesh of the whole surface: `(nu + 1)(nv + 1)` vertices at equally spaced
     /// parameters (`nu` × `nv` quads, like three.js' `ParametricGeometry`), vertex `a·(nv + 1) + b`
     /// at `(u_a, v_b)` (kept in [`Mesh::uvs`]), unit normals from [`BSplineSurface::normal`] (where even its limit
-    /// gives none, the mean of the adjacent triangles' normals), and two triangles per quad,
+    /// gives none, or past [`MAX_LIMIT_NORMALS`] such vertices, the mean of the adjacent
+    /// triangles' normals), and two triangles per quad,
     /// counter-clockwise seen from the side the normals point to.
     ///
     /// # Errors
@@ -30,7 +38,7 @@ impl BSplineSurface {
             grid(self.knots_u.domain(), nu),
             grid(self.knots_v.domain(), nv),
         );
-        let (points, mut normals, missing) = self.grid_with_normals(&us, &vs);
+        let (points, mut normals, missing) = self.grid_with_normals(&us, &vs, MAX_LIMIT_NORMALS);
         let mut indices = Vec::with_capacity(6 * nu * nv);
         for a in 0..nu {
             for b in 0..nv {
@@ -60,8 +68,14 @@ impl BSplineSurface {
     /// derivatives of the basis tabulated too: each u collapses the rows into the homogeneous
     /// curves `A(u, ·)` and `A_u(u, ·)`, and each v gives `A`, `A_u`, `A_v` with `q + 1` terms;
     /// then `S = A/w`, `S_u = (A_u − w_u S)/w`, `S_v = (A_v − w_v S)/w`. Where `S_u × S_v`
-    /// degenerates, `normal` (with its limits) is asked instead.
-    fn grid_with_normals(&self, us: &[f64], vs: &[f64]) -> (Vec<f64>, Vec<f64>, Vec<usize>) {
+    /// degenerates, `normal` (with its limits) is asked instead, at most `max_limits` times.
+    pub(super) fn grid_with_normals(
+        &self,
+        us: &[f64],
+        vs: &[f64],
+        max_limits: usize,
+    ) -> (Vec<f64>, Vec<f64>, Vec<usize>) {
+        let mut limits = 0;
         let (p, q) = (self.degree_u(), self.degree_v());
         // The v basis and its derivative, once per v: the first column, then the q + 1 values
         // and the q + 1 derivatives.
@@ -121,7 +135,13 @@ impl BSplineSurface {
                 let normal = if lu > tiny && lv > tiny && lc > 1e-24 * lu * lv {
                     cross * (1.0 / lc.sqrt())
                 } else {
-                    self.normal(u, v).unwrap_or_else(|_| {
+                    limits += 1;
+                    let limit = if limits <= max_limits {
+                        self.normal(u, v).ok()
+                    } else {
+                        None
+                    };
+                    limit.unwrap_or_else(|| {
                         missing.push(points.len() / 3);
                         DVec3::ZERO
                     })
@@ -179,4 +199,48 @@ pub struct Mesh {
     pub uvs: Vec<f32>,
     /// Three vertex indices per triangle.
     pub indices: Vec<u32>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    #[test]
+    fn limit_normals_past_the_budget_come_from_the_triangles() {
+        // A flat bilinear patch whose row u = 0 collapses to one point: S_v = 0 there, so each
+        // of the 5 vertices of that row needs the limit; the normal is +z everywhere.
+        let coords = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0];
+        let s = BSplineSurface::bezier(&coords, 2, 2, None).unwrap();
+        let grid = [0.0, 0.25, 0.5, 0.75, 1.0];
+        let (_, normals, missing) = s.grid_with_normals(&grid, &grid, usize::MAX);
+        assert!(missing.is_empty(), "every limit exists: {missing:?}");
+        let (points, mut capped, missing) = s.grid_with_normals(&grid, &grid, 2);
+        assert_eq!(
+            missing,
+            [2, 3, 4],
+            "past 2 limits, the row's other vertices wait"
+        );
+        let mut indices = Vec::new();
+        for a in 0..4u32 {
+            for b in 0..4u32 {
+                let v00 = a * 5 + b;
+                indices.extend_from_slice(&[v00, v00 + 5, v00 + 6, v00, v00 + 6, v00 + 1]);
+            }
+        }
+        fill_missing_normals(&points, &mut capped, &indices, &missing);
+        // Vertex 4, the corner of the collapsed row, touches only degenerate triangles: the
+        // fallback leaves it zero, so it is not compared.
+        for (k, (n, c)) in normals
+            .chunks(3)
+            .zip(capped.chunks(3))
+            .enumerate()
+            .filter(|(k, _)| *k != 4)
+        {
+            let z = n[2].signum();
+            assert!((n[2].abs() - 1.0).abs() < 1e-12, "vertex {k}: {n:?}");
+            assert!((c[2] - z).abs() < 1e-12, "vertex {k}: {c:?} against {n:?}");
+        }
+    }
 }
