@@ -24,6 +24,13 @@ fn max_boxes(p: usize, q: usize) -> usize {
     (MAX_INTERSECTION_WORK / ((p + 1) * (q + 1) * (p + q + 2))).max(1)
 }
 
+/// Most Newton refinements one search runs, so at most this many hits. Past it the remaining
+/// pieces are not refined: only a line lying in (or along) the surface, or a tolerance far
+/// below the surface's size, leaves this many pieces, and a line in the surface gets a sample
+/// of its points anyway. A work budget: 60 000 starts (each up to 40 steps, and each new hit
+/// compared with those kept) took seconds.
+pub const MAX_NEWTON_STARTS: usize = 1 << 12;
+
 /// Newton steps from one start.
 const MAX_NEWTON_STEPS: usize = 40;
 
@@ -46,7 +53,7 @@ impl BSplineSurface {
     /// still converges to the nearest point), `(u, v)` kept in the domain. A result is kept
     /// when its point lies within `tolerance` of the line; hits whose points lie within
     /// `tolerance` of each other are merged (the first in the search is kept), so a hit on a
-    /// patch seam is reported once.
+    /// patch seam is reported once. At most [`MAX_NEWTON_STARTS`] pieces are refined.
     ///
     /// **A line lying in the surface** (a segment of it on the surface) has infinitely many
     /// hits: the result is then a finite sample of that segment, at most one point per piece
@@ -85,7 +92,7 @@ impl BSplineSurface {
         let max_boxes = max_boxes(self.degree_u(), self.degree_v());
         let (starts, _) = self.boxes_on_line(origin, unit, tolerance, max_boxes)?;
         let mut hits: Vec<([f64; 3], DVec3)> = Vec::new();
-        for (u, v) in starts {
+        for (u, v) in starts.into_iter().take(MAX_NEWTON_STARTS) {
             let Some((u, v, point)) = self.newton_on_line(u, v, origin, direction)? else {
                 continue;
             };

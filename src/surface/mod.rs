@@ -26,7 +26,7 @@ pub use adaptive::{MAX_ADAPTIVE_DEPTH, MAX_ADAPTIVE_VERTICES};
 pub use construct::{
     extrude, grid_params, interpolate_surface, revolve, ruled, MAX_REVOLUTION_ARC,
 };
-pub use intersect::{MAX_INTERSECTION_WORK, MAX_SURFACE_INTERSECTION_DEPTH};
+pub use intersect::{MAX_INTERSECTION_WORK, MAX_NEWTON_STARTS, MAX_SURFACE_INTERSECTION_DEPTH};
 pub use mesh::{Mesh, MAX_LIMIT_NORMALS};
 pub use patches::SEAM_TOLERANCE;
 pub use teaching::{bezier_basis_matrix, PatchDeCasteljau, PatchMatrixForm};
