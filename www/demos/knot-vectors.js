@@ -11,7 +11,15 @@
  */
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
-import { fmt, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  degreeName,
+  fmtTex,
+  fmtMachine,
+  listSeparator,
+  pointText,
+  texListSeparator,
+} from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
@@ -276,14 +284,14 @@ export function draw(r, v, s, d) {
   }
 }
 
-/** A knot as short text: integers plain, else 3 decimals. */
-function knotText(x) {
-  return Number.isInteger(x) ? String(x) : fmt(x);
+/** A knot as short text (TeX with `tex`): integers plain, else 3 decimals. */
+function knotText(x, tex = false) {
+  return Number.isInteger(x) ? String(x) : tex ? fmtTex(x) : fmt(x);
 }
 
 /** A point as "(x, y)" with integers plain. */
-function pointText(x, y) {
-  return `(${knotText(Number(fmt(x)))}, ${knotText(Number(fmt(y)))})`;
+function pointLabel(x, y) {
+  return pointText([knotText(Number(fmtMachine(x))), knotText(Number(fmtMachine(y)))]);
 }
 
 const tex = (key) => `\\text{${t(`knotVectors.tex.${key}`)}}`;
@@ -303,16 +311,16 @@ export function formula(s, d) {
     for (let i = 0; i < n - p + 1; i++) {
       const length = Math.hypot(pts[i + 1][0] - pts[i][0], pts[i + 1][1] - pts[i][1]);
       const term = s.spacing === "chord" ? length : Math.sqrt(length);
-      legs.push(Number.isInteger(term) ? String(term) : fmt(term));
+      legs.push(Number.isInteger(term) ? String(term) : fmtTex(term));
     }
     const leg = s.spacing === "chord" ? "|P_{i+1}-P_i|" : "|P_{i+1}-P_i|^{1/2}";
     const range = `(j = 1,\\dots,${n - p + 1};\\ ${tex("lastRepeated")})`;
     const sum = `u_{p+j} = \\sum_{i=0}^{j-1} ${leg}`;
     lines.push(`U_{${tex(s.spacing)}}:\\ u_0 = \\dots = u_{p} = 0,\\quad ${sum}\\ \\ ${range}`);
-    lines.push(`${tex("legs")}\\ ${legs.join(",\\ ")}`);
+    lines.push(`${tex("legs")}\\ ${legs.join(texListSeparator())}`);
   }
   lines.push(
-    `\\phantom{U} = (${d.shown[0].knots.map(knotText).join(",\\,")}),\\quad n = ${n},\\ p = ${p}`,
+    `\\phantom{U} = (${d.shown[0].knots.map((u) => knotText(u, true)).join(texListSeparator("\\,"))}),\\quad n = ${n},\\ p = ${p}`,
   );
   const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${p}, ${n + 1}]`;
   lines.push(
@@ -336,15 +344,15 @@ function starts(s, d) {
   const [c, u] = d.shown;
   const [x0, y0] = s.points[0];
   return {
-    c0: pointText(c.start[0], c.start[1]),
-    u0: pointText(u.start[0], u.start[1]),
-    p0: pointText(x0, y0),
+    c0: pointLabel(c.start[0], c.start[1]),
+    u0: pointLabel(u.start[0], u.start[1]),
+    p0: pointLabel(x0, y0),
   };
 }
 
 /** "cubic B-splines with 6 control points; clamped knots …; the clamped curve starts at …". */
 export function label(s, d) {
-  const clamped = d.shown[0].knots.map(knotText).join(" ");
+  const clamped = d.shown[0].knots.map((u) => knotText(u)).join(" ");
   return t("knotVectors.aria", {
     kind: degreeName(s.degree),
     count: s.points.length,
@@ -415,12 +423,12 @@ export function setup(ui) {
       const p0 = s.points[0];
       rows.forEach(({ row, cells }, c) => {
         const { knots, a, b, start, end } = d.shown[c];
-        setText(cells.knots, knots.map(knotText).join(" "));
-        setText(cells.domain, `[${knotText(a)}, ${knotText(b)}]`);
-        setText(cells.start, pointText(start[0], start[1]));
-        setText(cells.end, pointText(end[0], end[1]));
-        row.dataset.start = `${fmt(start[0])},${fmt(start[1])}`;
-        row.dataset.end = `${fmt(end[0])},${fmt(end[1])}`;
+        setText(cells.knots, knots.map((u) => knotText(u)).join(" "));
+        setText(cells.domain, `[${knotText(a)}${listSeparator()}${knotText(b)}]`);
+        setText(cells.start, pointLabel(start[0], start[1]));
+        setText(cells.end, pointLabel(end[0], end[1]));
+        row.dataset.start = `${fmtMachine(start[0])},${fmtMachine(start[1])}`;
+        row.dataset.end = `${fmtMachine(end[0])},${fmtMachine(end[1])}`;
         row.dataset.startIsP0 = String(Math.hypot(start[0] - p0[0], start[1] - p0[1]) < 1e-9);
       });
     },

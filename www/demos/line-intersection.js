@@ -15,7 +15,15 @@ import { field } from "../lib/validate.js";
 import { readout, group } from "../lib/panel.js";
 import { placeLabel } from "../lib/handles.js";
 import { slider, button, el, setText } from "../lib/controls.js";
-import { fmt, subscript, simpleFraction, fractionText } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  fractionText,
+  pointText,
+  listTex,
+  listText,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { detailsTable } from "../lib/table.js";
@@ -350,10 +358,7 @@ export function formula(s, d) {
   const { roots, polygonCrossings } = d.found;
   const [[ax, ay], [bx, by]] = s.line;
   const pointTex = (x, y) => `(${coord(x)},\\ ${coord(y)})`;
-  const rootsTex =
-    roots.length === 0
-      ? "\\varnothing"
-      : `\\{${Array.from(roots, (root) => fmt(root)).join(",\\ ")}\\}`;
+  const rootsTex = roots.length === 0 ? "\\varnothing" : `\\{${listTex(roots)}\\}`;
   const text = (key) => `\\text{${t(`lineIntersection.formula.${key}`)}}`;
   return [
     `d(P) = \\frac{(B - A) \\times (P - A)}{\\lvert B - A \\rvert}, \\qquad ` +
@@ -369,9 +374,9 @@ export function formula(s, d) {
 export function label(s, d) {
   const roots = d.found.roots;
   const [[ax, ay], [bx, by]] = s.line;
-  const tList = Array.from(roots, (root) => fmt(root)).join(", ");
+  const tList = listText(roots);
   return t("lineIntersection.aria", {
-    points: s.points.map(([x, y]) => `(${coord(x)}, ${coord(y)})`).join(", "),
+    points: listText(s.points.map(([x, y]) => pointText([coord(x), coord(y)]))),
     a: `(${coord(ax)}, ${coord(ay)})`,
     b: `(${coord(bx)}, ${coord(by)})`,
     result: roots.length === 0 ? t("lineIntersection.none") : `${countText(s, d)} (t = ${tList})`,
@@ -430,7 +435,7 @@ export function setup(ui) {
           cells[k].t,
           fraction && fraction.den > 1 ? `${decimals} = ${fractionText(fraction)}` : decimals,
         );
-        setText(cells[k].point, `(${fmt(points[2 * k])}, ${fmt(points[2 * k + 1])})`);
+        setText(cells[k].point, pointText([points[2 * k], points[2 * k + 1]]));
       }
     },
   };

@@ -83,6 +83,14 @@ export function listSeparator() {
   return decimalSeparator() === "," ? "; " : ", ";
 }
 
+/**
+ * What separates the numbers of a typed list a text box shows, so that `splitNumberList` reads
+ * it back: " " ("0 0 1.5 2"), or "; " with a decimal comma ("0; 0; 1,5; 2").
+ */
+export function inputListSeparator() {
+  return decimalSeparator() === "," ? "; " : " ";
+}
+
 /** `listSeparator` for TeX, with `space` after the sign: ",\\ " or ";\\ " (TeX `,\ `, `;\ `). */
 export function texListSeparator(space = "\\ ") {
   return `${decimalSeparator() === "," ? ";" : ","}${space}`;
@@ -215,7 +223,13 @@ export function exactNumbers(parameter, inputs) {
     exact,
     /** The parameter: "1/4" (or TeX \tfrac{1}{4}) when exact, else 3 decimals. */
     param: (tex = false) =>
-      exact ? (tex ? fractionTex(exact) : fractionText(exact)) : tex ? fmtTex(parameter) : fmt(parameter),
+      exact
+        ? tex
+          ? fractionTex(exact)
+          : fractionText(exact)
+        : tex
+          ? fmtTex(parameter)
+          : fmt(parameter),
     /** x after `level` steps: a fraction over (a divisor of) den^level when exact, else decimals. */
     value(x, level, tex = false, den = exact ? exact.den ** level : 1) {
       const g = exact ? exactFraction(x, den) : null;
@@ -256,6 +270,12 @@ export function exactText(x) {
   if (Math.abs(x) < 1e-12) return "0";
   const text = Math.abs(x) < SMALL ? localeDecimal(x.toPrecision(2)) : fractionOrDecimals(x);
   return text.replace("-", "−");
+}
+
+/** `exactText` as TeX: fractions as \tfrac, a decimal comma as "{,}", a TeX minus. */
+export function exactTex(x) {
+  if (Math.abs(x) < 1e-12) return "0";
+  return Math.abs(x) < SMALL ? texDecimal(x.toPrecision(2)) : fractionOrDecimals(x, true);
 }
 
 /**

@@ -21,7 +21,7 @@
  */
 import { fmt, pointTex, shortNumber, subscript, texListSeparator } from "./format.js";
 import { t } from "./strings.js";
-import { pointText } from "./system-table.js";
+import { rowPoint } from "./system-table.js";
 
 /** Δ's written out at most this many; more are elided in the middle. */
 const MAX_DELTAS = 8;
@@ -43,7 +43,8 @@ export function interiorRowTex() {
 /** "Δ_i = t_{i+1} − t_i: 1, 1, …, 1 (uniform)" with the current params. */
 export function deltasTex(params, kindName) {
   const deltas = [];
-  for (let i = 0; i + 1 < params.length; i++) deltas.push(shortNumber(params[i + 1] - params[i], true));
+  for (let i = 0; i + 1 < params.length; i++)
+    deltas.push(shortNumber(params[i + 1] - params[i], true));
   const shown =
     deltas.length <= MAX_DELTAS
       ? deltas
@@ -66,7 +67,10 @@ export function numericRowTex(system, i, size) {
     const part = term(a, j, terms.length === 0);
     if (part) terms.push(part);
   }
-  const rhs = pointTex([shortNumber(system.rhs[2 * i], true), shortNumber(system.rhs[2 * i + 1], true)]);
+  const rhs = pointTex([
+    shortNumber(system.rhs[2 * i], true),
+    shortNumber(system.rhs[2 * i + 1], true),
+  ]);
   return `${terms.join(" ")} = ${rhs}`;
 }
 
@@ -185,8 +189,8 @@ export function showSplineSystem(table, { end, system, params }, { lecture, para
     number,
     entry: (i, j) => systemEntry(system, size, i, j),
     unknown: (i) => `m${subscript(i)}`,
-    solution: (i) => (lecture ? "" : `= ${pointText(system.solution, i, 2, number)}`),
-    rhs: (i) => pointText(system.rhs, i, 2, number),
+    solution: (i) => (lecture ? "" : `= ${rowPoint(system.solution, i, 2, number)}`),
+    rhs: (i) => rowPoint(system.rhs, i, 2, number),
     label: (i) => rowLabel(end, i, size, params.length - 1),
     highlight: (i) => i === 0 || i === size - 1,
     // The corners of the cyclic system: a_{0,N−1} and a_{N−1,0}.

@@ -1305,8 +1305,8 @@ export function locale() {
  */
 export function decimalSeparator() {
   decimalSign ??=
-    new Intl.NumberFormat(activeCode).formatToParts(1.5).find((p) => p.type === "decimal")
-      ?.value ?? ".";
+    new Intl.NumberFormat(activeCode).formatToParts(1.5).find((p) => p.type === "decimal")?.value ??
+    ".";
   return decimalSign;
 }
 

@@ -57,7 +57,7 @@ export function shownIndices(size, maxShown) {
  * Row i of a flat list of `dim`-vectors as a point, "(1, 3/2)" ("(1,5; 3/2)" with a decimal
  * comma); `number` writes a coordinate.
  */
-export function pointText(flat, i, dim, number = exactText) {
+export function rowPoint(flat, i, dim, number = exactText) {
   const parts = [];
   for (let c = 0; c < dim; c++) parts.push(number(flat[i * dim + c]));
   return `(${parts.join(listSeparator())})`;
