@@ -39,6 +39,7 @@ import {
   listTex,
   listText,
   pointTex,
+  exactTex,
 } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";

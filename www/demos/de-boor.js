@@ -22,7 +22,15 @@ import {
 import { parameterStrip } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
-import { fmt, subscript, degreeName, pointTex, DECIMALS, listTex } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  degreeName,
+  pointTex,
+  DECIMALS,
+  listTex,
+  fractionOrDecimals,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";

@@ -189,7 +189,9 @@ export function setup(ui) {
           const x = d.triangle[2 * k];
           const y = d.triangle[2 * k + 1];
           const decimals = pointText([x, y]);
-          const exact = num.exact ? `(${num.value(x, level)}, ${num.value(y, level)})` : decimals;
+          const exact = num.exact
+            ? pointText([num.value(x, level), num.value(y, level)])
+            : decimals;
           setValueSpans(cells[k], exact, decimals);
         }
       }

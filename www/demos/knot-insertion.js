@@ -34,6 +34,7 @@ import {
   listSeparator,
   listTex,
   listText,
+  fractionOrDecimals,
 } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";

@@ -377,8 +377,8 @@ export function label(s, d) {
   const tList = listText(roots);
   return t("lineIntersection.aria", {
     points: listText(s.points.map(([x, y]) => pointText([coord(x), coord(y)]))),
-    a: `(${coord(ax)}, ${coord(ay)})`,
-    b: `(${coord(bx)}, ${coord(by)})`,
+    a: pointText([coord(ax), coord(ay)]),
+    b: pointText([coord(bx), coord(by)]),
     result: roots.length === 0 ? t("lineIntersection.none") : `${countText(s, d)} (t = ${tList})`,
     polygon: d.found.polygonCrossings,
     depth: shownDepth(s, d),
