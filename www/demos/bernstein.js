@@ -31,6 +31,7 @@ import {
   pointTex,
   listTex,
   listText,
+  texListSeparator,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, paddedBounds, nearestGraph } from "../lib/geometry.js";
@@ -358,7 +359,7 @@ export function formula(s, d) {
   const B = `B_{${focus}}^{${n}}`;
   return [
     `B_i^{${n}}(t) = \\binom{${n}}{i}\\, t^{i}\\,(1-t)^{${n}-i},\\qquad ` +
-      `\\max_{[0,1]} B_i^{${n}} = B_i^{${n}}\\!\\left(\\tfrac{i}{${n}}\\right),\\qquad t = ${tTex}`,
+      `\\max_{[0${texListSeparator("")}1]} B_i^{${n}} = B_i^{${n}}\\!\\left(\\tfrac{i}{${n}}\\right),\\qquad t = ${tTex}`,
     `${B}(${tTex}) = \\binom{${n}}{${focus}} \\left(${tTex}\\right)^{${focus}} ` +
       `\\left(${oneMinusTex}\\right)^{${n - focus}} = ` +
       `${binomial(n, focus)} \\cdot ${tPower} \\cdot ${sPower} = ${w.value(values[focus], n, true)},\\qquad ${peak}`,

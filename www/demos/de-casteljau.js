@@ -17,6 +17,7 @@ import {
   exactNumbers,
   pointTex,
   pointText,
+  listTex,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -127,7 +128,7 @@ export function formula(s, d) {
     `p_i^{r} = (1-t)\\,p_i^{r-1} + t\\,p_{i+1}^{r-1},\\quad r = 1,\\dots,${n},\\quad t = ${num.param(true)}`,
     `P(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_i = ${weights.join(" + ")}`,
     `P(${num.param(true)}) = p_0^{${n}} = ` +
-      `\\left(${num.value(x, n, true)},\\ ${num.value(y, n, true)}\\right) ${approx}`,
+      `\\left(${listTex([num.value(x, n, true), num.value(y, n, true)])}\\right) ${approx}`,
   ];
 }
 

@@ -35,6 +35,7 @@ import {
   DECIMALS,
   fmtTex,
   pointTex,
+  listTex,
 } from "../lib/format.js";
 import { HUES, WIDTH, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
@@ -377,7 +378,7 @@ function drawTangents(r, v, s, jointLabel) {
 
 /** (x, y) in TeX, exact where the numbers allow. */
 const pairTex = (num, x, y, level) =>
-  `\\left(${num.value(x, level, true)},\\ ${num.value(y, level, true)}\\right)`;
+  `\\left(${listTex([num.value(x, level, true), num.value(y, level, true)])}\\right)`;
 
 /** The basis, the piece's formula with its numbers, the Bézier form when shown, the unlocked joint. */
 export function formula(s, d) {

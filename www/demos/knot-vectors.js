@@ -19,6 +19,8 @@ import {
   listSeparator,
   pointText,
   texListSeparator,
+  listTex,
+  pointTex,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -289,9 +291,10 @@ function knotText(x, tex = false) {
   return Number.isInteger(x) ? String(x) : tex ? fmtTex(x) : fmt(x);
 }
 
-/** A point as "(x, y)" with integers plain. */
-function pointLabel(x, y) {
-  return pointText([knotText(Number(fmtMachine(x))), knotText(Number(fmtMachine(y)))]);
+/** A point as "(x, y)" with integers plain (TeX with `tex`). */
+function pointLabel(x, y, tex = false) {
+  const [a, b] = [x, y].map((v) => knotText(Number(fmtMachine(v)), tex));
+  return tex ? pointTex([a, b]) : pointText([a, b]);
 }
 
 const tex = (key) => `\\text{${t(`knotVectors.tex.${key}`)}}`;
@@ -322,7 +325,7 @@ export function formula(s, d) {
   lines.push(
     `\\phantom{U} = (${d.shown[0].knots.map((u) => knotText(u, true)).join(texListSeparator("\\,"))}),\\quad n = ${n},\\ p = ${p}`,
   );
-  const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${p}, ${n + 1}]`;
+  const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${listTex([String(p), String(n + 1)], 0, " ")}]`;
   lines.push(
     `U_{${tex("unclamped")}}:\\ u_i = i,\\ i = 0,\\dots,n+p+1 = ${n + p + 1};\\quad ${domain}`,
   );
@@ -331,7 +334,7 @@ export function formula(s, d) {
   lines.push(
     `U_{${tex("closed")}}:\\ ${closedPoints};\\ ${closedKnots};\\quad C^{${p - 1}}\\ ${tex("seam")}`,
   );
-  const { c0, u0, p0 } = starts(s, d);
+  const { c0, u0, p0 } = starts(s, d, true);
   const clampedStart = `C_{${tex("clamped")}}(u_{${p}}) = ${c0} ${c0 === p0 ? "= P_0" : "\\ne P_0"}`;
   lines.push(
     `${clampedStart},\\qquad C_{${tex("unclamped")}}(u_{${p}}) = ${u0} ${u0 === p0 ? "= P_0" : "\\ne P_0"}`,
@@ -339,14 +342,14 @@ export function formula(s, d) {
   return lines;
 }
 
-/** Start points of the clamped and unclamped curves, and P₀, as text. */
-function starts(s, d) {
+/** Start points of the clamped and unclamped curves, and P₀, as text (TeX with `tex`). */
+function starts(s, d, tex = false) {
   const [c, u] = d.shown;
   const [x0, y0] = s.points[0];
   return {
-    c0: pointLabel(c.start[0], c.start[1]),
-    u0: pointLabel(u.start[0], u.start[1]),
-    p0: pointLabel(x0, y0),
+    c0: pointLabel(c.start[0], c.start[1], tex),
+    u0: pointLabel(u.start[0], u.start[1], tex),
+    p0: pointLabel(x0, y0, tex),
   };
 }
 

@@ -23,6 +23,9 @@ import {
   pointText,
   listTex,
   listText,
+  fmtTex,
+  pointTex,
+  localeDecimal,
 } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -234,7 +237,7 @@ function boxesText(s, d) {
     visited,
     hit,
     pruned: visited - hit,
-    tolerance: BOX_TOLERANCE,
+    tolerance: localeDecimal(String(BOX_TOLERANCE)),
   });
 }
 
@@ -348,21 +351,21 @@ export function draw(r, v, s, d) {
 
 // ------------------------------------------------------------ formula, label, table
 
-/** A coordinate for labels and formulas: integers as they are, others with 2 decimals. */
-function coord(x) {
-  return Number.isInteger(x) ? String(x) : fmt(x, 2);
+/** A coordinate for labels and formulas (TeX with `tex`): integers as they are, others with 2 decimals. */
+function coord(x, tex = false) {
+  return Number.isInteger(x) ? String(x) : tex ? fmtTex(x, 2) : fmt(x, 2);
 }
 
 /** The signed distance to the line, the pruning rule, the roots and the crossing counts. */
 export function formula(s, d) {
   const { roots, polygonCrossings } = d.found;
   const [[ax, ay], [bx, by]] = s.line;
-  const pointTex = (x, y) => `(${coord(x)},\\ ${coord(y)})`;
+  const pairTex = (x, y) => pointTex([coord(x, true), coord(y, true)]);
   const rootsTex = roots.length === 0 ? "\\varnothing" : `\\{${listTex(roots)}\\}`;
   const text = (key) => `\\text{${t(`lineIntersection.formula.${key}`)}}`;
   return [
     `d(P) = \\frac{(B - A) \\times (P - A)}{\\lvert B - A \\rvert}, \\qquad ` +
-      `A = ${pointTex(ax, ay)},\\ B = ${pointTex(bx, by)}`,
+      `A = ${pairTex(ax, ay)},\\ B = ${pairTex(bx, by)}`,
     `d(c_1), \\dots, d(c_4)\\ ${text("miss")} \\;\\Rightarrow\\; ${text("pruned")}`,
     `${text("split")}\\ t = \\tfrac12 ${text("until")}\\ 10^{${Math.round(Math.log10(BOX_TOLERANCE))}}`,
     `t \\in ${rootsTex}, \\qquad ` +
@@ -424,7 +427,9 @@ export function setup(ui) {
         ui.status(t("lineIntersection.failed", { message: error }), "error");
       reported = d.found;
       const count = roots.length;
-      const caption = t("lineIntersection.tableCaption", { tolerance: ROOT_TOLERANCE });
+      const caption = t("lineIntersection.tableCaption", {
+        tolerance: localeDecimal(String(ROOT_TOLERANCE)),
+      });
       setText(details.title, count === 0 ? t("lineIntersection.tableNone") : caption);
       const cells = details.cellsFor(count);
       for (let k = 0; k < count; k++) {

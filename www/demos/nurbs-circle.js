@@ -25,6 +25,7 @@ import {
   listText,
   localeDecimal,
   texDecimal,
+  texListSeparator,
 } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatPath } from "../lib/draw.js";
@@ -115,6 +116,19 @@ function buildCurve(sl, s) {
   const axisY = new Float64Array([-s.ry * sin, s.ry * c]);
   return sl.ellipseArc(new Float64Array([cx, cy]), axisX, axisY, start, sweep);
 }
+
+/** The control points of the unit circle's NURBS, counter-clockwise from (1, 0). */
+const UNIT_POINTS = [
+  [1, 0],
+  [1, 1],
+  [0, 1],
+  [-1, 1],
+  [-1, 0],
+  [-1, -1],
+  [0, -1],
+  [1, -1],
+  [1, 0],
+];
 
 /** "1", "√2/2" or three decimals (`tex`: TeX). */
 function weightText(w, tex = false) {
@@ -403,12 +417,17 @@ export function formula(s, d) {
   const middle = Math.cos((delta / 2) * RADIANS);
   const samples = `(${SAMPLES} \\text{ ${t("nurbsCircle.formula.samples")}})`;
   const error = errorText(d.error, true);
+  // The unit circle's nine points, weights and knots (";" between entries with a decimal comma).
+  const comma = texListSeparator("");
+  const unit = UNIT_POINTS.map(([x, y]) => `(${x}${comma}${y})`).join(texListSeparator(" "));
+  const r2 = "\\tfrac{\\sqrt2}{2}";
+  const weights = [1, r2, 1, r2, 1, r2, 1, r2, 1].join(texListSeparator(" "));
+  const knots = ["0", "0", "0", "\\tfrac14", "\\tfrac14", "\\tfrac12", "\\tfrac12", "\\tfrac34"];
+  const knotList = [...knots, "\\tfrac34", "1", "1", "1"].join(comma);
   return [
     `C(u) = \\frac{\\sum_{i} N_{i,2}(u)\\,w_i\\,P_i}{\\sum_{i} N_{i,2}(u)\\,w_i}`,
-    `\\text{${t("nurbsCircle.formula.circle")}: } P_i = c + r\\,\\{(1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1), ` +
-      `(0,-1), (1,-1), (1,0)\\}`,
-    `w_i = 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1,\\qquad ` +
-      `U = \\{0,0,0,\\tfrac14,\\tfrac14,\\tfrac12,\\tfrac12,\\tfrac34,\\tfrac34,1,1,1\\}`,
+    `\\text{${t("nurbsCircle.formula.circle")}: } P_i = c + r\\,\\{${unit}\\}`,
+    `w_i = ${weights},\\qquad U = \\{${knotList}\\}`,
     `\\text{${t("nurbsCircle.formula.here")}: } ${pieces} \\text{ ${tp("nurbsCircle.formula.pieces", pieces)} } ` +
       `\\Delta = \\tfrac{{${fmtTex(Math.abs(s.sweep), 0)}}^\\circ}{${pieces}} = {${fmtTex(delta, 2)}}^\\circ \\le 90^\\circ,\\ ` +
       `\\text{${t("nurbsCircle.formula.middleWeights")} } \\cos\\tfrac{\\Delta}{2} = ${weightText(middle, true)},\\ ` +

@@ -95,7 +95,10 @@ export const fields = {
       if (w <= 0) throw new Error(t("projective.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
         throw new Error(
-          t("projective.weightRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          t("projective.weightRange", {
+            name: wi,
+            ...shownNumbers({ value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          }),
         );
       }
     });

@@ -29,6 +29,7 @@ import {
   listText,
   localeDecimal,
   texListSeparator,
+  shownNumbers,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -96,7 +97,10 @@ export const fields = {
       if (w <= 0) throw new Error(t("weights.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
         throw new Error(
-          t("weights.outOfRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          t("weights.outOfRange", {
+            name: wi,
+            ...shownNumbers({ value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          }),
         );
       }
     });
@@ -213,7 +217,10 @@ function scaleAll(ui) {
   const up = max * SCALE_FACTOR <= WEIGHT_MAX;
   const factor = up ? SCALE_FACTOR : min / SCALE_FACTOR >= WEIGHT_MIN ? 1 / SCALE_FACTOR : 0;
   if (!factor) {
-    ui.status(t("weights.cannotScale", { min: WEIGHT_MIN, max: WEIGHT_MAX }), "error");
+    ui.status(
+      t("weights.cannotScale", shownNumbers({ min: WEIGHT_MIN, max: WEIGHT_MAX })),
+      "error",
+    );
     return;
   }
   setAllWeights(ui, (w) => w * factor);

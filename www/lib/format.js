@@ -84,6 +84,17 @@ export function listSeparator() {
 }
 
 /**
+ * `params` for a sentence (`t(key, params)`) with every number as `String` writes it but with
+ * the active language's decimal separator (0.001 → "0,001", 1e-9 stays "1e-9"); others as they are.
+ */
+export function shownNumbers(params) {
+  const shown = {};
+  for (const [key, value] of Object.entries(params))
+    shown[key] = typeof value === "number" ? localeDecimal(String(value)) : value;
+  return shown;
+}
+
+/**
  * What separates the numbers of a typed list a text box shows, so that `splitNumberList` reads
  * it back: " " ("0 0 1.5 2"), or "; " with a decimal comma ("0; 0; 1,5; 2").
  */

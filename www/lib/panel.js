@@ -17,7 +17,13 @@ import {
 } from "./controls.js";
 import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
-import { inputListSeparator, localeDecimal, parseNumberInput, splitNumberList } from "./format.js";
+import {
+  inputListSeparator,
+  localeDecimal,
+  parseNumberInput,
+  splitNumberList,
+  shownNumbers,
+} from "./format.js";
 import { t } from "./strings.js";
 
 /** Nodes placed side by side in whatever holds the control (a fieldset or the panel). */
@@ -74,7 +80,7 @@ export function slider(field, o) {
       let player = null;
       const control = sliderElement({
         label: t(o.label),
-        inputLabel: t(o.input ?? `${o.label}.input`, o.inputParams),
+        inputLabel: t(o.input ?? `${o.label}.input`, o.inputParams && shownNumbers(o.inputParams)),
         name: o.name ?? field,
         min,
         max,

@@ -133,7 +133,7 @@ export default {
   "deCasteljau.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "deCasteljau.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "deCasteljau.whatYouSee":
-    "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) uz t = 1/4 daje P(t) = (29/16, 23/16).",
+    "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2) uz t = 1/4 daje P(t) = (29/16; 23/16).",
   "deCasteljau.try1":
     "Pritisnite Pokreni i gledajte kako konstrukcija klizi duž poligona dok P(t) iscrtava krivulju.",
   "deCasteljau.try2":
@@ -216,9 +216,9 @@ export default {
   "subdivision.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "subdivision.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "subdivision.whatYouSee":
-    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16, 23/16).",
+    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16; 23/16).",
   "subdivision.try1":
-    "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) i desne točke (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
+    "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0; 0), (1/2; 1/2), (9/8; 1), (29/16; 23/16) i desne točke (29/16; 23/16), (31/8; 11/4), (13/2; 7/2), (8; 2).",
   "subdivision.try2":
     "Povećajte broj razina na 3: osam poligona, već blizu krivulje; uz 5 ili 6 teško ih je razlikovati od nje.",
   "subdivision.try3":
@@ -425,7 +425,7 @@ export default {
   "bezierProperties.aria.variation":
     "{kind} Bézierova krivulja i pravac: pravac siječe kontrolni poligon {k} puta, a krivulju {j} puta",
   "bezierProperties.whatYouSee":
-    "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "bezierProperties.try1":
     "Odaberite „Afino preslikavanje” i pomičite klizač smicanja: crvene točkice (preslikane točke krivulje) ostaju na zelenoj krivulji (izgrađenoj od preslikanih kontrolnih točaka).",
   "bezierProperties.try2":
@@ -467,9 +467,9 @@ export default {
   "derivatives.row.length": "duljina luka",
   "derivatives.row.hodograph": "H{i} = {label}",
   "derivatives.whatYouSee":
-    "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "derivatives.try1":
-    "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6, 6) na početku i 3(P₃ − P₂) = (6, −6) na kraju — prva i zadnja stranica poligona hodografa.",
+    "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6; 6) na početku i 3(P₃ − P₂) = (6; −6) na kraju — prva i zadnja stranica poligona hodografa.",
   "derivatives.try2":
     "Povucite P₂ ispod pravca P₀P₃: krivulja skreće na drugu stranu, κ mijenja predznak, a kružnica skače na drugu stranu.",
   "derivatives.try3":
@@ -584,7 +584,7 @@ export default {
   "deBoor.try1":
     "Pritisnite Pokreni i gledajte kako aktivne točke skaču kad u prijeđe uzao na traci ispod slike.",
   "deBoor.try2":
-    "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) završava u (29/16, 23/16)).",
+    "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0; 0), (2; 2), (6; 4), (8; 2) završava u (29/16; 23/16)).",
   "deBoor.try3":
     "Upišite ponovljeni unutarnji uzao, npr. 0 0 0 0 1 2 2 4 4 4 4: neki α postaju 0 ili 1, a krivulja prolazi bliže kontrolnoj točki.",
   "knotVectors.title": "Vrste vektora uzlova",
@@ -1820,13 +1820,13 @@ export default {
   "exercise.close-the-gap.task":
     "Dvije se kubne krivulje ne spajaju. Povucite Q₀ na P₃ tako da krivulja bude neprekinuta (C⁰).",
   "exercise.close-the-gap.hint":
-    "C⁰ zahtijeva samo da posljednja točka prvog segmenta bude prva točka drugog: Q₀ = P₃ = (4, 1).",
+    "C⁰ zahtijeva samo da posljednja točka prvog segmenta bude prva točka drugog: Q₀ = P₃ = (4; 1).",
   "exercise.close-the-gap.notYet": "Još ne: Q₀ je od P₃ udaljena {detail}.",
   "exercise.make-it-c1.title": "Učinite spoj C¹",
   "exercise.make-it-c1.task":
     "Segmenti se spajaju, ali pod kutom. Pomaknite Q₁ tako da spoj bude C¹: ista derivacija s obje strane.",
   "exercise.make-it-c1.hint":
-    "Za dvije kubne krivulje C¹ znači 3(P₃ − P₂) = 3(Q₁ − Q₀), pa je Q₁ = 2P₃ − P₂ = (5, −1).",
+    "Za dvije kubne krivulje C¹ znači 3(P₃ − P₂) = 3(Q₁ − Q₀), pa je Q₁ = 2P₃ − P₂ = (5; −1).",
   "exercise.make-it-c1.notYet": "Još ne: jezgra u spoju mjeri C{detail}.",
   "exercise.bezier-pieces.title": "Razrežite krivulju na Bézierove segmente",
   "exercise.bezier-pieces.task":
@@ -1837,7 +1837,7 @@ export default {
     "Još ne: broj unutarnjih uzlova u kojima je krivulja još C¹: {detail}.",
   "exercise.quarter-circle.title": "Četvrtina kružnice",
   "exercise.quarter-circle.task":
-    "Kontrolne točke (4, 0), (4, 4), (0, 4) čine jednakokračni trokut. Odaberite težinu w₁ tako da luk bude točno četvrtina kružnice polumjera 4 sa središtem u (0, 0).",
+    "Kontrolne točke (4; 0), (4; 4), (0; 4) čine jednakokračni trokut. Odaberite težinu w₁ tako da luk bude točno četvrtina kružnice polumjera 4 sa središtem u (0; 0).",
   "exercise.quarter-circle.hint":
     "Za kružni luk w₁ je kosinus polovine središnjeg kuta luka: ovdje je taj kut 90°, pa je w₁ = cos 45° = √2/2 ≈ 0,7071.",
   "exercise.quarter-circle.notYet": "Još ne: polumjer duž luka varira za {detail} %.",

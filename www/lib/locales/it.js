@@ -135,7 +135,7 @@ export default {
   "deCasteljau.minPoints": "qui una curva di Bézier richiede almeno {min} punti di controllo",
   "deCasteljau.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "deCasteljau.whatYouSee":
-    "Una curva di Bézier (blu) e il suo poligono di controllo (grigio, tratteggiato). Per il parametro t, ogni lato del poligono è diviso nel rapporto t : (1 − t); i nuovi punti (livello 1) formano un poligono più corto che viene diviso di nuovo, finché resta un solo punto: il punto P(t) sulla curva (vermiglio). La figura iniziale è l'esempio svolto delle dispense greche (sezione 2 del programma): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) per t = 1/4 dà P(t) = (29/16, 23/16).",
+    "Una curva di Bézier (blu) e il suo poligono di controllo (grigio, tratteggiato). Per il parametro t, ogni lato del poligono è diviso nel rapporto t : (1 − t); i nuovi punti (livello 1) formano un poligono più corto che viene diviso di nuovo, finché resta un solo punto: il punto P(t) sulla curva (vermiglio). La figura iniziale è l'esempio svolto delle dispense greche (sezione 2 del programma): P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2) per t = 1/4 dà P(t) = (29/16; 23/16).",
   "deCasteljau.try1":
     "Premi Avvia e osserva la costruzione scorrere lungo il poligono mentre P(t) traccia la curva.",
   "deCasteljau.try2":
@@ -218,9 +218,9 @@ export default {
   "subdivision.minPoints": "qui una curva di Bézier richiede almeno {min} punti di controllo",
   "subdivision.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "subdivision.whatYouSee":
-    "Una curva di Bézier (blu) tagliata in t₀ (punto vermiglio) in due curve di Bézier dello stesso grado. Il pezzo sinistro ha i punti di controllo L₀ … Lₙ (verdi, linea continua), il primo punto di ogni livello del triangolo di de Casteljau (il suo lato superiore); il pezzo destro ha R₀ … Rₙ (viola, tratteggiato, quadrati), l'ultimo punto di ogni livello (l'ipotenusa); il resto del triangolo è disegnato tenue. Con livelli sopra 0, ogni pezzo è dimezzato ancora e ancora in 1/2: dopo k livelli 2ᵏ piccoli poligoni aderiscono alla curva, ed è per questo che la suddivisione ripetuta converge a essa. La figura iniziale è l'esempio svolto cubico delle dispense greche (sezione 2 del programma); per t₀ = 1/4 le metà si incontrano in (29/16, 23/16).",
+    "Una curva di Bézier (blu) tagliata in t₀ (punto vermiglio) in due curve di Bézier dello stesso grado. Il pezzo sinistro ha i punti di controllo L₀ … Lₙ (verdi, linea continua), il primo punto di ogni livello del triangolo di de Casteljau (il suo lato superiore); il pezzo destro ha R₀ … Rₙ (viola, tratteggiato, quadrati), l'ultimo punto di ogni livello (l'ipotenusa); il resto del triangolo è disegnato tenue. Con livelli sopra 0, ogni pezzo è dimezzato ancora e ancora in 1/2: dopo k livelli 2ᵏ piccoli poligoni aderiscono alla curva, ed è per questo che la suddivisione ripetuta converge a essa. La figura iniziale è l'esempio svolto cubico delle dispense greche (sezione 2 del programma); per t₀ = 1/4 le metà si incontrano in (29/16; 23/16).",
   "subdivision.try1":
-    "Digita 1/4 per t₀: la tabella mostra i punti sinistri dell'esempio svolto (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) e quelli destri (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
+    "Digita 1/4 per t₀: la tabella mostra i punti sinistri dell'esempio svolto (0; 0), (1/2; 1/2), (9/8; 1), (29/16; 23/16) e quelli destri (29/16; 23/16), (31/8; 11/4), (13/2; 7/2), (8; 2).",
   "subdivision.try2":
     "Porta i livelli a 3: otto poligoni, già vicini alla curva; a 5 o 6 è difficile distinguerli da essa.",
   "subdivision.try3":
@@ -426,7 +426,7 @@ export default {
   "bezierProperties.aria.variation":
     "Curva di Bézier {kind} e una retta: la retta attraversa il poligono di controllo {k} volte e la curva {j} volte",
   "bezierProperties.whatYouSee":
-    "Una curva di Bézier (blu) e, una alla volta, le proprietà elencate nella sezione 2 del programma (dalle dispense greche): resta dentro l'inviluppo convesso dei suoi punti di controllo; trasformare i punti di controllo con una trasformazione affine trasforma l'intera curva; i punti in ordine inverso danno la stessa curva percorsa all'indietro; l'elevazione del grado aggiunge un punto di controllo senza cambiare la curva; e una retta non attraversa la curva più spesso del poligono di controllo. Si parte dall'esempio svolto P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Una curva di Bézier (blu) e, una alla volta, le proprietà elencate nella sezione 2 del programma (dalle dispense greche): resta dentro l'inviluppo convesso dei suoi punti di controllo; trasformare i punti di controllo con una trasformazione affine trasforma l'intera curva; i punti in ordine inverso danno la stessa curva percorsa all'indietro; l'elevazione del grado aggiunge un punto di controllo senza cambiare la curva; e una retta non attraversa la curva più spesso del poligono di controllo. Si parte dall'esempio svolto P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "bezierProperties.try1":
     "Scegli “Trasformazione affine” e muovi il cursore del taglio: i punti rossi (punti della curva trasformati) restano sulla curva verde (costruita dai punti di controllo trasformati).",
   "bezierProperties.try2":
@@ -469,9 +469,9 @@ export default {
   "derivatives.row.length": "lunghezza d'arco",
   "derivatives.row.hodograph": "H{i} = {label}",
   "derivatives.whatYouSee":
-    "Una curva di Bézier (blu) con il punto P(t), la sua velocità P′(t) (freccia vermiglia), la normale unitaria N e il cerchio osculatore (arancione), il cerchio che aderisce alla curva in P(t), di raggio 1/|κ|. A destra c'è l'odografo (verde, sezione 2 del programma, dalle dispense greche): la curva tracciata dalla velocità, una curva di Bézier di un grado in meno i cui punti di controllo sono n(P₁ − P₀), n(P₂ − P₁), …; la freccia dalla sua origine O è lo stesso vettore P′(t). Si parte dall'esempio svolto P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Una curva di Bézier (blu) con il punto P(t), la sua velocità P′(t) (freccia vermiglia), la normale unitaria N e il cerchio osculatore (arancione), il cerchio che aderisce alla curva in P(t), di raggio 1/|κ|. A destra c'è l'odografo (verde, sezione 2 del programma, dalle dispense greche): la curva tracciata dalla velocità, una curva di Bézier di un grado in meno i cui punti di controllo sono n(P₁ − P₀), n(P₂ − P₁), …; la freccia dalla sua origine O è lo stesso vettore P′(t). Si parte dall'esempio svolto P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "derivatives.try1":
-    "Imposta t a 0 e poi a 1: la velocità è 3(P₁ − P₀) = (6, 6) all'inizio e 3(P₃ − P₂) = (6, −6) alla fine — il primo e l'ultimo lato del poligono dell'odografo.",
+    "Imposta t a 0 e poi a 1: la velocità è 3(P₁ − P₀) = (6; 6) all'inizio e 3(P₃ − P₂) = (6; −6) alla fine — il primo e l'ultimo lato del poligono dell'odografo.",
   "derivatives.try2":
     "Trascina P₂ sotto la retta P₀P₃: la curva gira dall'altra parte, κ cambia segno e il cerchio salta dall'altro lato.",
   "derivatives.try3":
@@ -586,7 +586,7 @@ export default {
   "deBoor.try1":
     "Premi Avvia e osserva i punti attivi saltare quando u attraversa un nodo sulla striscia sotto la figura.",
   "deBoor.try2":
-    "Rimuovi punti finché ne restano quattro, poi digita i nodi 0 0 0 0 1 1 1 1 e u = 1/4: ogni α vale 1/4 e il triangolo è quello di de Casteljau (per P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) termina in (29/16, 23/16)).",
+    "Rimuovi punti finché ne restano quattro, poi digita i nodi 0 0 0 0 1 1 1 1 e u = 1/4: ogni α vale 1/4 e il triangolo è quello di de Casteljau (per P₀ … P₃ = (0; 0), (2; 2), (6; 4), (8; 2) termina in (29/16; 23/16)).",
   "deBoor.try3":
     "Digita un nodo interno ripetuto, es. 0 0 0 0 1 2 2 4 4 4 4: alcuni α diventano 0 o 1 e la curva passa più vicino a un punto di controllo.",
   "knotVectors.title": "Tipi di vettore dei nodi",
@@ -1833,13 +1833,13 @@ export default {
   "exercise.close-the-gap.task":
     "Le due cubiche non si incontrano. Trascina Q₀ su P₃ in modo che la curva sia continua (C⁰).",
   "exercise.close-the-gap.hint":
-    "C⁰ chiede solo che l'ultimo punto del primo pezzo sia il primo punto del secondo: Q₀ = P₃ = (4, 1).",
+    "C⁰ chiede solo che l'ultimo punto del primo pezzo sia il primo punto del secondo: Q₀ = P₃ = (4; 1).",
   "exercise.close-the-gap.notYet": "Non ancora: Q₀ dista {detail} da P₃.",
   "exercise.make-it-c1.title": "Rendi C¹ la giunzione",
   "exercise.make-it-c1.task":
     "I pezzi si incontrano, ma formano un angolo. Sposta Q₁ in modo che la giunzione sia C¹: la stessa derivata da entrambi i lati.",
   "exercise.make-it-c1.hint":
-    "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5, −1).",
+    "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5; −1).",
   "exercise.make-it-c1.notYet": "Non ancora: il core misura C{detail} nella giunzione.",
   "exercise.bezier-pieces.title": "Taglia la curva in segmenti di Bézier",
   "exercise.bezier-pieces.task":
@@ -1850,7 +1850,7 @@ export default {
     "Non ancora: nodi interni in cui la curva è ancora C¹: {detail}.",
   "exercise.quarter-circle.title": "Un quarto di circonferenza",
   "exercise.quarter-circle.task":
-    "I punti di controllo (4, 0), (4, 4), (0, 4) formano un triangolo isoscele. Scegli il peso w₁ in modo che l'arco sia esattamente un quarto della circonferenza di raggio 4 centrata in (0, 0).",
+    "I punti di controllo (4; 0), (4; 4), (0; 4) formano un triangolo isoscele. Scegli il peso w₁ in modo che l'arco sia esattamente un quarto della circonferenza di raggio 4 centrata in (0; 0).",
   "exercise.quarter-circle.hint":
     "Per un arco di circonferenza w₁ è il coseno di metà dell'angolo al centro: qui l'angolo è di 90°, quindi w₁ = cos 45° = √2/2 ≈ 0,7071.",
   "exercise.quarter-circle.notYet": "Non ancora: il raggio varia del {detail} % lungo l'arco.",
