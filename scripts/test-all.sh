@@ -23,11 +23,12 @@ run e2e node tests/e2e/run.mjs
 run package node tests/package/check.mjs
 run i18n node tests/i18n/check.mjs
 run i18n-errors node tests/i18n/core-errors.mjs
+run numbers node tests/i18n/numbers.mjs
 # cargo/wasm-bindgen-test: "test result: ok. 12 passed; 0 failed"; the others end with a line
 # "<suite>: 5 passed, 0 failed" (the API fuzz, make fuzz shortened: "fuzz: 1 passed, 0 failed")
-read -r passed failed < <(cat "$logs"/{native,doc,wasm,memory,fuzz,e2e,package,i18n,i18n-errors}.log 2>/dev/null | awk '
+read -r passed failed < <(cat "$logs"/{native,doc,wasm,memory,fuzz,e2e,package,i18n,i18n-errors,numbers}.log 2>/dev/null | awk '
   /test result:/ { for (i = 1; i <= NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
-  /^(e2e|memory|fuzz|package|i18n): [0-9]+ passed, [0-9]+ failed$/ { p += $2; f += $4 }
+  /^(e2e|memory|fuzz|package|i18n|numbers): [0-9]+ passed, [0-9]+ failed$/ { p += $2; f += $4 }
   END { print p + 0, f + 0 }')
 [ "$failed" -eq 0 ] || status=1
 [ "$passed" -gt 0 ] || { echo "!! no test ran"; status=1; }

@@ -169,10 +169,13 @@ function demoHelpers(page, scope = "") {
   return h;
 }
 
-/** A fresh load of a demo (about:blank first, so a same-document hash change cannot keep state). */
-async function openDemo(page, base, id, hash = "") {
+/**
+ * A fresh load of a demo (about:blank first, so a same-document hash change cannot keep state),
+ * in `lang` when given (`?lang=`).
+ */
+async function openDemo(page, base, id, hash = "", lang = "") {
   await page.goto("about:blank");
-  await page.goto(`${base}/index.html#demo=${id}${hash}`);
+  await page.goto(`${base}/index.html${lang ? `?lang=${lang}` : ""}#demo=${id}${hash}`);
   const h = demoHelpers(page);
   await h.ready();
   return h;
@@ -847,6 +850,15 @@ try {
         ["\\frac12 + 0.5", "\\frac12 + 0.75", true],
         ["\\hspace{3pt} 5", "\\hspace{9pt} 5", false], // a dimension: typeset whole
         ["-1.5", "2.5", false], // another shape
+        // A decimal comma as TeX writes it (format.js fmtTex): "{,}" between two runs of digits,
+        // which KaTeX sets as one number; the shape keeps the comma, the digits change.
+        ["P(0{,}250) = (2{,}000;\\ 3{,}125)", "P(0{,}75) = (12{,}5;\\ 3{,}125)", true],
+        [
+          "\\begin{pmatrix} 1{,}5 & 0 \\\\ 2 & 0{,}25 \\end{pmatrix}",
+          "\\begin{pmatrix} 10{,}75 & 3 \\\\ 2 & 1{,}5 \\end{pmatrix}",
+          true,
+        ],
+        ["x = 1{,}5", "x = 2", false], // a decimal became a whole number: another shape
       ];
       const found = [];
       for (const [first, second, kept] of pairs) {
@@ -878,8 +890,16 @@ try {
 
   await test("formula panel: after a drag the panel is the one a link to the same state typesets afresh", async () => {
     // Every frame of the drag rewrote digits in place; the reload typesets each line whole.
-    for (const id of ["conics", "de-boor", "cardinal", "bezier-patch"]) {
-      const h = await openDemo(page, base, id);
+    // … also with decimal commas ("{,}" in the TeX: Croatian).
+    for (const [id, lang] of [
+      ["conics", "en"],
+      ["de-boor", "en"],
+      ["cardinal", "en"],
+      ["bezier-patch", "en"],
+      ["de-boor", "hr"],
+      ["conics", "hr"],
+    ]) {
+      const h = await openDemo(page, base, id, "", lang);
       const handles = await h.handles();
       const start = handles[1] ?? handles[0];
       await page.mouse.move(start.x, start.y);
@@ -892,9 +912,15 @@ try {
       await settle(page);
       const formula = page.locator(".sl-formula").first();
       const patched = await formula.evaluate((e) => e.innerHTML);
+      if (lang === "hr")
+        assert(/<mn>\d+,\d+<\/mn>/.test(patched), `${id} (hr): decimal commas in the formula`);
       await page.reload();
       await h.ready();
-      equal(await formula.evaluate((e) => e.innerHTML), patched, `${id}: the formula panel`);
+      equal(
+        await formula.evaluate((e) => e.innerHTML),
+        patched,
+        `${id} (${lang}): the formula panel`,
+      );
     }
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
@@ -1249,6 +1275,111 @@ try {
       assert(problems.length === 0, problems.join("\n"));
     });
   }
+
+  // Numbers people read follow the language; what machines read does not. The default De
+  // Casteljau figure, worked out by hand: P = (0, 0), (2, 2), (6, 4), (8, 2), t = 1/4, so
+  // p₀¹ = (0.5, 0.5) and P(1/4) = (29/16, 23/16) = (1.8125, 1.4375): "1.813" in a formula,
+  // "1.81" in the figure's name. With a decimal comma the entries of a point are separated by
+  // "; " ("(1,81; 1,44)") and KaTeX gets "1{,}813", which it sets as one number (one <mn>).
+  /** The link's state, P₁ nudged right by the keyboard, and the announcement that followed. */
+  const nudged = async (live, canvas) => {
+    await canvas.focus(); // keyboard focus selects P₀
+    await page.keyboard.press("Tab");
+    await page.keyboard.press("Shift+ArrowRight");
+    await settle(page);
+    return live.textContent();
+  };
+  for (const [code, dot, sep] of [
+    ["en", ".", ", "],
+    ["hr", ",", "; "],
+    ["el", ",", "; "],
+    ["it", ",", "; "],
+  ]) {
+    await test(`${code}: numbers read in the language: a table cell, the formula (KaTeX), the figure's name, an announcement (${dot === "," ? "decimal comma, “; ” between coordinates" : "decimal point"})`, async () => {
+      const local = (text) => text.replaceAll(".", dot).replaceAll(", ", sep);
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html?lang=${code}#demo=de-casteljau`);
+      const h = demoHelpers(page);
+      await h.ready();
+      const cell = await page
+        .locator('[data-table="de-casteljau"] td[data-level="1"][data-index="0"]')
+        .textContent();
+      assert(cell.includes(local("≈ (0.500, 0.500)")), `table cell p₀¹: ${cell}`);
+      const formula = await page
+        .locator(".sl-formula")
+        .first()
+        .evaluate((panel) => {
+          const lines = [...panel.querySelectorAll(".katex")];
+          return {
+            numbers: lines.flatMap((k) => [...k.querySelectorAll("mn")].map((n) => n.textContent)),
+            shown: lines.map((k) => k.querySelector(".katex-html").textContent).join("\n"),
+          };
+        });
+      const shown = formula.shown.replace(/\u00a0/g, " ");
+      for (const n of ["1.813", "1.438"])
+        assert(
+          formula.numbers.includes(local(n)),
+          `KaTeX sets ${local(n)} as one number: ${formula.numbers.join(" | ")}`,
+        );
+      assert(
+        shown.includes(local("(1.813, 1.438)")),
+        `the formula shows ${local("(1.813, 1.438)")}: ${shown}`,
+      );
+      const name = await h.canvas().getAttribute("aria-label");
+      assert(name.includes(local("(1.81, 1.44)")), `the figure's name: ${name}`);
+      const live = page.locator(".sl-figure .sl-announcer");
+      const moved = await nudged(live, h.canvas());
+      const coordinate = dot === "," ? "\\d+,\\d+" : "\\d+\\.\\d+";
+      assert(new RegExp(`\\(${coordinate}${sep}2\\)$`).test(moved), `announced: ${moved}`);
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    });
+  }
+
+  await test("hr: the link, the JSON export, the SVG path data and the TikZ coordinates keep the decimal point (the same as in English)", async () => {
+    /** The nudged state's link and its exports in language `code`. */
+    const exportsIn = async (code, hash) => {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html?lang=${code}#demo=de-casteljau${hash}`);
+      const h = demoHelpers(page);
+      await h.ready();
+      const read = async (action) => readFileSync(await (await h.download(action)).path(), "utf8");
+      return {
+        hash: new URL(page.url()).hash,
+        json: await read("export-json"),
+        svg: await read("export-svg"),
+        tikz: await read("export-tikz"),
+      };
+    };
+    await page.goto("about:blank");
+    await page.goto(`${base}/index.html?lang=hr#demo=de-casteljau`);
+    const h = demoHelpers(page);
+    await h.ready();
+    await nudged(page.locator(".sl-figure .sl-announcer"), h.canvas());
+    const hash = new URL(page.url()).hash.replace(/^#demo=de-casteljau/, "");
+    const state = await page.evaluate(async () => {
+      const { parseHash, decodeState } = await import("./lib/state.js");
+      return decodeState(parseHash(location.hash).s);
+    });
+    const x = state.points[1][0];
+    assert(x > 2 && !Number.isInteger(x), `P₁ nudged off the grid: ${x}`);
+    const hr = await exportsIn("hr", hash);
+    const en = await exportsIn("en", hash);
+    equal(hr.hash, en.hash, "the link");
+    assert(hr.json.includes(`${x}`) && `${x}`.includes("."), `the JSON holds ${x} with a point`);
+    equal(hr.json, en.json, "the JSON export");
+    const paths = (svg) => [...svg.matchAll(/ d="([^"]*)"/g)].map((m) => m[1]);
+    assert(
+      paths(hr.svg).some((d) => /\d\.\d/.test(d)),
+      "the SVG paths have decimals",
+    );
+    equal(paths(hr.svg).join("\n"), paths(en.svg).join("\n"), "the SVG path data");
+    const coordinates = (tikz) => [...tikz.matchAll(/\((-?[\d.,]+)\)/g)].map((m) => m[1]);
+    assert(coordinates(hr.tikz).length > 10, "TikZ coordinates found");
+    equal(coordinates(hr.tikz).join(" "), coordinates(en.tikz).join(" "), "the TikZ coordinates");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
 
   // Each exercise's goal reached by hand: the values a student would reach, worked out on paper.
   const SOLUTIONS = {

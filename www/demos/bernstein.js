@@ -27,6 +27,11 @@ import {
   exactNumbers,
   degreeName,
   binomial,
+  fmtTex,
+  pointTex,
+  listTex,
+  listText,
+  texListSeparator,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, paddedBounds, nearestGraph } from "../lib/geometry.js";
@@ -339,28 +344,28 @@ export function formula(s, d) {
   const focus = d.highlight >= 0 ? d.highlight : Math.round(s.t * n);
   // Long sums read better in decimals once the common denominator grows large (the table keeps fractions).
   const compact = Boolean(f) && f.den ** n > FORMULA_MAX_DENOMINATOR;
-  const terms = Array.from(values, (value) => (compact ? fmt(value) : w.value(value, n, true)));
+  const terms = Array.from(values, (value) => (compact ? fmtTex(value) : w.value(value, n, true)));
   const weighted = terms.map((term, i) => `${term}\\,P_{${i}}`);
-  const coordinate = (value) => (compact ? fmt(value) : p.value(value, n, true));
+  const coordinate = (value) => (compact ? fmtTex(value) : p.value(value, n, true));
   const exactPoint = p.exact && !compact;
   const fractional = !Number.isInteger(x) || !Number.isInteger(y);
-  const approx = exactPoint && fractional ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
+  const approx = exactPoint && fractional ? `\\approx ${pointTex([x, y])}` : "";
   // t^i and (1 − t)^(n−i) written out (exact when t is a simple fraction): display only.
-  const power = (a, b, k) => (f ? fractionTex({ num: a ** k, den: b ** k }) : fmt((a / b) ** k));
+  const power = (a, b, k) => (f ? fractionTex({ num: a ** k, den: b ** k }) : fmtTex((a / b) ** k));
   const tPower = f ? power(f.num, f.den, focus) : power(s.t, 1, focus);
   const sPower = f ? power(f.den - f.num, f.den, n - focus) : power(1 - s.t, 1, n - focus);
-  const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmt(1 - s.t);
+  const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmtTex(1 - s.t);
   const peak = `\\text{${t("bernstein.formulaPeak")}}\\ t = ${fractionTex(exactFraction(focus / n, n))}`;
   const B = `B_{${focus}}^{${n}}`;
   return [
     `B_i^{${n}}(t) = \\binom{${n}}{i}\\, t^{i}\\,(1-t)^{${n}-i},\\qquad ` +
-      `\\max_{[0,1]} B_i^{${n}} = B_i^{${n}}\\!\\left(\\tfrac{i}{${n}}\\right),\\qquad t = ${tTex}`,
+      `\\max_{[0${texListSeparator("")}1]} B_i^{${n}} = B_i^{${n}}\\!\\left(\\tfrac{i}{${n}}\\right),\\qquad t = ${tTex}`,
     `${B}(${tTex}) = \\binom{${n}}{${focus}} \\left(${tTex}\\right)^{${focus}} ` +
       `\\left(${oneMinusTex}\\right)^{${n - focus}} = ` +
       `${binomial(n, focus)} \\cdot ${tPower} \\cdot ${sPower} = ${w.value(values[focus], n, true)},\\qquad ${peak}`,
     `\\sum_{i=0}^{${n}} B_i^{${n}}(${tTex}) = ${terms.join(" + ")} = ${w.value(sum, n, true)}`,
     `P(${tTex}) = \\sum_{i=0}^{${n}} B_i^{${n}}(${tTex})\\,P_i = ${weighted.join(" + ")} = ` +
-      `\\left(${coordinate(x)},\\ ${coordinate(y)}\\right) ${approx}`,
+      `\\left(${listTex([coordinate(x), coordinate(y)])}\\right) ${approx}`,
   ];
 }
 
@@ -399,7 +404,7 @@ export function label(s, d) {
     count: n + 1,
     n,
     t: fmt(s.t),
-    values: Array.from(values, (value) => fmt(value)).join(", "),
+    values: listText(values),
     sum: fmt(sum),
     x: fmt(d.point[0], 2),
     y: fmt(d.point[1], 2),

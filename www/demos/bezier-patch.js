@@ -14,7 +14,7 @@ import { slider, group } from "../lib/panel.js";
 import { showGroup, shadingChoice, shadingCurvatures } from "../lib/surface-controls.js";
 import { SHADINGS } from "../lib/shading3d.js";
 import { diagonalFraction, drawProbeNormal } from "../lib/probe-normal.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt, subscript, fmtTex, pointTex } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
@@ -206,8 +206,8 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
 }
 
-/** A matrix entry: up to 3 decimals, trailing zeros dropped ("6", "−1.25"). */
-const entry = (x) => fmt(x).replace(/\.?0+$/, "");
+/** A matrix entry as TeX: up to 3 decimals, trailing zeros dropped ("6", "−1.25", "−1{,}25"). */
+const entry = (x) => fmtTex(x).replace(/(?:\.|\{,\})?0+$/, "");
 
 /** A 4 × 4 matrix as TeX from `at(i, j)`. */
 const matrixTex = (at) =>
@@ -221,15 +221,15 @@ const basisTex = (m) => `M = ${matrixTex((i, j) => m.basisU[4 * i + j])}`;
 /** Coordinate c (0 x, 1 y, 2 z) of A = M P Mᵀ as a matrix. */
 const coefficientTex = (m, c) => matrixTex((i, j) => m.coefficients[3 * (4 * i + j) + c]);
 
-const triple = (p) => `(${fmt(p[0])},\\ ${fmt(p[1])},\\ ${fmt(p[2])})`;
+const triple = (p) => pointTex([p[0], p[1], p[2]]);
 
 export function formula(s, d) {
   return [
     `S(u, v) = [u^3\\ u^2\\ u\\ 1]\\, A \\,[v^3\\ v^2\\ v\\ 1]^T,\\quad A = M\\, P\\, M^T,\\quad ${basisTex(d.matrix)}`,
     `A_x = ${coefficientTex(d.matrix, 0)},\\quad A_y = ${coefficientTex(d.matrix, 1)}`,
     `A_z = ${coefficientTex(d.matrix, 2)}`,
-    t("bezierPatch.texGeneratrix", { v: fmt(s.v) }),
-    `S(${fmt(s.u)}, ${fmt(s.v)}) = ${triple(d.point)},\\quad n = \\frac{S_u \\times S_v}{\\lvert S_u \\times S_v \\rvert} = ${triple(d.normalAt)}`,
+    t("bezierPatch.texGeneratrix", { v: fmtTex(s.v) }),
+    `S${pointTex([s.u, s.v])} = ${triple(d.point)},\\quad n = \\frac{S_u \\times S_v}{\\lvert S_u \\times S_v \\rvert} = ${triple(d.normalAt)}`,
   ];
 }
 

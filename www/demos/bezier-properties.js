@@ -18,6 +18,12 @@ import {
   fractionText,
   fractionTex,
   allIntegers,
+  pointTex,
+  pointText,
+  fmtMachine,
+  fmtTex,
+  listTex,
+  texListSeparator,
 } from "../lib/format.js";
 import { HUES, WIDTH, SECOND_CURVE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
@@ -212,12 +218,12 @@ const PROPERTY = {
       for (let i = 0; i <= n; i++) {
         const b = d.sl.bernstein(n, i, 0.5);
         const f = exactFraction(b, 2 ** n);
-        weights.push(f ? fractionTex(f) : fmt(b));
+        weights.push(f ? fractionTex(f) : fmtTex(b));
       }
       return [
         `P(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_i,\\qquad B_i^{${n}}(t) \\ge 0,\\quad ` +
           `\\sum_{i=0}^{${n}} B_i^{${n}}(t) = 1`,
-        `t = \\tfrac{1}{2}:\\quad B^{${n}}(\\tfrac12) = (${weights.join(",\\ ")}),\\quad ` +
+        `t = \\tfrac{1}{2}:\\quad B^{${n}}(\\tfrac12) = (${listTex(weights)}),\\quad ` +
           `\\text{${t("bezierProperties.formula.sum")}} = 1`,
         `\\Rightarrow\\ P(t) \\in \\operatorname{conv}\\{P_0, \\dots, P_{${n}}\\} \\quad ` +
           `(${d.hull.length}\\ \\text{${t("bezierProperties.formula.hullVertices")}})`,
@@ -227,7 +233,7 @@ const PROPERTY = {
   },
   affine: {
     readout: (s, d) => t("bezierProperties.readout.affine", { d: fmt(d.affine.distance) }),
-    data: (s, d) => ({ maxDistance: fmt(d.affine.distance) }),
+    data: (s, d) => ({ maxDistance: fmtMachine(d.affine.distance) }),
     formula(s, d, n) {
       const {
         matrix: [a, b, c, e],
@@ -235,14 +241,14 @@ const PROPERTY = {
         distance,
       } = d.affine;
       return [
-        `A = R({${fmt(s.rotation, 0)}}^\\circ)\\cdot ${fmt(s.scale, 2)}\\cdot` +
-          `\\begin{pmatrix}1 & ${fmt(s.shear, 2)}\\\\ 0 & 1\\end{pmatrix} = ` +
-          `\\begin{pmatrix}${fmt(a)} & ${fmt(b)}\\\\ ${fmt(c)} & ${fmt(e)}\\end{pmatrix},\\quad ` +
-          `c = (${fmt(centre[0])},\\ ${fmt(centre[1])})`,
+        `A = R({${fmtTex(s.rotation, 0)}}^\\circ)\\cdot ${fmtTex(s.scale, 2)}\\cdot` +
+          `\\begin{pmatrix}1 & ${fmtTex(s.shear, 2)}\\\\ 0 & 1\\end{pmatrix} = ` +
+          `\\begin{pmatrix}${fmtTex(a)} & ${fmtTex(b)}\\\\ ${fmtTex(c)} & ${fmtTex(e)}\\end{pmatrix},\\quad ` +
+          `c = ${pointTex([centre[0], centre[1]])}`,
         `\\Phi(x) = c + A(x - c):\\qquad \\Phi\\Big(\\sum_i B_i^{${n}}(t)\\,P_i\\Big) = ` +
           `\\sum_i B_i^{${n}}(t)\\,\\Phi(P_i) ` +
           `\\quad\\text{${t("bezierProperties.formula.because")}}\\ \\sum_i B_i^{${n}}(t) = 1`,
-        `\\max_{t}\\ |\\Phi(P(t)) - \\tilde P(t)| = ${fmt(distance)}\\quad ` +
+        `\\max_{t}\\ |\\Phi(P(t)) - \\tilde P(t)| = ${fmtTex(distance)}\\quad ` +
           `(${MAPPED_DOTS}\\ \\text{${t("bezierProperties.formula.samples")}})`,
       ];
     },
@@ -257,14 +263,14 @@ const PROPERTY = {
   },
   reversed: {
     readout: (s, d) => t("bezierProperties.readout.reversed", { d: fmt(d.reversed.distance) }),
-    data: (s, d) => ({ maxDistance: fmt(d.reversed.distance) }),
+    data: (s, d) => ({ maxDistance: fmtMachine(d.reversed.distance) }),
     formula: (s, d, n) => [
       `R_i = P_{${n} - i}:\\quad R(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_{${n}-i} = \\sum_{j=0}^{${n}} ` +
         `B_{${n}-j}^{${n}}(t)\\,P_j = \\sum_{j=0}^{${n}} B_j^{${n}}(1-t)\\,P_j = P(1-t)`,
       `B_j^{n}(t) = B_{n-j}^{n}(1-t),\\quad \\text{${t("bezierProperties.formula.forExample")} } ` +
-        `B_0^{${n}}(\\tfrac14) = ${fmt(d.sl.bernstein(n, 0, 0.25))} = ` +
+        `B_0^{${n}}(\\tfrac14) = ${fmtTex(d.sl.bernstein(n, 0, 0.25))} = ` +
         `B_{${n}}^{${n}}(\\tfrac34)`,
-      `\\max_{t}\\ |R(1-t) - P(t)| = ${fmt(d.reversed.distance)}\\quad ` +
+      `\\max_{t}\\ |R(1-t) - P(t)| = ${fmtTex(d.reversed.distance)}\\quad ` +
         `(${CURVE_SAMPLES}\\ \\text{${t("bezierProperties.formula.samples")}})`,
     ],
     aria: (s, d, kind) =>
@@ -283,17 +289,17 @@ const PROPERTY = {
       const ints = allIntegers(s.points.flat());
       const coord = (x) => {
         const f = ints ? exactFraction(x, den) : null;
-        return f ? fractionTex(f) : fmt(x);
+        return f ? fractionTex(f) : fmtTex(x);
       };
       const first = d.elevation.first;
       const q = [];
       for (let i = 0; i <= n + 1; i++)
-        q.push(`(${coord(first[2 * i])},\\ ${coord(first[2 * i + 1])})`);
+        q.push(pointTex([coord(first[2 * i]), coord(first[2 * i + 1])]));
       const count = elevatedCount(d);
       return [
         `Q_i = \\frac{i}{n+1}\\,P_{i-1} + \\Big(1 - \\frac{i}{n+1}\\Big)P_i,\\quad i = 0,\\dots,n+1,\\quad n = ${n}`,
         `Q_1 = \\tfrac{1}{${den}}\\,P_0 + \\tfrac{${n}}{${den}}\\,P_1 = ${q[1]}`,
-        `Q = ${q.join(",\\ ")}`,
+        `Q = ${q.join(texListSeparator())}`,
         `${s.elevations}\\times:\\ ${n + 1} + ${s.elevations} = ${count}\\ ` +
           `\\text{${t("bezierProperties.formula.points")}}`,
       ];
@@ -485,10 +491,7 @@ export function setup(ui) {
         const y = first[2 * i + 1];
         const fx = ints ? exactFraction(x, n + 1) : null;
         const fy = ints ? exactFraction(y, n + 1) : null;
-        setText(
-          cells[i],
-          fx && fy ? `(${fractionText(fx)}, ${fractionText(fy)})` : `(${fmt(x)}, ${fmt(y)})`,
-        );
+        setText(cells[i], pointText(fx && fy ? [fractionText(fx), fractionText(fy)] : [x, y]));
       }
     },
   };

@@ -29,7 +29,18 @@ import {
 import { replaceOrReport } from "../lib/wasm.js";
 import { BasisPlotPointer, drawGraph, drawPlotFrame } from "../lib/basis-plot.js";
 import { placeLabelAway } from "../lib/handles.js";
-import { fmt, subscript, simpleFraction, fractionText, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  fractionText,
+  degreeName,
+  fmtTex,
+  listSeparator,
+  listTex,
+  listText,
+  pointTex,
+} from "../lib/format.js";
 import { CYCLE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { boundsOf, nearestGraph } from "../lib/geometry.js";
@@ -333,7 +344,7 @@ export function draw(r, v, s, d) {
 /** u as TeX: a simple fraction when it is one. */
 function uTexOf(u) {
   const f = simpleFraction(u);
-  return f && f.den > 1 ? `\\tfrac{${f.num}}{${f.den}}` : knotText(u);
+  return f && f.den > 1 ? `\\tfrac{${f.num}}{${f.den}}` : knotText(u, true);
 }
 
 /** The recurrence; one function (highlighted, else the largest at u) with the live numbers; the sum; C(u). */
@@ -341,7 +352,7 @@ export function formula(s, d) {
   const n = s.points.length - 1;
   const p = s.degree;
   const knots = s.knots;
-  const kt = knotText;
+  const kt = (u) => knotText(u, true);
   const k = d.table.span;
   const uTex = uTexOf(s.u);
   const values = d.values;
@@ -356,16 +367,16 @@ export function formula(s, d) {
   const active = [];
   const weighted = [];
   for (let i = Math.max(0, k - p); i <= Math.min(n, k); i++) {
-    active.push(fmt(values[i]));
-    weighted.push(`${fmt(values[i])}\\,P_{${i}}`);
+    active.push(fmtTex(values[i]));
+    weighted.push(`${fmtTex(values[i])}\\,P_{${i}}`);
   }
-  const point = `(${fmt(d.point[0])},\\ ${fmt(d.point[1])})`;
-  const span = `[u_{${k}}, u_{${k + 1}}) = [${kt(knots[k])}, ${kt(knots[k + 1])})`;
+  const point = pointTex([d.point[0], d.point[1]]);
+  const span = `[u_{${k}}, u_{${k + 1}}) = [${listTex([kt(knots[k]), kt(knots[k + 1])], 0, " ")})`;
   return [
     coxDeBoorDefinition(`\\text{${t("bsplineBasis.formulaOtherwise")}}`),
-    `U = [${knots.map(kt).join(",\\ ")}],\\qquad u = ${uTex} \\in ${span}`,
+    `U = [${listTex(knots.map(kt))}],\\qquad u = ${uTex} \\in ${span}`,
     step,
-    `\\sum_{i=0}^{${n}} N_{i,${p}}(${uTex}) = ${active.join(" + ")} = ${fmt(d.sum)}`,
+    `\\sum_{i=0}^{${n}} N_{i,${p}}(${uTex}) = ${active.join(" + ")} = ${fmtTex(d.sum)}`,
     `C(u) = \\sum_{i=0}^{${n}} N_{i,${p}}(u)\\,P_i,\\qquad C(${uTex}) = ${weighted.join(" + ")} = ${point}`,
   ];
 }
@@ -388,14 +399,14 @@ function argmax(values, n) {
 
 /** The curve, its knots, the span of u, the non-zero values, C(u), the continuity, the highlight. */
 export function label(s, d) {
-  const kt = knotText;
+  const kt = (u) => knotText(u);
   const p = s.degree;
   const k = d.table.span;
   const nonZero = [];
   d.values.forEach((value, i) => value > 0 && nonZero.push(`${basisName(p, i)} = ${fmt(value)}`));
   const joints = d.continuity.map((e) => `${kt(e.knot)}: ${continuityText(e.continuity)}`);
   const continuity = joints.length
-    ? t("bsplineBasis.ariaContinuity", { list: joints.join(", ") })
+    ? t("bsplineBasis.ariaContinuity", { list: joints.join(listSeparator()) })
     : "";
   const hi = highlighted(s, d);
   const ends =
@@ -404,11 +415,11 @@ export function label(s, d) {
   const text = t("bsplineBasis.aria", {
     kind: degreeName(p),
     count: s.points.length,
-    knots: s.knots.map(kt).join(", "),
+    knots: listText(s.knots.map(kt)),
     u: kt(s.u),
     a: kt(s.knots[k]),
     b: kt(s.knots[k + 1]),
-    values: nonZero.join(", "),
+    values: listText(nonZero),
     sum: fmt(d.sum),
     x: fmt(d.point[0], 2),
     y: fmt(d.point[1], 2),

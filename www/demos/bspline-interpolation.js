@@ -30,7 +30,17 @@ import {
 } from "../lib/panel.js";
 import { degreeButtons } from "../lib/degree-buttons.js";
 import { knotVectorReadout, knotListText } from "../lib/knot-readout.js";
-import { subscript, degreeName, simpleFraction, fractionTex, exactText } from "../lib/format.js";
+import {
+  subscript,
+  degreeName,
+  exactText,
+  pointText,
+  DECIMALS,
+  listTex,
+  listText,
+  pointTex,
+  exactTex,
+} from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -39,7 +49,7 @@ import { flatPath } from "../lib/draw.js";
 import { vectorTip, vectorArrow, tipOf } from "../lib/vector-handle.js";
 import { NARROW_CANVAS_PX, scaledInsets } from "../lib/view.js";
 import { drawCornerLegend } from "../lib/legend.js";
-import { SystemTable, pointText } from "../lib/system-table.js";
+import { SystemTable, rowPoint } from "../lib/system-table.js";
 
 export const id = "bspline-interpolation";
 export const strings = "bsplineInterpolation";
@@ -195,12 +205,9 @@ export const compute = {
 
 const numberText = exactText;
 /** TeX of a number: a fraction as \tfrac, else as the table writes it. */
-const numberTex = (x) => {
-  const f = simpleFraction(x);
-  return f ? fractionTex(f) : exactText(x).replace("−", "-");
-};
-const pairText = (x, y) => `(${numberText(x)}, ${numberText(y)})`;
-const pairTex = (x, y) => `(${numberTex(x)},\\ ${numberTex(y)})`;
+const numberTex = exactTex;
+const pairText = (x, y) => pointText([numberText(x), numberText(y)]);
+const pairTex = (x, y) => pointTex([numberTex(x), numberTex(y)]);
 
 /** Row i's data index: the k-th point row is p_k at t_k; derivative rows sit at t₀ and tₙ. */
 function sitesOf(rows, n) {
@@ -235,7 +242,7 @@ export const controls = [
       options: PARAMS.map((value) => ({ value, label: `bsplineInterpolation.params.${value}` })),
     }),
     readout("params", (s, d) =>
-      t("bsplineInterpolation.paramsNote", { list: Array.from(d.params, numberText).join(", ") }),
+      t("bsplineInterpolation.paramsNote", { list: listText(Array.from(d.params, numberText)) }),
     ),
   ),
   group(
@@ -436,7 +443,7 @@ export function formula(s, d) {
   const { size, matrix, rhs, rows } = d.system;
   const [a, b] = d.curve.domain();
   const lines = [
-    `C(u) = \\sum_{j=0}^{${size - 1}} N_{j,${p}}(u)\\, r_j,\\quad u \\in [${numberTex(a)}, ${numberTex(b)}]`,
+    `C(u) = \\sum_{j=0}^{${size - 1}} N_{j,${p}}(u)\\, r_j,\\quad u \\in [${listTex([numberTex(a), numberTex(b)], DECIMALS, " ")}]`,
   ];
   const conditions = [`C(t_i) = p_i\\ (i = 0,\\dots,${n})`];
   if (s.useStartDerivative) conditions.push("C'(t_0) = D_0");
@@ -492,8 +499,8 @@ export function setup(ui) {
         number: exactText,
         entry: (i, j) => matrix[i * size + j],
         unknown: controlLabel,
-        rhs: (i) => pointText(rhs, i, 2),
-        solution: (i) => `${controlLabel(i)} = ${pointText(solution, i, 2)}`,
+        rhs: (i) => rowPoint(rhs, i, 2),
+        solution: (i) => `${controlLabel(i)} = ${rowPoint(solution, i, 2)}`,
         label: (i) => conditionText(i, d),
         kind: (i) => rows[i],
       });

@@ -25,7 +25,16 @@ import {
   INTEGER_SLIDER,
 } from "../lib/panel.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, subscript, shortNumber, fractionOrDecimals } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  shortNumber,
+  fractionOrDecimals,
+  DECIMALS,
+  fmtTex,
+  pointTex,
+  pointText,
+} from "../lib/format.js";
 import { HUES, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -303,7 +312,7 @@ function cardinalMatrix(c) {
 /** P_j's name and numbers for the matrix: a phantom (open Catmull–Rom ends) or a wrapped index (closed). */
 function neighbour(s, j) {
   const n = s.points.length - 1;
-  const pair = (p) => `(${shortNumber(p[0])},\\,${shortNumber(p[1])})`;
+  const pair = (p) => pointTex([shortNumber(p[0], true), shortNumber(p[1], true)], DECIMALS, "\\,");
   if (j >= 0 && j <= n) return `P_{${j}} = ${pair(s.points[j])}`;
   if (isRom(s) && s.closed) {
     const w = (j + n + 1) % (n + 1);
@@ -328,19 +337,19 @@ export function formula(s, d) {
   const m = d.tangents;
   const mid = d.segment.middle;
   const tangents =
-    `m_{${i}} = (${fmt(m[2 * i])},\\,${fmt(m[2 * i + 1])}),\\ ` +
-    `m_{${i + 1}} = (${fmt(m[2 * i + 2])},\\,${fmt(m[2 * i + 3])})`;
+    `m_{${i}} = ${pointTex([m[2 * i], m[2 * i + 1]], DECIMALS, "\\,")},\\ ` +
+    `m_{${i + 1}} = ${pointTex([m[2 * i + 2], m[2 * i + 3]], DECIMALS, "\\,")}`;
   const lines = [
     isRom(s)
       ? "m_i = \\frac{P_i - P_{i-1}}{d_{i-1}} - \\frac{P_{i+1} - P_{i-1}}{d_{i-1} + d_i} + " +
         "\\frac{P_{i+1} - P_i}{d_i}"
       : "m_i = (1 - c)\\,\\frac{P_{i+1} - P_{i-1}}{t_{i+1} - t_{i-1}}",
     isRom(s)
-      ? `d_i = |P_{i+1} - P_i|^{\\alpha},\\ \\alpha = ${fmt(s.alpha)}:\\quad ${tangents}`
-      : `t_i = i,\\ c = ${fmt(s.tension)}:\\quad ${tangents}`,
+      ? `d_i = |P_{i+1} - P_i|^{\\alpha},\\ \\alpha = ${fmtTex(s.alpha)}:\\quad ${tangents}`
+      : `t_i = i,\\ c = ${fmtTex(s.tension)}:\\quad ${tangents}`,
     `P(t) = \\begin{bmatrix} t^3 & t^2 & t & 1 \\end{bmatrix} ${factor}\\begin{bmatrix} ${rows} \\end{bmatrix}` +
       `\\begin{bmatrix} ${names} \\end{bmatrix}`,
-    `P(\\tfrac{1}{2}) = (${fractionOrDecimals(mid[0], true)},\\ ${fractionOrDecimals(mid[1], true)})\\quad ${which}`,
+    `P(\\tfrac{1}{2}) = ${pointTex([fractionOrDecimals(mid[0], true), fractionOrDecimals(mid[1], true)])}\\quad ${which}`,
   ];
   return lines;
 }
@@ -382,7 +391,7 @@ export function setup(ui) {
         setText(r.param, fractionOrDecimals(d.params[i]));
         setText(
           r.tangent,
-          `(${fractionOrDecimals(m[2 * i])}, ${fractionOrDecimals(m[2 * i + 1])})`,
+          pointText([fractionOrDecimals(m[2 * i]), fractionOrDecimals(m[2 * i + 1])]),
         );
       });
     },

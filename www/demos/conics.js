@@ -10,7 +10,7 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, readout, actions, group } from "../lib/panel.js";
-import { fmt } from "../lib/format.js";
+import { fmt, fmtTex, localeDecimal, pointTex, pointText } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -149,7 +149,7 @@ export const compute = {
 
 /** A small number to print precision: "0", "3.3e-16" or 3 decimals. */
 function smallText(x) {
-  return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
+  return x === 0 ? "0" : x < SMALL ? localeDecimal(x.toExponential(1)) : fmt(x);
 }
 const relationOf = (kind) => (kind === "ellipse" ? "<" : kind === "parabola" ? "=" : ">");
 
@@ -179,7 +179,7 @@ function makeCircular(ui) {
     return;
   }
   if (w < W1_MIN) {
-    ui.status(t("conics.tooFlat", { w: fmt(w), min: W1_MIN }), "error");
+    ui.status(t("conics.tooFlat", { w: fmt(w), min: localeDecimal(String(W1_MIN)) }), "error");
     return;
   }
   ui.replace({ ...ui.state, points: [p0, p1, q], w1: w });
@@ -311,24 +311,24 @@ export function draw(r, v, s, d) {
 /** The rational quadratic, the shape factor and its verdict, the circle condition, the shoulder. */
 export function formula(s, d) {
   const { kind, triangle: tri, circular, shoulder } = d.conic;
-  const w1 = fmt(s.w1);
+  const w1 = fmtTex(s.w1);
   const text = (key) => `\\text{${t(key)}}`;
-  const legs = `|P_0P_1| = ${fmt(tri.a)},\\ |P_1P_2| = ${fmt(tri.b)}`;
+  const legs = `|P_0P_1| = ${fmtTex(tri.a)},\\ |P_1P_2| = ${fmtTex(tri.b)}`;
   const circleNumbers = Number.isFinite(tri.theta)
-    ? `${legs},\\ \\theta = {${fmt(tri.theta * DEGREES, 2)}}^\\circ,\\ \\sin\\theta = ${fmt(tri.sin)}\\quad ` +
+    ? `${legs},\\ \\theta = {${fmtTex(tri.theta * DEGREES, 2)}}^\\circ,\\ \\sin\\theta = ${fmtTex(tri.sin)}\\quad ` +
       (circular ? `\\Rightarrow\\ ${text("conics.formula.circle")}` : `(w_1 = ${w1})`)
     : legs;
   return [
     `P(t) = \\frac{(1-t)^2\\,w_0P_0 + 2t(1-t)\\,w_1P_1 + t^2\\,w_2P_2}{(1-t)^2\\,w_0 + 2t(1-t)\\,w_1 + t^2\\,w_2},` +
       `\\qquad w_0 = w_2 = 1,\\ w_1 = ${w1}`,
-    `k = \\frac{w_1^2}{w_0\\,w_2} = ${fmt(s.w1 * s.w1)} ${relationOf(kind)} 1 \\;\\Rightarrow\\; ` +
+    `k = \\frac{w_1^2}{w_0\\,w_2} = ${fmtTex(s.w1 * s.w1)} ${relationOf(kind)} 1 \\;\\Rightarrow\\; ` +
       text(`conics.kind.${kind}`) +
       `\\qquad (k < 1 \\text{ ${t("conics.kind.ellipse")}},\\ k = 1 \\text{ ${t("conics.kind.parabola")}},\\ ` +
       `k > 1 \\text{ ${t("conics.kind.hyperbola")}})`,
     `${text("conics.formula.circularArc")} \\iff |P_0P_1| = |P_1P_2| \\text{ ${t("conics.formula.and")} } ` +
       `w_1 = \\sin\\theta,\\quad \\theta = \\tfrac12\\angle P_0P_1P_2`,
     circleNumbers,
-    `P(\\tfrac12) = \\frac{M + w_1P_1}{1 + w_1} = (${fmt(shoulder[0])},\\ ${fmt(shoulder[1])}),\\quad ` +
+    `P(\\tfrac12) = \\frac{M + w_1P_1}{1 + w_1} = ${pointTex([shoulder[0], shoulder[1]])},\\quad ` +
       `M = \\tfrac12(P_0 + P_2)`,
   ];
 }
@@ -336,7 +336,7 @@ export function formula(s, d) {
 /** "Rational quadratic Bézier curve with P₀ = …, weights 1, 0.500, 1: an arc of an ellipse …". */
 export function label(s, d) {
   const { kind, triangle: tri, circular, shoulder } = d.conic;
-  const point = (p) => `(${fmt(p[0], 2)}, ${fmt(p[1], 2)})`;
+  const point = (p) => pointText([p[0], p[1]], 2);
   const [p0, p1, p2] = s.points;
   return t("conics.aria", {
     kind: t(`conics.article.${kind}`),

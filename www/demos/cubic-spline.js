@@ -24,7 +24,7 @@
  */
 import { field, checkPoints } from "../lib/validate.js";
 import { checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
-import { fmt, subscript, shortNumber } from "../lib/format.js";
+import { subscript, shortNumber, fmtMachine, pointText } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { flatPath, arrow } from "../lib/draw.js";
@@ -266,9 +266,14 @@ function jointContinuity(spline) {
 }
 
 /** A number for sentences: 3 decimals at most, integers (after rounding) plain. */
-const tidy = (v) => shortNumber(Number(fmt(v)));
-const pair = ([x, y]) => `(${tidy(x)}, ${tidy(y)})`;
-const attribute = ([x, y]) => `${tidy(x)},${tidy(y)}`;
+const tidy = (v) => shortNumber(Number(fmtMachine(v)));
+const pair = ([x, y]) => pointText([tidy(x), tidy(y)]);
+/** The same with a decimal point, for data attributes. */
+const tidyMachine = (v) => {
+  const r = Number(fmtMachine(v));
+  return Number.isInteger(r) ? String(r) : fmtMachine(r);
+};
+const attribute = ([x, y]) => `${tidyMachine(x)},${tidyMachine(y)}`;
 
 /** "C″(t₀) = (0, 0), C″(t₅) = (0, 0); C‴ on the end pieces …; C‴ jumps at t₁, t₂, t₃, t₄". */
 function plotNote(s, d) {
@@ -461,8 +466,8 @@ export function label(s, d) {
     count: s.points.length,
     end: t(`cubicSpline.end.${d.main.end}`),
     parametrization: t(`cubicSpline.parametrization.${s.parametrization}`),
-    m0: `(${shortNumber(tangents[0])}, ${shortNumber(tangents[1])})`,
-    mn: `(${shortNumber(tangents[2 * last])}, ${shortNumber(tangents[2 * last + 1])})`,
+    m0: pointText([shortNumber(tangents[0]), shortNumber(tangents[1])]),
+    mn: pointText([shortNumber(tangents[2 * last]), shortNumber(tangents[2 * last + 1])]),
   });
 }
 

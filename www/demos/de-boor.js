@@ -22,7 +22,15 @@ import {
 import { parameterStrip } from "../lib/param-strip.js";
 import { bsplineCurve, clampedKnots, domainOf, clampInto } from "../lib/bspline.js";
 import { replaceOrReport } from "../lib/wasm.js";
-import { fmt, fractionOrDecimals, subscript, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  degreeName,
+  pointTex,
+  DECIMALS,
+  listTex,
+  fractionOrDecimals,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -386,7 +394,7 @@ export function formula(s, d) {
   const uTex = numberText(s.u, true);
   const shift = k - p;
   const active = shift === 0 ? "P_{j}" : `P_{j${shift > 0 ? "+" : "-"}${Math.abs(shift)}}`;
-  const spanTex = `[${numberText(s.knots[k], true)}, ${numberText(s.knots[k + 1], true)})`;
+  const spanTex = `[${listTex([numberText(s.knots[k], true), numberText(s.knots[k + 1], true)], DECIMALS, " ")})`;
   const lines = [
     `u = ${uTex} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},\\quad k = ${k},` +
       `\\quad d_j^0 = P_{j+k-p} = ${active},\\ j = 0,\\dots,${p}`,
@@ -401,9 +409,9 @@ export function formula(s, d) {
     });
     lines.push(`r = ${level}:\\quad ${parts.join(",\\quad ")}`);
   }
-  const point = `\\left(${num.coord(x, p, 0, true)},\\ ${num.coord(y, p, 0, true)}\\right)`;
+  const point = `\\left(${listTex([num.coord(x, p, 0, true), num.coord(y, p, 0, true)])}\\right)`;
   const inexact = !Number.isInteger(x) || !Number.isInteger(y);
-  const approx = num.exact && inexact && num.apexExact ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
+  const approx = num.exact && inexact && num.apexExact ? `\\approx ${pointTex([x, y])}` : "";
   lines.push(`C(${uTex}) = d_{${p}}^{${p}} = ${point} ${approx}`);
   return lines;
 }

@@ -9,7 +9,16 @@ import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, checkbox, pointButtons, readout, group } from "../lib/panel.js";
 import { BEZIER_POINTS } from "../lib/point-list.js";
-import { fmt, subscript, superscript, degreeName, exactNumbers } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  superscript,
+  degreeName,
+  exactNumbers,
+  pointTex,
+  pointText,
+  listTex,
+} from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -113,13 +122,13 @@ export function formula(s, d) {
     weights.push(`${num.value(d.sl.bernstein(n, i, s.t), n, true)}\\,P_{${i}}`);
   const approx =
     num.exact && (!Number.isInteger(x) || !Number.isInteger(y))
-      ? `\\approx (${fmt(x)},\\ ${fmt(y)})`
+      ? `\\approx ${pointTex([x, y])}`
       : "";
   return [
     `p_i^{r} = (1-t)\\,p_i^{r-1} + t\\,p_{i+1}^{r-1},\\quad r = 1,\\dots,${n},\\quad t = ${num.param(true)}`,
     `P(t) = \\sum_{i=0}^{${n}} B_i^{${n}}(t)\\,P_i = ${weights.join(" + ")}`,
     `P(${num.param(true)}) = p_0^{${n}} = ` +
-      `\\left(${num.value(x, n, true)},\\ ${num.value(y, n, true)}\\right) ${approx}`,
+      `\\left(${listTex([num.value(x, n, true), num.value(y, n, true)])}\\right) ${approx}`,
   ];
 }
 
@@ -180,8 +189,10 @@ export function setup(ui) {
         for (let i = 0; i <= n - level; i++, k++) {
           const x = d.triangle[2 * k];
           const y = d.triangle[2 * k + 1];
-          const decimals = `(${fmt(x)}, ${fmt(y)})`;
-          const exact = num.exact ? `(${num.value(x, level)}, ${num.value(y, level)})` : decimals;
+          const decimals = pointText([x, y]);
+          const exact = num.exact
+            ? pointText([num.value(x, level), num.value(y, level)])
+            : decimals;
           setValueSpans(cells[k], exact, decimals);
         }
       }

@@ -9,8 +9,21 @@
 import { NOTES_CUBIC } from "../lib/examples.js";
 import { field } from "../lib/validate.js";
 import { slider, pointButtons, readout, group } from "../lib/panel.js";
-import { fmt, subscript, shortNumber as short, degreeName } from "../lib/format.js";
-import { exactNumbers, exactFraction, fractionTex } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  shortNumber as short,
+  degreeName,
+  exactFraction,
+  exactNumbers,
+  fmtTex,
+  fractionTex,
+  pointText,
+  fmtMachine,
+  localeDecimal,
+  pointTex,
+  texDecimal,
+} from "../lib/format.js";
 import { HUES, RADIUS, SECOND_CURVE } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { flatten } from "../lib/geometry.js";
@@ -134,16 +147,26 @@ function valuesAt(curve, tt, whole) {
   const kappa = curve.curvature(tt);
   const straight =
     Number.isFinite(kappa) && 1 / Math.abs(kappa) > STRAIGHT_RADIUS_FACTOR * whole.polygonSize;
-  const kappaText = Number.isFinite(kappa) ? fmt(kappa) : "∞";
-  const radiusText = !Number.isFinite(kappa) ? "0" : straight ? "∞" : fmt(1 / Math.abs(kappa));
+  // Machine text (a decimal point) for the readout's data-kappa; shown and TeX forms from it.
+  const kappaMachine = Number.isFinite(kappa) ? fmtMachine(kappa) : "∞";
+  const radiusMachine = !Number.isFinite(kappa)
+    ? "0"
+    : straight
+      ? "∞"
+      : fmtMachine(1 / Math.abs(kappa));
+  const kappaText = localeDecimal(kappaMachine);
+  const radiusText = localeDecimal(radiusMachine);
   return {
     point: curve.evaluate(tt),
     d1: curve.derivative(tt, 1),
     d2: curve.derivative(tt, 2),
     kappa,
     straight,
+    kappaMachine,
     kappaText,
+    kappaTex: texDecimal(kappaMachine),
     radiusText,
+    radiusTex: texDecimal(radiusMachine),
   };
 }
 
@@ -162,7 +185,7 @@ export const controls = [
     readout("curvature", (s, d) => t("derivatives.readout", { kappa: d.at.kappaText }), {
       kind: "readout",
       live: true,
-      data: (s, d) => ({ kappa: d.at.kappaText }),
+      data: (s, d) => ({ kappa: d.at.kappaMachine }),
     }),
     readout("radius", (s, d) => radiusNote(d.at)),
     readout("arc-length", (s, d) => t("derivatives.length", { length: fmt(d.whole.arcLength) })),
@@ -366,26 +389,27 @@ export function draw(r, v, s, d) {
 export function formula(s, d) {
   const pts = s.points;
   const n = pts.length - 1;
-  const { d1, d2, kappa, straight, kappaText, radiusText } = d.at;
+  const { d1, d2, kappa, straight, kappaTex, radiusTex } = d.at;
+  const shortTex = (x) => short(x, true);
   const { d1At0, d1At1, arcLength } = d.whole;
   const num = exactNumbers(s.t, pts.flat());
   const value = (x, power) => {
     const f = num.exact ? exactFraction(x, num.exact.den ** power) : null;
-    return f ? fractionTex(f) : short(x);
+    return f ? fractionTex(f) : shortTex(x);
   };
-  const vec = (x, y, power) => `(${value(x, power)},\\ ${value(y, power)})`;
+  const vec = (x, y, power) => pointTex([value(x, power), value(y, power)]);
   const legs = [];
   for (let i = 0; i < n; i++) {
     const b = num.value(d.sl.bernstein(n - 1, i, s.t), n - 1, true);
     legs.push(
-      `${b}\\,(${short(pts[i + 1][0] - pts[i][0])},\\ ${short(pts[i + 1][1] - pts[i][1])})`,
+      `${b}\\,${pointTex([shortTex(pts[i + 1][0] - pts[i][0]), shortTex(pts[i + 1][1] - pts[i][1])])}`,
     );
   }
   const tTex = num.param(true);
-  const speed = fmt(Math.hypot(d1[0], d1[1]));
+  const speed = fmtTex(Math.hypot(d1[0], d1[1]));
   const kappaLine = Number.isFinite(kappa)
-    ? `\\kappa(t) = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{(${short(d1[0])})(${short(d2[1])}) - (${short(d1[1])})` +
-      `(${short(d2[0])})}{{${speed}}^3} = ${kappaText}${straight ? "" : `,\\quad \\rho = 1/|\\kappa| = ${radiusText}`}`
+    ? `\\kappa(t) = \\frac{x'y'' - y'x''}{|P'|^3} = \\frac{(${shortTex(d1[0])})(${shortTex(d2[1])}) - (${shortTex(d1[1])})` +
+      `(${shortTex(d2[0])})}{{${speed}}^3} = ${kappaTex}${straight ? "" : `,\\quad \\rho = 1/|\\kappa| = ${radiusTex}`}`
     : `P'(t) = 0:\\ \\kappa = \\infty\\ \\text{(${t("derivatives.cuspShort")})}`;
   const lines = [
     `P'(t) = n\\sum_{i=0}^{n-1} B_i^{n-1}(t)\\,(P_{i+1} - P_i) = ${n}\\,\\big[${legs.join(" + ")}\\big] = ` +
@@ -395,7 +419,7 @@ export function formula(s, d) {
     `P''(t) = n(n-1)\\sum_{i=0}^{n-2} B_i^{n-2}(t)\\,(P_{i+2} - 2P_{i+1} + P_i) = ` +
       vec(d2[0], d2[1], Math.max(n - 2, 0)),
     kappaLine,
-    `L = \\int_0^1 |P'(t)|\\,dt = ${fmt(arcLength)}`,
+    `L = \\int_0^1 |P'(t)|\\,dt = ${fmtTex(arcLength)}`,
   ];
   return lines.map((line) => line.replace(/\(-/g, "({-}"));
 }
@@ -416,7 +440,7 @@ export function label(s, d) {
 
 /** Rows of the table of values, by their `data-quantity` key. */
 const QUANTITIES = ["point", "dp", "ddp", "kappa", "radius", "dp0", "dp1", "length"];
-const pair = (p) => `(${short(p[0])}, ${short(p[1])})`;
+const pair = (p) => pointText([short(p[0]), short(p[1])]);
 
 /** The table: the values at t, the end velocities, the arc length, the hodograph's points. */
 export function setup(ui) {
@@ -444,7 +468,7 @@ export function setup(ui) {
     update(s, d) {
       const { point, d1, d2, kappaText, radiusText } = d.at;
       setText(title, t("derivatives.tableCaption", { t: fmt(s.t) }));
-      setText(cells.point, `(${fmt(point[0])}, ${fmt(point[1])})`);
+      setText(cells.point, pointText([point[0], point[1]]));
       setText(cells.dp, pair(d1));
       setText(cells.ddp, pair(d2));
       setText(cells.kappa, kappaText);

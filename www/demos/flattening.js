@@ -6,7 +6,7 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, readout, actions, group } from "../lib/panel.js";
-import { fmt } from "../lib/format.js";
+import { fmt, fmtTex, listText, localeDecimal, pointText, texDecimal } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -96,9 +96,13 @@ export const fields = {
   band: field.boolean(),
 };
 
-/** A tolerance as typed or shown: "0.05", "0.0015" (no trailing zeros, no float noise). */
-function formatTolerance(value) {
-  return String(Number(value.toPrecision(SHOWN_DIGITS)));
+/**
+ * A tolerance as typed or shown: "0.05", "0.0015" (no trailing zeros, no float noise; "0,05"
+ * with a decimal comma); TeX with `tex`.
+ */
+function formatTolerance(value, tex = false) {
+  const s = String(Number(value.toPrecision(SHOWN_DIGITS)));
+  return tex ? texDecimal(s) : localeDecimal(s);
 }
 
 /** Segments of a flat 2D polyline (vertices − 1). */
@@ -190,7 +194,7 @@ export const controls = [
       max: MAX_TOLERANCE,
       step: LOG_STEP,
       log: true,
-      format: formatTolerance,
+      format: (v) => formatTolerance(v),
       // The range moves in powers of ten: keep two significant digits; typed values as typed.
       round: (v, typed) =>
         typed
@@ -260,17 +264,17 @@ export function formula(s, d) {
   const d1 = distance(s.points[1]);
   const d2 = distance(s.points[2]);
   const flat = Math.max(d1, d2) <= s.tolerance;
-  const eps = formatTolerance(s.tolerance);
-  const halfEps = formatTolerance(s.tolerance / 2);
+  const eps = formatTolerance(s.tolerance, true);
+  const halfEps = formatTolerance(s.tolerance / 2, true);
   const count = segmentCount(d.flattened.polyline);
   const half = d.flattened.halfCount;
-  const ratio = count > 0 ? fmt(half / count, 2) : "?";
+  const ratio = count > 0 ? fmtTex(half / count, 2) : "?";
   const segments = t("flattening.formula.segments");
   const verdict = flat ? "flattening.formula.flat" : "flattening.formula.split";
   return [
     `d_i = \\frac{\\lvert (P_3 - P_0) \\times (P_3 - P_i) \\rvert}{\\lvert P_3 - P_0 \\rvert} ` +
       `\\le \\varepsilon, \\quad i = 1, 2, \\qquad \\varepsilon = ${eps}`,
-    `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmt(d1)},\\ d_2 = ${fmt(d2)}\\ ` +
+    `\\text{${t("flattening.formula.whole")}}\\ d_1 = ${fmtTex(d1)},\\ d_2 = ${fmtTex(d2)}\\ ` +
       `${flat ? "\\le" : ">"}\\ \\varepsilon \\;\\Rightarrow\\; \\text{${t(verdict)}}`,
     `\\text{${t("flattening.formula.until")}}`,
     `\\varepsilon = ${eps}:\\ \\mathbf{${count}}\\ \\text{${segments}};\\qquad ` +
@@ -292,6 +296,6 @@ export function label(s, d) {
     vertices: count + 1,
     half: formatTolerance(s.tolerance / 2),
     halfCount: d.flattened.halfCount,
-    points: s.points.map(([x, y]) => `(${coord(x)}, ${coord(y)})`).join(", "),
+    points: listText(s.points.map(([x, y]) => pointText([coord(x), coord(y)]))),
   });
 }

@@ -26,7 +26,17 @@ import { pointLabel, placeLabelAtTip, placeLabelBeside } from "../lib/handles.js
 import { vectorTips, selectedVectorBox } from "../lib/vector-tips.js";
 import { NARROW_CANVAS_PX } from "../lib/view.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, subscript, exactNumbers, shortNumber, fractionOrDecimals } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  exactNumbers,
+  shortNumber,
+  fractionOrDecimals,
+  DECIMALS,
+  fmtTex,
+  pointTex,
+  listTex,
+} from "../lib/format.js";
 import { HUES, WIDTH, POLYGON_DASH } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { paddedBounds } from "../lib/geometry.js";
@@ -368,7 +378,7 @@ function drawTangents(r, v, s, jointLabel) {
 
 /** (x, y) in TeX, exact where the numbers allow. */
 const pairTex = (num, x, y, level) =>
-  `\\left(${num.value(x, level, true)},\\ ${num.value(y, level, true)}\\right)`;
+  `\\left(${listTex([num.value(x, level, true), num.value(y, level, true)])}\\right)`;
 
 /** The basis, the piece's formula with its numbers, the Bézier form when shown, the unlocked joint. */
 export function formula(s, d) {
@@ -377,11 +387,12 @@ export function formula(s, d) {
   const num = exactNumbers(u, inputs);
   const uTex = num.param(true);
   const w = Array.from(basis, (h) => num.value(h, 3, true));
-  const vec = (p, scale = 1) => `(${shortNumber(scale * p[0])},\\,${shortNumber(scale * p[1])})`;
+  const vec = (p, scale = 1) =>
+    pointTex([shortNumber(scale * p[0], true), shortNumber(scale * p[1], true)], DECIMALS, "\\,");
   const lines = [
     "H_0 = 2u^3-3u^2+1,\\ \\ H_1 = -2u^3+3u^2,\\ \\ H_2 = u^3-2u^2+u,\\ \\ H_3 = u^3-u^2",
     `P(t) = H_0 P_{${i}} + H_1 P_{${i + 1}} + H_2\\,\\Delta m_{${i}} + H_3\\,\\Delta m_{${i + 1}},\\quad ` +
-      `u = \\frac{t - t_{${i}}}{\\Delta} = ${uTex},\\ \\Delta = ${shortNumber(delta)}`,
+      `u = \\frac{t - t_{${i}}}{\\Delta} = ${uTex},\\ \\Delta = ${shortNumber(delta, true)}`,
     `P(${fractionOrDecimals(s.t, true)}) = ${w[0]}\\,${vec(p0)} + ${w[1]}\\,${vec(p1)} + ` +
       `(${w[2]})\\,${vec(m0, delta)} + ` +
       `(${w[3]})\\,${vec(m1, delta)} = ${pairTex(num, point[0], point[1], 3)}`,
@@ -389,15 +400,15 @@ export function formula(s, d) {
   if (s.bezier) {
     const q = d.bezierPoints;
     lines.push(
-      `q_1 = P_{${i}} + \\tfrac{\\Delta}{3} m_{${i}} = (${fmt(q[2])},\\,${fmt(q[3])}),\\quad ` +
-        `q_2 = P_{${i + 1}} - \\tfrac{\\Delta}{3} m_{${i + 1}} = (${fmt(q[4])},\\,${fmt(q[5])})`,
+      `q_1 = P_{${i}} + \\tfrac{\\Delta}{3} m_{${i}} = ${pointTex([q[2], q[3]], DECIMALS, "\\,")},\\quad ` +
+        `q_2 = P_{${i + 1}} - \\tfrac{\\Delta}{3} m_{${i + 1}} = ${pointTex([q[4], q[5]], DECIMALS, "\\,")}`,
     );
   }
   if (s.unlocked) {
     const k = s.joint;
     const verdict = d.joints[k - 1] ? verdictText(d.joints[k - 1]) : "";
     lines.push(
-      `m_{${k}}^- = \\lambda\\, m_{${k}}^+,\\ \\lambda = ${fmt(s.ratio)}:\\quad ` +
+      `m_{${k}}^- = \\lambda\\, m_{${k}}^+,\\ \\lambda = ${fmtTex(s.ratio)}:\\quad ` +
         `\\text{${t("hermite.formula.checker")} ${verdict}}`,
     );
   }

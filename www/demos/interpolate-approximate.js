@@ -23,7 +23,7 @@ import {
   INTEGER_SLIDER,
 } from "../lib/panel.js";
 import { degreeButtons } from "../lib/degree-buttons.js";
-import { fmt, subscript, degreeName } from "../lib/format.js";
+import { fmt, subscript, degreeName, fmtTex } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -308,13 +308,13 @@ export function formula(s, d) {
   if (interpolating(s)) {
     return [
       `${curve},\\quad C(t_k) = p_k\\ (k = 0,\\dots,${n})`,
-      `\\max_k |p_k - C(t_k)| = ${fmt(d.residuals.max)}`,
+      `\\max_k |p_k - C(t_k)| = ${fmtTex(d.residuals.max)}`,
     ];
   }
   return [
     `${curve},\\quad r_0 = p_0,\\ r_{${h}} = p_{${n}}`,
-    `\\min_{r_1,\\dots,r_{${h - 1}}} \\sum_{k=1}^{${n - 1}} |p_k - C(t_k)|^2 = ${fmt(d.residuals.sum)}`,
-    `\\max_k |p_k - C(t_k)| = ${fmt(d.residuals.max)}\\ (k = ${d.residuals.worst})`,
+    `\\min_{r_1,\\dots,r_{${h - 1}}} \\sum_{k=1}^{${n - 1}} |p_k - C(t_k)|^2 = ${fmtTex(d.residuals.sum)}`,
+    `\\max_k |p_k - C(t_k)| = ${fmtTex(d.residuals.max)}\\ (k = ${d.residuals.worst})`,
   ];
 }
 

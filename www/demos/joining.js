@@ -14,7 +14,7 @@ import { field } from "../lib/validate.js";
 import { choice, readout, group } from "../lib/panel.js";
 import { placeLabel, placeLabelBeside } from "../lib/handles.js";
 import { el, setText } from "../lib/controls.js";
-import { fmt, shortNumber } from "../lib/format.js";
+import { shortNumber, fmtTex, pointTex, pointText } from "../lib/format.js";
 import { orderText, orderTex } from "../lib/continuity.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
@@ -391,7 +391,7 @@ function ruleTex(rule) {
 
 /** "(x, y)" with short numbers. */
 function pair(x, y) {
-  return `(${shortNumber(x)}, ${shortNumber(y)})`;
+  return pointText([shortNumber(x), shortNumber(y)]);
 }
 
 /** Each condition with the numbers, "=" or "≠" as the checker found it; λ for G1; the verdict. */
@@ -406,7 +406,7 @@ export function formula(s, d) {
     verdict: { c, g },
   } = d.joint;
   const rel = (holds) => (holds ? "\\;=\\;" : "\\;\\neq\\;");
-  const tex = (x, y) => `(${shortNumber(x)},\\ ${shortNumber(y)})`.replace(/-/g, "{-}");
+  const tex = (x, y) => pointTex([shortNumber(x, true), shortNumber(y, true)]).replace(/-/g, "{-}");
   const n = DEGREE;
   const lines = [`\\text{${t("joining.formula.rule")}}\\quad ${ruleTex(s.rule)}`];
   lines.push(
@@ -425,7 +425,7 @@ export function formula(s, d) {
     const lambda = Math.hypot(dRight[0], dRight[1]) / Math.hypot(dLeft[0], dLeft[1]);
     lines.push(
       `\\text{G}^1:\\ Q_1 - Q_0 = \\lambda\\,(P_{${n}} - P_{${n - 1}}),\\quad ` +
-        `\\lambda = \\frac{|Q'(1)|}{|P'(1)|} = ${fmt(lambda)} > 0`,
+        `\\lambda = \\frac{|Q'(1)|}{|P'(1)|} = ${fmtTex(lambda)} > 0`,
     );
   } else {
     lines.push(`\\text{G}^1:\\ \\text{${t("joining.formula.notG1")}}`);

@@ -22,8 +22,20 @@ import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { bsplineCurve, domainOf } from "../lib/bspline.js";
 import { knotText } from "../lib/knot-ruler.js";
 import { placeLabel } from "../lib/handles.js";
-import { fmt, subscript, degreeName, parseNumberInput, fractionOrDecimals } from "../lib/format.js";
-import { simpleFraction, fractionText } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  degreeName,
+  parseNumberInput,
+  fractionText,
+  pointTex,
+  simpleFraction,
+  DECIMALS,
+  listSeparator,
+  listTex,
+  listText,
+  fractionOrDecimals,
+} from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
@@ -215,7 +227,7 @@ function spanMidpoints(ui) {
 function badU(text, s) {
   const value = parseNumberInput(text);
   if (!Number.isFinite(value)) return t("control.badNumber", { value: text });
-  const [a, b] = domain(s).map(knotText);
+  const [a, b] = domain(s).map((u) => knotText(u));
   return t("knotInsertion.outside", { value: knotText(value), a, b });
 }
 
@@ -403,12 +415,12 @@ export function formula(s, d) {
   const q = d.currentPoints;
   const alphaTex = alphas
     .map(({ i, value }) => {
-      const ratio = `\\frac{${knotText(at)} - ${knotText(U[i])}}{${knotText(U[i + p])} - ${knotText(U[i])}}`;
+      const ratio = `\\frac{${knotText(at, true)} - ${knotText(U[i], true)}}{${knotText(U[i + p], true)} - ${knotText(U[i], true)}}`;
       return `\\alpha_{${i}} = ${ratio} = ${numberText(value, true)}`;
     })
     .join(",\\quad ");
   const previewTex = preview ? `\\text{${t("knotInsertion.formula.preview")}}\\ ` : "";
-  const spanTex = `[${numberText(U[k], true)}, ${numberText(U[k + 1], true)})`;
+  const spanTex = `[${listTex([numberText(U[k], true), numberText(U[k + 1], true)], DECIMALS, " ")})`;
   const lines = [
     `${previewTex}s = ${numberText(at, true)} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},` +
       `\\quad k = ${k},\\quad p = ${p}`,
@@ -419,7 +431,7 @@ export function formula(s, d) {
   if (!preview) {
     const terms = alphas.map(({ i, value }) => {
       const sum = `${numberText(1 - value, true)}\\,P_{${i - 1}} + ${numberText(value, true)}\\,P_{${i}}`;
-      return `Q_{${i}} = ${sum} = (${fmt(q[2 * i])},\\ ${fmt(q[2 * i + 1])})`;
+      return `Q_{${i}} = ${sum} = ${pointTex([q[2 * i], q[2 * i + 1]])}`;
     });
     lines.push(terms.join(",\\quad "));
   }
@@ -434,7 +446,7 @@ export function label(s, d) {
     count: d.currentPoints.length / 2,
     knots: d.currentKnots.length,
     s: knotText(at),
-    alphas: alphas.map(({ value }) => fmt(value)).join(", "),
+    alphas: listText(alphas.map(({ value }) => value)),
     segments: s.bezier ? tp("knotInsertion.ariaSegments", d.segments.length) : "",
   });
 }
@@ -468,7 +480,7 @@ const LISTS = [
           const f = simpleFraction(value);
           return `α${subscript(i)} = ${f ? `${fractionText(f)} (${fmt(value)})` : fmt(value)}`;
         })
-        .join(", ");
+        .join(listSeparator());
       if (preview) return t("knotInsertion.alphasPreview", { s: knotText(at), alphas: list });
       return t("knotInsertion.alphasUsed", { alphas: list });
     },
@@ -478,7 +490,7 @@ const LISTS = [
     s.inserted.length
       ? t("knotInsertion.insertedList", {
           count: s.inserted.length,
-          knots: s.inserted.map(knotText).join(", "),
+          knots: listText(s.inserted.map((u) => knotText(u))),
         })
       : t("knotInsertion.insertedNone"),
   ),

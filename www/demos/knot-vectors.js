@@ -11,7 +11,17 @@
  */
 import { field, checkNumber } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
-import { fmt, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  degreeName,
+  fmtTex,
+  fmtMachine,
+  listSeparator,
+  pointText,
+  texListSeparator,
+  listTex,
+  pointTex,
+} from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
@@ -277,14 +287,15 @@ export function draw(r, v, s, d) {
   }
 }
 
-/** A knot as short text: integers plain, else 3 decimals. */
-function knotText(x) {
-  return Number.isInteger(x) ? String(x) : fmt(x);
+/** A knot as short text (TeX with `tex`): integers plain, else 3 decimals. */
+function knotText(x, tex = false) {
+  return Number.isInteger(x) ? String(x) : tex ? fmtTex(x) : fmt(x);
 }
 
-/** A point as "(x, y)" with integers plain. */
-function pointText(x, y) {
-  return `(${knotText(Number(fmt(x)))}, ${knotText(Number(fmt(y)))})`;
+/** A point as "(x, y)" with integers plain (TeX with `tex`). */
+function pointLabel(x, y, tex = false) {
+  const [a, b] = [x, y].map((v) => knotText(Number(fmtMachine(v)), tex));
+  return tex ? pointTex([a, b]) : pointText([a, b]);
 }
 
 const tex = (key) => `\\text{${t(`knotVectors.tex.${key}`)}}`;
@@ -304,18 +315,18 @@ export function formula(s, d) {
     for (let i = 0; i < n - p + 1; i++) {
       const length = Math.hypot(pts[i + 1][0] - pts[i][0], pts[i + 1][1] - pts[i][1]);
       const term = s.spacing === "chord" ? length : Math.sqrt(length);
-      legs.push(Number.isInteger(term) ? String(term) : fmt(term));
+      legs.push(Number.isInteger(term) ? String(term) : fmtTex(term));
     }
     const leg = s.spacing === "chord" ? "|P_{i+1}-P_i|" : "|P_{i+1}-P_i|^{1/2}";
     const range = `(j = 1,\\dots,${n - p + 1};\\ ${tex("lastRepeated")})`;
     const sum = `u_{p+j} = \\sum_{i=0}^{j-1} ${leg}`;
     lines.push(`U_{${tex(s.spacing)}}:\\ u_0 = \\dots = u_{p} = 0,\\quad ${sum}\\ \\ ${range}`);
-    lines.push(`${tex("legs")}\\ ${legs.join(",\\ ")}`);
+    lines.push(`${tex("legs")}\\ ${legs.join(texListSeparator())}`);
   }
   lines.push(
-    `\\phantom{U} = (${d.shown[0].knots.map(knotText).join(",\\,")}),\\quad n = ${n},\\ p = ${p}`,
+    `\\phantom{U} = (${d.shown[0].knots.map((u) => knotText(u, true)).join(texListSeparator("\\,"))}),\\quad n = ${n},\\ p = ${p}`,
   );
-  const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${p}, ${n + 1}]`;
+  const domain = `${tex("domain")}\\ [u_{${p}}, u_{${n + 1}}] = [${listTex([String(p), String(n + 1)], 0, " ")}]`;
   lines.push(
     `U_{${tex("unclamped")}}:\\ u_i = i,\\ i = 0,\\dots,n+p+1 = ${n + p + 1};\\quad ${domain}`,
   );
@@ -324,7 +335,7 @@ export function formula(s, d) {
   lines.push(
     `U_{${tex("closed")}}:\\ ${closedPoints};\\ ${closedKnots};\\quad C^{${p - 1}}\\ ${tex("seam")}`,
   );
-  const { c0, u0, p0 } = starts(s, d);
+  const { c0, u0, p0 } = starts(s, d, true);
   const clampedStart = `C_{${tex("clamped")}}(u_{${p}}) = ${c0} ${c0 === p0 ? "= P_0" : "\\ne P_0"}`;
   lines.push(
     `${clampedStart},\\qquad C_{${tex("unclamped")}}(u_{${p}}) = ${u0} ${u0 === p0 ? "= P_0" : "\\ne P_0"}`,
@@ -332,20 +343,20 @@ export function formula(s, d) {
   return lines;
 }
 
-/** Start points of the clamped and unclamped curves, and P₀, as text. */
-function starts(s, d) {
+/** Start points of the clamped and unclamped curves, and P₀, as text (TeX with `tex`). */
+function starts(s, d, tex = false) {
   const [c, u] = d.shown;
   const [x0, y0] = s.points[0];
   return {
-    c0: pointText(c.start[0], c.start[1]),
-    u0: pointText(u.start[0], u.start[1]),
-    p0: pointText(x0, y0),
+    c0: pointLabel(c.start[0], c.start[1], tex),
+    u0: pointLabel(u.start[0], u.start[1], tex),
+    p0: pointLabel(x0, y0, tex),
   };
 }
 
 /** "cubic B-splines with 6 control points; clamped knots …; the clamped curve starts at …". */
 export function label(s, d) {
-  const clamped = d.shown[0].knots.map(knotText).join(" ");
+  const clamped = d.shown[0].knots.map((u) => knotText(u)).join(" ");
   return t("knotVectors.aria", {
     kind: degreeName(s.degree),
     count: s.points.length,
@@ -416,12 +427,12 @@ export function setup(ui) {
       const p0 = s.points[0];
       rows.forEach(({ row, cells }, c) => {
         const { knots, a, b, start, end } = d.shown[c];
-        setText(cells.knots, knots.map(knotText).join(" "));
-        setText(cells.domain, `[${knotText(a)}, ${knotText(b)}]`);
-        setText(cells.start, pointText(start[0], start[1]));
-        setText(cells.end, pointText(end[0], end[1]));
-        row.dataset.start = `${fmt(start[0])},${fmt(start[1])}`;
-        row.dataset.end = `${fmt(end[0])},${fmt(end[1])}`;
+        setText(cells.knots, knots.map((u) => knotText(u)).join(" "));
+        setText(cells.domain, `[${knotText(a)}${listSeparator()}${knotText(b)}]`);
+        setText(cells.start, pointLabel(start[0], start[1]));
+        setText(cells.end, pointLabel(end[0], end[1]));
+        row.dataset.start = `${fmtMachine(start[0])},${fmtMachine(start[1])}`;
+        row.dataset.end = `${fmtMachine(end[0])},${fmtMachine(end[1])}`;
         row.dataset.startIsP0 = String(Math.hypot(start[0] - p0[0], start[1] - p0[1]) < 1e-9);
       });
     },

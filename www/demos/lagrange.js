@@ -135,7 +135,9 @@ export const derive = {
     if (!(s.t >= a && s.t <= b)) {
       fit.lagrange.free();
       fit.spline.free();
-      throw new Error(t("lagrange.error.t", { t: s.t, a: shortNumber(a), b: shortNumber(b) }));
+      throw new Error(
+        t("lagrange.error.t", { t: shortNumber(s.t), a: shortNumber(a), b: shortNumber(b) }),
+      );
     }
     const holder = {
       fit,

@@ -15,7 +15,18 @@ import { field } from "../lib/validate.js";
 import { readout, group } from "../lib/panel.js";
 import { placeLabel } from "../lib/handles.js";
 import { slider, button, el, setText } from "../lib/controls.js";
-import { fmt, subscript, simpleFraction, fractionText } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  fractionText,
+  pointText,
+  listTex,
+  listText,
+  fmtTex,
+  pointTex,
+  localeDecimal,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
 import { detailsTable } from "../lib/table.js";
@@ -227,7 +238,7 @@ function boxesText(s, d) {
     visited,
     hit,
     pruned: visited - hit,
-    tolerance: BOX_TOLERANCE,
+    tolerance: localeDecimal(String(BOX_TOLERANCE)),
   });
 }
 
@@ -341,24 +352,21 @@ export function draw(r, v, s, d) {
 
 // ------------------------------------------------------------ formula, label, table
 
-/** A coordinate for labels and formulas: integers as they are, others with 2 decimals. */
-function coord(x) {
-  return Number.isInteger(x) ? String(x) : fmt(x, 2);
+/** A coordinate for labels and formulas (TeX with `tex`): integers as they are, others with 2 decimals. */
+function coord(x, tex = false) {
+  return Number.isInteger(x) ? String(x) : tex ? fmtTex(x, 2) : fmt(x, 2);
 }
 
 /** The signed distance to the line, the pruning rule, the roots and the crossing counts. */
 export function formula(s, d) {
   const { roots, polygonCrossings } = d.found;
   const [[ax, ay], [bx, by]] = s.line;
-  const pointTex = (x, y) => `(${coord(x)},\\ ${coord(y)})`;
-  const rootsTex =
-    roots.length === 0
-      ? "\\varnothing"
-      : `\\{${Array.from(roots, (root) => fmt(root)).join(",\\ ")}\\}`;
+  const pairTex = (x, y) => pointTex([coord(x, true), coord(y, true)]);
+  const rootsTex = roots.length === 0 ? "\\varnothing" : `\\{${listTex(roots)}\\}`;
   const text = (key) => `\\text{${t(`lineIntersection.formula.${key}`)}}`;
   return [
     `d(P) = \\frac{(B - A) \\times (P - A)}{\\lvert B - A \\rvert}, \\qquad ` +
-      `A = ${pointTex(ax, ay)},\\ B = ${pointTex(bx, by)}`,
+      `A = ${pairTex(ax, ay)},\\ B = ${pairTex(bx, by)}`,
     `d(c_1), \\dots, d(c_4)\\ ${text("miss")} \\;\\Rightarrow\\; ${text("pruned")}`,
     `${text("split")}\\ t = \\tfrac12 ${text("until")}\\ 10^{${Math.round(Math.log10(BOX_TOLERANCE))}}`,
     `t \\in ${rootsTex}, \\qquad ` +
@@ -370,11 +378,11 @@ export function formula(s, d) {
 export function label(s, d) {
   const roots = d.found.roots;
   const [[ax, ay], [bx, by]] = s.line;
-  const tList = Array.from(roots, (root) => fmt(root)).join(", ");
+  const tList = listText(roots);
   return t("lineIntersection.aria", {
-    points: s.points.map(([x, y]) => `(${coord(x)}, ${coord(y)})`).join(", "),
-    a: `(${coord(ax)}, ${coord(ay)})`,
-    b: `(${coord(bx)}, ${coord(by)})`,
+    points: listText(s.points.map(([x, y]) => pointText([coord(x), coord(y)]))),
+    a: pointText([coord(ax), coord(ay)]),
+    b: pointText([coord(bx), coord(by)]),
     result: roots.length === 0 ? t("lineIntersection.none") : `${countText(s, d)} (t = ${tList})`,
     polygon: d.found.polygonCrossings,
     depth: shownDepth(s, d),
@@ -420,7 +428,9 @@ export function setup(ui) {
         ui.status(t("lineIntersection.failed", { message: error }), "error");
       reported = d.found;
       const count = roots.length;
-      const caption = t("lineIntersection.tableCaption", { tolerance: ROOT_TOLERANCE });
+      const caption = t("lineIntersection.tableCaption", {
+        tolerance: localeDecimal(String(ROOT_TOLERANCE)),
+      });
       setText(details.title, count === 0 ? t("lineIntersection.tableNone") : caption);
       const cells = details.cellsFor(count);
       for (let k = 0; k < count; k++) {
@@ -431,7 +441,7 @@ export function setup(ui) {
           cells[k].t,
           fraction && fraction.den > 1 ? `${decimals} = ${fractionText(fraction)}` : decimals,
         );
-        setText(cells[k].point, `(${fmt(points[2 * k])}, ${fmt(points[2 * k + 1])})`);
+        setText(cells[k].point, pointText([points[2 * k], points[2 * k + 1]]));
       }
     },
   };

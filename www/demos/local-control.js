@@ -18,7 +18,17 @@ import { slider, readout, pointButtons, group, INTEGER_SLIDER } from "../lib/pan
 import { parameterStrip, knotMarks } from "../lib/param-strip.js";
 import { knotText } from "../lib/knot-ruler.js";
 import { placeLabel } from "../lib/handles.js";
-import { fmt, subscript, exactFraction, exactNumbers, degreeName } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  exactFraction,
+  exactNumbers,
+  degreeName,
+  listSeparator,
+  listTex,
+  pointTex,
+  texListSeparator,
+} from "../lib/format.js";
 import { CYCLE, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
 import { boundsOf, convexHull } from "../lib/geometry.js";
@@ -136,6 +146,7 @@ function support(s, d) {
     inside,
     outside,
     range: [knotText(lo), `${knotText(hi)}${closing}`],
+    rangeTex: [knotText(lo, true), `${knotText(hi, true)}${closing}`],
   };
 }
 
@@ -359,16 +370,17 @@ export function formula(s, d) {
   const [x, y] = point;
   const inexact = !Number.isInteger(x) || !Number.isInteger(y);
   const approx =
-    num.exact && inexact && exactFraction(x, den) ? `\\approx (${fmt(x)},\\ ${fmt(y)})` : "";
-  const [lo, hi] = d.support.range;
+    num.exact && inexact && exactFraction(x, den) ? `\\approx ${pointTex([x, y])}` : "";
+  const [lo, hi] = d.support.rangeTex;
+  const comma = texListSeparator(" ");
   const only = t("localControl.formula.only");
   const vertices = tp("localControl.formula.vertices", d.at.hull.length);
-  const spanTex = `[${knotText(d.knots[k])}, ${knotText(d.knots[k + 1])})`;
+  const spanTex = `[${knotText(d.knots[k], true)}${comma}${knotText(d.knots[k + 1], true)})`;
   return [
     `u = ${num.param(true)} \\in [u_{${k}}, u_{${k + 1}}) = ${spanTex},\\quad k = ${k},\\quad p = ${p}`,
     `C(u) = \\sum_{i=k-p}^{k} N_{i,${p}}(u)\\,P_i = ${terms.join(" + ")}`,
-    `C(${num.param(true)}) = \\left(${value(x, true)},\\ ${value(y, true)}\\right) ${approx}`,
-    `N_{${i},${p}}(u) \\ne 0 \\iff u \\in [u_{${i}}, u_{${i + p + 1}}) = [${lo}, ${hi}` +
+    `C(${num.param(true)}) = \\left(${listTex([value(x, true), value(y, true)])}\\right) ${approx}`,
+    `N_{${i},${p}}(u) \\ne 0 \\iff u \\in [u_{${i}}, u_{${i + p + 1}}) = [${lo}${comma}${hi}` +
       `\\quad\\Rightarrow\\quad \\text{${only}}\\ P_{${i}}`,
     `C([u_{${k}}, u_{${k + 1}}]) \\subset \\operatorname{conv}\\{P_{${k - p}}, \\dots, P_{${k}}\\}` +
       `\\quad (${d.at.hull.length}\\ \\text{${vertices}})`,
@@ -439,7 +451,8 @@ export function setup(ui) {
         const row = rows[j];
         const end = d.knots[j + p + 1] === domainEnd(s) ? "]" : ")";
         setText(row.value, value(basis[j]));
-        setText(row.range, `[${knotText(d.knots[j])}, ${knotText(d.knots[j + p + 1])}${end}`);
+        const ends = [knotText(d.knots[j]), `${knotText(d.knots[j + p + 1])}${end}`];
+        setText(row.range, `[${ends.join(listSeparator())}`);
         row.row.classList.toggle("sl-highlight", j >= k - p && j <= k);
         row.row.dataset.active = String(j >= k - p && j <= k);
       }

@@ -19,6 +19,9 @@ import {
   fractionText,
   fractionTex,
   degreeName,
+  fmtTex,
+  pointText,
+  pointTex,
 } from "../lib/format.js";
 import { CYCLE } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
@@ -145,7 +148,8 @@ export const compute = {
 function numberText(x, tex = false) {
   if (Math.abs(x - Math.round(x)) < MATRIX_TOLERANCE) return String(Math.round(x) || 0);
   const f = simpleFraction(x);
-  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
+  if (f) return tex ? fractionTex(f) : fractionText(f);
+  return tex ? fmtTex(x) : fmt(x);
 }
 const numberTex = (x) => numberText(x, true);
 
@@ -315,8 +319,7 @@ export function formula(s, d) {
     coords.push(`${colour(j, numberTex(x))} & ${colour(j, numberTex(y))}`);
   }
   const tPowers = ["t^3", "t^2", "t", "1"].slice(3 - p);
-  const tTex = simpleFraction(s.t) ? fractionTex(simpleFraction(s.t)) : fmt(s.t);
-  const pointTex = (x, y) => `(${fmt(x)},\\ ${fmt(y)})`;
+  const tTex = simpleFraction(s.t) ? fractionTex(simpleFraction(s.t)) : fmtTex(s.t);
   const periodic = t(same ? "matrixForm.tex.periodic" : "matrixForm.tex.notPeriodic");
   const sum = weights.map((w, j) => `${numberTex(w)}\\,${names[j]}`).join(" + ");
   return [
@@ -324,8 +327,8 @@ export function formula(s, d) {
       `\\quad u = u_{${k}} + t\\,(u_{${k + 1}} - u_{${k}}),\\ t \\in [0, 1]`,
     `M = ${mTex}\\quad ${same ? "" : "\\ne"}\\ \\text{${periodic}}`,
     `C_{${i}}(${tTex}) = ${matrix(powers.map(numberTex).join(" & "))} ${mTex} ${matrix(coords.join(" \\\\ "))}`,
-    `\\phantom{C_{${i}}(${tTex})} = ${sum} = ${pointTex(product[0], product[1])}`,
-    `\\text{${t("matrixForm.tex.evaluate")}}\\ C(u = ${fmt(u)}) = ${pointTex(point[0], point[1])}`,
+    `\\phantom{C_{${i}}(${tTex})} = ${sum} = ${pointTex([product[0], product[1]])}`,
+    `\\text{${t("matrixForm.tex.evaluate")}}\\ C(u = ${fmtTex(u)}) = ${pointTex([point[0], point[1]])}`,
   ];
 }
 
@@ -422,8 +425,8 @@ export function setup(ui) {
       entries.forEach((m, e) => setText(cells[e], numberText(m)));
       heads.forEach((cell, j) => setText(cell, `P${subscript(d.segment.first + j)}`));
       const { product, point } = d.at;
-      setText(productCell, `(${fmt(product[0])}, ${fmt(product[1])})`);
-      setText(evaluateCell, `(${fmt(point[0])}, ${fmt(point[1])})`);
+      setText(productCell, pointText([product[0], product[1]]));
+      setText(evaluateCell, pointText([point[0], point[1]]));
     },
   };
 }

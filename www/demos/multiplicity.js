@@ -21,7 +21,7 @@ import { readout, actions, group } from "../lib/panel.js";
 import { knotRuler, stackOf, knotText } from "../lib/knot-ruler.js";
 import { knotsField, clampedKnots, setKnots, domainOf } from "../lib/bspline.js";
 import { radios, el } from "../lib/controls.js";
-import { fmt, subscript } from "../lib/format.js";
+import { subscript, pointTex } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
@@ -404,11 +404,11 @@ export function formula(s, d) {
       ? ` = ${k.through.replace(/P(\S+)/, (m) => `P_{${fromSubscript(m.slice(1))}}`)}`
       : "";
     const at = jt
-      ? `C(${knotText(k.value)}) = (${fmt(jt.right[0])},\\ ${fmt(jt.right[1])})${through}`
+      ? `C(${knotText(k.value, true)}) = ${pointTex([jt.right[0], jt.right[1]])}${through}`
       : "";
     const value = jt && jt.c >= 0 ? `,\\quad ${at}` : "";
     const rule = g < 0 ? `\\text{${t("multiplicity.formulaBreak")}}` : `C^{3-${k.r}} = C^{${g}}`;
-    const head = `${idx.join(" = ")} = ${knotText(k.value)}:\\quad r = ${k.r}`;
+    const head = `${idx.join(" = ")} = ${knotText(k.value, true)}:\\quad r = ${k.r}`;
     lines.push(`${head} \\;\\Rightarrow\\; ${rule};\\quad ${measuredWord}\\ ${measured}${value}`);
   }
   const rep = d.studied.repeat;
@@ -418,7 +418,7 @@ export function formula(s, d) {
       /P([₀-₉]+)/g,
       (m, sub) => `P_{${fromSubscript(sub)}}`,
     );
-    const speed = `C'(u_{${rep.k}}) = (${fmt(jt.speed[0])},\\ ${fmt(jt.speed[1])})`;
+    const speed = `C'(u_{${rep.k}}) = ${pointTex([jt.speed[0], jt.speed[1]])}`;
     lines.push(`${names}:\\quad ${speed},\\quad ${measuredWord}\\ ${cTex(jt)}`);
   }
   return lines;

@@ -11,7 +11,15 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, readout, actions, group } from "../lib/panel.js";
-import { fmt } from "../lib/format.js";
+import {
+  fmt,
+  fmtTex,
+  pointTex,
+  pointText,
+  listTex,
+  listText,
+  localeDecimal,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, boundsOf, inTriangle } from "../lib/geometry.js";
 import { drawCaption, pointsPath } from "../lib/draw.js";
@@ -189,7 +197,7 @@ export const compute = {
   ],
 };
 
-const poleList = (d) => Array.from(d.poles.ts, (p) => fmt(p)).join(", ");
+const poleList = (d) => listText(d.poles.ts);
 
 export const controls = [
   group(
@@ -205,7 +213,7 @@ export const controls = [
       PRESETS.map((w) => ({
         name: `w1-${w}`,
         label: "negativeWeights.preset",
-        params: { w: String(w).replace("-", "−") },
+        params: { w: localeDecimal(String(w)).replace("-", "−") },
         run: (ui) => ui.set("w1", w),
       })),
     ),
@@ -454,13 +462,13 @@ export function formula(s, d) {
   const { ts, count } = d.poles; // the core's roots (a double one at w₁ = −1)
   const zeros =
     w1 <= -1 && count > 0
-      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmt(product)} \\iff t = \\tfrac12 \\pm ` +
-        `\\tfrac12\\sqrt{1 - 4\\cdot ${fmt(product)}} = ${fmt(ts[0])},\\ ${fmt(ts[count - 1])}\\quad${tx("poles")}`
-      : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmt((1 + w1) / 2)} > 0\\quad` +
+      ? `w(t) = 0 \\iff t(1-t) = \\tfrac{1}{2(1-w_1)} = ${fmtTex(product)} \\iff t = \\tfrac12 \\pm ` +
+        `\\tfrac12\\sqrt{1 - 4\\cdot ${fmtTex(product)}} = ${listTex([ts[0], ts[count - 1]])}\\quad${tx("poles")}`
+      : `\\min_t w(t) = w(\\tfrac12) = \\tfrac{1 + w_1}{2} = ${fmtTex((1 + w1) / 2)} > 0\\quad` +
         `${tx("noPole")} w(t) = 0 ${tx("needs")} w_1 \\le -1\\text{)}`;
-  const middle = d.middle ? `(${fmt(d.middle[0])},\\ ${fmt(d.middle[1])})` : "\\infty";
+  const middle = d.middle ? pointTex([d.middle[0], d.middle[1]]) : "\\infty";
   return [
-    `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${fmt(w1, 2)}`,
+    `P(t) = \\frac{(1-t)^2P_0 + 2t(1-t)\\,w_1P_1 + t^2P_2}{w(t)},\\qquad w_0 = w_2 = 1,\\ w_1 = ${fmtTex(w1, 2)}`,
     `w(t) = (1-t)^2 + 2t(1-t)\\,w_1 + t^2 = 1 - 2(1-w_1)\\,t(1-t)`,
     zeros,
     `P(\\tfrac12) = \\frac{P_0 + 2w_1P_1 + P_2}{2 + 2w_1} = ${middle}`,
@@ -471,7 +479,7 @@ export function formula(s, d) {
 
 /** The figure's name: the points and weights, the library's verdict, the poles, the hull. */
 export function label(s, d) {
-  const [p0, p1, p2] = s.points.map(([x, y]) => `(${fmt(x, 2)}, ${fmt(y, 2)})`);
+  const [p0, p1, p2] = s.points.map(([x, y]) => pointText([x, y], 2));
   const { refusal } = d.library;
   const { count, minW } = d.poles;
   return t("negativeWeights.aria", {

@@ -11,7 +11,22 @@
  */
 import { checkNumber, field } from "../lib/validate.js";
 import { slider, checkbox, readout, actions, group, shownWhen } from "../lib/panel.js";
-import { fmt, subscript, simpleFraction, fractionText, fractionTex } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  simpleFraction,
+  fractionText,
+  fractionTex,
+  fmtTex,
+  pointText,
+  DECIMALS,
+  fmtMachine,
+  listTex,
+  listText,
+  localeDecimal,
+  texDecimal,
+  texListSeparator,
+} from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatPath } from "../lib/draw.js";
 import { el, setText } from "../lib/controls.js";
@@ -102,27 +117,46 @@ function buildCurve(sl, s) {
   return sl.ellipseArc(new Float64Array([cx, cy]), axisX, axisY, start, sweep);
 }
 
+/** The control points of the unit circle's NURBS, counter-clockwise from (1, 0). */
+const UNIT_POINTS = [
+  [1, 0],
+  [1, 1],
+  [0, 1],
+  [-1, 1],
+  [-1, 0],
+  [-1, -1],
+  [0, -1],
+  [1, -1],
+  [1, 0],
+];
+
 /** "1", "√2/2" or three decimals (`tex`: TeX). */
 function weightText(w, tex = false) {
   if (Math.abs(w - 1) <= EXACT_WEIGHT) return "1";
   if (Math.abs(w - Math.SQRT1_2) <= EXACT_WEIGHT) return tex ? "\\tfrac{\\sqrt2}{2}" : "√2/2";
-  return fmt(w);
+  return tex ? fmtTex(w) : fmt(w);
 }
 
 /** A knot as a fraction when it is one (1/4), else three decimals (`tex`: TeX). */
 function knotText(u, tex = false) {
   const f = simpleFraction(u);
-  if (!f) return fmt(u);
+  if (!f) return tex ? fmtTex(u) : fmt(u);
   return tex ? fractionTex(f) : fractionText(f);
+}
+
+/** `knotText` with a decimal point, for the readout's data attribute. */
+function knotMachine(u) {
+  const f = simpleFraction(u);
+  return f ? fractionText(f) : fmtMachine(u);
 }
 
 /** A measured error to print precision: "0", "3.3e-16" (TeX: 3.3 × 10^{−16}), or 3 decimals. */
 function errorText(x, tex = false) {
   if (x === 0) return "0";
-  if (x >= SMALL) return fmt(x);
-  if (!tex) return x.toExponential(1);
+  if (x >= SMALL) return tex ? fmtTex(x) : fmt(x);
+  if (!tex) return localeDecimal(x.toExponential(1));
   const [m, e] = x.toExponential(1).split("e");
-  return `${m} \\times 10^{${Number(e)}}`;
+  return `${texDecimal(m)} \\times 10^{${Number(e)}}`;
 }
 
 /**
@@ -231,7 +265,7 @@ const angleSlider = (name, refuse) =>
     min: -ANGLE_MAX,
     max: ANGLE_MAX,
     step: ANGLE_STEP,
-    format: (v) => String(Number(v.toFixed(2))),
+    format: (v) => localeDecimal(String(Number(v.toFixed(2)))),
     error: "nurbsCircle.badAngle",
     refuse,
   });
@@ -281,9 +315,9 @@ export const controls = [
     readout(
       "knots",
       (s, d) =>
-        t("nurbsCircle.knots", { knots: Array.from(d.knots, (u) => knotText(u)).join(", ") }),
+        t("nurbsCircle.knots", { knots: listText(Array.from(d.knots, (u) => knotText(u))) }),
       {
-        data: (s, d) => ({ knots: Array.from(d.knots, (u) => knotText(u)).join(" ") }),
+        data: (s, d) => ({ knots: Array.from(d.knots, knotMachine).join(" ") }),
       },
     ),
   ),
@@ -383,16 +417,25 @@ export function formula(s, d) {
   const middle = Math.cos((delta / 2) * RADIANS);
   const samples = `(${SAMPLES} \\text{ ${t("nurbsCircle.formula.samples")}})`;
   const error = errorText(d.error, true);
+  // The unit circle's nine points, weights and knots (";" between entries with a decimal comma).
+  const comma = texListSeparator("");
+  const unit = UNIT_POINTS.map(([x, y]) => `(${x}${comma}${y})`).join(texListSeparator(" "));
+  const r2 = "\\tfrac{\\sqrt2}{2}";
+  const weights = [1, r2, 1, r2, 1, r2, 1, r2, 1].join(texListSeparator(" "));
+  const knots = ["0", "0", "0", "\\tfrac14", "\\tfrac14", "\\tfrac12", "\\tfrac12", "\\tfrac34"];
+  const knotList = [...knots, "\\tfrac34", "1", "1", "1"].join(comma);
   return [
     `C(u) = \\frac{\\sum_{i} N_{i,2}(u)\\,w_i\\,P_i}{\\sum_{i} N_{i,2}(u)\\,w_i}`,
-    `\\text{${t("nurbsCircle.formula.circle")}: } P_i = c + r\\,\\{(1,0), (1,1), (0,1), (-1,1), (-1,0), (-1,-1), ` +
-      `(0,-1), (1,-1), (1,0)\\}`,
-    `w_i = 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1, \\tfrac{\\sqrt2}{2}, 1,\\qquad ` +
-      `U = \\{0,0,0,\\tfrac14,\\tfrac14,\\tfrac12,\\tfrac12,\\tfrac34,\\tfrac34,1,1,1\\}`,
+    `\\text{${t("nurbsCircle.formula.circle")}: } P_i = c + r\\,\\{${unit}\\}`,
+    `w_i = ${weights},\\qquad U = \\{${knotList}\\}`,
     `\\text{${t("nurbsCircle.formula.here")}: } ${pieces} \\text{ ${tp("nurbsCircle.formula.pieces", pieces)} } ` +
-      `\\Delta = \\tfrac{{${fmt(Math.abs(s.sweep), 0)}}^\\circ}{${pieces}} = {${fmt(delta, 2)}}^\\circ \\le 90^\\circ,\\ ` +
+      `\\Delta = \\tfrac{{${fmtTex(Math.abs(s.sweep), 0)}}^\\circ}{${pieces}} = {${fmtTex(delta, 2)}}^\\circ \\le 90^\\circ,\\ ` +
       `\\text{${t("nurbsCircle.formula.middleWeights")} } \\cos\\tfrac{\\Delta}{2} = ${weightText(middle, true)},\\ ` +
-      `U = \\{${Array.from(d.knots, (u) => knotText(u, true)).join(", ")}\\}`,
+      `U = \\{${listTex(
+        Array.from(d.knots, (u) => knotText(u, true)),
+        DECIMALS,
+        " ",
+      )}\\}`,
     s.ellipse
       ? `\\max_u \\left| \\left(\\tfrac{x'(u)}{r_x}\\right)^2 + \\left(\\tfrac{y'(u)}{r_y}\\right)^2 - 1 \\right| = ` +
         `${error}\\quad ${samples}`
@@ -419,8 +462,8 @@ export function label(s, d) {
     y: fmt(y, 2),
     arc,
     count: counted(s, d),
-    weights: Array.from(d.weights, (w) => weightText(w)).join(", "),
-    knots: Array.from(d.knots, (u) => knotText(u)).join(", "),
+    weights: listText(Array.from(d.weights, (w) => weightText(w))),
+    knots: listText(Array.from(d.knots, (u) => knotText(u))),
     pieces: d.pieces,
     error: errorText(d.error),
   });
@@ -461,7 +504,7 @@ export function setup(ui) {
       setText(title, t("nurbsCircle.tableCaption", { count }));
       if (cells.length !== count) build(count);
       for (let i = 0; i < count; i++) {
-        setText(cells[i][0], `(${fmt(d.controls[2 * i])}, ${fmt(d.controls[2 * i + 1])})`);
+        setText(cells[i][0], pointText([d.controls[2 * i], d.controls[2 * i + 1]]));
         setText(cells[i][1], weightText(d.weights[i]));
       }
     },

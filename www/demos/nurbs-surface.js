@@ -18,13 +18,13 @@ import {
   selectedWeight,
   netLabel,
 } from "../lib/surface-net-edit.js";
-import { fmt, shortNumber } from "../lib/format.js";
+import { fmt, shortNumber, pointTex, DECIMALS, listTex, listSeparator } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netCorner } from "../lib/handle-lists3d.js";
 import { netPath } from "../lib/draw3d.js";
 import { continuityText } from "../lib/continuity.js";
-import { knotListText } from "../lib/knot-readout.js";
+import { knotListTex } from "../lib/knot-readout.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 
 export const id = "nurbs-surface";
@@ -255,7 +255,7 @@ function direction(dir) {
     numberList(`knots${D}`, {
       label: `nurbsSurface.control.knots${D}`,
       name: `knots-${dir}`,
-      format: shortNumber,
+      format: (v) => shortNumber(v),
       help: (s) =>
         t("nurbsSurface.knotsHelp", {
           count: lines(s) + s[`degree${D}`] + 1,
@@ -291,7 +291,7 @@ function seamsText(seams) {
     const items = [];
     for (let k = 0; k < list.length; k += 2)
       items.push(`${letter} = ${shortNumber(list[k])} ${continuityText(list[k + 1])}`);
-    return items.join(", ");
+    return items.join(listSeparator());
   };
   const u = part("u", seams.u);
   const v = part("v", seams.v);
@@ -432,16 +432,16 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
 }
 
-const triple = (p) => `(${fmt(p[0])},\\ ${fmt(p[1])},\\ ${fmt(p[2])})`;
-const knotsTex = (knots) => `(${knotListText(knots)})`;
+const triple = (p) => pointTex([p[0], p[1], p[2]]);
+const knotsTex = (knots) => `(${knotListTex(knots)})`;
 
 export function formula(s, d) {
   const [u0, u1] = d.domainU;
   const [v0, v1] = d.domainV;
   const lines = [
     `S(u, v) = \\frac{\\sum_{i=0}^{${s.rows - 1}} \\sum_{j=0}^{${s.cols - 1}} N_{i,${s.degreeU}}(u)\\, N_{j,${s.degreeV}}(v)\\, w_{ij} P_{ij}}{\\sum_i \\sum_j N_{i,${s.degreeU}}(u)\\, N_{j,${s.degreeV}}(v)\\, w_{ij}}`,
-    `U = ${knotsTex(s.knotsU)},\\ u \\in [${shortNumber(u0)}, ${shortNumber(u1)}]`,
-    `V = ${knotsTex(s.knotsV)},\\ v \\in [${shortNumber(v0)}, ${shortNumber(v1)}]`,
+    `U = ${knotsTex(s.knotsU)},\\ u \\in [${listTex([shortNumber(u0, true), shortNumber(u1, true)], DECIMALS, " ")}]`,
+    `V = ${knotsTex(s.knotsV)},\\ v \\in [${listTex([shortNumber(v0, true), shortNumber(v1, true)], DECIMALS, " ")}]`,
     t("nurbsSurface.texNet", {
       rows: s.rows,
       cols: s.cols,
@@ -449,7 +449,7 @@ export function formula(s, d) {
       p: s.degreeU,
       q: s.degreeV,
     }),
-    `S(${fmt(s.u)}, ${fmt(s.v)}) = ${triple(d.point)},\\quad n = ${triple(d.normalAt)}`,
+    `S${pointTex([s.u, s.v])} = ${triple(d.point)},\\quad n = ${triple(d.normalAt)}`,
   ];
   if (s.fresh.length === 3)
     lines.push(

@@ -26,7 +26,7 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, pointButtons, readout, group } from "../lib/panel.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt, subscript, pointText } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -301,7 +301,7 @@ export const formula = (s, d) => parametrizationFormula(s, d.shown, s.alphaCurve
 
 /** "4 natural cubic splines through 6 points …; at s = 0.5: uniform (…), chord (…) …". */
 export function label(s, d) {
-  const at = (c) => `(${fmt(d.at[c][0], 2)}, ${fmt(d.at[c][1], 2)})`;
+  const at = (c) => pointText([d.at[c][0], d.at[c][1]], 2);
   return t("parametrization.aria", {
     method: t(`parametrization.methodName.${s.method}`),
     count: s.points.length,

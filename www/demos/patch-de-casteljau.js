@@ -10,7 +10,7 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, readout, group, INTEGER_SLIDER } from "../lib/panel.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt, subscript, fmtTex, pointTex, texDecimal } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netPath } from "../lib/draw3d.js";
@@ -366,7 +366,7 @@ export function draw(r, v, s, d) {
   }
 }
 
-const triple = (p, k = 0) => `(${fmt(p[k])},\\ ${fmt(p[k + 1])},\\ ${fmt(p[k + 2])})`;
+const triple = (p, k = 0) => pointTex([p[k], p[k + 1], p[k + 2]]);
 
 /** The recurrences of the chosen order, its intermediate results, and both orders' S(u, v). */
 export function formula(s, d) {
@@ -388,7 +388,7 @@ export function formula(s, d) {
     byRows[1] - byColumns[1],
     byRows[2] - byColumns[2],
   );
-  const params = { u: fmt(s.u), v: fmt(s.v), n: deg, m: deg };
+  const params = { u: fmtTex(s.u), v: fmtTex(s.v), n: deg, m: deg };
   return [
     t(rows ? "patchDeCasteljau.texRows" : "patchDeCasteljau.texColumns", params),
     t(rows ? "patchDeCasteljau.texColumn" : "patchDeCasteljau.texRow", params),
@@ -397,7 +397,8 @@ export function formula(s, d) {
       ...params,
       rows: triple(byRows),
       columns: triple(byColumns),
-      gap: gap === 0 ? "0" : gap.toExponential(1).replace(/e([+-]\d+)/, "\\cdot 10^{$1}"),
+      gap:
+        gap === 0 ? "0" : texDecimal(gap.toExponential(1)).replace(/e([+-]\d+)/, "\\cdot 10^{$1}"),
     }),
   ];
 }

@@ -11,7 +11,7 @@
  */
 import { field } from "../lib/validate.js";
 import { slider, checkbox, choice, readout, group, shownWhen } from "../lib/panel.js";
-import { fmt, subscript } from "../lib/format.js";
+import { fmt, subscript, fmtTex, pointTex, localeDecimal, texDecimal } from "../lib/format.js";
 import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netPath } from "../lib/draw3d.js";
@@ -191,7 +191,7 @@ export const controls = [
         max: MAX_TOLERANCE,
         step: LOG_STEP,
         log: true,
-        format: (v) => String(Number(v.toPrecision(3))),
+        format: (v) => localeDecimal(String(Number(v.toPrecision(3)))),
         round: (v, typed) =>
           typed
             ? v
@@ -319,11 +319,11 @@ export function draw(r, v, s, d) {
   }
 }
 
-const triple = (p, k = 0) => `(${fmt(p[k])},\\ ${fmt(p[k + 1])},\\ ${fmt(p[k + 2])})`;
+const triple = (p, k = 0) => pointTex([p[k], p[k + 1], p[k + 2]]);
 
 export function formula(s, d) {
   if (s.mode === "split") {
-    const params = { u: fmt(s.u0), v: fmt(s.v0) };
+    const params = { u: fmtTex(s.u0), v: fmtTex(s.v0) };
     const p = d.point;
     let gap = 0;
     for (const [k, { net }] of d.pieces.entries()) {
@@ -335,7 +335,10 @@ export function formula(s, d) {
       t("patchSubdivision.texPoint", { ...params, point: triple(p) }),
       t("patchSubdivision.texCorner", {
         corner: triple(d.pieces[0].net, 3 * CORNER[0]),
-        gap: gap === 0 ? "0" : gap.toExponential(1).replace(/e([+-]\d+)/, "\\cdot 10^{$1}"),
+        gap:
+          gap === 0
+            ? "0"
+            : texDecimal(gap.toExponential(1)).replace(/e([+-]\d+)/, "\\cdot 10^{$1}"),
       }),
     ];
   }

@@ -11,7 +11,16 @@
 import { field, checkNumbers } from "../lib/validate.js";
 import { actions, readout, group } from "../lib/panel.js";
 import { weightSliders, weightText } from "../lib/weight-sliders.js";
-import { fmt, subscript } from "../lib/format.js";
+import {
+  fmt,
+  subscript,
+  fmtTex,
+  pointText,
+  listText,
+  localeDecimal,
+  texDecimal,
+  texListSeparator,
+} from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, distanceToPolyline } from "../lib/geometry.js";
 import { flatPath, pointsPath } from "../lib/draw.js";
@@ -87,7 +96,10 @@ export const fields = {
       if (w <= 0) throw new Error(t("projective.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
         throw new Error(
-          t("projective.weightRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          t("projective.weightRange", {
+            name: wi,
+            ...shownNumbers({ value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          }),
         );
       }
     });
@@ -260,7 +272,7 @@ export const controls = [
     ),
     readout(
       "mapped-weights",
-      (s, d) => t("projective.mappedWeights", { weights: mappedList(d).join(", ") }),
+      (s, d) => t("projective.mappedWeights", { weights: listText(mappedList(d)) }),
       {
         data: (s, d) => ({ weights: Array.from(d.mappedWeights).join(",") }),
       },
@@ -411,18 +423,18 @@ function drawSquares(r, v, d) {
 /** H, the weight rule with one worked product (for P₀), the mapped weights, the two gaps. */
 export function formula(s, d) {
   const m = d.matrix;
-  const mw = mappedList(d);
+  const mw = mappedList(d, true);
   const tx = (key) => `\\text{${t(`projective.tex.${key}`)}}`;
-  const row = (k) => `${fmt(m[3 * k])} & ${fmt(m[3 * k + 1])} & ${fmt(m[3 * k + 2])}`;
+  const row = (k) => `${fmtTex(m[3 * k])} & ${fmtTex(m[3 * k + 1])} & ${fmtTex(m[3 * k + 2])}`;
   const [x0, y0] = s.points[0];
-  const w0 = weightText(s.weights[0]);
-  const product0 = `${w0}\\,(${fmt(m[6])}\\cdot ${fmt(x0)} + ${fmt(m[7])}\\cdot ${fmt(y0)} + 1) = ${mw[0]}`;
+  const w0 = weightText(s.weights[0], 3, true);
+  const product0 = `${w0}\\,(${fmtTex(m[6])}\\cdot ${fmtTex(x0)} + ${fmtTex(m[7])}\\cdot ${fmtTex(y0)} + 1) = ${mw[0]}`;
   const matrix = `\\begin{pmatrix} ${row(0)} \\\\ ${row(1)} \\\\ ${row(2)} \\end{pmatrix}`;
   const lift = `(w_iP_i,\\ w_i) \\;\\mapsto\\; H\\,(w_ix_i,\\ w_iy_i,\\ w_i)^{\\mathsf T} = (w'_iP'_i,\\ w'_i)`;
   return [
     `H = ${matrix},\\qquad ${lift}`,
     `w'_i = w_i\\,(h_{31}x_i + h_{32}y_i + h_{33}):\\qquad w'_0 = ${product0}`,
-    `(w'_0, \\dots, w'_{${POINTS - 1}}) = (${mw.join(",\\ ")})\\quad` +
+    `(w'_0, \\dots, w'_{${POINTS - 1}}) = (${mw.join(texListSeparator())})\\quad` +
       `${tx("affine")} h_{31} = h_{32} = 0 ${tx("unchanged")}`,
     `\\max_t \\lVert (a) - (b) \\rVert = ${texNumber(d.check.ab)} \\quad${tx("invariant")},\\qquad ` +
       `\\max \\operatorname{dist}\\big((c), (a)\\big) = ${texNumber(d.check.ac)} \\quad${tx("ignored")}`,
@@ -434,33 +446,34 @@ export function label(s, d) {
   const m = d.matrix;
   const affine = Math.abs(m[6]) < DENOMINATOR_EPSILON && Math.abs(m[7]) < DENOMINATOR_EPSILON;
   return t("projective.aria", {
-    corners: s.corners.map(([x, y]) => `(${fmt(x, 2)}, ${fmt(y, 2)})`).join(", "),
+    corners: listText(s.corners.map(([x, y]) => pointText([x, y], 2))),
     kind: t(affine ? "projective.affineMap" : "projective.perspectiveMap"),
-    weights: mappedList(d).join(", "),
+    weights: listText(mappedList(d)),
     ab: smallText(d.check.ab),
     ac: smallText(d.check.ac),
   });
 }
 
-/** A mapped weight: three decimals, no trailing zeros (9/8 reads 1.125). */
-function mappedText(w) {
-  return String(Number(w.toFixed(3)));
+/** A mapped weight: three decimals, no trailing zeros (9/8 reads 1.125); TeX with `tex`. */
+function mappedText(w, tex = false) {
+  const s = String(Number(w.toFixed(3)));
+  return tex ? texDecimal(s) : localeDecimal(s);
 }
 
-/** The mapped weights as the panels show them. */
-function mappedList(d) {
-  return Array.from(d.mappedWeights, mappedText);
+/** The mapped weights as the panels show them (TeX with `tex`). */
+function mappedList(d, tex = false) {
+  return Array.from(d.mappedWeights, (w) => mappedText(w, tex));
 }
 
 /** A measured distance: 0, exponent form when small, else 3 decimals. */
 function smallText(x) {
-  return x === 0 ? "0" : x < SMALL ? x.toExponential(1) : fmt(x);
+  return x === 0 ? "0" : x < SMALL ? localeDecimal(x.toExponential(1)) : fmt(x);
 }
 
 /** TeX of a measured distance: 0, m × 10^e, or 3 decimals. */
 function texNumber(x) {
   if (x === 0) return "0";
-  if (x >= SMALL) return fmt(x);
+  if (x >= SMALL) return fmtTex(x);
   const [mantissa, e] = x.toExponential(1).split("e");
-  return `${mantissa} \\times 10^{${Number(e)}}`;
+  return `${texDecimal(mantissa)} \\times 10^{${Number(e)}}`;
 }

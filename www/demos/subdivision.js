@@ -22,6 +22,10 @@ import {
   degreeName,
   exactNumbers,
   fractionTex,
+  fmtTex,
+  pointText,
+  listTex,
+  texListSeparator,
 } from "../lib/format.js";
 import { t, tp } from "../lib/strings.js";
 import { flatten, paddedBounds } from "../lib/geometry.js";
@@ -351,16 +355,17 @@ export function formula(s, d) {
   const { left, right } = d.halves;
   const tTex = paramText(s, true);
   const f = exactNumbers(s.t, []).exact;
-  const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmt(1 - s.t);
+  const oneMinusTex = f ? fractionTex({ num: f.den - f.num, den: f.den }) : fmtTex(1 - s.t);
   const coordinate = (value) => num.value(value, n, true);
-  const pointTex = (flat, i) =>
-    `\\left(${coordinate(flat[2 * i])},\\ ${coordinate(flat[2 * i + 1])}\\right)`;
-  const list = (flat) => Array.from({ length: n + 1 }, (_, i) => pointTex(flat, i)).join(",\\ ");
+  const pointAt = (flat, i) =>
+    `\\left(${listTex([coordinate(flat[2 * i]), coordinate(flat[2 * i + 1])])}\\right)`;
+  const list = (flat) =>
+    Array.from({ length: n + 1 }, (_, i) => pointAt(flat, i)).join(texListSeparator());
   const { k, polygons, total } = levelCounts(s, d);
   const polygonWord = `\\text{${tp("subdivision.formulaPolygons", polygons)}}`;
   return [
     `l_i = p_0^{\\,i}(t_0),\\qquad r_i = p_i^{\\,${n}-i}(t_0),\\qquad i = 0,\\dots,${n},\\qquad t_0 = ${tTex}`,
-    `l_{${n}} = r_0 = p_0^{${n}}(${tTex}) = P(${tTex}) = ${pointTex(right, 0)}`,
+    `l_{${n}} = r_0 = p_0^{${n}}(${tTex}) = P(${tTex}) = ${pointAt(right, 0)}`,
     `L:\\ ${list(left)}`,
     `R:\\ ${list(right)}`,
     `L(u) = P(${tTex}\\,u),\\qquad R(u) = P\\!\\left(${tTex} + ${oneMinusTex}\\,u\\right),\\qquad 0 \\le u \\le 1`,
@@ -442,7 +447,7 @@ export function setup(ui) {
       /** Point i of `flat` in a cell: exact value first, decimals under it when different. */
       const fill = (spans, flat, i) => {
         const [x, y] = [flat[2 * i], flat[2 * i + 1]];
-        setValueSpans(spans, `(${num.value(x, n)}, ${num.value(y, n)})`, `(${fmt(x)}, ${fmt(y)})`);
+        setValueSpans(spans, pointText([num.value(x, n), num.value(y, n)]), pointText([x, y]));
       };
       setText(details.title, t("subdivision.tableCaption", { t: paramText(s) }));
       for (let i = 0; i <= n; i++) {

@@ -12,12 +12,12 @@
 import { field } from "../lib/validate.js";
 import { choice, group, readout } from "../lib/panel.js";
 import { showGroup } from "../lib/surface-controls.js";
-import { fmt, subscript } from "../lib/format.js";
+import { subscript, listTex, localeDecimal } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { netCorner } from "../lib/handle-lists3d.js";
 import { netPath, flatPath3 } from "../lib/draw3d.js";
-import { knotListText } from "../lib/knot-readout.js";
+import { knotListTex } from "../lib/knot-readout.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
 
 export const id = "surface-interpolation";
@@ -148,8 +148,6 @@ const degreeChoice = (name, max) =>
     rebuild: true,
   });
 
-const listText = (values) => Array.from(values, (x) => fmt(x, 3)).join(", ");
-
 export const controls = [
   group(
     "surfaceInterpolation.control.parametrisation",
@@ -164,7 +162,10 @@ export const controls = [
   readout(
     "miss",
     (s, d) =>
-      t("surfaceInterpolation.missReadout", { count: ROWS * COLS, miss: d.miss.toExponential(1) }),
+      t("surfaceInterpolation.missReadout", {
+        count: ROWS * COLS,
+        miss: localeDecimal(d.miss.toExponential(1)),
+      }),
     {
       data: (s, d) => ({
         miss: String(d.miss),
@@ -294,8 +295,8 @@ export function formula(s, d) {
       p: s.degreeU,
       q: s.degreeV,
     }),
-    `\\bar u = (${listText(d.params.u)}),\\quad \\bar v = (${listText(d.params.v)})`,
-    `U = (${knotListText(d.knots.u)}),\\quad V = (${knotListText(d.knots.v)})`,
+    `\\bar u = (${listTex(d.params.u)}),\\quad \\bar v = (${listTex(d.params.v)})`,
+    `U = (${knotListTex(d.knots.u)}),\\quad V = (${knotListTex(d.knots.v)})`,
     t("surfaceInterpolation.texColumns", { cols: COLS, rows: ROWS, m, p: s.degreeU }),
     t("surfaceInterpolation.texRows", { cols: COLS, rows: ROWS, n, q: s.degreeV }),
   ];
@@ -308,6 +309,6 @@ export function label(s, d) {
     p: s.degreeU,
     q: s.degreeV,
     kind: t(`surfaceInterpolation.kind.${s.kind}`),
-    miss: d.miss.toExponential(1),
+    miss: localeDecimal(d.miss.toExponential(1)),
   });
 }

@@ -24,7 +24,7 @@ import {
   shownWhen,
   INTEGER_SLIDER,
 } from "../lib/panel.js";
-import { fmt } from "../lib/format.js";
+import { fmt, fmtTex, pointTex, subscript, pointText, texListSeparator } from "../lib/format.js";
 import { t, formatNumber } from "../lib/strings.js";
 import { boundsOf3 } from "../lib/camera3d.js";
 import { pointsPath3 } from "../lib/draw3d.js";
@@ -33,7 +33,6 @@ import { VECTOR_ARROW } from "../lib/probe-normal.js";
 import { showGroup } from "../lib/surface-controls.js";
 import { HUES, WIDTH, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { flatNetPath, segmentPath3 } from "../lib/net-path3.js";
-import { subscript } from "../lib/format.js";
 import {
   Construction,
   MODES,
@@ -452,13 +451,15 @@ export function draw(r, v, s, d) {
 
 // ------------------------------------------------------------------ formula and label
 
-const triple = (p) => `(${formatNumber(p[0])}, ${formatNumber(p[1])}, ${formatNumber(p[2])})`;
-const texTriple = (p) => `(${fmt(p[0])},\\ ${fmt(p[1])},\\ ${fmt(p[2])})`;
+const triple = (p) => pointText(Array.from(p, (x) => formatNumber(x)));
+const texTriple = (p) => pointTex([p[0], p[1], p[2]]);
 
 /** The weights of the net's first column, w_{i0}: the arcs' pattern (the profile's w_0 = 1). */
 function arcWeights(d) {
   const { weights, rows, cols } = d.net;
-  return Array.from({ length: rows }, (_, i) => weightTex(weights[i * cols])).join(",\\ ");
+  return Array.from({ length: rows }, (_, i) => weightTex(weights[i * cols])).join(
+    texListSeparator(),
+  );
 }
 
 export function formula(s, d) {
@@ -466,13 +467,13 @@ export function formula(s, d) {
   switch (s.mode) {
     case "torus":
       return [
-        t("surfaceRevolution.tex.circle", { R: fmt(s.R), r: fmt(s.r) }),
-        t("surfaceRevolution.tex.revolve", { angle: fmt(s.angle, 0), ...net }),
+        t("surfaceRevolution.tex.circle", { R: fmtTex(s.R), r: fmtTex(s.r) }),
+        t("surfaceRevolution.tex.revolve", { angle: fmtTex(s.angle, 0), ...net }),
         t("surfaceRevolution.tex.rational", { q: 2 }),
         t("surfaceRevolution.tex.weights", { weights: arcWeights(d) }),
         t("surfaceRevolution.tex.torusCheck", {
-          R: fmt(s.R),
-          r: fmt(s.r),
+          R: fmtTex(s.R),
+          r: fmtTex(s.r),
           n: GRID_CHECK,
           distance: sciTex(d.checks.distance),
         }),
@@ -491,7 +492,7 @@ export function formula(s, d) {
         t("surfaceRevolution.tex.extrude", { d: texTriple(s.direction) }),
         t("surfaceRevolution.tex.extrudeNet", net),
         t("surfaceRevolution.tex.extrudeCheck", {
-          u: fmt(c.u),
+          u: fmtTex(c.u),
           d: texTriple(c.s1.map((x, k) => x - c.s0[k])),
         }),
       ];
@@ -502,7 +503,7 @@ export function formula(s, d) {
         t("surfaceRevolution.tex.ruled"),
         t("surfaceRevolution.tex.ruledNet", net),
         t("surfaceRevolution.tex.ruledCheck", {
-          u: fmt(c.u),
+          u: fmtTex(c.u),
           a: texTriple(c.a),
           b: texTriple(c.b),
           mid: texTriple(c.mid),

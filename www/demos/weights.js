@@ -22,6 +22,14 @@ import {
   exactFraction,
   fractionText,
   fractionTex,
+  fmtTex,
+  pointTex,
+  pointText,
+  listTex,
+  listText,
+  localeDecimal,
+  texListSeparator,
+  shownNumbers,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf } from "../lib/geometry.js";
@@ -89,7 +97,10 @@ export const fields = {
       if (w <= 0) throw new Error(t("weights.notPositive", { name: wi, value: w }));
       if (w < WEIGHT_MIN || w > WEIGHT_MAX) {
         throw new Error(
-          t("weights.outOfRange", { name: wi, value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          t("weights.outOfRange", {
+            name: wi,
+            ...shownNumbers({ value: w, min: WEIGHT_MIN, max: WEIGHT_MAX }),
+          }),
         );
       }
     });
@@ -206,7 +217,10 @@ function scaleAll(ui) {
   const up = max * SCALE_FACTOR <= WEIGHT_MAX;
   const factor = up ? SCALE_FACTOR : min / SCALE_FACTOR >= WEIGHT_MIN ? 1 / SCALE_FACTOR : 0;
   if (!factor) {
-    ui.status(t("weights.cannotScale", { min: WEIGHT_MIN, max: WEIGHT_MAX }), "error");
+    ui.status(
+      t("weights.cannotScale", shownNumbers({ min: WEIGHT_MIN, max: WEIGHT_MAX })),
+      "error",
+    );
     return;
   }
   setAllWeights(ui, (w) => w * factor);
@@ -339,25 +353,25 @@ export function draw(r, v, s, d) {
 export function formula(s, d) {
   const n = s.points.length - 1;
   const tFraction = simpleFraction(s.t);
-  const tTex = tFraction ? fractionTex(tFraction) : fmt(s.t);
+  const tTex = tFraction ? fractionTex(tFraction) : fmtTex(s.t);
   const b = [];
   for (let i = 0; i <= n; i++) {
     const value = d.sl.bernstein(n, i, s.t);
     const f = tFraction ? exactFraction(value, tFraction.den ** n) : null;
-    b.push(f ? fractionTex(f) : fmt(value));
+    b.push(f ? fractionTex(f) : fmtTex(value));
   }
-  const wTex = s.weights.map((w) => weightText(w));
+  const wTex = s.weights.map((w) => weightText(w, 3, true));
   const numerator = b.map((bi, i) => `${bi}\\cdot ${wTex[i]}\\,P_{${i}}`).join(" + ");
   const denominator = b.map((bi, i) => `${bi}\\cdot ${wTex[i]}`).join(" + ");
   const [x, y] = d.rays.point;
-  const [X, Y, W] = Array.from(d.rays.hom.subarray(3 * RAY_TS.length), (c) => fmt(c));
-  const ratios = s.weights.map((w) => weightText(w / s.weights[0])).join(" : ");
+  const [X, Y, W] = Array.from(d.rays.hom.subarray(3 * RAY_TS.length), (c) => fmtTex(c));
+  const ratios = s.weights.map((w) => weightText(w / s.weights[0], 3, true)).join(" : ");
   const sum = (body) => `\\sum_{i=0}^{${n}} B_i^{${n}}(t)${body}`;
   return [
-    `P(t) = \\frac{${sum("\\,w_i\\,P_i")}}{${sum("\\,w_i")}},\\qquad (w_0, \\dots, w_{${n}}) = (${wTex.join(",\\ ")})`,
-    `P(${tTex}) = \\frac{${numerator}}{${denominator}} = (${fmt(x)},\\ ${fmt(y)})`,
-    `P^w(${tTex}) = \\sum_i B_i^{${n}}(${tTex})\\,(w_iP_i,\\ w_i) = (${X},\\ ${Y},\\ ${W}) \\;\\mapsto\\; ` +
-      `\\left(\\tfrac{${X}}{${W}},\\ \\tfrac{${Y}}{${W}}\\right)`,
+    `P(t) = \\frac{${sum("\\,w_i\\,P_i")}}{${sum("\\,w_i")}},\\qquad (w_0, \\dots, w_{${n}}) = (${wTex.join(texListSeparator())})`,
+    `P(${tTex}) = \\frac{${numerator}}{${denominator}} = ${pointTex([x, y])}`,
+    `P^w(${tTex}) = \\sum_i B_i^{${n}}(${tTex})\\,(w_iP_i,\\ w_i) = ${pointTex([X, Y, W])} \\;\\mapsto\\; ` +
+      `\\left(${listTex([`\\tfrac{${X}}{${W}}`, `\\tfrac{${Y}}{${W}}`])}\\right)`,
     `\\text{${t("weights.tex.ratios")}} w_0 : \\dots : w_{${n}} = ${ratios};\\quad ` +
       `\\lambda w_i\\ (\\lambda > 0) \\text{${t("weights.tex.same")}}`,
   ];
@@ -371,7 +385,7 @@ export function label(s, d) {
   const n = s.points.length - 1;
   return t("weights.aria", {
     kind: n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n }),
-    weights: s.weights.map((w) => weightText(w)).join(", "),
+    weights: listText(s.weights.map((w) => weightText(w))),
     t: tText(s),
     x: fmt(x, 2),
     y: fmt(y, 2),
@@ -416,12 +430,9 @@ export function setup(ui) {
       rows.forEach((cells, i) => {
         const [px, py] = s.points[i];
         const distance = Math.hypot(x - px, y - py);
-        setText(cells.point, `(${fmt(px)}, ${fmt(py)})`);
+        setText(cells.point, pointText([px, py]));
         setText(cells.weight, weightText(s.weights[i]));
-        setText(
-          cells.homogeneous,
-          `(${fmt(h[3 * i])}, ${fmt(h[3 * i + 1])}, ${fmt(h[3 * i + 2])})`,
-        );
+        setText(cells.homogeneous, pointText([h[3 * i], h[3 * i + 1], h[3 * i + 2]]));
         setText(cells.share, fmt(d.shares[i]));
         setText(cells.distance, fmt(distance));
         cells.distance.dataset.value = String(distance);
@@ -436,5 +447,5 @@ function tText(s) {
 }
 
 function gapText(gap) {
-  return gap === 0 ? "0" : gap < SMALL_GAP ? gap.toExponential(1) : fmt(gap);
+  return gap === 0 ? "0" : gap < SMALL_GAP ? localeDecimal(gap.toExponential(1)) : fmt(gap);
 }

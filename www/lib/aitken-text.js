@@ -14,6 +14,10 @@
 import { el, setText } from "./controls.js";
 import {
   fmt,
+  fmtTex,
+  pointTex,
+  pointText,
+  texListSeparator,
   subscript,
   superscript,
   simpleFraction,
@@ -60,12 +64,13 @@ export function exactness(s, params) {
   const exact = f && allIntegers(params) && allIntegers(s.points.flat()) ? f : null;
   const text = (x, den, tex) => {
     const g = exact ? exactFraction(x, den) : null;
-    if (!g) return fmt(x);
+    if (!g) return tex ? fmtTex(x) : fmt(x);
     return tex ? fractionTex(g) : fractionText(g);
   };
   return {
     exact,
-    param: (tex = false) => (exact ? (tex ? fractionTex(exact) : fractionText(exact)) : fmt(s.t)),
+    param: (tex = false) =>
+      exact ? (tex ? fractionTex(exact) : fractionText(exact)) : tex ? fmtTex(s.t) : fmt(s.t),
     level: (x, i, r, tex = false) =>
       text(x, exact ? nodesDenominator(params, i, r, exact.den) : 1, tex),
     basis: (x, n, tex = false) =>
@@ -78,15 +83,17 @@ export function exactness(s, params) {
 /** The parameters as TeX: t_0 … t_n, the long lists cut after LISTED_PARAMS. */
 function paramsTex(params) {
   const n = params.length - 1;
-  const shown = Array.from(params.slice(0, Math.min(n + 1, LISTED_PARAMS)), shortNumber);
-  if (n + 1 > LISTED_PARAMS) shown.push("\\dots", shortNumber(params[n]));
-  return `(t_0, \\dots, t_{${n}}) = (${shown.join(",\\ ")})`;
+  const shown = Array.from(params.slice(0, Math.min(n + 1, LISTED_PARAMS)), (x) =>
+    shortNumber(x, true),
+  );
+  if (n + 1 > LISTED_PARAMS) shown.push("\\dots", shortNumber(params[n], true));
+  return `(t_0, \\dots, t_{${n}}) = (${shown.join(texListSeparator())})`;
 }
 
 /** A point of the triangle as TeX "(x, y)". */
-function pointTex(num, triangle, n, i, r) {
+function trianglePointTex(num, triangle, n, i, r) {
   const k = 2 * (levelStart(n, r) + i);
-  return `(${num.level(triangle[k], i, r, true)},\\ ${num.level(triangle[k + 1], i, r, true)})`;
+  return pointTex([num.level(triangle[k], i, r, true), num.level(triangle[k + 1], i, r, true)]);
 }
 
 /**
@@ -103,7 +110,7 @@ export function lagrangeFormula(s, d, fit) {
     `P(t) = \\sum_{i=0}^{${n}} L_i(t)\\,p_i,\\quad L_i(t) = \\prod_{j \\ne i} \\frac{t - t_j}{t_i - t_j},\\quad ${paramsTex(params)}`,
     `p_i^{r} = \\frac{t_{i+r} - t}{t_{i+r} - t_i}\\,p_i^{r-1} + \\frac{t - t_i}{t_{i+r} - t_i}\\,p_{i+1}^{r-1},\\quad p_i^0 = p_i,\\quad t = ${tTex}`,
     `P(${tTex}) = p_0^{${n}} = ${num.weight(1 - wRight, 0, n, true)}\\,p_0^{${n - 1}} + ${wrapSign(num.weight(wRight, 0, n, true))}\\,p_1^{${n - 1}}` +
-      ` = ${pointTex(num, d.triangle, n, 0, n)}`,
+      ` = ${trianglePointTex(num, d.triangle, n, 0, n)}`,
   ];
   let sum = 0;
   let low = 0;
@@ -209,7 +216,7 @@ export class LagrangeTables {
       setText(cells.param, shortNumber(fit.params[i]));
       const exact = num.basis(value, n);
       setValueSpans(cells.value, exact, /^-?\d+$/.test(exact) ? exact : fmt(value));
-      setText(cells.point, `(${shortNumber(s.points[i][0])}, ${shortNumber(s.points[i][1])})`);
+      setText(cells.point, pointText([shortNumber(s.points[i][0]), shortNumber(s.points[i][1])]));
       cells.row.classList.toggle("sl-highlight", i === d.highlight);
       cells.row.classList.toggle("sl-negative", value < 0);
     }
@@ -221,8 +228,8 @@ export class LagrangeTables {
       for (let i = 0; i + r <= n; i++, k++) {
         const x = d.triangle[2 * k];
         const y = d.triangle[2 * k + 1];
-        const decimals = `(${fmt(x)}, ${fmt(y)})`;
-        const exact = num.exact ? `(${num.level(x, i, r)}, ${num.level(y, i, r)})` : decimals;
+        const decimals = pointText([x, y]);
+        const exact = num.exact ? pointText([num.level(x, i, r), num.level(y, i, r)]) : decimals;
         setValueSpans(this.cells[k], exact, decimals);
       }
     }

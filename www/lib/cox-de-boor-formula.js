@@ -7,7 +7,7 @@
  * live numbers: the two ratios at u, the values N_{i,p−1}(u), N_{i+1,p−1}(u) of the row below
  * (from the core's `basisTable(u)`) and the result N_{i,p}(u) (the core's `basis(u)`).
  */
-import { fmt } from "./format.js";
+import { fmtTex } from "./format.js";
 import { knotText } from "./knot-ruler.js";
 
 /** The definition; `otherwise` is the TeX of the word "otherwise" (`\text{…}` from strings.js). */
@@ -23,17 +23,17 @@ export function coxDeBoorDefinition(otherwise) {
  * u (`uTex` its TeX), `below(i)` = N_{i,p−1}(u).
  */
 export function coxDeBoorStep({ knots, u, uTex, p, i, below, value }) {
-  const kt = knotText;
+  const kt = (x) => knotText(x, true);
   const uText = kt(u);
   // One side: (num / den) N_{j, p−1}(u), or 0 when den = 0 (0/0 := 0).
   const side = (num, den, j, numTex, denTex) => {
     if (den === 0) return { part: "0", numbers: "0" };
     const part = `\\frac{${numTex}}{${denTex}}\\,N_{${j},${p - 1}}(${uTex})`;
-    return { part, numbers: `${fmt(num / den)}\\cdot ${fmt(below(j))}` };
+    return { part, numbers: `${fmtTex(num / den)}\\cdot ${fmtTex(below(j))}` };
   };
   const [a, b, c, e] = [knots[i], knots[i + p], knots[i + 1], knots[i + p + 1]];
   const left = side(u - a, b - a, i, `${uText}-${kt(a)}`, `${kt(b)}-${kt(a)}`);
   const right = side(e - u, e - c, i + 1, `${kt(e)}-${uText}`, `${kt(e)}-${kt(c)}`);
   const numbers = `${left.numbers} + ${right.numbers}`;
-  return `N_{${i},${p}}(${uTex}) = ${left.part} + ${right.part} = ${numbers} = ${fmt(value)}`;
+  return `N_{${i},${p}}(${uTex}) = ${left.part} + ${right.part} = ${numbers} = ${fmtTex(value)}`;
 }

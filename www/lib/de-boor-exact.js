@@ -8,6 +8,7 @@
  */
 import {
   fmt,
+  fmtTex,
   simpleFraction,
   exactFraction,
   fractionText,
@@ -66,11 +67,11 @@ export function deBoorExact(u, inputs, p, alphas) {
     coord(value, level, i, tex) {
       const den = dens[level][i];
       const g = exact && Number.isFinite(den) ? exactFraction(value, den) : null;
-      return g ? asText(g, tex) : fmt(value);
+      return g ? asText(g, tex) : tex ? fmtTex(value) : fmt(value);
     },
     alpha(alpha, tex) {
       const g = alphaFraction(alpha);
-      return g ? asText(g, tex) : fmt(alpha.value);
+      return g ? asText(g, tex) : tex ? fmtTex(alpha.value) : fmt(alpha.value);
     },
     apexExact: Number.isFinite(dens[p][0]),
   };

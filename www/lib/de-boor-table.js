@@ -6,7 +6,7 @@
  * d_j^r = (1 − α_j^r) d_{j−1}^{r−1} + α_j^r d_j^{r−1} that made the cell (`data-alpha`).
  */
 import { el, setText } from "./controls.js";
-import { fmt, subscript, superscript } from "./format.js";
+import { fmtMachine, pointText, subscript, superscript } from "./format.js";
 import { t } from "./strings.js";
 import { titledTable } from "./table.js";
 
@@ -39,9 +39,9 @@ export class DeBoorTable {
         const j = level + i;
         const x = triangle[2 * c];
         const y = triangle[2 * c + 1];
-        const decimals = `(${fmt(x)}, ${fmt(y)})`;
+        const decimals = pointText([x, y]);
         const exact = num.exact
-          ? `(${num.coord(x, level, i, false)}, ${num.coord(y, level, i, false)})`
+          ? pointText([num.coord(x, level, i, false), num.coord(y, level, i, false)])
           : decimals;
         const spans = this.cells[c];
         const name = `d${subscript(j)}${superscript(level)} = `;
@@ -50,12 +50,12 @@ export class DeBoorTable {
         // Decimals underneath only when they say something the exact value does not.
         setText(
           spans.decimal,
-          exact === decimals || /^\(-?\d+, -?\d+\)$/.test(exact) ? "" : `≈ ${decimals}`,
+          exact === decimals || /^\(-?\d+[,;] -?\d+\)$/.test(exact) ? "" : `≈ ${decimals}`,
         );
         if (level > 0) {
           const alpha = alphas[level - 1][i];
           setText(spans.alpha, t(`${this.prefix}.alphaCell`, { value: num.alpha(alpha, false) }));
-          spans.alpha.dataset.alpha = fmt(alpha.value);
+          spans.alpha.dataset.alpha = fmtMachine(alpha.value);
         }
       }
     }

@@ -1,8 +1,15 @@
 /**
  * Number formatting for labels, tables and formulas: fixed decimals, exact fractions when the
  * inputs allow them, and Unicode sub/superscripts for labels such as P₀ or p₁².
+ *
+ * Numbers people read follow the active language (strings.js `decimalSeparator`): `fmt` writes
+ * "1.250" in English and "1,250" in Greek, Croatian and Italian, and with a decimal comma a list
+ * or point separates its entries with "; " ("(1,5; 2)", `pointText`). TeX gets its own forms
+ * (`fmtTex`, `pointTex`, the `tex` flags): KaTeX spaces a bare comma as punctuation, so a decimal
+ * comma is written "1{,}5". Text a machine reads — links, JSON, SVG and TikZ coordinates, data
+ * attributes of tests — takes `fmtMachine`, always with a point.
  */
-import { t } from "./strings.js";
+import { decimalSeparator, t } from "./strings.js";
 
 /** Decimals shown for parameters and coordinates (ui.md). */
 export const DECIMALS = 3;
@@ -31,10 +38,103 @@ export function degreeName(n) {
   return n <= 5 ? t(`curve.degree.${n}`) : t("curve.degree.n", { n });
 }
 
-/** `value` with `DECIMALS` decimals, no "-0.000". */
-export function fmt(value, decimals = DECIMALS) {
+/**
+ * `value` with `DECIMALS` decimals and a decimal point, no "-0.000": for text a machine reads
+ * (links, exports, data attributes, numbers parsed back). Shown numbers take `fmt`.
+ */
+export function fmtMachine(value, decimals = DECIMALS) {
   const s = value.toFixed(decimals);
   return Number(s) === 0 ? (0).toFixed(decimals) : s;
+}
+
+/**
+ * `value` as people read it: `DECIMALS` decimals, no "-0.000", the decimal separator of the
+ * active language ("1.250", "1,250"). For TeX use `fmtTex`.
+ */
+export function fmt(value, decimals = DECIMALS) {
+  return localeDecimal(fmtMachine(value, decimals));
+}
+
+/** `value` for a KaTeX formula: as `fmt`, a decimal comma written "1{,}250" (no space after it). */
+export function fmtTex(value, decimals = DECIMALS) {
+  return texDecimal(fmtMachine(value, decimals));
+}
+
+/**
+ * A number's machine text ("2.5", "-0.00031", from toFixed, toPrecision or String) with the
+ * active language's decimal separator: "2,5" in Greek, Croatian and Italian.
+ */
+export function localeDecimal(text) {
+  const sign = decimalSeparator();
+  return sign === "." ? text : text.replace(".", sign);
+}
+
+/** A number's machine text as TeX in the active language: "2.5", or "2{,}5" (see `fmtTex`). */
+export function texDecimal(text) {
+  const sign = decimalSeparator();
+  return sign === "." ? text : text.replace(".", `{${sign}}`);
+}
+
+/**
+ * What separates the entries of a list or a point shown: ", " ("(1.5, 2)"), or "; " where the
+ * decimal separator is a comma ("(1,5; 2)"): a comma between numbers would read as a decimal one.
+ */
+export function listSeparator() {
+  return decimalSeparator() === "," ? "; " : ", ";
+}
+
+/**
+ * `params` for a sentence (`t(key, params)`) with every number as `String` writes it but with
+ * the active language's decimal separator (0.001 → "0,001", 1e-9 stays "1e-9"); others as they are.
+ */
+export function shownNumbers(params) {
+  const shown = {};
+  for (const [key, value] of Object.entries(params))
+    shown[key] = typeof value === "number" ? localeDecimal(String(value)) : value;
+  return shown;
+}
+
+/**
+ * What separates the numbers of a typed list a text box shows, so that `splitNumberList` reads
+ * it back: " " ("0 0 1.5 2"), or "; " with a decimal comma ("0; 0; 1,5; 2").
+ */
+export function inputListSeparator() {
+  return decimalSeparator() === "," ? "; " : " ";
+}
+
+/** `listSeparator` for TeX, with `space` after the sign: ",\\ " or ";\\ " (TeX `,\ `, `;\ `). */
+export function texListSeparator(space = "\\ ") {
+  return `${decimalSeparator() === "," ? ";" : ","}${space}`;
+}
+
+/**
+ * Numbers and texts as a shown list: numbers written by `fmt(x, decimals)`, strings (a
+ * fraction, a name) as they are, joined by `listSeparator`: "0.25, 1/2" or "0,25; 1/2".
+ */
+export function listText(items, decimals = DECIMALS) {
+  return Array.from(items, (x) => (typeof x === "number" ? fmt(x, decimals) : x)).join(
+    listSeparator(),
+  );
+}
+
+/** A point (or any tuple) as shown: "(1.250, 2.000)", "(1,250; 2,000)"; entries as in `listText`. */
+export function pointText(coords, decimals = DECIMALS) {
+  return `(${listText(coords, decimals)})`;
+}
+
+/**
+ * Numbers and TeX as a list in a formula: numbers by `fmtTex(x, decimals)`, strings as they are,
+ * joined by `texListSeparator(space)`: "0.25,\\ \\tfrac12" or "0{,}25;\\ \\tfrac12".
+ */
+export function listTex(items, decimals = DECIMALS, space = "\\ ") {
+  return Array.from(items, (x) => (typeof x === "number" ? fmtTex(x, decimals) : x)).join(
+    texListSeparator(space),
+  );
+}
+
+/** A point in a formula: "(1.250,\\ 2)", "(1{,}250;\\ 2)"; entries as in `listTex`. */
+export function pointTex(coords, decimals = DECIMALS, space = "\\ ") {
+  return `(${listTex(coords, decimals, space)})`;
 }
 
 /** Greatest common divisor of two non-negative integers. */
@@ -134,20 +234,30 @@ export function exactNumbers(parameter, inputs) {
     exact,
     /** The parameter: "1/4" (or TeX \tfrac{1}{4}) when exact, else 3 decimals. */
     param: (tex = false) =>
-      exact ? (tex ? fractionTex(exact) : fractionText(exact)) : fmt(parameter),
+      exact
+        ? tex
+          ? fractionTex(exact)
+          : fractionText(exact)
+        : tex
+          ? fmtTex(parameter)
+          : fmt(parameter),
     /** x after `level` steps: a fraction over (a divisor of) den^level when exact, else decimals. */
     value(x, level, tex = false, den = exact ? exact.den ** level : 1) {
       const g = exact ? exactFraction(x, den) : null;
-      if (!g) return fmt(x);
+      if (!g) return tex ? fmtTex(x) : fmt(x);
       return tex ? fractionTex(g) : fractionText(g);
     },
   };
 }
 
-/** A number as short text: an integer (within 1e-9) without decimals, else `DECIMALS` decimals. */
-export function shortNumber(v) {
+/**
+ * A number as short text (or TeX with `tex`): an integer (within 1e-9) without decimals, else
+ * `DECIMALS` decimals.
+ */
+export function shortNumber(v, tex = false) {
   const r = Math.round(v);
-  return Math.abs(v - r) < 1e-9 ? String(r) : fmt(v);
+  if (Math.abs(v - r) < 1e-9) return String(r);
+  return tex ? fmtTex(v) : fmt(v);
 }
 
 /**
@@ -156,7 +266,7 @@ export function shortNumber(v) {
  */
 export function fractionOrDecimals(x, tex = false) {
   const f = simpleFraction(x);
-  return f ? (tex ? fractionTex(f) : fractionText(f)) : fmt(x);
+  return f ? (tex ? fractionTex(f) : fractionText(f)) : tex ? fmtTex(x) : fmt(x);
 }
 
 /** Below this size a non-zero number would read "0.000" in 3 decimals: 2 significant digits. */
@@ -169,8 +279,14 @@ const SMALL = 5e-4;
  */
 export function exactText(x) {
   if (Math.abs(x) < 1e-12) return "0";
-  const text = Math.abs(x) < SMALL ? x.toPrecision(2) : fractionOrDecimals(x);
+  const text = Math.abs(x) < SMALL ? localeDecimal(x.toPrecision(2)) : fractionOrDecimals(x);
   return text.replace("-", "−");
+}
+
+/** `exactText` as TeX: fractions as \tfrac, a decimal comma as "{,}", a TeX minus. */
+export function exactTex(x) {
+  if (Math.abs(x) < 1e-12) return "0";
+  return Math.abs(x) < SMALL ? texDecimal(x.toPrecision(2)) : fractionOrDecimals(x, true);
 }
 
 /**

@@ -7,7 +7,7 @@
  * `data-index`) the core's new polygon. The α come from the core's `insertionAlphas(s)`.
  */
 import { el, setText } from "./controls.js";
-import { fmt, subscript, fractionOrDecimals } from "./format.js";
+import { pointText, subscript, fractionOrDecimals } from "./format.js";
 import { titledTable } from "./table.js";
 
 export class InsertionTable {
@@ -35,7 +35,7 @@ export class InsertionTable {
         const [a, b] = [fractionOrDecimals(1 - alpha.value), fractionOrDecimals(alpha.value)];
         rule = `${Q} = ${a} P${subscript(i - 1)} + ${b} P${subscript(i)}`;
       }
-      const value = `(${fmt(q[2 * i])}, ${fmt(q[2 * i + 1])})`;
+      const value = pointText([q[2 * i], q[2 * i + 1]]);
       rows.push(
         el(
           "tr",

@@ -6,15 +6,15 @@
  * if any. Cells `data-cell`: multiplicity, guaranteed, measured, point (`data-x`, `data-y`), through.
  */
 import { el } from "./controls.js";
-import { fmt } from "./format.js";
+import { pointText } from "./format.js";
 import { t } from "./strings.js";
 import { titledTable } from "./table.js";
-import { knotText, stackOf } from "./knot-ruler.js";
+import { knotMachine, knotText, stackOf } from "./knot-ruler.js";
 import { knotNames } from "./knot-readout.js";
 import { continuityText, measuredText } from "./continuity.js";
 
-/** "(6.000, 4.000)". */
-const pair = ([x, y]) => `(${fmt(x)}, ${fmt(y)})`;
+/** "(6.000, 4.000)"; "(6,000; 4,000)" with a decimal comma. */
+const pair = ([x, y]) => pointText([x, y]);
 
 const COLUMNS = ["colKnot", "colR", "colGuaranteed", "colMeasured", "colPoint", "colThrough"];
 
@@ -49,7 +49,7 @@ export class JointsTable {
       }
       const row = el(
         "tr",
-        { dataset: { knot: knotText(entry.knot) } },
+        { dataset: { knot: knotMachine(entry.knot) } },
         el("th", { scope: "row", text: `${knotNames(a, b)} = ${knotText(entry.knot)}` }),
         el("td", { dataset: { cell: "multiplicity" }, text: String(entry.multiplicity) }),
         el("td", { dataset: { cell: "guaranteed" }, text: continuityText(entry.continuity) }),

@@ -25,7 +25,7 @@
 import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "./handles.js";
 import { NudgeGroups } from "./handle-keys.js";
 import { HUES, WIDTH, FONT_SIZE } from "./theme.js";
-import { subscript } from "./format.js";
+import { localeDecimal, subscript, texDecimal } from "./format.js";
 import { formatNumber, t } from "./strings.js";
 import { setKnots } from "./bspline.js";
 import { continuityText } from "./continuity.js";
@@ -161,10 +161,22 @@ export function lowerMultiplicity(knots, i) {
   return { error: "single" };
 }
 
-/** A knot value as short text: at most 3 decimals, no trailing zeros ("2", "2.5", "1.333"). */
-export function knotText(u) {
+/**
+ * A knot value as machine text: at most 3 decimals, no trailing zeros, a decimal point ("2",
+ * "2.5", "1.333"), for data attributes and typed lists parsed back.
+ */
+export function knotMachine(u) {
   const s = u.toFixed(3).replace(/\.?0+$/, "");
   return s === "-0" ? "0" : s;
+}
+
+/**
+ * A knot value as shown (or TeX with `tex`): `knotMachine` with the active language's decimal
+ * separator ("2,5" in Croatian; TeX "2{,}5").
+ */
+export function knotText(u, tex = false) {
+  const s = knotMachine(u);
+  return tex ? texDecimal(s) : localeDecimal(s);
 }
 
 export class KnotRuler {

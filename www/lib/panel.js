@@ -17,7 +17,13 @@ import {
 } from "./controls.js";
 import { Player } from "./player.js";
 import { pointIndex, withPointAdded, withPointRemoved } from "./point-list.js";
-import { parseNumberInput, splitNumberList } from "./format.js";
+import {
+  inputListSeparator,
+  localeDecimal,
+  parseNumberInput,
+  splitNumberList,
+  shownNumbers,
+} from "./format.js";
 import { t } from "./strings.js";
 import { errorText } from "./core-errors.js";
 
@@ -75,7 +81,7 @@ export function slider(field, o) {
       let player = null;
       const control = sliderElement({
         label: t(o.label),
-        inputLabel: t(o.input ?? `${o.label}.input`, o.inputParams),
+        inputLabel: t(o.input ?? `${o.label}.input`, o.inputParams && shownNumbers(o.inputParams)),
         name: o.name ?? field,
         min,
         max,
@@ -391,7 +397,8 @@ export function actions(list, { title = null } = {}) {
 
 /**
  * A typed list of numbers bound to a field (a knot vector): a labelled text box
- * (`data-control=name`) showing `state[field]` as `format(v)` joined by spaces, and a help line
+ * (`data-control=name`) showing `state[field]` as `format(v)` (default: the number with the
+ * language's decimal separator) joined by spaces ("; " with a decimal comma), and a help line
  * `help(state)` under it. Enter (or leaving the box) reads numbers or fractions separated by
  * spaces, commas or semicolons; a part that is no number is reported (`control.badNumber`), else
  * `apply(ui, values)` (default `ui.set(field, values)`) gets the list. The box is not rewritten
@@ -399,7 +406,7 @@ export function actions(list, { title = null } = {}) {
  */
 export function numberList(
   field,
-  { label, name = field, format = String, help = null, apply = null },
+  { label, name = field, format = (v) => localeDecimal(String(v)), help = null, apply = null },
 ) {
   return {
     build(ui) {
@@ -436,7 +443,7 @@ export function numberList(
       return {
         element: fragment(row, ...(note ? [note] : [])),
         sync(state) {
-          const text = state[field].map(format).join(" ");
+          const text = state[field].map((v) => format(v)).join(inputListSeparator());
           if (input.value !== text && !focused()) input.value = text;
           if (note) setText(note, help(state));
         },

@@ -5,7 +5,7 @@
  * measured here. Curves are indexed as the demo's KINDS: uniform, chord, centripetal, α.
  */
 import { el, setText } from "./controls.js";
-import { fmt, shortNumber, fractionOrDecimals } from "./format.js";
+import { fmt, shortNumber, fractionOrDecimals, texListSeparator } from "./format.js";
 import { t } from "./strings.js";
 import { titledTable } from "./table.js";
 
@@ -22,11 +22,11 @@ export function legsOf(chordParams) {
   return legs;
 }
 
-/** A list as TeX "(a,\ b,\ …,\ z)", cut after LISTED entries. */
+/** A list as TeX "(a,\ b,\ …,\ z)" (";\ " with a decimal comma), cut after LISTED entries. */
 function listTex(values) {
-  const shown = values.slice(0, Math.min(values.length, LISTED)).map(shortNumber);
-  if (values.length > LISTED) shown.push("\\dots", shortNumber(values[values.length - 1]));
-  return `(${shown.join(",\\ ")})`;
+  const shown = values.slice(0, Math.min(values.length, LISTED)).map((x) => shortNumber(x, true));
+  if (values.length > LISTED) shown.push("\\dots", shortNumber(values[values.length - 1], true));
+  return `(${shown.join(texListSeparator())})`;
 }
 
 const text = (key) => `\\text{${t(`parametrization.tex.${key}`)}}`;
@@ -57,7 +57,7 @@ export function parametrizationFormula(s, shown, alphaCurve) {
   const note = same >= 0 ? `\\ =\\ ${text(NAMES[same])}` : "";
   lines.push(
     `\\alpha = ${a}:\\ \\ t_{${i + 1}} = t_{${i}} + |p_{${i + 1}} - p_{${i}}|^{${a}} = ` +
-      `${shortNumber(params[i])} + {${shortNumber(legs[i])}}^{${a}} = ${shortNumber(params[i + 1])},` +
+      `${shortNumber(params[i], true)} + {${shortNumber(legs[i], true)}}^{${a}} = ${shortNumber(params[i + 1], true)},` +
       `\\quad t = ${listTex(Array.from(params))}${note}`,
   );
   return lines;

@@ -10,6 +10,7 @@ import { errorText } from "./core-errors.js";
  * a torus — the measured check shown to students (|√((√(x² + y²) − R)² + z²) − r|), not a step of
  * any construction.
  */
+import { localeDecimal, texDecimal } from "./format.js";
 
 export const MODES = Object.freeze(["torus", "vase", "extrude", "ruled"]);
 /** The torus check samples the surface on a GRID_CHECK × GRID_CHECK grid of (u, v). */
@@ -169,13 +170,13 @@ function scientific(x) {
 export function sciText(x) {
   const parts = scientific(x);
   if (!parts) return "0";
-  return `${parts[0]} × 10${[...parts[1]].map((c) => SUPERSCRIPT[c]).join("")}`;
+  return `${localeDecimal(parts[0])} × 10${[...parts[1]].map((c) => SUPERSCRIPT[c]).join("")}`;
 }
 
 /** "4.4 \cdot 10^{-16}" (TeX), "0" for 0. */
 export function sciTex(x) {
   const parts = scientific(x);
-  return parts ? `${parts[0]} \\cdot 10^{${parts[1]}}` : "0";
+  return parts ? `${texDecimal(parts[0])} \\cdot 10^{${parts[1]}}` : "0";
 }
 
 /** A weight as TeX: 1, √2/2 and ½ by name (to 1e-12), else 4 decimals. */
@@ -183,5 +184,5 @@ export function weightTex(w) {
   if (Math.abs(w - 1) < 1e-12) return "1";
   if (Math.abs(w - Math.SQRT1_2) < 1e-12) return "\\tfrac{\\sqrt{2}}{2}";
   if (Math.abs(w - 0.5) < 1e-12) return "\\tfrac12";
-  return w.toFixed(4);
+  return texDecimal(w.toFixed(4));
 }

@@ -16,7 +16,7 @@
  *   plot.drawMarker(r, s, text, valuesAtT);
  */
 import { PlotStrip, drawPlotStrip } from "./plot-strip.js";
-import { shortNumber } from "./format.js";
+import { localeDecimal, shortNumber } from "./format.js";
 
 /** Margins of the plot's box inside the strip (CSS px at text scale 1): labels live there. */
 const MARGIN = Object.freeze({ top: 26, right: 24, bottom: 30, left: 44 });
@@ -145,7 +145,7 @@ export class SignedBasisPlot {
 
   /** "3" or "≥ 3" at a range end that cut graphs off. */
   edgeText(v, clipped, sign) {
-    return clipped ? `${sign} ${shortNumber(v)}` : String(Number(v.toFixed(2)));
+    return clipped ? `${sign} ${shortNumber(v)}` : localeDecimal(String(Number(v.toFixed(2))));
   }
 
   /**

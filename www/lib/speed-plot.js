@@ -11,6 +11,7 @@
  * Everything drawn comes from the caller's `shown` entries `{ speed, ticks }` (core values).
  */
 import { PlotStrip, drawPlotStrip } from "./plot-strip.js";
+import { localeDecimal } from "./format.js";
 
 /** Height of a tick row, the tick mark in it, the swatch length (CSS px at text scale 1). */
 const ROW_PX = 11;
@@ -95,7 +96,14 @@ export class SpeedPlot {
     r.paint(theme.axis);
     const lx = p.x0 - 6 * sc;
     r.text("0", lx, p.y0, theme.labelSmall, "right", "middle");
-    r.text(String(Number(p.hi.toPrecision(3))), lx, p.y1, theme.labelSmall, "right", "middle");
+    r.text(
+      localeDecimal(String(Number(p.hi.toPrecision(3)))),
+      lx,
+      p.y1,
+      theme.labelSmall,
+      "right",
+      "middle",
+    );
     r.text(names.speed, p.x0 - 6 * sc, p.top + 4 * sc, theme.labelSmall, "left", "top");
     for (let c = count - 1; c >= 0; c--) {
       const speed = shown[c].speed;

@@ -19,9 +19,9 @@
  *   m_{N−1} (a corner of the cyclic matrix), likewise row N − 1 wraps to m_0.
  * The numbers in the rows shown come from the core's `system()`; nothing is solved here.
  */
-import { fmt, shortNumber, subscript } from "./format.js";
+import { fmt, pointTex, shortNumber, subscript, texListSeparator } from "./format.js";
 import { t } from "./strings.js";
-import { pointText } from "./system-table.js";
+import { rowPoint } from "./system-table.js";
 
 /** Δ's written out at most this many; more are elided in the middle. */
 const MAX_DELTAS = 8;
@@ -43,19 +43,20 @@ export function interiorRowTex() {
 /** "Δ_i = t_{i+1} − t_i: 1, 1, …, 1 (uniform)" with the current params. */
 export function deltasTex(params, kindName) {
   const deltas = [];
-  for (let i = 0; i + 1 < params.length; i++) deltas.push(shortNumber(params[i + 1] - params[i]));
+  for (let i = 0; i + 1 < params.length; i++)
+    deltas.push(shortNumber(params[i + 1] - params[i], true));
   const shown =
     deltas.length <= MAX_DELTAS
       ? deltas
       : [...deltas.slice(0, MAX_DELTAS - 3), "\\dots", ...deltas.slice(-2)];
-  return `\\Delta_i = t_{i+1} - t_i:\\ ${shown.join(",\\ ")}\\quad (${text("cubicSpline.tex.params")}\\ ${`\\text{${kindName}}`})`;
+  return `\\Delta_i = t_{i+1} - t_i:\\ ${shown.join(texListSeparator())}\\quad (${text("cubicSpline.tex.params")}\\ ${`\\text{${kindName}}`})`;
 }
 
 /** A coefficient times m_j, signed for a sum ("+ 4\,m_1", "− 0.5\,m_2"); "" for a zero. */
 function term(a, j, first) {
   if (a === 0) return "";
   const sign = a < 0 ? "-" : first ? "" : "+";
-  return `${sign} ${shortNumber(Math.abs(a))}\\,m_{${j}}`;
+  return `${sign} ${shortNumber(Math.abs(a), true)}\\,m_{${j}}`;
 }
 
 /** Row i of the system with its numbers: "i = 1: 1 m₀ + 4 m₁ + 1 m₂ = (x, y)". */
@@ -66,7 +67,10 @@ export function numericRowTex(system, i, size) {
     const part = term(a, j, terms.length === 0);
     if (part) terms.push(part);
   }
-  const rhs = `(${shortNumber(system.rhs[2 * i])},\\ ${shortNumber(system.rhs[2 * i + 1])})`;
+  const rhs = pointTex([
+    shortNumber(system.rhs[2 * i], true),
+    shortNumber(system.rhs[2 * i + 1], true),
+  ]);
   return `${terms.join(" ")} = ${rhs}`;
 }
 
@@ -185,8 +189,8 @@ export function showSplineSystem(table, { end, system, params }, { lecture, para
     number,
     entry: (i, j) => systemEntry(system, size, i, j),
     unknown: (i) => `m${subscript(i)}`,
-    solution: (i) => (lecture ? "" : `= ${pointText(system.solution, i, 2, number)}`),
-    rhs: (i) => pointText(system.rhs, i, 2, number),
+    solution: (i) => (lecture ? "" : `= ${rowPoint(system.solution, i, 2, number)}`),
+    rhs: (i) => rowPoint(system.rhs, i, 2, number),
     label: (i) => rowLabel(end, i, size, params.length - 1),
     highlight: (i) => i === 0 || i === size - 1,
     // The corners of the cyclic system: a_{0,N−1} and a_{N−1,0}.

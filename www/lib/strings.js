@@ -1270,6 +1270,7 @@ let activeCode = "en";
 /** `Intl` objects of the active language, made when first needed (then reused). */
 let pluralRules = null;
 const numberFormats = new Map();
+let decimalSign = null;
 
 /**
  * The English table (every key the UI uses; a copy). For tools and tests, e.g. the check that
@@ -1293,11 +1294,23 @@ export function setLocale(code) {
   active = locales[activeCode];
   pluralRules = null;
   numberFormats.clear();
+  decimalSign = null;
 }
 
 /** The active language's code ("en" unless `setLocale` chose another). */
 export function locale() {
   return activeCode;
+}
+
+/**
+ * The active language's decimal separator: "." in English, "," in Greek, Croatian and Italian
+ * (read from `Intl.NumberFormat` once per language; format.js writes every shown number with it).
+ */
+export function decimalSeparator() {
+  decimalSign ??=
+    new Intl.NumberFormat(activeCode).formatToParts(1.5).find((p) => p.type === "decimal")?.value ??
+    ".";
+  return decimalSign;
 }
 
 /** The string for `key` with `{name}` placeholders replaced from `params`. */

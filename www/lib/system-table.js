@@ -26,7 +26,7 @@
  * `td[data-rhs]`, `td[data-solution]` (solution column), the note `[data-info=<name>-note]`.
  */
 import { el, setText } from "./controls.js";
-import { exactText, shortNumber } from "./format.js";
+import { exactText, listSeparator, shortNumber } from "./format.js";
 import { titledTable } from "./table.js";
 
 /** Index −1 stands for the ellipsis row or column. */
@@ -53,11 +53,14 @@ export function shownIndices(size, maxShown) {
   return all;
 }
 
-/** Row i of a flat list of `dim`-vectors as a point, "(1, 3/2)"; `number` writes a coordinate. */
-export function pointText(flat, i, dim, number = exactText) {
+/**
+ * Row i of a flat list of `dim`-vectors as a point, "(1, 3/2)" ("(1,5; 3/2)" with a decimal
+ * comma); `number` writes a coordinate.
+ */
+export function rowPoint(flat, i, dim, number = exactText) {
   const parts = [];
   for (let c = 0; c < dim; c++) parts.push(number(flat[i * dim + c]));
-  return `(${parts.join(", ")})`;
+  return `(${parts.join(listSeparator())})`;
 }
 
 /** The ellipsis cell's text where shown row `i` meets shown column `j` (either may be ELLIPSIS). */

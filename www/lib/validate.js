@@ -6,6 +6,7 @@
  */
 import { t } from "./strings.js";
 import { isCamera } from "./camera3d.js";
+import { localeDecimal, shownNumbers } from "./format.js";
 
 /** Shows a value in an error message without flooding it. */
 function show(value) {
@@ -13,7 +14,7 @@ function show(value) {
     typeof value === "string"
       ? t("format.quoted", { value })
       : typeof value === "number"
-        ? String(value)
+        ? localeDecimal(String(value))
         : JSON.stringify(value);
   return text === undefined ? String(value) : text.length > 40 ? `${text.slice(0, 37)}…` : text;
 }
@@ -44,7 +45,7 @@ export function checkNumber(
   if (integer && !Number.isInteger(value))
     throw new Error(t("error.notInteger", { field, value: show(value) }));
   if (value < min || value > max)
-    throw new Error(t("error.range", { field, min, max, value: show(value) }));
+    throw new Error(t("error.range", { field, ...shownNumbers({ min, max }), value: show(value) }));
 }
 
 /** Throws unless `state[field]` is a boolean. */

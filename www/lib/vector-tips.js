@@ -19,7 +19,13 @@
  */
 import { HIT_RADIUS_MOUSE, HIT_RADIUS_TOUCH } from "./handles.js";
 import { el, setText } from "./controls.js";
-import { parseNumberInput, shortNumber, splitNumberList, subscript } from "./format.js";
+import {
+  inputListSeparator,
+  parseNumberInput,
+  shortNumber,
+  splitNumberList,
+  subscript,
+} from "./format.js";
 import { t } from "./strings.js";
 
 export function vectorTips(ui, { count, tip, drag }) {
@@ -102,7 +108,7 @@ export function selectedVectorBox(field, { label, error }) {
           const i = index();
           setText(name, t(label, { i: subscript(i) }));
           const [x, y] = state[field][i];
-          const text = `${shortNumber(x)} ${shortNumber(y)}`;
+          const text = `${shortNumber(x)}${inputListSeparator()}${shortNumber(y)}`;
           if (input.value !== text && !focused()) input.value = text;
         },
       };

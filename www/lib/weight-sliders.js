@@ -9,12 +9,16 @@
  * number of weights changes (a point added or removed).
  */
 import { slider, el } from "./controls.js";
-import { subscript } from "./format.js";
+import { localeDecimal, subscript, texDecimal } from "./format.js";
 import { t } from "./strings.js";
 
-/** A weight as the panels show it: up to `digits` significant digits, no trailing zeros. */
-export function weightText(w, digits = 3) {
-  return String(Number(w.toPrecision(digits)));
+/**
+ * A weight as the panels show it: up to `digits` significant digits, no trailing zeros, the
+ * language's decimal separator ("0.707", "0,707"); TeX with `tex` ("0{,}707").
+ */
+export function weightText(w, digits = 3, tex = false) {
+  const s = String(Number(w.toPrecision(digits)));
+  return tex ? texDecimal(s) : localeDecimal(s);
 }
 
 /**

@@ -56,10 +56,10 @@ export default {
     "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
   "shell.openInPlayground": "Otvori u igralištu",
   "handles.roleDescription": "interaktivna slika",
-  "handles.selected": "Odabrano: {label}, ({x}, {y})",
-  "handles.moved": "{label} premješteno u ({x}, {y})",
-  "handles.selected3d": "Odabrano: {label}, ({x}, {y}, {z})",
-  "handles.moved3d": "{label} premješteno u ({x}, {y}, {z})",
+  "handles.selected": "Odabrano: {label}, ({x}; {y})",
+  "handles.moved": "{label} premješteno u ({x}; {y})",
+  "handles.selected3d": "Odabrano: {label}, ({x}; {y}; {z})",
+  "handles.moved3d": "{label} premješteno u ({x}; {y}; {z})",
   "scene3d.legend.gaussian": "Gaussova zakrivljenost K",
   "scene3d.legend.mean": "srednja zakrivljenost H",
   "status.linkCopied": "Poveznica je kopirana u međuspremnik.",
@@ -125,7 +125,7 @@ export default {
   "deCasteljau.summary":
     "Ponovljena linearna interpolacija gradi točku P(t) Bézierove krivulje; crta se svaka razina trokuta.",
   "deCasteljau.aria":
-    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}); t = {t}; točka P(t) = ({x}, {y})",
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}); t = {t}; točka P(t) = ({x}; {y})",
   "deCasteljau.degree": "Stupanj n = {n} (kontrolne točke: {count})",
   "deCasteljau.tableCaption": "De Casteljauov trokut za t = {t}: redak r sadrži točke razine r",
   "deCasteljau.tableLevel": "r = {r}",
@@ -133,7 +133,7 @@ export default {
   "deCasteljau.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "deCasteljau.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "deCasteljau.whatYouSee":
-    "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) uz t = 1/4 daje P(t) = (29/16, 23/16).",
+    "Bézierova krivulja (plavo) i njezin kontrolni poligon (sivo, iscrtkano). Za parametar t svaka se stranica poligona dijeli u omjeru t : (1 − t); nove točke (razina 1) čine kraći poligon koji se ponovno dijeli, dok ne ostane jedna točka: točka P(t) na krivulji (crveno-narančasto). Početna slika je riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa): P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2) uz t = 1/4 daje P(t) = (29/16; 23/16).",
   "deCasteljau.try1":
     "Pritisnite Pokreni i gledajte kako konstrukcija klizi duž poligona dok P(t) iscrtava krivulju.",
   "deCasteljau.try2":
@@ -144,8 +144,8 @@ export default {
   "bernstein.summary":
     "Težine iza Bézierove krivulje: svaki Bᵢⁿ(t) nacrtan ispod krivulje, zbroj im je 1, a svaki je najveći za t = i/n.",
   "bernstein.aria":
-    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) i ispod nje njezine Bernsteinove bazne funkcije stupnja {n} (njih {count}); t = {t}; težine {values} (zbroj {sum}); točka P(t) = ({x}, {y})",
-  "bernstein.ariaPeak": "; istaknuta {b}: najveća za t = {t}, gdje je krivulja u ({x}, {y})",
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) i ispod nje njezine Bernsteinove bazne funkcije stupnja {n} (njih {count}); t = {t}; težine {values} (zbroj {sum}); točka P(t) = ({x}; {y})",
+  "bernstein.ariaPeak": "; istaknuta {b}: najveća za t = {t}, gdje je krivulja u ({x}; {y})",
   "bernstein.degree": "Stupanj n = {n} (kontrolne točke: {count}, bazne funkcije: {count})",
   "bernstein.pointLabel": "P(t)",
   "bernstein.peakPointLabel": "P({t})",
@@ -166,7 +166,7 @@ export default {
   "bernstein.sumRow": "Zbroj",
   "bernstein.sumNote": "Zbroj težina (njih {count}) za t = {t}: {sum}",
   "bernstein.peakNote":
-    "{b}, težina točke {p}, najveća je za t = {t}: pomicanje točke {p} najviše mijenja krivulju oko P({t}) = ({x}, {y}).",
+    "{b}, težina točke {p}, najveća je za t = {t}: pomicanje točke {p} najviše mijenja krivulju oko P({t}) = ({x}; {y}).",
   "bernstein.peakHint":
     "Postavite pokazivač na baznu funkciju na grafu ili na redak tablice, ili odaberite kontrolnu točku (Tab), da vidite gdje najviše djeluje.",
   "bernstein.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
@@ -183,7 +183,7 @@ export default {
   "subdivision.summary":
     "Podijelite Bézierovu krivulju u t₀ na dvije Bézierove krivulje: njihovi su kontrolni poligoni bridovi de Casteljauova trokuta; ponovljeno raspolavljanje konvergira prema krivulji.",
   "subdivision.aria":
-    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) podijeljena u t₀ = {t} na lijevi poligon L₀…L{n} i desni poligon R₀…R{n}; točka podjele ({x}, {y})",
+    "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) podijeljena u t₀ = {t} na lijevi poligon L₀…L{n} i desni poligon R₀…R{n}; točka podjele ({x}; {y})",
   "subdivision.ariaLevels":
     "; ponovljena podjela u 1/2, razina {k}: {polygons} poligona, ukupno kontrolnih točaka: {total}",
   "subdivision.control.t": "Podjela u t₀",
@@ -216,9 +216,9 @@ export default {
   "subdivision.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "subdivision.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "subdivision.whatYouSee":
-    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16, 23/16).",
+    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16; 23/16).",
   "subdivision.try1":
-    "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) i desne točke (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
+    "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0; 0), (1/2; 1/2), (9/8; 1), (29/16; 23/16) i desne točke (29/16; 23/16), (31/8; 11/4), (13/2; 7/2), (8; 2).",
   "subdivision.try2":
     "Povećajte broj razina na 3: osam poligona, već blizu krivulje; uz 5 ili 6 teško ih je razlikovati od nje.",
   "subdivision.try3":
@@ -265,7 +265,7 @@ export default {
   "lineIntersection.handleA": "A",
   "lineIntersection.handleB": "B",
   "lineIntersection.sameLinePoints":
-    "polje „line”: dvije točke moraju biti različite, dvaput dobiveno ({x}, {y})",
+    "polje „line”: dvije točke moraju biti različite, dvaput dobiveno ({x}; {y})",
   "lineIntersection.failed":
     "presjeci se nisu mogli izračunati ({message}); prikazuju se posljednji",
   "lineIntersection.depth": "Prikazana dubina rekurzije",
@@ -425,7 +425,7 @@ export default {
   "bezierProperties.aria.variation":
     "{kind} Bézierova krivulja i pravac: pravac siječe kontrolni poligon {k} puta, a krivulju {j} puta",
   "bezierProperties.whatYouSee":
-    "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Jedna Bézierova krivulja (plavo) i, jedno po jedno, svojstva navedena u poglavlju 2 nastavnog programa (iz grčkih bilježaka): ostaje unutar konveksne ljuske svojih kontrolnih točaka; afino preslikavanje kontrolnih točaka preslikava cijelu krivulju; točke u obrnutom poretku daju istu krivulju prijeđenu unatrag; povećanje stupnja dodaje kontrolnu točku bez promjene krivulje; a pravac ne siječe krivulju češće nego kontrolni poligon. Početak je riješeni primjer P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "bezierProperties.try1":
     "Odaberite „Afino preslikavanje” i pomičite klizač smicanja: crvene točkice (preslikane točke krivulje) ostaju na zelenoj krivulji (izgrađenoj od preslikanih kontrolnih točaka).",
   "bezierProperties.try2":
@@ -436,7 +436,7 @@ export default {
   "derivatives.summary":
     "Brzina P′(t), normala, oskulacijska kružnica i predznačena zakrivljenost Bézierove krivulje, uz njezin hodograf.",
   "derivatives.aria":
-    "{kind} Bézierova krivulja; t = {t}; P(t) = ({x}, {y}); brzina P′(t) = ({dx}, {dy}); zakrivljenost κ = {kappa}; hodograf je nacrtan desno",
+    "{kind} Bézierova krivulja; t = {t}; P(t) = ({x}; {y}); brzina P′(t) = ({dx}; {dy}); zakrivljenost κ = {kappa}; hodograf je nacrtan desno",
   "derivatives.originLabel": "ishodište O",
   "derivatives.pointLabel": "P(t)",
   "derivatives.velocityLabel": "P′(t)",
@@ -467,9 +467,9 @@ export default {
   "derivatives.row.length": "duljina luka",
   "derivatives.row.hodograph": "H{i} = {label}",
   "derivatives.whatYouSee":
-    "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Bézierova krivulja (plavo) s točkom P(t), njezinom brzinom P′(t) (crveno-narančasta strelica), jediničnom normalom N i oskulacijskom kružnicom (narančasto), kružnicom koja prianja uz krivulju u P(t), polumjera 1/|κ|. Desno je hodograf (zeleno, poglavlje 2 nastavnog programa, iz grčkih bilježaka): krivulja koju opisuje brzina, Bézierova krivulja za jedan stupanj niža čije su kontrolne točke n(P₁ − P₀), n(P₂ − P₁), …; strelica iz njezina ishodišta O isti je vektor P′(t). Početak je riješeni primjer P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "derivatives.try1":
-    "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6, 6) na početku i 3(P₃ − P₂) = (6, −6) na kraju — prva i zadnja stranica poligona hodografa.",
+    "Postavite t na 0, a zatim na 1: brzina je 3(P₁ − P₀) = (6; 6) na početku i 3(P₃ − P₂) = (6; −6) na kraju — prva i zadnja stranica poligona hodografa.",
   "derivatives.try2":
     "Povucite P₂ ispod pravca P₀P₃: krivulja skreće na drugu stranu, κ mijenja predznak, a kružnica skače na drugu stranu.",
   "derivatives.try3":
@@ -478,14 +478,14 @@ export default {
   "knotRuler.moved": "uzao {label} pomaknut u {u}",
   "knotRuler.valueMultiple": "{u} (×{r})",
   "knotRuler.break": "prekid",
-  "knotRuler.domain": "domena [u{p}, u{n1}] = [{a}, {b}]",
+  "knotRuler.domain": "domena [u{p}, u{n1}] = [{a}; {b}]",
   "bsplineBasis.title": "Bazne funkcije B-krivulje",
   "bsplineBasis.summary":
     "Svaka Nᵢ,ₚ iz Cox–de Boorove rekurzije, nacrtana ispod krivulje iznad ravnala uzlova koje možete povlačiti: lokalni nosač, zbroj 1 i trokut vrijednosti u u.",
   "bsplineBasis.aria":
-    "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; za u = {u} (interval [{a}, {b})) bazne funkcije različite od nule su {values}, zbroj {sum}; točka C(u) = ({x}, {y}); sve bazne funkcije nacrtane su ispod krivulje, iznad ravnala uzlova",
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}) i uzlovima [{knots}]; za u = {u} (interval [{a}; {b})) bazne funkcije različite od nule su {values}, zbroj {sum}; točka C(u) = ({x}; {y}); sve bazne funkcije nacrtane su ispod krivulje, iznad ravnala uzlova",
   "bsplineBasis.ariaContinuity": "; kontinuitet u unutarnjim uzlovima: {list}",
-  "bsplineBasis.ariaSupport": "; istaknuta {name}: nosač [{a}, {b})",
+  "bsplineBasis.ariaSupport": "; istaknuta {name}: nosač [{a}; {b})",
   "bsplineBasis.degreeLegend": "Stupanj p",
   "bsplineBasis.degreeOption": "{p}",
   "bsplineBasis.control.u": "Parametar u",
@@ -503,7 +503,7 @@ export default {
   "bsplineBasis.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "bsplineBasis.fewPoints":
     "polje „points”: B-krivulja stupnja {p} treba najmanje ovoliko kontrolnih točaka: {need}, dobiveno {count}",
-  "bsplineBasis.uRange": "polje „u” mora ležati u domeni [{a}, {b}], dobiveno {u}",
+  "bsplineBasis.uRange": "polje „u” mora ležati u domeni [{a}; {b}], dobiveno {u}",
   "bsplineBasis.multiplicity.max": "u{i} već ima najveću višestrukost, p + 1 = {max}",
   "bsplineBasis.multiplicity.ends": "nije preostao nijedan unutarnji uzao koji bi se stopio s u{i}",
   "bsplineBasis.multiplicity.single": "u{i} je jednostruki uzao: nema se što razdvojiti",
@@ -519,10 +519,10 @@ export default {
   "bsplineBasis.colSupport": "Nosač [uᵢ, uᵢ₊ₚ₊₁)",
   "bsplineBasis.colValue": "Nᵢ,ₚ(u)",
   "bsplineBasis.rowName": "{name}, težina točke {point}",
-  "bsplineBasis.supportCell": "[u{i}, u{j}) = [{a}, {b})",
+  "bsplineBasis.supportCell": "[u{i}, u{j}) = [{a}; {b})",
   "bsplineBasis.sumRow": "Zbroj",
   "bsplineBasis.triangleCaption":
-    "Cox–de Boorov trokut za u = {u}: interval k = {k}, [u{kSub}, u{k1Sub}) = [{a}, {b}); redak r sadrži vrijednosti stupnja r za i = k − r … k, svaku izračunatu iz dviju iznad nje",
+    "Cox–de Boorov trokut za u = {u}: interval k = {k}, [u{kSub}, u{k1Sub}) = [{a}; {b}); redak r sadrži vrijednosti stupnja r za i = k − r … k, svaku izračunatu iz dviju iznad nje",
   "bsplineBasis.triangleCorner": "stupanj r",
   "bsplineBasis.triangleRow": "r = {r}",
   "bsplineBasis.whatYouSee":
@@ -537,12 +537,12 @@ export default {
   "deBoor.summary":
     "Ponovljena interpolacija p + 1 aktivnih kontrolnih točaka gradi točku C(u) B-krivulje; uzlovi određuju svaki omjer α.",
   "deBoor.aria":
-    "{kind} B-krivulja s kontrolnim točkama (broj: {count}), uzlovi {knots}; u = {u} u intervalu k = {k}, [{uk}, {uk1}); točka C(u) = ({x}, {y})",
+    "{kind} B-krivulja s kontrolnim točkama (broj: {count}), uzlovi {knots}; u = {u} u intervalu k = {k}, [{uk}; {uk1}); točka C(u) = ({x}; {y})",
   "deBoor.degree": "Stupanj p = {p}, kontrolne točke: {count}, {segments}",
   "deBoor.spans.few": "{count} neprazna intervala",
   "deBoor.spans.one": "{count} neprazan interval",
   "deBoor.spans.other": "{count} nepraznih intervala",
-  "deBoor.span": "k = {k}: u ∈ [u{ks}, u{ks1}) = [{uk}, {uk1})",
+  "deBoor.span": "k = {k}: u ∈ [u{ks}, u{ks1}) = [{uk}; {uk1})",
   "deBoor.spanCaption": "interval [u{k}, u{k1})",
   "deBoor.uCaption": "u = {u}",
   "deBoor.multiplicity": "×{r}",
@@ -578,13 +578,13 @@ export default {
     "polje „knots” ne smije padati: element {index} je {value} nakon {previous}",
   "deBoor.error.multiplicity":
     "polje „knots”: uzao {value} pojavljuje se više od p + 1 = {max} puta",
-  "deBoor.error.domain": "polje „knots”: domena [u{p}, u{n1}] = [{a}, {b}] je prazna",
+  "deBoor.error.domain": "polje „knots”: domena [u{p}, u{n1}] = [{a}; {b}] je prazna",
   "deBoor.whatYouSee":
     "Iscrtkani sivi poligon sadrži sve kontrolne točke; sudjeluje samo p + 1 aktivnih točaka intervala koji sadrži u (puna siva linija). Svaka obojena razina interpolira prethodnu vlastitim omjerom α, očitanim iz vektora uzlova, dok ne ostane jedna točka C(u) — de Boorov algoritam iz poglavlja 3 nastavnog programa (konvencija hrvatskih i talijanskih bilježaka). Uz uzlove 0 0 0 0 1 1 1 1 svaki je α jednak u i to je de Casteljauova konstrukcija.",
   "deBoor.try1":
     "Pritisnite Pokreni i gledajte kako aktivne točke skaču kad u prijeđe uzao na traci ispod slike.",
   "deBoor.try2":
-    "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) završava u (29/16, 23/16)).",
+    "Uklanjajte točke dok ne ostanu četiri, zatim upišite uzlove 0 0 0 0 1 1 1 1 i u = 1/4: svaki je α jednak 1/4, a trokut je de Casteljauov (za P₀ … P₃ = (0; 0), (2; 2), (6; 4), (8; 2) završava u (29/16; 23/16)).",
   "deBoor.try3":
     "Upišite ponovljeni unutarnji uzao, npr. 0 0 0 0 1 2 2 4 4 4 4: neki α postaju 0 ili 1, a krivulja prolazi bliže kontrolnoj točki.",
   "knotVectors.title": "Vrste vektora uzlova",
@@ -666,9 +666,9 @@ export default {
   "localControl.readout.hull.other":
     "Samo ovih p + 1 točaka ovdje ima Nᵢ,ₚ(u) ≠ 0; njihova ljuska (osjenčana, {count} vrhova) sadrži cijeli ovaj dio krivulje.",
   "localControl.readout.support":
-    "Pomicanje točke {name} mijenja C(u) samo za u ∈ [{lo}, {hi}; ostatak krivulje ostaje na mjestu.",
+    "Pomicanje točke {name} mijenja C(u) samo za u ∈ [{lo}; {hi}; ostatak krivulje ostaje na mjestu.",
   "localControl.aria":
-    "stegnuta {kind} B-krivulja s kontrolnim točkama (broj: {count}); {name} pomiče samo dio za u ∈ [{lo}, {hi}; u = {u} leži u intervalu {k}, aktivne točke {names}, ljuska s {hull}; točka C(u) = ({x}, {y})",
+    "stegnuta {kind} B-krivulja s kontrolnim točkama (broj: {count}); {name} pomiče samo dio za u ∈ [{lo}; {hi}; u = {u} leži u intervalu {k}, aktivne točke {names}, ljuska s {hull}; točka C(u) = ({x}; {y})",
   "localControl.vertices.few": "{count} vrha",
   "localControl.vertices.one": "{count} vrhom",
   "localControl.vertices.other": "{count} vrhova",
@@ -704,8 +704,8 @@ export default {
   "knotInsertion.error.knotOrder":
     "polje „knots” ne smije padati (uzao {i} manji je od prethodnog)",
   "knotInsertion.error.emptyDomain": "polje „knots”: domena [u_p, u_n+1] je prazna",
-  "knotInsertion.error.insertedRange": "polje „inserted”: {value} je izvan domene [{a}, {b}]",
-  "knotInsertion.outside": "u = {value} je izvan domene [{a}, {b}]",
+  "knotInsertion.error.insertedRange": "polje „inserted”: {value} je izvan domene [{a}; {b}]",
+  "knotInsertion.outside": "u = {value} je izvan domene [{a}; {b}]",
   "knotInsertion.refused": "taj se uzao ne može umetnuti: {message}",
   "knotInsertion.maxInserted":
     "ova demonstracija umeće najviše {max} uzlova; pritisnite „Natrag na izvornu” za novi početak",
@@ -737,13 +737,13 @@ export default {
   "knotInsertion.ariaSegments.one": "; prikazan {count} Bézierov segment",
   "knotInsertion.ariaSegments.other": "; prikazano {count} Bézierovih segmenata",
   "knotInsertion.whatYouSee":
-    "Kvadratna B-krivulja iz primjera hrvatskih bilježaka (p = 2, uzlovi 0 0 0 1 2 3 4 4 4; poglavlje 3 nastavnog programa), nakon umetanja uzla 1.5. Umetanje uzla s Boehmovim pravilom zadržava prve točke, zamjenjuje njih p točkama Qᵢ na stranicama starog poligona (u omjeru αᵢ), a ostale pomiče: krivulja (plavo) uopće se ne mijenja, ali novi poligon (tamno, nove točke crveno-narančasto) ima točku više i leži bliže njoj; stari poligon ostaje blijed. Umetanje svakog unutarnjeg uzla dok ne dobije višestrukost p daje Bézierove segmente krivulje, po jedan za svaki neprazan interval.",
+    "Kvadratna B-krivulja iz primjera hrvatskih bilježaka (p = 2, uzlovi 0 0 0 1 2 3 4 4 4; poglavlje 3 nastavnog programa), nakon umetanja uzla 1,5. Umetanje uzla s Boehmovim pravilom zadržava prve točke, zamjenjuje njih p točkama Qᵢ na stranicama starog poligona (u omjeru αᵢ), a ostale pomiče: krivulja (plavo) uopće se ne mijenja, ali novi poligon (tamno, nove točke crveno-narančasto) ima točku više i leži bliže njoj; stari poligon ostaje blijed. Umetanje svakog unutarnjeg uzla dok ne dobije višestrukost p daje Bézierove segmente krivulje, po jedan za svaki neprazan interval.",
   "knotInsertion.try1":
-    "Slika se otvara nakon umetanja u = 1.5: uzlovi su postali 0, 0, 0, 1, 1.5, 2, 3, 4, 4, 4, a α₂ = 3/4, α₃ = 1/4 sijeku stranice P₁P₂ i P₂P₃. Pritisnite „Natrag na izvornu”, zatim Umetni uz u = 1.5 da vidite kako se to događa.",
+    "Slika se otvara nakon umetanja u = 1,5: uzlovi su postali 0; 0; 0; 1; 1,5; 2; 3; 4; 4; 4, a α₂ = 3/4, α₃ = 1/4 sijeku stranice P₁P₂ i P₂P₃. Pritisnite „Natrag na izvornu”, zatim Umetni uz u = 1,5 da vidite kako se to događa.",
   "knotInsertion.try2":
     "Kliknite krivulju na nekoliko mjesta ili triput pritisnite „Raspolovi intervale”: poligon se primiče krivulji.",
   "knotInsertion.try3":
-    "Označite „Izdvoji Bézierove segmente”: 5 segmenata, po jedan za svaki neprazan interval ([0,1], [1,1.5], [1.5,2], [2,3], [3,4]); ponovno umetnite 1.5 i ništa se ne dodaje jer taj interval već postoji.",
+    "Označite „Izdvoji Bézierove segmente”: 5 segmenata, po jedan za svaki neprazan interval ([0; 1], [1; 1,5], [1,5; 2], [2; 3], [3; 4]); ponovno umetnite 1,5 i ništa se ne dodaje jer taj interval već postoji.",
   "multiplicity.title": "Višestrukost i kontinuitet",
   "multiplicity.summary":
     "Stapajte uzlove kubne B-krivulje i gledajte kako kontinuitet pada C², C¹, C⁰ (kut u kontrolnoj točki), a zatim prekid; ponovite kontrolnu točku i krivulja se privlači u nju.",
@@ -811,7 +811,7 @@ export default {
   "matrixForm.summary":
     "Svaki segment uniformne B-krivulje je [tᵖ … t 1] · M · (njegovih p + 1 točaka), s istom matricom M za svaki unutarnji segment.",
   "matrixForm.aria":
-    "{kind} B-krivulja, {knots}, kontrolne točke: {count}; segment {i} za t = {t}: točka ({x}, {y}); {periodic}",
+    "{kind} B-krivulja, {knots}, kontrolne točke: {count}; segment {i} za t = {t}: točka ({x}; {y}); {periodic}",
   "matrixForm.aria.periodic": "njegova je matrica periodička",
   "matrixForm.aria.notPeriodic": "njegova se matrica razlikuje od periodičke",
   "matrixForm.degree.2": "kvadratna (p = 2)",
@@ -892,7 +892,7 @@ export default {
   "weights.axisW": "w",
   "weights.origin": "O",
   "weights.plane": "w = 1",
-  "weights.readout": "P({t}) = ({x}, {y}); najveća udaljenost od polinomne krivulje: {gap}",
+  "weights.readout": "P({t}) = ({x}; {y}); najveća udaljenost od polinomne krivulje: {gap}",
   "weights.tableCaption":
     "Kontrolne točke, težine, homogene točke (wᵢxᵢ, wᵢyᵢ, wᵢ), udio Bᵢ(t)wᵢ / Σ Bⱼ(t)wⱼ svake točke za t = {t} i udaljenost |P(t) − Pᵢ|",
   "weights.column.point": "Pᵢ",
@@ -903,14 +903,14 @@ export default {
   "weights.tex.ratios": "važni su samo omjeri: ",
   "weights.tex.same": " daje istu krivulju",
   "weights.aria":
-    "Racionalna {kind} Bézierova krivulja s težinama ({weights}) i, točkasto, polinomna krivulja sa svim težinama 1; za t = {t} točka P(t) = ({x}, {y}) (sve težine 1: ({gx}, {gy})), {distance} od najteže točke {heaviest}; umetak: homogene kontrolne točke, njihova polinomna krivulja u (wx, wy, w) i zrake iz ishodišta koje je projiciraju na ravninu w = 1",
+    "Racionalna {kind} Bézierova krivulja s težinama ({weights}) i, točkasto, polinomna krivulja sa svim težinama 1; za t = {t} točka P(t) = ({x}; {y}) (sve težine 1: ({gx}; {gy})), {distance} od najteže točke {heaviest}; umetak: homogene kontrolne točke, njihova polinomna krivulja u (wx, wy, w) i zrake iz ishodišta koje je projiciraju na ravninu w = 1",
   "conics.title": "Konike",
   "conics.summary":
     "Racionalna kvadratna Bézierova krivulja je konika: luk elipse za w₁ < 1, parabola za w₁ = 1, hiperbola iznad; uz jednakokračni trokut i w₁ = sin θ, kružni luk.",
   "conics.whatYouSee":
     "Racionalna kvadratna Bézierova krivulja (plavo) s težinama 1, w₁, 1 i, točkasto, parabola koja je za w₁ = 1. Jezgra imenuje koniku prema faktoru oblika k = w₁²/(w₀w₂): ispod 1 luk elipse, jednako 1 parabola, iznad 1 hiperbola; točka ramena P(1/2) klizi duž pravca od polovišta tetive M do P₁. Kad je trokut jednakokračan i w₁ = sin θ, gdje je θ pola kuta u P₁, luk je točno kružni: pojavljuje se cijela kružnica, iscrtkano, sa središtem. Ovo je dio o konikama iz grčkih bilježaka (poglavlje 4 nastavnog programa).",
   "conics.try1":
-    "Upišite 0.5, 1 i 2 u polje w₁: naziv se mijenja iz elipse u parabolu pa u hiperbolu, a redak tablice slijedi.",
+    "Upišite 0,5; 1 i 2 u polje w₁: naziv se mijenja iz elipse u parabolu pa u hiperbolu, a redak tablice slijedi.",
   "conics.try2":
     "Pritisnite „Napravi kružni luk”: w₁ postaje sin θ i pojavljuje se iscrtkana kružnica; zatim povucite P₂ i gledajte kako „kružnica!” nestaje.",
   "conics.try3":
@@ -960,8 +960,8 @@ export default {
   "conics.circleNeedsIsosceles":
     "Nije kružni: kružni luk treba |P₀P₁| = |P₁P₂| (pritisnite „Napravi kružni luk”).",
   "conics.aria":
-    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: luk {kind} (faktor oblika {k}){circle}; točka ramena P(1/2) = ({sx}, {sy}); točkasto: parabola uz w₁ = 1",
-  "conics.ariaCircle": ", kružni luk polumjera {r} oko ({x}, {y})",
+    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1; {w}; 1: luk {kind} (faktor oblika {k}){circle}; točka ramena P(1/2) = ({sx}; {sy}); točkasto: parabola uz w₁ = 1",
+  "conics.ariaCircle": ", kružni luk polumjera {r} oko ({x}; {y})",
   "nurbsCircle.title": "NURBS kružnice i lukovi",
   "nurbsCircle.summary":
     "Točna kružnica kao NURBS stupnja 2: 9 kontrolnih točaka, težine 1 i √2/2, uzlovi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; lukovi u dijelovima od najviše 90°, elipse kao njihove afine slike.",
@@ -999,7 +999,7 @@ export default {
   "nurbsCircle.refused": "biblioteka je odbila: {message}",
   "nurbsCircle.centreLabel": "c",
   "nurbsCircle.radiusLabel": "r = {r}",
-  "nurbsCircle.axesLabel": "rx = {rx}, ry = {ry}",
+  "nurbsCircle.axesLabel": "rx = {rx}; ry = {ry}",
   "nurbsCircle.errorCircle": "pogreška polumjera {error}",
   "nurbsCircle.errorEllipse": "pogreška elipse {error}",
   "nurbsCircle.errorCircleNote":
@@ -1013,7 +1013,7 @@ export default {
   "nurbsCircle.ariaFull": "cijela krivulja",
   "nurbsCircle.ariaArc": "luk od {start}° opsega {sweep}°",
   "nurbsCircle.aria":
-    "NURBS {shape} oko ({x}, {y}), {arc}: stupanj 2, kontrolne točke ({count}) s težinama {weights}, uzlovi {knots}, dijelovi: {pieces}; izmjerena pogreška {error}",
+    "NURBS {shape} oko ({x}; {y}), {arc}: stupanj 2, kontrolne točke ({count}) s težinama {weights}, uzlovi {knots}, dijelovi: {pieces}; izmjerena pogreška {error}",
   "nurbsCircle.tableCaption": "Kontrolne točke ({count}) i njihove težine",
   "nurbsCircle.column.point": "Pᵢ",
   "nurbsCircle.column.weight": "wᵢ",
@@ -1072,7 +1072,7 @@ export default {
   "negativeWeights.whatYouSee":
     "Racionalna kvadratna Bézierova krivulja s težinama 1, w₁, 1 nad svojim kontrolnim trokutom (konveksna ljuska, osjenčano). Dok je w₁ > 0, biblioteka gradi krivulju (plavo) i ona ostaje u trokutu. Za w₁ ≤ 0 biblioteka odbija, a njezina se poruka prikazuje doslovno; iscrtkana krivulja je ono što bi dala formula: homogena krivulja (wx, wy, w) i dalje je obična polinomna krivulja, a dijeljenje s w projicira je natrag. Ispod je nazivnik w(t) = Σ Bᵢ(t)wᵢ: gdje prolazi kroz nulu, točka bježi u beskonačnost (pol), a svaka negativna težina već izbacuje krivulju iz njezine konveksne ljuske. To je upozorenje iz grčkih bilježaka (poglavlje 4 nastavnog programa): negativne težine narušavaju svojstvo konveksne ljuske i mogu stvoriti polove.",
   "negativeWeights.try1":
-    "Pritisnite „w₁ = −0.5”: biblioteka odbija, krivulja se izvrće ispod tetive P₀P₂ i napušta trokut, ali w(t) ostaje iznad 0 — još nema pola.",
+    "Pritisnite „w₁ = −0,5”: biblioteka odbija, krivulja se izvrće ispod tetive P₀P₂ i napušta trokut, ali w(t) ostaje iznad 0 — još nema pola.",
   "negativeWeights.try2":
     "Polako povucite w₁ od 0 do −3: za w₁ = −1 graf dodiruje nulu u t = 1/2, ispod toga siječe je dvaput, a krivulja se kida u dva pola.",
   "negativeWeights.try3": "Pritisnite „w₁ = 1”: poruka nestaje i vraća se obična parabola.",
@@ -1110,7 +1110,7 @@ export default {
   "negativeWeights.tex.staysInHull": " ostaje u konveksnoj ljusci; ",
   "negativeWeights.tex.breaks": " to narušava",
   "negativeWeights.aria":
-    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1, {w}, 1: {verdict}; {poles}; {hull}; ispod, graf nazivnika w(t)",
+    "Racionalna kvadratna Bézierova krivulja s P₀ = {p0}, P₁ = {p1}, P₂ = {p2} i težinama 1; {w}; 1: {verdict}; {poles}; {hull}; ispod, graf nazivnika w(t)",
   "negativeWeights.ariaRefused":
     "biblioteka je odbija ({message}), iscrtkana krivulja je projekcija homogene krivulje prema formuli",
   "negativeWeights.ariaAccepted": "biblioteka je prihvaća",
@@ -1123,8 +1123,8 @@ export default {
   "lagrange.summary":
     "Jedan polinom kroz sve točke nasuprot kubnom splajnu; Aitkenov trokut gradi P(t) i napušta konveksnu ljusku; vijuganje raste s brojem točaka.",
   "lagrange.aria":
-    "Lagrangeov polinom stupnja {n} kroz zadane točke (broj: {count}) uz {params} parametre i prirodni kubni splajn kroz iste točke; t = {t}; P(t) = ({x}, {y}); splajn za t: ({sx}, {sy})",
-  "lagrange.error.t": "polje „t”: {t} je izvan domene parametra [{a}, {b}] ovih točaka",
+    "Lagrangeov polinom stupnja {n} kroz zadane točke (broj: {count}) uz {params} parametre i prirodni kubni splajn kroz iste točke; t = {t}; P(t) = ({x}; {y}); splajn za t: ({sx}; {sy})",
+  "lagrange.error.t": "polje „t”: {t} je izvan domene parametra [{a}; {b}] ovih točaka",
   "lagrange.control.t": "Parametar t",
   "lagrange.control.t.input": "vrijednost t (decimalni broj ili razlomak poput 3/2)",
   "lagrange.control.stepBack.title": "t − 1/16 domene",
@@ -1173,7 +1173,7 @@ export default {
   "bezierPatch.summary":
     "Bikubična krpica sa svojom kontrolnom mrežom 4 × 4: generatrisa koja klizi duž četiriju direktrisa, izokrivulje, normala u ispitnoj točki, matrični oblik.",
   "bezierPatch.aria":
-    "Bikubična Bézierova krpica s kontrolnom mrežom 4 × 4; ispitna točka za u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z}); normala ({nx}, {ny}, {nz})",
+    "Bikubična Bézierova krpica s kontrolnom mrežom 4 × 4; ispitna točka za u = {u}; v = {v}; S(u, v) = ({x}; {y}; {z}); normala ({nx}; {ny}; {nz})",
   "bezierPatch.control.u": "Ispitni u",
   "bezierPatch.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 1/3)",
   "bezierPatch.control.v": "Ispitni v i generatrisa",
@@ -1210,7 +1210,7 @@ export default {
   "nurbsSurface.summary":
     "Tenzorska B-površina sa stupnjem i uzlovima za svaki smjer: umetanje uzla dodaje cijeli redak ili stupac kontrolnih točaka, težine privlače površinu, šavovi obojeni prema izmjerenom kontinuitetu.",
   "nurbsSurface.aria":
-    "B-površina s kontrolnom mrežom {rows} × {cols}, stupnjevi {p} po u i {q} po v; ispitna točka za u = {u}, v = {v}: S = ({x}, {y}, {z}); {seams}",
+    "B-površina s kontrolnom mrežom {rows} × {cols}, stupnjevi {p} po u i {q} po v; ispitna točka za u = {u}; v = {v}: S = ({x}; {y}; {z}); {seams}",
   "nurbsSurface.control.u": "Ispitni u",
   "nurbsSurface.control.u.input": "vrijednost u (decimalni broj ili razlomak poput 1/3)",
   "nurbsSurface.control.v": "Ispitni v",
@@ -1242,7 +1242,7 @@ export default {
   "nurbsSurface.shading.zebra": "Zebra-pruge",
   "nurbsSurface.shading.gaussian": "Gaussova zakrivljenost K",
   "nurbsSurface.shading.mean": "Srednja zakrivljenost H",
-  "nurbsSurface.badWeight": "težina „{value}” mora biti broj u [{min}, {max}]",
+  "nurbsSurface.badWeight": "težina „{value}” mora biti broj u [{min}; {max}]",
   "nurbsSurface.badSelected":
     "polje „selected”: točka {i} ne postoji u mreži s ukupno {count} točaka",
   "nurbsSurface.weightCount": "polje „weights”: težine {count}, kontrolne točke {points}",
@@ -1321,7 +1321,7 @@ export default {
   "surfaceRevolution.summary":
     "Površine načinjene od krivulja: točni NURBS torus, vaza tokarena iz profila koji se može uređivati, profil ekstrudiran duž vektora i pravčasta površina između kvadratne i kubne krivulje.",
   "surfaceRevolution.aria.torus":
-    "Torus (R = {R}, r = {r}) opisan rotacijom za {angle}° iz točne NURBS kružnice: racionalna bikvadratna površina s kontrolnom mrežom {rows} × {cols}",
+    "Torus (R = {R}; r = {r}) opisan rotacijom za {angle}° iz točne NURBS kružnice: racionalna bikvadratna površina s kontrolnom mrežom {rows} × {cols}",
   "surfaceRevolution.aria.vase":
     "Vaza: kubni profil B-krivulje (točke: {count}) u ravnini xz zarotiran za 360° oko osi z; kontrolna mreža {rows} × {cols}",
   "surfaceRevolution.aria.extrude":
@@ -1393,7 +1393,7 @@ export default {
   "patchDeCasteljau.summary":
     "Točka S(u, v) Bézierove krpice izgrađena samo krivuljama: de Casteljau na svakom retku po v, zatim još jednom po u na rezultatima. Redoslijed „najprije stupci” daje istu točku.",
   "patchDeCasteljau.aria":
-    "De Casteljauova konstrukcija na Bézierovoj krpici stupnja {degree} × {degree}, {order}, korak {step} od {of}; u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z})",
+    "De Casteljauova konstrukcija na Bézierovoj krpici stupnja {degree} × {degree}, {order}, korak {step} od {of}; u = {u}; v = {v}; S(u, v) = ({x}; {y}; {z})",
   "patchDeCasteljau.ariaRows": "najprije retci",
   "patchDeCasteljau.ariaColumns": "najprije stupci",
   "patchDeCasteljau.control.u": "u (trokut stupca)",
@@ -1444,7 +1444,7 @@ export default {
   "patchDeCasteljau.texRow":
     "\\text{zatim za } v = {v}\\text{:}\\ \\ R_{j}^{r} = (1-v)\\,R_{j}^{r-1} + v\\,R_{j+1}^{r-1},\\quad S(u, v) = R_0^{{n}}",
   "patchDeCasteljau.texBoth":
-    "S({u}, {v}) = \\underbrace{{rows}}_{\\text{najprije retci}} = \\underbrace{{columns}}_{\\text{najprije stupci}},\\quad \\lvert\\Delta\\rvert = {gap}",
+    "S({u}; {v}) = \\underbrace{{rows}}_{\\text{najprije retci}} = \\underbrace{{columns}}_{\\text{najprije stupci}},\\quad \\lvert\\Delta\\rvert = {gap}",
   "patchDeCasteljau.whatYouSee":
     "Grčke bilješke računaju točku Bézierove površine samo krivuljama. De Casteljauov algoritam izvodi se na svakom retku kontrolne mreže s obzirom na v (boje razina kao u demonstraciji za krivulje); daje m + 1 točaka Q₀ … Qₘ (crveno-narančasto), kontrolne točke izoparametarske krivulje koja pripada v (crveno-narančasta krivulja na krpici). Još jedan de Casteljau na tim točkama, s obzirom na u, završava u točki S(u, v). Redoslijed „najprije stupci” (svaki stupac po u, zatim redak rezultata po v) završava u istoj točki: formula prikazuje oboje.",
   "patchDeCasteljau.try1":
@@ -1461,7 +1461,7 @@ export default {
   "patchSubdivision.summary":
     "Bikubična krpica podijeljena u (u₀, v₀) na četiri krpice istog stupnja i adaptivno nacrtana: dijeli se dalje dok svaka mreža nije dovoljno ravna.",
   "patchSubdivision.ariaSplit":
-    "Bikubična Bézierova krpica podijeljena u u₀ = {u}, v₀ = {v} na četiri krpice s njihovim mrežama, koje se sastaju u S(u₀, v₀) = ({x}, {y}, {z})",
+    "Bikubična Bézierova krpica podijeljena u u₀ = {u}; v₀ = {v} na četiri krpice s njihovim mrežama, koje se sastaju u S(u₀, v₀) = ({x}; {y}; {z})",
   "patchSubdivision.ariaAdaptive":
     "Bikubična Bézierova krpica adaptivno teselirana uz toleranciju {tolerance}: {triangles} trokuta; uniformna mreža jednako fina kao najfinija ćelija ima {uniform}",
   "patchSubdivision.control.mode": "Prikaži",
@@ -1509,7 +1509,7 @@ export default {
   "hermite.summary":
     "Kubni dio između dviju zadanih točaka iz samih točaka i njihovih tangenti; dijelovi koji dijele tangente spajaju se C¹, otključana tangenta samo G¹.",
   "hermite.aria":
-    "Po dijelovima kubna Hermiteova krivulja kroz zadane točke (broj: {count}); t = {t}; P(t) = ({x}, {y}); spojevi: {joints}",
+    "Po dijelovima kubna Hermiteova krivulja kroz zadane točke (broj: {count}); t = {t}; P(t) = ({x}; {y}); spojevi: {joints}",
   "hermite.whatYouSee":
     "Plava krivulja prolazi kroz zadane točke P₀ … Pₙ za t = 0, 1, 2, …; u svakoj točki narančasta strelica pokazuje njezinu tangentu m (nacrtanu na pola duljine; povucite joj vrh). Između Pᵢ i Pᵢ₊₁ krivulja je H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, s četiri Hermiteove bazne funkcije nacrtane ispod (poglavlje 5 nastavnog programa, prema poglavlju o interpolaciji grčkih bilježaka i hrvatskim bilješkama). Dijeljenje jedne tangente po točki čini krivulju C¹; provjera kontinuiteta jezgre imenuje svaki spoj.",
   "hermite.try1":
@@ -1820,13 +1820,13 @@ export default {
   "exercise.close-the-gap.task":
     "Dvije se kubne krivulje ne spajaju. Povucite Q₀ na P₃ tako da krivulja bude neprekinuta (C⁰).",
   "exercise.close-the-gap.hint":
-    "C⁰ zahtijeva samo da posljednja točka prvog segmenta bude prva točka drugog: Q₀ = P₃ = (4, 1).",
+    "C⁰ zahtijeva samo da posljednja točka prvog segmenta bude prva točka drugog: Q₀ = P₃ = (4; 1).",
   "exercise.close-the-gap.notYet": "Još ne: Q₀ je od P₃ udaljena {detail}.",
   "exercise.make-it-c1.title": "Učinite spoj C¹",
   "exercise.make-it-c1.task":
     "Segmenti se spajaju, ali pod kutom. Pomaknite Q₁ tako da spoj bude C¹: ista derivacija s obje strane.",
   "exercise.make-it-c1.hint":
-    "Za dvije kubne krivulje C¹ znači 3(P₃ − P₂) = 3(Q₁ − Q₀), pa je Q₁ = 2P₃ − P₂ = (5, −1).",
+    "Za dvije kubne krivulje C¹ znači 3(P₃ − P₂) = 3(Q₁ − Q₀), pa je Q₁ = 2P₃ − P₂ = (5; −1).",
   "exercise.make-it-c1.notYet": "Još ne: jezgra u spoju mjeri C{detail}.",
   "exercise.bezier-pieces.title": "Razrežite krivulju na Bézierove segmente",
   "exercise.bezier-pieces.task":
@@ -1837,7 +1837,7 @@ export default {
     "Još ne: broj unutarnjih uzlova u kojima je krivulja još C¹: {detail}.",
   "exercise.quarter-circle.title": "Četvrtina kružnice",
   "exercise.quarter-circle.task":
-    "Kontrolne točke (4, 0), (4, 4), (0, 4) čine jednakokračni trokut. Odaberite težinu w₁ tako da luk bude točno četvrtina kružnice polumjera 4 sa središtem u (0, 0).",
+    "Kontrolne točke (4; 0), (4; 4), (0; 4) čine jednakokračni trokut. Odaberite težinu w₁ tako da luk bude točno četvrtina kružnice polumjera 4 sa središtem u (0; 0).",
   "exercise.quarter-circle.hint":
     "Za kružni luk w₁ je kosinus polovine središnjeg kuta luka: ovdje je taj kut 90°, pa je w₁ = cos 45° = √2/2 ≈ 0,7071.",
   "exercise.quarter-circle.notYet": "Još ne: polumjer duž luka varira za {detail} %.",

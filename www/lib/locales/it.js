@@ -56,10 +56,10 @@ export default {
     "Trascina un punto, oppure premi Tab per selezionarne uno e i tasti freccia per spostarlo (Shift: 10 px). Trascina lo spazio vuoto per spostare la vista; rotella o pizzico per lo zoom.",
   "shell.openInPlayground": "Apri nel playground",
   "handles.roleDescription": "figura interattiva",
-  "handles.selected": "{label} selezionato, ({x}, {y})",
-  "handles.moved": "{label} spostato in ({x}, {y})",
-  "handles.selected3d": "{label} selezionato, ({x}, {y}, {z})",
-  "handles.moved3d": "{label} spostato in ({x}, {y}, {z})",
+  "handles.selected": "{label} selezionato, ({x}; {y})",
+  "handles.moved": "{label} spostato in ({x}; {y})",
+  "handles.selected3d": "{label} selezionato, ({x}; {y}; {z})",
+  "handles.moved3d": "{label} spostato in ({x}; {y}; {z})",
   "scene3d.legend.gaussian": "curvatura gaussiana K",
   "scene3d.legend.mean": "curvatura media H",
   "status.linkCopied": "Link copiato negli appunti.",
@@ -126,7 +126,7 @@ export default {
   "deCasteljau.summary":
     "L'interpolazione lineare ripetuta costruisce il punto P(t) di una curva di Bézier; ogni livello del triangolo è disegnato.",
   "deCasteljau.aria":
-    "Curva di Bézier {kind} con {count} punti di controllo; t = {t}; punto P(t) = ({x}, {y})",
+    "Curva di Bézier {kind} con {count} punti di controllo; t = {t}; punto P(t) = ({x}; {y})",
   "deCasteljau.degree": "Grado n = {n} ({count} punti di controllo)",
   "deCasteljau.tableCaption":
     "Il triangolo di de Casteljau per t = {t}: la riga r contiene i punti del livello r",
@@ -135,7 +135,7 @@ export default {
   "deCasteljau.minPoints": "qui una curva di Bézier richiede almeno {min} punti di controllo",
   "deCasteljau.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "deCasteljau.whatYouSee":
-    "Una curva di Bézier (blu) e il suo poligono di controllo (grigio, tratteggiato). Per il parametro t, ogni lato del poligono è diviso nel rapporto t : (1 − t); i nuovi punti (livello 1) formano un poligono più corto che viene diviso di nuovo, finché resta un solo punto: il punto P(t) sulla curva (vermiglio). La figura iniziale è l'esempio svolto delle dispense greche (sezione 2 del programma): P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2) per t = 1/4 dà P(t) = (29/16, 23/16).",
+    "Una curva di Bézier (blu) e il suo poligono di controllo (grigio, tratteggiato). Per il parametro t, ogni lato del poligono è diviso nel rapporto t : (1 − t); i nuovi punti (livello 1) formano un poligono più corto che viene diviso di nuovo, finché resta un solo punto: il punto P(t) sulla curva (vermiglio). La figura iniziale è l'esempio svolto delle dispense greche (sezione 2 del programma): P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2) per t = 1/4 dà P(t) = (29/16; 23/16).",
   "deCasteljau.try1":
     "Premi Avvia e osserva la costruzione scorrere lungo il poligono mentre P(t) traccia la curva.",
   "deCasteljau.try2":
@@ -146,8 +146,8 @@ export default {
   "bernstein.summary":
     "I pesi dietro una curva di Bézier: ogni Bᵢⁿ(t) tracciata sotto la curva, con somma 1, ciascuna massima in t = i/n.",
   "bernstein.aria":
-    "Curva di Bézier {kind} con {count} punti di controllo, e le sue {count} funzioni di base di Bernstein di grado {n} tracciate sotto; t = {t}; pesi {values} (somma {sum}); punto P(t) = ({x}, {y})",
-  "bernstein.ariaPeak": "; {b} evidenziata: massima in t = {t}, dove la curva è in ({x}, {y})",
+    "Curva di Bézier {kind} con {count} punti di controllo, e le sue {count} funzioni di base di Bernstein di grado {n} tracciate sotto; t = {t}; pesi {values} (somma {sum}); punto P(t) = ({x}; {y})",
+  "bernstein.ariaPeak": "; {b} evidenziata: massima in t = {t}, dove la curva è in ({x}; {y})",
   "bernstein.degree": "Grado n = {n} ({count} punti di controllo, {count} funzioni di base)",
   "bernstein.pointLabel": "P(t)",
   "bernstein.peakPointLabel": "P({t})",
@@ -168,7 +168,7 @@ export default {
   "bernstein.sumRow": "Somma",
   "bernstein.sumNote": "Somma dei {count} pesi per t = {t}: {sum}",
   "bernstein.peakNote":
-    "{b}, il peso di {p}, è massima in t = {t}: spostare {p} muove la curva soprattutto intorno a P({t}) = ({x}, {y}).",
+    "{b}, il peso di {p}, è massima in t = {t}: spostare {p} muove la curva soprattutto intorno a P({t}) = ({x}; {y}).",
   "bernstein.peakHint":
     "Passa sopra una funzione di base nel grafico o una riga della tabella, oppure seleziona un punto di controllo (Tab), per vedere dove agisce di più.",
   "bernstein.minPoints": "qui una curva di Bézier richiede almeno {min} punti di controllo",
@@ -185,7 +185,7 @@ export default {
   "subdivision.summary":
     "Dividi una curva di Bézier in t₀ in due curve di Bézier: i loro poligoni di controllo sono i lati del triangolo di de Casteljau; il dimezzamento ripetuto converge alla curva.",
   "subdivision.aria":
-    "Curva di Bézier {kind} con {count} punti di controllo divisa in t₀ = {t} in un poligono sinistro L₀…L{n} e un poligono destro R₀…R{n}; punto di divisione ({x}, {y})",
+    "Curva di Bézier {kind} con {count} punti di controllo divisa in t₀ = {t} in un poligono sinistro L₀…L{n} e un poligono destro R₀…R{n}; punto di divisione ({x}; {y})",
   "subdivision.ariaLevels":
     "; suddivisione ripetuta in 1/2, livello {k}: {polygons} poligoni con {total} punti di controllo",
   "subdivision.control.t": "Dividi in t₀",
@@ -218,9 +218,9 @@ export default {
   "subdivision.minPoints": "qui una curva di Bézier richiede almeno {min} punti di controllo",
   "subdivision.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "subdivision.whatYouSee":
-    "Una curva di Bézier (blu) tagliata in t₀ (punto vermiglio) in due curve di Bézier dello stesso grado. Il pezzo sinistro ha i punti di controllo L₀ … Lₙ (verdi, linea continua), il primo punto di ogni livello del triangolo di de Casteljau (il suo lato superiore); il pezzo destro ha R₀ … Rₙ (viola, tratteggiato, quadrati), l'ultimo punto di ogni livello (l'ipotenusa); il resto del triangolo è disegnato tenue. Con livelli sopra 0, ogni pezzo è dimezzato ancora e ancora in 1/2: dopo k livelli 2ᵏ piccoli poligoni aderiscono alla curva, ed è per questo che la suddivisione ripetuta converge a essa. La figura iniziale è l'esempio svolto cubico delle dispense greche (sezione 2 del programma); per t₀ = 1/4 le metà si incontrano in (29/16, 23/16).",
+    "Una curva di Bézier (blu) tagliata in t₀ (punto vermiglio) in due curve di Bézier dello stesso grado. Il pezzo sinistro ha i punti di controllo L₀ … Lₙ (verdi, linea continua), il primo punto di ogni livello del triangolo di de Casteljau (il suo lato superiore); il pezzo destro ha R₀ … Rₙ (viola, tratteggiato, quadrati), l'ultimo punto di ogni livello (l'ipotenusa); il resto del triangolo è disegnato tenue. Con livelli sopra 0, ogni pezzo è dimezzato ancora e ancora in 1/2: dopo k livelli 2ᵏ piccoli poligoni aderiscono alla curva, ed è per questo che la suddivisione ripetuta converge a essa. La figura iniziale è l'esempio svolto cubico delle dispense greche (sezione 2 del programma); per t₀ = 1/4 le metà si incontrano in (29/16; 23/16).",
   "subdivision.try1":
-    "Digita 1/4 per t₀: la tabella mostra i punti sinistri dell'esempio svolto (0, 0), (1/2, 1/2), (9/8, 1), (29/16, 23/16) e quelli destri (29/16, 23/16), (31/8, 11/4), (13/2, 7/2), (8, 2).",
+    "Digita 1/4 per t₀: la tabella mostra i punti sinistri dell'esempio svolto (0; 0), (1/2; 1/2), (9/8; 1), (29/16; 23/16) e quelli destri (29/16; 23/16), (31/8; 11/4), (13/2; 7/2), (8; 2).",
   "subdivision.try2":
     "Porta i livelli a 3: otto poligoni, già vicini alla curva; a 5 o 6 è difficile distinguerli da essa.",
   "subdivision.try3":
@@ -266,7 +266,7 @@ export default {
   "lineIntersection.handleA": "A",
   "lineIntersection.handleB": "B",
   "lineIntersection.sameLinePoints":
-    "campo “line”: i due punti devono essere diversi, ricevuto ({x}, {y}) due volte",
+    "campo “line”: i due punti devono essere diversi, ricevuto ({x}; {y}) due volte",
   "lineIntersection.failed": "impossibile calcolare le intersezioni ({message}); mostro le ultime",
   "lineIntersection.depth": "Profondità di ricorsione mostrata",
   "lineIntersection.depth.input": "profondità, un numero intero da 0 a {max}",
@@ -426,7 +426,7 @@ export default {
   "bezierProperties.aria.variation":
     "Curva di Bézier {kind} e una retta: la retta attraversa il poligono di controllo {k} volte e la curva {j} volte",
   "bezierProperties.whatYouSee":
-    "Una curva di Bézier (blu) e, una alla volta, le proprietà elencate nella sezione 2 del programma (dalle dispense greche): resta dentro l'inviluppo convesso dei suoi punti di controllo; trasformare i punti di controllo con una trasformazione affine trasforma l'intera curva; i punti in ordine inverso danno la stessa curva percorsa all'indietro; l'elevazione del grado aggiunge un punto di controllo senza cambiare la curva; e una retta non attraversa la curva più spesso del poligono di controllo. Si parte dall'esempio svolto P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Una curva di Bézier (blu) e, una alla volta, le proprietà elencate nella sezione 2 del programma (dalle dispense greche): resta dentro l'inviluppo convesso dei suoi punti di controllo; trasformare i punti di controllo con una trasformazione affine trasforma l'intera curva; i punti in ordine inverso danno la stessa curva percorsa all'indietro; l'elevazione del grado aggiunge un punto di controllo senza cambiare la curva; e una retta non attraversa la curva più spesso del poligono di controllo. Si parte dall'esempio svolto P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "bezierProperties.try1":
     "Scegli “Trasformazione affine” e muovi il cursore del taglio: i punti rossi (punti della curva trasformati) restano sulla curva verde (costruita dai punti di controllo trasformati).",
   "bezierProperties.try2":
@@ -437,7 +437,7 @@ export default {
   "derivatives.summary":
     "La velocità P′(t), la normale, il cerchio osculatore e la curvatura con segno di una curva di Bézier, con il suo odografo accanto.",
   "derivatives.aria":
-    "Curva di Bézier {kind}; t = {t}; P(t) = ({x}, {y}); velocità P′(t) = ({dx}, {dy}); curvatura κ = {kappa}; l'odografo è disegnato a destra",
+    "Curva di Bézier {kind}; t = {t}; P(t) = ({x}; {y}); velocità P′(t) = ({dx}; {dy}); curvatura κ = {kappa}; l'odografo è disegnato a destra",
   "derivatives.originLabel": "origine O",
   "derivatives.pointLabel": "P(t)",
   "derivatives.velocityLabel": "P′(t)",
@@ -469,9 +469,9 @@ export default {
   "derivatives.row.length": "lunghezza d'arco",
   "derivatives.row.hodograph": "H{i} = {label}",
   "derivatives.whatYouSee":
-    "Una curva di Bézier (blu) con il punto P(t), la sua velocità P′(t) (freccia vermiglia), la normale unitaria N e il cerchio osculatore (arancione), il cerchio che aderisce alla curva in P(t), di raggio 1/|κ|. A destra c'è l'odografo (verde, sezione 2 del programma, dalle dispense greche): la curva tracciata dalla velocità, una curva di Bézier di un grado in meno i cui punti di controllo sono n(P₁ − P₀), n(P₂ − P₁), …; la freccia dalla sua origine O è lo stesso vettore P′(t). Si parte dall'esempio svolto P₀ = (0, 0), P₁ = (2, 2), P₂ = (6, 4), P₃ = (8, 2).",
+    "Una curva di Bézier (blu) con il punto P(t), la sua velocità P′(t) (freccia vermiglia), la normale unitaria N e il cerchio osculatore (arancione), il cerchio che aderisce alla curva in P(t), di raggio 1/|κ|. A destra c'è l'odografo (verde, sezione 2 del programma, dalle dispense greche): la curva tracciata dalla velocità, una curva di Bézier di un grado in meno i cui punti di controllo sono n(P₁ − P₀), n(P₂ − P₁), …; la freccia dalla sua origine O è lo stesso vettore P′(t). Si parte dall'esempio svolto P₀ = (0; 0), P₁ = (2; 2), P₂ = (6; 4), P₃ = (8; 2).",
   "derivatives.try1":
-    "Imposta t a 0 e poi a 1: la velocità è 3(P₁ − P₀) = (6, 6) all'inizio e 3(P₃ − P₂) = (6, −6) alla fine — il primo e l'ultimo lato del poligono dell'odografo.",
+    "Imposta t a 0 e poi a 1: la velocità è 3(P₁ − P₀) = (6; 6) all'inizio e 3(P₃ − P₂) = (6; −6) alla fine — il primo e l'ultimo lato del poligono dell'odografo.",
   "derivatives.try2":
     "Trascina P₂ sotto la retta P₀P₃: la curva gira dall'altra parte, κ cambia segno e il cerchio salta dall'altro lato.",
   "derivatives.try3":
@@ -480,14 +480,14 @@ export default {
   "knotRuler.moved": "nodo {label} spostato in {u}",
   "knotRuler.valueMultiple": "{u} (×{r})",
   "knotRuler.break": "rottura",
-  "knotRuler.domain": "dominio [u{p}, u{n1}] = [{a}, {b}]",
+  "knotRuler.domain": "dominio [u{p}, u{n1}] = [{a}; {b}]",
   "bsplineBasis.title": "Funzioni di base B-spline",
   "bsplineBasis.summary":
     "Ogni Nᵢ,ₚ dalla ricorrenza di Cox–de Boor, tracciata sotto la curva sopra un righello dei nodi trascinabile: supporto locale, somma 1, e il triangolo dei valori in u.",
   "bsplineBasis.aria":
-    "B-spline {kind} con {count} punti di controllo e nodi [{knots}]; in u = {u} (intervallo [{a}, {b})) le funzioni di base non nulle sono {values}, somma {sum}; punto C(u) = ({x}, {y}); tutte le funzioni di base sono tracciate sotto la curva, sopra il righello dei nodi",
+    "B-spline {kind} con {count} punti di controllo e nodi [{knots}]; in u = {u} (intervallo [{a}; {b})) le funzioni di base non nulle sono {values}, somma {sum}; punto C(u) = ({x}; {y}); tutte le funzioni di base sono tracciate sotto la curva, sopra il righello dei nodi",
   "bsplineBasis.ariaContinuity": "; continuità nei nodi interni: {list}",
-  "bsplineBasis.ariaSupport": "; {name} evidenziata: supporto [{a}, {b})",
+  "bsplineBasis.ariaSupport": "; {name} evidenziata: supporto [{a}; {b})",
   "bsplineBasis.degreeLegend": "Grado p",
   "bsplineBasis.degreeOption": "{p}",
   "bsplineBasis.control.u": "Parametro u",
@@ -505,7 +505,7 @@ export default {
   "bsplineBasis.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "bsplineBasis.fewPoints":
     "campo “points”: una B-spline di grado {p} richiede almeno {need} punti di controllo, ricevuti {count}",
-  "bsplineBasis.uRange": "il campo “u” deve stare nel dominio [{a}, {b}], ricevuto {u}",
+  "bsplineBasis.uRange": "il campo “u” deve stare nel dominio [{a}; {b}], ricevuto {u}",
   "bsplineBasis.multiplicity.max": "u{i} ha già la molteplicità massima, p + 1 = {max}",
   "bsplineBasis.multiplicity.ends": "non resta alcun nodo interno da fondere su u{i}",
   "bsplineBasis.multiplicity.single": "u{i} è un nodo semplice: niente da separare",
@@ -521,10 +521,10 @@ export default {
   "bsplineBasis.colSupport": "Supporto [uᵢ, uᵢ₊ₚ₊₁)",
   "bsplineBasis.colValue": "Nᵢ,ₚ(u)",
   "bsplineBasis.rowName": "{name}, peso di {point}",
-  "bsplineBasis.supportCell": "[u{i}, u{j}) = [{a}, {b})",
+  "bsplineBasis.supportCell": "[u{i}, u{j}) = [{a}; {b})",
   "bsplineBasis.sumRow": "Somma",
   "bsplineBasis.triangleCaption":
-    "Triangolo di Cox–de Boor in u = {u}: intervallo k = {k}, [u{kSub}, u{k1Sub}) = [{a}, {b}); la riga r contiene i valori di grado r per i = k − r … k, ciascuno ottenuto dai due sopra",
+    "Triangolo di Cox–de Boor in u = {u}: intervallo k = {k}, [u{kSub}, u{k1Sub}) = [{a}; {b}); la riga r contiene i valori di grado r per i = k − r … k, ciascuno ottenuto dai due sopra",
   "bsplineBasis.triangleCorner": "grado r",
   "bsplineBasis.triangleRow": "r = {r}",
   "bsplineBasis.whatYouSee":
@@ -539,12 +539,12 @@ export default {
   "deBoor.summary":
     "L'interpolazione ripetuta dei p + 1 punti di controllo attivi costruisce il punto C(u) di una B-spline; i nodi decidono ogni rapporto α.",
   "deBoor.aria":
-    "B-spline {kind} con {count} punti di controllo, nodi {knots}; u = {u} nell'intervallo k = {k}, [{uk}, {uk1}); punto C(u) = ({x}, {y})",
+    "B-spline {kind} con {count} punti di controllo, nodi {knots}; u = {u} nell'intervallo k = {k}, [{uk}; {uk1}); punto C(u) = ({x}; {y})",
   "deBoor.degree": "Grado p = {p}, {count} punti di controllo, {segments}",
   "deBoor.spans.many": "{count} di intervalli non vuoti",
   "deBoor.spans.one": "{count} intervallo non vuoto",
   "deBoor.spans.other": "{count} intervalli non vuoti",
-  "deBoor.span": "k = {k}: u ∈ [u{ks}, u{ks1}) = [{uk}, {uk1})",
+  "deBoor.span": "k = {k}: u ∈ [u{ks}, u{ks1}) = [{uk}; {uk1})",
   "deBoor.spanCaption": "intervallo [u{k}, u{k1})",
   "deBoor.uCaption": "u = {u}",
   "deBoor.multiplicity": "×{r}",
@@ -580,13 +580,13 @@ export default {
   "deBoor.error.knotOrder":
     "il campo “knots” non deve decrescere: l'elemento {index} vale {value} dopo {previous}",
   "deBoor.error.multiplicity": "campo “knots”: il nodo {value} compare più di p + 1 = {max} volte",
-  "deBoor.error.domain": "campo “knots”: il dominio [u{p}, u{n1}] = [{a}, {b}] è vuoto",
+  "deBoor.error.domain": "campo “knots”: il dominio [u{p}, u{n1}] = [{a}; {b}] è vuoto",
   "deBoor.whatYouSee":
     "Il poligono grigio tratteggiato contiene tutti i punti di controllo; solo i p + 1 attivi dell'intervallo che contiene u (grigio continuo) partecipano. Ogni livello colorato interpola il precedente con il proprio rapporto α, letto dal vettore dei nodi, finché resta un solo punto C(u) — l'algoritmo di de Boor della sezione 3 del programma (la convenzione delle dispense croate e italiane). Con i nodi 0 0 0 0 1 1 1 1 ogni α è uguale a u ed è la costruzione di de Casteljau.",
   "deBoor.try1":
     "Premi Avvia e osserva i punti attivi saltare quando u attraversa un nodo sulla striscia sotto la figura.",
   "deBoor.try2":
-    "Rimuovi punti finché ne restano quattro, poi digita i nodi 0 0 0 0 1 1 1 1 e u = 1/4: ogni α vale 1/4 e il triangolo è quello di de Casteljau (per P₀ … P₃ = (0,0), (2,2), (6,4), (8,2) termina in (29/16, 23/16)).",
+    "Rimuovi punti finché ne restano quattro, poi digita i nodi 0 0 0 0 1 1 1 1 e u = 1/4: ogni α vale 1/4 e il triangolo è quello di de Casteljau (per P₀ … P₃ = (0; 0), (2; 2), (6; 4), (8; 2) termina in (29/16; 23/16)).",
   "deBoor.try3":
     "Digita un nodo interno ripetuto, es. 0 0 0 0 1 2 2 4 4 4 4: alcuni α diventano 0 o 1 e la curva passa più vicino a un punto di controllo.",
   "knotVectors.title": "Tipi di vettore dei nodi",
@@ -669,9 +669,9 @@ export default {
   "localControl.readout.hull.other":
     "Solo questi p + 1 punti hanno qui Nᵢ,ₚ(u) ≠ 0; il loro inviluppo (ombreggiato, {count} vertici) contiene tutto questo pezzo di curva.",
   "localControl.readout.support":
-    "Spostare {name} cambia C(u) solo per u in [{lo}, {hi}; il resto della curva resta fermo.",
+    "Spostare {name} cambia C(u) solo per u in [{lo}; {hi}; il resto della curva resta fermo.",
   "localControl.aria":
-    "B-spline {kind} clamped con {count} punti di controllo; {name} muove solo la parte per u in [{lo}, {hi}; u = {u} sta nell'intervallo {k}, punti attivi {names}, inviluppo con {hull}; punto C(u) = ({x}, {y})",
+    "B-spline {kind} clamped con {count} punti di controllo; {name} muove solo la parte per u in [{lo}; {hi}; u = {u} sta nell'intervallo {k}, punti attivi {names}, inviluppo con {hull}; punto C(u) = ({x}; {y})",
   "localControl.vertices.many": "{count} di vertici",
   "localControl.vertices.one": "{count} vertice",
   "localControl.vertices.other": "{count} vertici",
@@ -706,8 +706,8 @@ export default {
   "knotInsertion.error.knotOrder":
     "il campo “knots” non deve decrescere (il nodo {i} è minore del precedente)",
   "knotInsertion.error.emptyDomain": "campo “knots”: il dominio [u_p, u_n+1] è vuoto",
-  "knotInsertion.error.insertedRange": "campo “inserted”: {value} è fuori dal dominio [{a}, {b}]",
-  "knotInsertion.outside": "u = {value} è fuori dal dominio [{a}, {b}]",
+  "knotInsertion.error.insertedRange": "campo “inserted”: {value} è fuori dal dominio [{a}; {b}]",
+  "knotInsertion.outside": "u = {value} è fuori dal dominio [{a}; {b}]",
   "knotInsertion.refused": "impossibile inserire quel nodo: {message}",
   "knotInsertion.maxInserted":
     "questa demo inserisce al massimo {max} nodi; premi “Torna all'originale” per ricominciare",
@@ -812,7 +812,7 @@ export default {
   "matrixForm.summary":
     "Ogni segmento di una B-spline uniforme è [tᵖ … t 1] · M · (i suoi p + 1 punti), con la stessa matrice M per ogni segmento interno.",
   "matrixForm.aria":
-    "B-spline {kind}, {knots}, {count} punti di controllo; segmento {i} in t = {t}: punto ({x}, {y}); {periodic}",
+    "B-spline {kind}, {knots}, {count} punti di controllo; segmento {i} in t = {t}: punto ({x}; {y}); {periodic}",
   "matrixForm.aria.periodic": "la sua matrice è quella periodica",
   "matrixForm.aria.notPeriodic": "la sua matrice differisce da quella periodica",
   "matrixForm.degree.2": "quadratica (p = 2)",
@@ -896,7 +896,7 @@ export default {
   "weights.axisW": "w",
   "weights.origin": "O",
   "weights.plane": "w = 1",
-  "weights.readout": "P({t}) = ({x}, {y}); distanza massima dalla curva polinomiale: {gap}",
+  "weights.readout": "P({t}) = ({x}; {y}); distanza massima dalla curva polinomiale: {gap}",
   "weights.tableCaption":
     "Punti di controllo, pesi, punti omogenei (wᵢxᵢ, wᵢyᵢ, wᵢ), la quota Bᵢ(t)wᵢ / Σ Bⱼ(t)wⱼ di ogni punto in t = {t}, e la distanza |P(t) − Pᵢ|",
   "weights.column.point": "Pᵢ",
@@ -907,7 +907,7 @@ export default {
   "weights.tex.ratios": "contano solo i rapporti: ",
   "weights.tex.same": " dà la stessa curva",
   "weights.aria":
-    "Curva di Bézier razionale {kind} con pesi ({weights}) e, punteggiata, la curva polinomiale con tutti i pesi 1; in t = {t} il punto P(t) = ({x}, {y}) (tutti i pesi 1: ({gx}, {gy})), a {distance} dal punto più pesante {heaviest}; riquadro: i punti di controllo omogenei, la loro curva polinomiale in (wx, wy, w) e i raggi dall'origine che la proiettano sul piano w = 1",
+    "Curva di Bézier razionale {kind} con pesi ({weights}) e, punteggiata, la curva polinomiale con tutti i pesi 1; in t = {t} il punto P(t) = ({x}; {y}) (tutti i pesi 1: ({gx}; {gy})), a {distance} dal punto più pesante {heaviest}; riquadro: i punti di controllo omogenei, la loro curva polinomiale in (wx, wy, w) e i raggi dall'origine che la proiettano sul piano w = 1",
   "conics.title": "Sezioni coniche",
   "conics.summary":
     "Una curva di Bézier razionale quadratica è una conica: un arco di ellisse per w₁ < 1, una parabola per w₁ = 1, un'iperbole sopra; con un triangolo isoscele e w₁ = sin θ, un arco di circonferenza.",
@@ -965,8 +965,8 @@ export default {
   "conics.circleNeedsIsosceles":
     "Non circolare: un arco di circonferenza richiede |P₀P₁| = |P₁P₂| (premi “Rendi circolare”).",
   "conics.aria":
-    "Curva di Bézier razionale quadratica con P₀ = {p0}, P₁ = {p1}, P₂ = {p2} e pesi 1, {w}, 1: un arco di {kind} (fattore di forma {k}){circle}; punto di spalla P(1/2) = ({sx}, {sy}); punteggiata: la parabola con w₁ = 1",
-  "conics.ariaCircle": ", un arco di circonferenza di raggio {r} attorno a ({x}, {y})",
+    "Curva di Bézier razionale quadratica con P₀ = {p0}, P₁ = {p1}, P₂ = {p2} e pesi 1; {w}; 1: un arco di {kind} (fattore di forma {k}){circle}; punto di spalla P(1/2) = ({sx}; {sy}); punteggiata: la parabola con w₁ = 1",
+  "conics.ariaCircle": ", un arco di circonferenza di raggio {r} attorno a ({x}; {y})",
   "nurbsCircle.title": "Circonferenze e archi NURBS",
   "nurbsCircle.summary":
     "Una circonferenza esatta come NURBS di grado 2: 9 punti di controllo, pesi 1 e √2/2, nodi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; archi in pezzi di al più 90°, ellissi come loro immagini affini.",
@@ -1005,7 +1005,7 @@ export default {
   "nurbsCircle.refused": "rifiutato dalla libreria: {message}",
   "nurbsCircle.centreLabel": "c",
   "nurbsCircle.radiusLabel": "r = {r}",
-  "nurbsCircle.axesLabel": "rx = {rx}, ry = {ry}",
+  "nurbsCircle.axesLabel": "rx = {rx}; ry = {ry}",
   "nurbsCircle.errorCircle": "errore sul raggio {error}",
   "nurbsCircle.errorEllipse": "errore sull'ellisse {error}",
   "nurbsCircle.errorCircleNote":
@@ -1019,7 +1019,7 @@ export default {
   "nurbsCircle.ariaFull": "la curva intera",
   "nurbsCircle.ariaArc": "un arco da {start}° di ampiezza {sweep}°",
   "nurbsCircle.aria":
-    "NURBS, {shape}, centrata in ({x}, {y}), {arc}: grado 2, {count} punti di controllo con pesi {weights}, nodi {knots}, {pieces} pezzi; errore misurato {error}",
+    "NURBS, {shape}, centrata in ({x}; {y}), {arc}: grado 2, {count} punti di controllo con pesi {weights}, nodi {knots}, {pieces} pezzi; errore misurato {error}",
   "nurbsCircle.tableCaption": "I {count} punti di controllo e i loro pesi",
   "nurbsCircle.column.point": "Pᵢ",
   "nurbsCircle.column.weight": "wᵢ",
@@ -1119,7 +1119,7 @@ export default {
   "negativeWeights.tex.staysInHull": " resta nell'inviluppo convesso; ",
   "negativeWeights.tex.breaks": " lo viola",
   "negativeWeights.aria":
-    "Curva di Bézier razionale quadratica con P₀ = {p0}, P₁ = {p1}, P₂ = {p2} e pesi 1, {w}, 1: {verdict}; {poles}; {hull}; sotto, il grafico del denominatore w(t)",
+    "Curva di Bézier razionale quadratica con P₀ = {p0}, P₁ = {p1}, P₂ = {p2} e pesi 1; {w}; 1: {verdict}; {poles}; {hull}; sotto, il grafico del denominatore w(t)",
   "negativeWeights.ariaRefused":
     "la libreria la rifiuta ({message}), la curva tratteggiata è la proiezione della curva omogenea data dalla formula",
   "negativeWeights.ariaAccepted": "la libreria la accetta",
@@ -1132,8 +1132,8 @@ export default {
   "lagrange.summary":
     "Un solo polinomio per tutti i punti a confronto con una spline cubica; il triangolo di Aitken costruisce P(t) ed esce dall'inviluppo convesso; l'oscillazione cresce con il numero di punti.",
   "lagrange.aria":
-    "Polinomio di Lagrange di grado {n} per {count} punti dati con parametri {params}, e la spline cubica naturale per gli stessi punti; t = {t}; P(t) = ({x}, {y}); la spline in t: ({sx}, {sy})",
-  "lagrange.error.t": "campo “t”: {t} è fuori dal dominio del parametro [{a}, {b}] di questi punti",
+    "Polinomio di Lagrange di grado {n} per {count} punti dati con parametri {params}, e la spline cubica naturale per gli stessi punti; t = {t}; P(t) = ({x}; {y}); la spline in t: ({sx}; {sy})",
+  "lagrange.error.t": "campo “t”: {t} è fuori dal dominio del parametro [{a}; {b}] di questi punti",
   "lagrange.control.t": "Parametro t",
   "lagrange.control.t.input": "valore di t (decimale o frazione come 3/2)",
   "lagrange.control.stepBack.title": "t − 1/16 del dominio",
@@ -1184,7 +1184,7 @@ export default {
   "bezierPatch.summary":
     "Una patch bicubica con la sua rete di controllo 4 × 4: una curva generatrice che scorre lungo quattro direttrici, curve isoparametriche, la normale in un punto sonda, la forma matriciale.",
   "bezierPatch.aria":
-    "Patch di Bézier bicubica con una rete di controllo 4 × 4; sonda in u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z}); normale ({nx}, {ny}, {nz})",
+    "Patch di Bézier bicubica con una rete di controllo 4 × 4; sonda in u = {u}; v = {v}; S(u, v) = ({x}; {y}; {z}); normale ({nx}; {ny}; {nz})",
   "bezierPatch.control.u": "Sonda u",
   "bezierPatch.control.u.input": "valore di u (decimale o frazione come 1/3)",
   "bezierPatch.control.v": "Sonda v e generatrice",
@@ -1221,7 +1221,7 @@ export default {
   "nurbsSurface.summary":
     "Una superficie B-spline a prodotto tensoriale con grado e nodi per ogni direzione: l'inserimento di nodi aggiunge un'intera riga o colonna di punti di controllo, i pesi attraggono la superficie, le cuciture colorate secondo la continuità misurata.",
   "nurbsSurface.aria":
-    "Superficie B-spline con una rete di controllo {rows} × {cols}, gradi {p} in u e {q} in v; sonda in u = {u}, v = {v}: S = ({x}, {y}, {z}); {seams}",
+    "Superficie B-spline con una rete di controllo {rows} × {cols}, gradi {p} in u e {q} in v; sonda in u = {u}; v = {v}: S = ({x}; {y}; {z}); {seams}",
   "nurbsSurface.control.u": "Sonda u",
   "nurbsSurface.control.u.input": "valore di u (decimale o frazione come 1/3)",
   "nurbsSurface.control.v": "Sonda v",
@@ -1253,7 +1253,7 @@ export default {
   "nurbsSurface.shading.zebra": "Strisce zebra",
   "nurbsSurface.shading.gaussian": "Curvatura gaussiana K",
   "nurbsSurface.shading.mean": "Curvatura media H",
-  "nurbsSurface.badWeight": "il peso “{value}” deve essere un numero in [{min}, {max}]",
+  "nurbsSurface.badWeight": "il peso “{value}” deve essere un numero in [{min}; {max}]",
   "nurbsSurface.badSelected":
     "campo “selected”: il punto {i} non esiste in una rete di {count} punti",
   "nurbsSurface.weightCount": "campo “weights”: {count} pesi per {points} punti di controllo",
@@ -1332,7 +1332,7 @@ export default {
   "surfaceRevolution.summary":
     "Superfici costruite da curve: un toro NURBS esatto, un vaso tornito da un profilo modificabile, un profilo estruso lungo un vettore, e la superficie rigata tra una quadratica e una cubica.",
   "surfaceRevolution.aria.torus":
-    "Un toro (R = {R}, r = {r}) descritto ruotando di {angle}° una circonferenza NURBS esatta: una superficie razionale biquadratica con una rete di controllo {rows} × {cols}",
+    "Un toro (R = {R}; r = {r}) descritto ruotando di {angle}° una circonferenza NURBS esatta: una superficie razionale biquadratica con una rete di controllo {rows} × {cols}",
   "surfaceRevolution.aria.vase":
     "Un vaso: un profilo B-spline cubico di {count} punti nel piano xz ruotato di 360° attorno all'asse z; rete di controllo {rows} × {cols}",
   "surfaceRevolution.aria.extrude":
@@ -1405,7 +1405,7 @@ export default {
   "patchDeCasteljau.summary":
     "Il punto S(u, v) di una patch di Bézier costruito solo con curve: de Casteljau su ogni riga in v, poi ancora una volta in u sui risultati. Partendo dalle colonne si ottiene lo stesso punto.",
   "patchDeCasteljau.aria":
-    "Costruzione di de Casteljau su una patch di Bézier di grado {degree} × {degree}, {order}, passo {step} di {of}; u = {u}, v = {v}; S(u, v) = ({x}, {y}, {z})",
+    "Costruzione di de Casteljau su una patch di Bézier di grado {degree} × {degree}, {order}, passo {step} di {of}; u = {u}; v = {v}; S(u, v) = ({x}; {y}; {z})",
   "patchDeCasteljau.ariaRows": "prima le righe",
   "patchDeCasteljau.ariaColumns": "prima le colonne",
   "patchDeCasteljau.control.u": "u (il triangolo della colonna)",
@@ -1455,7 +1455,7 @@ export default {
   "patchDeCasteljau.texRow":
     "\\text{poi in } v = {v}\\text{:}\\ \\ R_{j}^{r} = (1-v)\\,R_{j}^{r-1} + v\\,R_{j+1}^{r-1},\\quad S(u, v) = R_0^{{n}}",
   "patchDeCasteljau.texBoth":
-    "S({u}, {v}) = \\underbrace{{rows}}_{\\text{prima le righe}} = \\underbrace{{columns}}_{\\text{prima le colonne}},\\quad \\lvert\\Delta\\rvert = {gap}",
+    "S({u}; {v}) = \\underbrace{{rows}}_{\\text{prima le righe}} = \\underbrace{{columns}}_{\\text{prima le colonne}},\\quad \\lvert\\Delta\\rvert = {gap}",
   "patchDeCasteljau.whatYouSee":
     "Le dispense greche calcolano un punto di una superficie di Bézier solo con curve. L'algoritmo di de Casteljau viene eseguito su ogni riga della rete di controllo rispetto a v (i colori dei livelli della demo sulle curve); dà m + 1 punti Q₀ … Qₘ (vermigli), i punti di controllo della curva isoparametrica corrispondente a v (la curva vermiglia sulla patch). Ancora de Casteljau su questi punti, rispetto a u, termina nel punto S(u, v). Partendo dalle colonne (ogni colonna in u, poi la riga dei risultati in v) si termina nello stesso punto: la formula mostra entrambi.",
   "patchDeCasteljau.try1":
@@ -1472,7 +1472,7 @@ export default {
   "patchSubdivision.summary":
     "Una patch bicubica divisa in (u₀, v₀) in quattro patch dello stesso grado, e disegnata in modo adattivo: dividi ancora finché ogni rete è abbastanza piatta.",
   "patchSubdivision.ariaSplit":
-    "Patch di Bézier bicubica divisa in u₀ = {u}, v₀ = {v} in quattro patch con le loro reti, che si incontrano in S(u₀, v₀) = ({x}, {y}, {z})",
+    "Patch di Bézier bicubica divisa in u₀ = {u}; v₀ = {v} in quattro patch con le loro reti, che si incontrano in S(u₀, v₀) = ({x}; {y}; {z})",
   "patchSubdivision.ariaAdaptive":
     "Patch di Bézier bicubica tassellata in modo adattivo con tolleranza {tolerance}: {triangles} triangoli; una griglia uniforme fine come la cella più fine ne ha {uniform}",
   "patchSubdivision.control.mode": "Mostra",
@@ -1520,7 +1520,7 @@ export default {
   "hermite.summary":
     "Un pezzo cubico tra due punti dati ottenuto dai punti e dalle loro tangenti; i pezzi che condividono le tangenti si uniscono C¹, una tangente sbloccata solo G¹.",
   "hermite.aria":
-    "Curva di Hermite cubica a tratti per {count} punti dati; t = {t}; P(t) = ({x}, {y}); giunzioni: {joints}",
+    "Curva di Hermite cubica a tratti per {count} punti dati; t = {t}; P(t) = ({x}; {y}); giunzioni: {joints}",
   "hermite.whatYouSee":
     "La curva blu passa per i punti dati P₀ … Pₙ in t = 0, 1, 2, …; in ogni punto una freccia arancione mostra la sua tangente m (disegnata a metà della lunghezza; trascinane la punta). Tra Pᵢ e Pᵢ₊₁ la curva è H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, con le quattro funzioni di base di Hermite tracciate sotto (sezione 5 del programma, dal capitolo sull'interpolazione delle dispense greche e dalle dispense croate). Condividere una tangente per punto rende la curva C¹; la verifica di continuità del core indica il tipo di ogni giunzione.",
   "hermite.try1":
@@ -1833,13 +1833,13 @@ export default {
   "exercise.close-the-gap.task":
     "Le due cubiche non si incontrano. Trascina Q₀ su P₃ in modo che la curva sia continua (C⁰).",
   "exercise.close-the-gap.hint":
-    "C⁰ chiede solo che l'ultimo punto del primo pezzo sia il primo punto del secondo: Q₀ = P₃ = (4, 1).",
+    "C⁰ chiede solo che l'ultimo punto del primo pezzo sia il primo punto del secondo: Q₀ = P₃ = (4; 1).",
   "exercise.close-the-gap.notYet": "Non ancora: Q₀ dista {detail} da P₃.",
   "exercise.make-it-c1.title": "Rendi C¹ la giunzione",
   "exercise.make-it-c1.task":
     "I pezzi si incontrano, ma formano un angolo. Sposta Q₁ in modo che la giunzione sia C¹: la stessa derivata da entrambi i lati.",
   "exercise.make-it-c1.hint":
-    "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5, −1).",
+    "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5; −1).",
   "exercise.make-it-c1.notYet": "Non ancora: il core misura C{detail} nella giunzione.",
   "exercise.bezier-pieces.title": "Taglia la curva in segmenti di Bézier",
   "exercise.bezier-pieces.task":
@@ -1850,7 +1850,7 @@ export default {
     "Non ancora: nodi interni in cui la curva è ancora C¹: {detail}.",
   "exercise.quarter-circle.title": "Un quarto di circonferenza",
   "exercise.quarter-circle.task":
-    "I punti di controllo (4, 0), (4, 4), (0, 4) formano un triangolo isoscele. Scegli il peso w₁ in modo che l'arco sia esattamente un quarto della circonferenza di raggio 4 centrata in (0, 0).",
+    "I punti di controllo (4; 0), (4; 4), (0; 4) formano un triangolo isoscele. Scegli il peso w₁ in modo che l'arco sia esattamente un quarto della circonferenza di raggio 4 centrata in (0; 0).",
   "exercise.quarter-circle.hint":
     "Per un arco di circonferenza w₁ è il coseno di metà dell'angolo al centro: qui l'angolo è di 90°, quindi w₁ = cos 45° = √2/2 ≈ 0,7071.",
   "exercise.quarter-circle.notYet": "Non ancora: il raggio varia del {detail} % lungo l'arco.",
