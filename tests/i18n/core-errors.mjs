@@ -223,12 +223,18 @@ function problems(err) {
   const english = errorText(err);
   if (english !== err.message) found.push(`en: ${JSON.stringify(english)}`);
   const decimals = err.message.match(/\d+\.\d+/g) ?? [];
+  // A pair of numbers in brackets ("[0, 1]", "(1.5, 2)") separates them with "; " where the
+  // decimal separator is a comma.
+  const pair = /[[(]-?[\d.e+-]+, -?[\d.e+-]+[\])]/.test(err.message);
   for (const code of LANGUAGES) {
     setLocale(code);
     const text = errorText(err);
     if (text === err.message) found.push(`${code}: the English message`);
     const left = text.match(/\{\w+\}/);
     if (left) found.push(`${code}: ${left[0]} left in ${JSON.stringify(text)}`);
+    if (pair && !/[[(][^\])]*\d; -?\d[^\])]*[\])]/.test(text)) {
+      found.push(`${code}: no "; " between the numbers of a pair in ${JSON.stringify(text)}`);
+    }
     for (const d of decimals) {
       const local = d.replace(".", ",");
       if (!text.includes(local)) found.push(`${code}: no ${local} in ${JSON.stringify(text)}`);

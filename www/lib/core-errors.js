@@ -14,7 +14,8 @@
  * - a subject (a field naming what went wrong: `what`, `expected`, `neededBy`, `reason`, the
  *   `name` of "in-argument" and "not-positive") is `coreError.subject.<value>` when there is
  *   one, else an API identifier shown as it is ("degree", "knotsU");
- * - lists are joined with ", " (result counts with " × ");
+ * - lists are joined with `listSeparator()` (", ", or "; " with a decimal comma; result counts
+ *   with " × ");
  * - the placeholders the English message computes (n = points − 1, p+1 = degree + 1, bytes,
  *   MiB, …) are derived here, listed per code in `DERIVED_PLACEHOLDERS`;
  * - "in-argument" is "{argument}: {message}", the cause (`params.source`) written the same way.
@@ -22,6 +23,7 @@
  * the UI's own errors, which are translated already, a thrown non-Error) gives `err.message`,
  * or `String(err)`. A pure function: no DOM, no state but the active language.
  */
+import { listSeparator } from "./format.js";
 import { formatNumber, has, t, tp } from "./strings.js";
 
 /** Whole numbers: every digit, no grouping (a count, an index, a byte size). */
@@ -164,7 +166,7 @@ export const DERIVED_PLACEHOLDERS = Object.freeze(
 function paramText(code, name, value, params) {
   if (typeof value === "number" || typeof value === "bigint") return exactNumber(value);
   if (Array.isArray(value)) {
-    return value.map((v) => paramText(code, name, v, params)).join(JOINED[name] ?? ", ");
+    return value.map((v) => paramText(code, name, v, params)).join(JOINED[name] ?? listSeparator());
   }
   if (SUBJECT_FIELDS[code]?.includes(name)) return subject(value);
   if (code === "coincident-points" && name === "kind") return spacing(value);

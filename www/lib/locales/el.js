@@ -1908,7 +1908,7 @@ export default {
   "coreError.non-positive-weight":
     "το βάρος {index} είναι {value}· τα βάρη πρέπει να είναι > 0 (μηδενικά ή αρνητικά βάρη μπορούν να δημιουργήσουν πόλους στην καμπύλη)",
   "coreError.parameter-out-of-range":
-    "{name} = {value} είναι εκτός του πεδίου ορισμού [{min}, {max}]",
+    "{name} = {value} είναι εκτός του πεδίου ορισμού [{min}; {max}]",
   "coreError.index-out-of-range":
     "ο δείκτης σημείου ελέγχου {index} είναι εκτός ορίων: η καμπύλη έχει {count} σημεία (0..={last})",
   "coreError.point-dimension": "ένα σημείο χρειάζεται {expected} συντεταγμένες, δόθηκαν {got}",
@@ -1918,7 +1918,7 @@ export default {
     "η ανοχή {value} δεν είναι χρησιμοποιήσιμη: είναι κάτω από {relative} × το μέγεθος της καμπύλης ({size})· θα κυριαρχούσαν τα σφάλματα στρογγυλοποίησης",
   "coreError.flattening-stalled":
     "η ανοχή {value} δεν είναι χρησιμοποιήσιμη: κανένα κομμάτι της καμπύλης δεν είναι αρκετά επίπεδο με αυτή την ακρίβεια",
-  "coreError.invalid-interval": "το διάστημα [{a}, {b}] είναι κενό· χρειάζεται a < b",
+  "coreError.invalid-interval": "το διάστημα [{a}; {b}] είναι κενό· χρειάζεται a < b",
   "coreError.unknown-option": "το {name} πρέπει να είναι ένα από τα {expected}, δόθηκε «{value}»",
   "coreError.in-argument": "{argument}: {message}",
   "coreError.knot-count":
@@ -1926,7 +1926,7 @@ export default {
   "coreError.knot-order":
     "οι κόμβοι δεν πρέπει να μειώνονται: u_{index} = {value} έρχεται μετά το u_{previousIndex} = {previous}",
   "coreError.empty-domain":
-    "το πεδίο ορισμού [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] είναι κενό· χρειάζεται u_{degree} < u_{points}",
+    "το πεδίο ορισμού [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}; {b}] είναι κενό· χρειάζεται u_{degree} < u_{points}",
   "coreError.knot-multiplicity":
     "ο κόμβος {knot} εμφανίζεται {multiplicity} φορές (u_{first}..u_{last})· μια καμπύλη βαθμού {degree} επιτρέπει το πολύ p+1 = {order}",
   "coreError.insertion-multiplicity.one":
@@ -1954,7 +1954,7 @@ export default {
   "coreError.breakpoint-count":
     "κομμάτια: {pieces}· χρειάζονται {breakpoints} σημεία αλλαγής, δόθηκαν {got}",
   "coreError.degenerate-line":
-    "η ευθεία χρειάζεται δύο διαφορετικά σημεία, δόθηκε δύο φορές το ({x}, {y})",
+    "η ευθεία χρειάζεται δύο διαφορετικά σημεία, δόθηκε δύο φορές το ({x}; {y})",
   "coreError.curve-batch-length":
     "{count} συντεταγμένες δεν χωρίζονται σε καμπύλες βαθμού {degree} ((degree + 1)·dim = {perCurve} αριθμοί η καθεμία)",
   "coreError.rational-hodograph":
@@ -1988,9 +1988,9 @@ export default {
   "coreError.patch-too-small":
     "ένα τμήμα επιφάνειας Bézier χρειάζεται τουλάχιστον 2 γραμμές και 2 στήλες (βαθμό ≥ 1 σε κάθε κατεύθυνση), δόθηκαν {rows} × {cols}",
   "coreError.net-index-out-of-range":
-    "το σημείο ελέγχου (i, j) = ({i}, {j}) είναι εκτός ορίων: το πλέγμα έχει {rows} × {cols} σημεία (i στο 0..={lastI}, j στο 0..={lastJ})",
+    "το σημείο ελέγχου (i, j) = ({i}; {j}) είναι εκτός ορίων: το πλέγμα έχει {rows} × {cols} σημεία (i στο 0..={lastI}, j στο 0..={lastJ})",
   "coreError.no-normal":
-    "η επιφάνεια δεν έχει κάθετο στο (u, v) = ({u}, {v}): ∂S/∂u × ∂S/∂v = 0 εκεί, ακόμη και στο όριο από το εσωτερικό του πεδίου ορισμού",
+    "η επιφάνεια δεν έχει κάθετο στο (u, v) = ({u}; {v}): ∂S/∂u × ∂S/∂v = 0 εκεί, ακόμη και στο όριο από το εσωτερικό του πεδίου ορισμού",
   "coreError.empty-tessellation":
     "το tessellate χρειάζεται τουλάχιστον 1 τετράπλευρο σε κάθε κατεύθυνση, δόθηκαν nu = {nu}, nv = {nv}",
   "coreError.too-large": "{what} = {value}: πολύ μεγάλο· επιτρέπεται το πολύ {max}",
@@ -2017,11 +2017,11 @@ export default {
   "coreError.not-closed":
     "η περιοδική παρεμβολή χρειάζεται το τελευταίο σημείο (σημείο {last}) ίσο με το πρώτο",
   "coreError.alpha-out-of-range":
-    "alpha = {value} είναι εκτός του [0, 1] (0 ομοιόμορφη, 0,5 κεντρομόλος, 1 μήκους χορδής)",
+    "alpha = {value} είναι εκτός του [0; 1] (0 ομοιόμορφη; 0,5 κεντρομόλος; 1 μήκους χορδής)",
   "coreError.control-count-out-of-range":
-    "count = {count} σημεία ελέγχου είναι εκτός του [βαθμός + 1, πλήθος σημείων] = [{min}, {max}]",
+    "count = {count} σημεία ελέγχου είναι εκτός του [βαθμός + 1, πλήθος σημείων] = [{min}; {max}]",
   "coreError.schoenberg-whitney":
-    "το σύστημα παρεμβολής είναι ιδιάζον: το t_{index} = {param} πρέπει να βρίσκεται μέσα στον φορέα (u_{index}, u_{hiIndex}) = ({lo}, {hi}) της N_{index},{degree} (συνθήκη Schoenberg–Whitney)",
+    "το σύστημα παρεμβολής είναι ιδιάζον: το t_{index} = {param} πρέπει να βρίσκεται μέσα στον φορέα (u_{index}, u_{hiIndex}) = ({lo}; {hi}) της N_{index},{degree} (συνθήκη Schoenberg–Whitney)",
   "coreError.too-few-data-points.one":
     "{what}: χρειάζεται τουλάχιστον {needed} σημείο δεδομένων, δόθηκαν {got}",
   "coreError.too-few-data-points.other":

@@ -1894,7 +1894,7 @@ export default {
     "težine moraju imati po jednu vrijednost za svaku kontrolnu točku ({expected}), dobiveno {got}",
   "coreError.non-positive-weight":
     "težina {index} iznosi {value}; težine moraju biti > 0 (nula ili negativne težine mogu stvoriti polove na krivulji)",
-  "coreError.parameter-out-of-range": "{name} = {value} je izvan domene [{min}, {max}]",
+  "coreError.parameter-out-of-range": "{name} = {value} je izvan domene [{min}; {max}]",
   "coreError.index-out-of-range":
     "indeks kontrolne točke {index} je izvan raspona: krivulja ima {count} točaka (0..={last})",
   "coreError.point-dimension": "točka treba {expected} koordinate, dobiveno {got}",
@@ -1904,7 +1904,7 @@ export default {
     "tolerancija {value} nije upotrebljiva: manja je od {relative} × veličina krivulje ({size}); prevladale bi pogreške zaokruživanja",
   "coreError.flattening-stalled":
     "tolerancija {value} nije upotrebljiva: nijedan dio krivulje nije dovoljno ravan uz tu preciznost",
-  "coreError.invalid-interval": "interval [{a}, {b}] je prazan; potrebno je a < b",
+  "coreError.invalid-interval": "interval [{a}; {b}] je prazan; potrebno je a < b",
   "coreError.unknown-option": "{name} mora biti jedno od {expected}, dobiveno „{value}”",
   "coreError.in-argument": "{argument}: {message}",
   "coreError.knot-count":
@@ -1912,7 +1912,7 @@ export default {
   "coreError.knot-order":
     "uzlovi ne smiju padati: u_{index} = {value} dolazi nakon u_{previousIndex} = {previous}",
   "coreError.empty-domain":
-    "domena [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] je prazna; potrebno je u_{degree} < u_{points}",
+    "domena [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}; {b}] je prazna; potrebno je u_{degree} < u_{points}",
   "coreError.knot-multiplicity":
     "uzao {knot} pojavljuje se {multiplicity} puta (u_{first}..u_{last}); krivulja stupnja {degree} dopušta najviše p+1 = {order}",
   "coreError.insertion-multiplicity.one":
@@ -1942,7 +1942,7 @@ export default {
     "G1 traži tangentu u spoju, ali se posljednje dvije točke lijevog dijela podudaraju",
   "coreError.breakpoint-count":
     "broj dijelova: {pieces}; potrebno je {breakpoints} točaka loma, dobiveno {got}",
-  "coreError.degenerate-line": "pravac treba dvije različite točke, dvaput je dobivena ({x}, {y})",
+  "coreError.degenerate-line": "pravac treba dvije različite točke, dvaput je dobivena ({x}; {y})",
   "coreError.curve-batch-length":
     "{count} koordinata ne dijeli se na krivulje stupnja {degree} ((degree + 1)·dim = {perCurve} brojeva svaka)",
   "coreError.rational-hodograph":
@@ -1973,9 +1973,9 @@ export default {
   "coreError.patch-too-small":
     "Bézierova krpica treba barem 2 retka i 2 stupca (stupanj ≥ 1 u svakom smjeru), dobiveno {rows} × {cols}",
   "coreError.net-index-out-of-range":
-    "kontrolna točka (i, j) = ({i}, {j}) je izvan raspona: mreža ima {rows} × {cols} točaka (i u 0..={lastI}, j u 0..={lastJ})",
+    "kontrolna točka (i, j) = ({i}; {j}) je izvan raspona: mreža ima {rows} × {cols} točaka (i u 0..={lastI}, j u 0..={lastJ})",
   "coreError.no-normal":
-    "površina nema normalu u (u, v) = ({u}, {v}): ondje je ∂S/∂u × ∂S/∂v = 0, čak i u limesu iz unutrašnjosti domene",
+    "površina nema normalu u (u, v) = ({u}; {v}): ondje je ∂S/∂u × ∂S/∂v = 0, čak i u limesu iz unutrašnjosti domene",
   "coreError.empty-tessellation":
     "tessellate treba barem 1 četverokut u svakom smjeru, dobiveno nu = {nu}, nv = {nv}",
   "coreError.too-large": "{what} = {value}: previše; dopušteno je najviše {max}",
@@ -2000,11 +2000,11 @@ export default {
   "coreError.not-closed":
     "periodička interpolacija traži da posljednja točka (točka {last}) bude jednaka prvoj",
   "coreError.alpha-out-of-range":
-    "alpha = {value} je izvan [0, 1] (0 uniformna, 0,5 centripetalna, 1 tetivna)",
+    "alpha = {value} je izvan [0; 1] (0 uniformna; 0,5 centripetalna; 1 tetivna)",
   "coreError.control-count-out-of-range":
-    "count = {count} kontrolnih točaka je izvan [stupanj + 1, broj točaka] = [{min}, {max}]",
+    "count = {count} kontrolnih točaka je izvan [stupanj + 1, broj točaka] = [{min}; {max}]",
   "coreError.schoenberg-whitney":
-    "interpolacijski sustav je singularan: t_{index} = {param} mora ležati unutar nosača (u_{index}, u_{hiIndex}) = ({lo}, {hi}) od N_{index},{degree} (Schoenberg–Whitneyjev uvjet)",
+    "interpolacijski sustav je singularan: t_{index} = {param} mora ležati unutar nosača (u_{index}, u_{hiIndex}) = ({lo}; {hi}) od N_{index},{degree} (Schoenberg–Whitneyjev uvjet)",
   "coreError.too-few-data-points.one":
     "{what}: potrebna je barem {needed} zadana točka, dobiveno {got}",
   "coreError.too-few-data-points.few":

@@ -1906,7 +1906,7 @@ export default {
     "i pesi devono avere un valore per punto di controllo ({expected}), ricevuti {got}",
   "coreError.non-positive-weight":
     "il peso {index} vale {value}; i pesi devono essere > 0 (pesi nulli o negativi possono creare poli sulla curva)",
-  "coreError.parameter-out-of-range": "{name} = {value} è fuori dal dominio [{min}, {max}]",
+  "coreError.parameter-out-of-range": "{name} = {value} è fuori dal dominio [{min}; {max}]",
   "coreError.index-out-of-range":
     "l'indice di punto di controllo {index} è fuori intervallo: la curva ha {count} punti (0..={last})",
   "coreError.point-dimension": "un punto richiede {expected} coordinate, ricevute {got}",
@@ -1916,7 +1916,7 @@ export default {
     "la tolleranza {value} non è utilizzabile: è sotto {relative} × la dimensione della curva ({size}); dominerebbero gli errori di arrotondamento",
   "coreError.flattening-stalled":
     "la tolleranza {value} non è utilizzabile: nessun pezzo della curva è abbastanza piatto a questa precisione",
-  "coreError.invalid-interval": "l'intervallo [{a}, {b}] è vuoto; serve a < b",
+  "coreError.invalid-interval": "l'intervallo [{a}; {b}] è vuoto; serve a < b",
   "coreError.unknown-option": "{name} deve essere uno tra {expected}, ricevuto “{value}”",
   "coreError.in-argument": "{argument}: {message}",
   "coreError.knot-count":
@@ -1924,7 +1924,7 @@ export default {
   "coreError.knot-order":
     "i nodi non devono decrescere: u_{index} = {value} viene dopo u_{previousIndex} = {previous}",
   "coreError.empty-domain":
-    "il dominio [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}, {b}] è vuoto; serve u_{degree} < u_{points}",
+    "il dominio [u_p, u_(n+1)] = [u_{degree}, u_{points}] = [{a}; {b}] è vuoto; serve u_{degree} < u_{points}",
   "coreError.knot-multiplicity":
     "il nodo {knot} compare {multiplicity} volte (u_{first}..u_{last}); una curva di grado {degree} ammette al massimo p+1 = {order}",
   "coreError.insertion-multiplicity.one":
@@ -1955,7 +1955,7 @@ export default {
     "G1 richiede una tangente nella giunzione, ma gli ultimi due punti del pezzo sinistro coincidono",
   "coreError.breakpoint-count":
     "pezzi: {pieces}; servono {breakpoints} punti di raccordo, ricevuti {got}",
-  "coreError.degenerate-line": "la retta richiede due punti diversi, ricevuto due volte ({x}, {y})",
+  "coreError.degenerate-line": "la retta richiede due punti diversi, ricevuto due volte ({x}; {y})",
   "coreError.curve-batch-length":
     "{count} coordinate non si dividono in curve di grado {degree} ((degree + 1)·dim = {perCurve} numeri ciascuna)",
   "coreError.rational-hodograph":
@@ -1988,9 +1988,9 @@ export default {
   "coreError.patch-too-small":
     "una patch di Bézier richiede almeno 2 righe e 2 colonne (grado ≥ 1 in ogni direzione), ricevuto {rows} × {cols}",
   "coreError.net-index-out-of-range":
-    "il punto di controllo (i, j) = ({i}, {j}) è fuori intervallo: la rete ha {rows} × {cols} punti (i in 0..={lastI}, j in 0..={lastJ})",
+    "il punto di controllo (i, j) = ({i}; {j}) è fuori intervallo: la rete ha {rows} × {cols} punti (i in 0..={lastI}, j in 0..={lastJ})",
   "coreError.no-normal":
-    "la superficie non ha normale in (u, v) = ({u}, {v}): lì ∂S/∂u × ∂S/∂v = 0, anche nel limite dall'interno del dominio",
+    "la superficie non ha normale in (u, v) = ({u}; {v}): lì ∂S/∂u × ∂S/∂v = 0, anche nel limite dall'interno del dominio",
   "coreError.empty-tessellation":
     "tessellate richiede almeno 1 quadrilatero in ogni direzione, ricevuti nu = {nu}, nv = {nv}",
   "coreError.too-large": "{what} = {value}: troppo; è ammesso al massimo {max}",
@@ -2015,11 +2015,11 @@ export default {
   "coreError.not-closed":
     "l'interpolazione periodica richiede che l'ultimo punto (punto {last}) sia uguale al primo",
   "coreError.alpha-out-of-range":
-    "alpha = {value} è fuori da [0, 1] (0 uniforme, 0,5 centripeta, 1 corda)",
+    "alpha = {value} è fuori da [0; 1] (0 uniforme; 0,5 centripeta; 1 corda)",
   "coreError.control-count-out-of-range":
-    "count = {count} punti di controllo è fuori da [grado + 1, numero di punti] = [{min}, {max}]",
+    "count = {count} punti di controllo è fuori da [grado + 1, numero di punti] = [{min}; {max}]",
   "coreError.schoenberg-whitney":
-    "il sistema di interpolazione è singolare: t_{index} = {param} deve stare nel supporto (u_{index}, u_{hiIndex}) = ({lo}, {hi}) di N_{index},{degree} (condizione di Schoenberg–Whitney)",
+    "il sistema di interpolazione è singolare: t_{index} = {param} deve stare nel supporto (u_{index}, u_{hiIndex}) = ({lo}; {hi}) di N_{index},{degree} (condizione di Schoenberg–Whitney)",
   "coreError.too-few-data-points.one": "{what}: serve almeno {needed} punto dato, ricevuti {got}",
   "coreError.too-few-data-points.many":
     "{what}: servono almeno {needed} punti dati, ricevuti {got}",
