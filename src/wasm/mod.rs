@@ -1,7 +1,8 @@
 //! JavaScript bindings (wasm-bindgen): the only module that knows about JS.
 //!
 //! Thin wrappers: flat `Float64Array`s in and out, camelCase names, and every [`crate::Error`]
-//! turned into a thrown JS `Error` carrying its message (via `ApiError`). No maths here.
+//! turned into a thrown JS `Error` carrying its English message, its `code` and its `params`
+//! ([`ApiError`], `error.rs`). No maths here.
 //! Nothing here may panic (a panic inside wasm kills the module for the whole page), which
 //! clippy enforces for this module tree.
 #![deny(
