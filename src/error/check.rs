@@ -15,11 +15,16 @@ pub(crate) fn check_finite(what: &'static str, index: Option<usize>, value: f64)
 /// Checks that coordinate `k` of the vector argument `name` is finite: the error is
 /// "center: coordinate 1 is NaN; …" ([`Error::InArgument`] around [`Error::NotFinite`]).
 pub(crate) fn check_coordinate_of(name: &'static str, k: usize, value: f64) -> Result<f64> {
-    check_finite("coordinate", Some(k), value).map_err(|source| Error::InArgument {
+    check_finite("coordinate", Some(k), value).map_err(|source| in_argument(name, source))
+}
+
+/// An error about the argument `name`, keeping its cause (the message says `name: cause`).
+pub(crate) fn in_argument(name: &'static str, err: Error) -> Error {
+    Error::InArgument {
         name,
         index: None,
-        source: Box::new(source),
-    })
+        source: Box::new(err),
+    }
 }
 
 /// Checks a tolerance: finite and > 0.

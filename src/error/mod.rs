@@ -11,7 +11,9 @@ mod phrase;
 
 pub use phrase::{phrase, PHRASES};
 
-pub(crate) use check::{check_coordinate_of, check_finite, check_in_range, check_tolerance};
+pub(crate) use check::{
+    check_coordinate_of, check_finite, check_in_range, check_tolerance, in_argument,
+};
 
 /// Everything that can go wrong when building or querying a curve.
 ///
@@ -235,7 +237,7 @@ pub enum Error {
         /// The spacing asked for.
         #[cfg_attr(
             all(target_arch = "wasm32", target_os = "unknown"),
-            serde(serialize_with = "crate::wasm::error::display")
+            serde(serialize_with = "crate::wasm::error::alpha")
         )]
         kind: crate::bspline::Parameterization,
     },

@@ -32,7 +32,7 @@ pub use patches::SEAM_TOLERANCE;
 pub use teaching::{bezier_basis_matrix, PatchDeCasteljau, PatchMatrixForm};
 
 use crate::bspline::{basis_functions, BasisScratch, KnotVector};
-use crate::error::{Error, Result};
+use crate::error::{in_argument, Error, Result};
 use glam::DVec4;
 
 /// Most vertices one [`BSplineSurface::tessellate`] call makes (about 2048 × 2048): with the
@@ -49,15 +49,6 @@ pub struct BSplineSurface {
     rational: bool,
     knots_u: KnotVector,
     knots_v: KnotVector,
-}
-
-/// An error about the argument `name`, keeping its cause (the message says `name: cause`).
-fn in_argument(name: &'static str, err: Error) -> Error {
-    Error::InArgument {
-        name,
-        index: None,
-        source: Box::new(err),
-    }
 }
 
 /// An error about element `index` of the list argument `name` (the message says

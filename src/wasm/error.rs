@@ -59,12 +59,12 @@ pub(crate) fn coded<S: Serializer>(source: &Error, serializer: S) -> Result<S::O
     cause.end()
 }
 
-/// Serializes a field by its `Display` text (a parametrisation: "chord", "alpha = 0.3").
-pub(crate) fn display<T: std::fmt::Display, S: Serializer>(
-    value: &T,
+/// Serializes a parametrisation as its exponent α (0 uniform, ½ centripetal, 1 chord).
+pub(crate) fn alpha<S: Serializer>(
+    kind: &crate::bspline::Parameterization,
     serializer: S,
 ) -> Result<S::Ok, S::Error> {
-    value.to_string().serialize(serializer)
+    kind.alpha().serialize(serializer)
 }
 
 /// Serializes a field by its `Debug` text (a joining rule: "C1").

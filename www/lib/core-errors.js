@@ -8,9 +8,8 @@
  * active language (lib/strings/core-errors.js for English, lib/locales/*.js): it never reads
  * the English text, so English is the library's message word for word and a translation is
  * complete. In the text:
- * - numbers are written by `formatNumber` of the active language with the shortest digits that
- *   give the number back (as `String(x)` does in English: 0.1, 1.5e-7), ±Infinity and NaN by
- *   `coreError.number.*`;
+ * - numbers keep the digits of `String(x)` (as the English message: 0.1, 1.5e-7) with the
+ *   language's decimal separator (`exactNumber`), ±Infinity and NaN by `coreError.number.*`;
  * - a subject (a field naming what went wrong: `what`, `expected`, `neededBy`, `reason`, the
  *   `name` of "in-argument" and "not-positive") is `coreError.subject.<value>` when there is
  *   one, else an API identifier shown as it is ("degree", "knotsU");
@@ -23,46 +22,20 @@
  * the UI's own errors, which are translated already, a thrown non-Error) gives `err.message`,
  * or `String(err)`. A pure function: no DOM, no state but the active language.
  */
-import { listSeparator } from "./format.js";
-import { formatNumber, has, t, tp } from "./strings.js";
-
-/** Whole numbers: every digit, no grouping (a count, an index, a byte size). */
-const INTEGER = Object.freeze({
-  maximumFractionDigits: 0,
-  useGrouping: false,
-  signDisplay: "negative",
-});
-/** Other numbers: `SIGNIFICANT[k - 1]` writes k significant digits (k ≤ 21, Intl's limit). */
-const SIGNIFICANT = Object.freeze(
-  Array.from({ length: 21 }, (_, i) =>
-    Object.freeze({ maximumSignificantDigits: i + 1, useGrouping: false, signDisplay: "negative" }),
-  ),
-);
+import { listSeparator, localeDecimal } from "./format.js";
+import { has, t, tp } from "./strings.js";
 
 /**
- * `x` in the active language with the digits of `String(x)` (its shortest round-trip digits),
- * so that no value changes: "1.5" → "1,5" in Croatian; below 1e-6 and from 1e21 on, as
- * `String` does, mantissa "e" exponent ("1.5e-7"). A BigInt is written whole.
+ * `x` in the active language with the digits of `String(x)` (its shortest round-trip digits,
+ * as the library's English message prints it), so that no value changes: "1.5" → "1,5" in
+ * Croatian, "1.5e-7" → "1,5e-7"; ±Infinity and NaN in words. A BigInt is written whole.
  */
 export function exactNumber(x) {
-  if (typeof x === "bigint") return formatNumber(x, INTEGER);
   if (Number.isNaN(x)) return t("coreError.number.nan");
-  if (!Number.isFinite(x)) {
+  if (x === Infinity || x === -Infinity) {
     return t(x > 0 ? "coreError.number.infinity" : "coreError.number.negativeInfinity");
   }
-  const size = Math.abs(x);
-  if (size !== 0 && (size < 1e-6 || size >= 1e21)) {
-    const [mantissa, exponent] = x.toExponential().split("e");
-    return `${decimal(Number(mantissa))}e${exponent}`;
-  }
-  return decimal(x);
-}
-
-/** `x` (finite, 1e-6 ≤ |x| < 1e21 or 0) with the significant digits of `String(x)`. */
-function decimal(x) {
-  if (Number.isInteger(x)) return formatNumber(x, INTEGER);
-  const digits = String(Math.abs(x)).replace(".", "").replace(/^0+/, "").length;
-  return formatNumber(x, SIGNIFICANT[Math.min(digits, SIGNIFICANT.length) - 1]);
+  return localeDecimal(String(x));
 }
 
 /** u32::MAX, the largest whole number an argument may be ("not-whole-number"). */
@@ -164,12 +137,12 @@ export const DERIVED_PLACEHOLDERS = Object.freeze(
 
 /** A param's text: numbers exact, lists joined, the few fields with words of their own. */
 function paramText(code, name, value, params) {
+  if (code === "coincident-points" && name === "kind") return spacing(value);
   if (typeof value === "number" || typeof value === "bigint") return exactNumber(value);
   if (Array.isArray(value)) {
     return value.map((v) => paramText(code, name, v, params)).join(JOINED[name] ?? listSeparator());
   }
   if (SUBJECT_FIELDS[code]?.includes(name)) return subject(value);
-  if (code === "coincident-points" && name === "kind") return spacing(value);
   if (code === "knots-not-clamped" && name === "end") {
     return has(`coreError.end.${value}`) ? t(`coreError.end.${value}`) : String(value);
   }
@@ -179,12 +152,19 @@ function paramText(code, name, value, params) {
   return value === undefined || value === null ? value : String(value);
 }
 
-/** A parametrisation as the library names it ("Chord", "alpha = 0.3"), in the language. */
-function spacing(kind) {
-  const alpha = /^alpha = (.*)$/.exec(kind);
-  if (alpha) return t("coreError.spacing.alpha", { alpha: exactNumber(Number(alpha[1])) });
-  const key = `coreError.spacing.${String(kind).toLowerCase()}`;
-  return has(key) ? t(key) : String(kind);
+/** The names of the parametrisations with an exponent of their own (`params.kind` is α). */
+const SPACINGS = new Map([
+  [0, "uniform"],
+  [0.5, "centripetal"],
+  [1, "chord"],
+]);
+
+/** A parametrisation by its exponent α, in the language ("Chord", "alpha = 0.3"). */
+function spacing(alpha) {
+  const name = SPACINGS.get(alpha);
+  return name
+    ? t(`coreError.spacing.${name}`)
+    : t("coreError.spacing.alpha", { alpha: exactNumber(alpha) });
 }
 
 /**

@@ -261,7 +261,7 @@ export function moveToArcStart(recorder, x, y, r, a0) {
  * strings freely.
  */
 export class SvgRecorder {
-  /** @param {{ scale?: number, theme: object, measure?: CanvasRenderingContext2D }} options */
+  /** @param {{ scale?: number, theme: object, measureContext?: CanvasRenderingContext2D }} options */
   constructor({ scale = 1, theme, measureContext = null }) {
     this.scale = scale;
     this.theme = theme;
