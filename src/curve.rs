@@ -22,6 +22,11 @@ pub trait ParamCurve {
     /// `[u_p, u_{n+1}]` for a B-spline).
     fn domain(&self) -> (f64, f64);
 
+    /// The degree whose `(p + 1)²` prices one point in the dense-sampling work budget
+    /// ([`crate::geom::MAX_SAMPLE_WORK`]): the curve's degree, the highest piece's for a
+    /// piecewise curve.
+    fn sample_degree(&self) -> usize;
+
     /// The point at `t`.
     ///
     /// # Errors
@@ -38,7 +43,7 @@ pub trait ParamCurve {
     /// the first bad parameter (the points before it are written).
     fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
         let dim = Self::Point::DIM;
-        check_out_len(out.len(), ts.len(), dim)?;
+        check_out_len(out.len(), ts.len(), dim, self.sample_degree())?;
         for (&t, o) in ts.iter().zip(out.chunks_exact_mut(dim)) {
             self.evaluate(t)?.write_to(o);
         }
@@ -52,7 +57,7 @@ pub trait ParamCurve {
     /// [`crate::Error::BufferLength`] for a wrong `out` length.
     fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
         let dim = Self::Point::DIM;
-        check_out_len(out.len(), count, dim)?;
+        check_out_len(out.len(), count, dim, self.sample_degree())?;
         let (a, b) = self.domain();
         let params = Params::uniform(a, b, count);
         for (k, o) in out.chunks_exact_mut(dim).enumerate() {
@@ -142,6 +147,10 @@ macro_rules! impl_curve_traits {
 
             fn domain(&self) -> (f64, f64) {
                 $ty::$domain(self)
+            }
+
+            fn sample_degree(&self) -> usize {
+                self.degree()
             }
 
             fn evaluate(&self, t: f64) -> $crate::error::Result<C> {

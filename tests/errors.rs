@@ -951,7 +951,7 @@ fn adaptive_mesh_too_large() {
 #[test]
 fn basis_curves_count_too_large_names_the_count() {
     // 20 000 control points × 10^6 samples: 2·10^10 values, more than a 32-bit count holds. The
-    // message names the count given and the largest allowed (2^24 / 20 000 = 838).
+    // message names the count given and the largest allowed (2^22 / 20 000 = 209).
     let n = 20_000;
     let points = pts2(&(0..n).map(|i| (i as f64, 0.0)).collect::<Vec<_>>());
     let knots: Vec<f64> = (0..n + 4).map(|i| i.clamp(3, n) as f64).collect();
@@ -959,14 +959,105 @@ fn basis_curves_count_too_large_names_the_count() {
     fails(
         curve.basis_curves(1_000_000),
         "too-large",
-        &["count", "= 1000000", "at most 838"],
+        &["count", "= 1000000", "at most 209"],
     );
     let params: Vec<f64> = (0..40).map(f64::from).collect();
     let lagrange = interp::LagrangeCurve::new(points[..40].to_vec(), &params).unwrap();
     fails(
         lagrange.basis_curves(1_000_000),
         "too-large",
-        &["count", "= 1000000", "at most 419430"],
+        &["count", "= 1000000", "at most 104857"],
+    );
+}
+
+#[test]
+fn dense_sampling_work_is_priced_by_the_degree() {
+    // One point of a degree-p curve costs O(p²): count·(p + 1)² ≤ 2^28. A degree-64 Bézier
+    // curve gets 2^28 / 65² = 63 535 points (2^22 of them took 19 s in wasm); the error names
+    // the count given and that largest one, before any point is computed.
+    let points: Vec<DVec2> = (0..=64)
+        .map(|i| DVec2::new(i as f64, (i % 3) as f64))
+        .collect();
+    let bezier = BezierCurve::new(points.clone(), None).unwrap();
+    fails(
+        bezier.sample_uniform_into(100_000, &mut []),
+        "too-large",
+        &["sample count for this degree", "= 100000", "at most 63535"],
+    );
+    let ts = vec![0.5; 63_536];
+    fails(
+        bezier.sample_into(&ts, &mut []),
+        "too-large",
+        &["at most 63535"],
+    );
+    // 63 535 is within the budget: the next failure is the (deliberately empty) buffer.
+    fails(
+        bezier.sample_uniform_into(63_535, &mut []),
+        "buffer-length",
+        &[],
+    );
+    let knots: Vec<f64> = (0..65 + 65).map(|i| i.clamp(64, 65) as f64).collect();
+    let bspline = BSplineCurve::new(points, 64, knots, None).unwrap();
+    fails(
+        bspline.sample_uniform_into(63_536, &mut []),
+        "too-large",
+        &["at most 63535"],
+    );
+    // A derivative of order k costs k + 1 basis rows and the quotient rule:
+    // 2^28 / (65²·3 + 16·3² + 64) = 20 836 for k = 2.
+    fails(
+        bspline.sample_derivatives_into(&ts[..20_837], 2, &mut []),
+        "too-large",
+        &["at most 20836"],
+    );
+    // Degrees up to 7 meet the 2^22-point cap first: 2^28 / 8² = 2^22.
+    use splinelab::geom::check_out_len;
+    fails(check_out_len(0, 1 << 22, 2, 7), "buffer-length", &[]);
+    fails(
+        check_out_len(0, 3_314_018, 2, 8),
+        "too-large",
+        &["at most 3314017"],
+    );
+}
+
+#[test]
+fn surface_work_is_priced_by_the_degrees() {
+    // A degree-(64, 64) patch: a mesh vertex costs 2·65² + 128 = 8578 units, a curvature
+    // 8·(3·65² + 32) = 101 656 (100 000 curvatures of it took 6.7 s in wasm).
+    let n = 65;
+    let coords: Vec<f64> = (0..n * n)
+        .flat_map(|k| [(k / n) as f64, (k % n) as f64, ((k * 7) % 5) as f64])
+        .collect();
+    let patch = BSplineSurface::bezier(&coords, n, n, None).unwrap();
+    fails(
+        patch.tessellate(200, 200),
+        "too-large",
+        &[
+            "tessellation vertices",
+            "for this degree",
+            "= 40401",
+            "at most 31293",
+        ],
+    );
+    assert!(patch.tessellate(100, 100).is_ok());
+    let uvs = vec![0.5; 2 * 2641];
+    let mut out = Vec::new();
+    fails(
+        patch.curvatures_into(&uvs, &mut out),
+        "too-large",
+        &["curvature points for this degree", "= 2641", "at most 2640"],
+    );
+    assert!(out.capacity() == 0, "refused before allocating");
+    patch.curvatures_into(&uvs[..2 * 2640], &mut out).unwrap();
+    assert_eq!(out.len(), 2 * 2640);
+    // A bicubic meets the vertex cap (2^20) first.
+    fails(
+        bump_patch().tessellate(1024, 1024),
+        "too-large",
+        &[
+            "tessellation vertices (nu + 1)(nv + 1) = 1050625",
+            "at most 1048576",
+        ],
     );
 }
 
@@ -996,12 +1087,13 @@ fn result_too_large_names_the_counts() {
         ],
     );
     assert!(out.capacity() == 0, "nothing was allocated");
-    // 12 million points of a 3D curve: under MAX_SAMPLES (2^24) points, over 256 MiB.
+    // 12 million points of a curve: over MAX_SAMPLES (2^22) points, refused before the result
+    // is allocated (at 2^24 points a cubic took 2–4 s in wasm, mostly memory).
     let curve = BezierCurve::new(vec![DVec3::ZERO, DVec3::ONE], None).unwrap();
     fails(
         curve.sample_uniform_into(12_000_000, &mut []),
-        "result-too-large",
-        &["12000000 × 3 values of 8 bytes = 288000000 bytes"],
+        "too-large",
+        &["sample count = 12000000", "at most 4194304"],
     );
     // Counts whose product overflows a usize are refused the same way (checked_mul), naming
     // the counts rather than a wrapped or saturated product.
@@ -1069,14 +1161,13 @@ mod js {
     }
 
     #[test]
-    fn result_too_large_from_javascript_counts() {
-        // sampleUniform(12e6) of a 3D curve: 288 MB of numbers, refused before allocating.
+    fn too_large_from_javascript_counts() {
+        // sampleUniform(12e6) of a 3D curve (288 MB of numbers): over MAX_SAMPLES = 2^22 points,
+        // refused before allocating, in both forms.
         let mut c = curve(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 3.0);
-        fails(
-            c.sample_uniform(12e6),
-            &["sampleUniform: count × coordinates = 12000000 × 3 values of 8 bytes"],
-        );
-        fails(c.sample_uniform_view(12e6), &["12000000 × 3 values"]);
+        let cap = ["count = 12000000 is too large; at most 4194304 is allowed"];
+        fails(c.sample_uniform(12e6), &cap);
+        fails(c.sample_uniform_view(12e6), &cap);
     }
 
     #[test]

@@ -63,14 +63,16 @@ fn errors_carry_code_and_params() {
     .into();
     assert_eq!(field(&e, "code"), "too-few-points");
     assert_eq!(field(&field(&e, "params"), "what"), "bezier-curve");
-    // 12e6 3D points: 288 MB of numbers, above the 256 MiB cap.
-    let mut line3d = JsBezierCurve::new(
-        arr(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
-        3.0,
+    // sampleGrid 5000 × 5000 of a patch: 600 MB of numbers, above the 256 MiB cap.
+    let patch = wasm::JsBezierSurface::new(
+        arr(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0]),
+        2.0,
+        2.0,
         JsValue::UNDEFINED,
     )
     .unwrap();
-    let e: JsValue = common::js_error(line3d.sample_uniform(12e6)).into();
+    let us = arr(&vec![0.5; 5000]);
+    let e: JsValue = common::js_error(patch.sample_grid(us.clone(), us)).into();
     assert_eq!(field(&e, "code"), "result-too-large");
     assert_eq!(
         field(&field(&e, "params"), "valueBytes").as_f64(),

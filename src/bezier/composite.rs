@@ -387,6 +387,14 @@ impl<C: Cartesian> ParamCurve for CompositeCurve<C> {
         CompositeCurve::domain(self)
     }
 
+    fn sample_degree(&self) -> usize {
+        self.pieces
+            .iter()
+            .map(BezierCurve::degree)
+            .max()
+            .unwrap_or(0)
+    }
+
     fn evaluate(&self, t: f64) -> Result<C> {
         CompositeCurve::evaluate(self, t)
     }

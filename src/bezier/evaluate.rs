@@ -40,7 +40,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// As [`BezierCurve::evaluate`], naming the index of the first bad parameter;
     /// [`Error::BufferLength`] when `out` has the wrong length.
     pub fn sample_into(&self, ts: &[f64], out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), ts.len(), C::DIM)?;
+        check_out_len(out.len(), ts.len(), C::DIM, self.degree())?;
         for (i, &t) in ts.iter().enumerate() {
             check_finite("parameter", Some(i), t)?;
             self.local_parameter(t)?;
@@ -57,7 +57,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// Writes `count` points at equally spaced parameters `a + (b − a)·k/(count − 1)` into
     /// `out` (`count·DIM` values); `count = 1` gives the start point.
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), count, C::DIM)?;
+        check_out_len(out.len(), count, C::DIM, self.degree())?;
         self.sample_local_into(Params::uniform(0.0, 1.0, count), out);
         Ok(())
     }

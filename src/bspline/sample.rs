@@ -10,7 +10,7 @@
 use super::{basis_functions, BSplineCurve, BasisScratch};
 use crate::bezier::{horner_run, horner_with_derivative_fixed, to_power_form, PowerForm};
 use crate::error::{Error, Result};
-use crate::geom::{check_out_len, rational_derivative, MAX_DERIVATIVE_ORDER};
+use crate::geom::{check_out_len, check_work, rational_derivative, MAX_DERIVATIVE_ORDER};
 use crate::geom::{Cartesian, Params, Point};
 use crate::prelude::*;
 use std::ops::Range;
@@ -260,7 +260,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// first; spans are found from the previous one (sorted input walks the knots once), and
     /// one set of buffers serves every point.
     pub fn sample_into(&self, us: &[f64], out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), us.len(), C::DIM)?;
+        check_out_len(out.len(), us.len(), C::DIM, self.degree())?;
         for &u in us {
             self.knots.check_parameter(u)?;
         }
@@ -271,7 +271,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// Writes `count` points at equally spaced parameters over the domain (ends included;
     /// `count = 1` gives the start point, as for Bézier curves).
     pub fn sample_uniform_into(&self, count: usize, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), count, C::DIM)?;
+        check_out_len(out.len(), count, C::DIM, self.degree())?;
         let (a, b) = self.domain();
         self.sample_params_into(Params::uniform(a, b, count), out);
         Ok(())
@@ -283,9 +283,9 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// quotient rule for rational curves runs on the stack).
     ///
     /// # Errors
-    /// A bad parameter, [`Error::TooLarge`] above [`MAX_DERIVATIVE_ORDER`], a wrong `out` length.
+    /// [`Error::TooLarge`] above [`MAX_DERIVATIVE_ORDER`] or the work budget
+    /// [`crate::geom::MAX_SAMPLE_WORK`], a wrong `out` length, a bad parameter.
     pub fn sample_derivatives_into(&self, us: &[f64], order: usize, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), us.len(), C::DIM)?;
         if order > MAX_DERIVATIVE_ORDER {
             return Err(Error::TooLarge {
                 what: "derivative-order",
@@ -293,10 +293,14 @@ impl<C: Cartesian> BSplineCurve<C> {
                 max: MAX_DERIVATIVE_ORDER,
             });
         }
+        let p = self.degree();
+        let orders = if self.rational { order } else { order.min(p) } + 1;
+        let units = (p + 1).pow(2) * orders + 16 * orders * orders + 64;
+        check_work("sample-work", us.len(), units)?;
+        check_out_len(out.len(), us.len(), C::DIM, p)?;
         for &u in us {
             self.knots.check_parameter(u)?;
         }
-        let p = self.degree();
         if !self.rational && order > p {
             out.fill(0.0);
             return Ok(());

@@ -27,6 +27,7 @@ pub const PHRASES: &[(&str, &str)] = &[
     ("coordinate", "coordinate"),
     ("cubic-spline", "a cubic spline"),
     ("cubic-spline-system", "the cubic spline's tangent system"),
+    ("curvature-work", "curvature points for this degree (work budget 2^28)"),
     ("curve", "a BSplineCurve or BezierCurve"),
     ("data-point-count", "number of data points"),
     ("degree-u-rows", "degreeU (rows along u)"),
@@ -66,11 +67,13 @@ pub const PHRASES: &[(&str, &str)] = &[
     ("sample-uniform-result", "sampleUniform: count × coordinates"),
     ("sample-uniform-view-result", "sampleUniformView: count × coordinates"),
     ("sample-view-result", "sampleView: params.length × coordinates"),
+    ("sample-work", "sample count for this degree (work budget 2^28)"),
     ("samples-result", "samples (points × coordinates)"),
     ("start-angle", "start angle"),
     ("string", "a string"),
     ("surface-derivative-order", "derivative order du + dv"),
     ("tessellation-vertices", "tessellation vertices (nu + 1)(nv + 1)"),
+    ("tessellation-work", "tessellation vertices (nu + 1)(nv + 1) for this degree (work budget 2^28)"),
     ("weight", "weight"),
 ];
 

@@ -1,6 +1,6 @@
 //! Input checks shared by every family: weights, output lengths, flat coordinates, `dim`.
 
-use super::{Point, MAX_RESULT_BYTES, MAX_SAMPLES};
+use super::{Point, MAX_RESULT_BYTES, MAX_SAMPLES, MAX_SAMPLE_WORK};
 use crate::error::{check_finite, Error, Result};
 
 /// Validates a weight list: count, finite, > 0.
@@ -64,9 +64,24 @@ pub fn result_len(what: &'static str, counts: &[usize]) -> Result<usize> {
     check_result_bytes(what, counts, 8)
 }
 
-/// Checks an output buffer holds `count` points of `dim` coordinates, and caps `count` (at
-/// [`MAX_SAMPLES`] points and [`MAX_RESULT_BYTES`] bytes).
-pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
+/// The work budget: `count` items of `units` each within [`MAX_SAMPLE_WORK`], otherwise
+/// [`Error::TooLarge`] naming `what`, the count given and the largest count allowed.
+pub fn check_work(what: &'static str, count: usize, units: usize) -> Result<()> {
+    let max = MAX_SAMPLE_WORK / units.max(1);
+    if count > max {
+        return Err(Error::TooLarge {
+            what,
+            value: count,
+            max,
+        });
+    }
+    Ok(())
+}
+
+/// Checks an output buffer holds `count` points of `dim` coordinates of a curve of degree
+/// `degree`, and caps `count`: at [`MAX_SAMPLES`] points, [`MAX_RESULT_BYTES`] bytes and the
+/// work budget `count·(degree + 1)² ≤` [`MAX_SAMPLE_WORK`].
+pub fn check_out_len(len: usize, count: usize, dim: usize, degree: usize) -> Result<()> {
     if count > MAX_SAMPLES {
         return Err(Error::TooLarge {
             what: "sample-count",
@@ -74,6 +89,7 @@ pub fn check_out_len(len: usize, count: usize, dim: usize) -> Result<()> {
             max: MAX_SAMPLES,
         });
     }
+    check_work("sample-work", count, (degree.min(1 << 12) + 1).pow(2))?;
     result_len("samples-result", &[count, dim])?;
     if len != count * dim {
         return Err(Error::BufferLength {

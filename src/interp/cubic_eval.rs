@@ -79,7 +79,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// The derivative of order `order` at every parameter of `params` into `out` (`DIM` numbers
     /// each), walking the pieces: sorted parameters visit each piece once.
     fn sample_params_into(&self, params: Params, order: usize, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), params.len(), C::DIM)?;
+        check_out_len(out.len(), params.len(), C::DIM, 3)?;
         let domain = self.domain();
         let last = self.params.len() - 2;
         let mut index = 0;
@@ -225,6 +225,10 @@ impl<C: Cartesian> ParamCurve for CubicSpline<C> {
 
     fn domain(&self) -> (f64, f64) {
         CubicSpline::domain(self)
+    }
+
+    fn sample_degree(&self) -> usize {
+        3
     }
 
     fn evaluate(&self, t: f64) -> Result<C> {

@@ -175,7 +175,7 @@ impl<C: Cartesian> LagrangeCurve<C> {
 
     /// Writes `P(t)` for every parameter into `out` (`len·DIM` numbers).
     fn sample_params_into(&self, params: Params, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), params.len(), C::DIM)?;
+        check_out_len(out.len(), params.len(), C::DIM, self.degree())?;
         let domain = self.domain();
         for (k, o) in out.chunks_exact_mut(C::DIM).enumerate() {
             let t = check_in_range("t", params.get(k), domain)?;

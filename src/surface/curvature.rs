@@ -3,6 +3,7 @@
 use super::BSplineSurface;
 use crate::bspline::{basis_functions, BasisScratch};
 use crate::error::{Error, Result};
+use crate::geom::check_work;
 use glam::{DVec3, DVec4};
 
 /// `[K, H]` from the partials at one point: with `N = S_u × S_v / |S_u × S_v|`, the first
@@ -52,8 +53,9 @@ impl BSplineSurface {
     /// into it, so the `Float32Array` uvs of a mesh are accepted.
     ///
     /// # Errors
-    /// [`Error::CoordinateCount`] for an odd length; a parameter that is not finite or lies
-    /// outside the domain (beyond the rounding allowance).
+    /// [`Error::CoordinateCount`] for an odd length; [`Error::TooLarge`] for more points than
+    /// the work budget [`crate::geom::MAX_SAMPLE_WORK`] allows at this degree; a parameter
+    /// that is not finite or lies outside the domain (beyond the rounding allowance).
     pub fn curvatures_into(&self, uvs: &[f64], out: &mut Vec<f64>) -> Result<()> {
         if !uvs.len().is_multiple_of(2) {
             return Err(Error::CoordinateCount {
@@ -61,6 +63,9 @@ impl BSplineSurface {
                 dim: 2,
             });
         }
+        let (p1, q1) = (self.degree_u() + 1, self.degree_v() + 1);
+        let units = 8 * (p1 * q1 + p1 * p1 + q1 * q1 + 32);
+        check_work("curvature-work", uvs.len() / 2, units)?;
         out.clear();
         out.reserve(uvs.len());
         let (du, dv) = (self.knots_u.domain(), self.knots_v.domain());

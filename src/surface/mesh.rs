@@ -3,7 +3,7 @@
 use super::{checked_count, BSplineSurface, MAX_MESH_VERTICES};
 use crate::bspline::basis_derivatives;
 use crate::error::{Error, Result};
-use crate::geom::Params;
+use crate::geom::{check_work, Params};
 use glam::{DVec3, DVec4};
 
 /// Most vertices of one mesh whose normal is taken from [`BSplineSurface::normal`]'s limits
@@ -23,13 +23,15 @@ impl BSplineSurface {
     ///
     /// # Errors
     /// [`Error::EmptyTessellation`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
-    /// [`MAX_MESH_VERTICES`] vertices.
+    /// [`MAX_MESH_VERTICES`] vertices or the work budget [`crate::geom::MAX_SAMPLE_WORK`].
     pub fn tessellate(&self, nu: usize, nv: usize) -> Result<Mesh> {
         if nu == 0 || nv == 0 {
             return Err(Error::EmptyTessellation { nu, nv });
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
-        checked_count("tessellation-vertices", cu, cv, MAX_MESH_VERTICES)?;
+        let vertices = checked_count("tessellation-vertices", cu, cv, MAX_MESH_VERTICES)?;
+        let units = 2 * (self.degree_u() + 1) * (self.degree_v() + 1) + 128;
+        check_work("tessellation-work", vertices, units)?;
         let grid = |(a, b): (f64, f64), n: usize| -> Vec<f64> {
             let params = Params::uniform(a, b, n + 1);
             (0..params.len()).map(|i| params.get(i)).collect()

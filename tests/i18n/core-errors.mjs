@@ -141,6 +141,16 @@ const CASES = [
   ],
   ["empty-tessellation", () => patch().tessellate(0, 4)],
   ["too-large", () => bezier().sampleUniform(1e9)],
+  // The work budget priced by the degree (subject "sample-work"): 2^28 / 65² = 63 535 points.
+  [
+    "too-large",
+    () =>
+      new sl.BezierCurve(
+        new Float64Array(130).map((_, i) => i % 7),
+        2,
+      ).sampleUniform(1e5),
+  ],
+  ["too-large", () => new sl.BezierSurface(net(40, 40), 40, 40).curvatures(new Float64Array(2e5))],
   ["result-too-large", () => patch().sampleGrid(new Float64Array(20000), new Float64Array(20000))],
   ["argument-type", () => new sl.BezierCurve(null, 2)],
   ["argument-type", () => sl.knotVector([0, 0, 1, 1], 2, 1, 5)],

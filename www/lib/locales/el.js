@@ -2064,6 +2064,8 @@ export default {
   "coreError.subject.coordinate": "συντεταγμένη",
   "coreError.subject.cubic-spline": "μια κυβική spline",
   "coreError.subject.cubic-spline-system": "το σύστημα εφαπτομένων της κυβικής spline",
+  "coreError.subject.curvature-work":
+    "σημεία καμπυλότητας για αυτόν τον βαθμό (προϋπολογισμός εργασίας 2^28)",
   "coreError.subject.curve": "BSplineCurve ή BezierCurve",
   "coreError.subject.data-point-count": "πλήθος σημείων δεδομένων",
   "coreError.subject.degree-u-rows": "degreeU (γραμμές κατά u)",
@@ -2101,6 +2103,8 @@ export default {
   "coreError.subject.refine-result":
     "refine: (σημεία ελέγχου + us.length) × ομογενείς συντεταγμένες",
   "coreError.subject.sample-count": "πλήθος δειγμάτων",
+  "coreError.subject.sample-work":
+    "πλήθος δειγμάτων για αυτόν τον βαθμό (προϋπολογισμός εργασίας 2^28)",
   "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × συντεταγμένες",
   "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 συντεταγμένες",
   "coreError.subject.sample-params-result": "sample: params.length × συντεταγμένες",
@@ -2113,5 +2117,7 @@ export default {
   "coreError.subject.string": "συμβολοσειρά (string)",
   "coreError.subject.surface-derivative-order": "τάξη παραγώγου du + dv",
   "coreError.subject.tessellation-vertices": "κορυφές τριγωνοποίησης (nu + 1)(nv + 1)",
+  "coreError.subject.tessellation-work":
+    "κορυφές τριγωνοποίησης (nu + 1)(nv + 1) για αυτόν τον βαθμό (προϋπολογισμός εργασίας 2^28)",
   "coreError.subject.weight": "βάρος",
 };

@@ -2047,6 +2047,7 @@ export default {
   "coreError.subject.coordinate": "koordinata",
   "coreError.subject.cubic-spline": "kubni splajn",
   "coreError.subject.cubic-spline-system": "sustav tangenti kubnog splajna",
+  "coreError.subject.curvature-work": "točke zakrivljenosti za ovaj stupanj (proračun rada 2^28)",
   "coreError.subject.curve": "BSplineCurve ili BezierCurve",
   "coreError.subject.data-point-count": "broj zadanih točaka",
   "coreError.subject.degree-u-rows": "degreeU (retci duž u)",
@@ -2083,6 +2084,7 @@ export default {
   "coreError.subject.rational-derivative-order": "red derivacije racionalne krivulje",
   "coreError.subject.refine-result": "refine: (kontrolne točke + us.length) × homogene koordinate",
   "coreError.subject.sample-count": "broj uzoraka",
+  "coreError.subject.sample-work": "broj uzoraka za ovaj stupanj (proračun rada 2^28)",
   "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × koordinate",
   "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 koordinate",
   "coreError.subject.sample-params-result": "sample: params.length × koordinate",
@@ -2095,5 +2097,7 @@ export default {
   "coreError.subject.string": "znakovni niz (string)",
   "coreError.subject.surface-derivative-order": "red derivacije du + dv",
   "coreError.subject.tessellation-vertices": "vrhovi teselacije (nu + 1)(nv + 1)",
+  "coreError.subject.tessellation-work":
+    "vrhovi teselacije (nu + 1)(nv + 1) za ovaj stupanj (proračun rada 2^28)",
   "coreError.subject.weight": "težina",
 };

@@ -2063,6 +2063,7 @@ export default {
   "coreError.subject.coordinate": "coordinata",
   "coreError.subject.cubic-spline": "una spline cubica",
   "coreError.subject.cubic-spline-system": "il sistema delle tangenti della spline cubica",
+  "coreError.subject.curvature-work": "punti di curvatura per questo grado (budget di lavoro 2^28)",
   "coreError.subject.curve": "una BSplineCurve o BezierCurve",
   "coreError.subject.data-point-count": "numero di punti dati",
   "coreError.subject.degree-u-rows": "degreeU (righe lungo u)",
@@ -2101,6 +2102,7 @@ export default {
   "coreError.subject.refine-result":
     "refine: (punti di controllo + us.length) × coordinate omogenee",
   "coreError.subject.sample-count": "numero di campioni",
+  "coreError.subject.sample-work": "numero di campioni per questo grado (budget di lavoro 2^28)",
   "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × coordinate",
   "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 coordinate",
   "coreError.subject.sample-params-result": "sample: params.length × coordinate",
@@ -2113,5 +2115,7 @@ export default {
   "coreError.subject.string": "una stringa",
   "coreError.subject.surface-derivative-order": "ordine di derivazione du + dv",
   "coreError.subject.tessellation-vertices": "vertici della tassellazione (nu + 1)(nv + 1)",
+  "coreError.subject.tessellation-work":
+    "vertici della tassellazione (nu + 1)(nv + 1) per questo grado (budget di lavoro 2^28)",
   "coreError.subject.weight": "peso",
 };

@@ -177,6 +177,7 @@ export const CORE_ERRORS = {
   "coreError.subject.coordinate": "coordinate",
   "coreError.subject.cubic-spline": "a cubic spline",
   "coreError.subject.cubic-spline-system": "the cubic spline's tangent system",
+  "coreError.subject.curvature-work": "curvature points for this degree (work budget 2^28)",
   "coreError.subject.curve": "a BSplineCurve or BezierCurve",
   "coreError.subject.data-point-count": "number of data points",
   "coreError.subject.degree-u-rows": "degreeU (rows along u)",
@@ -214,6 +215,7 @@ export const CORE_ERRORS = {
   "coreError.subject.refine-result":
     "refine: (control points + us.length) × homogeneous coordinates",
   "coreError.subject.sample-count": "sample count",
+  "coreError.subject.sample-work": "sample count for this degree (work budget 2^28)",
   "coreError.subject.sample-derivatives-result": "sampleDerivatives: us.length × coordinates",
   "coreError.subject.sample-grid-result": "sampleGrid: us.length × vs.length × 3 coordinates",
   "coreError.subject.sample-params-result": "sample: params.length × coordinates",
@@ -226,5 +228,7 @@ export const CORE_ERRORS = {
   "coreError.subject.string": "a string",
   "coreError.subject.surface-derivative-order": "derivative order du + dv",
   "coreError.subject.tessellation-vertices": "tessellation vertices (nu + 1)(nv + 1)",
+  "coreError.subject.tessellation-work":
+    "tessellation vertices (nu + 1)(nv + 1) for this degree (work budget 2^28)",
   "coreError.subject.weight": "weight",
 };
