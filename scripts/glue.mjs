@@ -11,9 +11,14 @@
 // 2. Freed objects. wasm-bindgen's glue passes a freed object's pointer 0 into wasm, where it
 //    throws "null pointer passed to rust" from inside Rust (and leaves the wasm stack pointer
 //    where the throw found it). Every read of `this.__wbg_ptr` before a call becomes
-//    `livePtr(this, "Class")`, which throws `Error("this Class was freed")` first; every
+//    `livePtr(this, Class)`, which throws `Error("this Class was freed")` first; every
 //    parameter whose JSDoc type is one of the classes (`left`, `curveA`, …) is checked the same
 //    way ("curveA: this BSplineCurve was freed"); `free()` of a freed object does nothing.
+// 3. Objects of another class as `this`. `BezierCurve.prototype.evaluate.call(aBSpline, t)`
+//    would hand a B-spline's pointer to a Bézier method, which reads (or, for a setter or
+//    `free()`, writes) the other object's memory as its own. `livePtr` and `free()` first check
+//    `this instanceof Class` and throw an "argument-type" Error naming both classes. (wasm-bindgen
+//    already checks parameters of a class type: "expected instance of BezierCurve".)
 //
 // Reviewed against the glue of wasm-bindgen REVIEWED (the version Cargo.lock pins): another
 // version stops the build until this file is checked against its glue, and every pattern
@@ -103,7 +108,7 @@ function intoMethod(cls, base, scratch) {
     "     * @returns {Float64Array | number[]}\n" +
     "     */\n" +
     `    ${base}Into(${p}, out) {\n` +
-    `        const i = wasm.${scratch.exportName}(livePtr(this, ${JSON.stringify(cls)}), ${p});\n` +
+    `        const i = wasm.${scratch.exportName}(livePtr(this, ${cls}), ${p});\n` +
     `        return i === 0 ? copyInto(this.${base}(${p}), out) : scratchInto(i, out);\n` +
     "    }\n"
   );
@@ -151,7 +156,7 @@ for (const c of classes) {
   c.text = replaceCounted(
     c.text,
     /wasm\.(\w+)\(this\.__wbg_ptr\b/g,
-    (_, f) => `wasm.${f}(livePtr(this, ${JSON.stringify(c.name)})`,
+    (_, f) => `wasm.${f}(livePtr(this, ${c.name})`,
     undefined,
     `${c.name}: calls with this.__wbg_ptr`,
   );
@@ -159,7 +164,8 @@ for (const c of classes) {
   c.text = replaceCounted(
     c.text,
     /( {4}free\(\) \{\n {8}const ptr = this\.__destroy_into_raw\(\);\n {8})(wasm\.__wbg_\w+_free\(ptr, 0\);)/g,
-    (_, head, call) => `${head}if (ptr) ${call}`,
+    (_, head, call) =>
+      `    free() {\n        checkThis(this, ${c.name});\n${head.slice("    free() {\n".length)}if (ptr) ${call}`,
     1,
     `${c.name}: free()`,
   );
@@ -213,10 +219,23 @@ function codedError(message, code, params) {
     return error;
 }
 
-/** The pointer of a live object, or an Error naming its class if it was freed. */
-function livePtr(obj, name) {
+/** Throws unless \`obj\` is an instance of \`cls\` (a method called on another class's object). */
+function checkThis(obj, cls) {
+    if (!(obj instanceof cls)) {
+        const got = obj === null || obj === undefined ? String(obj) : (obj.constructor?.name ?? typeof obj);
+        throw codedError(\`this must be \${cls.name}, got \${got}\`, "argument-type", {
+            name: "this",
+            expected: cls.name,
+            got,
+        });
+    }
+}
+
+/** The pointer of a live object of class \`cls\`, or an Error: another class, or freed. */
+function livePtr(obj, cls) {
+    checkThis(obj, cls);
     const ptr = obj.__wbg_ptr;
-    if (!ptr) throw codedError(\`this \${name} was freed\`, "freed", { className: name });
+    if (!ptr) throw codedError(\`this \${cls.name} was freed\`, "freed", { className: cls.name });
     return ptr;
 }
 
@@ -279,7 +298,7 @@ function bezierMirror(curve) {
 {
     const viaWasm = BezierCurve.prototype.evaluateInto;
     BezierCurve.prototype.evaluateInto = function evaluateInto(t, out) {
-        livePtr(this, "BezierCurve");
+        livePtr(this, BezierCurve);
         const m = this.__jsMirror === undefined ? bezierMirror(this) : this.__jsMirror;
         // Anything unusual (a high degree, t outside, a short out) takes the checked wasm path.
         if (m === null || !(t >= m.a && t <= m.b) || out === null || typeof out !== "object" || !(out.length >= m.dim)) {

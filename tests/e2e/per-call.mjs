@@ -349,6 +349,46 @@ const checks = [
     },
   ],
   [
+    "a method called on an object of another class throws naming both classes and leaves that object as it was",
+    () => {
+      const bezier = new sl.BezierCurve(P, 2);
+      const bspline = new sl.BSplineCurve([0, 0, 1, 3, 2, 0, 3, 1], 2, 2, [0, 0, 0, 0.5, 1, 1, 1]);
+      const patch = new sl.BezierSurface([0, 0, 0, 1, 0, 1, 0, 1, 1, 1, 1, 0], 2, 2);
+      const before = Array.from(bspline.controlPoints());
+      const at = Array.from(bspline.evaluate(0.3));
+      const B = sl.BezierCurve.prototype;
+      const calls = [
+        ["evaluate", () => B.evaluate.call(bspline, 0.5)],
+        ["evaluateInto", () => B.evaluateInto.call(bspline, 0.5, new Float64Array(2))],
+        ["setControlPoint", () => B.setControlPoint.call(bspline, 0, [9, 9])],
+        ["dim getter", () => Object.getOwnPropertyDescriptor(B, "dim").get.call(bspline)],
+        ["free", () => B.free.call(bspline)],
+        ["a surface method", () => sl.BezierSurface.prototype.normal.call(bezier, 0.5, 0.5)],
+        ["a plain object", () => B.evaluate.call({ __wbg_ptr: 8 }, 0.5)],
+      ];
+      for (const [what, call] of calls) {
+        let err = null;
+        try {
+          call();
+        } catch (e) {
+          err = e;
+        }
+        assert(err instanceof Error, `${what}: no Error`);
+        assert(
+          /^this must be Bezier(Curve|Surface), got (BSplineCurve|BezierCurve|Object)$/.test(
+            err.message,
+          ),
+          `${what}: message "${err.message}"`,
+        );
+        assert(err.code === "argument-type" && err.params.name === "this", `${what}: code`);
+      }
+      near(bspline.controlPoints(), before, 0, "the B-spline's points are untouched");
+      near(bspline.evaluate(0.3), at, 0, "and it evaluates as before");
+      near(bezier.evaluate(0.25), [29 / 16, 23 / 16], 1e-15, "the Bézier curve still works");
+      for (const o of [bezier, bspline, patch]) o.free();
+    },
+  ],
+  [
     "a freed object passed as an argument is named: jointContinuity, joinBezier, ruled, extrude, revolve",
     () => {
       const a = new sl.BezierCurve(P, 2);

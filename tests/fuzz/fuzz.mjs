@@ -135,7 +135,14 @@ export function fuzzApi({
     return [...new Set(lines), callText(names)].join("\n");
   }
 
-  function describeCall(c, target, args) {
+  function describeCall(c, target, args, foreign) {
+    if (foreign) {
+      const proto = `sl.${c.cls}.prototype`;
+      return (names) =>
+        c.kind === "getter"
+          ? `Object.getOwnPropertyDescriptor(${proto}, "${c.name}").get.call(${names.get(target.obj)});`
+          : `${proto}.${c.name}.call(${[target.obj, ...args].map((a) => source(a, names)).join(", ")});`;
+    }
     const callee =
       c.kind === "function"
         ? `sl.${c.name}`
@@ -247,8 +254,11 @@ export function fuzzApi({
     }
   }
 
-  /** One fuzzed call of `c` (on `target` for methods and getters). */
-  function call(c, target) {
+  /**
+   * One fuzzed call of `c` (on `target` for methods and getters). `foreign`: `c` is a method of
+   * another class than `target`'s, run with `target` as `this`; it must throw.
+   */
+  function call(c, target, foreign = false) {
     // A function taking curves sizes its other arguments after the first one it gets.
     const first = c.params.find((p) => p.type.some((t) => t.kind === "class"));
     let chosen;
@@ -263,11 +273,11 @@ export function fuzzApi({
       c.kind === "getter" ? [] : c.params.map((p) => argument(r, v, p, s, classObjects, strings));
     // Drop trailing arguments now and then (optional ones, or a forgotten one).
     if (args.length && chance(0.05)) args.length = int(0, args.length - 1);
-    const text = describeCall(c, target, args);
+    const text = describeCall(c, target, args, foreign);
     if (index >= traceFrom) log(`#${index}:\n${reproduction(target, text, args)}`);
     // A method on a freed object must say so; a freed argument may meet another check first
     // (a number expected where it stands), so only `this` is held to the message.
-    const usesFreed = target?.freed ?? false;
+    const usesFreed = !foreign && (target?.freed ?? false);
     const stat = stats.get(c.key);
     stat.called++;
     if (progress) Atomics.store(progress, 0, index);
@@ -275,7 +285,8 @@ export function fuzzApi({
     let result;
     let threw = false;
     try {
-      if (c.kind === "function") result = mod[c.name](...args);
+      if (foreign) result = callAs(c, target.obj, args);
+      else if (c.kind === "function") result = mod[c.name](...args);
       else if (c.kind === "constructor") result = new mod[c.cls](...args);
       else if (c.kind === "static") result = mod[c.cls][c.name](...args);
       else if (c.kind === "getter") result = target.obj[c.name];
@@ -293,9 +304,18 @@ export function fuzzApi({
     if (ms > slowMs)
       report("budget", c, target, args, `${Math.round(ms)} ms (budget ${slowMs} ms)`);
     index++;
-    if (threw) return;
+    if (foreign && !threw)
+      report("contract", c, target, args, "returned with an object of another class as this");
+    if (threw || foreign) return;
     stat.ok++;
     handleResult(result, c, target, args, text);
+  }
+
+  /** `c` of its own class run with `obj` (of another class) as `this`. */
+  function callAs(c, obj, args) {
+    const proto = mod[c.cls].prototype;
+    if (c.kind === "getter") return Object.getOwnPropertyDescriptor(proto, c.name).get.call(obj);
+    return proto[c.name].call(obj, ...args);
   }
 
   class Stop extends Error {}
@@ -351,6 +371,16 @@ export function fuzzApi({
           continue;
         }
         const target = chance(0.04) && freed.length && useFreed ? pick(freed) : pick(live);
+        // Now and then a method of another class runs on the object
+        // (`sl.Other.prototype.m.call(obj, …)`): it must throw and leave the object as it was.
+        if (chance(0.01)) {
+          const others = [...members.keys()].filter((k) => k !== target.cls);
+          const methods = others.length ? (members.get(pick(others)) ?? []) : [];
+          if (methods.length) {
+            call(pick(methods), target, true);
+            continue;
+          }
+        }
         const list = members.get(target.cls) ?? [];
         if (!list.length) {
           index++;
