@@ -365,6 +365,7 @@ const checks = [
         ["free", () => B.free.call(bspline)],
         ["a surface method", () => sl.BezierSurface.prototype.normal.call(bezier, 0.5, 0.5)],
         ["a plain object", () => B.evaluate.call({ __wbg_ptr: 8 }, 0.5)],
+        ["an unbound method", () => B.evaluate.call(undefined, 0.5)],
       ];
       for (const [what, call] of calls) {
         let err = null;
@@ -375,7 +376,7 @@ const checks = [
         }
         assert(err instanceof Error, `${what}: no Error`);
         assert(
-          /^this must be Bezier(Curve|Surface), got (BSplineCurve|BezierCurve|Object)$/.test(
+          /^this must be Bezier(Curve|Surface), got (BSplineCurve|BezierCurve|Object|undefined)$/.test(
             err.message,
           ),
           `${what}: message "${err.message}"`,
