@@ -204,6 +204,16 @@ pub(crate) struct PowerForm<P> {
 }
 
 impl<P: Point> PowerForm<P> {
+    /// Whether every coefficient is finite. The power form's coefficients reach `2^degree`
+    /// times the control points' size (binomials times alternating differences), so control
+    /// points near `f64::MAX` can overflow here where de Casteljau and de Boor (convex
+    /// combinations) stay finite; the dense paths then take those.
+    pub fn is_finite(&self) -> bool {
+        self.c[..=self.degree]
+            .iter()
+            .all(|q| (0..P::DIM).all(|i| q.coord(i).is_finite()))
+    }
+
     /// The same piece with `f` applied to each coefficient (e.g. dropping the weight).
     pub fn map<Q: Point>(&self, f: impl Fn(P) -> Q) -> PowerForm<Q> {
         PowerForm {

@@ -68,25 +68,15 @@ impl<C: Cartesian> BezierCurve<C> {
     /// homogeneous ones with one division for a rational curve), above that by de Casteljau
     /// with one scratch buffer. The ends `s = 0` and `s = 1` are the end control points exactly.
     fn sample_local_into(&self, params: Params, out: &mut [f64]) {
-        let n = self.degree();
-        if n > HORNER_MAX_DEGREE {
+        let Some(piece) = self.power_form() else {
             let mut scratch = Vec::with_capacity(self.homogeneous.len());
             for (i, o) in (0..params.len()).zip(out.chunks_exact_mut(C::DIM)) {
                 self.evaluate_local(params.get(i), &mut scratch).write_to(o);
             }
             return;
-        }
-        let h = &self.homogeneous;
-        let ends = (self.project(h[0]), self.project(h[n]));
-        let mut c = [<C::Homogeneous as crate::geom::Point>::ZERO; HORNER_MAX_DEGREE + 1];
-        c[..=n].copy_from_slice(h);
-        to_power_form(&mut c[..=n]);
-        let piece = PowerForm {
-            c,
-            degree: n,
-            start: 0.0,
-            scale: 1.0,
         };
+        let (h, n) = (&self.homogeneous, self.degree());
+        let ends = (self.project(h[0]), self.project(h[n]));
         let all = 0..params.len();
         if self.rational {
             horner_run(&piece, params, all, C::project, Some(ends), out);
@@ -94,6 +84,25 @@ impl<C: Cartesian> BezierCurve<C> {
             let piece = piece.map(C::numerator);
             horner_run(&piece, params, all, |q| q, Some(ends), out);
         }
+    }
+
+    /// The homogeneous power form on `[0, 1]` for the dense kernel: `None` above
+    /// [`HORNER_MAX_DEGREE`] or when a coefficient overflows (see [`PowerForm::is_finite`]).
+    fn power_form(&self) -> Option<PowerForm<C::Homogeneous>> {
+        let n = self.degree();
+        if n > HORNER_MAX_DEGREE {
+            return None;
+        }
+        let mut c = [<C::Homogeneous as crate::geom::Point>::ZERO; HORNER_MAX_DEGREE + 1];
+        c[..=n].copy_from_slice(&self.homogeneous);
+        to_power_form(&mut c[..=n]);
+        let piece = PowerForm {
+            c,
+            degree: n,
+            start: 0.0,
+            scale: 1.0,
+        };
+        piece.is_finite().then_some(piece)
     }
 
     /// de Casteljau's triangle at `t` in Cartesian form: all levels concatenated, level 0 (the

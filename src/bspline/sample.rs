@@ -146,17 +146,19 @@ impl<C: Cartesian> BSplineCurve<C> {
         }
     }
 
-    /// The power form of span `k` (see [`span_power_form`]), in `s = (u − u_k)/(u_{k+1} − u_k)`.
-    fn power_form(&self, k: usize) -> PowerForm<C::Homogeneous> {
+    /// The power form of span `k` (see [`span_power_form`]), in `s = (u − u_k)/(u_{k+1} − u_k)`;
+    /// `None` when a coefficient overflows (see [`PowerForm::is_finite`]).
+    fn power_form(&self, k: usize) -> Option<PowerForm<C::Homogeneous>> {
         let knots = self.knots.as_slice();
         let mut c = [C::Homogeneous::ZERO; MAX_FAST_DEGREE + 1];
         span_power_form(knots, &self.homogeneous, k, self.degree(), &mut c);
-        PowerForm {
+        let piece = PowerForm {
             c,
             degree: self.degree(),
             start: knots[k],
             scale: 1.0 / (knots[k + 1] - knots[k]),
-        }
+        };
+        piece.is_finite().then_some(piece)
     }
 
     /// Writes `C(u)` for every `u` of `params` (each checked to lie in the domain) into `out`,
@@ -169,8 +171,8 @@ impl<C: Cartesian> BSplineCurve<C> {
         let mut scratch = BasisScratch::default();
         self.for_each_run(params, |k, run| {
             let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
-            if p <= MAX_FAST_DEGREE && run.len() >= POWER_FORM_MIN_RUN {
-                let piece = self.power_form(k);
+            let dense = p <= MAX_FAST_DEGREE && run.len() >= POWER_FORM_MIN_RUN;
+            if let Some(piece) = dense.then(|| self.power_form(k)).flatten() {
                 if self.rational {
                     horner_run(&piece, params, run, C::project, None, outs);
                 } else {
@@ -236,11 +238,11 @@ impl<C: Cartesian> BSplineCurve<C> {
         let p = self.degree();
         self.for_each_run(Params::Slice(us), |k, run| {
             let outs = &mut out[run.start * C::DIM..run.end * C::DIM];
-            if p > MAX_FAST_DEGREE || run.len() < POWER_FORM_MIN_RUN {
+            let dense = p <= MAX_FAST_DEGREE && run.len() >= POWER_FORM_MIN_RUN;
+            let Some(piece) = dense.then(|| self.power_form(k)).flatten() else {
                 short(run, outs);
                 return;
-            }
-            let piece = self.power_form(k);
+            };
             let (c, local) = (&piece.c, (piece.start, piece.scale));
             let us = &us[run];
             // Degrees 1–3 as cubics, 4–5 as quintics (zero leading coefficients; see
