@@ -22,7 +22,7 @@ pub const MAX_SAMPLES: usize = 1 << 22;
 /// in wasm): `count · units per item ≤ MAX_SAMPLE_WORK`, the units priced by the degree.
 /// - curve points (`sample`, `sampleUniform`, their views): `(p + 1)²` (de Boor's basis, de
 ///   Casteljau above the Horner degree). Degrees up to 7 meet [`MAX_SAMPLES`] first; a
-///   degree-64 curve gets 63 535 points (0.5 s) where 2^22 took 19 s.
+///   degree-64 curve gets 63 535 points (0.3–0.5 s) where 2^22 took 19 s.
 /// - `sampleDerivatives` of order `k`: `(p + 1)²·(k' + 1) + 16(k' + 1)² + 64` with
 ///   `k' = min(k, p)`, `k' = k` when rational (`k + 1` basis rows, the quotient rule).
 /// - surface mesh vertices (`tessellate`): `2(p + 1)(q + 1) + 128` (a point and two partials
