@@ -278,11 +278,11 @@ function scratchInto(i, out) {
 }
 
 // A Bézier curve's point at t in JavaScript, on a copy of its homogeneous control points kept
-// on the object (made at the first call, dropped by setControlPoint and setWeight): a call into
-// wasm alone costs ~5 ns, a sixth of what a cubic costs in a JS library, so for degree ≤ 7 the
-// per-point path stays in JS, with the core's formula and operation order (src/bezier/
-// de_casteljau.rs bernstein_small: Σ P_i · (C(m,i) s^i · (1 − s)^{m−i}) over a Pascal table,
-// then the product with 1/w), so it returns the very same numbers as evaluate(t).
+// on the object (made at the first call, dropped by setControlPoint, setWeight and free()): a
+// call into wasm alone costs ~5 ns, a sixth of what a cubic costs in a JS library, so for
+// degree ≤ 7 the per-point path stays in JS, with the core's formula and operation order
+// (src/bezier/de_casteljau.rs bernstein_small: Σ P_i · (C(m,i) s^i · (1 − s)^{m−i}) over a
+// Pascal table, then the product with 1/w), so it returns the very same numbers as evaluate(t).
 const BEZIER_JS_DEGREE = 7;
 const PASCAL = [[1]];
 for (let m = 1; m <= BEZIER_JS_DEGREE; m++) {
@@ -306,8 +306,13 @@ function bezierMirror(curve) {
 {
     const viaWasm = BezierCurve.prototype.evaluateInto;
     BezierCurve.prototype.evaluateInto = function evaluateInto(t, out) {
-        livePtr(this, "BezierCurve");
-        const m = this.__jsMirror === undefined ? bezierMirror(this) : this.__jsMirror;
+        // Only a live BezierCurve gets a mirror (checked when it is made) and free() drops it,
+        // so a call that finds one needs no check of its own.
+        let m = this.__jsMirror;
+        if (m === undefined) {
+            livePtr(this, "BezierCurve");
+            m = bezierMirror(this);
+        }
         // Anything unusual (a high degree, t outside, a short out) takes the checked wasm path.
         if (m === null || !(t >= m.a && t <= m.b) || out === null || typeof out !== "object" || !(out.length >= m.dim)) {
             return viaWasm.call(this, t, out);
@@ -362,13 +367,14 @@ function bezierMirror(curve) {
         if (m.dim === 3) out[2] = z;
         return out;
     };
-    for (const name of ["setControlPoint", "setWeight"]) {
+    for (const name of ["setControlPoint", "setWeight", "free"]) {
         const method = BezierCurve.prototype[name];
         BezierCurve.prototype[name] = function (...args) {
             this.__jsMirror = undefined;
             return method.apply(this, args);
         };
     }
+    if (Symbol.dispose) BezierCurve.prototype[Symbol.dispose] = BezierCurve.prototype.free;
 }
 
 /** Copies \`values\` into \`out\` (the rare path: the scratch call failed but evaluate did not). */

@@ -349,6 +349,21 @@ const checks = [
     },
   ],
   [
+    "a Bézier curve freed (or disposed) after evaluateInto made its JS mirror: evaluateInto says it was freed",
+    () => {
+      for (const end of ["free", Symbol.dispose]) {
+        const c = new sl.BezierCurve(P, 2);
+        near(c.evaluateInto(0.25, new Float64Array(2)), [29 / 16, 23 / 16], 0, "mirror made");
+        c[end]();
+        throwsWith(
+          () => c.evaluateInto(0.25, new Float64Array(2)),
+          /^this BezierCurve was freed$/,
+          `after ${String(end)}`,
+        );
+      }
+    },
+  ],
+  [
     "a method called on an object of another class throws naming both classes and leaves that object as it was",
     () => {
       const bezier = new sl.BezierCurve(P, 2);
