@@ -89,14 +89,36 @@ function views(curve, params, n, check) {
 }
 
 /** Max |a[k·dim + c] − ref[k·stride·dim + c]| over the n items of a strided subset. */
-/** Evaluates a peer point by point: `point(u)` returns an indexable [x, y]; writes `n` points. */
+/** The loops of `pointByPoint`, one per contender (by the source of its `point`). */
+const peerLoops = new Map();
+
+/**
+ * Evaluates a peer point by point: `point(u)` returns an indexable [x, y]; writes `n` points,
+ * in a loop of the contender's own (see `ownLoop`).
+ */
 function pointByPoint(params, n, out, point) {
-  for (let k = 0; k < n; k++) {
-    const q = point(params[k]);
-    out[2 * k] = q[0];
-    out[2 * k + 1] = q[1];
-  }
-  return out;
+  const key = String(point);
+  let loop = peerLoops.get(key);
+  if (!loop) peerLoops.set(key, (loop = ownLoop()));
+  return loop(params, n, out, point);
+}
+
+/**
+ * A loop `(params, n, out, point, scratch)` of its own for one point-by-point contender: its
+ * call of `point` sees that contender only (monomorphic, as bezier-js' inline loop is). With
+ * one loop shared by every contender the call site was megamorphic and the per-call ratios
+ * moved by 2× from run to run (splinelab / bezier-js 0.65× to 1.23× on the same build), with
+ * whatever V8 happened to inline.
+ */
+function ownLoop() {
+  return new Function(
+    "params",
+    "n",
+    "out",
+    "point",
+    "scratch",
+    "for (let k = 0; k < n; k++) { const q = point(params[k], scratch); out[2 * k] = q[0]; out[2 * k + 1] = q[1]; } return out;",
+  );
 }
 
 /** The hand-written JS of the per-call rows: a baseline, apart from the batched one's targets. */
@@ -110,13 +132,16 @@ const JS_PER_CALL = "js per call";
  */
 function perCall(pe, check, calls) {
   const scratch = new Float64Array(2);
-  return calls.map(([lib, method, point]) => ({
-    lib,
-    method,
-    n: pe.n,
-    run: () => pointByPoint(pe.us, pe.n, pe.out, (u) => point(u, scratch)),
-    check: (o) => check(o, pe.n, pe.stride),
-  }));
+  return calls.map(([lib, method, point]) => {
+    const loop = ownLoop();
+    return {
+      lib,
+      method,
+      n: pe.n,
+      run: () => loop(pe.us, pe.n, pe.out, point, scratch),
+      check: (o) => check(o, pe.n, pe.stride),
+    };
+  });
 }
 
 function stridedDiff(out, ref, n, dim, stride) {
