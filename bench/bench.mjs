@@ -88,19 +88,18 @@ function views(curve, params, n, check) {
   ];
 }
 
-/** Max |a[k·dim + c] − ref[k·stride·dim + c]| over the n items of a strided subset. */
 /** The loops of `pointByPoint`, one per contender (by the source of its `point`). */
-const peerLoops = new Map();
+const ownLoops = new Map();
 
 /**
- * Evaluates a peer point by point: `point(u)` returns an indexable [x, y]; writes `n` points,
- * in a loop of the contender's own (see `ownLoop`).
+ * Evaluates a contender point by point: `point(u, scratch)` returns an indexable [x, y];
+ * writes `n` points, in a loop of the contender's own (see `ownLoop`).
  */
-function pointByPoint(params, n, out, point) {
+function pointByPoint(params, n, out, point, scratch) {
   const key = String(point);
-  let loop = peerLoops.get(key);
-  if (!loop) peerLoops.set(key, (loop = ownLoop()));
-  return loop(params, n, out, point);
+  let loop = ownLoops.get(key);
+  if (!loop) ownLoops.set(key, (loop = ownLoop()));
+  return loop(params, n, out, point, scratch);
 }
 
 /**
@@ -132,18 +131,16 @@ const JS_PER_CALL = "js per call";
  */
 function perCall(pe, check, calls) {
   const scratch = new Float64Array(2);
-  return calls.map(([lib, method, point]) => {
-    const loop = ownLoop();
-    return {
-      lib,
-      method,
-      n: pe.n,
-      run: () => loop(pe.us, pe.n, pe.out, point, scratch),
-      check: (o) => check(o, pe.n, pe.stride),
-    };
-  });
+  return calls.map(([lib, method, point]) => ({
+    lib,
+    method,
+    n: pe.n,
+    run: () => pointByPoint(pe.us, pe.n, pe.out, point, scratch),
+    check: (o) => check(o, pe.n, pe.stride),
+  }));
 }
 
+/** Max |a[k·dim + c] − ref[k·stride·dim + c]| over the n items of a strided subset. */
 function stridedDiff(out, ref, n, dim, stride) {
   let m = 0;
   for (let k = 0; k < n; k++) {

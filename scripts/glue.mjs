@@ -164,9 +164,9 @@ for (const c of classes) {
   // `free()` twice does nothing (the glue would pass pointer 0 to the Rust destructor).
   c.text = replaceCounted(
     c.text,
-    /( {4}free\(\) \{\n {8}const ptr = this\.__destroy_into_raw\(\);\n {8})(wasm\.__wbg_\w+_free\(ptr, 0\);)/g,
-    (_, head, call) =>
-      `    free() {\n        checkThis(this, ${JSON.stringify(c.name)});\n${head.slice("    free() {\n".length)}if (ptr) ${call}`,
+    / {4}free\(\) \{\n( {8}const ptr = this\.__destroy_into_raw\(\);\n {8})(wasm\.__wbg_\w+_free\(ptr, 0\);)/g,
+    (_, destroy, call) =>
+      `    free() {\n        checkThis(this, ${JSON.stringify(c.name)});\n${destroy}if (ptr) ${call}`,
     1,
     `${c.name}: free()`,
   );
@@ -241,7 +241,7 @@ function wrongThis(obj, name) {
 
 /** The pointer of a live object of class \`name\`, or an Error: another class, or freed. */
 function livePtr(obj, name) {
-    if (obj?.__slClass !== name) throw wrongThis(obj, name);
+    checkThis(obj, name);
     const ptr = obj.__wbg_ptr;
     if (!ptr) throw codedError(\`this \${name} was freed\`, "freed", { className: name });
     return ptr;

@@ -79,7 +79,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// The derivative of order `order` at every parameter of `params` into `out` (`DIM` numbers
     /// each), walking the pieces: sorted parameters visit each piece once.
     fn sample_params_into(&self, params: Params, order: usize, out: &mut [f64]) -> Result<()> {
-        check_out_len(out.len(), params.len(), C::DIM, 3)?;
+        check_out_len(out.len(), params.len(), C::DIM, self.sample_degree())?;
         let domain = self.domain();
         let last = self.params.len() - 2;
         let mut index = 0;
