@@ -18,6 +18,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod curve;
 pub mod error;
+pub mod expr;
 pub mod geom;
 pub mod interp;
 mod platform;

@@ -1,0 +1,264 @@
+//! What can be wrong with a typed expression, where, and the English words for it.
+//!
+//! An [`ExprError`] names the piece and the field (`pieces[1].y`) when it belongs to one, the
+//! characters to underline (UTF-16 code units, as JavaScript counts) and a [`Problem`] with a
+//! stable code of its own (`"unknown-name"`), so a page can underline the exact characters and
+//! say why in its own language. It reaches JavaScript as [`crate::Error::Expression`].
+
+use std::fmt;
+
+/// What is wrong. Each variant has a stable kebab-case code ([`Problem::code`]) and its fields
+/// become the thrown Error's `params` (camelCase) beside `piece`, `field`, `start` and `end`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    all(target_arch = "wasm32", target_os = "unknown"),
+    derive(serde::Serialize),
+    serde(untagged, rename_all_fields = "camelCase")
+)]
+pub enum Problem {
+    /// Nothing typed: `""`, `"  "`.
+    Empty {},
+    /// Longer than [`super::MAX_LENGTH`] code units.
+    TooLong {
+        /// Its length.
+        length: usize,
+        /// The cap.
+        max: usize,
+    },
+    /// Parentheses, powers or function calls nested deeper than [`super::MAX_NESTING`].
+    TooDeep {
+        /// The cap.
+        max: usize,
+    },
+    /// More than [`super::MAX_NODES`] numbers, names and operations.
+    TooManyNodes {
+        /// The cap.
+        max: usize,
+    },
+    /// A character the language does not use: `#`, `,` (a decimal comma: write `2.5`), `|`
+    /// (write `abs(t)`), `=`.
+    UnexpectedCharacter {
+        /// The character.
+        character: String,
+    },
+    /// A number, name or `(` was expected: `2+`, `*t`, `()`, `t+)`.
+    ExpectedOperand {
+        /// What was found instead (`"+"`, `")"`, or `""` at the end of the text).
+        found: String,
+    },
+    /// Two operands with no operator where an implicit product is not allowed: `2 3`.
+    MissingOperator {
+        /// The second operand as typed.
+        found: String,
+    },
+    /// A `(` never closed: `sin(t`.
+    UnclosedParenthesis {},
+    /// A `)` with no `(` before it: `t)`.
+    UnmatchedParenthesis {},
+    /// A name that is neither `t`, a constant, a function nor a declared parameter.
+    UnknownName {
+        /// The name as typed.
+        name: String,
+    },
+    /// A function written without parentheses: `sin t` (write `sin(t)`).
+    FunctionNeedsParentheses {
+        /// The function's name.
+        name: String,
+    },
+    /// A power of a function other than a whole number ≥ 1 before its argument: `sin^-1(t)`
+    /// (write `asin(t)`), `sin^x(t)`. `sin^2(t)` is read as `(sin(t))^2`.
+    FunctionPower {
+        /// The function's name.
+        name: String,
+    },
+    /// An implicit product right after a division: `1/2t` (write `(1/2)t` or `1/(2t)`).
+    AmbiguousDivision {
+        /// The typed text: `"1/2t"`.
+        text: String,
+        /// It read as a product: `"(1/2)t"`.
+        product: String,
+        /// It read as a quotient: `"1/(2t)"`.
+        quotient: String,
+    },
+    /// A number right after a name: `t2` (write `2t` or `t^2`), `2e3`.
+    NumberAfterName {
+        /// The name.
+        name: String,
+        /// The number as typed.
+        number: String,
+    },
+    /// A number that is not one: `1.2.3`, `.`.
+    InvalidNumber {
+        /// The text.
+        text: String,
+    },
+    /// A parameter name that is not a single letter (other than `t` and `e`) or one letter
+    /// with a subscript (`a_1`), or a name already taken by `t`, a constant or a function.
+    InvalidParameterName {
+        /// The name.
+        name: String,
+    },
+    /// `setParameter` of a name the curve does not have.
+    UnknownParameter {
+        /// The name.
+        name: String,
+    },
+    /// A parameter's value or an interval bound that is NaN or infinite: `from = "ln(0)"`.
+    NotFiniteValue {
+        /// The value.
+        value: f64,
+    },
+    /// A piece whose interval is empty or reversed.
+    EmptyInterval {
+        /// Its start.
+        from: f64,
+        /// Its end.
+        to: f64,
+    },
+    /// Piece i+1 does not start where piece i ends.
+    PiecesDoNotJoin {
+        /// Piece i's end.
+        previous: f64,
+        /// Piece i+1's start.
+        from: f64,
+    },
+    /// A field that every piece needs is missing (`x`, `y`, `from`, `to`), or `z` on some
+    /// pieces only.
+    MissingField {},
+    /// No pieces, or more than [`super::MAX_PIECES`].
+    PieceCount {
+        /// How many were given.
+        count: usize,
+        /// The cap.
+        max: usize,
+    },
+}
+
+impl Problem {
+    /// The stable code (`"unknown-name"`), one per variant.
+    pub fn code(&self) -> &'static str {
+        match self {
+            Problem::Empty { .. } => "expression-empty",
+            Problem::TooLong { .. } => "expression-too-long",
+            Problem::TooDeep { .. } => "expression-too-deep",
+            Problem::TooManyNodes { .. } => "expression-too-large",
+            Problem::UnexpectedCharacter { .. } => "unexpected-character",
+            Problem::ExpectedOperand { .. } => "expected-operand",
+            Problem::MissingOperator { .. } => "missing-operator",
+            Problem::UnclosedParenthesis { .. } => "unclosed-parenthesis",
+            Problem::UnmatchedParenthesis { .. } => "unmatched-parenthesis",
+            Problem::UnknownName { .. } => "unknown-name",
+            Problem::FunctionNeedsParentheses { .. } => "function-needs-parentheses",
+            Problem::FunctionPower { .. } => "function-power",
+            Problem::AmbiguousDivision { .. } => "ambiguous-division",
+            Problem::NumberAfterName { .. } => "number-after-name",
+            Problem::InvalidNumber { .. } => "invalid-number",
+            Problem::InvalidParameterName { .. } => "invalid-parameter-name",
+            Problem::UnknownParameter { .. } => "unknown-parameter",
+            Problem::NotFiniteValue { .. } => "not-finite-value",
+            Problem::EmptyInterval { .. } => "empty-piece-interval",
+            Problem::PiecesDoNotJoin { .. } => "pieces-do-not-join",
+            Problem::MissingField { .. } => "missing-field",
+            Problem::PieceCount { .. } => "piece-count",
+        }
+    }
+}
+
+/// A [`Problem`] and where it is.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(
+    all(target_arch = "wasm32", target_os = "unknown"),
+    derive(serde::Serialize),
+    serde(rename_all = "camelCase")
+)]
+pub struct ExprError {
+    /// The piece (0-based), when the error belongs to one.
+    pub piece: Option<usize>,
+    /// The field: `"x"`, `"y"`, `"z"`, `"from"`, `"to"`, or a parameter's name for its value.
+    pub field: Option<String>,
+    /// First UTF-16 code unit to underline (0 with `end` 0: nothing to underline).
+    pub start: usize,
+    /// One past the last.
+    pub end: usize,
+    /// What is wrong.
+    #[cfg_attr(all(target_arch = "wasm32", target_os = "unknown"), serde(flatten))]
+    pub problem: Problem,
+}
+
+impl ExprError {
+    /// An error at `start..end` of a text not yet placed in a piece (the parser's).
+    pub fn at(start: usize, end: usize, problem: Problem) -> Self {
+        ExprError {
+            piece: None,
+            field: None,
+            start,
+            end,
+            problem,
+        }
+    }
+
+    /// The same error, placed in `field` of piece `piece`.
+    pub fn in_field(mut self, piece: usize, field: &str) -> Self {
+        self.piece = Some(piece);
+        self.field = Some(field.to_string());
+        self
+    }
+}
+
+impl fmt::Display for ExprError {
+    /// `pieces[1].y, characters 3–4: unknown name "q"; …`
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.piece, &self.field) {
+            (Some(p), Some(field)) => write!(f, "pieces[{p}].{field}")?,
+            (Some(p), None) => write!(f, "pieces[{p}]")?,
+            (None, Some(field)) => write!(f, "{field}")?,
+            (None, None) => f.write_str("expression")?,
+        }
+        if self.end > self.start {
+            write!(f, ", characters {}–{}", self.start, self.end)?;
+        }
+        write!(f, ": {}", self.problem)
+    }
+}
+
+/// A number as JavaScript's `String(x)` writes it (the crate's messages all do).
+fn num(x: f64) -> String {
+    crate::platform::number_text(x)
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Problem::Empty {} => f.write_str("nothing is typed; write an expression in t, such as cos(t)"),
+            Problem::TooLong { length, max } => write!(f, "the expression has {length} characters; at most {max} are allowed"),
+            Problem::TooDeep { max } => write!(f, "parentheses, powers and functions are nested more than {max} deep"),
+            Problem::TooManyNodes { max } => write!(f, "the expression has more than {max} numbers, names and operations"),
+            Problem::UnexpectedCharacter { character } => match character.as_str() {
+                "," => f.write_str("\",\" is not used: write decimals with a point (2.5)"),
+                "|" => f.write_str("\"|\" is not used: write abs(t)"),
+                c => write!(f, "\"{c}\" is not part of the language; use numbers, t, + − * / ^ and parentheses"),
+            },
+            Problem::ExpectedOperand { found } if found.is_empty() => f.write_str("the expression ends where a number, a name or \"(\" is needed"),
+            Problem::ExpectedOperand { found } => write!(f, "a number, a name or \"(\" is needed before \"{found}\""),
+            Problem::MissingOperator { found } => write!(f, "an operator is missing before \"{found}\" (write * or + between them)"),
+            Problem::UnclosedParenthesis {} => f.write_str("this \"(\" is never closed; add \")\""),
+            Problem::UnmatchedParenthesis {} => f.write_str("this \")\" has no \"(\" before it"),
+            Problem::UnknownName { name } => write!(f, "unknown name \"{name}\"; use t, pi, e, a function such as sin(t), or a parameter"),
+            Problem::FunctionNeedsParentheses { name } => write!(f, "{name} needs parentheses: write {name}(t)"),
+            Problem::FunctionPower { name } => match name.as_str() {
+                "sin" | "cos" | "tan" => write!(f, "{name}^ needs a whole number ≥ 1 (sin^2(t)); the inverse is a{name}(t)"),
+                _ => write!(f, "{name}^ needs a whole number ≥ 1 before the parentheses: {name}^2(t) means ({name}(t))^2"),
+            },
+            Problem::AmbiguousDivision { text, product, quotient } => write!(f, "\"{text}\" is ambiguous: write {product} or {quotient}"),
+            Problem::NumberAfterName { name, number } => write!(f, "a number after a name: write {number}{name} or {name}^{number}"),
+            Problem::InvalidNumber { text } => write!(f, "\"{text}\" is not a number"),
+            Problem::InvalidParameterName { name } => write!(f, "\"{name}\" cannot be a parameter: use one letter other than t and e (a, b, ω) or a letter with a subscript (a_1)"),
+            Problem::UnknownParameter { name } => write!(f, "the curve has no parameter \"{name}\""),
+            Problem::NotFiniteValue { value } => write!(f, "the value is {}; it must be a finite number", num(*value)),
+            Problem::EmptyInterval { from, to } => write!(f, "the interval [{}, {}] is empty; it needs from < to", num(*from), num(*to)),
+            Problem::PiecesDoNotJoin { previous, from } => write!(f, "starts at {} but the previous piece ends at {}; pieces join in t", num(*from), num(*previous)),
+            Problem::MissingField {} => f.write_str("this field is missing; every piece needs x, y, from and to (and z on every piece or none)"),
+            Problem::PieceCount { count, max } => write!(f, "a curve needs 1 to {max} pieces, got {count}"),
+        }
+    }
+}
