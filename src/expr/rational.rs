@@ -110,7 +110,7 @@ impl Rational {
     }
 
     /// `self + other`.
-    pub fn add(self, other: Rational) -> Option<Rational> {
+    pub fn checked_add(self, other: Rational) -> Option<Rational> {
         let g = gcd(self.den, other.den);
         let a = self.num.checked_mul(other.den / g)?;
         let b = other.num.checked_mul(self.den / g)?;
@@ -118,12 +118,12 @@ impl Rational {
     }
 
     /// `self − other`.
-    pub fn sub(self, other: Rational) -> Option<Rational> {
-        self.add(other.neg()?)
+    pub fn checked_sub(self, other: Rational) -> Option<Rational> {
+        self.checked_add(other.checked_neg()?)
     }
 
     /// `−self`.
-    pub fn neg(self) -> Option<Rational> {
+    pub fn checked_neg(self) -> Option<Rational> {
         Some(Rational {
             num: self.num.checked_neg()?,
             den: self.den,
@@ -131,7 +131,7 @@ impl Rational {
     }
 
     /// `self · other`.
-    pub fn mul(self, other: Rational) -> Option<Rational> {
+    pub fn checked_mul(self, other: Rational) -> Option<Rational> {
         let g1 = gcd(self.num, other.den).max(1);
         let g2 = gcd(other.num, self.den).max(1);
         Rational::new(
@@ -141,17 +141,17 @@ impl Rational {
     }
 
     /// `self / other`; `None` when `other` is 0.
-    pub fn div(self, other: Rational) -> Option<Rational> {
+    pub fn checked_div(self, other: Rational) -> Option<Rational> {
         if other.num == 0 {
             return None;
         }
-        self.mul(Rational::new(other.den, other.num)?)
+        self.checked_mul(Rational::new(other.den, other.num)?)
     }
 
     /// `self^k` for an integer `k` (negative: the reciprocal's power; `None` for 0^negative).
     pub fn pow(self, k: i32) -> Option<Rational> {
         let mut base = if k < 0 {
-            Rational::ONE.div(self)?
+            Rational::ONE.checked_div(self)?
         } else {
             self
         };
@@ -159,11 +159,11 @@ impl Rational {
         let mut acc = Rational::ONE;
         while e > 0 {
             if e & 1 == 1 {
-                acc = acc.mul(base)?;
+                acc = acc.checked_mul(base)?;
             }
             e >>= 1;
             if e > 0 {
-                base = base.mul(base)?;
+                base = base.checked_mul(base)?;
             }
         }
         Some(acc)
@@ -223,11 +223,11 @@ mod tests {
 
     #[test]
     fn arithmetic_is_exact() {
-        assert_eq!(r(1, 3).add(r(1, 6)), Some(r(1, 2)));
-        assert_eq!(r(1, 3).sub(r(1, 2)), Some(r(-1, 6)));
-        assert_eq!(r(2, 3).mul(r(9, 4)), Some(r(3, 2)));
-        assert_eq!(r(2, 3).div(r(4, 9)), Some(r(3, 2)));
-        assert_eq!(r(2, 3).div(Rational::ZERO), None);
+        assert_eq!(r(1, 3).checked_add(r(1, 6)), Some(r(1, 2)));
+        assert_eq!(r(1, 3).checked_sub(r(1, 2)), Some(r(-1, 6)));
+        assert_eq!(r(2, 3).checked_mul(r(9, 4)), Some(r(3, 2)));
+        assert_eq!(r(2, 3).checked_div(r(4, 9)), Some(r(3, 2)));
+        assert_eq!(r(2, 3).checked_div(Rational::ZERO), None);
         assert_eq!(r(-2, 3).pow(3), Some(r(-8, 27)));
         assert_eq!(r(2, 3).pow(-2), Some(r(9, 4)));
         assert!(r(1, 3) < r(1, 2));
@@ -237,8 +237,8 @@ mod tests {
     #[test]
     fn overflow_is_reported_not_wrapped() {
         let big = Rational::integer(i128::MAX / 2);
-        assert_eq!(big.mul(Rational::integer(4)), None);
-        assert_eq!(Rational::integer(i128::MIN).neg(), None);
+        assert_eq!(big.checked_mul(Rational::integer(4)), None);
+        assert_eq!(Rational::integer(i128::MIN).checked_neg(), None);
     }
 
     #[test]
