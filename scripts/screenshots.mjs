@@ -19,7 +19,11 @@ const only = process.argv.slice(2).find((arg) => !arg.startsWith("--")) ?? "";
 
 /** Waits until a demo (in the page or a shadow root, by CSS prefix) is drawn and typeset. */
 async function demoReady(page, scope = "") {
-  await page.locator(`${scope}.sl-figure[data-handles]`).first().waitFor({ state: "attached" });
+  // The handles' positions are written once mounted; a demo without handles has its canvas.
+  await page
+    .locator(`${scope}.sl-figure[data-handles], ${scope}.sl-figure:has(.sl-canvas)`)
+    .first()
+    .waitFor({ state: "attached" });
   await page.locator(`${scope}.sl-formula .katex`).first().waitFor({ state: "attached" });
   await page.evaluate(() => document.fonts.ready);
   await page.evaluate(

@@ -164,6 +164,9 @@ export const demos = Object.freeze(
       strings: "surfaceRevolution",
       load: () => import("./surface-revolution.js"),
     },
+    // Section 1 (the gallery groups by section, keeping this order within it): the typed
+    // piecewise curve, after `parametric-curve`.
+    { id: "piecewise", section: 1, strings: "piecewise", load: () => import("./piecewise.js") },
   ].map(Object.freeze),
 );
 

@@ -6,7 +6,8 @@
  * are `exercise.<id>.title | task | hint` in the string tables. Opened at `#exercise=<id>` (the
  * state follows in `&s=`) or embedded with `<spline-lab exercise="<id>">` (lib/exercise.js).
  */
-import { formatNumber } from "../lib/strings.js";
+import { formatNumber, t } from "../lib/strings.js";
+import { orderText } from "../lib/continuity.js";
 
 /** Flat [x0, y0, x1, y1, …] of [[x, y], …]. */
 const flat = (points) => points.flat();
@@ -63,6 +64,37 @@ export const exercises = Object.freeze(
           state.right[0][1] - state.left[3][1],
         );
         return { solved: jointOrder(sl, state) >= 0, detail: num(gap) };
+      },
+    },
+    {
+      id: "piecewise-c1",
+      section: 1,
+      demo: "piecewise",
+      state: {
+        pieces: [
+          { x: "1 - t^2", y: "t", from: "0", to: "1" },
+          { x: "2 - t^2", y: "t", from: "1", to: "2" },
+        ],
+      },
+      /**
+       * C¹ at t = 1: the core's `joints()[0].c ≥ 1` (proven in exact arithmetic for polynomial
+       * pieces; measured otherwise). One solution: x = t² − 4t + 3, y = t.
+       */
+      check(sl, state) {
+        const curve = sl.parametricCurve(state.pieces);
+        try {
+          const joint = curve.joints()[0];
+          if (!joint) return { solved: false, detail: t("piecewise.noJoints") };
+          const found =
+            joint.c < 0
+              ? t("piecewise.verdict.broken")
+              : joint.c === Infinity
+                ? orderText("C", Infinity)
+                : orderText("C", joint.c);
+          return { solved: joint.c >= 1, detail: found };
+        } finally {
+          curve.free();
+        }
       },
     },
     {

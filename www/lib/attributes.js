@@ -11,6 +11,12 @@
  * | list of [x, y] points  | `points="0,0 2,2 6,4"`   | [[0,0],[2,2],[6,4]]      |
  * | list of [x, y, z]      | `points="0,0,0 1,0,2"`   | [[0,0,0],[1,0,2]]        |
  * | list of numbers        | `knots="0 0 0 1 2 2 2"`  | [0,0,0,1,2,2,2]          |
+ * | list of records of texts | `pieces="1-t^2, t, 0, 1; t^2-4t+3, t, 1, 2"` | [{x:"1-t^2", y:"t", from:"0", to:"1"}, …] |
+ *
+ * A list of records (a piecewise curve's pieces) is written record by record, separated by
+ * ";", each record's texts separated by "," in the order of the default's first record's keys
+ * (`x, y, from, to`); the texts are trimmed. The expression language has neither "," nor ";"
+ * (no decimal comma, one-argument functions), so a formula never needs escaping.
  *
  * Field names in camelCase map to kebab-case attributes (`startTangent` ↔ `start-tangent`);
  * `view="xmin ymin xmax ymax"` sets the window (a 3D demo: the camera
@@ -53,6 +59,22 @@ function parsePoints(text, dimension = 2) {
     });
 }
 
+/** Records "a, b, c; d, e, f" with the keys of `keys`, in order (texts trimmed). */
+function parseRecords(text, keys) {
+  return text
+    .split(";")
+    .map((part) => part.trim())
+    .filter(Boolean)
+    .map((part) => {
+      const values = part.split(",").map((value) => value.trim());
+      if (values.length !== keys.length)
+        throw new Error(t("error.recordShape", { value: part, fields: keys.join(", ") }));
+      return Object.fromEntries(keys.map((key, i) => [key, values[i]]));
+    });
+}
+
+const isRecord = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+
 /** Reads one attribute value shaped like `example`. */
 export function parseAttribute(text, example) {
   if (typeof example === "number") return parseNumber(text);
@@ -61,6 +83,8 @@ export function parseAttribute(text, example) {
   if (typeof example === "string") return text;
   if (Array.isArray(example) && Array.isArray(example[0]))
     return parsePoints(text, example[0].length === 3 ? 3 : 2);
+  if (Array.isArray(example) && isRecord(example[0]))
+    return parseRecords(text, Object.keys(example[0]));
   if (Array.isArray(example)) return parseList(text);
   return JSON.parse(text);
 }

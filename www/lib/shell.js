@@ -106,7 +106,13 @@ export function mountDemo(
   const help = el("p", {
     class: "sl-help",
     id: helpId,
-    text: t(demo.figure3d ? "shell.figureHelp3d" : "shell.figureHelp"),
+    text: t(
+      demo.figure3d
+        ? "shell.figureHelp3d"
+        : demo.figure?.handles || !demo.figure
+          ? "shell.figureHelp"
+          : "shell.figureHelpTyped",
+    ),
   });
   const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
   const formula = el("div", { class: "sl-formula" });

@@ -29,6 +29,8 @@ import { PATCH_DE_CASTELJAU } from "./strings/patch-de-casteljau.js";
 import { PATCH_SUBDIVISION } from "./strings/patch-subdivision.js";
 // The curve library's errors by code (lib/core-errors.js writes them).
 import { CORE_ERRORS } from "./strings/core-errors.js";
+// Section 1: the typed piecewise curve.
+import { PIECEWISE } from "./strings/piecewise.js";
 
 const EN = {
   // Application and gallery
@@ -146,6 +148,8 @@ const EN = {
     "Drag a point (in the plane facing you), or press Tab to select one: arrow keys move it (Shift: 10 px), PageUp/PageDown towards or away from you. Drag empty space to orbit, Shift-drag or two fingers to pan, wheel or pinch to zoom; with no point selected the arrow keys orbit.",
   "shell.figureHelp":
     "Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Drag empty space to pan; wheel or pinch to zoom.",
+  "shell.figureHelpTyped":
+    "The curve follows the formulas typed in the panel. Drag the figure to pan; wheel or pinch to zoom.",
   "shell.openInPlayground": "Open in the playground",
 
   // Handles (figure accessibility: role description, live-region announcements)
@@ -198,6 +202,7 @@ const EN = {
   "error.version": "unsupported file version {version} (this page reads version {expected})",
   "error.wrongDemo": "the file is for the demo “{found}”, not “{expected}”",
   "error.attribute": "attribute “{name}”: {message}",
+  "error.recordShape": "“{value}” must have one text for each of {fields}, separated by commas",
   "error.unknownDemo": "there is no demo called “{id}”",
 
   // Shared controls
@@ -1262,6 +1267,7 @@ const EN = {
   ...BSPLINE_INTERPOLATION,
   ...INTERPOLATE_APPROXIMATE,
   ...CORE_ERRORS,
+  ...PIECEWISE,
 };
 
 const locales = { en: EN };
