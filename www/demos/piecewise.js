@@ -18,14 +18,14 @@
  * speed on [1, 3/2]: G¹ (indeed the same shape) but P′ doubles, so only C⁰.
  */
 import { actions, group, readout } from "../lib/panel.js";
-import { el, setText } from "../lib/controls.js";
-import { exactText, shortNumber } from "../lib/format.js";
+import { shortNumber } from "../lib/format.js";
 import { orderText, orderTex } from "../lib/continuity.js";
 import { placeLabel, placeLabelBeside } from "../lib/handles.js";
-import { CYCLE, WIDTH, RADIUS, themed } from "../lib/theme.js";
+import { CYCLE, HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { arrow } from "../lib/draw.js";
-import { detailsTable, headerRow } from "../lib/table.js";
+import { boxOf, middleVertex, runsPath } from "../lib/plot-runs.js";
+import { oneSidedTables } from "../lib/one-sided-table.js";
 import { pieceFields } from "../lib/piece-fields.js";
 
 export const id = "piecewise";
@@ -101,40 +101,8 @@ export const derive = {
 const BOX_SAMPLES = 256;
 const TOLERANCE_FRACTION = 1e-3;
 const PLOT_MARGIN = 1;
-/** A range wider than this many times the 5–95 % spread has a pole: the box keeps the spread. */
-const POLE_SPREAD = 20;
 /** The longest velocity arrow is this fraction of the box's diagonal. */
 const ARROW_FRACTION = 0.22;
-
-/** The box of the finite samples (a pole's far values left out), never empty. */
-function boxOf(samples) {
-  const xs = [];
-  const ys = [];
-  for (const flat of samples) {
-    for (let k = 0; k + 1 < flat.length; k += 2) {
-      if (Number.isFinite(flat[k]) && Number.isFinite(flat[k + 1])) {
-        xs.push(flat[k]);
-        ys.push(flat[k + 1]);
-      }
-    }
-  }
-  if (xs.length === 0) return [-1, -1, 1, 1];
-  const range = (v) => {
-    v.sort((a, b) => a - b);
-    const lo = v[Math.floor(0.05 * (v.length - 1))];
-    const hi = v[Math.ceil(0.95 * (v.length - 1))];
-    const spread = hi - lo;
-    return v[v.length - 1] - v[0] > POLE_SPREAD * spread && spread > 0
-      ? [lo - spread, hi + spread]
-      : [v[0], v[v.length - 1]];
-  };
-  let [x0, x1] = range(xs);
-  let [y0, y1] = range(ys);
-  const size = Math.max(x1 - x0, y1 - y0, 1e-9);
-  if (x1 - x0 < 1e-3 * size || x1 === x0) [x0, x1] = [x0 - size / 2 || -1, x1 + size / 2 || 1];
-  if (y1 - y0 < 1e-3 * size || y1 === y0) [y0, y1] = [y0 - size / 2 || -1, y1 + size / 2 || 1];
-  return [x0, y0, x1, y1];
-}
 
 /** Each piece's plot (the core's adaptive polyline, runs split at NaN) and the box shown. */
 function plotPieces(d) {
@@ -192,7 +160,14 @@ function jointsOf(d) {
       verdict,
       how,
       text: t("piecewise.joint", { t: shortNumber(j.t), verdict }),
-      figureLabel: `${verdict} (${t(j.exact ? "piecewise.formula.proven" : "piecewise.formula.measured")})`,
+      leftArrow: t("piecewise.leftArrow", { t: shortNumber(j.t) }),
+      rightArrow: t("piecewise.rightArrow", { t: shortNumber(j.t) }),
+      tag: `t = ${shortNumber(j.t)}`,
+      figureLabel: t("piecewise.figureVerdict", {
+        t: shortNumber(j.t),
+        verdict: j.c < 0 ? t("piecewise.formula.notC0") : verdict,
+        how: t(j.exact ? "piecewise.formula.proven" : "piecewise.formula.measured"),
+      }),
     };
   });
 }
@@ -289,11 +264,12 @@ export const figure = {
 const pieceStyles = Object.freeze(
   CYCLE.map((stroke) => Object.freeze({ stroke, width: WIDTH.curve, join: "round", cap: "round" })),
 );
-const arrowStyles = Object.freeze(
-  CYCLE.map((stroke, k) =>
-    Object.freeze({ stroke, width: k % 2 === 0 ? 4 : 2, cap: "round", join: "round" }),
-  ),
-);
+/**
+ * The velocity arriving, P′(a⁻) (vermillion, wide, under), and leaving, P′(a⁺) (blue, narrow,
+ * over): hues no piece uses, so an arrow along its piece still shows; equal arrows show both.
+ */
+const ARRIVING = Object.freeze({ stroke: HUES.vermillion, width: 4, cap: "round", join: "round" });
+const LEAVING = Object.freeze({ stroke: HUES.blue, width: 2, cap: "round", join: "round" });
 const endStyles = Object.freeze(
   CYCLE.map((fill) => Object.freeze({ fill, radius: RADIUS.constructionPoint + 1 })),
 );
@@ -306,38 +282,14 @@ const jointStyles = themed((theme) => ({
     radius: RADIUS.pointOnCurve,
   }),
 }));
-/** Distance of a joint's verdict from its arrow (CSS px). */
-const VERDICT_OFFSET_PX = 16;
+/** Distance of a joint's tag "t = 1" from the joint (CSS px). */
+const TAG_OFFSET_PX = 8;
+/** Margin of the verdicts from the canvas corner (CSS px), and their line height (font sizes). */
+const TEXT_MARGIN_PX = 12;
+const VERDICT_LINE_HEIGHT = 1.35;
 const LABEL_OFFSET_PX = 10;
-
-/** The runs of a flat polyline with NaN vertices between them, as one path. */
-function runsPath(r, v, flat) {
-  r.beginPath();
-  let open = false;
-  for (let k = 0; k + 1 < flat.length; k += 2) {
-    const x = flat[k];
-    const y = flat[k + 1];
-    if (!Number.isFinite(x) || !Number.isFinite(y)) {
-      open = false;
-      continue;
-    }
-    if (open) r.lineTo(v.sx(x), v.sy(y));
-    else r.moveTo(v.sx(x), v.sy(y));
-    open = true;
-  }
-}
-
-/** A finite vertex near the middle of a flat polyline (a piece's name goes there), or -1. */
-function middleVertex(flat) {
-  const n = flat.length / 2;
-  for (let step = 0; step < n; step++) {
-    for (const k of [Math.floor(n / 2) + step, Math.floor(n / 2) - step]) {
-      if (k >= 0 && k < n && Number.isFinite(flat[2 * k]) && Number.isFinite(flat[2 * k + 1]))
-        return k;
-    }
-  }
-  return -1;
-}
+/** Distance of an arrow's name from the arrow's middle (CSS px). */
+const ARROW_LABEL_OFFSET_PX = 14;
 
 /** Each piece in its colour and named; at each joint the ends, the velocities and the verdict. */
 export function draw(r, v, s, d) {
@@ -376,9 +328,8 @@ export function draw(r, v, s, d) {
     const ly = -a[1] * scale * v.scale;
     const rx = b[0] * scale * v.scale;
     const ry = -b[1] * scale * v.scale;
-    if (Number.isFinite(lx + ly + px + py)) arrow(r, px - lx, py - ly, px, py, arrowStyles[i % 4]);
-    if (Number.isFinite(rx + ry + qx + qy))
-      arrow(r, qx, qy, qx + rx, qy + ry, arrowStyles[(i + 1) % 4]);
+    if (Number.isFinite(lx + ly + px + py)) arrow(r, px - lx, py - ly, px, py, ARRIVING);
+    if (Number.isFinite(rx + ry + qx + qy)) arrow(r, qx, qy, qx + rx, qy + ry, LEAVING);
     if (!finite) return;
     if (j.c < 0) {
       r.point(px, py, endStyles[i % CYCLE.length]);
@@ -386,26 +337,40 @@ export function draw(r, v, s, d) {
     } else {
       r.point(qx, qy, jointStyles(theme).point);
     }
-    const dx = Number.isFinite(rx + ry) && Math.hypot(rx, ry) > 1 ? rx : 1;
-    const dy = Number.isFinite(rx + ry) && Math.hypot(rx, ry) > 1 ? ry : 0;
-    placeLabelBeside(
-      r,
-      j.figureLabel,
-      qx,
-      qy,
-      dx,
-      dy,
-      -1,
-      VERDICT_OFFSET_PX * r.scale,
-      jointStyles(theme).text,
-    );
+    // The arrows named on their left, the verdict on the right of the mean direction.
+    const style = jointStyles(theme).text;
+    const offset = ARROW_LABEL_OFFSET_PX * r.scale;
+    const ll = Math.hypot(lx, ly);
+    const rl = Math.hypot(rx, ry);
+    if (ll > 1)
+      placeLabelBeside(r, j.leftArrow, px - lx / 2, py - ly / 2, lx, ly, 1, offset, style);
+    if (rl > 1)
+      placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, 1, offset, style);
+    let mx = (ll > 1 ? lx / ll : 0) + (rl > 1 ? rx / rl : 0);
+    let my = (ll > 1 ? ly / ll : 0) + (rl > 1 ? ry / rl : 0);
+    const m = Math.hypot(mx, my);
+    if (m > 1e-6) {
+      mx /= m;
+      my /= m;
+    } else {
+      mx = 1;
+      my = 0;
+    }
+    const tx = j.c < 0 ? (px + qx) / 2 : qx;
+    const ty = j.c < 0 ? (py + qy) / 2 : qy;
+    placeLabel(r, j.tag, tx, ty, -my, mx, TAG_OFFSET_PX * r.scale, style);
+  });
+  // The verdicts, top left (the tag names the joint in the figure).
+  const margin = TEXT_MARGIN_PX * r.scale;
+  const step = VERDICT_LINE_HEIGHT * theme.label.size * r.scale;
+  d.joints.forEach((j, i) => {
+    r.text(j.figureLabel, margin, margin + i * step, jointStyles(theme).text, "left", "top");
   });
 }
 
 // ------------------------------------------------------------ formula, label, table
 
 const PRIMES = Object.freeze(["", "'", "''", "'''"]);
-const PRIME_TEXT = Object.freeze(["", "′", "″", "‴"]);
 
 /** (x, y) in TeX; an undefined value as a word. */
 function pairTex(p) {
@@ -474,79 +439,8 @@ export function label(s, d) {
   });
 }
 
-/** Text of a one-sided value: exact-looking numbers, or the undefined word. */
-const valueText = (x) => (Number.isFinite(x) ? exactText(x) : t("piecewise.undefined"));
-
-/** Do two one-sided values agree (the core's verdict for orders ≤ c, else the numbers)? */
-function agree(j, k, a, b) {
-  if (k <= j.c) return true;
-  const scale = 1 + Math.max(Math.abs(a), Math.abs(b));
-  return Number.isFinite(a) && Number.isFinite(b) && Math.abs(a - b) <= 1e-9 * scale;
-}
-
-/** Per joint a table: x, y and their derivatives from each side, which agree, the first that differs. */
+/** The tables of one-sided values under the figure, one per joint. */
 export function setup(ui) {
-  const tables = [];
-  function tableFor(k, shape) {
-    while (tables.length <= k) {
-      tables.push(
-        detailsTable(ui, "joint", (rowsKey, table) => {
-          const [count] = rowsKey.split(":").map(Number);
-          const body = el("tbody");
-          const cells = [];
-          for (let r = 0; r < count; r++) {
-            const row = {
-              name: el("th", { scope: "row" }),
-              left: el("td", { dataset: { side: "left" } }),
-              right: el("td", { dataset: { side: "right" } }),
-              agree: el("td", { dataset: { cell: "agree" } }),
-            };
-            row.tr = el("tr", {}, row.name, row.left, row.right, row.agree);
-            cells.push(row);
-            body.append(row.tr);
-          }
-          table.replaceChildren(
-            el("thead", {}, headerRow("piecewise.col.", ["quantity", "left", "right", "agree"])),
-            body,
-          );
-          return cells;
-        }),
-      );
-    }
-    return tables[k].cellsFor(shape);
-  }
-  return {
-    update(s, d) {
-      d.joints.forEach((j, n) => {
-        const count = j.left.length * 2;
-        const cells = tableFor(n, `${count}:${n}`);
-        const table = tables[n];
-        table.table.hidden = false;
-        table.title.hidden = false;
-        table.table.dataset.joint = String(n);
-        setText(
-          table.title,
-          t("piecewise.tableCaption", { t: shortNumber(j.t), verdict: j.verdict, how: j.how }),
-        );
-        const at = shortNumber(j.t);
-        for (let k = 0; k < j.left.length; k++) {
-          for (let c = 0; c < 2; c++) {
-            const row = cells[2 * k + c];
-            const name = `${"xy"[c]}${PRIME_TEXT[k]}`;
-            setText(row.name, name);
-            setText(row.left, `${name}(${at}⁻) = ${valueText(j.left[k][c])}`);
-            setText(row.right, `${name}(${at}⁺) = ${valueText(j.right[k][c])}`);
-            const same = agree(j, k, j.left[k][c], j.right[k][c]);
-            setText(row.agree, t(same ? "piecewise.agree.yes" : "piecewise.agree.no"));
-            row.tr.classList.toggle("sl-highlight", k === j.order);
-            row.tr.dataset.order = String(k);
-          }
-        }
-      });
-      for (let n = d.joints.length; n < tables.length; n++) {
-        tables[n].table.hidden = true;
-        tables[n].title.hidden = true;
-      }
-    },
-  };
+  const tables = oneSidedTables(ui);
+  return { update: (s, d) => tables.update(d.joints) };
 }

@@ -2169,7 +2169,9 @@ export default {
   "piecewise.verdict.infinite": "C∞: και οι δύο πλευρές είναι ένα πολυώνυμο",
   "piecewise.proven": "αποδεδειγμένο (ακριβής αριθμητική)",
   "piecewise.measured": "μετρημένο (κινητή υποδιαστολή)",
-  "piecewise.gap": "κενό",
+  "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.leftArrow": "P′({t}⁻)",
+  "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":
     "Ένα μέρος της καμπύλης δεν λεπτύνθηκε μέσα στον προϋπολογισμό εργασίας· εκεί σχεδιάζεται πιο χονδρικά.",
   "piecewise.tableCaption": "Συνένωση στο t = {t}: {verdict}, {how}",
@@ -2180,7 +2182,6 @@ export default {
   "piecewise.agree.yes": "ναι",
   "piecewise.agree.no": "όχι",
   "piecewise.undefined": "μη ορισμένη",
-  "piecewise.firstDifference": "πρώτη τάξη που διαφέρει: {order}",
   "piecewise.formula.joint": "συνένωση στο",
   "piecewise.formula.proven": "αποδεδειγμένο",
   "piecewise.formula.measured": "μετρημένο",

@@ -2149,7 +2149,9 @@ export default {
   "piecewise.verdict.infinite": "C∞: obje strane su jedan polinom",
   "piecewise.proven": "dokazano (egzaktna aritmetika)",
   "piecewise.measured": "izmjereno (aritmetika s pomičnim zarezom)",
-  "piecewise.gap": "procjep",
+  "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.leftArrow": "P′({t}⁻)",
+  "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":
     "Dio krivulje nije se mogao profiniti unutar proračuna rada; ondje je nacrtan grublje.",
   "piecewise.tableCaption": "Spoj u t = {t}: {verdict}, {how}",
@@ -2160,7 +2162,6 @@ export default {
   "piecewise.agree.yes": "da",
   "piecewise.agree.no": "ne",
   "piecewise.undefined": "nije definirano",
-  "piecewise.firstDifference": "prvi red koji se razlikuje: {order}",
   "piecewise.formula.joint": "spoj u",
   "piecewise.formula.proven": "dokazano",
   "piecewise.formula.measured": "izmjereno",

@@ -2167,7 +2167,9 @@ export default {
   "piecewise.verdict.infinite": "C∞: entrambi i lati sono un unico polinomio",
   "piecewise.proven": "dimostrato (aritmetica esatta)",
   "piecewise.measured": "misurato (virgola mobile)",
-  "piecewise.gap": "scarto",
+  "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.leftArrow": "P′({t}⁻)",
+  "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":
     "Una parte della curva non è stata raffinata entro il budget di calcolo; lì è disegnata in modo più grossolano.",
   "piecewise.tableCaption": "Giunzione in t = {t}: {verdict}, {how}",
@@ -2178,7 +2180,6 @@ export default {
   "piecewise.agree.yes": "sì",
   "piecewise.agree.no": "no",
   "piecewise.undefined": "non definito",
-  "piecewise.firstDifference": "primo ordine che differisce: {order}",
   "piecewise.formula.joint": "giunzione in",
   "piecewise.formula.proven": "dimostrato",
   "piecewise.formula.measured": "misurato",

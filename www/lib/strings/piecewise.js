@@ -45,7 +45,9 @@ export const PIECEWISE = {
   "piecewise.verdict.infinite": "C∞: both sides are one polynomial",
   "piecewise.proven": "proven (exact arithmetic)",
   "piecewise.measured": "measured (floating point)",
-  "piecewise.gap": "gap",
+  "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.leftArrow": "P′({t}⁻)",
+  "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":
     "Part of the curve could not be refined within the work budget; it is drawn coarser there.",
   "piecewise.tableCaption": "Joint at t = {t}: {verdict}, {how}",
@@ -56,7 +58,6 @@ export const PIECEWISE = {
   "piecewise.agree.yes": "yes",
   "piecewise.agree.no": "no",
   "piecewise.undefined": "undefined",
-  "piecewise.firstDifference": "first order that differs: {order}",
   "piecewise.formula.joint": "joint at",
   "piecewise.formula.proven": "proven",
   "piecewise.formula.measured": "measured",
