@@ -202,6 +202,9 @@ async function demoChecks(id) {
 
 // ------------------------------------------------------------------ one demo's suite
 
+/** The ids of the demos whose figure has handles (filled from the registry before the suites). */
+const withHandles = new Set();
+
 /** Every test of one demo, in order, on one worker's page: the generic checks, then its own. */
 async function demoSuite({ page, errors }, demo) {
   const name = (what) => `${demo.id}: ${what}`;
@@ -210,11 +213,7 @@ async function demoSuite({ page, errors }, demo) {
    * Whether the demo's figure has handles. A demo without (its curve is typed: piecewise) is
    * changed by panning instead of dragging a handle, and skips the handle tests.
    */
-  const hasHandles = await page.evaluate(async (id) => {
-    const { loadDemo } = await import("./demos/index.js");
-    const module = await loadDemo(id);
-    return Boolean((module.figure ?? module.figure3d)?.handles);
-  }, demo.id);
+  const hasHandles = withHandles.has(demo.id);
   /** Changes the picture: drags the first handle, or pans the view of a demo without handles. */
   const changePicture = async (dx, dy) => {
     const [handle] = await h.handles();
@@ -557,6 +556,19 @@ try {
       strings,
     })),
   );
+  // Which demos have handles (a demo whose curve is typed has none: see demoSuite).
+  for (const id of await page.evaluate(
+    async (ids) => {
+      const { loadDemo } = await import("./demos/index.js");
+      const modules = await Promise.all(ids.map((id) => loadDemo(id).catch(() => null)));
+      return ids.filter((id, k) => {
+        const m = modules[k];
+        return !m || Boolean((m.figure ?? m.figure3d)?.handles) || !(m.figure ?? m.figure3d);
+      });
+    },
+    registry.map((d) => d.id),
+  ))
+    withHandles.add(id);
 
   await test("registry: every manifest entry loads its module, which agrees on id, section and strings", async () => {
     const problems = await page.evaluate(async () => {
