@@ -218,6 +218,15 @@ const preset = (key) => ({
   },
 });
 
+/** The presets' group marked `data-presets`: an exercise hides it (it holds the answer). */
+const presetGroup = (item) => ({
+  build(ui) {
+    const part = item.build(ui);
+    part.element.dataset.presets = "";
+    return part;
+  },
+});
+
 export const controls = [
   group(
     "piecewise.pieces",
@@ -229,7 +238,7 @@ export const controls = [
       added: addedPiece,
     }),
   ),
-  actions(["notC0", "c1", "c0", "g1"].map(preset), { title: "piecewise.presets" }),
+  presetGroup(actions(["notC0", "c1", "c0", "g1"].map(preset), { title: "piecewise.presets" })),
   group(
     "piecewise.jointsLegend",
     readout(

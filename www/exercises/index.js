@@ -90,7 +90,7 @@ export const exercises = Object.freeze(
               ? t("piecewise.verdict.broken")
               : joint.c === Infinity
                 ? orderText("C", Infinity)
-                : orderText("C", joint.c);
+                : `${orderText("C", joint.c)}, ${orderText("G", joint.g)}`;
           return { solved: joint.c >= 1, detail: found };
         } finally {
           curve.free();

@@ -30,6 +30,8 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
       const list = el("div", { class: "sl-pieces" });
       /** Per piece: `{ set, boxes: { name: { input, echo, shown } }, message }`. */
       let rows = [];
+      /** The status line shows a refusal of ours (cleared by the next accepted text). */
+      let reported = false;
       const focused = (input) => input.getRootNode().activeElement === input;
       const fieldLabel = (name) => t(`${prefix}.field.${name}`);
       const fieldName = (name) => t(`${prefix}.fieldName.${name}`);
@@ -73,6 +75,7 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
         });
         setText(rows[k].message, message);
         ui.status(message, "error");
+        reported = true;
       }
 
       /** The state with box (i, name) holding `text` (and the joint's other bound with it). */
@@ -99,7 +102,8 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
             if (b.input.value === ui.state[field][k][n]) clear(r, b);
           }
         }
-        ui.status("", "info");
+        if (reported) ui.status("", "info");
+        reported = false;
         ui.commit(`${field}-${i}-${name}`);
       }
 

@@ -2106,11 +2106,11 @@ export default {
   // The typed piecewise curve (section 1, www/demos/piecewise.js) and its exercise.
   "piecewise.title": "Krivulje po dijelovima i njihovi spojevi",
   "piecewise.summary":
-    "Upišite x(t), y(t) i interval svakog segmenta; jezgra svaki spoj označava kao C^k ili G^k, dokazuje to gdje može i prikazuje jednostrane vrijednosti jednu uz drugu.",
+    "Upišite x(t), y(t) i interval svakog segmenta; jezgra svaki spoj označava kao Cᵏ ili Gᵏ, dokazuje to gdje može i prikazuje jednostrane vrijednosti jednu uz drugu.",
   "piecewise.aria": "Krivulja od {count} segmenata upisanih formulama; spojevi: {joints}",
   "piecewise.ariaNoJoints": "Krivulja od jednog segmenta upisanog formulom: nema spoja",
   "piecewise.whatYouSee":
-    "Svaki segment P_i(t) = (x(t), y(t)) nacrtan je svojom bojom na svojem intervalu; gdje jedan interval završava, počinje sljedeći (poglavlje 1 nastavnog programa: segmenti na [0, 1) i [1, 2]). U svakom spoju strelice su brzine koje dolaze, P′(t⁻), i odlaze, P′(t⁺); tablica ispod slike navodi jednostrane vrijednosti x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … i prvi red derivacije u kojem se razlikuju. Ocjena C^k (parametarski kontinuitet: derivacije do reda k se podudaraju) ili G^k (geometrijski kontinuitet: samo oblik, tj. smjer, zatim zakrivljenost) dolazi iz jezgre, dokazana egzaktnom aritmetikom za polinomne segmente.",
+    "Svaki segment Pᵢ(t) = (x(t), y(t)) nacrtan je svojom bojom na svojem intervalu; gdje jedan interval završava, počinje sljedeći (poglavlje 1 nastavnog programa: segmenti na [0, 1) i [1, 2]). U svakom spoju strelice su brzine koje dolaze, P′(t⁻), i odlaze, P′(t⁺); tablica ispod slike navodi jednostrane vrijednosti x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … i prvi red derivacije u kojem se razlikuju. Ocjena Cᵏ (parametarski kontinuitet: derivacije do reda k se podudaraju) ili Gᵏ (geometrijski kontinuitet: samo oblik, tj. smjer, zatim zakrivljenost) dolazi iz jezgre, dokazana egzaktnom aritmetikom za polinomne segmente.",
   "piecewise.try1":
     "Pritisnite „C⁰, nije C¹”: x′(1⁻) = −2, ali x′(1⁺) = 0, pa brzina skače i krivulja ima šiljak. Zatim pritisnite „C¹”: x′ se podudara, skače samo x″.",
   "piecewise.try2":
@@ -2173,5 +2173,5 @@ export default {
     "Segment 1 je x = 1 − t², y = t na [0, 1]. Upišite x(t) i y(t) segmenta 2 na [1, 2] tako da spoj u t = 1 bude C¹: ista točka i ista brzina s obje strane.",
   "exercise.piecewise-c1.hint":
     "U t = 1 segment 1 je u točki x = 0, y = 1 s brzinom x′ = −2, y′ = 1. Zadržite y = t i potražite x = t² + bt + c uz x(1) = 0 i x′(1) = 2 + b = −2.",
-  "exercise.piecewise-c1.notYet": "Još ne: jezgra u t = 1 nalazi {detail}.",
+  "exercise.piecewise-c1.notYet": "Još ne. Ocjena jezgre u t = 1: {detail}.",
 };

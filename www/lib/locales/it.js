@@ -2124,11 +2124,11 @@ export default {
   // The typed piecewise curve (section 1, www/demos/piecewise.js) and its exercise.
   "piecewise.title": "Curve a pezzi e le loro giunzioni",
   "piecewise.summary":
-    "Scrivi x(t), y(t) e l'intervallo di ogni pezzo; il nucleo di calcolo classifica ogni giunzione come C^k o G^k, lo dimostra dove può e mostra affiancati i valori unilaterali.",
+    "Scrivi x(t), y(t) e l'intervallo di ogni pezzo; il nucleo di calcolo classifica ogni giunzione come Cᵏ o Gᵏ, lo dimostra dove può e mostra affiancati i valori unilaterali.",
   "piecewise.aria": "Una curva di {count} pezzi scritti come formule; giunzioni: {joints}",
   "piecewise.ariaNoJoints": "Una curva di un solo pezzo scritto come formula: nessuna giunzione",
   "piecewise.whatYouSee":
-    "Ogni pezzo P_i(t) = (x(t), y(t)) è disegnato nel suo colore sul suo intervallo; dove un intervallo finisce comincia il successivo (sezione 1 del programma: pezzi su [0, 1) e [1, 2]). In ogni giunzione le frecce sono le velocità in arrivo, P′(t⁻), e in partenza, P′(t⁺); la tabella sotto la figura elenca i valori unilaterali x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … e il primo ordine di derivata in cui differiscono. Il verdetto C^k (continuità parametrica: le derivate fino all'ordine k coincidono) o G^k (continuità geometrica: solo la forma, cioè la direzione, poi la curvatura) è del nucleo di calcolo, dimostrato in aritmetica esatta per i pezzi polinomiali.",
+    "Ogni pezzo Pᵢ(t) = (x(t), y(t)) è disegnato nel suo colore sul suo intervallo; dove un intervallo finisce comincia il successivo (sezione 1 del programma: pezzi su [0, 1) e [1, 2]). In ogni giunzione le frecce sono le velocità in arrivo, P′(t⁻), e in partenza, P′(t⁺); la tabella sotto la figura elenca i valori unilaterali x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … e il primo ordine di derivata in cui differiscono. Il verdetto Cᵏ (continuità parametrica: le derivate fino all'ordine k coincidono) o Gᵏ (continuità geometrica: solo la forma, cioè la direzione, poi la curvatura) è del nucleo di calcolo, dimostrato in aritmetica esatta per i pezzi polinomiali.",
   "piecewise.try1":
     "Premi “C⁰, non C¹”: x′(1⁻) = −2 ma x′(1⁺) = 0, quindi la velocità salta e la curva ha uno spigolo. Poi premi “C¹”: x′ coincide, salta solo x″.",
   "piecewise.try2":
@@ -2191,5 +2191,5 @@ export default {
     "Il pezzo 1 è x = 1 − t², y = t su [0, 1]. Scrivi x(t) e y(t) del pezzo 2 su [1, 2] in modo che la giunzione in t = 1 sia C¹: lo stesso punto e la stessa velocità da entrambi i lati.",
   "exercise.piecewise-c1.hint":
     "In t = 1 il pezzo 1 si trova in x = 0, y = 1 con velocità x′ = −2, y′ = 1. Tieni y = t e cerca x = t² + bt + c con x(1) = 0 e x′(1) = 2 + b = −2.",
-  "exercise.piecewise-c1.notYet": "Non ancora: il nucleo di calcolo trova {detail} in t = 1.",
+  "exercise.piecewise-c1.notYet": "Non ancora. Il verdetto del nucleo di calcolo in t = 1: {detail}.",
 };

@@ -2,11 +2,11 @@
 export const PIECEWISE = {
   "piecewise.title": "Piecewise curves and their joints",
   "piecewise.summary":
-    "Type each piece's x(t), y(t) and interval; the core names every joint C^k or G^k, proves it where it can, and shows the one-sided values side by side.",
+    "Type each piece's x(t), y(t) and interval; the core names every joint Cᵏ or Gᵏ, proves it where it can, and shows the one-sided values side by side.",
   "piecewise.aria": "A curve of {count} pieces typed as formulas; joints: {joints}",
   "piecewise.ariaNoJoints": "A curve of one piece typed as formulas: no joint",
   "piecewise.whatYouSee":
-    "Each piece P_i(t) = (x(t), y(t)) is drawn in its own colour on its interval; where one interval ends the next begins (syllabus section 1: pieces on [0, 1) and [1, 2]). At every joint the arrows are the velocities arriving, P′(t⁻), and leaving, P′(t⁺); the table under the figure lists the one-sided values x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … and the first order where they differ. The verdict C^k (the derivatives up to k agree) or G^k (only the shape: direction, then curvature) is the core's, proven in exact arithmetic for polynomial pieces.",
+    "Each piece Pᵢ(t) = (x(t), y(t)) is drawn in its own colour on its interval; where one interval ends the next begins (syllabus section 1: pieces on [0, 1) and [1, 2]). At every joint the arrows are the velocities arriving, P′(t⁻), and leaving, P′(t⁺); the table under the figure lists the one-sided values x(t⁻), x(t⁺), x′(t⁻), x′(t⁺), … and the first order where they differ. The verdict Cᵏ (the derivatives up to k agree) or Gᵏ (only the shape: direction, then curvature) is the core's, proven in exact arithmetic for polynomial pieces.",
   "piecewise.try1":
     "Press “C⁰, not C¹”: x′(1⁻) = −2 but x′(1⁺) = 0, so the velocity jumps and the curve has a corner. Then press “C¹”: x′ agrees, only x″ jumps.",
   "piecewise.try2":
@@ -71,5 +71,5 @@ export const PIECEWISE = {
     "Piece 1 is x = 1 − t², y = t on [0, 1]. Type x(t) and y(t) of piece 2 on [1, 2] so that the joint at t = 1 is C¹: the same point and the same velocity from both sides.",
   "exercise.piecewise-c1.hint":
     "At t = 1 piece 1 is at (0, 1) with velocity (−2, 1). Keep y = t and look for x = t² + bt + c with x(1) = 0 and x′(1) = 2 + b = −2.",
-  "exercise.piecewise-c1.notYet": "Not yet: the core finds {detail} at t = 1.",
+  "exercise.piecewise-c1.notYet": "Not yet. The core’s verdict at t = 1: {detail}.",
 };
