@@ -16,6 +16,10 @@
  * t² − 4t + 3 (C¹: x′(1) = −2 on both sides, x″ jumps from −2 to 2) or t² − 2t + 1 (C⁰,
  * x′ jumps from −2 to 0); y = t throughout. A fourth case runs the same parabola at double
  * speed on [1, 3/2]: G¹ (indeed the same shape) but P′ doubles, so only C⁰.
+ *
+ * State `{ pieces: [{ x, y, from, to }, …] }` (texts in the expression language, 1 … 6 pieces);
+ * embedded as `<spline-lab demo="piecewise" pieces="1 - t^2, t, 0, 1; t^2 - 4t + 3, t, 1, 2">`
+ * (lib/attributes.js: records separated by ";", the texts x, y, from, to by ",").
  */
 import { actions, group, readout } from "../lib/panel.js";
 import { shortNumber } from "../lib/format.js";
