@@ -28,7 +28,14 @@ import { placeLabel, placeLabelBeside } from "../lib/handles.js";
 import { CYCLE, HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
 import { t } from "../lib/strings.js";
 import { arrow } from "../lib/draw.js";
-import { boxOf, middleVertex, runsPath } from "../lib/plot-runs.js";
+import {
+  boxOf,
+  grownBox,
+  middleVertex,
+  plotParts,
+  refineForWindow,
+  runsPath,
+} from "../lib/plot-runs.js";
 import { oneSidedTables } from "../lib/one-sided-table.js";
 import { pieceFields } from "../lib/piece-fields.js";
 
@@ -108,19 +115,19 @@ const PLOT_MARGIN = 1;
 /** The longest velocity arrow is this fraction of the box's diagonal. */
 const ARROW_FRACTION = 0.22;
 
-/** Each piece's plot (the core's adaptive polyline, runs split at NaN) and the box shown. */
+/**
+ * Each piece's plot (the core's adaptive polyline, runs split at NaN) and the box shown; the
+ * plot is made again when the reader zooms in or pans out of it (`setup`: `refineForWindow`).
+ */
 function plotPieces(d) {
   const box = boxOf(d.parts.map((part) => part.sampleUniform(BOX_SAMPLES)));
-  const w = box[2] - box[0];
-  const h = box[3] - box[1];
-  const tolerance = TOLERANCE_FRACTION * Math.hypot(w, h);
-  const wide = [box[0] - PLOT_MARGIN * w, box[1] - PLOT_MARGIN * h];
-  wide.push(box[2] + PLOT_MARGIN * w, box[3] + PLOT_MARGIN * h);
-  const plots = d.parts.map((part) => part.plot(tolerance, wide));
+  const tolerance = TOLERANCE_FRACTION * Math.hypot(box[2] - box[0], box[3] - box[1]);
+  const plotBox = grownBox(box, PLOT_MARGIN);
   return {
     box,
-    points: plots.map((p) => p.points),
-    complete: plots.every((p) => p.complete),
+    tolerance,
+    plotBox,
+    ...plotParts(d.parts, tolerance, plotBox),
     labels: d.parts.map((_, i) => `P${subscriptNumber(i + 1)}`),
   };
 }
@@ -454,6 +461,9 @@ export function label(s, d) {
 
 /** The tables of one-sided values under the figure, one per joint. */
 export function setup(ui) {
+  ui.view.beforeFrame(() => {
+    if (ui.data.shape && ui.data.parts) refineForWindow(ui.view, ui.data.parts, ui.data.shape);
+  });
   const tables = oneSidedTables(ui);
   return { update: (s, d) => tables.update(d.joints) };
 }

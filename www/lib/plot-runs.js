@@ -66,3 +66,41 @@ export function middleVertex(flat) {
   }
   return -1;
 }
+
+/** The core's plot of every curve of `parts` within `tolerance` (world units) inside `box`. */
+export function plotParts(parts, tolerance, box) {
+  const plots = parts.map((part) => part.plot(tolerance, box));
+  return { points: plots.map((p) => p.points), complete: plots.every((p) => p.complete) };
+}
+
+/** `box` [x0, y0, x1, y1] grown by `margin` times its size on every side. */
+export function grownBox(box, margin) {
+  const w = box[2] - box[0];
+  const h = box[3] - box[1];
+  return [box[0] - margin * w, box[1] - margin * h, box[2] + margin * w, box[3] + margin * h];
+}
+
+/** The chord error a plot made for the window shown keeps, in CSS px. */
+const TOLERANCE_PX = 0.25;
+/** A plot is made again when its chord error exceeds this many CSS px (zoomed in). */
+const COARSE_PX = 1;
+/** The window grown by this much (its size per side) is the new plot's box. */
+const WINDOW_MARGIN = 1;
+
+/**
+ * Keeps `shape` (`{ tolerance, plotBox, points, complete }`, `points` one flat run list per
+ * curve of `parts`) fine enough for `view`'s window: when a chord may stray more than COARSE_PX
+ * (zoomed in) or the window reaches beyond the plotted box (zoomed out, panned far), the curves
+ * are plotted again for this window, in place. Run before a frame: rare (a zoom step), never
+ * per frame of a small pan.
+ */
+export function refineForWindow(view, parts, shape) {
+  const win = view.getWindow();
+  const perPx = 1 / view.scale;
+  const box = shape.plotBox;
+  const inside = win[0] >= box[0] && win[1] >= box[1] && win[2] <= box[2] && win[3] <= box[3];
+  if (inside && shape.tolerance <= COARSE_PX * perPx) return;
+  shape.tolerance = TOLERANCE_PX * perPx;
+  shape.plotBox = grownBox(win, WINDOW_MARGIN);
+  Object.assign(shape, plotParts(parts, shape.tolerance, shape.plotBox));
+}
