@@ -30,6 +30,8 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
       const list = el("div", { class: "sl-pieces" });
       /** Per piece: `{ set, boxes: { name: { input, echo, shown } }, message }`. */
       let rows = [];
+      /** A keystroke's state is being applied (else a sync shows a change from elsewhere). */
+      let typing = false;
       /** The status line shows a refusal of ours (cleared by the next accepted text). */
       let reported = false;
       const focused = (input) => input.getRootNode().activeElement === input;
@@ -90,11 +92,14 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
       function typed(i, name) {
         const row = rows[i];
         const box = row.boxes[name];
+        typing = true;
         try {
           ui.replace(candidate(i, name, box.input.value), false);
         } catch (err) {
           refuse(err, i, name);
           return;
+        } finally {
+          typing = false;
         }
         // Accepted: every box that now shows the state's text is clean again.
         for (const [k, r] of rows.entries()) {
@@ -202,15 +207,15 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
             for (const name of names) {
               const box = row.boxes[name];
               const text = piece[name] ?? "";
-              // A text the state changed (undo, preset, link) replaces what the box shows; the
-              // reader's refused text stays until then, underlined.
-              if (box.shown !== text) {
-                box.shown = text;
-                if (box.input.value !== text && !(focused(box.input) && box.echo.hidden)) {
-                  box.input.value = text;
-                  clear(row, box);
-                } else if (box.input.value === text) clear(row, box);
-              }
+              // A change from elsewhere (undo, reset, preset, link, Add / Remove) shows the
+              // state's texts everywhere. While the reader types, only the boxes whose text the
+              // state changed follow (the joint's other bound); a refused text stays, underlined.
+              const changed = box.shown !== text;
+              box.shown = text;
+              if (!typing || (changed && !focused(box.input))) {
+                if (box.input.value !== text) box.input.value = text;
+                clear(row, box);
+              } else if (box.input.value === text) clear(row, box);
             }
           });
           addButton.disabled = pieces.length >= max;
