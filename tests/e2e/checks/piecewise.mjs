@@ -153,6 +153,21 @@ export default [
     },
   ],
   [
+    "zooming in far and out again re-plots the pieces for the window without errors",
+    async (page, h, _base, { assert, settle }) => {
+      const start = await h.snapshot();
+      const box = await h.canvas().boundingBox();
+      await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+      for (let k = 0; k < 12; k++) await page.mouse.wheel(0, -240);
+      await settle(page);
+      const zoomed = await h.snapshot();
+      assert(zoomed !== start, "the zoom changed the picture");
+      for (let k = 0; k < 24; k++) await page.mouse.wheel(0, 240);
+      await settle(page);
+      assert((await h.snapshot()) !== zoomed, "zoomed out again");
+    },
+  ],
+  [
     '<spline-lab demo="piecewise" pieces="…"> reads the pieces attribute',
     async (page, _h, base, { assert, equal }) => {
       const url = `${base}/piecewise-embed-test.html`;
