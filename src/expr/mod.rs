@@ -12,10 +12,13 @@
 
 pub mod ast;
 pub mod error;
+pub mod lex;
+pub mod parse;
 pub mod rational;
 
 pub use ast::{BinOp, Constant, Expr, Func, Node, Span};
 pub use error::{ExprError, Problem};
+pub use parse::{is_parameter_name, parameter_names, parse};
 pub use rational::Rational;
 
 /// Longest expression text accepted, in UTF-16 code units.
