@@ -321,3 +321,134 @@ pub fn lex(text: &str) -> Vec<Token<'_>> {
     lexer.run();
     lexer.tokens
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    /// A token's text and span.
+    type Piece<'a> = (&'a str, usize, usize);
+
+    /// (text, span) of every token.
+    fn pieces(text: &str) -> Vec<Piece<'_>> {
+        lex(text)
+            .iter()
+            .map(|t| (t.text, t.span.start, t.span.end))
+            .collect()
+    }
+
+    fn kinds(text: &str) -> Vec<Kind> {
+        lex(text).iter().map(|t| t.kind).collect()
+    }
+
+    #[test]
+    fn tokens_carry_utf16_spans_and_the_whitespace_before_them() {
+        let tokens = lex("2·t − π**2");
+        let want = [
+            ("2", 0, 1, false),
+            ("·", 1, 2, false),
+            ("t", 2, 3, false),
+            ("−", 4, 5, true),
+            ("π", 6, 7, true),
+            ("**", 7, 9, false),
+            ("2", 9, 10, false),
+            ("", 10, 10, false),
+        ];
+        let got: Vec<_> = tokens
+            .iter()
+            .map(|t| (t.text, t.span.start, t.span.end, t.spaced))
+            .collect();
+        assert_eq!(got, want);
+        let two = Kind::Number {
+            value: 2.0,
+            exact: Some(Rational::integer(2)),
+        };
+        let pi = Kind::Name(Word::Constant(Constant::Pi));
+        let want = [
+            two,
+            Kind::Times,
+            Kind::Name(Word::T),
+            Kind::Minus,
+            pi,
+            Kind::Power,
+            two,
+            Kind::End,
+        ];
+        assert_eq!(kinds("2·t − π**2"), want);
+        assert_eq!(
+            kinds("×⋅÷^()+")[..7],
+            [
+                Kind::Times,
+                Kind::Times,
+                Kind::Divide,
+                Kind::Power,
+                Kind::Open,
+                Kind::Close,
+                Kind::Plus
+            ]
+        );
+    }
+
+    #[test]
+    fn letter_runs_split_by_longest_match_and_subscripts() {
+        let end = |n: usize| ("", n, n);
+        let cases: [(&str, &[Piece]); 8] = [
+            (
+                "sinhasinpit",
+                &[
+                    ("sinh", 0, 4),
+                    ("asin", 4, 8),
+                    ("pi", 8, 10),
+                    ("t", 10, 11),
+                    end(11),
+                ],
+            ),
+            ("expe", &[("exp", 0, 3), ("e", 3, 4), end(4)]),
+            ("tana", &[("tan", 0, 3), ("a", 3, 4), end(4)]),
+            ("signt", &[("sign", 0, 4), ("t", 4, 5), end(5)]),
+            ("pi_1", &[("p", 0, 1), ("i_1", 1, 4), end(4)]),
+            ("ba_max2", &[("b", 0, 1), ("a_max2", 1, 7), end(7)]),
+            ("ωα_0", &[("ω", 0, 1), ("α_0", 1, 4), end(4)]),
+            ("a_ t", &[("a", 0, 1), ("_", 1, 2)]),
+        ];
+        for (text, want) in cases {
+            assert_eq!(pieces(text), want, "{text:?}");
+        }
+        let words = kinds("sinhpite");
+        let want = [
+            Kind::Name(Word::Func(Func::Sinh)),
+            Kind::Name(Word::Constant(Constant::Pi)),
+            Kind::Name(Word::T),
+            Kind::Name(Word::Constant(Constant::E)),
+            Kind::End,
+        ];
+        assert_eq!(words, want);
+        assert_eq!(
+            kinds("Ωt_1")[..2],
+            [Kind::Name(Word::Letter), Kind::Name(Word::Letter)]
+        );
+    }
+
+    #[test]
+    fn the_first_bad_character_or_number_ends_the_tokens() {
+        let bad = |f| Kind::Bad(f);
+        assert_eq!(pieces("1 # 2"), [("1", 0, 1), ("#", 2, 3)]);
+        assert_eq!(kinds("1 # 2")[1], bad(Fault::Character));
+        assert_eq!(pieces("😀t"), [("😀", 0, 2)]);
+        assert_eq!(kinds("1.2.3 t"), [bad(Fault::Number)]);
+        assert_eq!(kinds("."), [bad(Fault::Number)]);
+        assert_eq!(kinds(&"9".repeat(400)), [bad(Fault::Infinite)]);
+        // The largest finite literal is still a number.
+        let max = format!("{}", f64::MAX);
+        assert!(matches!(kinds(&max)[0], Kind::Number { value, exact: None } if value == f64::MAX));
+        assert_eq!(kinds("ϖ"), [bad(Fault::Character)]);
+        let problem = lex("t,5")[1].problem().map(|e| (e.problem, e.start, e.end));
+        let comma = Problem::UnexpectedCharacter {
+            character: ",".into(),
+        };
+        assert_eq!(problem, Some((comma, 1, 2)));
+        assert_eq!(lex("t")[0].problem(), None);
+    }
+}

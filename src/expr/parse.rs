@@ -82,15 +82,6 @@ struct Parser<'a, 'p> {
     nodes: usize,
 }
 
-/// Whether an exponent is a number as typed (`2`, `-1`).
-fn numeric(e: &Expr) -> bool {
-    match &e.node {
-        Node::Number { .. } => true,
-        Node::Neg(a) => matches!(a.node, Node::Number { .. }),
-        _ => false,
-    }
-}
-
 fn err(span: Span, problem: Problem) -> Fail {
     Box::new(ExprError::at(span.start, span.end, problem))
 }
@@ -211,6 +202,25 @@ impl<'a, 'p> Parser<'a, 'p> {
         self.text.get(from..to).unwrap_or("")
     }
 
+    /// Whether an exponent is a bare number as typed (`2`, `-1`; not `(2)`, whose node is a
+    /// number too but whose span starts at the parenthesis).
+    fn numeric(&self, e: &Expr) -> bool {
+        let starts = |e: &Expr, first: fn(char) -> bool| {
+            let text = self.slice(e.span.start, e.span.end);
+            text.chars().next().is_some_and(first)
+        };
+        let digit = |c: char| c.is_ascii_digit() || c == '.';
+        match &e.node {
+            Node::Number { .. } => starts(e, digit),
+            Node::Neg(a) => {
+                matches!(a.node, Node::Number { .. })
+                    && starts(e, |c| c == '-' || c == '−')
+                    && starts(a, digit)
+            }
+            _ => false,
+        }
+    }
+
     /// The error for an implicit product after `start..inner` (`1/2` with `inner` = `2`,
     /// `e^2` with `inner` = `2`): parse the rest of the product to find its end, then offer
     /// both readings.
@@ -329,7 +339,7 @@ impl<'a, 'p> Parser<'a, 'p> {
         let exponent = self.unary()?;
         self.leave();
         let next = self.peek()?;
-        if numeric(&exponent) && matches!(next.kind, Kind::Name(_)) && !next.spaced {
+        if self.numeric(&exponent) && matches!(next.kind, Kind::Name(_)) && !next.spaced {
             return Err(self.ambiguous(base.span.start, exponent.span));
         }
         self.binary(BinOp::Pow, base, exponent)
@@ -462,3 +472,8 @@ impl<'a, 'p> Parser<'a, 'p> {
         Err(err(name.span.to(end), problem))
     }
 }
+
+// The tests are many (every refusal with its exact characters): they live in parse/tests.rs
+// to keep this file under the house limit of 500 lines.
+#[cfg(test)]
+mod tests;
