@@ -448,3 +448,55 @@ fn parameter_names_are_single_letters_or_subscripted() {
         assert!(!is_parameter_name(name), "{name}");
     }
 }
+
+/// Each child's span lies inside its parent's; returns the node count.
+fn check_spans(e: &Expr, outer: Span) -> usize {
+    assert!(outer.start <= e.span.start && e.span.end <= outer.end && e.span.start < e.span.end);
+    1 + match &e.node {
+        Node::Neg(a) | Node::Call(_, a) => check_spans(a, e.span),
+        Node::Binary(_, a, b) => check_spans(a, e.span) + check_spans(b, e.span),
+        _ => 0,
+    }
+}
+
+#[test]
+fn random_texts_parse_or_fail_cleanly_with_nested_spans() {
+    let alphabet = [
+        "t", "2", ".5", "(", ")", "-", "^", "*", "/", "+", " ", "sin", "pi", "e", "a", "π", "😀",
+        "_1", "**", "−",
+    ];
+    let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut next = |n: usize| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % n as u64) as usize
+    };
+    let (mut ok, mut refused) = (0, 0);
+    for _ in 0..3000 {
+        let length = 1 + next(12);
+        let text: String = (0..length)
+            .map(|_| alphabet[next(alphabet.len())])
+            .collect();
+        let units = text.encode_utf16().count();
+        let parsed = parse(&text, &["a"]);
+        let names = parameter_names(&text);
+        match (&parsed, &names) {
+            (Ok(e), Ok(names)) => {
+                assert!(check_spans(e, Span::new(0, units)) <= MAX_NODES);
+                assert!(names.iter().all(|n| n == "a"), "{text:?}");
+                ok += 1;
+            }
+            // An undeclared name (`a_1`, `e_1`): parameter_names reads on past it.
+            (Err(e), _) if matches!(e.problem, Problem::UnknownName { .. }) => refused += 1,
+            (Err(e), Err(f)) => {
+                assert_eq!(e, f, "{text:?}");
+                assert!(e.start <= e.end && e.end <= units, "{text:?}: {e:?}");
+                refused += 1;
+            }
+            _ => panic!("{text:?}: {parsed:?} but {names:?}"),
+        }
+    }
+    // Both outcomes are exercised.
+    assert!(ok > 100 && refused > 100, "{ok} parsed, {refused} refused");
+}
