@@ -13,7 +13,7 @@
 //!
 //! Budgets, so no input can exhaust the stack or the memory: the text is at most
 //! [`MAX_LENGTH`] UTF-16 units (checked before anything else), every recursion (parentheses,
-//! calls, unary minus, powers) passes [`Parser::enter`], which refuses nesting deeper than
+//! calls, unary minus, powers) passes `Parser::enter`, which refuses nesting deeper than
 //! [`MAX_NESTING`], and the tree has at most [`MAX_NODES`] nodes. The loops each consume a
 //! token per turn, so they end with the text.
 
