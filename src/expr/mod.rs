@@ -11,12 +11,21 @@
 //! is refused with a hint (`sin t`, `1/2t`, `t2`).
 
 pub mod ast;
+pub mod certify;
 pub mod error;
+pub mod interval;
+pub mod jet;
+pub mod math;
 pub mod rational;
+pub mod tape;
 
 pub use ast::{BinOp, Constant, Expr, Func, Node, Span};
+pub use certify::{Defined, IntervalFlags, IntervalResult};
 pub use error::{ExprError, Problem};
+pub use interval::Interval;
+pub use jet::Scalar;
 pub use rational::Rational;
+pub use tape::{Op, Scratch, Tape};
 
 /// Longest expression text accepted, in UTF-16 code units.
 pub const MAX_LENGTH: usize = 1000;
