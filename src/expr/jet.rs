@@ -2,26 +2,14 @@
 //! the standard recurrences of automatic differentiation (never finite differences); the k-th
 //! derivative is k!·cₖ.
 //!
-//! The recurrences, over normalised coefficients (a, b the operands, y the result, Σⱼ from
-//! j = 1 unless written):
-//! - a·b: yₖ = Σ_{j=0..k} aⱼ bₖ₋ⱼ; a/b: yₖ = (aₖ − Σⱼ bⱼ yₖ₋ⱼ)/b₀;
-//! - aⁿ (integer n): repeated squaring of the series (so t² at t = 0 is fine), 1/aⁿ for n < 0;
-//! - aʳ (real r, a₀ ≠ 0): yₖ = 1/(k a₀) Σⱼ (r j − (k − j)) aⱼ yₖ₋ⱼ; aᵇ (b varying) = e^(b ln a);
-//! - eᵃ: yₖ = (1/k) Σⱼ j aⱼ yₖ₋ⱼ; ln a: yₖ = (aₖ − (1/k) Σ_{j<k} j yⱼ aₖ₋ⱼ)/a₀; log = ln / ln 10;
-//! - √a: yₖ = (aₖ − Σ_{0<j<k} yⱼ yₖ₋ⱼ)/(2y₀);
-//! - sin/cos as a pair: sₖ = (1/k) Σⱼ j aⱼ cₖ₋ⱼ, cₖ = −(1/k) Σⱼ j aⱼ sₖ₋ⱼ (sinh/cosh: +);
-//! - tan: y′ = (1 + y²) a′, tanh: y′ = (1 − y²) a′, with u = 1 ± y² built alongside;
-//! - asin, acos, atan: the series of y′ = ±a′/√(1 − a²), a′/(1 + a²), then integrated:
-//!   yₖ = y′ₖ₋₁/k;
-//! - |a| = s·a with s the sign of the first non-zero coefficient; when that is of odd order m
-//!   (|t| at 0) the derivatives of order ≥ m do not exist: NaN;
-//! - floor, ceil, sign: the value, then zeros.
+//! The recurrences of every operation are in [`series`](super::series).
 //!
 //! The code is generic over a [`Scalar`]: `f64` here, and [`Interval`](super::Interval) for
 //! enclosures of the derivatives over an interval of t (see `certify.rs`).
 
 use super::ast::Func;
 use super::math;
+use super::series::{call_into, div_into, exp_into, ln_into, mul_into, powf_into, powi_into, N};
 use super::tape::{Op, Scratch, Tape};
 use super::MAX_JET_ORDER;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -87,221 +75,6 @@ impl Scalar for f64 {
             Some(m) if m % 2 == 0 => (math::sign(a[m]), a.len()),
             // a = aₘ tᵐ + …, m odd: |a| has a kink; below m every coefficient is 0.
             Some(m) => (1.0, m),
-        }
-    }
-}
-
-/// The largest series kept: orders 0 ..= MAX_JET_ORDER.
-const N: usize = MAX_JET_ORDER + 1;
-
-fn k<S: Scalar>(k: usize) -> S {
-    S::from_f64(k as f64)
-}
-
-/// out = a·b (Cauchy product), to the length of `out`.
-fn mul_into<S: Scalar>(a: &[S], b: &[S], out: &mut [S]) {
-    for i in 0..out.len() {
-        let mut s = a[0] * b[i];
-        for j in 1..=i {
-            s = s + a[j] * b[i - j];
-        }
-        out[i] = s;
-    }
-}
-
-/// out = a/b.
-fn div_into<S: Scalar>(a: &[S], b: &[S], out: &mut [S]) {
-    for i in 0..out.len() {
-        let mut s = a[i];
-        for j in 1..=i {
-            s = s - b[j] * out[i - j];
-        }
-        out[i] = s / b[0];
-    }
-}
-
-/// out = √a with out₀ = y0.
-fn sqrt_into<S: Scalar>(a: &[S], y0: S, out: &mut [S]) {
-    out[0] = y0;
-    for i in 1..out.len() {
-        let mut s = a[i];
-        for j in 1..i {
-            s = s - out[j] * out[i - j];
-        }
-        out[i] = s / (k::<S>(2) * y0);
-    }
-}
-
-/// out = e^a with out₀ = y0.
-fn exp_into<S: Scalar>(a: &[S], y0: S, out: &mut [S]) {
-    out[0] = y0;
-    for i in 1..out.len() {
-        let mut s = a[1] * out[i - 1];
-        for j in 2..=i {
-            s = s + k::<S>(j) * a[j] * out[i - j];
-        }
-        out[i] = s / k(i);
-    }
-}
-
-/// out = ln a with out₀ = y0.
-fn ln_into<S: Scalar>(a: &[S], y0: S, out: &mut [S]) {
-    out[0] = y0;
-    for i in 1..out.len() {
-        let mut s = k::<S>(i) * a[i];
-        for j in 1..i {
-            s = s - k::<S>(j) * out[j] * a[i - j];
-        }
-        out[i] = s / (k::<S>(i) * a[0]);
-    }
-}
-
-/// out = aⁿ by repeated squaring of the series; out₀ = a₀ⁿ as the scalar computes it.
-fn powi_into<S: Scalar>(a: &[S], n: i32, out: &mut [S]) {
-    let m = out.len();
-    let zero = S::from_f64(0.0);
-    let (mut base, mut acc, mut tmp) = ([zero; N], [zero; N], [zero; N]);
-    base[..m].copy_from_slice(&a[..m]);
-    acc[0] = S::from_f64(1.0);
-    let mut e = n.unsigned_abs();
-    while e > 0 {
-        if e & 1 == 1 {
-            mul_into(&acc[..m], &base[..m], &mut tmp[..m]);
-            acc = tmp;
-        }
-        e >>= 1;
-        if e > 0 {
-            mul_into(&base[..m], &base[..m], &mut tmp[..m]);
-            base = tmp;
-        }
-    }
-    if n < 0 {
-        acc[0] = a[0].powi(n.checked_neg().unwrap_or(i32::MAX));
-        let mut one = [zero; N];
-        one[0] = S::from_f64(1.0);
-        div_into(&one[..m], &acc[..m], out);
-    } else {
-        out.copy_from_slice(&acc[..m]);
-    }
-    out[0] = a[0].powi(n);
-}
-
-/// out = aʳ for a real r (a₀ ≠ 0 for the derivatives).
-fn powf_into<S: Scalar>(a: &[S], r: f64, out: &mut [S]) {
-    out[0] = a[0].powf(r);
-    for i in 1..out.len() {
-        let mut s = S::from_f64(0.0);
-        for j in 1..=i {
-            s = s + S::from_f64(r * j as f64 - (i - j) as f64) * a[j] * out[i - j];
-        }
-        out[i] = s / (k::<S>(i) * a[0]);
-    }
-}
-
-/// out = ∫ (a′ / w) with out₀ = y0 and the sign `sign` (asin, acos, atan).
-fn integrate_quotient<S: Scalar>(a: &[S], w: &[S], y0: S, sign: f64, out: &mut [S]) {
-    let m = out.len();
-    let zero = S::from_f64(0.0);
-    let (mut da, mut q) = ([zero; N], [zero; N]);
-    for i in 0..m - 1 {
-        da[i] = k::<S>(i + 1) * a[i + 1];
-    }
-    div_into(&da[..m - 1], &w[..m - 1], &mut q[..m - 1]);
-    out[0] = y0;
-    for i in 1..m {
-        out[i] = S::from_f64(sign) * q[i - 1] / k(i);
-    }
-}
-
-/// out = f(a).
-fn call_into<S: Scalar>(f: Func, a: &[S], out: &mut [S]) {
-    let m = out.len();
-    let zero = S::from_f64(0.0);
-    let a0 = a[0];
-    match f {
-        Func::Sin | Func::Cos | Func::Sinh | Func::Cosh => {
-            let hyperbolic = matches!(f, Func::Sinh | Func::Cosh);
-            let (mut s, mut c) = ([zero; N], [zero; N]);
-            (s[0], c[0]) = if hyperbolic {
-                a0.sinh_cosh()
-            } else {
-                a0.sin_cos()
-            };
-            for i in 1..m {
-                let (mut ss, mut cc) = (zero, zero);
-                for j in 1..=i {
-                    ss = ss + k::<S>(j) * a[j] * c[i - j];
-                    cc = cc + k::<S>(j) * a[j] * s[i - j];
-                }
-                s[i] = ss / k(i);
-                c[i] = if hyperbolic { cc / k(i) } else { -cc / k(i) };
-            }
-            let pick = if matches!(f, Func::Sin | Func::Sinh) {
-                s
-            } else {
-                c
-            };
-            out.copy_from_slice(&pick[..m]);
-            out[0] = a0.func(f);
-        }
-        Func::Tan | Func::Tanh => {
-            // y′ = u a′ with u = 1 + y² (tan) or 1 − y² (tanh).
-            let sign = if f == Func::Tan { 1.0 } else { -1.0 };
-            let mut u = [zero; N];
-            out[0] = a0.func(f);
-            u[0] = S::from_f64(1.0) + S::from_f64(sign) * out[0].powi(2);
-            for i in 1..m {
-                let mut s = zero;
-                for j in 1..=i {
-                    s = s + k::<S>(j) * a[j] * u[i - j];
-                }
-                out[i] = s / k(i);
-                let mut y2 = zero;
-                for j in 0..=i {
-                    y2 = y2 + out[j] * out[i - j];
-                }
-                u[i] = S::from_f64(sign) * y2;
-            }
-        }
-        Func::Asin | Func::Acos | Func::Atan => {
-            let (mut sq, mut w, mut root) = ([zero; N], [zero; N], [zero; N]);
-            mul_into(a, a, &mut sq[..m]);
-            let sign = if f == Func::Atan { 1.0 } else { -1.0 };
-            for i in 0..m {
-                w[i] = S::from_f64(sign) * sq[i];
-            }
-            w[0] = S::from_f64(1.0) + S::from_f64(sign) * a0.powi(2);
-            if f != Func::Atan {
-                sqrt_into(&w[..m], w[0].func(Func::Sqrt), &mut root[..m]);
-                w = root;
-            }
-            let dir = if f == Func::Acos { -1.0 } else { 1.0 };
-            integrate_quotient(a, &w, a0.func(f), dir, out);
-        }
-        Func::Exp => exp_into(a, a0.func(f), out),
-        Func::Ln => ln_into(a, a0.func(f), out),
-        Func::Log => {
-            ln_into(a, a0.func(Func::Ln), out);
-            for y in out.iter_mut().skip(1) {
-                *y = *y / S::from_f64(std::f64::consts::LN_10);
-            }
-            out[0] = a0.func(f);
-        }
-        Func::Sqrt => sqrt_into(a, a0.func(f), out),
-        Func::Abs => {
-            let (s, unknown_from) = S::abs_sign(&a[..m]);
-            for i in 0..m {
-                out[i] = if i >= unknown_from {
-                    S::unknown()
-                } else {
-                    s * a[i]
-                };
-            }
-            out[0] = a0.func(f);
-        }
-        Func::Floor | Func::Ceil | Func::Sign => {
-            out.fill(zero);
-            out[0] = a0.func(f);
         }
     }
 }
@@ -391,5 +164,171 @@ impl Tape {
         for (i, (o, &c)) in out.iter_mut().zip(last).enumerate() {
             *o = c * factorial(i);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::ast::Expr;
+    use super::super::tape::build::*;
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    fn jet(e: &Expr, t: f64, order: usize, params: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; order + 1];
+        Tape::compile(e).eval_jet(t, order, params, &mut Scratch::new(), &mut out);
+        out
+    }
+
+    /// The trees of the fixture's expressions (tests/fixtures/make_expr_jet_fixtures.py).
+    fn fixture_tree(name: &str) -> Option<Expr> {
+        let sq = |a: Expr| pow(a, n(2.0));
+        Some(match name {
+            "cos" => call(Func::Cos, t()),
+            "sin" => call(Func::Sin, t()),
+            "poly" => notes_polynomial(),
+            "lissajous" => call(Func::Sin, mul(n(3.0), t())),
+            "tan" => call(Func::Tan, t()),
+            "exp_sin_sq" => call(Func::Exp, call(Func::Sin, sq(t()))),
+            "sqrt_1_t2" => call(Func::Sqrt, add(n(1.0), sq(t()))),
+            "atan_over" => div(call(Func::Atan, t()), add(n(1.0), t())),
+            "ln_2_cos" => call(Func::Ln, add(n(2.0), call(Func::Cos, t()))),
+            "t_to_t" => pow(t(), t()),
+            "asin_half" => call(Func::Asin, div(t(), n(2.0))),
+            "tanh_sinh" => add(
+                call(Func::Tanh, t()),
+                mul(call(Func::Sinh, t()), call(Func::Cosh, div(t(), n(3.0)))),
+            ),
+            "acos_log" => add(call(Func::Acos, div(t(), n(3.0))), call(Func::Log, t())),
+            "pow_real" => add(
+                pow(add(n(1.0), sq(t())), n(2.5)),
+                pow(add(n(2.0), t()), neg(div(n(1.0), n(3.0)))),
+            ),
+            _ => return None,
+        })
+    }
+
+    #[test]
+    fn derivatives_match_sympy() {
+        let text = include_str!("../../tests/fixtures/expr_jets_sympy.txt");
+        let mut rows = 0;
+        for line in text
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.is_empty())
+        {
+            let mut words = line.split_whitespace();
+            let name = words.next().unwrap_or("");
+            let numbers: Vec<f64> = words.map(|w| w.parse().unwrap_or(f64::NAN)).collect();
+            let tree = fixture_tree(name).unwrap_or_else(|| panic!("unknown fixture {name}"));
+            assert_eq!(numbers.len(), MAX_JET_ORDER + 2, "{line}");
+            let got = jet(&tree, numbers[0], MAX_JET_ORDER, &[]);
+            for (order, (&g, &e)) in got.iter().zip(&numbers[1..]).enumerate() {
+                let tol = 1e-12 * e.abs().max(1.0);
+                assert!(
+                    (g - e).abs() <= tol,
+                    "{name} at {}: d{order} = {g}, sympy {e}",
+                    numbers[0]
+                );
+            }
+            rows += 1;
+        }
+        assert_eq!(rows, 39);
+    }
+
+    #[test]
+    fn circle_derivatives_cycle() {
+        let x = 0.3f64;
+        let c = jet(&call(Func::Cos, t()), x, 8, &[]);
+        let cycle = [x.cos(), -x.sin(), -x.cos(), x.sin()];
+        for (k, d) in c.iter().enumerate() {
+            assert!((d - cycle[k % 4]).abs() < 1e-15, "d{k}");
+        }
+    }
+
+    #[test]
+    fn integer_powers_work_at_a_zero_and_a_negative_base() {
+        assert_eq!(jet(&pow(t(), n(2.0)), 0.0, 3, &[]), [0.0, 0.0, 2.0, 0.0]);
+        assert_eq!(
+            jet(&pow(t(), n(3.0)), -2.0, 4, &[]),
+            [-8.0, 12.0, -12.0, 6.0, 0.0]
+        );
+        // The same through a parameter exponent that is an integer at run time.
+        assert_eq!(
+            jet(&pow(t(), p(0)), -2.0, 4, &[3.0]),
+            [-8.0, 12.0, -12.0, 6.0, 0.0]
+        );
+        // t⁻² at 2: 1/4, −2/8, 6/16, −24/32.
+        assert_eq!(
+            jet(&pow(t(), n(-2.0)), 2.0, 3, &[]),
+            [0.25, -0.25, 0.375, -0.75]
+        );
+        assert_eq!(jet(&pow(t(), n(0.0)), 0.0, 2, &[]), [1.0, 0.0, 0.0]);
+        // A real power at a zero base: the value, then no derivatives.
+        let d = jet(&pow(t(), n(0.5)), 0.0, 2, &[]);
+        assert_eq!(d[0], 0.0);
+        assert!(d[1].is_nan() || d[1].is_infinite());
+    }
+
+    #[test]
+    fn abs_follows_the_first_nonzero_coefficient() {
+        assert_eq!(
+            jet(&call(Func::Abs, pow(t(), n(2.0))), 0.0, 3, &[]),
+            [0.0, 0.0, 2.0, 0.0]
+        );
+        assert_eq!(
+            jet(&call(Func::Abs, neg(pow(t(), n(2.0)))), 0.0, 2, &[]),
+            [0.0, 0.0, 2.0]
+        );
+        let d = jet(&call(Func::Abs, t()), 0.0, 2, &[]);
+        assert_eq!(d[0], 0.0);
+        assert!(d[1].is_nan() && d[2].is_nan());
+        let d = jet(&call(Func::Abs, pow(t(), n(3.0))), 0.0, 3, &[]);
+        assert_eq!(&d[..3], &[0.0, 0.0, 0.0]);
+        assert!(d[3].is_nan());
+        assert_eq!(jet(&call(Func::Abs, t()), -1.5, 2, &[]), [1.5, -1.0, 0.0]);
+    }
+
+    #[test]
+    fn steps_have_zero_derivatives_and_their_conventional_values() {
+        let three_t = |f| call(f, mul(n(3.0), t()));
+        assert_eq!(
+            jet(&three_t(Func::Floor), 1.0 / 3.0, 2, &[]),
+            [1.0, 0.0, 0.0]
+        );
+        assert_eq!(jet(&three_t(Func::Ceil), 0.5, 2, &[]), [2.0, 0.0, 0.0]);
+        assert_eq!(jet(&three_t(Func::Sign), 0.0, 2, &[]), [0.0, 0.0, 0.0]);
+        assert_eq!(jet(&three_t(Func::Sign), -0.1, 1, &[]), [-1.0, 0.0]);
+    }
+
+    #[test]
+    fn undefined_points_give_nan_or_infinity() {
+        let d = jet(&call(Func::Ln, t()), 0.0, 2, &[]);
+        assert_eq!(d[0], f64::NEG_INFINITY);
+        assert!(!d[1].is_finite());
+        assert!(jet(&call(Func::Sqrt, t()), -1.0, 1, &[])
+            .iter()
+            .all(|x| x.is_nan()));
+        assert!(!jet(&call(Func::Asin, t()), 1.0, 1, &[])[1].is_finite());
+        assert!(jet(&div(n(1.0), t()), 0.0, 1, &[])
+            .iter()
+            .all(|x| !x.is_finite()));
+    }
+
+    #[test]
+    fn order_and_output_length_cap_the_work() {
+        let e = call(Func::Exp, t());
+        let tape = Tape::compile(&e);
+        let mut s = Scratch::new();
+        let mut out = [7.0; 12];
+        tape.eval_jet(0.0, 20, &[], &mut s, &mut out);
+        assert_eq!(&out[..9], &[1.0; 9]);
+        assert_eq!(&out[9..], &[7.0; 3]);
+        let mut two = [0.0; 2];
+        tape.eval_jet(0.0, 8, &[], &mut s, &mut two);
+        assert_eq!(two, [1.0, 1.0]);
+        tape.eval_jet(0.0, 8, &[], &mut s, &mut []);
+        // A constant: value then zeros.
+        assert_eq!(jet(&mul(p(0), n(2.0)), 1.0, 2, &[1.5]), [3.0, 0.0, 0.0]);
     }
 }

@@ -17,6 +17,7 @@ pub mod interval;
 pub mod jet;
 pub mod math;
 pub mod rational;
+mod series;
 pub mod tape;
 
 pub use ast::{BinOp, Constant, Expr, Func, Node, Span};
