@@ -295,3 +295,189 @@ impl Tape {
         flags
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::ast::Expr;
+    use super::super::tape::build::*;
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    fn over(e: &Expr, lo: f64, hi: f64) -> (IntervalResult, IntervalFlags, [Interval; 3]) {
+        let tape = Tape::compile(e);
+        let mut s = Scratch::new();
+        let r = tape.eval_interval(lo, hi, &[], &mut s);
+        let mut out = [Interval::EMPTY; 3];
+        let f = tape.eval_interval_jet(lo, hi, 2, &[], &mut s, &mut out);
+        (r, f, out)
+    }
+
+    #[test]
+    fn flags_at_poles_jumps_and_domain_edges() {
+        let recip = div(n(1.0), t());
+        let (r, f, _) = over(&recip, -1.0, 1.0);
+        assert_eq!(
+            (r.defined, r.continuous, f.smooth),
+            (Defined::Partly, false, false)
+        );
+        let (r, f, d) = over(&recip, 0.5, 1.0);
+        assert_eq!(
+            (r.defined, r.continuous, f.smooth),
+            (Defined::Everywhere, true, true)
+        );
+        assert!(r.value.lo <= 1.0 && r.value.hi >= 2.0 && r.value.hi < 2.0 + 1e-12);
+        // x″ = 2/t³ ∈ [2, 16] on [0.5, 1].
+        assert!(d[2].contains(2.0) && d[2].contains(16.0) && d[2].hi < 16.0 + 1e-9);
+
+        let (r, _, _) = over(&call(Func::Tan, t()), 1.0, 2.0);
+        assert!(!r.continuous && r.defined == Defined::Partly);
+        assert!(over(&call(Func::Tan, t()), -1.0, 1.0).0.continuous);
+
+        let (r, f, _) = over(&call(Func::Floor, t()), 0.5, 1.5);
+        assert_eq!(
+            (r.defined, r.continuous, f.smooth),
+            (Defined::Everywhere, false, false)
+        );
+        assert_eq!(r.value, Interval::new(0.0, 1.0));
+        assert!(over(&call(Func::Floor, t()), 1.0, 1.5).0.continuous); // right-continuous
+        assert!(!over(&call(Func::Floor, t()), 0.5, 1.0).0.continuous);
+        assert!(over(&call(Func::Ceil, t()), 0.5, 1.0).0.continuous); // left-continuous
+        assert!(!over(&call(Func::Ceil, t()), 1.0, 1.5).0.continuous);
+        assert!(!over(&call(Func::Sign, t()), 0.0, 1.0).0.continuous);
+
+        let root = call(Func::Sqrt, t());
+        let (r, _, _) = over(&root, -1.0, 1.0);
+        assert_eq!((r.defined, r.continuous), (Defined::Partly, false));
+        assert!(r.value.contains(0.0) && r.value.contains(1.0));
+        let (r, f, d) = over(&root, -2.0, -1.0);
+        assert_eq!(
+            (r.defined, r.continuous, f.defined),
+            (Defined::Nowhere, false, Defined::Nowhere)
+        );
+        assert!(r.value.is_empty() && d[1].is_empty());
+        let (r, f, _) = over(&root, 0.0, 1.0);
+        assert_eq!(
+            (r.defined, r.continuous, f.smooth),
+            (Defined::Everywhere, true, false)
+        );
+        assert!(over(&root, 0.25, 1.0).1.smooth);
+
+        let (r, f, _) = over(&call(Func::Abs, t()), -1.0, 1.0);
+        assert_eq!((r.continuous, f.smooth), (true, false));
+        assert_eq!(
+            over(&call(Func::Ln, t()), -1.0, 0.0).0.defined,
+            Defined::Nowhere
+        );
+        assert_eq!(
+            over(&call(Func::Asin, t()), 0.5, 2.0).0.defined,
+            Defined::Partly
+        );
+        let (r, f, _) = over(&call(Func::Asin, t()), -1.0, 1.0);
+        assert_eq!((r.continuous, f.smooth), (true, false));
+        assert!(!over(&pow(t(), n(-0.5)), 0.0, 1.0).0.continuous);
+        assert!(over(&pow(t(), n(1.5)), 0.0, 1.0).0.continuous);
+        assert_eq!(over(&pow(t(), t()), -2.0, -1.0).0.defined, Defined::Nowhere);
+        assert_eq!(
+            over(&div(t(), n(0.0)), -2.0, -1.0).0.defined,
+            Defined::Nowhere
+        );
+        // exp(exp(t)) overflows: defined, but not proven finite.
+        let (r, _, _) = over(&call(Func::Exp, call(Func::Exp, t())), 6.0, 7.0);
+        assert_eq!((r.defined, r.continuous), (Defined::Everywhere, false));
+        assert!(over(&t(), 2.0, 1.0).0.value.is_empty());
+    }
+
+    #[test]
+    fn the_circle_and_the_polynomial_have_tight_enclosures() {
+        let (r, f, d) = over(&call(Func::Cos, t()), 0.0, std::f64::consts::PI);
+        assert!(f.smooth && r.value.lo == -1.0 && r.value.hi == 1.0);
+        assert!(d[1].lo <= -1.0 && d[1].lo > -1.0 - 1e-14 && d[1].hi >= 0.0);
+        let (r, _, _) = over(&notes_polynomial(), 0.0, 0.0);
+        assert!(r.value.contains(-5.0) && r.value.hi - r.value.lo < 1e-14);
+    }
+
+    fn containment_trees() -> Vec<Expr> {
+        let sq = |a: Expr| pow(a, n(2.0));
+        vec![
+            notes_polynomial(),
+            call(Func::Cos, t()),
+            call(Func::Sin, mul(n(3.0), t())),
+            call(Func::Tan, t()),
+            div(n(1.0), t()),
+            call(Func::Sqrt, t()),
+            call(Func::Ln, add(n(2.0), call(Func::Cos, t()))),
+            call(Func::Exp, call(Func::Sin, sq(t()))),
+            div(call(Func::Atan, t()), add(n(1.0), t())),
+            pow(t(), t()),
+            call(Func::Asin, div(t(), n(2.0))),
+            add(call(Func::Acos, div(t(), n(3.0))), call(Func::Log, t())),
+            mul(call(Func::Abs, t()), call(Func::Sin, mul(n(3.0), t()))),
+            add(call(Func::Floor, t()), call(Func::Sign, sub(t(), n(1.0)))),
+            sub(
+                call(Func::Cosh, t()),
+                mul(call(Func::Tanh, t()), call(Func::Sinh, t())),
+            ),
+            add(
+                pow(add(n(1.0), sq(t())), n(2.5)),
+                pow(add(n(2.0), t()), n(-1.0 / 3.0)),
+            ),
+            mul(pow(t(), p(0)), call(Func::Ceil, mul(p(1), t()))),
+            div(sq(sub(t(), n(1.0))), pow(t(), n(-3.0))),
+        ]
+    }
+
+    /// Every f64 evaluation (value, x′, x″) at points of a random sub-interval lies in the
+    /// enclosure; an undefined point is never inside an "Everywhere" interval.
+    #[test]
+    fn enclosures_contain_every_point_evaluation() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut random = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let params = [3.0, 1.5];
+        let mut s = Scratch::new();
+        let mut jet = [0.0; 3];
+        let mut enclosure = [Interval::EMPTY; 3];
+        for e in containment_trees() {
+            let tape = Tape::compile(&e);
+            for _ in 0..200 {
+                let lo = -4.0 + 8.0 * random();
+                let hi = lo + 10f64.powf(-6.0 + 6.5 * random());
+                let r = tape.eval_interval(lo, hi, &params, &mut s);
+                let f = tape.eval_interval_jet(lo, hi, 2, &params, &mut s, &mut enclosure);
+                assert_eq!((r.defined, r.continuous), (f.defined, f.continuous));
+                for i in 0..=16 {
+                    let x = if i == 16 {
+                        hi
+                    } else {
+                        lo + (hi - lo) * random()
+                    };
+                    tape.eval_jet(x, 2, &params, &mut s, &mut jet);
+                    let where_ = format!("{e:?} on [{lo}, {hi}] at {x}");
+                    if jet[0].is_finite() {
+                        assert!(r.defined != Defined::Nowhere, "{where_}");
+                        assert!(
+                            r.value.contains(jet[0]),
+                            "{where_}: {} ∉ {:?}",
+                            jet[0],
+                            r.value
+                        );
+                    } else if jet[0].is_nan() {
+                        assert!(r.defined != Defined::Everywhere, "{where_}");
+                    } else {
+                        assert!(!r.continuous, "{where_}");
+                    }
+                    for k in 1..3 {
+                        if jet[k].is_finite() && f.defined != Defined::Nowhere {
+                            assert!(enclosure[k].contains(jet[k]), "{where_}: d{k}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

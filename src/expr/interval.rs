@@ -99,6 +99,9 @@ impl Interval {
 
     /// [lo, hi] ∩ [a, b].
     fn clip(self, a: f64, b: f64) -> Interval {
+        if self.is_empty() {
+            return Interval::EMPTY;
+        }
         Interval::new(self.lo.max(a), self.hi.min(b))
     }
 
@@ -174,14 +177,21 @@ impl Interval {
             Func::Tan if self.holds_tan_pole() => Interval::ENTIRE,
             Func::Tan => self.monotone(|x| math::apply(Func::Tan, x), true),
             Func::Asin => self.clip(-1.0, 1.0).monotone(|x| math::apply(f, x), true),
-            Func::Acos => self.clip(-1.0, 1.0).monotone(|x| math::apply(f, x), false),
+            Func::Acos => self
+                .clip(-1.0, 1.0)
+                .monotone(|x| math::apply(f, x), false)
+                .clip(0.0, PI),
             Func::Ln | Func::Log => self
                 .clip(0.0, f64::INFINITY)
                 .monotone(|x| math::apply(f, x), true),
-            Func::Sqrt => self.clip(0.0, f64::INFINITY).monotone(f64::sqrt, true),
-            Func::Atan | Func::Sinh | Func::Tanh | Func::Exp => {
-                self.monotone(|x| math::apply(f, x), true)
-            }
+            Func::Sqrt => self
+                .clip(0.0, f64::INFINITY)
+                .monotone(f64::sqrt, true)
+                .clip(0.0, f64::INFINITY),
+            Func::Exp => self
+                .monotone(|x| math::apply(f, x), true)
+                .clip(0.0, f64::INFINITY),
+            Func::Atan | Func::Sinh | Func::Tanh => self.monotone(|x| math::apply(f, x), true),
             Func::Cosh => self
                 .even(|x| math::apply(Func::Cosh, x), 2)
                 .clip(1.0, f64::INFINITY),
@@ -209,7 +219,7 @@ impl Interval {
         let m = n.unsigned_abs();
         let p = |x: f64| math::powu(x, m);
         let pos = if m.is_multiple_of(2) {
-            self.even(p, 2)
+            self.even(p, 2).clip(0.0, f64::INFINITY)
         } else {
             self.monotone(p, true)
         };
@@ -225,6 +235,7 @@ impl Interval {
     pub fn powf(self, r: f64) -> Interval {
         let x = self.clip(0.0, f64::INFINITY);
         x.monotone(|x| math::pow_const(x, r), r > 0.0)
+            .clip(0.0, f64::INFINITY)
     }
 
     /// Xᴮ = e^(B ln X) on the part of X where x ≥ 0 (0⁰ = 1, 0ᵇ = 0 for b > 0).
@@ -339,5 +350,101 @@ impl Scalar for Interval {
             _ => return (Interval::new(-1.0, 1.0), a.len()),
         };
         (Interval::point(s), a.len())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use crate::platform::test;
+
+    fn iv(lo: f64, hi: f64) -> Interval {
+        Interval::new(lo, hi)
+    }
+
+    #[test]
+    fn arithmetic_rounds_outward_by_one_ulp() {
+        assert_eq!(
+            iv(1.0, 2.0) + iv(1.0, 1.0),
+            iv(2f64.next_down(), 3f64.next_up())
+        );
+        assert_eq!(
+            iv(1.0, 2.0) - iv(0.0, 1.0),
+            iv(0f64.next_down(), 2f64.next_up())
+        );
+        assert_eq!(-iv(1.0, 2.0), iv(-2.0, -1.0));
+        let p = iv(-2.0, 3.0) * iv(-1.0, 4.0);
+        assert_eq!(p, iv((-8f64).next_down(), 12f64.next_up()));
+        assert_eq!(
+            iv(0.0, 0.0) * Interval::ENTIRE,
+            iv(0f64.next_down(), 0f64.next_up())
+        );
+        let q = iv(1.0, 2.0) / iv(4.0, 8.0);
+        assert_eq!(q, iv(0.125f64.next_down(), 0.5f64.next_up()));
+        assert_eq!(iv(1.0, 2.0) / iv(-1.0, 1.0), Interval::ENTIRE);
+        assert!((Interval::EMPTY + iv(1.0, 2.0)).is_empty());
+        assert!((Interval::EMPTY * iv(1.0, 2.0)).is_empty());
+        assert!(iv(2.0, 1.0).is_empty() && !iv(1.0, 1.0).is_empty());
+        for f in Func::ALL {
+            assert!(Interval::EMPTY.apply(f).is_empty(), "{f:?}");
+        }
+        assert!(Interval::EMPTY.powi(2).is_empty() && Interval::EMPTY.powf(0.5).is_empty());
+    }
+
+    #[test]
+    fn powers_know_the_sign() {
+        let r = iv(-2.0, 1.0).powi(2);
+        assert!(r.lo == 0.0 && r.contains(4.0) && r.hi < 4.0 + 1e-14);
+        let r = iv(-2.0, -1.0).powi(3);
+        assert!(r.contains(-8.0) && r.contains(-1.0) && r.hi < -1.0 + 1e-14);
+        assert_eq!(iv(-5.0, 5.0).powi(0), iv(1.0, 1.0));
+        assert_eq!(iv(-1.0, 1.0).powi(-1), Interval::ENTIRE);
+        let r = iv(2.0, 4.0).powi(-2);
+        assert!(r.contains(1.0 / 16.0) && r.contains(0.25) && r.hi < 0.25 + 1e-15);
+        let r = iv(-4.0, 9.0).powf(0.5);
+        assert!(r.lo == 0.0 && r.contains(3.0) && r.hi < 3.0 + 1e-14);
+        assert!(iv(-4.0, -1.0).powf(0.5).is_empty());
+        let r = iv(0.0, 2.0).pow_var(iv(0.0, 1.0));
+        assert!(r.contains(0.0) && r.contains(1.0) && r.contains(2.0) && r.hi < 2.0 + 1e-14);
+    }
+
+    #[test]
+    fn sine_and_cosine_find_their_extrema() {
+        let r = iv(0.1, 3.0).apply(Func::Sin);
+        assert_eq!(r.hi, 1.0);
+        assert!(r.lo <= 0.1f64.sin() && r.lo > 0.1f64.sin() - 1e-15);
+        let r = iv(3.0, 3.5).apply(Func::Cos);
+        assert_eq!(r.lo, -1.0);
+        assert!(r.hi >= 3.5f64.cos().max(3f64.cos()) && r.hi < -0.93);
+        // Without an extremum: the endpoints.
+        let r = iv(0.2, 0.3).apply(Func::Sin);
+        assert!(
+            r.contains(0.2f64.sin()) && r.contains(0.3f64.sin()) && r.hi < 0.3f64.sin() + 1e-15
+        );
+        assert_eq!(iv(0.0, 7.0).apply(Func::Cos), iv(-1.0, 1.0));
+        // A maximum just at an end (2π·1000) is not missed.
+        let x = 2000.0 * PI;
+        assert_eq!(iv(x, x + 0.5).apply(Func::Cos).hi, 1.0);
+        assert_eq!(iv(-3.0 * FRAC_PI_2, 0.0).apply(Func::Sin).hi, 1.0);
+    }
+
+    #[test]
+    fn the_other_functions_respect_domain_and_monotonicity() {
+        assert_eq!(iv(1.0, 2.0).apply(Func::Tan), Interval::ENTIRE);
+        assert!(iv(-1.0, 1.0).apply(Func::Tan).contains(1f64.tan()));
+        assert!(!iv(-1.0, 1.0).holds_tan_pole() && iv(4.0, 5.0).holds_tan_pole());
+        let r = iv(-1.0, 1.0).apply(Func::Ln);
+        assert!(r.lo == f64::NEG_INFINITY && r.contains(0.0) && r.hi < 1e-15);
+        assert!(iv(-3.0, -2.0).apply(Func::Sqrt).is_empty());
+        let r = iv(0.5, 2.0).apply(Func::Asin);
+        assert!(r.contains(FRAC_PI_2) && r.contains(0.5f64.asin()) && r.hi < FRAC_PI_2 + 1e-15);
+        let r = iv(-1.0, 2.0).apply(Func::Cosh);
+        assert!(r.lo == 1.0 && r.contains(2f64.cosh()) && r.hi < 2f64.cosh() + 1e-14);
+        assert_eq!(iv(-3.0, 2.0).apply(Func::Abs), iv(0.0, 3.0));
+        assert_eq!(iv(-0.5, 2.5).apply(Func::Floor), iv(-1.0, 2.0));
+        assert_eq!(iv(-0.5, 0.0).apply(Func::Sign), iv(-1.0, 0.0));
+        let r = iv(-1.0, 0.0).apply(Func::Acos);
+        assert!(r.contains(PI) && r.contains(FRAC_PI_2) && r.lo > FRAC_PI_2 - 1e-15);
     }
 }

@@ -430,4 +430,42 @@ mod tests {
         tape.eval_many(&[1.0, 2.0, 3.0], &[], &mut Scratch::new(), &mut out);
         assert_eq!(out, [1.0, 4.0, 9.0]);
     }
+
+    /// Native micro-benchmark (`cargo test --release --lib expr::tape -- --ignored
+    /// --nocapture`): 1M evaluations of the circle (x and y) and of the notes' polynomial.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[test]
+    #[ignore]
+    fn bench_one_million_evaluations() {
+        let mut s = Scratch::new();
+        let cases = [
+            (
+                "circle x = cos t, y = sin t",
+                vec![call(Func::Cos, t()), call(Func::Sin, t())],
+            ),
+            ("notes' polynomial", vec![notes_polynomial()]),
+        ];
+        for (name, exprs) in cases {
+            let tapes: Vec<Tape> = exprs.iter().map(Tape::compile).collect();
+            let start = std::time::Instant::now();
+            let mut sum = 0.0;
+            for i in 0..1_000_000 {
+                let x = i as f64 * 1e-6;
+                for tape in &tapes {
+                    sum += tape.eval(x, &[], &mut s);
+                }
+            }
+            let time = start.elapsed();
+            let mut jet = [0.0; 3];
+            let start = std::time::Instant::now();
+            for i in 0..1_000_000 {
+                for tape in &tapes {
+                    tape.eval_jet(i as f64 * 1e-6, 2, &[], &mut s, &mut jet);
+                    sum += jet[2];
+                }
+            }
+            let jet_time = start.elapsed();
+            println!("{name}: 1M points {time:?} (values), {jet_time:?} (order-2 jets) [{sum}]");
+        }
+    }
 }
