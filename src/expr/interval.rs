@@ -148,9 +148,10 @@ impl Interval {
         r.clip(-1.0, 1.0)
     }
 
-    /// Whether tan has a pole (π/2 + kπ) in it, or it is at least π wide.
+    /// Whether tan has a pole (π/2 + kπ) in it, or it is at least π wide (false if empty).
     pub fn holds_tan_pole(self) -> bool {
-        self.hi - self.lo >= PI || (self.hi - self.lo).is_nan() || self.holds_lattice(FRAC_PI_2, PI)
+        let width = self.hi - self.lo;
+        !self.is_empty() && (width.is_nan() || width >= PI || self.holds_lattice(FRAC_PI_2, PI))
     }
 
     /// An even function decreasing on (−∞, 0] and increasing on [0, ∞) (x², cosh, |x|).
