@@ -1,5 +1,5 @@
 //! Interval arithmetic for certified plotting: an [`Interval`] encloses every value an
-//! expression takes for t in [lo, hi], and [`IntervalFlags`] say whether it is proven defined,
+//! expression takes for t in [lo, hi], and [`IntervalFlags`](super::IntervalFlags) say whether it is proven defined,
 //! continuous and C² there.
 //!
 //! Outward rounding: every arithmetic result (+ − × ÷) is widened by one ulp each way

@@ -2,7 +2,7 @@
 //! the standard recurrences of automatic differentiation (never finite differences); the k-th
 //! derivative is k!·cₖ.
 //!
-//! The recurrences of every operation are in [`series`](super::series).
+//! The recurrences of every operation are in `series.rs` (listed there).
 //!
 //! The code is generic over a [`Scalar`]: `f64` here, and [`Interval`](super::Interval) for
 //! enclosures of the derivatives over an interval of t (see `certify.rs`).

@@ -2,7 +2,7 @@
 //! conventions: floor right-continuous, ceil left-continuous, sign(0) = 0, 0⁰ = 1, an
 //! undefined value is NaN or ±∞ as IEEE 754 gives it (ln 0 = −∞, √−1 = NaN, 1/0 = ∞).
 //!
-//! The transcendental functions come from the platform ([`crate::platform`]): JavaScript's
+//! The transcendental functions come from the platform (`platform.rs`): JavaScript's
 //! `Math` in the browser build (no second copy of libm in the wasm), Rust's std elsewhere.
 
 use super::ast::Func;
