@@ -14,6 +14,9 @@ mod js {
         /// JavaScript's `String(x)` for a number.
         #[wasm_bindgen(js_name = String)]
         pub(super) fn js_string(x: f64) -> String;
+        /// JavaScript's `Number(text)` for a string.
+        #[wasm_bindgen(js_name = Number)]
+        pub(super) fn js_number(text: &str) -> f64;
         #[wasm_bindgen(js_namespace = Math, js_name = sin)]
         pub(super) fn js_sin(x: f64) -> f64;
         #[wasm_bindgen(js_namespace = Math, js_name = cos)]
@@ -59,6 +62,21 @@ pub(crate) fn number_text(x: f64) -> String {
     #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
     {
         js_number_text(x)
+    }
+}
+
+/// The nearest f64 to a decimal written with digits and at most one point (`"6.5"`, `".5"`):
+/// JavaScript's `Number(text)` in the browser build (which keeps Rust's decimal parser and its
+/// ~10 KB table of powers of five out of the wasm), [`str::parse`] elsewhere; both round
+/// correctly. NaN for any other text.
+pub(crate) fn parse_decimal(text: &str) -> f64 {
+    #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+    {
+        js::js_number(text)
+    }
+    #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+    {
+        text.parse().unwrap_or(f64::NAN)
     }
 }
 

@@ -141,13 +141,16 @@ fn number(text: &str) -> Kind {
     if points > 1 || points == text.len() {
         return Kind::Bad(Fault::Number);
     }
-    match text.parse::<f64>() {
-        Ok(value) if value.is_finite() => Kind::Number {
+    let value = crate::platform::parse_decimal(text);
+    if value.is_finite() {
+        Kind::Number {
             value,
             exact: exact_decimal(text),
-        },
-        Ok(_) => Kind::Bad(Fault::Infinite),
-        Err(_) => Kind::Bad(Fault::Number),
+        }
+    } else if value.is_nan() {
+        Kind::Bad(Fault::Number)
+    } else {
+        Kind::Bad(Fault::Infinite)
     }
 }
 

@@ -9,7 +9,7 @@
 //! b_i = Σ_{j ≤ i} C(i, j)/C(n, j) · c′_j (the control values of the degree-n Bézier form on
 //! [a, b]).
 
-use super::ast::{BinOp, Expr, Func, Node};
+use super::ast::{BinOp, Expr, Node};
 use super::rational::Rational;
 use super::simplify::MAX_DEPTH;
 
@@ -112,30 +112,6 @@ fn times(a: &Polynomial, b: &Polynomial) -> Option<Polynomial> {
     )
 }
 
-/// A function of a constant, in f64 (the language's conventions: sign(0) = 0).
-fn apply(f: Func, x: f64) -> f64 {
-    match f {
-        Func::Sin => crate::platform::sin_cos(x).0,
-        Func::Cos => crate::platform::sin_cos(x).1,
-        Func::Tan => x.tan(),
-        Func::Asin => x.asin(),
-        Func::Acos => x.acos(),
-        Func::Atan => x.atan(),
-        Func::Sinh => x.sinh(),
-        Func::Cosh => x.cosh(),
-        Func::Tanh => x.tanh(),
-        Func::Exp => x.exp(),
-        Func::Ln => x.ln(),
-        Func::Log => x.log10(),
-        Func::Sqrt => x.sqrt(),
-        Func::Abs => x.abs(),
-        Func::Floor => x.floor(),
-        Func::Ceil => x.ceil(),
-        Func::Sign if x == 0.0 || x.is_nan() => x,
-        Func::Sign => x.signum(),
-    }
-}
-
 fn build(e: &Expr, params: &[f64], depth: usize) -> Option<Polynomial> {
     if depth > MAX_DEPTH {
         return None;
@@ -156,7 +132,7 @@ fn build(e: &Expr, params: &[f64], depth: usize) -> Option<Polynomial> {
         ),
         Node::Call(f, a) => {
             let (x, _) = build(a, params, depth)?.as_constant()?;
-            Polynomial::constant(apply(*f, x), None)
+            Polynomial::constant(super::math::apply(*f, x), None)
         }
         Node::Binary(op, a, b) => {
             let (a, b) = (build(a, params, depth)?, build(b, params, depth)?);
@@ -197,7 +173,7 @@ fn raise(a: Polynomial, b: Polynomial) -> Option<Polynomial> {
             .map(|r| vec![r]);
         let value = match &q {
             Some(r) => r[0].to_f64(),
-            None => x.powf(y),
+            None => super::math::pow_const(x, y),
         };
         return Some(Polynomial {
             coefficients: vec![value],
@@ -339,6 +315,7 @@ pub fn bernstein_f64(c: &[f64], a: f64, b: f64) -> Vec<f64> {
 mod tests {
     use super::super::diff::build::*;
     use super::*;
+    use crate::expr::Func;
     #[cfg(target_arch = "wasm32")]
     use crate::platform::test;
 

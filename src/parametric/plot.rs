@@ -26,7 +26,7 @@ use crate::error::{check_tolerance, Result};
 const START_SEGMENTS: usize = 16;
 
 /// Interval evaluations one plot may make (each costs a few evaluations of the tapes).
-pub const MAX_INTERVALS: usize = 200_000;
+pub const MAX_INTERVALS: usize = 50_000;
 
 /// Intervals shorter than this fraction of their piece are not split again.
 const MIN_RELATIVE_WIDTH: f64 = 1.0 / (1u64 << 36) as f64;
@@ -44,10 +44,14 @@ pub struct Plot {
 
 #[derive(Clone, Copy, PartialEq)]
 enum State {
-    Undecided,
+    /// To split into this many equal parts (≥ 2) in the next pass; 0: not judged yet.
+    Undecided(u8),
     Chord,
     Gap,
 }
+
+/// Most parts one interval is split into at once.
+const MAX_SPLIT: f64 = 32.0;
 
 impl ParametricCurve {
     /// The certified plot of the curve (see the module's comment): within `tolerance` (model
@@ -96,13 +100,13 @@ impl ParametricCurve {
                 } else {
                     a + (b - a) * (k + 1) as f64 / START_SEGMENTS as f64
                 };
-                (lo, hi, State::Undecided)
+                (lo, hi, State::Undecided(0))
             })
             .collect();
         let mut enclosure = [Interval::point(0.0); 3];
         loop {
             let mut undecided = false;
-            for s in segments.iter_mut().filter(|s| s.2 == State::Undecided) {
+            for s in segments.iter_mut().filter(|s| s.2 == State::Undecided(0)) {
                 if *budget == 0 {
                     s.2 = State::Gap;
                     *complete = false;
@@ -110,7 +114,7 @@ impl ParametricCurve {
                 }
                 *budget -= 1;
                 s.2 = self.judge(i, s.0, s.1, tolerance, bbox, &mut enclosure);
-                if s.2 == State::Undecided {
+                if let State::Undecided(_) = s.2 {
                     if s.1 - s.0 <= min_width {
                         s.2 = State::Gap;
                     } else {
@@ -123,19 +127,30 @@ impl ParametricCurve {
             }
             let mut next = Vec::with_capacity(segments.len() * 2);
             for s in segments {
-                if s.2 == State::Undecided {
-                    let mid = 0.5 * (s.0 + s.1);
-                    next.push((s.0, mid, State::Undecided));
-                    next.push((mid, s.1, State::Undecided));
-                } else {
-                    next.push(s);
+                match s.2 {
+                    State::Undecided(parts) => {
+                        let parts = usize::from(parts.max(2));
+                        for k in 0..parts {
+                            let lo = s.0 + (s.1 - s.0) * k as f64 / parts as f64;
+                            let hi = if k + 1 == parts {
+                                s.1
+                            } else {
+                                s.0 + (s.1 - s.0) * (k + 1) as f64 / parts as f64
+                            };
+                            next.push((lo, hi, State::Undecided(0)));
+                        }
+                    }
+                    _ => next.push(s),
                 }
             }
             segments = next;
         }
     }
 
-    /// What `[lo, hi]` of piece `i` is: a chord, a gap, or undecided (to split).
+    /// What `[lo, hi]` of piece `i` is: a chord, a gap, or undecided (to split: in two, or
+    /// where the second-derivative bound is finite into the `k` parts that bound says may
+    /// suffice, `k = ⌈√(bound/tolerance)⌉ ≤ 32`, which skips the levels bisection would
+    /// reject on the way).
     fn judge(
         &self,
         i: usize,
@@ -175,13 +190,16 @@ impl ParametricCurve {
             return State::Gap;
         }
         if !continuous {
-            return State::Undecided;
+            return State::Undecided(2);
         }
         let h = hi - lo;
-        if diagonal2.sqrt() <= tolerance || (smooth && h * h / 8.0 * second2.sqrt() <= tolerance) {
+        let bound = h * h / 8.0 * second2.sqrt();
+        if diagonal2.sqrt() <= tolerance || (smooth && bound <= tolerance) {
             State::Chord
+        } else if smooth && bound.is_finite() {
+            State::Undecided((bound / tolerance).sqrt().ceil().clamp(2.0, MAX_SPLIT) as u8)
         } else {
-            State::Undecided
+            State::Undecided(2)
         }
     }
 }

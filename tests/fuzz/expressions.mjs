@@ -59,8 +59,8 @@ function mutated(r) {
 /** An expression text: well-formed, mutated, or hostile. */
 export function expression(r) {
   const { chance, int, pick } = r;
-  if (chance(0.6)) return formula(r);
-  if (chance(0.6)) return mutated(r);
+  if (chance(0.75)) return formula(r);
+  if (chance(0.5)) return mutated(r);
   switch (int(0, 6)) {
     case 0:
       return `${"(".repeat(int(60, 100000))}t`;
@@ -89,26 +89,26 @@ function bound(r, at) {
 /** A `pieces` argument: 1–4 joined pieces (sometimes z, sometimes broken). */
 export function pieces(r) {
   const { chance, int } = r;
-  const n = chance(0.9) ? int(1, 4) : int(0, 70);
+  const n = chance(0.95) ? int(1, 4) : int(0, 70);
   const z = chance(0.2);
   const out = [];
   for (let i = 0; i < n; i++) {
     const piece = { x: expression(r), y: expression(r), from: bound(r, i), to: bound(r, i + 1) };
     if (z || chance(0.02)) piece.z = expression(r);
-    if (chance(0.03)) delete piece.y;
+    if (chance(0.01)) delete piece.y;
     out.push(piece);
   }
   return out;
 }
 
-/** A `parameters` argument. */
+/** A `parameters` argument: mostly a and b (the names formula() uses), sometimes more names,
+ * invalid names or values. */
 export function parameters(r) {
   const { chance, pick, rnd } = r;
-  if (chance(0.3)) return undefined;
-  const out = {};
-  for (const name of ["a", "b", "ω", "a_1", "tt", "e"]) {
-    if (chance(0.5))
-      out[name] = chance(0.9) ? (rnd() - 0.5) * 8 : pick([Number.NaN, Infinity, "2"]);
-  }
+  if (chance(0.05)) return undefined;
+  const out = { a: 0.5 + rnd() * 2, b: (rnd() - 0.5) * 4 };
+  if (chance(0.2)) out.ω = rnd();
+  if (chance(0.05)) out[pick(["tt", "e", "t", "pi", "sin", "", "a_"])] = 1;
+  if (chance(0.05)) out.a = pick([Number.NaN, Infinity, "2", null]);
   return out;
 }
