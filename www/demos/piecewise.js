@@ -36,7 +36,7 @@ import {
   refineForWindow,
   runsPath,
 } from "../lib/plot-runs.js";
-import { oneSidedTables } from "../lib/one-sided-table.js";
+import { agree, oneSidedTables } from "../lib/one-sided-table.js";
 import { pieceFields } from "../lib/piece-fields.js";
 
 export const id = "piecewise";
@@ -430,7 +430,7 @@ export function formula(s, d) {
     const at = shortNumber(j.t, true);
     const terms = [];
     for (let k = 0; k < j.left.length && k <= Math.max(1, Math.min(j.order ?? 1, 2)); k++) {
-      const same = k <= j.c;
+      const same = [0, 1].every((c) => agree(j, k, j.left[k][c], j.right[k][c]));
       terms.push(
         `P_{${i + 1}}${PRIMES[k]}({${at}}^{-}) = ${pairTex(j.left[k])} ` +
           `${same ? "=" : "\\neq"} P_{${i + 2}}${PRIMES[k]}({${at}}^{+}) = ${pairTex(j.right[k])}`,

@@ -185,9 +185,7 @@ const isExpression = (p) => typeof p?.start === "number" && typeof p?.end === "n
  * Display) then the problem's message; null when the problem has no template.
  */
 function expressionText(code, params) {
-  const form = EXPRESSION_FORMS[code]?.(params) ?? "";
-  const key = has(`coreError.${code}${form}`) ? `${code}${form}` : code;
-  const message = coded(key, params, {}, false);
+  const message = problemOf(code, params);
   if (message === null) return null;
   const piece = params.piece ?? null;
   const field = params.field ?? null;
@@ -204,6 +202,26 @@ function expressionText(code, params) {
     });
   }
   return t("coreError.place.at", { place, message });
+}
+
+/** A typed expression's problem in words (its code's form for these params), or null. */
+function problemOf(code, params) {
+  const form = EXPRESSION_FORMS[code]?.(params) ?? "";
+  const key = has(`coreError.${code}${form}`) ? `${code}${form}` : code;
+  return coded(key, params, {}, false);
+}
+
+/**
+ * A typed expression's problem alone, without its place ('this ")" has no "(" before it'), for
+ * a page that shows the place itself (the characters underlined, the piece and field named);
+ * any other error as `errorText`.
+ */
+export function problemText(err) {
+  if (err !== null && typeof err === "object" && isExpression(err.params)) {
+    const message = problemOf(err.code, err.params);
+    if (message !== null) return message;
+  }
+  return errorText(err);
 }
 
 /**

@@ -16,9 +16,13 @@ const PRIME_TEXT = Object.freeze(["", "′", "″", "‴"]);
 /** Text of a one-sided value: exact-looking numbers, or the undefined word. */
 const valueText = (x) => (Number.isFinite(x) ? exactText(x) : t("piecewise.undefined"));
 
-/** Do two one-sided values agree (the core's verdict for orders ≤ c, else the numbers)? */
-function agree(j, k, a, b) {
+/**
+ * Do two one-sided values of order k agree: the core's verdict for k ≤ c and for the first
+ * order that differs (`order`), else the numbers (to rounding)?
+ */
+export function agree(j, k, a, b) {
   if (k <= j.c) return true;
+  if (k === j.order && !(Number.isFinite(a) && Number.isFinite(b) && a === b)) return false;
   const scale = 1 + Math.max(Math.abs(a), Math.abs(b));
   return Number.isFinite(a) && Number.isFinite(b) && Math.abs(a - b) <= 1e-9 * scale;
 }

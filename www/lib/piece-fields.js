@@ -8,14 +8,14 @@
  * Every keystroke builds the candidate state through `ui.replace` (the model first: the core's
  * parser and `parametricCurve`). A refusal is the core's coded Error with params `{ piece, field,
  * start, end }` (start/end in UTF-16 units, a JS string's indices): the box gets
- * `aria-invalid`, the characters start … end are underlined in an echo line under it, the reason
- * (lib/core-errors.js `errorText`, in the page's language) is written under the piece and in
- * the status line, and the state keeps the last good curve. A good text is committed with a
+ * `aria-invalid`, the characters start … end are underlined in an echo line under it, the
+ * reason (lib/core-errors.js `problemText`, in the page's language; the place is named here) is
+ * written under the piece and in the status line, and the state keeps the last good curve. A good text is committed with a
  * merge key per box, so one undo step takes back one box's typing.
  */
 import { el, setText, button } from "./controls.js";
 import { t } from "./strings.js";
-import { errorText } from "./core-errors.js";
+import { errorText, problemText } from "./core-errors.js";
 import { CYCLE } from "./theme.js";
 
 /**
@@ -73,7 +73,7 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
         const message = t(`${prefix}.typingError`, {
           i: k + 1,
           field: fieldName(where),
-          message: errorText(err),
+          message: problemText(err),
         });
         setText(rows[k].message, message);
         ui.status(message, "error");
