@@ -31,7 +31,7 @@ import { arrow } from "../lib/draw.js";
 import {
   boxOf,
   grownBox,
-  middleVertex,
+  nameRun,
   plotParts,
   refineForWindow,
   runsPath,
@@ -159,6 +159,9 @@ function jointsOf(d) {
       right.push(valueAt(d.parts[i + 1], b, k));
     }
     const verdict = verdictText(j);
+    // A piece near its end bends towards its acceleration's normal part: its arrow's name goes
+    // to the other side (1: the arrow's left, −1: its right, as placeLabelBeside reads it).
+    const away = (v, acc) => (v[0] * acc[1] - v[1] * acc[0] > 0 ? -1 : 1);
     const how = t(j.exact ? "piecewise.proven" : "piecewise.measured");
     return {
       t: j.t,
@@ -171,6 +174,8 @@ function jointsOf(d) {
       verdict,
       how,
       text: t("piecewise.joint", { t: shortNumber(j.t), verdict }),
+      leftSide: away(left[1], left[2]),
+      rightSide: away(right[1], right[2]),
       leftArrow: t("piecewise.leftArrow", { t: shortNumber(j.t) }),
       rightArrow: t("piecewise.rightArrow", { t: shortNumber(j.t) }),
       tag: `t = ${shortNumber(j.t)}`,
@@ -314,78 +319,82 @@ const ARROW_LABEL_OFFSET_PX = 14;
 /** Each piece in its colour and named; at each joint the ends, the velocities and the verdict. */
 export function draw(r, v, s, d) {
   const theme = r.theme;
+  const style = jointStyles(theme).text;
   const { points, labels } = d.shape;
   for (let i = 0; i < points.length; i++) {
     runsPath(r, v, points[i]);
     r.paint(pieceStyles[i % CYCLE.length]);
   }
-  for (let i = 0; i < points.length; i++) {
-    const k = middleVertex(points[i]);
-    if (k < 0) continue;
-    const x = v.sx(points[i][2 * k]);
-    const y = v.sy(points[i][2 * k + 1]);
-    placeLabel(r, labels[i], x, y, -0.7, -0.7, LABEL_OFFSET_PX * r.scale, jointStyles(theme).text);
-  }
-  const scale = d.arrowScale;
-  d.joints.forEach((j, i) => {
-    const p = j.left[0];
-    const q = j.right[0];
-    const px = v.sx(p[0]);
-    const py = v.sy(p[1]);
-    const qx = v.sx(q[0]);
-    const qy = v.sy(q[1]);
-    const finite = Number.isFinite(px + py + qx + qy);
-    if (finite && j.c < 0) {
-      r.beginPath();
-      r.moveTo(px, py);
-      r.lineTo(qx, qy);
-      r.paint(theme.helper);
-    }
-    // Velocities: P′(a⁻) arriving at the left end, P′(a⁺) leaving the right end.
-    const a = j.left[1];
-    const b = j.right[1];
-    const lx = a[0] * scale * v.scale;
-    const ly = -a[1] * scale * v.scale;
-    const rx = b[0] * scale * v.scale;
-    const ry = -b[1] * scale * v.scale;
-    if (Number.isFinite(lx + ly + px + py)) arrow(r, px - lx, py - ly, px, py, ARRIVING);
-    if (Number.isFinite(rx + ry + qx + qy)) arrow(r, qx, qy, qx + rx, qy + ry, LEAVING);
-    if (!finite) return;
-    if (j.c < 0) {
-      r.point(px, py, endStyles[i % CYCLE.length]);
-      r.point(qx, qy, endStyles[(i + 1) % CYCLE.length]);
-    } else {
-      r.point(qx, qy, jointStyles(theme).point);
-    }
-    // The arrows named on their left, the verdict on the right of the mean direction.
-    const style = jointStyles(theme).text;
-    const offset = ARROW_LABEL_OFFSET_PX * r.scale;
-    const ll = Math.hypot(lx, ly);
-    const rl = Math.hypot(rx, ry);
-    if (ll > 1)
-      placeLabelBeside(r, j.leftArrow, px - lx / 2, py - ly / 2, lx, ly, 1, offset, style);
-    if (rl > 1)
-      placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, 1, offset, style);
-    let mx = (ll > 1 ? lx / ll : 0) + (rl > 1 ? rx / rl : 0);
-    let my = (ll > 1 ? ly / ll : 0) + (rl > 1 ? ry / rl : 0);
-    const m = Math.hypot(mx, my);
-    if (m > 1e-6) {
-      mx /= m;
-      my /= m;
-    } else {
-      mx = 1;
-      my = 0;
-    }
-    const tx = j.c < 0 ? (px + qx) / 2 : qx;
-    const ty = j.c < 0 ? (py + qy) / 2 : qy;
-    placeLabel(r, j.tag, tx, ty, -my, mx, TAG_OFFSET_PX * r.scale, style);
-  });
-  // The verdicts, top left (the tag names the joint in the figure).
+  for (let i = 0; i < points.length; i++)
+    nameRun(r, v, points[i], labels[i], style, LABEL_OFFSET_PX * r.scale);
+  const named = d.joints.length > 1; // one joint: the verdict at the top names it
+  for (let i = 0; i < d.joints.length; i++) drawJoint(r, v, d.joints[i], i, d.arrowScale, named);
+  // The verdicts, top left.
   const margin = TEXT_MARGIN_PX * r.scale;
   const step = VERDICT_LINE_HEIGHT * theme.label.size * r.scale;
-  d.joints.forEach((j, i) => {
-    r.text(j.figureLabel, margin, margin + i * step, jointStyles(theme).text, "left", "top");
-  });
+  for (let i = 0; i < d.joints.length; i++)
+    r.text(d.joints[i].figureLabel, margin, margin + i * step, style, "left", "top");
+}
+
+/**
+ * Joint i: the gap between the ends when they differ, the velocity arriving, P′(a⁻), at the
+ * left end and leaving, P′(a⁺), from the right end (each named on the side away from its
+ * piece's bend), the joint's point, and with several joints its tag "t = a".
+ */
+function drawJoint(r, v, j, i, scale, named) {
+  const theme = r.theme;
+  const style = jointStyles(theme).text;
+  const px = v.sx(j.left[0][0]);
+  const py = v.sy(j.left[0][1]);
+  const qx = v.sx(j.right[0][0]);
+  const qy = v.sy(j.right[0][1]);
+  const finite = Number.isFinite(px + py + qx + qy);
+  if (finite && j.c < 0) {
+    r.beginPath();
+    r.moveTo(px, py);
+    r.lineTo(qx, qy);
+    r.paint(theme.helper);
+  }
+  const a = j.left[1];
+  const b = j.right[1];
+  const lx = a[0] * scale * v.scale;
+  const ly = -a[1] * scale * v.scale;
+  const rx = b[0] * scale * v.scale;
+  const ry = -b[1] * scale * v.scale;
+  const ll = Math.hypot(lx, ly);
+  const rl = Math.hypot(rx, ry);
+  if (Number.isFinite(ll + px + py)) arrow(r, px - lx, py - ly, px, py, ARRIVING);
+  if (Number.isFinite(rl + qx + qy)) arrow(r, qx, qy, qx + rx, qy + ry, LEAVING);
+  if (!finite) return;
+  if (j.c < 0) {
+    r.point(px, py, endStyles[i % CYCLE.length]);
+    r.point(qx, qy, endStyles[(i + 1) % CYCLE.length]);
+  } else {
+    r.point(qx, qy, jointStyles(theme).point);
+  }
+  const offset = ARROW_LABEL_OFFSET_PX * r.scale;
+  if (ll > 1) {
+    placeLabelBeside(r, j.leftArrow, px - lx / 2, py - ly / 2, lx, ly, j.leftSide, offset, style);
+  }
+  if (rl > 1) {
+    placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, j.rightSide, offset, style);
+  }
+  if (!named) return;
+  // The tag across the mean direction, on the left piece's outer side.
+  let mx = (ll > 1 ? lx / ll : 0) + (rl > 1 ? rx / rl : 0);
+  let my = (ll > 1 ? ly / ll : 0) + (rl > 1 ? ry / rl : 0);
+  const m = Math.hypot(mx, my);
+  if (m > 1e-6) {
+    mx /= m;
+    my /= m;
+  } else {
+    mx = 1;
+    my = 0;
+  }
+  const side = j.leftSide;
+  const tx = j.c < 0 ? (px + qx) / 2 : qx;
+  const ty = j.c < 0 ? (py + qy) / 2 : qy;
+  placeLabel(r, j.tag, tx, ty, side * my, -side * mx, TAG_OFFSET_PX * r.scale, style);
 }
 
 // ------------------------------------------------------------ formula, label, table

@@ -4,6 +4,7 @@
  * figure fits around finite samples with a pole's far values left out, the runs as one path, and
  * a vertex to name a curve at. Not a curve algorithm: the vertices are the core's.
  */
+import { placeLabel } from "./handles.js";
 
 /** A range wider than this many times the 5–95 % spread has a pole: the box keeps the spread. */
 const POLE_SPREAD = 20;
@@ -103,4 +104,38 @@ export function refineForWindow(view, parts, shape) {
   shape.tolerance = TOLERANCE_PX * perPx;
   shape.plotBox = grownBox(win, WINDOW_MARGIN);
   Object.assign(shape, plotParts(parts, shape.tolerance, shape.plotBox));
+}
+
+/**
+ * Names a plotted curve: `text` beside its middle vertex, `gap` CSS px out along the normal, on
+ * the outer side of its bend (away from the midpoint of the chord between its first and last
+ * finite vertex; a straight one on the left of its direction). Allocates nothing.
+ */
+export function nameRun(r, v, flat, text, style, gap) {
+  const k = middleVertex(flat);
+  if (k < 0) return;
+  const n = flat.length / 2;
+  let first = 0;
+  while (!Number.isFinite(flat[2 * first] + flat[2 * first + 1])) first++;
+  let last = n - 1;
+  while (!Number.isFinite(flat[2 * last] + flat[2 * last + 1])) last--;
+  const x = v.sx(flat[2 * k]);
+  const y = v.sy(flat[2 * k + 1]);
+  // The normal of the local direction (left of it), turned away from the chord's midpoint.
+  let a = k > first && Number.isFinite(flat[2 * k - 2] + flat[2 * k - 1]) ? k - 1 : k;
+  let b = k < last && Number.isFinite(flat[2 * k + 2] + flat[2 * k + 3]) ? k + 1 : k;
+  if (a === b) [a, b] = [first, last];
+  let nx = v.sy(flat[2 * b + 1]) - v.sy(flat[2 * a + 1]);
+  let ny = -(v.sx(flat[2 * b]) - v.sx(flat[2 * a]));
+  const length = Math.hypot(nx, ny);
+  if (!(length > 0)) {
+    placeLabel(r, text, x, y, -Math.SQRT1_2, -Math.SQRT1_2, gap, style);
+    return;
+  }
+  nx /= length;
+  ny /= length;
+  const mx = x - (v.sx(flat[2 * first]) + v.sx(flat[2 * last])) / 2;
+  const my = y - (v.sy(flat[2 * first + 1]) + v.sy(flat[2 * last + 1])) / 2;
+  const sign = nx * mx + ny * my < 0 ? -1 : 1;
+  placeLabel(r, text, x, y, sign * nx, sign * ny, gap, style);
 }
