@@ -339,7 +339,8 @@ export function draw(r, v, s, d) {
 /**
  * Joint i: the gap between the ends when they differ, the velocity arriving, P′(a⁻), at the
  * left end and leaving, P′(a⁺), from the right end (each named on the side away from its
- * piece's bend), the joint's point, and with several joints its tag "t = a".
+ * piece's bend, or from the other end when the ends are apart), the joint's point, and with
+ * several joints its tag "t = a".
  */
 function drawJoint(r, v, j, i, scale, named) {
   const theme = r.theme;
@@ -373,11 +374,15 @@ function drawJoint(r, v, j, i, scale, named) {
     r.point(qx, qy, jointStyles(theme).point);
   }
   const offset = ARROW_LABEL_OFFSET_PX * r.scale;
+  // Apart ends: each name away from the other end (the gap); else away from its piece's bend.
+  const apart = j.c < 0 && Math.hypot(qx - px, qy - py) > 1;
+  const leftSide = apart ? (ly * (qx - px) - lx * (qy - py) > 0 ? -1 : 1) : j.leftSide;
+  const rightSide = apart ? (ry * (px - qx) - rx * (py - qy) > 0 ? -1 : 1) : j.rightSide;
   if (ll > 1) {
-    placeLabelBeside(r, j.leftArrow, px - lx / 2, py - ly / 2, lx, ly, j.leftSide, offset, style);
+    placeLabelBeside(r, j.leftArrow, px - lx / 2, py - ly / 2, lx, ly, leftSide, offset, style);
   }
   if (rl > 1) {
-    placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, j.rightSide, offset, style);
+    placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, rightSide, offset, style);
   }
   if (!named) return;
   // The tag across the mean direction, on the left piece's outer side.
