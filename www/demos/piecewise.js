@@ -37,6 +37,7 @@ import {
   runsPath,
 } from "../lib/plot-runs.js";
 import { agree, oneSidedTables } from "../lib/one-sided-table.js";
+import { PRIMES, pairTex, pieceTex } from "../lib/piece-tex.js";
 import { pieceFields } from "../lib/piece-fields.js";
 
 export const id = "piecewise";
@@ -162,7 +163,13 @@ function jointsOf(d) {
     // A piece near its end bends towards its acceleration's normal part: its arrow's name goes
     // to the other side (1: the arrow's left, −1: its right, as placeLabelBeside reads it).
     const away = (v, acc) => (v[0] * acc[1] - v[1] * acc[0] > 0 ? -1 : 1);
-    const how = t(j.exact ? "piecewise.proven" : "piecewise.measured");
+    const how = howText(j, "piecewise.proven", "piecewise.measured", "piecewise.breakProven");
+    const short = howText(
+      j,
+      "piecewise.formula.proven",
+      "piecewise.formula.measured",
+      "piecewise.formula.breakProven",
+    );
     return {
       t: j.t,
       c: j.c,
@@ -173,6 +180,7 @@ function jointsOf(d) {
       right,
       verdict,
       how,
+      short,
       text: t("piecewise.joint", { t: shortNumber(j.t), verdict }),
       leftSide: away(left[1], left[2]),
       rightSide: away(right[1], right[2]),
@@ -182,10 +190,20 @@ function jointsOf(d) {
       figureLabel: t("piecewise.figureVerdict", {
         t: shortNumber(j.t),
         verdict: j.c < 0 ? t("piecewise.formula.notC0") : verdict,
-        how: t(j.exact ? "piecewise.formula.proven" : "piecewise.formula.measured"),
+        how: short,
       }),
     };
   });
+}
+
+/**
+ * How the verdict is known: proven in exact arithmetic, or measured in floating point — with
+ * the first order that differs proven different by interval enclosures (`disjoint`) or not.
+ */
+function howText(j, proven, measured, breakProven) {
+  if (j.exact) return t(proven);
+  if (j.disjoint && Number.isInteger(j.order)) return t(breakProven, { order: j.order });
+  return t(measured);
 }
 
 /** "C¹, G¹", or the break / one-polynomial words. */
@@ -404,42 +422,10 @@ function drawJoint(r, v, j, i, scale, named) {
 
 // ------------------------------------------------------------ formula, label, table
 
-const PRIMES = Object.freeze(["", "'", "''", "'''"]);
-
-/** (x, y) in TeX; an undefined value as a word. */
-function pairTex(p) {
-  if (!Number.isFinite(p[0]) || !Number.isFinite(p[1]))
-    return `\\text{${t("piecewise.undefined")}}`;
-  return `\\left(${shortNumber(p[0], true)},\\ ${shortNumber(p[1], true)}\\right)`;
-}
-
-/** The core's TeX of piece i (its formulas and first derivatives), or the typed text. */
-function pieceTex(s, d, i) {
-  const n = s.pieces.length;
-  const close = i === n - 1 ? "]" : ")";
-  let tex = null;
-  try {
-    tex = d.curve.tex(i);
-  } catch {
-    tex = null;
-  }
-  const texOf = (f, key) => tex?.[f]?.[key] ?? null;
-  const raw = (f) => `\\texttt{${s.pieces[i][f].replace(/[\\{}$&#^_%~]/g, "")}}`;
-  const k = i + 1;
-  const lines = [
-    `P_{${k}}(t) = \\left(${texOf("x", "expr") ?? raw("x")},\\ ${texOf("y", "expr") ?? raw("y")}\\right),\\quad ` +
-      `t \\in [${tex?.from ?? raw("from")},\\ ${tex?.to ?? raw("to")}${close}`,
-  ];
-  const dx = texOf("x", "d1");
-  const dy = texOf("y", "d1");
-  if (dx !== null && dy !== null) lines.push(`P_{${k}}'(t) = \\left(${dx},\\ ${dy}\\right)`);
-  return lines;
-}
-
 /** Each piece's formula and velocity, then per joint the one-sided values and the verdict. */
 export function formula(s, d) {
   const lines = [];
-  for (let i = 0; i < s.pieces.length; i++) lines.push(...pieceTex(s, d, i));
+  for (let i = 0; i < s.pieces.length; i++) lines.push(...pieceTex(d.curve, s.pieces, i));
   d.joints.forEach((j, i) => {
     const at = shortNumber(j.t, true);
     const terms = [];
@@ -457,7 +443,7 @@ export function formula(s, d) {
         : j.c === Infinity
           ? orderTex("C", Infinity)
           : `${orderTex("C", j.c)},\\ ${orderTex("G", j.g)}`;
-    const how = t(j.exact ? "piecewise.formula.proven" : "piecewise.formula.measured");
+    const how = j.short;
     lines.push(
       `\\text{${t("piecewise.formula.joint")}}\\ t = ${at}:\\ ${found}\\ \\ (\\text{${how}})`,
     );

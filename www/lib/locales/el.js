@@ -2215,6 +2215,8 @@ export default {
   "piecewise.verdict.infinite": "C∞: και οι δύο πλευρές είναι ένα πολυώνυμο",
   "piecewise.proven": "αποδεδειγμένο (ακριβής αριθμητική)",
   "piecewise.measured": "μετρημένο (κινητή υποδιαστολή)",
+  "piecewise.breakProven":
+    "μετρημένο (κινητή υποδιαστολή)· ότι η τάξη {order} διαφέρει είναι αποδεδειγμένο (αριθμητική διαστημάτων)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
@@ -2231,6 +2233,7 @@ export default {
   "piecewise.formula.joint": "συνένωση στο",
   "piecewise.formula.proven": "αποδεδειγμένο",
   "piecewise.formula.measured": "μετρημένο",
+  "piecewise.formula.breakProven": "μετρημένο· η τάξη {order} διαφέρει: αποδεδειγμένο",
   "piecewise.formula.notC0": "όχι C⁰",
   "piecewise.badPiece":
     "πεδίο «{field}»: το κομμάτι {index} πρέπει να είναι [x, y, from, to] με κείμενα έως 1000 χαρακτήρων",

@@ -2193,6 +2193,8 @@ export default {
   "piecewise.verdict.infinite": "C∞: obje strane su jedan polinom",
   "piecewise.proven": "dokazano (egzaktna aritmetika)",
   "piecewise.measured": "izmjereno (aritmetika s pomičnim zarezom)",
+  "piecewise.breakProven":
+    "izmjereno (aritmetika s pomičnim zarezom); da se red {order} razlikuje, dokazano je (intervalna aritmetika)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
@@ -2209,6 +2211,7 @@ export default {
   "piecewise.formula.joint": "spoj u",
   "piecewise.formula.proven": "dokazano",
   "piecewise.formula.measured": "izmjereno",
+  "piecewise.formula.breakProven": "izmjereno; red {order} se razlikuje: dokazano",
   "piecewise.formula.notC0": "nije C⁰",
   "piecewise.badPiece":
     "polje „{field}”: segment {index} mora biti [x, y, from, to] s tekstovima od najviše 1000 znakova",

@@ -2213,6 +2213,8 @@ export default {
   "piecewise.verdict.infinite": "C∞: entrambi i lati sono un unico polinomio",
   "piecewise.proven": "dimostrato (aritmetica esatta)",
   "piecewise.measured": "misurato (virgola mobile)",
+  "piecewise.breakProven":
+    "misurato (virgola mobile); che l'ordine {order} differisca è dimostrato (aritmetica degli intervalli)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
@@ -2229,6 +2231,7 @@ export default {
   "piecewise.formula.joint": "giunzione in",
   "piecewise.formula.proven": "dimostrato",
   "piecewise.formula.measured": "misurato",
+  "piecewise.formula.breakProven": "misurato; l'ordine {order} differisce: dimostrato",
   "piecewise.formula.notC0": "non C⁰",
   "piecewise.badPiece":
     "campo “{field}”: il pezzo {index} deve essere [x, y, from, to] con testi di al massimo 1000 caratteri",

@@ -45,6 +45,8 @@ export const PIECEWISE = {
   "piecewise.verdict.infinite": "C∞: both sides are one polynomial",
   "piecewise.proven": "proven (exact arithmetic)",
   "piecewise.measured": "measured (floating point)",
+  "piecewise.breakProven":
+    "measured (floating point); that order {order} differs is proven (interval arithmetic)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
@@ -61,6 +63,7 @@ export const PIECEWISE = {
   "piecewise.formula.joint": "joint at",
   "piecewise.formula.proven": "proven",
   "piecewise.formula.measured": "measured",
+  "piecewise.formula.breakProven": "measured; order {order} differs: proven",
   "piecewise.formula.notC0": "not C⁰",
   "piecewise.badPiece":
     "field “{field}”: piece {index} must be [x, y, from, to] with texts of at most 1000 characters",
