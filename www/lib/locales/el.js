@@ -107,7 +107,8 @@ export default {
     "μη υποστηριζόμενη έκδοση αρχείου {version} (αυτή η σελίδα διαβάζει την έκδοση {expected})",
   "error.wrongDemo": "το αρχείο είναι για την επίδειξη «{found}», όχι για την «{expected}»",
   "error.attribute": "χαρακτηριστικό «{name}»: {message}",
-  "error.recordShape": "το «{value}» πρέπει να έχει ένα κείμενο για καθένα από τα {fields}, χωρισμένα με κόμματα",
+  "error.recordShape":
+    "το «{value}» πρέπει να έχει ένα κείμενο για καθένα από τα {fields}, χωρισμένα με κόμματα",
   "error.unknownDemo": "δεν υπάρχει επίδειξη με το όνομα «{id}»",
   "control.t": "Παράμετρος t",
   "control.t.input": "τιμή του t (δεκαδικός ή κλάσμα όπως 1/3)",
@@ -2195,7 +2196,8 @@ export default {
   "piecewise.fieldName.from": "αρχή του διαστήματος",
   "piecewise.fieldName.to": "τέλος του διαστήματος",
   "piecewise.addPiece": "Προσθήκη κομματιού",
-  "piecewise.addPiece.title": "Προσθήκη κομματιού μετά το τελευταίο, από εκεί όπου εκείνο τελειώνει",
+  "piecewise.addPiece.title":
+    "Προσθήκη κομματιού μετά το τελευταίο, από εκεί όπου εκείνο τελειώνει",
   "piecewise.removePiece": "Αφαίρεση του τελευταίου κομματιού",
   "piecewise.removePiece.title": "Αφαίρεση του τελευταίου κομματιού (μένει τουλάχιστον ένα)",
   "piecewise.maxPieces": "αυτή η επίδειξη επιτρέπει έως {max} κομμάτια",

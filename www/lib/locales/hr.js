@@ -102,7 +102,8 @@ export default {
   "error.version": "nepodržana inačica datoteke {version} (ova stranica čita inačicu {expected})",
   "error.wrongDemo": "datoteka je za demonstraciju „{found}”, a ne „{expected}”",
   "error.attribute": "atribut „{name}”: {message}",
-  "error.recordShape": "„{value}” mora imati po jedan tekst za svako od {fields}, odvojene zarezima",
+  "error.recordShape":
+    "„{value}” mora imati po jedan tekst za svako od {fields}, odvojene zarezima",
   "error.unknownDemo": "ne postoji demonstracija „{id}”",
   "control.t": "Parametar t",
   "control.t.input": "vrijednost t (decimalni broj ili razlomak poput 1/3)",

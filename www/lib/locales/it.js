@@ -103,7 +103,8 @@ export default {
     "versione del file {version} non supportata (questa pagina legge la versione {expected})",
   "error.wrongDemo": "il file è per la demo “{found}”, non “{expected}”",
   "error.attribute": "attributo “{name}”: {message}",
-  "error.recordShape": "“{value}” deve avere un testo per ciascuno di {fields}, separati da virgole",
+  "error.recordShape":
+    "“{value}” deve avere un testo per ciascuno di {fields}, separati da virgole",
   "error.unknownDemo": "non esiste una demo chiamata “{id}”",
   "control.t": "Parametro t",
   "control.t.input": "valore di t (decimale o frazione come 1/3)",
@@ -2240,5 +2241,6 @@ export default {
     "Il pezzo 1 è x = 1 − t², y = t su [0, 1]. Scrivi x(t) e y(t) del pezzo 2 su [1, 2] in modo che la giunzione in t = 1 sia C¹: lo stesso punto e la stessa velocità da entrambi i lati.",
   "exercise.piecewise-c1.hint":
     "In t = 1 il pezzo 1 si trova in x = 0, y = 1 con velocità x′ = −2, y′ = 1. Tieni y = t e cerca x = t² + bt + c con x(1) = 0 e x′(1) = 2 + b = −2.",
-  "exercise.piecewise-c1.notYet": "Non ancora. Il verdetto del nucleo di calcolo in t = 1: {detail}.",
+  "exercise.piecewise-c1.notYet":
+    "Non ancora. Il verdetto del nucleo di calcolo in t = 1: {detail}.",
 };
