@@ -186,7 +186,7 @@ function jointsOf(d) {
       rightSide: away(right[1], right[2]),
       leftArrow: t("piecewise.leftArrow", { t: shortNumber(j.t) }),
       rightArrow: t("piecewise.rightArrow", { t: shortNumber(j.t) }),
-      tag: `t = ${shortNumber(j.t)}`,
+      tag: t("piecewise.tag", { t: shortNumber(j.t) }),
       figureLabel: t("piecewise.figureVerdict", {
         t: shortNumber(j.t),
         verdict: j.c < 0 ? t("piecewise.formula.notC0") : verdict,

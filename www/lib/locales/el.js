@@ -2220,6 +2220,7 @@ export default {
   "piecewise.breakProven":
     "μετρημένο (κινητή υποδιαστολή)· ότι η τάξη {order} διαφέρει είναι αποδεδειγμένο (αριθμητική διαστημάτων)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.tag": "t = {t}",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":

@@ -2197,6 +2197,7 @@ export default {
   "piecewise.breakProven":
     "izmjereno (aritmetika s pomičnim zarezom); da se red {order} razlikuje, dokazano je (intervalna aritmetika)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.tag": "t = {t}",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":

@@ -2217,6 +2217,7 @@ export default {
   "piecewise.breakProven":
     "misurato (virgola mobile); che l'ordine {order} differisca è dimostrato (aritmetica degli intervalli)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.tag": "t = {t}",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":

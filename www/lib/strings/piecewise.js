@@ -48,6 +48,7 @@ export const PIECEWISE = {
   "piecewise.breakProven":
     "measured (floating point); that order {order} differs is proven (interval arithmetic)",
   "piecewise.figureVerdict": "t = {t}: {verdict} ({how})",
+  "piecewise.tag": "t = {t}",
   "piecewise.leftArrow": "P′({t}⁻)",
   "piecewise.rightArrow": "P′({t}⁺)",
   "piecewise.incomplete":
