@@ -213,23 +213,27 @@ function verdictText(j) {
   return t("piecewise.verdict", { c: orderText("C", j.c), g: orderText("G", j.g) });
 }
 
-/** One scale for every velocity arrow (world units per unit of speed): speeds compare. */
-function arrowScale(d) {
-  let fastest = 0;
-  for (const j of d.joints) {
+/**
+ * Per joint the scale of its two velocity arrows (world units per unit of speed): the faster
+ * one is ARROW_FRACTION of the box's diagonal, so both sides compare; 0 without a speed.
+ */
+function arrowScales(d) {
+  const [x0, y0, x1, y1] = d.shape.box;
+  const size = ARROW_FRACTION * Math.hypot(x1 - x0, y1 - y0);
+  return d.joints.map((j) => {
+    let fastest = 0;
     for (const v of [j.left[1], j.right[1]]) {
       const speed = Math.hypot(v[0], v[1]);
       if (Number.isFinite(speed)) fastest = Math.max(fastest, speed);
     }
-  }
-  const [x0, y0, x1, y1] = d.shape.box;
-  return fastest > 0 ? (ARROW_FRACTION * Math.hypot(x1 - x0, y1 - y0)) / fastest : 0;
+    return fastest > 0 ? size / fastest : 0;
+  });
 }
 
 export const compute = {
   shape: [["pieces"], (s, d) => plotPieces(d)],
   joints: [["pieces"], (s, d) => jointsOf(d)],
-  arrowScale: [["pieces"], (s, d) => arrowScale(d)],
+  arrowScales: [["pieces"], (s, d) => arrowScales(d)],
 };
 
 // ------------------------------------------------------------ the panel
@@ -325,6 +329,8 @@ const jointStyles = themed((theme) => ({
     radius: RADIUS.pointOnCurve,
   }),
 }));
+/** |unit(P′(a⁻)) − unit(P′(a⁺))| above this is a corner (the tag goes opposite both arrows). */
+const CORNER = 0.5;
 /** Distance of a joint's tag "t = 1" from the joint (CSS px). */
 const TAG_OFFSET_PX = 8;
 /** Margin of the verdicts from the canvas corner (CSS px), and their line height (font sizes). */
@@ -346,7 +352,8 @@ export function draw(r, v, s, d) {
   for (let i = 0; i < points.length; i++)
     nameRun(r, v, points[i], labels[i], style, LABEL_OFFSET_PX * r.scale);
   const named = d.joints.length > 1; // one joint: the verdict at the top names it
-  for (let i = 0; i < d.joints.length; i++) drawJoint(r, v, d.joints[i], i, d.arrowScale, named);
+  for (let i = 0; i < d.joints.length; i++)
+    drawJoint(r, v, d.joints[i], i, d.arrowScales[i], named);
   // The verdicts, top left.
   const margin = TEXT_MARGIN_PX * r.scale;
   const step = VERDICT_LINE_HEIGHT * theme.label.size * r.scale;
@@ -403,21 +410,25 @@ function drawJoint(r, v, j, i, scale, named) {
     placeLabelBeside(r, j.rightArrow, qx + rx / 2, qy + ry / 2, rx, ry, rightSide, offset, style);
   }
   if (!named) return;
-  // The tag across the mean direction, on the left piece's outer side.
-  let mx = (ll > 1 ? lx / ll : 0) + (rl > 1 ? rx / rl : 0);
-  let my = (ll > 1 ? ly / ll : 0) + (rl > 1 ? ry / rl : 0);
-  const m = Math.hypot(mx, my);
-  if (m > 1e-6) {
-    mx /= m;
-    my /= m;
-  } else {
-    mx = 1;
-    my = 0;
+  // The tag where neither arrow is: at a corner opposite both (the arriving arrow lies behind
+  // the joint, the leaving one ahead), along a smooth joint across it on the outer side.
+  const ux = ll > 1 ? lx / ll : 0;
+  const uy = ll > 1 ? ly / ll : 0;
+  const wx = rl > 1 ? rx / rl : 0;
+  const wy = rl > 1 ? ry / rl : 0;
+  let dx = ux - wx;
+  let dy = uy - wy;
+  let m = Math.hypot(dx, dy);
+  if (m < CORNER) {
+    // Smooth: the left normal of the mean direction, turned to the outer side.
+    dx = j.leftSide * (uy + wy);
+    dy = -j.leftSide * (ux + wx);
+    m = Math.hypot(dx, dy);
   }
-  const side = j.leftSide;
+  if (!(m > 1e-6)) [dx, dy, m] = [0, -1, 1];
   const tx = j.c < 0 ? (px + qx) / 2 : qx;
   const ty = j.c < 0 ? (py + qy) / 2 : qy;
-  placeLabel(r, j.tag, tx, ty, side * my, -side * mx, TAG_OFFSET_PX * r.scale, style);
+  placeLabel(r, j.tag, tx, ty, dx / m, dy / m, TAG_OFFSET_PX * r.scale, style);
 }
 
 // ------------------------------------------------------------ formula, label, table
