@@ -1,0 +1,1157 @@
+/**
+ * Demo (syllabus §1 "Parametric curves", issue 24): a curve typed as formulas x(t), y(t) and
+ * optionally z(t) on an interval [a, b] whose ends are formulas too ("2pi"). The curve library
+ * parses and differentiates the texts (`sl.parametricCurve`); every other name in them
+ * (`sl.expressionNames`) is a parameter with a slider, its value in the state and set in place
+ * (`setParameter`). The point P(t) runs along the curve (player) with its velocity P′(t) and
+ * acceleration P″(t), the speed |P′|, the curvature κ and the osculating circle; the hodograph
+ * (the curve of velocities) is drawn from a draggable origin O beside it, as in derivatives.js.
+ * The curve is drawn from the core's adaptive plot (`plot(tolerance, box)`: runs split where the
+ * curve is undefined or jumps, e.g. at the poles of tan t), with a tolerance of a fraction of a
+ * pixel in model units and the visible window as the box.
+ *
+ * A space curve (z given) is drawn in the same 2D figure through an orthographic view whose
+ * azimuth and elevation are state fields (sliders; dragging the figure turns it): the runtime
+ * chooses a 2D View or a three.js View3D once, when the demo is mounted, and the view's state
+ * (`view`: a window or a camera) is the shell's, so one demo cannot switch between them. The
+ * Frenet frame T, N, B comes from the core (`frame(t)`).
+ *
+ * A polynomial curve offers its exact Bézier form (`toBezier(0)`, `bezierFractions(0)`): the
+ * control polygon on the same figure, the fractions listed, and a link into de-casteljau.
+ */
+import { field } from "../lib/validate.js";
+import { slider, checkbox, readout, group, actions } from "../lib/panel.js";
+import {
+  fmt,
+  fmtTex,
+  fmtMachine,
+  localeDecimal,
+  pointTex,
+  pointText,
+  subscript,
+  texDecimal,
+} from "../lib/format.js";
+import { HUES, RADIUS, SECOND_CURVE } from "../lib/theme.js";
+import { locale, t } from "../lib/strings.js";
+import { arrow, drawCaption } from "../lib/draw.js";
+import { placeLabel, placeLabelAtTip } from "../lib/handles.js";
+import { clipSegment } from "../lib/clip.js";
+import { buildHash } from "../lib/state.js";
+import { withLanguage } from "../lib/language.js";
+import { errorText } from "../lib/core-errors.js";
+import { BEZIER_POINTS } from "../lib/point-list.js";
+import { formulaFields, infoLine, parameterSliders, shownIf } from "../lib/expression-fields.js";
+
+export const id = "parametric-curve";
+export const strings = "parametricCurve";
+export const section = 1;
+
+/** The typed fields the curve is built from (a parameter's value is set in place). */
+const TEXTS = ["x", "y", "z", "from", "to"];
+const WITH_PARAMS = [...TEXTS, "params"];
+/** The longest text the core parses (src/expr/mod.rs MAX_LENGTH). */
+const MAX_TEXT = 1000;
+/** Parameters a state may carry. */
+const MAX_PARAMS = 16;
+/** A parameter that appears in a new text starts at this value. */
+const DEFAULT_PARAMETER = 1;
+/** The plot follows the curve within this many CSS px (converted to model units). */
+const PLOT_TOLERANCE_PX = 0.25;
+/** The plot's box: the canvas in world units, widened by this fraction on each side. */
+const PLOT_BOX_MARGIN = 0.1;
+/** Samples for the figure's bounds and the hodograph (one derivative per sample and change). */
+const BOUNDS_SAMPLES = 512;
+const HODOGRAPH_SAMPLES = 256;
+/** Robust bounds: the quantiles kept when the extremes run far off (a pole). */
+const ROBUST_QUANTILE = 0.1;
+const ROBUST_SPREAD = 3;
+/** The hodograph's size as a fraction of the curve's (the scale λ is the nice number below). */
+const HODOGRAPH_FRACTION = 0.35;
+/** The speed the scale is made for: this quantile of |P′| over the samples. */
+const SPEED_QUANTILE = 0.5;
+/** Gap between the curve's box and the hodograph's, as a fraction of the curve's size. */
+const HODOGRAPH_GAP = 0.3;
+/** The osculating circle is left out beyond a radius of this many curve sizes (κ ≈ 0). */
+const STRAIGHT_RADIUS_FACTOR = 1e4;
+/** Vertices of the drawn osculating circle (a polygon through P(t), clipped to the canvas). */
+const CIRCLE_VERTICES = 192;
+/** Length of the Frenet frame's unit vectors on screen, CSS px (before foreshortening). */
+const FRAME_PX = 60;
+/** Axes of a space curve: this fraction of the curve's size. */
+const AXIS_FRACTION = 0.45;
+/** Drawing is clipped to the canvas widened by this many CSS px (exports stay small). */
+const CLIP_MARGIN_PX = 40;
+/** Degrees turned per CSS px of a drag on a space curve. */
+const DEG_PER_PX = 0.4;
+const MAX_ELEVATION = 89;
+/** Margin of captions from the canvas edges and the hodograph, CSS px. */
+const TEXT_MARGIN_PX = 12;
+const ARROW_LABEL_GAP_PX = 4;
+
+const VELOCITY_STYLE = Object.freeze({
+  stroke: HUES.vermillion,
+  width: 2.5,
+  cap: "round",
+  join: "round",
+});
+const ACCELERATION_STYLE = Object.freeze({
+  stroke: HUES.reddishPurple,
+  width: 2,
+  cap: "round",
+  join: "round",
+});
+const BINORMAL_STYLE = Object.freeze({
+  stroke: HUES.skyBlue,
+  width: 2,
+  cap: "round",
+  join: "round",
+});
+const CIRCLE_STYLE = Object.freeze({ stroke: HUES.orange, width: 1.5 });
+const CENTRE_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
+const BEZIER_POINT_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
+const POLYGON_STYLE = Object.freeze({
+  stroke: HUES.orange,
+  width: 1.5,
+  dash: Object.freeze([5, 4]),
+});
+
+/** The examples: the notes' circle first. `t` is where the point starts. */
+export const PRESETS = Object.freeze([
+  { name: "circle", x: "cos(t)", y: "sin(t)", to: "2pi", t: 1 },
+  { name: "ellipse", x: "a cos(t)", y: "b sin(t)", to: "2pi", params: { a: 2, b: 1 }, t: 1 },
+  { name: "lissajous", x: "sin(a t)", y: "sin(b t)", to: "2pi", params: { a: 3, b: 2 }, t: 0.5 },
+  { name: "cycloid", x: "t - sin(t)", y: "1 - cos(t)", to: "4pi", t: 2 },
+  { name: "cardioid", x: "2cos(t) - cos(2t)", y: "2sin(t) - sin(2t)", to: "2pi", t: 1 },
+  { name: "astroid", x: "cos(t)^3", y: "sin(t)^3", to: "2pi", t: 0.5 },
+  { name: "spiral", x: "t cos(t)", y: "t sin(t)", to: "4pi", t: 8 },
+  { name: "helix", x: "cos(t)", y: "sin(t)", z: "t/5", to: "4pi", t: 2 },
+  { name: "tan", x: "t", y: "tan(t)", from: "-pi", to: "pi", t: 0.5 },
+  {
+    name: "polynomial",
+    x: "6.5t^5 - 7.2t^3 + 3t^2 - 2.1t - 5",
+    y: "t",
+    to: "1",
+    t: 0.5,
+    bezier: true,
+  },
+]);
+
+/** The circle x = cos t, y = sin t on [0, 2π] (syllabus §1), its hodograph to the right. */
+export const defaultState = Object.freeze({
+  x: "cos(t)",
+  y: "sin(t)",
+  z: "",
+  from: "0",
+  to: "2pi",
+  params: Object.freeze({}),
+  t: 1,
+  bezier: false,
+  hodograph: Object.freeze([Object.freeze([2.1, 0])]),
+  azimuth: -60,
+  elevation: 25,
+});
+
+/** A typed formula: a string the core may read (it checks the rest). */
+function textField(state, name) {
+  const value = state[name];
+  if (typeof value !== "string" || value.length > MAX_TEXT || (name !== "z" && !value.trim()))
+    throw new Error(t("parametricCurve.error.text", { field: name, max: MAX_TEXT }));
+}
+
+/** Parameter values: `{ name: number }`, a few short names. */
+function paramsField(state, name) {
+  const value = state[name];
+  const ok =
+    value !== null &&
+    typeof value === "object" &&
+    !Array.isArray(value) &&
+    Object.keys(value).length <= MAX_PARAMS &&
+    Object.entries(value).every(
+      ([k, v]) => k.length > 0 && k.length <= 24 && typeof v === "number" && Number.isFinite(v),
+    );
+  if (!ok) throw new Error(t("parametricCurve.error.params"));
+}
+
+export const fields = {
+  x: textField,
+  y: textField,
+  z: textField,
+  from: textField,
+  to: textField,
+  params: paramsField,
+  t: field.number({ min: -1e9, max: 1e9 }),
+  bezier: field.boolean(),
+  hodograph: field.points({ min: 1, max: 1 }),
+  azimuth: field.number({ min: -180, max: 180 }),
+  elevation: field.number({ min: -MAX_ELEVATION, max: MAX_ELEVATION }),
+};
+
+/** The refusal of a text names its field (`expressionNames` knows no field). */
+function located(err, name) {
+  if (err && typeof err === "object" && err.params && err.params.field === undefined) {
+    try {
+      err.params.field = name;
+      err.params.piece = 0;
+    } catch {
+      // a frozen params object keeps its own fields
+    }
+  }
+  return err;
+}
+
+/**
+ * The core's curve of the texts; its parameters are the names the texts use, each with its
+ * value in `params` or DEFAULT_PARAMETER (names no text uses are dropped). Throws the refusal.
+ */
+function curveOf(sl, s) {
+  const params = {};
+  for (const name of TEXTS) {
+    if (name === "z" && !s.z.trim()) continue;
+    let names;
+    try {
+      names = sl.expressionNames(s[name]);
+    } catch (err) {
+      throw located(err, name);
+    }
+    for (const p of names) params[p] = s.params?.[p] ?? DEFAULT_PARAMETER;
+  }
+  const piece = { x: s.x, y: s.y, from: s.from, to: s.to };
+  if (s.z.trim()) piece.z = s.z;
+  return { curve: sl.parametricCurve([piece], params), params };
+}
+
+/** The curve in wasm; a parameter's slider sets it in place. */
+export const derive = {
+  from: TEXTS,
+  build(s, sl) {
+    const { curve, params } = curveOf(sl, s);
+    s.params = params;
+    const [a, b] = curve.domain();
+    s.t = Math.min(Math.max(s.t, a), b);
+    return { curve };
+  },
+  inPlace: {
+    params(m, s) {
+      for (const [name, value] of Object.entries(s.params)) m.curve.setParameter(name, value);
+    },
+  },
+};
+
+// ------------------------------------------------------------------ view and bounds
+
+/**
+ * The map from model to figure coordinates: the identity for a plane curve; for a space curve
+ * the orthographic view from azimuth α, elevation β (right r = (−sin α, cos α, 0), up
+ * u = (−sin β cos α, −sin β sin α, cos β)): (x, y, z) → (r·p, u·p).
+ */
+function projectionOf(s, dim) {
+  if (dim !== 3) return { three: false, m: Float64Array.of(1, 0, 0, 0, 1, 0) };
+  const a = (s.azimuth * Math.PI) / 180;
+  const b = (s.elevation * Math.PI) / 180;
+  const m = Float64Array.of(
+    -Math.sin(a),
+    Math.cos(a),
+    0,
+    -Math.sin(b) * Math.cos(a),
+    -Math.sin(b) * Math.sin(a),
+    Math.cos(b),
+  );
+  return { three: true, m };
+}
+
+const pu = (m, x, y, z) => m[0] * x + m[1] * y + m[2] * z;
+const pw = (m, x, y, z) => m[3] * x + m[4] * y + m[5] * z;
+/** The third coordinate of a point of `dim` numbers at `k` (0 for a plane curve). */
+const zAt = (flat, k, dim) => (dim === 3 ? flat[k + 2] : 0);
+
+/**
+ * [lo, hi] of the finite values, or of their central part when the extremes run far beyond it
+ * (a pole): the figure fits what can be seen. Drawing support.
+ */
+function robustRange(values) {
+  if (values.length === 0) return [-1, 1];
+  values.sort((p, q) => p - q);
+  const n = values.length;
+  const lo = values[Math.floor(ROBUST_QUANTILE * (n - 1))];
+  const hi = values[Math.ceil((1 - ROBUST_QUANTILE) * (n - 1))];
+  const min = values[0];
+  const max = values[n - 1];
+  if (max - min <= ROBUST_SPREAD * (hi - lo) + 1e-12) return [min, max];
+  const pad = 0.1 * (hi - lo);
+  return [lo - pad, hi + pad];
+}
+
+/** The largest of 1, 2, 5 × 10^k not above x: the scale of the arrows and the hodograph. */
+function niceScale(x) {
+  if (!(x > 0) || !Number.isFinite(x)) return 1;
+  const k = Math.floor(Math.log10(x));
+  const m = x / 10 ** k;
+  return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * 10 ** k;
+}
+
+/** "1/2", "1/20", "2", "0.5" — a scale as text (fractions for the small ones). */
+function scaleText(s) {
+  const inverse = Math.round(1 / s);
+  if (s < 1 && Math.abs(inverse * s - 1) < 1e-9) return `1/${inverse}`;
+  return localeDecimal(String(s));
+}
+
+/**
+ * What does not depend on t: the box of the curve in figure coordinates, the hodograph's
+ * samples (the core's P′ at uniform t), its scale λ and its box around O.
+ */
+function wholeCurve(d) {
+  const { curve, proj } = d;
+  const { m } = proj;
+  const dim = curve.dim;
+  const [a, b] = d.domain;
+  const samples = curve.sampleUniform(BOUNDS_SAMPLES);
+  const us = [];
+  const ws = [];
+  for (let k = 0; k + dim <= samples.length; k += dim) {
+    const x = samples[k];
+    const y = samples[k + 1];
+    const z = zAt(samples, k, dim);
+    if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z))) continue;
+    us.push(pu(m, x, y, z));
+    ws.push(pw(m, x, y, z));
+  }
+  const [u0, u1] = robustRange(us);
+  const [w0, w1] = robustRange(ws);
+  const box = [u0, w0, u1, w1];
+  const size = Math.max(u1 - u0, w1 - w0, 1e-9);
+  const hodograph = new Float64Array(HODOGRAPH_SAMPLES * dim);
+  const speeds = [];
+  for (let k = 0; k < HODOGRAPH_SAMPLES; k++) {
+    const tk = a + ((b - a) * k) / (HODOGRAPH_SAMPLES - 1);
+    let v = null;
+    try {
+      v = curve.derivative(tk, 1);
+    } catch {
+      v = null;
+    }
+    for (let c = 0; c < dim; c++) hodograph[k * dim + c] = v ? v[c] : Number.NaN;
+    const speed = v ? Math.hypot(...v) : Number.NaN;
+    if (Number.isFinite(speed)) speeds.push(speed);
+  }
+  speeds.sort((p, q) => p - q);
+  const typical = speeds.length ? speeds[Math.floor(SPEED_QUANTILE * (speeds.length - 1))] : 1;
+  const lambda = niceScale((HODOGRAPH_FRACTION * size) / (typical || 1));
+  // The hodograph's box relative to O (O included), from its scaled samples.
+  const hu = [0];
+  const hw = [0];
+  for (let k = 0; k < HODOGRAPH_SAMPLES; k++) {
+    const j = k * dim;
+    const x = lambda * hodograph[j];
+    const y = lambda * hodograph[j + 1];
+    const z = lambda * zAt(hodograph, j, dim);
+    if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z))) continue;
+    hu.push(pu(m, x, y, z));
+    hw.push(pw(m, x, y, z));
+  }
+  const [hu0, hu1] = robustRange(hu);
+  const [hw0, hw1] = robustRange(hw);
+  const hpad = 0.12 * Math.max(hu1 - hu0, hw1 - hw0, 1e-9);
+  const hbox = [hu0 - hpad, hw0 - hpad, hu1 + hpad, hw1 + hpad];
+  return {
+    dim,
+    box,
+    size,
+    hodograph,
+    lambda,
+    hbox,
+    scaleCaption: t("parametricCurve.scaleCaption", { scale: scaleText(lambda) }),
+    polynomial: curve.isPolynomial(0),
+  };
+}
+
+/** The hodograph's origin O beside the curve: right of its box, level with its middle. */
+function originBeside(whole) {
+  const { box, hbox, size } = whole;
+  const ox = box[2] + HODOGRAPH_GAP * size - hbox[0];
+  const oy = (box[1] + box[3]) / 2 - (hbox[1] + hbox[3]) / 2;
+  const round = (v) => Number(v.toPrecision(4));
+  return [round(ox), round(oy)];
+}
+
+/** P(t), P′(t), P″(t) and the core's frame (curvature, torsion); `defined` false at a gap. */
+function valuesAt(curve, tt, whole) {
+  let point = null;
+  let d1 = null;
+  let d2 = null;
+  let frame = null;
+  try {
+    point = curve.evaluate(tt);
+    d1 = curve.derivative(tt, 1);
+    d2 = curve.derivative(tt, 2);
+    frame = curve.frame(tt);
+  } catch {
+    frame = null;
+  }
+  const finite = (v) => v?.every(Number.isFinite);
+  const defined = finite(point) && finite(d1);
+  const speed = defined ? Math.hypot(...d1) : Number.NaN;
+  const kappa = frame && Number.isFinite(frame.curvature) ? frame.curvature : Number.NaN;
+  const cusp = defined && !(speed > 1e-12 * Math.max(1, whole.size));
+  const straight =
+    Number.isFinite(kappa) && !(Math.abs(kappa) * STRAIGHT_RADIUS_FACTOR * whole.size > 1);
+  const kappaMachine = Number.isFinite(kappa) ? fmtMachine(kappa) : "∞";
+  const tau = frame && Number.isFinite(frame.torsion) ? frame.torsion : Number.NaN;
+  return {
+    defined,
+    point,
+    d1,
+    d2,
+    frame: finite(frame?.tangent ?? null) ? frame : null,
+    speed,
+    kappa,
+    cusp,
+    straight,
+    kappaMachine,
+    kappaText: localeDecimal(kappaMachine),
+    kappaTex: texDecimal(kappaMachine),
+    tau,
+  };
+}
+
+/** The exact Bézier form of a polynomial curve while it is asked for, else null. */
+function bezierFormOf(s, d) {
+  if (!s.bezier || !d.whole.polynomial) return null;
+  const bezier = d.curve.toBezier(0);
+  let points;
+  try {
+    points = bezier.controlPoints();
+  } finally {
+    bezier.free();
+  }
+  const dim = d.curve.dim;
+  let fractions = null;
+  try {
+    fractions = d.curve.bezierFractions(0);
+  } catch {
+    fractions = null;
+  }
+  return { points, count: points.length / dim, dim, fractions };
+}
+
+export const compute = {
+  domain: [TEXTS, (s, d) => d.curve.domain()],
+  proj: [[...TEXTS, "azimuth", "elevation"], (s, d) => projectionOf(s, d.curve.dim)],
+  whole: [[...WITH_PARAMS, "azimuth", "elevation"], (s, d) => wholeCurve(d)],
+  tex: [TEXTS, (s, d) => d.curve.tex(0)],
+  bezierForm: [[...WITH_PARAMS, "bezier"], (s, d) => bezierFormOf(s, d)],
+  at: [[...WITH_PARAMS, "t"], (s, d) => valuesAt(d.curve, s.t, d.whole)],
+  /** The adaptive plot, made again in `draw` when the window changes (see `plotOf`). */
+  plot: [WITH_PARAMS, () => ({ key: "", result: null })],
+};
+
+// ------------------------------------------------------------------ panel
+
+/** A new state from typed texts, or the core's refusal (nothing changes). */
+function withTexts(ui, texts) {
+  const next = structuredClone(ui.state);
+  Object.assign(next, texts);
+  return next;
+}
+
+/** After a new curve: O beside it (the final change), then the window fits it. */
+function settleNewCurve(ui) {
+  ui.set("hodograph", [originBeside(ui.data.whole)], true);
+  ui.fit();
+}
+
+function applyPreset(ui, preset) {
+  const next = {
+    ...structuredClone(ui.state),
+    x: preset.x,
+    y: preset.y,
+    z: preset.z ?? "",
+    from: preset.from ?? "0",
+    to: preset.to,
+    params: { ...(preset.params ?? {}) },
+    t: preset.t,
+    bezier: preset.bezier ?? false,
+  };
+  try {
+    ui.replace(next, false);
+  } catch (err) {
+    ui.status(errorText(err), "error");
+    return;
+  }
+  settleNewCurve(ui);
+}
+
+/** The link into de-casteljau with the control points (a plane curve it can take), else null. */
+function deCasteljauLink(s, d) {
+  const form = d.bezierForm;
+  if (!form) return null;
+  if (form.dim !== 2 || form.count < BEZIER_POINTS.min || form.count > BEZIER_POINTS.max)
+    return { text: t("parametricCurve.bezierLinkOff"), href: null };
+  const points = [];
+  for (let i = 0; i < form.count; i++) points.push([form.points[2 * i], form.points[2 * i + 1]]);
+  const [a, b] = d.domain;
+  const u = b > a ? Math.min(Math.max((s.t - a) / (b - a), 0), 1) : 0;
+  const state = { points, t: Number(u.toFixed(6)), construction: true };
+  const url = new URL(`../index.html${buildHash("de-casteljau", state)}`, import.meta.url).href;
+  return {
+    text: t("parametricCurve.bezierLink"),
+    href: locale() === "en" ? url : withLanguage(url, locale()),
+  };
+}
+
+/** "P₀ = (−5, 0), P₁ = (−271/50, 1/5), …": the exact control points (decimals without them). */
+function bezierList(s, d) {
+  const form = d.bezierForm;
+  if (!form) return "";
+  const items = [];
+  for (let i = 0; i < form.count; i++) {
+    const coords = [];
+    for (let c = 0; c < form.dim; c++) {
+      const exact = form.fractions?.[i * form.dim + c];
+      coords.push(exact ? exact.replace(/^-/, "−") : form.points[i * form.dim + c]);
+    }
+    items.push(`P${subscript(i)} = ${pointText(coords)}`);
+  }
+  const [a, b] = d.domain;
+  return t("parametricCurve.bezierPoints", { a: fmt(a), b: fmt(b), list: items.join(", ") });
+}
+
+/** The readout under the speed: the circle's radius, or why there is none. */
+function radiusNote(d) {
+  const at = d.at;
+  if (!at.defined) return "";
+  if (at.cusp) return t("parametricCurve.cusp");
+  if (at.straight || !Number.isFinite(at.kappa)) return t("parametricCurve.straight");
+  return t("parametricCurve.radius", { r: fmt(1 / Math.abs(at.kappa)) });
+}
+
+const isSpace = (s, d) => d.curve.dim === 3;
+
+export const controls = [
+  formulaFields({
+    legend: "parametricCurve.control.curve",
+    rows: [
+      [{ field: "x", label: "parametricCurve.control.x" }],
+      [{ field: "y", label: "parametricCurve.control.y" }],
+      [{ field: "z", label: "parametricCurve.control.z" }],
+      [
+        { field: "from", label: "parametricCurve.control.from" },
+        { field: "to", label: "parametricCurve.control.to" },
+      ],
+    ],
+    help: "parametricCurve.control.help",
+    check(ui, texts) {
+      const { curve } = curveOf(ui.sl, withTexts(ui, texts));
+      curve.free();
+    },
+    apply(ui, texts) {
+      const next = withTexts(ui, texts);
+      if (TEXTS.every((name) => next[name] === ui.state[name])) return;
+      ui.replace(next, false); // throws the refusal before anything changes
+      settleNewCurve(ui);
+    },
+  }),
+  parameterSliders("params", {
+    legend: "parametricCurve.control.params",
+    input: "parametricCurve.control.param.input",
+  }),
+  group(
+    "parametricCurve.atT",
+    slider("t", {
+      label: "parametricCurve.control.t",
+      range: (s, d) => d.domain ?? d.curve.domain(),
+      step: (a, b) => (b - a) / 1000,
+      player: true,
+    }),
+    readout(
+      "speed",
+      (s, d) =>
+        d.at.defined
+          ? t("parametricCurve.speed", { speed: fmt(d.at.speed) })
+          : t("parametricCurve.undefined", { t: fmt(s.t) }),
+      { kind: "readout", data: (s, d) => ({ speed: fmtMachine(d.at.speed) }) },
+    ),
+    readout(
+      "curvature",
+      (s, d) => (d.at.defined ? t("parametricCurve.curvature", { kappa: d.at.kappaText }) : ""),
+      { live: true, data: (s, d) => ({ kappa: d.at.kappaMachine }) },
+    ),
+    readout("radius", (s, d) => radiusNote(d)),
+    shownIf(
+      isSpace,
+      readout("torsion", (s, d) =>
+        Number.isFinite(d.at.tau) ? t("parametricCurve.torsion", { tau: fmt(d.at.tau) }) : "",
+      ),
+    ),
+  ),
+  shownIf(
+    (s, d) => d.whole.polynomial,
+    group(
+      null,
+      checkbox("bezier", { label: "parametricCurve.control.bezier" }),
+      infoLine("bezier-points", bezierList, deCasteljauLink),
+    ),
+  ),
+  shownIf(
+    isSpace,
+    group(
+      "parametricCurve.control.view",
+      slider("azimuth", {
+        label: "parametricCurve.control.azimuth",
+        min: -180,
+        max: 180,
+        step: 1,
+        format: (v) => String(Math.round(v)),
+        round: Math.round,
+      }),
+      slider("elevation", {
+        label: "parametricCurve.control.elevation",
+        min: -MAX_ELEVATION,
+        max: MAX_ELEVATION,
+        step: 1,
+        format: (v) => String(Math.round(v)),
+        round: Math.round,
+      }),
+    ),
+  ),
+  actions(
+    PRESETS.map((preset) => ({
+      name: `preset-${preset.name}`,
+      label: `parametricCurve.preset.${preset.name}`,
+      run: (ui) => applyPreset(ui, preset),
+    })),
+    { title: "parametricCurve.control.examples" },
+  ),
+];
+
+export const figure = {
+  /** The curve's box (its visible part near a pole) and the hodograph's around O. */
+  bounds(s, d) {
+    const { box, hbox } = d.whole;
+    const [ox, oy] = s.hodograph[0];
+    const b = [
+      Math.min(box[0], ox + hbox[0]),
+      Math.min(box[1], oy + hbox[1]),
+      Math.max(box[2], ox + hbox[2]),
+      Math.max(box[3], oy + hbox[3]),
+    ];
+    const form = d.bezierForm;
+    if (form) {
+      const { m } = d.proj;
+      for (let k = 0; k < form.points.length; k += form.dim) {
+        const x = form.points[k];
+        const y = form.points[k + 1];
+        const z = zAt(form.points, k, form.dim);
+        b[0] = Math.min(b[0], pu(m, x, y, z));
+        b[1] = Math.min(b[1], pw(m, x, y, z));
+        b[2] = Math.max(b[2], pu(m, x, y, z));
+        b[3] = Math.max(b[3], pw(m, x, y, z));
+      }
+    }
+    return b;
+  },
+  handles: {
+    field: "hodograph",
+    label: () => t("parametricCurve.originLabel"),
+    polygon: false,
+  },
+};
+
+// ------------------------------------------------------------------ drawing
+
+/** Scratch for clipping (drawing allocates nothing per frame). */
+const clipOut = new Float64Array(4);
+const pen = {
+  has: false,
+  down: false,
+  x: 0,
+  y: 0,
+  x0: 0,
+  y0: 0,
+  x1: 0,
+  y1: 0,
+  maxLength: Infinity,
+};
+
+/** Starts a polyline clipped to the screen box [x0, x1] × [y0, y1] (CSS px). */
+function penStart(x0, y0, x1, y1, maxLength = Infinity) {
+  pen.has = false;
+  pen.down = false;
+  pen.x0 = x0;
+  pen.y0 = y0;
+  pen.x1 = x1;
+  pen.y1 = y1;
+  pen.maxLength = maxLength;
+}
+
+/** The next vertex (CSS px) of the clipped polyline; a non-finite one breaks it. */
+function penTo(r, x, y) {
+  if (!(Number.isFinite(x) && Number.isFinite(y))) {
+    pen.has = false;
+    pen.down = false;
+    return;
+  }
+  if (pen.has && Math.hypot(x - pen.x, y - pen.y) <= pen.maxLength) {
+    if (clipSegment(pen.x, pen.y, x, y, pen.x0, pen.y0, pen.x1, pen.y1, clipOut)) {
+      if (!pen.down || clipOut[0] !== pen.x || clipOut[1] !== pen.y)
+        r.moveTo(clipOut[0], clipOut[1]);
+      r.lineTo(clipOut[2], clipOut[3]);
+      pen.down = clipOut[2] === x && clipOut[3] === y;
+    } else {
+      pen.down = false;
+    }
+  } else {
+    pen.down = false;
+  }
+  pen.has = true;
+  pen.x = x;
+  pen.y = y;
+}
+
+/** The canvas widened by CLIP_MARGIN_PX, as the pen's box. */
+function penOnCanvas(r, v) {
+  const margin = CLIP_MARGIN_PX * r.scale;
+  penStart(-margin, -margin, v.width + margin, v.height + margin);
+}
+
+/**
+ * The core's adaptive plot for this window: tolerance PLOT_TOLERANCE_PX in model units, the
+ * box the canvas in world units (a plane curve); made again only when the window changes.
+ */
+function plotOf(v, d) {
+  const cache = d.plot;
+  const three = d.proj.three;
+  const x0 = v.wx(0);
+  const x1 = v.wx(v.width);
+  const y0 = v.wy(v.height);
+  const y1 = v.wy(0);
+  const key = three ? String(v.scale) : `${x0} ${y0} ${x1} ${y1}`;
+  if (cache.key === key) return cache.result;
+  const tolerance = PLOT_TOLERANCE_PX / v.scale;
+  const mx = PLOT_BOX_MARGIN * (x1 - x0);
+  const my = PLOT_BOX_MARGIN * (y1 - y0);
+  try {
+    cache.result = three
+      ? d.curve.plot(tolerance)
+      : d.curve.plot(tolerance, Float64Array.of(x0 - mx, y0 - my, x1 + mx, y1 + my));
+  } catch {
+    cache.result = null;
+  }
+  cache.key = key;
+  return cache.result;
+}
+
+/** A flat list of points of `dim` numbers (runs split by NaN), projected, as a clipped path. */
+function flatRunsPath(r, v, flat, dim, m, ox = 0, oy = 0, scale = 1) {
+  for (let k = 0; k + dim <= flat.length; k += dim) {
+    const x = scale * flat[k];
+    const y = scale * flat[k + 1];
+    const z = scale * zAt(flat, k, dim);
+    penTo(r, v.sx(ox + pu(m, x, y, z)), v.sy(oy + pw(m, x, y, z)));
+  }
+}
+
+/** An arrow from (x0, y0) to (x1, y1) CSS px; beyond the canvas only its visible shaft. */
+function clippedArrow(r, v, x0, y0, x1, y1, style) {
+  const margin = CLIP_MARGIN_PX * r.scale;
+  const inside = (x, y) =>
+    x >= -margin && x <= v.width + margin && y >= -margin && y <= v.height + margin;
+  if (inside(x0, y0) && inside(x1, y1)) {
+    arrow(r, x0, y0, x1, y1, style);
+    return true;
+  }
+  if (clipSegment(x0, y0, x1, y1, -margin, -margin, v.width + margin, v.height + margin, clipOut)) {
+    r.beginPath();
+    r.moveTo(clipOut[0], clipOut[1]);
+    r.lineTo(clipOut[2], clipOut[3]);
+    r.paint(style);
+  }
+  return false;
+}
+
+/** The arrow P → P + s·w (model vector w, projected) from (px, py), its label at the tip. */
+function vectorArrow(r, v, d, px, py, w, s, style, text) {
+  const { m } = d.proj;
+  const z = w.length > 2 ? w[2] : 0;
+  const x = px + v.scale * s * pu(m, w[0], w[1], z);
+  const y = py - v.scale * s * pw(m, w[0], w[1], z);
+  if (!(Math.hypot(x - px, y - py) >= 1)) return;
+  if (clippedArrow(r, v, px, py, x, y, style))
+    placeLabelAtTip(r, text, px, py, x, y, ARROW_LABEL_GAP_PX * r.scale, r.theme.labelPoint);
+}
+
+/** Axes: the x and y axes across the canvas (plane), or a labelled triad at the origin (space). */
+function drawAxes(r, v, d) {
+  const theme = r.theme;
+  r.beginPath();
+  if (!d.proj.three) {
+    r.moveTo(0, v.sy(0));
+    r.lineTo(v.width, v.sy(0));
+    r.moveTo(v.sx(0), 0);
+    r.lineTo(v.sx(0), v.height);
+    r.paint(theme.axis);
+    return;
+  }
+  const { m } = d.proj;
+  const length = AXIS_FRACTION * d.whole.size;
+  const cx = v.sx(0);
+  const cy = v.sy(0);
+  for (let k = 0; k < 3; k++) {
+    const x = v.sx(length * m[k]);
+    const y = v.sy(length * m[3 + k]);
+    r.moveTo(cx, cy);
+    r.lineTo(x, y);
+  }
+  r.paint(theme.axis);
+  for (let k = 0; k < 3; k++) {
+    const x = v.sx(length * m[k]);
+    const y = v.sy(length * m[3 + k]);
+    placeLabelAtTip(r, AXIS_NAMES[k], cx, cy, x, y, ARROW_LABEL_GAP_PX * r.scale, theme.labelSmall);
+  }
+}
+const AXIS_NAMES = Object.freeze(["x", "y", "z"]);
+
+/** The hodograph from O: axes over its box, its caption, the curve and the vector λP′(t). */
+function drawHodograph(r, v, s, d) {
+  const theme = r.theme;
+  const { hodograph, lambda, hbox, dim } = d.whole;
+  const { m } = d.proj;
+  const [ox, oy] = s.hodograph[0];
+  const left = v.sx(ox + hbox[0]);
+  const right = v.sx(ox + hbox[2]);
+  const top = v.sy(oy + hbox[3]);
+  const bottom = v.sy(oy + hbox[1]);
+  r.beginPath();
+  r.moveTo(left, v.sy(oy));
+  r.lineTo(right, v.sy(oy));
+  r.moveTo(v.sx(ox), bottom);
+  r.lineTo(v.sx(ox), top);
+  r.paint(theme.helper);
+  drawCaption(
+    r,
+    t("parametricCurve.hodographCaption"),
+    left,
+    top - TEXT_MARGIN_PX * r.scale,
+    theme.labelSmall,
+    Math.max(right - left, v.width - left - TEXT_MARGIN_PX * r.scale),
+    "bottom",
+  );
+  r.beginPath();
+  penStart(left, top, right, bottom, 2 * Math.hypot(right - left, bottom - top));
+  flatRunsPath(r, v, hodograph, dim, m, ox, oy, lambda);
+  r.paint(SECOND_CURVE.curve);
+  const { d1, defined } = d.at;
+  if (!defined) return;
+  const z = dim === 3 ? d1[2] : 0;
+  const hx = v.sx(ox + lambda * pu(m, d1[0], d1[1], z));
+  const hy = v.sy(oy + lambda * pw(m, d1[0], d1[1], z));
+  if (Math.hypot(hx - v.sx(ox), hy - v.sy(oy)) < 1) return;
+  if (clippedArrow(r, v, v.sx(ox), v.sy(oy), hx, hy, VELOCITY_STYLE)) {
+    r.point(hx, hy, theme.pointOnCurve);
+    placeLabelAtTip(
+      r,
+      t("parametricCurve.velocityLabel"),
+      v.sx(ox),
+      v.sy(oy),
+      hx,
+      hy,
+      ARROW_LABEL_GAP_PX * r.scale,
+      theme.labelPoint,
+    );
+  }
+}
+
+/** The exact control polygon of a polynomial curve and its points P₀ … Pₙ. */
+function drawBezierForm(r, v, d) {
+  const form = d.bezierForm;
+  if (!form) return;
+  const { m } = d.proj;
+  r.beginPath();
+  penOnCanvas(r, v);
+  flatRunsPath(r, v, form.points, form.dim, m);
+  r.paint(POLYGON_STYLE);
+  for (let i = 0; i < form.count; i++) {
+    const k = i * form.dim;
+    const x = form.points[k];
+    const y = form.points[k + 1];
+    const z = zAt(form.points, k, form.dim);
+    const px = v.sx(pu(m, x, y, z));
+    const py = v.sy(pw(m, x, y, z));
+    r.point(px, py, BEZIER_POINT_STYLE);
+    r.text(
+      bezierLabel(i),
+      px + 6 * r.scale,
+      py - 6 * r.scale,
+      r.theme.labelSmall,
+      "left",
+      "bottom",
+    );
+  }
+}
+const bezierLabels = [];
+const bezierLabel = (i) => (bezierLabels[i] ??= `P${subscript(i)}`);
+
+/**
+ * The osculating circle through P(t): centre P + ρN (N towards the centre: the tangent turned
+ * to the side P″ bends to in the plane, the core's N in space), radius ρ = 1/|κ|, as a polygon
+ * from P clipped to the canvas, and its centre.
+ */
+function drawCircle(r, v, d) {
+  const at = d.at;
+  if (!at.defined || at.cusp || at.straight || !at.frame) return;
+  const { m } = d.proj;
+  const dim = d.whole.dim;
+  const rho = 1 / Math.abs(at.kappa);
+  const p = at.point;
+  const T = at.frame.tangent;
+  let nx;
+  let ny;
+  let nz = 0;
+  if (dim === 3) {
+    [nx, ny, nz] = at.frame.normal;
+  } else {
+    const side = Math.sign(at.d1[0] * at.d2[1] - at.d1[1] * at.d2[0]) || 1;
+    nx = -side * T[1];
+    ny = side * T[0];
+  }
+  const tz = dim === 3 ? T[2] : 0;
+  const pz = zAt(p, 0, dim);
+  const cx = p[0] + rho * nx;
+  const cy = p[1] + rho * ny;
+  const cz = pz + rho * nz;
+  r.beginPath();
+  penOnCanvas(r, v);
+  for (let k = 0; k <= CIRCLE_VERTICES; k++) {
+    const a = (2 * Math.PI * k) / CIRCLE_VERTICES;
+    const c = -Math.cos(a) * rho;
+    const sn = Math.sin(a) * rho;
+    const x = cx + c * nx + sn * T[0];
+    const y = cy + c * ny + sn * T[1];
+    const z = cz + c * nz + sn * tz;
+    penTo(r, v.sx(pu(m, x, y, z)), v.sy(pw(m, x, y, z)));
+  }
+  r.paint(CIRCLE_STYLE);
+  const ccx = v.sx(pu(m, cx, cy, cz));
+  const ccy = v.sy(pw(m, cx, cy, cz));
+  if (ccx > 0 && ccx < v.width && ccy > 0 && ccy < v.height) {
+    r.beginPath();
+    r.moveTo(v.sx(pu(m, p[0], p[1], pz)), v.sy(pw(m, p[0], p[1], pz)));
+    r.lineTo(ccx, ccy);
+    r.paint(r.theme.helper);
+    r.point(ccx, ccy, CENTRE_STYLE);
+  }
+}
+
+/** The Frenet frame T, N, B at P(t) of a space curve, FRAME_PX long before foreshortening. */
+function drawFrame(r, v, d, px, py) {
+  const frame = d.at.frame;
+  if (!frame || d.at.cusp) return;
+  const s = (FRAME_PX * r.scale) / v.scale;
+  vectorArrow(r, v, d, px, py, frame.tangent, s, VELOCITY_STYLE, t("parametricCurve.tangentLabel"));
+  if (frame.normal?.every(Number.isFinite) && !d.at.straight)
+    vectorArrow(
+      r,
+      v,
+      d,
+      px,
+      py,
+      frame.normal,
+      s,
+      ACCELERATION_STYLE,
+      t("parametricCurve.normalLabel"),
+    );
+  if (frame.binormal?.every(Number.isFinite) && !d.at.straight)
+    vectorArrow(
+      r,
+      v,
+      d,
+      px,
+      py,
+      frame.binormal,
+      s,
+      BINORMAL_STYLE,
+      t("parametricCurve.binormalLabel"),
+    );
+}
+
+/** Axes, hodograph, Bézier form, the curve, the circle and arrows at P(t), then the captions. */
+export function draw(r, v, s, d) {
+  const theme = r.theme;
+  const { m, three } = d.proj;
+  const dim = d.whole.dim;
+  drawAxes(r, v, d);
+  drawHodograph(r, v, s, d);
+  drawBezierForm(r, v, d);
+  if (d.at.defined) drawCircle(r, v, d);
+  const plot = plotOf(v, d);
+  if (plot) {
+    r.beginPath();
+    penOnCanvas(r, v);
+    flatRunsPath(r, v, plot.points, dim, m);
+    r.paint(theme.curve);
+  }
+  d.handles.draw(r, v);
+  const at = d.at;
+  const margin = TEXT_MARGIN_PX * r.scale;
+  const width = v.width - 2 * margin;
+  let caption = plot && !plot.complete ? t("parametricCurve.incomplete") : null;
+  if (at.defined) {
+    const p = at.point;
+    const pz = zAt(p, 0, dim);
+    const px = v.sx(pu(m, p[0], p[1], pz));
+    const py = v.sy(pw(m, p[0], p[1], pz));
+    if (three) {
+      drawFrame(r, v, d, px, py);
+    } else {
+      const lambda = d.whole.lambda;
+      vectorArrow(
+        r,
+        v,
+        d,
+        px,
+        py,
+        at.d2,
+        lambda,
+        ACCELERATION_STYLE,
+        t("parametricCurve.accelerationLabel"),
+      );
+      vectorArrow(
+        r,
+        v,
+        d,
+        px,
+        py,
+        at.d1,
+        lambda,
+        VELOCITY_STYLE,
+        t("parametricCurve.velocityLabel"),
+      );
+    }
+    r.point(px, py, theme.pointOnCurve);
+    // The label on the side away from the centre of curvature (right of the motion for κ ≥ 0).
+    const z1 = dim === 3 ? at.d1[2] : 0;
+    const tx = pu(m, at.d1[0], at.d1[1], z1);
+    const ty = -pw(m, at.d1[0], at.d1[1], z1);
+    const len = Math.hypot(tx, ty);
+    const side = !three && at.kappa < 0 ? -1 : 1;
+    const [dx, dy] = len > 0 ? [(-side * ty) / len, (side * tx) / len] : [0.7, -0.7];
+    placeLabel(
+      r,
+      t("parametricCurve.pointLabel"),
+      px,
+      py,
+      dx,
+      dy,
+      theme.pointOnCurve.radius * r.scale,
+      theme.labelPoint,
+    );
+    if (at.cusp) caption ??= t("parametricCurve.cusp");
+  } else {
+    caption ??= t("parametricCurve.undefined", { t: fmt(s.t) });
+  }
+  const footer = three ? t("parametricCurve.frameCaption") : d.whole.scaleCaption;
+  drawCaption(r, footer, margin, v.height - margin, theme.labelSmall, width, "bottom");
+  if (caption) drawCaption(r, caption, margin, margin, theme.labelBold, width, "top");
+}
+
+// ------------------------------------------------------------------ formula and label
+
+const COORDS = Object.freeze(["x", "y", "z"]);
+/** Negative numbers in brackets as "({-}…" (see derivatives.js: the panel patches digits). */
+const guarded = (line) => line.replace(/\(-/g, "({-}");
+
+/**
+ * The typed formulas and their derivatives as the core echoes them (`tex(0)`), the interval and
+ * the parameters, then the numbers at t₀: P, P′, P″, the speed and κ (τ in space).
+ */
+export function formula(s, d) {
+  const tex = d.tex;
+  const dim = d.whole.dim;
+  const tooLong = `\\text{(${t("parametricCurve.formula.tooLong")})}`;
+  const lines = [];
+  for (let c = 0; c < dim; c++) {
+    const name = COORDS[c];
+    const e = tex[name];
+    if (!e) continue;
+    lines.push(
+      `${name}(t) = ${e.expr},\\qquad ${name}'(t) = ${e.d1 ?? tooLong},\\qquad ${name}''(t) = ${e.d2 ?? tooLong}`,
+    );
+  }
+  const params = Object.entries(s.params)
+    .map(([name, value]) => `${name} = ${fmtTex(value)}`)
+    .join(",\\ ");
+  lines.push(`t \\in [${tex.from},\\ ${tex.to}]${params ? `,\\qquad ${params}` : ""}`);
+  const at = d.at;
+  const t0 = `t_0 = ${fmtTex(s.t)}`;
+  if (!at.defined) {
+    lines.push(`${t0}:\\quad P(t_0)\\ \\text{${t("parametricCurve.formula.undefined")}}`);
+    return lines;
+  }
+  lines.push(
+    guarded(
+      `${t0}:\\quad P(t_0) = ${pointTex(at.point)},\\quad P'(t_0) = ${pointTex(at.d1)},\\quad P''(t_0) = ${pointTex(at.d2)}`,
+    ),
+  );
+  const kappaRule =
+    dim === 3 ? "\\frac{|P' \\times P''|}{|P'|^3}" : "\\frac{x'y'' - y'x''}{|P'|^3}";
+  const kappa = Number.isFinite(at.kappa) ? at.kappaTex : "\\infty";
+  const tau = dim === 3 && Number.isFinite(at.tau) ? `,\\quad \\tau(t_0) = ${fmtTex(at.tau)}` : "";
+  lines.push(`|P'(t_0)| = ${fmtTex(at.speed)},\\quad \\kappa(t_0) = ${kappaRule} = ${kappa}${tau}`);
+  return lines;
+}
+
+export function label(s, d) {
+  const [a, b] = d.domain;
+  const at = d.at;
+  const common = { x: s.x, y: s.y, z: s.z, a: fmt(a), b: fmt(b), t: fmt(s.t) };
+  if (!at.defined) return t("parametricCurve.ariaUndefined", common);
+  const values = {
+    ...common,
+    px: fmt(at.point[0], 2),
+    py: fmt(at.point[1], 2),
+    speed: fmt(at.speed, 2),
+    kappa: at.kappaText,
+  };
+  if (d.whole.dim !== 3) return t("parametricCurve.aria", values);
+  return t("parametricCurve.aria3d", {
+    ...values,
+    pz: fmt(at.point[2], 2),
+    tau: Number.isFinite(at.tau) ? fmt(at.tau) : "—",
+  });
+}
+
+// ------------------------------------------------------------------ turning a space curve
+
+/** Dragging empty space turns a space curve (Shift+drag pans, as in the 3D figures). */
+export function setup(ui) {
+  let drag = null;
+  const orbit = {
+    pointerDown(event, x, y) {
+      if (ui.data.curve.dim !== 3 || event.shiftKey) return false;
+      drag = { x, y, azimuth: ui.state.azimuth, elevation: ui.state.elevation };
+      return true;
+    },
+    pointerMove(event, x, y) {
+      if (!drag) return;
+      let azimuth = Math.round(drag.azimuth - (x - drag.x) * DEG_PER_PX);
+      azimuth = ((((azimuth + 180) % 360) + 360) % 360) - 180;
+      const elevation = Math.round(
+        Math.min(
+          Math.max(drag.elevation + (y - drag.y) * DEG_PER_PX, -MAX_ELEVATION),
+          MAX_ELEVATION,
+        ),
+      );
+      ui.set("azimuth", azimuth, false);
+      ui.set("elevation", elevation, false);
+    },
+    pointerUp() {
+      if (!drag) return;
+      drag = null;
+      ui.commit();
+    },
+    hover: () => (ui.data.curve.dim === 3 ? "grab" : null),
+    leave() {},
+  };
+  ui.view.addInteractor(orbit);
+  return {};
+}
