@@ -1122,6 +1122,24 @@ export function label(s, d) {
 
 // ------------------------------------------------------------------ turning a space curve
 
+/** [[first t, last t], …] of the runs of a plot's parameters (NaN between runs). */
+function plotRuns(ts) {
+  const runs = [];
+  let first = null;
+  let last = null;
+  for (const u of ts) {
+    if (Number.isNaN(u)) {
+      if (first !== null) runs.push([first, last]);
+      first = null;
+      continue;
+    }
+    first ??= u;
+    last = u;
+  }
+  if (first !== null) runs.push([first, last]);
+  return runs.map(([a, b]) => [Number(a.toFixed(6)), Number(b.toFixed(6))]);
+}
+
 /** Dragging empty space turns a space curve (Shift+drag pans, as in the 3D figures). */
 export function setup(ui) {
   let drag = null;
@@ -1153,5 +1171,15 @@ export function setup(ui) {
     leave() {},
   };
   ui.view.addInteractor(orbit);
-  return {};
+  // For tests: the plot's runs as [first t, last t] (a pole or gap ends a run).
+  const host = ui.ctx.slots.figure;
+  let shown = null;
+  return {
+    update(s, d) {
+      const plot = d.plot.result;
+      if (!plot || plot === shown) return;
+      shown = plot;
+      host.dataset.plotRuns = JSON.stringify(plotRuns(plot.ts));
+    },
+  };
 }

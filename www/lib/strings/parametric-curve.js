@@ -4,9 +4,9 @@ export const PARAMETRIC_CURVE = {
   "parametricCurve.summary":
     "Type x(t), y(t) (and z(t)) and watch a point run along P(t) with its velocity, acceleration, curvature and osculating circle, the hodograph beside it.",
   "parametricCurve.aria":
-    "Parametric curve x(t) = {x}, y(t) = {y} for t from {a} to {b}; t = {t}; P(t) = ({px}; {py}); speed {speed}; curvature κ = {kappa}; the hodograph is drawn beside it",
+    "Parametric curve x(t) = {x}, y(t) = {y} for t from {a} to {b}; t = {t}; P(t) = ({px}, {py}); speed {speed}; curvature κ = {kappa}; the hodograph is drawn beside it",
   "parametricCurve.aria3d":
-    "Space curve x(t) = {x}, y(t) = {y}, z(t) = {z} for t from {a} to {b}; t = {t}; P(t) = ({px}; {py}; {pz}); speed {speed}; curvature κ = {kappa}; torsion τ = {tau}; the Frenet frame T, N, B is drawn at P(t)",
+    "Space curve x(t) = {x}, y(t) = {y}, z(t) = {z} for t from {a} to {b}; t = {t}; P(t) = ({px}, {py}, {pz}); speed {speed}; curvature κ = {kappa}; torsion τ = {tau}; the Frenet frame T, N, B is drawn at P(t)",
   "parametricCurve.ariaUndefined":
     "Parametric curve x(t) = {x}, y(t) = {y} for t from {a} to {b}; at t = {t} the curve is undefined",
   "parametricCurve.whatYouSee":
@@ -45,8 +45,6 @@ export const PARAMETRIC_CURVE = {
   "parametricCurve.preset.tan": "y = tan t",
   "parametricCurve.preset.polynomial": "The notes' polynomial",
   "parametricCurve.control.bezier": "Show the Bézier form (a polynomial curve)",
-  "parametricCurve.control.notPolynomial":
-    "Not a polynomial in t: no exact Bézier form (a polynomial curve has one).",
   "parametricCurve.bezierPoints": "Control points on [{a}, {b}], exact: {list}",
   "parametricCurve.bezierLink": "Open these control points in de Casteljau's algorithm",
   "parametricCurve.bezierLinkOff": "de Casteljau's demo takes plane curves of degree 1 to 10 only.",
