@@ -33,14 +33,28 @@ import {
 } from "../lib/format.js";
 import { HUES, RADIUS, SECOND_CURVE } from "../lib/theme.js";
 import { locale, t } from "../lib/strings.js";
-import { arrow, drawCaption } from "../lib/draw.js";
+import { drawCaption } from "../lib/draw.js";
 import { placeLabel, placeLabelAtTip } from "../lib/handles.js";
-import { clipSegment } from "../lib/clip.js";
 import { buildHash } from "../lib/state.js";
 import { withLanguage } from "../lib/language.js";
 import { errorText } from "../lib/core-errors.js";
 import { BEZIER_POINTS } from "../lib/point-list.js";
 import { formulaFields, infoLine, parameterSliders, shownIf } from "../lib/expression-fields.js";
+import {
+  clippedArrow,
+  flatRunsPath,
+  niceScale,
+  penOnCanvas,
+  penStart,
+  penTo,
+  plotRuns,
+  projectionOf,
+  pu,
+  pw,
+  robustRange,
+  scaleText,
+  zAt,
+} from "../lib/curve-view.js";
 
 export const id = "parametric-curve";
 export const strings = "parametricCurve";
@@ -62,11 +76,10 @@ const PLOT_BOX_MARGIN = 0.1;
 /** Samples for the figure's bounds and the hodograph (one derivative per sample and change). */
 const BOUNDS_SAMPLES = 512;
 const HODOGRAPH_SAMPLES = 256;
-/** Robust bounds: the quantiles kept when the extremes run far off (a pole). */
-const ROBUST_QUANTILE = 0.1;
-const ROBUST_SPREAD = 3;
 /** The hodograph's size as a fraction of the curve's (the scale λ is the nice number below). */
 const HODOGRAPH_FRACTION = 0.35;
+/** The hodograph's box reaches at most this many curve sizes from O. */
+const HODOGRAPH_REACH = 0.6;
 /** The speed the scale is made for: this quantile of |P′| over the samples. */
 const SPEED_QUANTILE = 0.5;
 /** Gap between the curve's box and the hodograph's, as a fraction of the curve's size. */
@@ -79,8 +92,6 @@ const CIRCLE_VERTICES = 192;
 const FRAME_PX = 60;
 /** Axes of a space curve: this fraction of the curve's size. */
 const AXIS_FRACTION = 0.45;
-/** Drawing is clipped to the canvas widened by this many CSS px (exports stay small). */
-const CLIP_MARGIN_PX = 40;
 /** Degrees turned per CSS px of a drag on a space curve. */
 const DEG_PER_PX = 0.4;
 const MAX_ELEVATION = 89;
@@ -240,63 +251,6 @@ export const derive = {
 // ------------------------------------------------------------------ view and bounds
 
 /**
- * The map from model to figure coordinates: the identity for a plane curve; for a space curve
- * the orthographic view from azimuth α, elevation β (right r = (−sin α, cos α, 0), up
- * u = (−sin β cos α, −sin β sin α, cos β)): (x, y, z) → (r·p, u·p).
- */
-function projectionOf(s, dim) {
-  if (dim !== 3) return { three: false, m: Float64Array.of(1, 0, 0, 0, 1, 0) };
-  const a = (s.azimuth * Math.PI) / 180;
-  const b = (s.elevation * Math.PI) / 180;
-  const m = Float64Array.of(
-    -Math.sin(a),
-    Math.cos(a),
-    0,
-    -Math.sin(b) * Math.cos(a),
-    -Math.sin(b) * Math.sin(a),
-    Math.cos(b),
-  );
-  return { three: true, m };
-}
-
-const pu = (m, x, y, z) => m[0] * x + m[1] * y + m[2] * z;
-const pw = (m, x, y, z) => m[3] * x + m[4] * y + m[5] * z;
-/** The third coordinate of a point of `dim` numbers at `k` (0 for a plane curve). */
-const zAt = (flat, k, dim) => (dim === 3 ? flat[k + 2] : 0);
-
-/**
- * [lo, hi] of the finite values, or of their central part when the extremes run far beyond it
- * (a pole): the figure fits what can be seen. Drawing support.
- */
-function robustRange(values) {
-  if (values.length === 0) return [-1, 1];
-  values.sort((p, q) => p - q);
-  const n = values.length;
-  const lo = values[Math.floor(ROBUST_QUANTILE * (n - 1))];
-  const hi = values[Math.ceil((1 - ROBUST_QUANTILE) * (n - 1))];
-  const min = values[0];
-  const max = values[n - 1];
-  if (max - min <= ROBUST_SPREAD * (hi - lo) + 1e-12) return [min, max];
-  const pad = 0.1 * (hi - lo);
-  return [lo - pad, hi + pad];
-}
-
-/** The largest of 1, 2, 5 × 10^k not above x: the scale of the arrows and the hodograph. */
-function niceScale(x) {
-  if (!(x > 0) || !Number.isFinite(x)) return 1;
-  const k = Math.floor(Math.log10(x));
-  const m = x / 10 ** k;
-  return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * 10 ** k;
-}
-
-/** "1/2", "1/20", "2", "0.5" — a scale as text (fractions for the small ones). */
-function scaleText(s) {
-  const inverse = Math.round(1 / s);
-  if (s < 1 && Math.abs(inverse * s - 1) < 1e-9) return `1/${inverse}`;
-  return localeDecimal(String(s));
-}
-
-/**
  * What does not depend on t: the box of the curve in figure coordinates, the hodograph's
  * samples (the core's P′ at uniform t), its scale λ and its box around O.
  */
@@ -338,8 +292,8 @@ function wholeCurve(d) {
   const typical = speeds.length ? speeds[Math.floor(SPEED_QUANTILE * (speeds.length - 1))] : 1;
   const lambda = niceScale((HODOGRAPH_FRACTION * size) / (typical || 1));
   // The hodograph's box relative to O (O included), from its scaled samples.
-  const hu = [0];
-  const hw = [0];
+  const hu = [];
+  const hw = [];
   for (let k = 0; k < HODOGRAPH_SAMPLES; k++) {
     const j = k * dim;
     const x = lambda * hodograph[j];
@@ -349,8 +303,14 @@ function wholeCurve(d) {
     hu.push(pu(m, x, y, z));
     hw.push(pw(m, x, y, z));
   }
-  const [hu0, hu1] = robustRange(hu);
-  const [hw0, hw1] = robustRange(hw);
+  // At most HODOGRAPH_REACH curve sizes from O (the velocities near a pole run off).
+  const reach = HODOGRAPH_REACH * size;
+  const within = ([lo, hi]) => [
+    Math.max(Math.min(lo, 0), -reach),
+    Math.min(Math.max(hi, 0), reach),
+  ];
+  const [hu0, hu1] = within(robustRange(hu));
+  const [hw0, hw1] = within(robustRange(hw));
   const hpad = 0.12 * Math.max(hu1 - hu0, hw1 - hw0, 1e-9);
   const hbox = [hu0 - hpad, hw0 - hpad, hu1 + hpad, hw1 + hpad];
   return {
@@ -436,7 +396,10 @@ function bezierFormOf(s, d) {
 
 export const compute = {
   domain: [TEXTS, (s, d) => d.curve.domain()],
-  proj: [[...TEXTS, "azimuth", "elevation"], (s, d) => projectionOf(s, d.curve.dim)],
+  proj: [
+    [...TEXTS, "azimuth", "elevation"],
+    (s, d) => projectionOf(s.azimuth, s.elevation, d.curve.dim),
+  ],
   whole: [[...WITH_PARAMS, "azimuth", "elevation"], (s, d) => wholeCurve(d)],
   tex: [TEXTS, (s, d) => d.curve.tex(0)],
   bezierForm: [[...WITH_PARAMS, "bezier"], (s, d) => bezierFormOf(s, d)],
@@ -659,61 +622,6 @@ export const figure = {
 
 // ------------------------------------------------------------------ drawing
 
-/** Scratch for clipping (drawing allocates nothing per frame). */
-const clipOut = new Float64Array(4);
-const pen = {
-  has: false,
-  down: false,
-  x: 0,
-  y: 0,
-  x0: 0,
-  y0: 0,
-  x1: 0,
-  y1: 0,
-  maxLength: Infinity,
-};
-
-/** Starts a polyline clipped to the screen box [x0, x1] × [y0, y1] (CSS px). */
-function penStart(x0, y0, x1, y1, maxLength = Infinity) {
-  pen.has = false;
-  pen.down = false;
-  pen.x0 = x0;
-  pen.y0 = y0;
-  pen.x1 = x1;
-  pen.y1 = y1;
-  pen.maxLength = maxLength;
-}
-
-/** The next vertex (CSS px) of the clipped polyline; a non-finite one breaks it. */
-function penTo(r, x, y) {
-  if (!(Number.isFinite(x) && Number.isFinite(y))) {
-    pen.has = false;
-    pen.down = false;
-    return;
-  }
-  if (pen.has && Math.hypot(x - pen.x, y - pen.y) <= pen.maxLength) {
-    if (clipSegment(pen.x, pen.y, x, y, pen.x0, pen.y0, pen.x1, pen.y1, clipOut)) {
-      if (!pen.down || clipOut[0] !== pen.x || clipOut[1] !== pen.y)
-        r.moveTo(clipOut[0], clipOut[1]);
-      r.lineTo(clipOut[2], clipOut[3]);
-      pen.down = clipOut[2] === x && clipOut[3] === y;
-    } else {
-      pen.down = false;
-    }
-  } else {
-    pen.down = false;
-  }
-  pen.has = true;
-  pen.x = x;
-  pen.y = y;
-}
-
-/** The canvas widened by CLIP_MARGIN_PX, as the pen's box. */
-function penOnCanvas(r, v) {
-  const margin = CLIP_MARGIN_PX * r.scale;
-  penStart(-margin, -margin, v.width + margin, v.height + margin);
-}
-
 /**
  * The core's adaptive plot for this window: tolerance PLOT_TOLERANCE_PX in model units, the
  * box the canvas in world units (a plane curve); made again only when the window changes.
@@ -739,34 +647,6 @@ function plotOf(v, d) {
   }
   cache.key = key;
   return cache.result;
-}
-
-/** A flat list of points of `dim` numbers (runs split by NaN), projected, as a clipped path. */
-function flatRunsPath(r, v, flat, dim, m, ox = 0, oy = 0, scale = 1) {
-  for (let k = 0; k + dim <= flat.length; k += dim) {
-    const x = scale * flat[k];
-    const y = scale * flat[k + 1];
-    const z = scale * zAt(flat, k, dim);
-    penTo(r, v.sx(ox + pu(m, x, y, z)), v.sy(oy + pw(m, x, y, z)));
-  }
-}
-
-/** An arrow from (x0, y0) to (x1, y1) CSS px; beyond the canvas only its visible shaft. */
-function clippedArrow(r, v, x0, y0, x1, y1, style) {
-  const margin = CLIP_MARGIN_PX * r.scale;
-  const inside = (x, y) =>
-    x >= -margin && x <= v.width + margin && y >= -margin && y <= v.height + margin;
-  if (inside(x0, y0) && inside(x1, y1)) {
-    arrow(r, x0, y0, x1, y1, style);
-    return true;
-  }
-  if (clipSegment(x0, y0, x1, y1, -margin, -margin, v.width + margin, v.height + margin, clipOut)) {
-    r.beginPath();
-    r.moveTo(clipOut[0], clipOut[1]);
-    r.lineTo(clipOut[2], clipOut[3]);
-    r.paint(style);
-  }
-  return false;
 }
 
 /** The arrow P → P + s·w (model vector w, projected) from (px, py), its label at the tip. */
@@ -1121,24 +1001,6 @@ export function label(s, d) {
 }
 
 // ------------------------------------------------------------------ turning a space curve
-
-/** [[first t, last t], …] of the runs of a plot's parameters (NaN between runs). */
-function plotRuns(ts) {
-  const runs = [];
-  let first = null;
-  let last = null;
-  for (const u of ts) {
-    if (Number.isNaN(u)) {
-      if (first !== null) runs.push([first, last]);
-      first = null;
-      continue;
-    }
-    first ??= u;
-    last = u;
-  }
-  if (first !== null) runs.push([first, last]);
-  return runs.map(([a, b]) => [Number(a.toFixed(6)), Number(b.toFixed(6))]);
-}
 
 /** Dragging empty space turns a space curve (Shift+drag pans, as in the 3D figures). */
 export function setup(ui) {
