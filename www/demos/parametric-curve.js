@@ -626,12 +626,12 @@ export const figure = {
  * The core's adaptive plot for this window: tolerance PLOT_TOLERANCE_PX in model units, the
  * box the canvas in world units (a plane curve); made again only when the window changes.
  */
-function plotOf(v, d) {
+function plotOf(r, v, d) {
   const cache = d.plot;
   const three = d.proj.three;
   const x0 = v.wx(0);
-  const x1 = v.wx(v.width);
-  const y0 = v.wy(v.height);
+  const x1 = v.wx(r.width);
+  const y0 = v.wy(r.height);
   const y1 = v.wy(0);
   const key = three ? String(v.scale) : `${x0} ${y0} ${x1} ${y1}`;
   if (cache.key === key) return cache.result;
@@ -666,9 +666,9 @@ function drawAxes(r, v, d) {
   r.beginPath();
   if (!d.proj.three) {
     r.moveTo(0, v.sy(0));
-    r.lineTo(v.width, v.sy(0));
+    r.lineTo(r.width, v.sy(0));
     r.moveTo(v.sx(0), 0);
-    r.lineTo(v.sx(0), v.height);
+    r.lineTo(v.sx(0), r.height);
     r.paint(theme.axis);
     return;
   }
@@ -713,7 +713,7 @@ function drawHodograph(r, v, s, d) {
     left,
     top - TEXT_MARGIN_PX * r.scale,
     theme.labelSmall,
-    Math.max(right - left, v.width - left - TEXT_MARGIN_PX * r.scale),
+    Math.max(right - left, r.width - left - TEXT_MARGIN_PX * r.scale),
     "bottom",
   );
   r.beginPath();
@@ -813,7 +813,7 @@ function drawCircle(r, v, d) {
   r.paint(CIRCLE_STYLE);
   const ccx = v.sx(pu(m, cx, cy, cz));
   const ccy = v.sy(pw(m, cx, cy, cz));
-  if (ccx > 0 && ccx < v.width && ccy > 0 && ccy < v.height) {
+  if (ccx > 0 && ccx < r.width && ccy > 0 && ccy < r.height) {
     r.beginPath();
     r.moveTo(v.sx(pu(m, p[0], p[1], pz)), v.sy(pw(m, p[0], p[1], pz)));
     r.lineTo(ccx, ccy);
@@ -863,7 +863,7 @@ export function draw(r, v, s, d) {
   drawHodograph(r, v, s, d);
   drawBezierForm(r, v, d);
   if (d.at.defined) drawCircle(r, v, d);
-  const plot = plotOf(v, d);
+  const plot = plotOf(r, v, d);
   if (plot) {
     r.beginPath();
     penOnCanvas(r, v);
@@ -873,7 +873,7 @@ export function draw(r, v, s, d) {
   d.handles.draw(r, v);
   const at = d.at;
   const margin = TEXT_MARGIN_PX * r.scale;
-  const width = v.width - 2 * margin;
+  const width = r.width - 2 * margin;
   let caption = plot && !plot.complete ? t("parametricCurve.incomplete") : null;
   if (at.defined) {
     const p = at.point;
@@ -930,7 +930,7 @@ export function draw(r, v, s, d) {
     caption ??= t("parametricCurve.undefined", { t: fmt(s.t) });
   }
   const footer = three ? t("parametricCurve.frameCaption") : d.whole.scaleCaption;
-  drawCaption(r, footer, margin, v.height - margin, theme.labelSmall, width, "bottom");
+  drawCaption(r, footer, margin, r.height - margin, theme.labelSmall, width, "bottom");
   if (caption) drawCaption(r, caption, margin, margin, theme.labelBold, width, "top");
 }
 

@@ -125,7 +125,7 @@ export function penTo(r, x, y) {
 /** The canvas widened by CLIP_MARGIN_PX, as the pen's box. */
 export function penOnCanvas(r, v) {
   const margin = CLIP_MARGIN_PX * r.scale;
-  penStart(-margin, -margin, v.width + margin, v.height + margin);
+  penStart(-margin, -margin, r.width + margin, r.height + margin);
 }
 
 /** A flat list of points of `dim` numbers (runs split by NaN), projected, as a clipped path. */
@@ -142,12 +142,12 @@ export function flatRunsPath(r, v, flat, dim, m, ox = 0, oy = 0, scale = 1) {
 export function clippedArrow(r, v, x0, y0, x1, y1, style) {
   const margin = CLIP_MARGIN_PX * r.scale;
   const inside = (x, y) =>
-    x >= -margin && x <= v.width + margin && y >= -margin && y <= v.height + margin;
+    x >= -margin && x <= r.width + margin && y >= -margin && y <= r.height + margin;
   if (inside(x0, y0) && inside(x1, y1)) {
     arrow(r, x0, y0, x1, y1, style);
     return true;
   }
-  if (clipSegment(x0, y0, x1, y1, -margin, -margin, v.width + margin, v.height + margin, clipOut)) {
+  if (clipSegment(x0, y0, x1, y1, -margin, -margin, r.width + margin, r.height + margin, clipOut)) {
     r.beginPath();
     r.moveTo(clipOut[0], clipOut[1]);
     r.lineTo(clipOut[2], clipOut[3]);
