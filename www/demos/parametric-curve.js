@@ -31,7 +31,7 @@ import {
   subscript,
   texDecimal,
 } from "../lib/format.js";
-import { HUES, RADIUS, SECOND_CURVE } from "../lib/theme.js";
+import { HUES, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { locale, t } from "../lib/strings.js";
 import { drawCaption } from "../lib/draw.js";
 import { placeLabel, placeLabelAtTip } from "../lib/handles.js";
@@ -42,6 +42,8 @@ import { BEZIER_POINTS } from "../lib/point-list.js";
 import { formulaFields, infoLine, parameterSliders, shownIf } from "../lib/expression-fields.js";
 import {
   clippedArrow,
+  depthOf,
+  depthRunsPath,
   flatRunsPath,
   niceScale,
   penOnCanvas,
@@ -98,6 +100,8 @@ const MAX_ELEVATION = 89;
 /** Margin of captions from the canvas edges and the hodograph, CSS px. */
 const TEXT_MARGIN_PX = 12;
 const ARROW_LABEL_GAP_PX = 4;
+/** Opacity of the far half of a space curve. */
+const FAR_ALPHA = 0.35;
 
 const VELOCITY_STYLE = Object.freeze({
   stroke: HUES.vermillion,
@@ -120,6 +124,8 @@ const BINORMAL_STYLE = Object.freeze({
 const CIRCLE_STYLE = Object.freeze({ stroke: HUES.orange, width: 1.5 });
 const CENTRE_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
 const BEZIER_POINT_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
+/** The far part of a space curve: the curve's style, faded. */
+const farCurve = themed((theme) => ({ ...theme.curve, strokeAlpha: FAR_ALPHA }));
 const POLYGON_STYLE = Object.freeze({
   stroke: HUES.orange,
   width: 1.5,
@@ -262,6 +268,8 @@ function wholeCurve(d) {
   const samples = curve.sampleUniform(BOUNDS_SAMPLES);
   const us = [];
   const ws = [];
+  let nearest = -Infinity;
+  let farthest = Infinity;
   for (let k = 0; k + dim <= samples.length; k += dim) {
     const x = samples[k];
     const y = samples[k + 1];
@@ -269,6 +277,9 @@ function wholeCurve(d) {
     if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z))) continue;
     us.push(pu(m, x, y, z));
     ws.push(pw(m, x, y, z));
+    const here = depthOf(m, x, y, z);
+    nearest = Math.max(nearest, here);
+    farthest = Math.min(farthest, here);
   }
   const [u0, u1] = robustRange(us);
   const [w0, w1] = robustRange(ws);
@@ -317,6 +328,7 @@ function wholeCurve(d) {
     dim,
     box,
     size,
+    depth: (nearest + farthest) / 2,
     hodograph,
     lambda,
     hbox,
@@ -864,7 +876,18 @@ export function draw(r, v, s, d) {
   drawBezierForm(r, v, d);
   if (d.at.defined) drawCircle(r, v, d);
   const plot = plotOf(r, v, d);
-  if (plot) {
+  if (plot && three) {
+    // The far half (by depth) faded, then the near half: which loop is in front reads at once.
+    const { depth } = d.whole;
+    r.beginPath();
+    penOnCanvas(r, v);
+    depthRunsPath(r, v, plot.points, m, depth, false);
+    r.paint(farCurve(theme));
+    r.beginPath();
+    penOnCanvas(r, v);
+    depthRunsPath(r, v, plot.points, m, depth, true);
+    r.paint(theme.curve);
+  } else if (plot) {
     r.beginPath();
     penOnCanvas(r, v);
     flatRunsPath(r, v, plot.points, dim, m);

@@ -18,10 +18,11 @@ export const CLIP_MARGIN_PX = 40;
 /**
  * The map from model to figure coordinates: the identity for a plane curve; for a space curve
  * the orthographic view from azimuth α, elevation β (right r = (−sin α, cos α, 0), up
- * u = (−sin β cos α, −sin β sin α, cos β)): (x, y, z) → (r·p, u·p).
+ * u = (−sin β cos α, −sin β sin α, cos β)): (x, y, z) → (r·p, u·p); `m` holds r, u and the
+ * direction towards the viewer r × u = (cos β cos α, cos β sin α, sin β) (depth).
  */
 export function projectionOf(azimuth, elevation, dim) {
-  if (dim !== 3) return { three: false, m: Float64Array.of(1, 0, 0, 0, 1, 0) };
+  if (dim !== 3) return { three: false, m: Float64Array.of(1, 0, 0, 0, 1, 0, 0, 0, 1) };
   const a = (azimuth * Math.PI) / 180;
   const b = (elevation * Math.PI) / 180;
   const m = Float64Array.of(
@@ -31,6 +32,10 @@ export function projectionOf(azimuth, elevation, dim) {
     -Math.sin(b) * Math.cos(a),
     -Math.sin(b) * Math.sin(a),
     Math.cos(b),
+    // The direction towards the viewer r × u: a point's depth (larger is nearer).
+    Math.cos(b) * Math.cos(a),
+    Math.cos(b) * Math.sin(a),
+    Math.sin(b),
   );
   return { three: true, m };
 }
@@ -135,6 +140,26 @@ export function flatRunsPath(r, v, flat, dim, m, ox = 0, oy = 0, scale = 1) {
     const y = scale * flat[k + 1];
     const z = scale * zAt(flat, k, dim);
     penTo(r, v.sx(ox + pu(m, x, y, z)), v.sy(oy + pw(m, x, y, z)));
+  }
+}
+
+/** A point's depth under the map `m` (larger is nearer the viewer). */
+export const depthOf = (m, x, y, z) => m[6] * x + m[7] * y + m[8] * z;
+
+/**
+ * The segments of a flat list of space points whose middle lies nearer than `depth` (`near`),
+ * or not: a space curve drawn in two passes, its far part faded (a depth cue).
+ */
+export function depthRunsPath(r, v, flat, m, depth, near) {
+  let previous = Number.NaN;
+  for (let k = 0; k + 3 <= flat.length; k += 3) {
+    const x = flat[k];
+    const y = flat[k + 1];
+    const z = flat[k + 2];
+    const here = depthOf(m, x, y, z);
+    if (!((previous + here) / 2 > depth === near)) penTo(r, Number.NaN, Number.NaN);
+    penTo(r, v.sx(pu(m, x, y, z)), v.sy(pw(m, x, y, z)));
+    previous = here;
   }
 }
 
