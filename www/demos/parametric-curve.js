@@ -28,6 +28,7 @@ import {
   localeDecimal,
   pointTex,
   pointText,
+  shortNumber,
   subscript,
   texDecimal,
 } from "../lib/format.js";
@@ -230,7 +231,8 @@ function curveOf(sl, s) {
     } catch (err) {
       throw located(err, name);
     }
-    for (const p of names) params[p] = s.params?.[p] ?? DEFAULT_PARAMETER;
+    for (const p of names)
+      params[p] = s.params && Object.hasOwn(s.params, p) ? s.params[p] : DEFAULT_PARAMETER;
   }
   const piece = { x: s.x, y: s.y, from: s.from, to: s.to };
   if (s.z.trim()) piece.z = s.z;
@@ -407,7 +409,8 @@ function bezierFormOf(s, d) {
 }
 
 export const compute = {
-  domain: [TEXTS, (s, d) => d.curve.domain()],
+  // A bound may name a parameter ("2pi/a"): the domain follows the sliders too.
+  domain: [WITH_PARAMS, (s, d) => d.curve.domain()],
   proj: [
     [...TEXTS, "azimuth", "elevation"],
     (s, d) => projectionOf(s.azimuth, s.elevation, d.curve.dim),
@@ -415,7 +418,10 @@ export const compute = {
   whole: [[...WITH_PARAMS, "azimuth", "elevation"], (s, d) => wholeCurve(d)],
   tex: [TEXTS, (s, d) => d.curve.tex(0)],
   bezierForm: [[...WITH_PARAMS, "bezier"], (s, d) => bezierFormOf(s, d)],
-  at: [[...WITH_PARAMS, "t"], (s, d) => valuesAt(d.curve, s.t, d.whole)],
+  at: [
+    [...WITH_PARAMS, "t"],
+    (s, d) => valuesAt(d.curve, Math.min(Math.max(s.t, d.domain[0]), d.domain[1]), d.whole),
+  ],
   /** The adaptive plot, made again in `draw` when the window changes (see `plotOf`). */
   plot: [WITH_PARAMS, () => ({ key: "", result: null })],
 };
@@ -981,7 +987,7 @@ export function formula(s, d) {
     );
   }
   const params = Object.entries(s.params)
-    .map(([name, value]) => `${name} = ${fmtTex(value)}`)
+    .map(([name, value]) => `${name.replace(/_(.+)$/, "_{$1}")} = ${shortNumber(value, true)}`)
     .join(",\\ ");
   lines.push(`t \\in [${tex.from},\\ ${tex.to}]${params ? `,\\qquad ${params}` : ""}`);
   const at = d.at;
