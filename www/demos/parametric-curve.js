@@ -124,14 +124,13 @@ const BINORMAL_STYLE = Object.freeze({
 });
 const CIRCLE_STYLE = Object.freeze({ stroke: HUES.orange, width: 1.5 });
 const CENTRE_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
-const BEZIER_POINT_STYLE = Object.freeze({ fill: HUES.orange, radius: RADIUS.constructionPoint });
+/** The exact control points (not handles: they follow the formula), in the polygon's grey. */
+const bezierPoint = themed((theme) => ({
+  fill: theme.polygon.stroke,
+  radius: RADIUS.constructionPoint,
+}));
 /** The far part of a space curve: the curve's style, faded. */
 const farCurve = themed((theme) => ({ ...theme.curve, strokeAlpha: FAR_ALPHA }));
-const POLYGON_STYLE = Object.freeze({
-  stroke: HUES.orange,
-  width: 1.5,
-  dash: Object.freeze([5, 4]),
-});
 
 /** The examples: the notes' circle first. `t` is where the point starts. */
 export const PRESETS = Object.freeze([
@@ -767,7 +766,7 @@ function drawBezierForm(r, v, d) {
   r.beginPath();
   penOnCanvas(r, v);
   flatRunsPath(r, v, form.points, form.dim, m);
-  r.paint(POLYGON_STYLE);
+  r.paint(r.theme.polygon);
   for (let i = 0; i < form.count; i++) {
     const k = i * form.dim;
     const x = form.points[k];
@@ -775,7 +774,7 @@ function drawBezierForm(r, v, d) {
     const z = zAt(form.points, k, form.dim);
     const px = v.sx(pu(m, x, y, z));
     const py = v.sy(pw(m, x, y, z));
-    r.point(px, py, BEZIER_POINT_STYLE);
+    r.point(px, py, bezierPoint(r.theme));
     r.text(
       bezierLabel(i),
       px + 6 * r.scale,
