@@ -35,7 +35,7 @@ import {
 import { HUES, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { locale, t } from "../lib/strings.js";
 import { drawCaption } from "../lib/draw.js";
-import { placeLabel, placeLabelAtTip } from "../lib/handles.js";
+import { HIT_RADIUS_TOUCH, placeLabel, placeLabelAtTip } from "../lib/handles.js";
 import { buildHash } from "../lib/state.js";
 import { withLanguage } from "../lib/language.js";
 import { errorText } from "../lib/core-errors.js";
@@ -46,6 +46,7 @@ import {
   depthOf,
   depthRunsPath,
   flatRunsPath,
+  nearestParameter,
   niceScale,
   penOnCanvas,
   penStart,
@@ -97,6 +98,8 @@ const FRAME_PX = 60;
 const AXIS_FRACTION = 0.45;
 /** Degrees turned per CSS px of a drag on a space curve. */
 const DEG_PER_PX = 0.4;
+/** A press this near the drawn curve (CSS px, mouse) moves the point there. */
+const PICK_RADIUS_PX = 8;
 const MAX_ELEVATION = 89;
 /** Margin of captions from the canvas edges and the hodograph, CSS px. */
 const TEXT_MARGIN_PX = 12;
@@ -1032,6 +1035,44 @@ export function label(s, d) {
 
 /** Dragging empty space turns a space curve (Shift+drag pans, as in the 3D figures). */
 export function setup(ui) {
+  // Pressing on the curve (or dragging along it) moves the point there.
+  let picking = false;
+  const near = (x, y) => {
+    const plot = ui.data.plot.result;
+    if (!plot) return null;
+    return nearestParameter(ui.view, plot, ui.data.curve.dim, ui.data.proj.m, x, y);
+  };
+  const pick = (x, y, final) => {
+    const hit = near(x, y);
+    if (!hit) return;
+    const [a, b] = ui.data.domain;
+    ui.set("t", Math.min(Math.max(hit.t, a), b), final);
+  };
+  const picker = {
+    pointerDown(event, x, y) {
+      const hit = near(x, y);
+      const radius = event.pointerType === "touch" ? HIT_RADIUS_TOUCH : PICK_RADIUS_PX;
+      if (!hit || hit.distance > radius) return false;
+      ui.stop();
+      picking = true;
+      pick(x, y, false);
+      return true;
+    },
+    pointerMove(event, x, y) {
+      if (picking) pick(x, y, false);
+    },
+    pointerUp() {
+      if (!picking) return;
+      picking = false;
+      ui.commit();
+    },
+    hover(x, y) {
+      const hit = near(x, y);
+      return hit && hit.distance <= PICK_RADIUS_PX ? "pointer" : null;
+    },
+    leave() {},
+  };
+  ui.view.addInteractor(picker);
   let drag = null;
   const orbit = {
     pointerDown(event, x, y) {

@@ -163,6 +163,47 @@ export function depthRunsPath(r, v, flat, m, depth, near) {
   }
 }
 
+/**
+ * The parameter of the drawn curve nearest the canvas point (x, y): the nearest point on a
+ * segment of the plot's polyline (projected), its t interpolated between the segment's ends
+ * (the plot is within a fraction of a pixel of the curve). Returns `{ t, distance }` (CSS px)
+ * or null when nothing is drawn. Picking support, not a curve algorithm.
+ */
+export function nearestParameter(v, plot, dim, m, x, y) {
+  const { points, ts } = plot;
+  let best = null;
+  let px = Number.NaN;
+  let py = Number.NaN;
+  for (let j = 0; j < ts.length; j++) {
+    const k = j * dim;
+    const qx = v.sx(pu(m, points[k], points[k + 1], zAt(points, k, dim)));
+    const qy = v.sy(pw(m, points[k], points[k + 1], zAt(points, k, dim)));
+    if (!(Number.isFinite(qx) && Number.isFinite(qy) && Number.isFinite(ts[j]))) {
+      px = Number.NaN;
+      continue;
+    }
+    let s = 0;
+    if (Number.isFinite(px)) {
+      const dx = qx - px;
+      const dy = qy - py;
+      const length2 = dx * dx + dy * dy;
+      s = length2 > 0 ? Math.min(Math.max(((x - px) * dx + (y - py) * dy) / length2, 0), 1) : 1;
+    } else {
+      s = 1;
+    }
+    const cx = Number.isFinite(px) ? px + s * (qx - px) : qx;
+    const cy = Number.isFinite(px) ? py + s * (qy - py) : qy;
+    const distance = Math.hypot(x - cx, y - cy);
+    if (!best || distance < best.distance) {
+      const t = Number.isFinite(px) ? ts[j - 1] + s * (ts[j] - ts[j - 1]) : ts[j];
+      best = { t, distance };
+    }
+    px = qx;
+    py = qy;
+  }
+  return best;
+}
+
 /** An arrow from (x0, y0) to (x1, y1) CSS px; beyond the canvas only its visible shaft. */
 export function clippedArrow(r, v, x0, y0, x1, y1, style) {
   const margin = CLIP_MARGIN_PX * r.scale;

@@ -43,6 +43,23 @@ export default [
     },
   ],
   [
+    "a press on the curve moves the point there: the circle's leftmost point is t = π",
+    async (page, h, _base, { assert, settle }) => {
+      // The scale from a drag of O by 40 px (O is at (2.1, 0), on the circle's row), then undone.
+      const [o] = await h.handles();
+      const before = (await linkState(page)).hodograph[0][0];
+      await h.drag(o, 40, 0);
+      const scale = 40 / ((await linkState(page)).hodograph[0][0] - before);
+      await page.keyboard.press("Control+z");
+      await page.keyboard.press("Escape");
+      await settle(page);
+      await page.mouse.click(o.x - (before + 1) * scale, o.y);
+      await settle(page);
+      const t = (await linkState(page)).t;
+      assert(Math.abs(t - Math.PI) < 0.03, `t = ${t} (scale ${scale} px per unit)`);
+    },
+  ],
+  [
     "ellipse: a and b become sliders; κ(0) = a/b² follows the slider a",
     async (page, _h, _base, { equal, settle }) => {
       await preset(page, "ellipse", settle);
