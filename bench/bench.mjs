@@ -27,6 +27,7 @@ import {
 } from "./inputs.mjs";
 import { dragBench } from "./drag.mjs";
 import { solveBench, splineDragBench, SOLVE_SIZES } from "./interp.mjs";
+import { expressionBench, replotBench } from "./expressions.mjs";
 import { adaptiveBench, surfaceDragBench } from "./surface.mjs";
 
 const args = new Set(process.argv.slice(2));
@@ -48,9 +49,10 @@ const verb = require("verb-nurbs");
 console.log = quiet;
 const { Bezier } = require("bezier-js");
 const nurbs = require("nurbs");
+const mathjs = require("mathjs");
 const rhino = await require("rhino3dm")();
 const peerVersions = Object.fromEntries(
-  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm"].map((name) => [
+  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm", "mathjs"].map((name) => [
     name,
     JSON.parse(readFileSync(here(`../node_modules/${name}/package.json`), "utf8")).version,
   ]),
@@ -1145,6 +1147,15 @@ process.stdout.write(".\n");
 const surfaceFrameChromium =
   dragChromium?.surfaceFrame ?? (dragChromium?.error ? dragChromium : null);
 
+// ---- (m) typed formulas: tape, jets, math.js, closures; the re-plot after a slider (issue 24) ----
+process.stdout.write("(m) typed formulas ");
+const expressions = expressionBench(sl, mathjs, {
+  n: QUICK ? 20_000 : 200_000,
+  rounds: QUICK ? 3 : 5,
+});
+const replot = replotBench(sl, { rounds: QUICK ? 30 : 200 });
+process.stdout.write(".\n");
+
 // ---- sizes, machine, report --------------------------------------------------------------------
 const wasmBytes = readFileSync(WASM);
 const wasm = {
@@ -1290,6 +1301,19 @@ lines.push(
   `wasm: ${wasm.bytes.toLocaleString("en")} bytes after wasm-opt, ${wasm.gzipBytes.toLocaleString("en")} bytes gzipped (-9)`,
 );
 
+lines.push("");
+lines.push(
+  "(m) typed formulas (2D curves, points per second; agreement: largest relative difference from the JS closures)",
+);
+for (const r of expressions) {
+  lines.push(
+    `    ${pad(r.curve, 18)} ${pad(r.contender, 32)} ${lpad(fmtTput(r.pointsPerSecond), 10)}  ${r.agreement === null ? "" : `agreement ${fmtDiff(r.agreement)}`}`,
+  );
+}
+lines.push(
+  `    re-plot of a 4-piece curve after a slider move (setParameter + plot at 0.5 px, ${replot.vertices} vertices): ${replot.medianMs.toFixed(3)} ms median`,
+);
+
 // Targets of issue 5, computed from this run (reported, never asserted).
 const row = (id, pred) => results.find((w) => w.id === id)?.rows.find((r) => !r.error && pred(r));
 const best = (id, lib) =>
@@ -1305,6 +1329,29 @@ const fastestPeer = (id) =>
 const ratio = (a, b) => (a && b ? a.throughput / b.throughput : NaN);
 const targets = [];
 const target = (what, value, goal, met, detail) => targets.push({ what, value, goal, met, detail });
+{
+  // (m): the f64 tape (batched sample) against math.js, on the slowest of the six curves.
+  const ratios = [...new Set(expressions.map((r) => r.curve))].map((curve) => {
+    const of = (c) => expressions.find((r) => r.curve === curve && r.contender === c);
+    const m = of("math.js compile/evaluate");
+    return m ? of("splinelab sample(ts)").pointsPerSecond / m.pointsPerSecond : Number.NaN;
+  });
+  const worst = Math.min(...ratios);
+  target(
+    "(m) typed formula tape vs math.js",
+    worst,
+    "≥ 1×",
+    worst >= 1,
+    "the slowest of six curves",
+  );
+  target(
+    "(m) re-plot after a slider, 4 pieces",
+    replot.medianMs,
+    "≤ 2 ms",
+    replot.medianMs <= 2,
+    "setParameter + plot",
+  );
+}
 {
   const sa = best("(a)", "splinelab"),
     ja = best("(a)", "js-baseline");
@@ -1513,7 +1560,7 @@ for (const t of targets) {
     typeof t.value === "number" && Number.isFinite(t.value)
       ? t.what.includes("error")
         ? t.value.toExponential(1)
-        : t.what.includes("drag")
+        : t.what.includes("drag") || t.what.includes("re-plot")
           ? `${t.value.toFixed(2)} ms`
           : t.what.includes("wasm")
             ? `${t.value.toLocaleString("en")} B`
@@ -1541,6 +1588,7 @@ const report = {
   drag: { frames: dragFrames, node: dragNode, chromium: dragChromium },
   interpolation: { solves, splineDrag: { node: splineDragNode, chromium: splineDragChromium } },
   surfaces: { adaptive, drag: { node: surfaceDragNode, chromium: surfaceFrameChromium } },
+  expressions: { rates: expressions, replot },
   wasm,
   targets,
   table: lines.join("\n"),

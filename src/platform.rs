@@ -1,5 +1,5 @@
 //! What the core asks of the platform it runs on: the text of a number in a message, and
-//! `sin`/`cos`. In the browser build (`wasm32-unknown-unknown`) both come from JavaScript, which
+//! the elementary functions (`sin`/`cos`, and for the typed expressions `tan` … `pow`). In the browser build (`wasm32-unknown-unknown`) both come from JavaScript, which
 //! keeps Rust's float printing (~20 KB) and a second copy of fdlibm (~7 KB) out of the wasm;
 //! everywhere else they are plain Rust that gives the same results.
 //!
@@ -14,10 +14,35 @@ mod js {
         /// JavaScript's `String(x)` for a number.
         #[wasm_bindgen(js_name = String)]
         pub(super) fn js_string(x: f64) -> String;
+        /// JavaScript's `Number(text)` for a string.
+        #[wasm_bindgen(js_name = Number)]
+        pub(super) fn js_number(text: &str) -> f64;
         #[wasm_bindgen(js_namespace = Math, js_name = sin)]
         pub(super) fn js_sin(x: f64) -> f64;
         #[wasm_bindgen(js_namespace = Math, js_name = cos)]
         pub(super) fn js_cos(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = tan)]
+        pub(super) fn js_tan(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = asin)]
+        pub(super) fn js_asin(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = acos)]
+        pub(super) fn js_acos(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = atan)]
+        pub(super) fn js_atan(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = sinh)]
+        pub(super) fn js_sinh(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = cosh)]
+        pub(super) fn js_cosh(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = tanh)]
+        pub(super) fn js_tanh(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = exp)]
+        pub(super) fn js_exp(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = log)]
+        pub(super) fn js_ln(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = log10)]
+        pub(super) fn js_log10(x: f64) -> f64;
+        #[wasm_bindgen(js_namespace = Math, js_name = pow)]
+        pub(super) fn js_pow(x: f64, y: f64) -> f64;
     }
 }
 
@@ -40,6 +65,21 @@ pub(crate) fn number_text(x: f64) -> String {
     }
 }
 
+/// The nearest f64 to a decimal written with digits and at most one point (`"6.5"`, `".5"`):
+/// JavaScript's `Number(text)` in the browser build (which keeps Rust's decimal parser and its
+/// ~10 KB table of powers of five out of the wasm), [`str::parse`] elsewhere; both round
+/// correctly. NaN for any other text.
+pub(crate) fn parse_decimal(text: &str) -> f64 {
+    #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+    {
+        js::js_number(text)
+    }
+    #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+    {
+        text.parse().unwrap_or(f64::NAN)
+    }
+}
+
 /// `(sin x, cos x)`: JavaScript's `Math.sin` and `Math.cos` in the browser build (V8 uses the
 /// same fdlibm algorithms as Rust's libm), [`f64::sin_cos`] elsewhere.
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
@@ -50,6 +90,59 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
     {
         x.sin_cos()
+    }
+}
+
+/// One elementary function of one argument: JavaScript's `Math.<js>` in the browser build, the
+/// std method `<std>` elsewhere (the same fdlibm-family algorithms, within an ulp of each other).
+macro_rules! elementary {
+    ($(#[$doc:meta])* $name:ident, $js:ident, $std:ident) => {
+        $(#[$doc])*
+        pub(crate) fn $name(x: f64) -> f64 {
+            #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+            {
+                js::$js(x)
+            }
+            #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+            {
+                x.$std()
+            }
+        }
+    };
+}
+
+elementary!(/// tan x (`Math.tan`).
+    tan, js_tan, tan);
+elementary!(/// arcsin x ∈ [−π/2, π/2], NaN outside [−1, 1] (`Math.asin`).
+    asin, js_asin, asin);
+elementary!(/// arccos x ∈ [0, π], NaN outside [−1, 1] (`Math.acos`).
+    acos, js_acos, acos);
+elementary!(/// arctan x ∈ (−π/2, π/2) (`Math.atan`).
+    atan, js_atan, atan);
+elementary!(/// sinh x = (eˣ − e⁻ˣ)/2 (`Math.sinh`).
+    sinh, js_sinh, sinh);
+elementary!(/// cosh x = (eˣ + e⁻ˣ)/2 (`Math.cosh`).
+    cosh, js_cosh, cosh);
+elementary!(/// tanh x = sinh x / cosh x (`Math.tanh`).
+    tanh, js_tanh, tanh);
+elementary!(/// eˣ (`Math.exp`).
+    exp, js_exp, exp);
+elementary!(/// The natural logarithm ln x: NaN for x < 0, −∞ at 0 (`Math.log`).
+    ln, js_ln, ln);
+elementary!(/// log₁₀ x: NaN for x < 0, −∞ at 0 (`Math.log10`).
+    log10, js_log10, log10);
+
+/// xʸ as IEEE 754 `pow` gives it (`Math.pow`, [`f64::powf`]): a negative base with a
+/// non-integer exponent is NaN, with an integer exponent it keeps the sign ((−2)³ = −8), and
+/// x⁰ = 1 for every x (0⁰ = 1).
+pub(crate) fn pow(x: f64, y: f64) -> f64 {
+    #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+    {
+        js::js_pow(x, y)
+    }
+    #[cfg(not(all(target_arch = "wasm32", target_os = "unknown")))]
+    {
+        x.powf(y)
     }
 }
 

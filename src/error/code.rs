@@ -82,6 +82,8 @@ impl Error {
             Error::SplineKind { .. } => "spline-kind",
             Error::ConflictingOptions { .. } => "conflicting-options",
             Error::KnotsNotClamped { .. } => "knots-not-clamped",
+            // One code per problem of a typed expression (src/expr/error.rs).
+            Error::Expression { error } => error.problem.code(),
         }
     }
 }

@@ -467,6 +467,7 @@ impl fmt::Display for Error {
                 degree + 1,
                 Num(*param)
             ),
+            Error::Expression { error } => write!(f, "{error}"),
         }
     }
 }

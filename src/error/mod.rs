@@ -621,6 +621,16 @@ pub enum Error {
         /// The degree `p`.
         degree: usize,
     },
+    /// A typed expression of a parametric curve (`x`, `y`, `z`, `from`, `to`, a parameter) is
+    /// not usable: `sl.parametricCurve([{ x: "sin t", … }])`. Its code is the problem's own
+    /// ([`crate::expr::Problem::code`]: `"unknown-name"`, `"function-needs-parentheses"` …) and
+    /// its params are `piece`, `field`, `start`, `end` (the characters to underline, UTF-16
+    /// units) with the problem's fields.
+    Expression {
+        /// Where and what.
+        #[cfg_attr(all(target_arch = "wasm32", target_os = "unknown"), serde(flatten))]
+        error: Box<crate::expr::ExprError>,
+    },
 }
 
 impl std::error::Error for Error {

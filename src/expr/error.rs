@@ -122,6 +122,10 @@ pub enum Problem {
         /// Piece i+1's start.
         from: f64,
     },
+    /// `toBezier` of a piece that is not a polynomial in t.
+    NotPolynomial {},
+    /// An interval bound that reads t: `to = "2t"`.
+    BoundUsesT {},
     /// A field that every piece needs is missing (`x`, `y`, `from`, `to`), or `z` on some
     /// pieces only.
     MissingField {},
@@ -158,6 +162,8 @@ impl Problem {
             Problem::NotFiniteValue { .. } => "not-finite-value",
             Problem::EmptyInterval { .. } => "empty-piece-interval",
             Problem::PiecesDoNotJoin { .. } => "pieces-do-not-join",
+            Problem::NotPolynomial { .. } => "not-polynomial",
+            Problem::BoundUsesT { .. } => "bound-uses-t",
             Problem::MissingField { .. } => "missing-field",
             Problem::PieceCount { .. } => "piece-count",
         }
@@ -197,11 +203,25 @@ impl ExprError {
         }
     }
 
+    /// The same error, placed in piece `piece` (no field).
+    pub fn in_piece(mut self, piece: usize) -> Self {
+        self.piece = Some(piece);
+        self
+    }
+
     /// The same error, placed in `field` of piece `piece`.
     pub fn in_field(mut self, piece: usize, field: &str) -> Self {
         self.piece = Some(piece);
         self.field = Some(field.to_string());
         self
+    }
+}
+
+impl From<ExprError> for crate::Error {
+    fn from(error: ExprError) -> Self {
+        crate::Error::Expression {
+            error: Box::new(error),
+        }
     }
 }
 
@@ -257,6 +277,8 @@ impl fmt::Display for Problem {
             Problem::NotFiniteValue { value } => write!(f, "the value is {}; it must be a finite number", num(*value)),
             Problem::EmptyInterval { from, to } => write!(f, "the interval [{}, {}] is empty; it needs from < to", num(*from), num(*to)),
             Problem::PiecesDoNotJoin { previous, from } => write!(f, "starts at {} but the previous piece ends at {}; pieces join in t", num(*from), num(*previous)),
+            Problem::NotPolynomial {} => f.write_str("this piece is not a polynomial in t, so it has no Bézier form"),
+            Problem::BoundUsesT {} => f.write_str("a bound is a number and cannot depend on t; write it with numbers, pi, e and parameters"),
             Problem::MissingField {} => f.write_str("this field is missing; every piece needs x, y, from and to (and z on every piece or none)"),
             Problem::PieceCount { count, max } => write!(f, "a curve needs 1 to {max} pieces, got {count}"),
         }

@@ -11,12 +11,33 @@
 //! is refused with a hint (`sin t`, `1/2t`, `t2`).
 
 pub mod ast;
+pub mod certify;
+pub mod diff;
 pub mod error;
+pub mod interval;
+pub mod jet;
+pub mod lex;
+pub mod math;
+pub mod parse;
+pub mod poly;
 pub mod rational;
+mod series;
+pub mod simplify;
+pub mod tape;
+pub mod tex;
 
 pub use ast::{BinOp, Constant, Expr, Func, Node, Span};
+pub use certify::{Defined, IntervalFlags, IntervalResult};
+pub use diff::{derivative, MAX_DERIVATIVE_NODES};
 pub use error::{ExprError, Problem};
+pub use interval::Interval;
+pub use jet::Scalar;
+pub use parse::{is_parameter_name, parameter_names, parse};
+pub use poly::{bernstein_exact, bernstein_f64, Polynomial, MAX_POLY_DEGREE};
 pub use rational::Rational;
+pub use simplify::simplify;
+pub use tape::{Op, Scratch, Tape};
+pub use tex::tex;
 
 /// Longest expression text accepted, in UTF-16 code units.
 pub const MAX_LENGTH: usize = 1000;

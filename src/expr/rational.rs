@@ -16,6 +16,7 @@ pub struct Rational {
     den: i128,
 }
 
+#[inline(never)]
 fn gcd(mut a: i128, mut b: i128) -> i128 {
     a = a.abs();
     b = b.abs();
@@ -32,6 +33,7 @@ impl Rational {
     pub const ONE: Rational = Rational { num: 1, den: 1 };
 
     /// `num / den` reduced; `None` when `den` is 0 or the sign cannot be normalised.
+    #[inline(never)] // one copy of the i128 arithmetic, not one per call site (wasm size)
     pub fn new(num: i128, den: i128) -> Option<Rational> {
         if den == 0 {
             return None;
@@ -110,6 +112,7 @@ impl Rational {
     }
 
     /// `self + other`.
+    #[inline(never)] // one copy of the i128 arithmetic, not one per call site (wasm size)
     pub fn checked_add(self, other: Rational) -> Option<Rational> {
         let g = gcd(self.den, other.den);
         let a = self.num.checked_mul(other.den / g)?;
@@ -131,6 +134,7 @@ impl Rational {
     }
 
     /// `self · other`.
+    #[inline(never)] // one copy of the i128 arithmetic, not one per call site (wasm size)
     pub fn checked_mul(self, other: Rational) -> Option<Rational> {
         let g1 = gcd(self.num, other.den).max(1);
         let g2 = gcd(other.num, self.den).max(1);
@@ -141,6 +145,7 @@ impl Rational {
     }
 
     /// `self / other`; `None` when `other` is 0.
+    #[inline(never)] // one copy of the i128 arithmetic, not one per call site (wasm size)
     pub fn checked_div(self, other: Rational) -> Option<Rational> {
         if other.num == 0 {
             return None;
@@ -149,6 +154,7 @@ impl Rational {
     }
 
     /// `self^k` for an integer `k` (negative: the reciprocal's power; `None` for 0^negative).
+    #[inline(never)] // one copy of the i128 arithmetic, not one per call site (wasm size)
     pub fn pow(self, k: i32) -> Option<Rational> {
         let mut base = if k < 0 {
             Rational::ONE.checked_div(self)?

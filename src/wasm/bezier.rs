@@ -46,6 +46,20 @@ fn build(points: &[f64], dim: usize, weights: Option<&[f64]>) -> Result<Curve, E
     })
 }
 
+impl JsBezierCurve {
+    /// A typed polynomial piece's Bézier form (`ParametricCurve.toBezier(i)`).
+    pub(crate) fn from_parametric(
+        form: &crate::parametric::BezierForm,
+        dim: usize,
+    ) -> Result<JsBezierCurve, Error> {
+        let inner = match dim {
+            2 => Curve::D2(form.curve_2d()?),
+            _ => Curve::D3(form.curve_3d()?),
+        };
+        Ok(JsBezierCurve::wrap(inner))
+    }
+}
+
 /// A polynomial or rational Bézier curve in 2D or 3D (see the README for the conventions).
 #[wasm_bindgen(js_name = BezierCurve)]
 #[derive(Clone)]

@@ -27,7 +27,10 @@ impl From<Error> for ApiError {
     fn from(err: Error) -> Self {
         let error = js_sys::Error::new(&err.to_string());
         set(&error, "code", &JsValue::from_str(err.code()));
-        let params = serde_wasm_bindgen::to_value(&err).unwrap_or(JsValue::UNDEFINED);
+        // Maps as plain objects: a flattened field (a typed expression's problem) serializes
+        // as a map, which would otherwise become a JS Map.
+        let serializer = serde_wasm_bindgen::Serializer::new().serialize_maps_as_objects(true);
+        let params = err.serialize(&serializer).unwrap_or(JsValue::UNDEFINED);
         set(&error, "params", &params);
         ApiError(error.into())
     }

@@ -19,6 +19,7 @@ pub mod bezier;
 pub mod bspline;
 pub(crate) mod error;
 pub mod interp;
+pub mod parametric;
 pub mod rational;
 mod scratch;
 pub mod surface;
@@ -30,6 +31,7 @@ pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 pub use error::ApiError;
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
+pub use parametric::{expression_names, parametric_curve, JsParametricCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
 pub use surface_build::{extrude, interpolate_surface, interpolate_surface_params, revolve, ruled};
 

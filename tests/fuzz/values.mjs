@@ -4,6 +4,8 @@
 // numbers, wrong types, null/undefined, arrays of random lengths, strings, freed objects and
 // objects of the wrong class). Deterministic for a given random source.
 
+import { expression, parameters, pieces } from "./expressions.mjs";
+
 /** A seeded random source (mulberry32): rnd() in [0, 1). */
 export function random(seed) {
   let a = seed >>> 0;
@@ -164,6 +166,10 @@ export function argument(r, v, param, s, classObjects, strings) {
   };
   const wrap = (a) => (chance(0.2) ? v.plainArray(a) : a);
   if (s.chosen && name in s.chosen) return s.chosen[name];
+  // The typed curves' texts (expressions.mjs), by name before the types see an object.
+  const typed = { pieces, parameters, text: expression };
+  if (name in typed) return chance(0.95) ? typed[name](r) : v.hostile();
+  if (name === "name") return chance(0.8) ? pick(["a", "b", "ω", "a_1", "q"]) : v.hostile();
   for (const t of param.type) {
     if (t.kind === "class") {
       const same = classObjects(param.type.filter((x) => x.kind === "class").map((x) => x.name));

@@ -7,6 +7,44 @@ import { fileURLToPath } from "node:url";
 
 const source = (path) =>
   readFileSync(fileURLToPath(new URL(`../../src/error/${path}`, import.meta.url)), "utf8");
+const expressionSource = () =>
+  readFileSync(fileURLToPath(new URL("../../src/expr/error.rs", import.meta.url)), "utf8");
+
+/** The params every typed-expression error carries besides its problem's fields. */
+export const EXPRESSION_PLACE = ["piece", "field", "start", "end"];
+
+/**
+ * The typed-expression problems (src/expr/error.rs): code → the camelCase names of its
+ * fields, `EXPRESSION_PLACE` first (`Error::Expression` has one code per `Problem`).
+ */
+export function expressionCodes() {
+  const text = expressionSource();
+  const codes = new Map();
+  for (const m of text.matchAll(/Problem::(\w+) \{ \.\. \} => "([a-z0-9-]+)"/g))
+    codes.set(m[1], m[2]);
+  const body = /pub enum Problem \{\n([\s\S]*?)\n\}\n/.exec(text);
+  if (!body || codes.size < 10) throw new Error("Problem codes not found in src/expr/error.rs");
+  const fields = new Map();
+  let variant = null;
+  for (const line of body[1].split("\n")) {
+    const start = /^ {4}(\w+) \{(\},?)?$/.exec(line);
+    if (start?.[1] === "Expression") {
+      variant = null; // its codes and fields are the problems' (expressionCodes)
+      continue;
+    }
+    if (start) {
+      variant = start[1];
+      if (!codes.has(variant)) throw new Error(`Problem::${variant} has no code`);
+      fields.set(codes.get(variant), [...EXPRESSION_PLACE]);
+      if (start[2]) variant = null;
+      continue;
+    }
+    if (/^ {4}\},?$/.test(line)) variant = null;
+    const field = /^ {8}(\w+): /.exec(line);
+    if (variant && field) fields.get(codes.get(variant)).push(camel(field[1]));
+  }
+  return fields;
+}
 
 /** The errors of scripts/glue.mjs and the bindings (code → params' names). */
 export const GLUE_ERRORS = {
@@ -47,6 +85,10 @@ export function codeFields() {
   let variant = null;
   for (const line of body[1].split("\n")) {
     const start = /^ {4}(\w+) \{(\},?)?$/.exec(line);
+    if (start?.[1] === "Expression") {
+      variant = null; // its codes and fields are the problems' (expressionCodes)
+      continue;
+    }
     if (start) {
       variant = start[1];
       if (!codes.has(variant)) throw new Error(`variant ${variant} has no code in code.rs`);
@@ -61,5 +103,6 @@ export function codeFields() {
   for (const code of codes.values()) {
     if (!fields.has(code)) throw new Error(`code ${code}: variant not found in mod.rs`);
   }
+  for (const [code, names] of expressionCodes()) fields.set(code, names);
   return fields;
 }

@@ -168,11 +168,52 @@ function spacing(alpha) {
 }
 
 /**
- * The text of `code` with `params` in the active language, or null when there is no template
- * or the params do not fill it. `err` is the thrown Error (for "internal").
+ * The forms of a typed-expression message other than its code's own template, picked by the
+ * params as src/expr/error.rs's Display does: code → (params) → suffix or "".
  */
-function coded(code, params = {}, err = {}) {
+export const EXPRESSION_FORMS = Object.freeze({
+  "unexpected-character": (p) => ({ ",": ".comma", "|": ".bar" })[p.character] ?? "",
+  "expected-operand": (p) => (p.found === "" ? ".end" : ""),
+  "function-power": (p) => (["sin", "cos", "tan"].includes(p.name) ? ".trig" : ""),
+});
+
+/** Whether the params are a typed expression's (src/expr/error.rs: the place and the range). */
+const isExpression = (p) => typeof p?.start === "number" && typeof p?.end === "number";
+
+/**
+ * A typed expression's error: its place ("pieces[1].y, characters 3–4", as ExprError's
+ * Display) then the problem's message; null when the problem has no template.
+ */
+function expressionText(code, params) {
+  const form = EXPRESSION_FORMS[code]?.(params) ?? "";
+  const key = has(`coreError.${code}${form}`) ? `${code}${form}` : code;
+  const message = coded(key, params, {}, false);
+  if (message === null) return null;
+  const piece = params.piece ?? null;
+  const field = params.field ?? null;
+  let place;
+  if (piece !== null && field !== null) place = t("coreError.place.pieceField", { piece, field });
+  else if (piece !== null) place = t("coreError.place.piece", { piece });
+  else if (field !== null) place = t("coreError.place.field", { field });
+  else place = t("coreError.place.none");
+  if (params.end > params.start) {
+    place = t("coreError.place.range", {
+      place,
+      start: exactNumber(params.start),
+      end: exactNumber(params.end),
+    });
+  }
+  return t("coreError.place.at", { place, message });
+}
+
+/**
+ * The text of `code` with `params` in the active language, or null when there is no template
+ * or the params do not fill it. `err` is the thrown Error (for "internal"); `placed` false for
+ * a typed expression's problem alone (without its place).
+ */
+function coded(code, params = {}, err = {}, placed = true) {
   if (typeof code !== "string") return null;
+  if (placed && isExpression(params)) return expressionText(code, params);
   const key = `coreError.${code}`;
   const plural = has(`${key}.other`);
   if (!plural && !has(key)) return null;

@@ -2039,6 +2039,52 @@ export default {
   "coreError.out-buffer":
     "το out πρέπει να είναι Float64Array ή number[] με τουλάχιστον dim = {dim} αριθμούς, δόθηκε {got}",
   "coreError.internal": "εσωτερικό σφάλμα της βιβλιοθήκης καμπυλών: {message}",
+  "coreError.place.pieceField": "pieces[{piece}].{field}",
+  "coreError.place.piece": "pieces[{piece}]",
+  "coreError.place.field": "{field}",
+  "coreError.place.none": "έκφραση",
+  "coreError.place.range": "{place}, χαρακτήρες {start}–{end}",
+  "coreError.place.at": "{place}: {message}",
+  "coreError.expression-empty": "δεν γράφτηκε τίποτα· γράψτε μια έκφραση του t, όπως cos(t)",
+  "coreError.expression-too-long": "η έκφραση έχει {length} χαρακτήρες· επιτρέπονται το πολύ {max}",
+  "coreError.expression-too-deep":
+    "οι παρενθέσεις, οι δυνάμεις και οι συναρτήσεις είναι φωλιασμένες σε βάθος μεγαλύτερο από {max}",
+  "coreError.expression-too-large":
+    "η έκφραση έχει περισσότερους από {max} αριθμούς, ονόματα και πράξεις",
+  "coreError.unexpected-character":
+    "το «{character}» δεν ανήκει στη γλώσσα· χρησιμοποιήστε αριθμούς, t, + − * / ^ και παρενθέσεις",
+  "coreError.unexpected-character.comma":
+    "το «,» δεν χρησιμοποιείται: γράψτε τους δεκαδικούς με τελεία (2.5)",
+  "coreError.unexpected-character.bar": "το «|» δεν χρησιμοποιείται: γράψτε abs(t)",
+  "coreError.expected-operand": "χρειάζεται αριθμός, όνομα ή «(» πριν από το «{found}»",
+  "coreError.expected-operand.end": "η έκφραση τελειώνει εκεί όπου χρειάζεται αριθμός, όνομα ή «(»",
+  "coreError.missing-operator": "λείπει ένας τελεστής πριν από το «{found}» (γράψτε * ή + ανάμεσα)",
+  "coreError.unclosed-parenthesis": "αυτή η «(» δεν κλείνει ποτέ· προσθέστε «)»",
+  "coreError.unmatched-parenthesis": "αυτή η «)» δεν έχει «(» πριν από αυτήν",
+  "coreError.unknown-name":
+    "άγνωστο όνομα «{name}»· χρησιμοποιήστε t, pi, e, μια συνάρτηση όπως sin(t) ή μια παράμετρο",
+  "coreError.function-needs-parentheses": "η {name} θέλει παρενθέσεις: γράψτε {name}(t)",
+  "coreError.function-power":
+    "το {name}^ θέλει έναν ακέραιο ≥ 1 πριν από τις παρενθέσεις: το {name}^2(t) σημαίνει ({name}(t))^2",
+  "coreError.function-power.trig":
+    "το {name}^ θέλει έναν ακέραιο ≥ 1 (sin^2(t))· η αντίστροφη συνάρτηση είναι η a{name}(t)",
+  "coreError.ambiguous-division": "το «{text}» είναι διφορούμενο: γράψτε {product} ή {quotient}",
+  "coreError.number-after-name": "αριθμός μετά από όνομα: γράψτε {number}{name} ή {name}^{number}",
+  "coreError.invalid-number": "το «{text}» δεν είναι αριθμός",
+  "coreError.invalid-parameter-name":
+    "το «{name}» δεν μπορεί να είναι παράμετρος: χρησιμοποιήστε ένα γράμμα εκτός από t και e (a, b, ω) ή ένα γράμμα με δείκτη (a_1)",
+  "coreError.unknown-parameter": "η καμπύλη δεν έχει παράμετρο «{name}»",
+  "coreError.not-finite-value": "η τιμή είναι {value}· πρέπει να είναι πεπερασμένος αριθμός",
+  "coreError.empty-piece-interval": "το διάστημα [{from}; {to}] είναι κενό· χρειάζεται from < to",
+  "coreError.pieces-do-not-join":
+    "αρχίζει στο {from}, ενώ το προηγούμενο τμήμα τελειώνει στο {previous}· τα τμήματα συνδέονται στο t",
+  "coreError.missing-field":
+    "αυτό το πεδίο λείπει· κάθε τμήμα χρειάζεται x, y, from και to (και z σε όλα τα τμήματα ή σε κανένα)",
+  "coreError.piece-count": "μια καμπύλη χρειάζεται από 1 έως {max} τμήματα, δόθηκαν {count}",
+  "coreError.not-polynomial":
+    "αυτό το τμήμα δεν είναι πολυώνυμο του t, οπότε δεν έχει μορφή Bézier",
+  "coreError.bound-uses-t":
+    "ένα άκρο είναι αριθμός και δεν μπορεί να εξαρτάται από το t· γράψτε το με αριθμούς, pi, e και παραμέτρους",
   "coreError.subject.adaptive-depth":
     "βάθος προσαρμοστικής υποδιαίρεσης (η ανοχή είναι κοντά στη στρογγυλοποίηση)",
   "coreError.subject.adaptive-vertices": "κορυφές προσαρμοστικού πλέγματος",

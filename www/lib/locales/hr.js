@@ -2023,6 +2023,50 @@ export default {
   "coreError.out-buffer":
     "out mora biti Float64Array ili number[] s barem dim = {dim} brojeva, dobiveno {got}",
   "coreError.internal": "unutarnja pogreška biblioteke krivulja: {message}",
+  "coreError.place.pieceField": "pieces[{piece}].{field}",
+  "coreError.place.piece": "pieces[{piece}]",
+  "coreError.place.field": "{field}",
+  "coreError.place.none": "izraz",
+  "coreError.place.range": "{place}, znakovi {start}–{end}",
+  "coreError.place.at": "{place}: {message}",
+  "coreError.expression-empty": "ništa nije upisano; upišite izraz u t, na primjer cos(t)",
+  "coreError.expression-too-long": "izraz ima {length} znakova; dopušteno je najviše {max}",
+  "coreError.expression-too-deep":
+    "zagrade, potencije i funkcije ugniježđene su dublje od {max} razina",
+  "coreError.expression-too-large": "izraz ima više od {max} brojeva, imena i operacija",
+  "coreError.unexpected-character":
+    "„{character}” nije dio jezika; koristite brojeve, t, + − * / ^ i zagrade",
+  "coreError.unexpected-character.comma":
+    "„,” se ne koristi: decimalne brojeve pišite s točkom (2.5)",
+  "coreError.unexpected-character.bar": "„|” se ne koristi: pišite abs(t)",
+  "coreError.expected-operand": "prije „{found}” potreban je broj, ime ili „(”",
+  "coreError.expected-operand.end": "izraz završava ondje gdje je potreban broj, ime ili „(”",
+  "coreError.missing-operator": "nedostaje operator prije „{found}” (napišite * ili + između)",
+  "coreError.unclosed-parenthesis": "ova „(” nikad se ne zatvara; dodajte „)”",
+  "coreError.unmatched-parenthesis": "ova „)” nema „(” prije sebe",
+  "coreError.unknown-name":
+    "nepoznato ime „{name}”; koristite t, pi, e, funkciju poput sin(t) ili parametar",
+  "coreError.function-needs-parentheses": "{name} treba zagrade: napišite {name}(t)",
+  "coreError.function-power":
+    "{name}^ treba prirodni broj ≥ 1 prije zagrada: {name}^2(t) znači ({name}(t))^2",
+  "coreError.function-power.trig":
+    "{name}^ treba prirodni broj ≥ 1 (sin^2(t)); inverzna funkcija je a{name}(t)",
+  "coreError.ambiguous-division": "„{text}” je dvosmisleno: napišite {product} ili {quotient}",
+  "coreError.number-after-name": "broj iza imena: napišite {number}{name} ili {name}^{number}",
+  "coreError.invalid-number": "„{text}” nije broj",
+  "coreError.invalid-parameter-name":
+    "„{name}” ne može biti parametar: koristite jedno slovo osim t i e (a, b, ω) ili slovo s indeksom (a_1)",
+  "coreError.unknown-parameter": "krivulja nema parametar „{name}”",
+  "coreError.not-finite-value": "vrijednost je {value}; mora biti konačan broj",
+  "coreError.empty-piece-interval": "interval [{from}; {to}] je prazan; potrebno je from < to",
+  "coreError.pieces-do-not-join":
+    "počinje u {from}, a prethodni segment završava u {previous}; segmenti se spajaju po t",
+  "coreError.missing-field":
+    "ovo polje nedostaje; svaki segment treba x, y, from i to (i z na svim segmentima ili ni na jednom)",
+  "coreError.piece-count": "krivulja treba od 1 do {max} segmenata, zadano je {count}",
+  "coreError.not-polynomial": "ovaj segment nije polinom u t, pa nema Bézierov oblik",
+  "coreError.bound-uses-t":
+    "granica je broj i ne može ovisiti o t; napišite je brojevima, s pi, e i parametrima",
   "coreError.subject.adaptive-depth":
     "dubina adaptivne podjele (tolerancija je blizu pogreške zaokruživanja)",
   "coreError.subject.adaptive-vertices": "vrhovi adaptivne mreže",

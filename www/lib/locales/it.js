@@ -2038,6 +2038,52 @@ export default {
   "coreError.out-buffer":
     "out deve essere un Float64Array o number[] di almeno dim = {dim} numeri, ricevuto {got}",
   "coreError.internal": "errore interno della libreria di curve: {message}",
+  "coreError.place.pieceField": "pieces[{piece}].{field}",
+  "coreError.place.piece": "pieces[{piece}]",
+  "coreError.place.field": "{field}",
+  "coreError.place.none": "espressione",
+  "coreError.place.range": "{place}, caratteri {start}–{end}",
+  "coreError.place.at": "{place}: {message}",
+  "coreError.expression-empty": "non è scritto nulla; scrivete un'espressione in t, come cos(t)",
+  "coreError.expression-too-long":
+    "l'espressione ha {length} caratteri; ne sono ammessi al massimo {max}",
+  "coreError.expression-too-deep":
+    "parentesi, potenze e funzioni sono annidate più di {max} livelli",
+  "coreError.expression-too-large": "l'espressione ha più di {max} numeri, nomi e operazioni",
+  "coreError.unexpected-character":
+    "“{character}” non fa parte del linguaggio; usate numeri, t, + − * / ^ e parentesi",
+  "coreError.unexpected-character.comma": "“,” non si usa: scrivete i decimali con il punto (2.5)",
+  "coreError.unexpected-character.bar": "“|” non si usa: scrivete abs(t)",
+  "coreError.expected-operand": "prima di “{found}” serve un numero, un nome o “(”",
+  "coreError.expected-operand.end": "l'espressione finisce dove serve un numero, un nome o “(”",
+  "coreError.missing-operator": "manca un operatore prima di “{found}” (scrivete * o + fra i due)",
+  "coreError.unclosed-parenthesis": "questa “(” non viene mai chiusa; aggiungete “)”",
+  "coreError.unmatched-parenthesis": "questa “)” non ha una “(” prima di sé",
+  "coreError.unknown-name":
+    "nome sconosciuto “{name}”; usate t, pi, e, una funzione come sin(t) o un parametro",
+  "coreError.function-needs-parentheses": "{name} vuole le parentesi: scrivete {name}(t)",
+  "coreError.function-power":
+    "{name}^ vuole un intero ≥ 1 prima delle parentesi: {name}^2(t) significa ({name}(t))^2",
+  "coreError.function-power.trig":
+    "{name}^ vuole un intero ≥ 1 (sin^2(t)); la funzione inversa è a{name}(t)",
+  "coreError.ambiguous-division": "“{text}” è ambiguo: scrivete {product} oppure {quotient}",
+  "coreError.number-after-name":
+    "un numero dopo un nome: scrivete {number}{name} oppure {name}^{number}",
+  "coreError.invalid-number": "“{text}” non è un numero",
+  "coreError.invalid-parameter-name":
+    "“{name}” non può essere un parametro: usate una lettera diversa da t ed e (a, b, ω) o una lettera con pedice (a_1)",
+  "coreError.unknown-parameter": "la curva non ha il parametro “{name}”",
+  "coreError.not-finite-value": "il valore è {value}; deve essere un numero finito",
+  "coreError.empty-piece-interval": "l'intervallo [{from}; {to}] è vuoto; serve from < to",
+  "coreError.pieces-do-not-join":
+    "inizia in {from} ma il pezzo precedente finisce in {previous}; i pezzi si raccordano in t",
+  "coreError.missing-field":
+    "questo campo manca; ogni pezzo vuole x, y, from e to (e z su tutti i pezzi o su nessuno)",
+  "coreError.piece-count": "una curva vuole da 1 a {max} pezzi, ricevuti {count}",
+  "coreError.not-polynomial":
+    "questo pezzo non è un polinomio in t, quindi non ha una forma di Bézier",
+  "coreError.bound-uses-t":
+    "un estremo è un numero e non può dipendere da t; scrivetelo con numeri, pi, e e parametri",
   "coreError.subject.adaptive-depth":
     "profondità della suddivisione adattiva (la tolleranza è vicina all'arrotondamento)",
   "coreError.subject.adaptive-vertices": "vertici della mesh adattiva",

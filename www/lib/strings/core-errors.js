@@ -154,6 +154,56 @@ export const CORE_ERRORS = {
   "coreError.internal": "{message}",
 
   // The subjects (src/error/phrase.rs PHRASES), sorted by key.
+  // Typed expressions (src/expr/error.rs): the place ("pieces[1].y, characters 3–4"), then
+  // one message per problem code; `.comma`, `.bar`, `.end`, `.trig` are the forms
+  // lib/core-errors.js picks by the params (EXPRESSION_FORMS).
+  "coreError.place.pieceField": "pieces[{piece}].{field}",
+  "coreError.place.piece": "pieces[{piece}]",
+  "coreError.place.field": "{field}",
+  "coreError.place.none": "expression",
+  "coreError.place.range": "{place}, characters {start}–{end}",
+  "coreError.place.at": "{place}: {message}",
+  "coreError.expression-empty": "nothing is typed; write an expression in t, such as cos(t)",
+  "coreError.expression-too-long":
+    "the expression has {length} characters; at most {max} are allowed",
+  "coreError.expression-too-deep":
+    "parentheses, powers and functions are nested more than {max} deep",
+  "coreError.expression-too-large":
+    "the expression has more than {max} numbers, names and operations",
+  "coreError.unexpected-character":
+    '"{character}" is not part of the language; use numbers, t, + − * / ^ and parentheses',
+  "coreError.unexpected-character.comma": '"," is not used: write decimals with a point (2.5)',
+  "coreError.unexpected-character.bar": '"|" is not used: write abs(t)',
+  "coreError.expected-operand": 'a number, a name or "(" is needed before "{found}"',
+  "coreError.expected-operand.end": 'the expression ends where a number, a name or "(" is needed',
+  "coreError.missing-operator":
+    'an operator is missing before "{found}" (write * or + between them)',
+  "coreError.unclosed-parenthesis": 'this "(" is never closed; add ")"',
+  "coreError.unmatched-parenthesis": 'this ")" has no "(" before it',
+  "coreError.unknown-name":
+    'unknown name "{name}"; use t, pi, e, a function such as sin(t), or a parameter',
+  "coreError.function-needs-parentheses": "{name} needs parentheses: write {name}(t)",
+  "coreError.function-power":
+    "{name}^ needs a whole number ≥ 1 before the parentheses: {name}^2(t) means ({name}(t))^2",
+  "coreError.function-power.trig":
+    "{name}^ needs a whole number ≥ 1 (sin^2(t)); the inverse is a{name}(t)",
+  "coreError.ambiguous-division": '"{text}" is ambiguous: write {product} or {quotient}',
+  "coreError.number-after-name": "a number after a name: write {number}{name} or {name}^{number}",
+  "coreError.invalid-number": '"{text}" is not a number',
+  "coreError.invalid-parameter-name":
+    '"{name}" cannot be a parameter: use one letter other than t and e (a, b, ω) or a letter with a subscript (a_1)',
+  "coreError.unknown-parameter": 'the curve has no parameter "{name}"',
+  "coreError.not-finite-value": "the value is {value}; it must be a finite number",
+  "coreError.empty-piece-interval": "the interval [{from}, {to}] is empty; it needs from < to",
+  "coreError.pieces-do-not-join":
+    "starts at {from} but the previous piece ends at {previous}; pieces join in t",
+  "coreError.not-polynomial": "this piece is not a polynomial in t, so it has no Bézier form",
+  "coreError.bound-uses-t":
+    "a bound is a number and cannot depend on t; write it with numbers, pi, e and parameters",
+  "coreError.missing-field":
+    "this field is missing; every piece needs x, y, from and to (and z on every piece or none)",
+  "coreError.piece-count": "a curve needs 1 to {max} pieces, got {count}",
+
   "coreError.subject.adaptive-depth": "adaptive subdivision depth (the tolerance is near rounding)",
   "coreError.subject.adaptive-vertices": "adaptive mesh vertices",
   "coreError.subject.adaptive-vertices-leaves": "adaptive mesh vertices (at least one per leaf)",
