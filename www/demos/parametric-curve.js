@@ -35,7 +35,7 @@ import {
 import { HUES, RADIUS, SECOND_CURVE, themed } from "../lib/theme.js";
 import { locale, t } from "../lib/strings.js";
 import { drawCaption } from "../lib/draw.js";
-import { HIT_RADIUS_TOUCH, placeLabel, placeLabelAtTip } from "../lib/handles.js";
+import { HIT_RADIUS_TOUCH, placeLabel, placeLabelAtTip, placeLabelFrom } from "../lib/handles.js";
 import { buildHash } from "../lib/state.js";
 import { withLanguage } from "../lib/language.js";
 import { errorText } from "../lib/core-errors.js";
@@ -496,7 +496,11 @@ function bezierList(s, d) {
     items.push(`P${subscript(i)} = ${pointText(coords)}`);
   }
   const [a, b] = d.domain;
-  return t("parametricCurve.bezierPoints", { a: fmt(a), b: fmt(b), list: items.join(", ") });
+  return t("parametricCurve.bezierPoints", {
+    a: shortNumber(a),
+    b: shortNumber(b),
+    list: items.join(", "),
+  });
 }
 
 /** The readout under the speed: the circle's radius, or why there is none. */
@@ -770,22 +774,23 @@ function drawBezierForm(r, v, d) {
   penOnCanvas(r, v);
   flatRunsPath(r, v, form.points, form.dim, m);
   r.paint(r.theme.polygon);
+  // Labels away from the polygon's middle (the curve runs inside it).
+  let cx = 0;
+  let cy = 0;
   for (let i = 0; i < form.count; i++) {
     const k = i * form.dim;
-    const x = form.points[k];
-    const y = form.points[k + 1];
     const z = zAt(form.points, k, form.dim);
-    const px = v.sx(pu(m, x, y, z));
-    const py = v.sy(pw(m, x, y, z));
-    r.point(px, py, bezierPoint(r.theme));
-    r.text(
-      bezierLabel(i),
-      px + 6 * r.scale,
-      py - 6 * r.scale,
-      r.theme.labelSmall,
-      "left",
-      "bottom",
-    );
+    cx += v.sx(pu(m, form.points[k], form.points[k + 1], z)) / form.count;
+    cy += v.sy(pw(m, form.points[k], form.points[k + 1], z)) / form.count;
+  }
+  const style = bezierPoint(r.theme);
+  for (let i = 0; i < form.count; i++) {
+    const k = i * form.dim;
+    const z = zAt(form.points, k, form.dim);
+    const px = v.sx(pu(m, form.points[k], form.points[k + 1], z));
+    const py = v.sy(pw(m, form.points[k], form.points[k + 1], z));
+    r.point(px, py, style);
+    placeLabelFrom(r, bezierLabel(i), px, py, cx, cy, r.theme.labelSmall, style.radius * r.scale);
   }
 }
 const bezierLabels = [];
