@@ -367,8 +367,13 @@ function valuesAt(curve, tt, whole) {
   const finite = (v) => v?.every(Number.isFinite);
   const defined = finite(point) && finite(d1);
   const speed = defined ? Math.hypot(...d1) : Number.NaN;
-  const kappa = frame && Number.isFinite(frame.curvature) ? frame.curvature : Number.NaN;
   const cusp = defined && !(speed > 1e-12 * Math.max(1, whole.size));
+  // At a cusp (P′ = 0) the curvature grows without bound: ∞, not the rounding's number.
+  const kappa = cusp
+    ? Number.POSITIVE_INFINITY
+    : frame && Number.isFinite(frame.curvature)
+      ? frame.curvature
+      : Number.NaN;
   const straight =
     Number.isFinite(kappa) && !(Math.abs(kappa) * STRAIGHT_RADIUS_FACTOR * whole.size > 1);
   const kappaMachine = Number.isFinite(kappa) ? fmtMachine(kappa) : "∞";

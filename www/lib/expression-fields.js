@@ -67,7 +67,10 @@ export function formulaFields({ legend, rows, help = null, check, apply }) {
         if (!name) return ui.status(errorText(err), "error");
         const text = boxes[name].value;
         const start = Math.max(0, Math.min(Number(p.start) || 0, text.length));
-        const end = Math.max(start, Math.min(Number(p.end) || start, text.length));
+        let end = Math.max(start, Math.min(Number(p.end) || start, text.length));
+        // An empty range at the start of a text is about the field as a whole (an interval
+        // [1, 0]): the whole text is marked.
+        if (start === 0 && end === 0) end = text.length;
         const mark = el("u", { dataset: { start: String(start), end: String(end) } });
         // An empty range (a missing part at the end) marks the place with a space.
         mark.textContent = text.slice(start, end) || "\u00a0";
