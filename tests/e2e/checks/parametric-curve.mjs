@@ -216,14 +216,20 @@ export default [
     },
   ],
   [
-    "Croatian: the panel speaks Croatian and a refusal is explained under the box",
+    "Croatian: the panel speaks Croatian and a refusal is explained in Croatian under the box",
     async (page, h, base, { assert, openDemo, settle }) => {
+      const refusal = async () => {
+        await typeInto(page, '[data-control="x"] input', "cos(t");
+        await settle(page);
+        assert(await page.locator('[data-error="x"]').isVisible(), "the note shows");
+        return page.locator('[data-error="x"] span').textContent();
+      };
+      const english = await refusal();
       h = await openDemo(page, base, "parametric-curve", "", "hr");
       const legend = await page.locator(".sl-panel legend").first().textContent();
       assert(legend !== "Curve P(t)", `legend: ${legend}`);
-      await typeInto(page, '[data-control="x"] input', "cos(t");
-      await settle(page);
-      assert(await page.locator('[data-error="x"]').isVisible(), "the note shows");
+      const croatian = await refusal();
+      assert(croatian.length > 8 && croatian !== english, `hr “${croatian}”, en “${english}”`);
     },
   ],
 ];
