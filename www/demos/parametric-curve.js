@@ -244,11 +244,22 @@ function curveOf(sl, s) {
 /** The curve in wasm; a parameter's slider sets it in place. */
 export const derive = {
   from: TEXTS,
-  build(s, sl) {
+  build(s, sl, { first = false } = {}) {
     const { curve, params } = curveOf(sl, s);
     s.params = params;
-    const [a, b] = curve.domain();
-    s.t = Math.min(Math.max(s.t, a), b);
+    const domain = curve.domain();
+    s.t = Math.min(Math.max(s.t, domain[0]), domain[1]);
+    // A page or embed that gives another curve but no O: the hodograph goes beside that curve.
+    const [o] = defaultState.hodograph;
+    if (
+      first &&
+      s.hodograph[0][0] === o[0] &&
+      s.hodograph[0][1] === o[1] &&
+      TEXTS.some((name) => s[name] !== defaultState[name])
+    ) {
+      const proj = projectionOf(s.azimuth, s.elevation, curve.dim);
+      s.hodograph = [originBeside(wholeCurve({ curve, proj, domain }))];
+    }
     return { curve };
   },
   inPlace: {
@@ -561,7 +572,7 @@ export const controls = [
         d.at.defined
           ? t("parametricCurve.speed", { speed: fmt(d.at.speed) })
           : t("parametricCurve.undefined", { t: fmt(s.t) }),
-      { kind: "readout", data: (s, d) => ({ speed: fmtMachine(d.at.speed) }) },
+      { data: (s, d) => ({ speed: fmtMachine(d.at.speed) }) },
     ),
     readout(
       "curvature",
@@ -1008,16 +1019,16 @@ export function formula(s, d) {
     lines.push(`${t0}:\\quad P(t_0)\\ \\text{${t("parametricCurve.formula.undefined")}}`);
     return lines;
   }
+  // Three short lines rather than one long one (a narrow embed shrinks a line only so far).
   lines.push(
-    guarded(
-      `${t0}:\\quad P(t_0) = ${pointTex(at.point)},\\quad P'(t_0) = ${pointTex(at.d1)},\\quad P''(t_0) = ${pointTex(at.d2)}`,
-    ),
+    guarded(`${t0}:\\quad P(t_0) = ${pointTex(at.point)},\\quad P'(t_0) = ${pointTex(at.d1)}`),
   );
+  lines.push(guarded(`P''(t_0) = ${pointTex(at.d2)},\\quad |P'(t_0)| = ${fmtTex(at.speed)}`));
   const kappaRule =
     dim === 3 ? "\\frac{|P' \\times P''|}{|P'|^3}" : "\\frac{x'y'' - y'x''}{|P'|^3}";
   const kappa = Number.isFinite(at.kappa) ? at.kappaTex : "\\infty";
   const tau = dim === 3 && Number.isFinite(at.tau) ? `,\\quad \\tau(t_0) = ${fmtTex(at.tau)}` : "";
-  lines.push(`|P'(t_0)| = ${fmtTex(at.speed)},\\quad \\kappa(t_0) = ${kappaRule} = ${kappa}${tau}`);
+  lines.push(`\\kappa(t_0) = ${kappaRule} = ${kappa}${tau}`);
   return lines;
 }
 
