@@ -42,6 +42,7 @@ import { errorText } from "../lib/core-errors.js";
 import { BEZIER_POINTS } from "../lib/point-list.js";
 import { formulaFields, infoLine, parameterSliders, shownIf } from "../lib/expression-fields.js";
 import {
+  CLIP_MARGIN_PX,
   clippedArrow,
   depthOf,
   depthRunsPath,
@@ -903,7 +904,14 @@ export function draw(r, v, s, d) {
   drawAxes(r, v, d);
   drawHodograph(r, v, s, d);
   drawBezierForm(r, v, d);
-  if (d.at.defined) drawCircle(r, v, d);
+  const at = d.at;
+  const p = at.defined ? at.point : null;
+  const px = p ? v.sx(pu(m, p[0], p[1], zAt(p, 0, dim))) : Number.NaN;
+  const py = p ? v.sy(pw(m, p[0], p[1], zAt(p, 0, dim))) : Number.NaN;
+  // P(t) off the canvas (near a pole): nothing is drawn at it (the panel has its numbers).
+  const slack = CLIP_MARGIN_PX * r.scale;
+  const shown = px > -slack && px < r.width + slack && py > -slack && py < r.height + slack;
+  if (at.defined && shown) drawCircle(r, v, d);
   const plot = plotOf(r, v, d);
   if (plot && three) {
     // The far half (by depth) faded, then the near half: which loop is in front reads at once.
@@ -923,15 +931,10 @@ export function draw(r, v, s, d) {
     r.paint(theme.curve);
   }
   d.handles.draw(r, v);
-  const at = d.at;
   const margin = TEXT_MARGIN_PX * r.scale;
   const width = r.width - 2 * margin;
   let caption = plot && !plot.complete ? t("parametricCurve.incomplete") : null;
-  if (at.defined) {
-    const p = at.point;
-    const pz = zAt(p, 0, dim);
-    const px = v.sx(pu(m, p[0], p[1], pz));
-    const py = v.sy(pw(m, p[0], p[1], pz));
+  if (at.defined && shown) {
     if (three) {
       drawFrame(r, v, d, px, py);
     } else {
@@ -978,7 +981,7 @@ export function draw(r, v, s, d) {
       theme.labelPoint,
     );
     if (at.cusp) caption ??= t("parametricCurve.cusp");
-  } else {
+  } else if (!at.defined) {
     caption ??= t("parametricCurve.undefined", { t: fmt(s.t) });
   }
   const footer = three ? t("parametricCurve.frameCaption") : d.whole.scaleCaption;

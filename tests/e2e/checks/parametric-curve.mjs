@@ -10,6 +10,12 @@
 // - the notes' polynomial x = 6.5t⁵ − 7.2t³ + 3t² − 2.1t − 5, y = t on [0, 1]: Bézier control
 //   values of x −5, −271/50, −277/50, −152/25, −194/25, −24/5 (the notes), of y i/5.
 
+import { readFileSync } from "node:fs";
+import { compileTikz, hasPdflatex, inspectTikz } from "../tikz-check.mjs";
+
+/** TeX's largest dimension, 16383.99 pt, in CSS px (the export writes 1 px = 0.75 pt). */
+const TEX_MAX_PX = 16383 / 0.75;
+
 /** The state in the page's link. */
 async function linkState(page) {
   const s = new URLSearchParams(new URL(page.url()).hash.slice(1)).get("s");
@@ -170,6 +176,33 @@ export default [
       await h.drag({ x: box.x + 20, y: box.y + 20 }, 50, 0);
       const after = (await linkState(page)).azimuth;
       assert(after !== before, `azimuth ${before} → ${after}`);
+    },
+  ],
+  [
+    "the TikZ export of a pole (tan t, zoomed out) and of the helix compiles: everything is clipped",
+    async (page, h, _base, { assert, equal, settle }) => {
+      for (const name of ["tan", "helix"]) {
+        await preset(page, name, settle);
+        // Near the pole P(t) and P′(t) are ~10⁴ and ~10⁸ units away; zoomed out, the
+        // branches and the osculating circle run far off the canvas.
+        if (name === "tan") await typeInto(page, '[data-control="t"] .sl-value', "1.5707");
+        const box = await h.canvas().boundingBox();
+        await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+        for (let k = 0; k < 4; k++) await page.mouse.wheel(0, 400);
+        await settle(page);
+        const file = await h.download("export-tikz");
+        const tex = readFileSync(await file.path(), "utf8");
+        const found = inspectTikz(tex);
+        equal(found.problems.join("; "), "", `${name}: problems`);
+        const far = [...tex.matchAll(/\((-?[\d.]+),\s*(-?[\d.]+)\)/g)].some(
+          (m) => Math.abs(Number(m[1])) > TEX_MAX_PX || Math.abs(Number(m[2])) > TEX_MAX_PX,
+        );
+        assert(!far, `${name}: a coordinate beyond TeX's 16383 pt`);
+        if (hasPdflatex) {
+          const compiled = compileTikz(tex);
+          assert(compiled.ok, `${name}: pdflatex failed:\n${compiled.log}`);
+        }
+      }
     },
   ],
   [
