@@ -705,11 +705,14 @@ function vectorArrow(r, v, d, px, py, w, s, style, text) {
 function drawAxes(r, v, d) {
   const theme = r.theme;
   r.beginPath();
+  penOnCanvas(r, v);
   if (!d.proj.three) {
-    r.moveTo(0, v.sy(0));
-    r.lineTo(r.width, v.sy(0));
-    r.moveTo(v.sx(0), 0);
-    r.lineTo(v.sx(0), r.height);
+    // Clipped: far from the origin the axes' ends would lie far off the canvas.
+    penTo(r, -r.width, v.sy(0));
+    penTo(r, 2 * r.width, v.sy(0));
+    penTo(r, Number.NaN, Number.NaN);
+    penTo(r, v.sx(0), -r.height);
+    penTo(r, v.sx(0), 2 * r.height);
     r.paint(theme.axis);
     return;
   }
@@ -718,17 +721,33 @@ function drawAxes(r, v, d) {
   const cx = v.sx(0);
   const cy = v.sy(0);
   for (let k = 0; k < 3; k++) {
-    const x = v.sx(length * m[k]);
-    const y = v.sy(length * m[3 + k]);
-    r.moveTo(cx, cy);
-    r.lineTo(x, y);
+    penTo(r, Number.NaN, Number.NaN);
+    penTo(r, cx, cy);
+    penTo(r, v.sx(length * m[k]), v.sy(length * m[3 + k]));
   }
   r.paint(theme.axis);
+  if (!onCanvas(r, cx, cy)) return;
   for (let k = 0; k < 3; k++) {
     const x = v.sx(length * m[k]);
     const y = v.sy(length * m[3 + k]);
-    placeLabelAtTip(r, AXIS_NAMES[k], cx, cy, x, y, ARROW_LABEL_GAP_PX * r.scale, theme.labelSmall);
+    if (onCanvas(r, x, y))
+      placeLabelAtTip(
+        r,
+        AXIS_NAMES[k],
+        cx,
+        cy,
+        x,
+        y,
+        ARROW_LABEL_GAP_PX * r.scale,
+        theme.labelSmall,
+      );
   }
+}
+
+/** Whether the point (x, y) CSS px lies on the canvas widened by CLIP_MARGIN_PX. */
+function onCanvas(r, x, y) {
+  const slack = CLIP_MARGIN_PX * r.scale;
+  return x > -slack && x < r.width + slack && y > -slack && y < r.height + slack;
 }
 const AXIS_NAMES = Object.freeze(["x", "y", "z"]);
 
@@ -742,21 +761,27 @@ function drawHodograph(r, v, s, d) {
   const right = v.sx(ox + hbox[2]);
   const top = v.sy(oy + hbox[3]);
   const bottom = v.sy(oy + hbox[1]);
+  // Nothing of it when its box is off the canvas (O dragged or panned away).
+  const slack = CLIP_MARGIN_PX * r.scale;
+  if (right < -slack || left > r.width + slack || bottom < -slack || top > r.height + slack) return;
   r.beginPath();
-  r.moveTo(left, v.sy(oy));
-  r.lineTo(right, v.sy(oy));
-  r.moveTo(v.sx(ox), bottom);
-  r.lineTo(v.sx(ox), top);
+  penOnCanvas(r, v);
+  penTo(r, left, v.sy(oy));
+  penTo(r, right, v.sy(oy));
+  penTo(r, Number.NaN, Number.NaN);
+  penTo(r, v.sx(ox), bottom);
+  penTo(r, v.sx(ox), top);
   r.paint(theme.helper);
-  drawCaption(
-    r,
-    t("parametricCurve.hodographCaption"),
-    left,
-    top - TEXT_MARGIN_PX * r.scale,
-    theme.labelSmall,
-    Math.max(right - left, r.width - left - TEXT_MARGIN_PX * r.scale),
-    "bottom",
-  );
+  if (onCanvas(r, left, top))
+    drawCaption(
+      r,
+      t("parametricCurve.hodographCaption"),
+      left,
+      top - TEXT_MARGIN_PX * r.scale,
+      theme.labelSmall,
+      Math.max(right - left, r.width - left - TEXT_MARGIN_PX * r.scale),
+      "bottom",
+    );
   r.beginPath();
   penStart(left, top, right, bottom, 2 * Math.hypot(right - left, bottom - top));
   flatRunsPath(r, v, hodograph, dim, m, ox, oy, lambda);
@@ -806,6 +831,7 @@ function drawBezierForm(r, v, d) {
     const z = zAt(form.points, k, form.dim);
     const px = v.sx(pu(m, form.points[k], form.points[k + 1], z));
     const py = v.sy(pw(m, form.points[k], form.points[k + 1], z));
+    if (!onCanvas(r, px, py)) continue;
     r.point(px, py, style);
     placeLabelFrom(r, bezierLabel(i), px, py, cx, cy, r.theme.labelSmall, style.radius * r.scale);
   }
@@ -909,8 +935,7 @@ export function draw(r, v, s, d) {
   const px = p ? v.sx(pu(m, p[0], p[1], zAt(p, 0, dim))) : Number.NaN;
   const py = p ? v.sy(pw(m, p[0], p[1], zAt(p, 0, dim))) : Number.NaN;
   // P(t) off the canvas (near a pole): nothing is drawn at it (the panel has its numbers).
-  const slack = CLIP_MARGIN_PX * r.scale;
-  const shown = px > -slack && px < r.width + slack && py > -slack && py < r.height + slack;
+  const shown = onCanvas(r, px, py);
   if (at.defined && shown) drawCircle(r, v, d);
   const plot = plotOf(r, v, d);
   if (plot && three) {
