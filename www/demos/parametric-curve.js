@@ -303,16 +303,18 @@ function wholeCurve(d) {
   const size = Math.max(u1 - u0, w1 - w0, 1e-9);
   const hodograph = new Float64Array(HODOGRAPH_SAMPLES * dim);
   const speeds = [];
+  const v = new Float64Array(dim);
   for (let k = 0; k < HODOGRAPH_SAMPLES; k++) {
-    const tk = a + ((b - a) * k) / (HODOGRAPH_SAMPLES - 1);
-    let v = null;
+    // The last sample exactly at b (a + (b − a) may round past it: outside the domain).
+    const tk = k === HODOGRAPH_SAMPLES - 1 ? b : a + ((b - a) * k) / (HODOGRAPH_SAMPLES - 1);
+    let ok = true;
     try {
-      v = curve.derivative(tk, 1);
+      curve.derivativeInto(tk, 1, v);
     } catch {
-      v = null;
+      ok = false;
     }
-    for (let c = 0; c < dim; c++) hodograph[k * dim + c] = v ? v[c] : Number.NaN;
-    const speed = v ? Math.hypot(...v) : Number.NaN;
+    for (let c = 0; c < dim; c++) hodograph[k * dim + c] = ok ? v[c] : Number.NaN;
+    const speed = ok ? Math.hypot(v[0], v[1], dim === 3 ? v[2] : 0) : Number.NaN;
     if (Number.isFinite(speed)) speeds.push(speed);
   }
   speeds.sort((p, q) => p - q);
