@@ -16,6 +16,13 @@ import { t } from "../lib/strings.js";
 /** All demos, in the order the gallery shows them within their section. */
 export const demos = Object.freeze(
   [
+    // Section 1 (typed parametric curves): parametric-curve.
+    {
+      id: "parametric-curve",
+      section: 1,
+      strings: "parametricCurve",
+      load: () => import("./parametric-curve.js"),
+    },
     {
       id: "de-casteljau",
       section: 2,

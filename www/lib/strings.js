@@ -27,6 +27,8 @@ import { SURFACE_INTERPOLATION } from "./strings/surface-interpolation.js";
 import { SURFACE_REVOLUTION } from "./strings/surface-revolution.js";
 import { PATCH_DE_CASTELJAU } from "./strings/patch-de-casteljau.js";
 import { PATCH_SUBDIVISION } from "./strings/patch-subdivision.js";
+// Section 1 (typed parametric curves): parametric-curve.
+import { PARAMETRIC_CURVE } from "./strings/parametric-curve.js";
 // The curve library's errors by code (lib/core-errors.js writes them).
 import { CORE_ERRORS } from "./strings/core-errors.js";
 // Section 1: the typed piecewise curve.
@@ -1268,6 +1270,8 @@ const EN = {
   ...INTERPOLATE_APPROXIMATE,
   ...CORE_ERRORS,
   ...PIECEWISE,
+  // Section 1: parametric-curve.
+  ...PARAMETRIC_CURVE,
 };
 
 const locales = { en: EN };

@@ -2246,4 +2246,87 @@ export default {
   "exercise.piecewise-c1.hint":
     "Στο t = 1 το κομμάτι 1 βρίσκεται στο x = 0, y = 1 με ταχύτητα x′ = −2, y′ = 1. Κρατήστε y = t και αναζητήστε x = t² + bt + c με x(1) = 0 και x′(1) = 2 + b = −2.",
   "exercise.piecewise-c1.notYet": "Όχι ακόμη. Ο χαρακτηρισμός του πυρήνα στο t = 1: {detail}.",
+  // ---- parametric-curve (section 1) ----
+  "parametricCurve.title": "Παραμετρικές καμπύλες από τύπους",
+  "parametricCurve.summary":
+    "Γράψτε x(t), y(t) (και z(t)) και δείτε ένα σημείο να κινείται πάνω στην P(t) με την ταχύτητα, την επιτάχυνση, την καμπυλότητα και τον εγγύτατο κύκλο του, με τον οδογράφο δίπλα.",
+  "parametricCurve.aria":
+    "Παραμετρική καμπύλη x(t) = {x}, y(t) = {y} για t από {a} έως {b}· t = {t}· P(t) = ({px}; {py})· μέτρο ταχύτητας {speed}· καμπυλότητα κ = {kappa}· ο οδογράφος σχεδιάζεται δίπλα",
+  "parametricCurve.aria3d":
+    "Χωρική καμπύλη x(t) = {x}, y(t) = {y}, z(t) = {z} για t από {a} έως {b}· t = {t}· P(t) = ({px}; {py}; {pz})· μέτρο ταχύτητας {speed}· καμπυλότητα κ = {kappa}· στρέψη τ = {tau}· το τρίεδρο Frenet T, N, B σχεδιάζεται στο P(t)",
+  "parametricCurve.ariaUndefined":
+    "Παραμετρική καμπύλη x(t) = {x}, y(t) = {y} για t από {a} έως {b}· στο t = {t} η καμπύλη δεν ορίζεται",
+  "parametricCurve.whatYouSee":
+    "Μια καμπύλη είναι ένα σημείο που κινείται: P(t) = (x(t), y(t)) για t στο [a, b] (ενότητα 1 της ύλης· ο κύκλος x = cos t, y = sin t στο [0, 2π] των σημειώσεων). Το κόκκινο-πορτοκαλί βέλος είναι η ταχύτητα P′(t), το μωβ η επιτάχυνση P″(t)· ο πορτοκαλί κύκλος είναι ο εγγύτατος κύκλος ακτίνας 1/|κ|. Δεξιά ο οδογράφος συγκεντρώνει όλες τις ταχύτητες P′(t), σχεδιασμένες από το σημείο O. Κάθε τύπος αναλύεται και παραγωγίζεται από τη βιβλιοθήκη καμπυλών· κάθε όνομα εκτός από το t γίνεται ρυθμιστικό.",
+  "parametricCurve.try1":
+    "Πατήστε «Αναπαραγωγή» και επιλέξτε «Κυκλοειδής»: σε κάθε ακίδα το μέτρο της ταχύτητας γίνεται 0 και το βέλος της ταχύτητας χάνεται, ενώ ο οδογράφος περνά από το O.",
+  "parametricCurve.try2":
+    "Επιλέξτε «Έλλειψη» και μετακινήστε τα ρυθμιστικά a και b: ο εγγύτατος κύκλος είναι μικρότερος στα άκρα του μεγάλου άξονα.",
+  "parametricCurve.try3":
+    "Επιλέξτε «y = tan t»: η γραφική παράσταση διακόπτεται στους πόλους t = ±π/2 αντί να ενώνει τους κλάδους.",
+  "parametricCurve.try4":
+    "Επιλέξτε «Το πολυώνυμο των σημειώσεων» και τσεκάρετε «Εμφάνιση της μορφής Bézier»: τα σημεία ελέγχου είναι ακριβή κλάσματα όπως −271/50.",
+  "parametricCurve.try5":
+    "Γράψτε sin(t) στο z(t): η καμπύλη βγαίνει από το επίπεδο και εμφανίζεται το τρίεδρο Frenet T, N, B στο P(t). Σύρετε το σχήμα για να το περιστρέψετε.",
+  "parametricCurve.control.curve": "Καμπύλη P(t)",
+  "parametricCurve.control.x": "x(t) =",
+  "parametricCurve.control.y": "y(t) =",
+  "parametricCurve.control.z": "z(t) = (κενό: επίπεδη καμπύλη)",
+  "parametricCurve.control.from": "t από",
+  "parametricCurve.control.to": "έως",
+  "parametricCurve.control.help":
+    "Τύποι στο t όπως 2cos(t), t^2 - 1, e^(-t/5)sin(3t)· το π γράφεται pi. Κάθε άλλο γράμμα (a, b, ω, a_1) είναι παράμετρος με ρυθμιστικό.",
+  "parametricCurve.control.params": "Παράμετροι",
+  "parametricCurve.control.param.input": "τιμή της παραμέτρου {name}",
+  "parametricCurve.control.t": "t",
+  "parametricCurve.control.t.input": "τιμή της παραμέτρου t",
+  "parametricCurve.control.examples": "Παραδείγματα",
+  "parametricCurve.preset.circle": "Κύκλος",
+  "parametricCurve.preset.ellipse": "Έλλειψη",
+  "parametricCurve.preset.lissajous": "Lissajous",
+  "parametricCurve.preset.cycloid": "Κυκλοειδής",
+  "parametricCurve.preset.cardioid": "Καρδιοειδής",
+  "parametricCurve.preset.astroid": "Αστροειδής",
+  "parametricCurve.preset.spiral": "Σπείρα",
+  "parametricCurve.preset.helix": "Έλικα (3Δ)",
+  "parametricCurve.preset.tan": "y = tan t",
+  "parametricCurve.preset.polynomial": "Το πολυώνυμο των σημειώσεων",
+  "parametricCurve.control.bezier": "Εμφάνιση της μορφής Bézier (πολυωνυμική καμπύλη)",
+  "parametricCurve.bezierPoints": "Σημεία ελέγχου στο [{a}, {b}], ακριβώς: {list}",
+  "parametricCurve.bezierLink": "Άνοιγμα αυτών των σημείων ελέγχου στον αλγόριθμο de Casteljau",
+  "parametricCurve.bezierLinkOff":
+    "Η επίδειξη de Casteljau δέχεται μόνο επίπεδες καμπύλες βαθμού 1 έως 10.",
+  "parametricCurve.control.view": "Όψη της χωρικής καμπύλης",
+  "parametricCurve.control.azimuth": "Αζιμούθιο (μοίρες)",
+  "parametricCurve.control.azimuth.input": "αζιμούθιο της όψης σε μοίρες",
+  "parametricCurve.control.elevation": "Ανύψωση (μοίρες)",
+  "parametricCurve.control.elevation.input": "γωνία ανύψωσης της όψης σε μοίρες",
+  "parametricCurve.atT": "Στο t",
+  "parametricCurve.speed": "Μέτρο ταχύτητας |P′(t)| = {speed}",
+  "parametricCurve.curvature": "Καμπυλότητα κ(t) = {kappa}",
+  "parametricCurve.radius": "Εγγύτατος κύκλος ακτίνας {r}",
+  "parametricCurve.torsion": "Στρέψη τ(t) = {tau}",
+  "parametricCurve.undefined": "Η καμπύλη δεν ορίζεται στο t = {t} (πόλος ή κενό)",
+  "parametricCurve.cusp": "P′(t) = 0: δεν υπάρχει κατεύθυνση κίνησης, η κ δεν ορίζεται",
+  "parametricCurve.straight": "Ευθεία εδώ (κ ≈ 0): δεν υπάρχει εγγύτατος κύκλος",
+  "parametricCurve.pointLabel": "P(t)",
+  "parametricCurve.velocityLabel": "P′(t)",
+  "parametricCurve.accelerationLabel": "P″(t)",
+  "parametricCurve.originLabel": "O",
+  "parametricCurve.tangentLabel": "T",
+  "parametricCurve.normalLabel": "N",
+  "parametricCurve.binormalLabel": "B",
+  "parametricCurve.hodographCaption": "Οδογράφος P′(t), αρχή O",
+  "parametricCurve.scaleCaption": "Βέλη και οδογράφος σε κλίμακα {scale}",
+  "parametricCurve.frameCaption":
+    "Τρίεδρο Frenet T, N, B στο P(t)· σύρετε για περιστροφή, Shift+σύρσιμο για μετακίνηση",
+  "parametricCurve.incomplete":
+    "Σχεδιασμένη κατά προσέγγιση: κάπου η καμπύλη ταλαντώνεται γρηγορότερα απ' όσο μπόρεσε να ακολουθήσει η σχεδίαση",
+  "parametricCurve.formula.undefined": "δεν ορίζεται",
+  "parametricCurve.formula.tooLong": "πολύ μεγάλη για εμφάνιση",
+  "parametricCurve.error.text":
+    "πεδίο «{field}»: ένας τύπος είναι κείμενο το πολύ {max} χαρακτήρων",
+  "parametricCurve.error.params":
+    'πεδίο «params»: οι τιμές των παραμέτρων είναι πεπερασμένοι αριθμοί ανά όνομα, όπως {"a": 2}',
+  // ---- end parametric-curve ----
 };

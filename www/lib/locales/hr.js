@@ -2223,4 +2223,86 @@ export default {
   "exercise.piecewise-c1.hint":
     "U t = 1 segment 1 je u točki x = 0, y = 1 s brzinom x′ = −2, y′ = 1. Zadržite y = t i potražite x = t² + bt + c uz x(1) = 0 i x′(1) = 2 + b = −2.",
   "exercise.piecewise-c1.notYet": "Još ne. Ocjena jezgre u t = 1: {detail}.",
+  // ---- parametric-curve (section 1) ----
+  "parametricCurve.title": "Parametarske krivulje iz formula",
+  "parametricCurve.summary":
+    "Upišite x(t), y(t) (i z(t)) i gledajte točku kako se giba po P(t) s brzinom, akceleracijom, zakrivljenošću i oskulacijskom kružnicom, a uz nju hodograf.",
+  "parametricCurve.aria":
+    "Parametarska krivulja x(t) = {x}, y(t) = {y} za t od {a} do {b}; t = {t}; P(t) = ({px}; {py}); iznos brzine {speed}; zakrivljenost κ = {kappa}; hodograf je nacrtan pokraj nje",
+  "parametricCurve.aria3d":
+    "Prostorna krivulja x(t) = {x}, y(t) = {y}, z(t) = {z} za t od {a} do {b}; t = {t}; P(t) = ({px}; {py}; {pz}); iznos brzine {speed}; zakrivljenost κ = {kappa}; torzija τ = {tau}; Frenetov trobrid T, N, B nacrtan je u P(t)",
+  "parametricCurve.ariaUndefined":
+    "Parametarska krivulja x(t) = {x}, y(t) = {y} za t od {a} do {b}; u t = {t} krivulja nije definirana",
+  "parametricCurve.whatYouSee":
+    "Krivulja je točka koja se giba: P(t) = (x(t), y(t)) za t iz [a, b] (poglavlje 1 nastavnog programa; kružnica x = cos t, y = sin t na [0, 2π] iz bilježaka). Crveno-narančasta strelica je brzina P′(t), ljubičasta akceleracija P″(t); narančasta kružnica je oskulacijska kružnica polumjera 1/|κ|. Desno hodograf skuplja sve brzine P′(t), nacrtane iz točke O. Svaku formulu raščlanjuje i derivira biblioteka krivulja; svako ime osim t postaje klizač.",
+  "parametricCurve.try1":
+    "Pritisnite „Pokreni”, zatim odaberite „Cikloida”: u svakom šiljku iznos brzine pada na 0 i strelica brzine nestaje, a hodograf prolazi kroz O.",
+  "parametricCurve.try2":
+    "Odaberite „Elipsa” i pomičite klizače a i b: oskulacijska kružnica najmanja je na krajevima velike osi.",
+  "parametricCurve.try3":
+    "Odaberite „y = tan t”: graf se prekida u polovima t = ±π/2 umjesto da spaja grane.",
+  "parametricCurve.try4":
+    "Odaberite „Polinom iz bilježaka” i označite „Prikaži Bézierov oblik”: kontrolne točke su točni razlomci poput −271/50.",
+  "parametricCurve.try5":
+    "Upišite sin(t) u z(t): krivulja izlazi iz ravnine, a u P(t) se pojavljuje Frenetov trobrid T, N, B. Povlačenjem slike zakrećete je.",
+  "parametricCurve.control.curve": "Krivulja P(t)",
+  "parametricCurve.control.x": "x(t) =",
+  "parametricCurve.control.y": "y(t) =",
+  "parametricCurve.control.z": "z(t) = (prazno: ravninska krivulja)",
+  "parametricCurve.control.from": "t od",
+  "parametricCurve.control.to": "do",
+  "parametricCurve.control.help":
+    "Formule u t poput 2cos(t), t^2 - 1, e^(-t/5)sin(3t); π se piše pi. Svako drugo slovo (a, b, ω, a_1) je parametar s klizačem.",
+  "parametricCurve.control.params": "Parametri",
+  "parametricCurve.control.param.input": "vrijednost parametra {name}",
+  "parametricCurve.control.t": "t",
+  "parametricCurve.control.t.input": "vrijednost parametra t",
+  "parametricCurve.control.examples": "Primjeri",
+  "parametricCurve.preset.circle": "Kružnica",
+  "parametricCurve.preset.ellipse": "Elipsa",
+  "parametricCurve.preset.lissajous": "Lissajous",
+  "parametricCurve.preset.cycloid": "Cikloida",
+  "parametricCurve.preset.cardioid": "Kardioida",
+  "parametricCurve.preset.astroid": "Astroida",
+  "parametricCurve.preset.spiral": "Spirala",
+  "parametricCurve.preset.helix": "Zavojnica (3D)",
+  "parametricCurve.preset.tan": "y = tan t",
+  "parametricCurve.preset.polynomial": "Polinom iz bilježaka",
+  "parametricCurve.control.bezier": "Prikaži Bézierov oblik (polinomijalna krivulja)",
+  "parametricCurve.bezierPoints": "Kontrolne točke na [{a}, {b}], točno: {list}",
+  "parametricCurve.bezierLink": "Otvori ove kontrolne točke u De Casteljauovu algoritmu",
+  "parametricCurve.bezierLinkOff":
+    "Demonstracija De Casteljauova algoritma prima samo ravninske krivulje stupnja 1 do 10.",
+  "parametricCurve.control.view": "Pogled na prostornu krivulju",
+  "parametricCurve.control.azimuth": "Azimut (stupnjevi)",
+  "parametricCurve.control.azimuth.input": "azimut pogleda u stupnjevima",
+  "parametricCurve.control.elevation": "Elevacija (stupnjevi)",
+  "parametricCurve.control.elevation.input": "elevacija pogleda u stupnjevima",
+  "parametricCurve.atT": "U t",
+  "parametricCurve.speed": "Iznos brzine |P′(t)| = {speed}",
+  "parametricCurve.curvature": "Zakrivljenost κ(t) = {kappa}",
+  "parametricCurve.radius": "Oskulacijska kružnica polumjera {r}",
+  "parametricCurve.torsion": "Torzija τ(t) = {tau}",
+  "parametricCurve.undefined": "Krivulja nije definirana u t = {t} (pol ili praznina)",
+  "parametricCurve.cusp": "P′(t) = 0: nema smjera gibanja, κ nije definirana",
+  "parametricCurve.straight": "Ovdje ravna (κ ≈ 0): nema oskulacijske kružnice",
+  "parametricCurve.pointLabel": "P(t)",
+  "parametricCurve.velocityLabel": "P′(t)",
+  "parametricCurve.accelerationLabel": "P″(t)",
+  "parametricCurve.originLabel": "O",
+  "parametricCurve.tangentLabel": "T",
+  "parametricCurve.normalLabel": "N",
+  "parametricCurve.binormalLabel": "B",
+  "parametricCurve.hodographCaption": "Hodograf P′(t), ishodište O",
+  "parametricCurve.scaleCaption": "Strelice i hodograf u mjerilu {scale}",
+  "parametricCurve.frameCaption":
+    "Frenetov trobrid T, N, B u P(t); povlačenjem zakrećete, Shift+povlačenjem pomičete",
+  "parametricCurve.incomplete":
+    "Nacrtano približno: negdje krivulja titra brže nego što je crtanje moglo pratiti",
+  "parametricCurve.formula.undefined": "nije definirano",
+  "parametricCurve.formula.tooLong": "predugo za prikaz",
+  "parametricCurve.error.text": "polje „{field}”: formula je tekst od najviše {max} znakova",
+  "parametricCurve.error.params":
+    'polje „params”: vrijednosti parametara su konačni brojevi po imenu, poput {"a": 2}',
+  // ---- end parametric-curve ----
 };

@@ -2244,4 +2244,86 @@ export default {
     "In t = 1 il pezzo 1 si trova in x = 0, y = 1 con velocità x′ = −2, y′ = 1. Tieni y = t e cerca x = t² + bt + c con x(1) = 0 e x′(1) = 2 + b = −2.",
   "exercise.piecewise-c1.notYet":
     "Non ancora. Il verdetto del nucleo di calcolo in t = 1: {detail}.",
+  // ---- parametric-curve (section 1) ----
+  "parametricCurve.title": "Curve parametriche da formule",
+  "parametricCurve.summary":
+    "Scrivi x(t), y(t) (e z(t)) e guarda un punto percorrere P(t) con la sua velocità, l'accelerazione, la curvatura e il cerchio osculatore, con l'odografo accanto.",
+  "parametricCurve.aria":
+    "Curva parametrica x(t) = {x}, y(t) = {y} per t da {a} a {b}; t = {t}; P(t) = ({px}; {py}); modulo della velocità {speed}; curvatura κ = {kappa}; l'odografo è disegnato accanto",
+  "parametricCurve.aria3d":
+    "Curva nello spazio x(t) = {x}, y(t) = {y}, z(t) = {z} per t da {a} a {b}; t = {t}; P(t) = ({px}; {py}; {pz}); modulo della velocità {speed}; curvatura κ = {kappa}; torsione τ = {tau}; il triedro di Frenet T, N, B è disegnato in P(t)",
+  "parametricCurve.ariaUndefined":
+    "Curva parametrica x(t) = {x}, y(t) = {y} per t da {a} a {b}; in t = {t} la curva non è definita",
+  "parametricCurve.whatYouSee":
+    "Una curva è un punto che si muove: P(t) = (x(t), y(t)) per t in [a, b] (sezione 1 del programma; la circonferenza x = cos t, y = sin t su [0, 2π] delle dispense). La freccia vermiglia è la velocità P′(t), quella viola l'accelerazione P″(t); la circonferenza arancione è il cerchio osculatore di raggio 1/|κ|. A destra l'odografo raccoglie tutte le velocità P′(t), disegnate dal punto O. Ogni formula è analizzata e derivata dalla libreria delle curve; ogni nome diverso da t diventa un cursore.",
+  "parametricCurve.try1":
+    "Premi “Avvia”, poi scegli “Cicloide”: in ogni cuspide il modulo della velocità scende a 0 e la freccia della velocità sparisce, mentre l'odografo passa per O.",
+  "parametricCurve.try2":
+    "Scegli “Ellisse” e muovi i cursori a e b: il cerchio osculatore è più piccolo agli estremi dell'asse maggiore.",
+  "parametricCurve.try3":
+    "Scegli “y = tan t”: il grafico si interrompe nei poli t = ±π/2 invece di unire i rami.",
+  "parametricCurve.try4":
+    "Scegli “Il polinomio delle dispense” e spunta “Mostra la forma di Bézier”: i punti di controllo sono frazioni esatte come −271/50.",
+  "parametricCurve.try5":
+    "Scrivi sin(t) in z(t): la curva esce dal piano e in P(t) compare il triedro di Frenet T, N, B. Trascina la figura per ruotarla.",
+  "parametricCurve.control.curve": "Curva P(t)",
+  "parametricCurve.control.x": "x(t) =",
+  "parametricCurve.control.y": "y(t) =",
+  "parametricCurve.control.z": "z(t) = (vuoto: una curva piana)",
+  "parametricCurve.control.from": "t da",
+  "parametricCurve.control.to": "a",
+  "parametricCurve.control.help":
+    "Formule in t come 2cos(t), t^2 - 1, e^(-t/5)sin(3t); π si scrive pi. Ogni altra lettera (a, b, ω, a_1) è un parametro con il suo cursore.",
+  "parametricCurve.control.params": "Parametri",
+  "parametricCurve.control.param.input": "valore del parametro {name}",
+  "parametricCurve.control.t": "t",
+  "parametricCurve.control.t.input": "valore del parametro t",
+  "parametricCurve.control.examples": "Esempi",
+  "parametricCurve.preset.circle": "Circonferenza",
+  "parametricCurve.preset.ellipse": "Ellisse",
+  "parametricCurve.preset.lissajous": "Lissajous",
+  "parametricCurve.preset.cycloid": "Cicloide",
+  "parametricCurve.preset.cardioid": "Cardioide",
+  "parametricCurve.preset.astroid": "Astroide",
+  "parametricCurve.preset.spiral": "Spirale",
+  "parametricCurve.preset.helix": "Elica (3D)",
+  "parametricCurve.preset.tan": "y = tan t",
+  "parametricCurve.preset.polynomial": "Il polinomio delle dispense",
+  "parametricCurve.control.bezier": "Mostra la forma di Bézier (una curva polinomiale)",
+  "parametricCurve.bezierPoints": "Punti di controllo su [{a}, {b}], esatti: {list}",
+  "parametricCurve.bezierLink": "Apri questi punti di controllo nell'algoritmo di De Casteljau",
+  "parametricCurve.bezierLinkOff":
+    "La dimostrazione di De Casteljau accetta solo curve piane di grado da 1 a 10.",
+  "parametricCurve.control.view": "Vista della curva nello spazio",
+  "parametricCurve.control.azimuth": "Azimut (gradi)",
+  "parametricCurve.control.azimuth.input": "azimut della vista in gradi",
+  "parametricCurve.control.elevation": "Elevazione (gradi)",
+  "parametricCurve.control.elevation.input": "elevazione della vista in gradi",
+  "parametricCurve.atT": "In t",
+  "parametricCurve.speed": "Modulo della velocità |P′(t)| = {speed}",
+  "parametricCurve.curvature": "Curvatura κ(t) = {kappa}",
+  "parametricCurve.radius": "Cerchio osculatore di raggio {r}",
+  "parametricCurve.torsion": "Torsione τ(t) = {tau}",
+  "parametricCurve.undefined": "La curva non è definita in t = {t} (un polo o un buco)",
+  "parametricCurve.cusp": "P′(t) = 0: nessuna direzione di moto, κ non è definita",
+  "parametricCurve.straight": "Dritta qui (κ ≈ 0): nessun cerchio osculatore",
+  "parametricCurve.pointLabel": "P(t)",
+  "parametricCurve.velocityLabel": "P′(t)",
+  "parametricCurve.accelerationLabel": "P″(t)",
+  "parametricCurve.originLabel": "O",
+  "parametricCurve.tangentLabel": "T",
+  "parametricCurve.normalLabel": "N",
+  "parametricCurve.binormalLabel": "B",
+  "parametricCurve.hodographCaption": "Odografo P′(t), origine O",
+  "parametricCurve.scaleCaption": "Frecce e odografo in scala {scale}",
+  "parametricCurve.frameCaption":
+    "Triedro di Frenet T, N, B in P(t); trascina per ruotare, Maiusc+trascina per spostare",
+  "parametricCurve.incomplete":
+    "Disegnata in modo approssimato: da qualche parte la curva oscilla più in fretta di quanto il disegno abbia potuto seguire",
+  "parametricCurve.formula.undefined": "non definito",
+  "parametricCurve.formula.tooLong": "troppo lunga da mostrare",
+  "parametricCurve.error.text": "campo “{field}”: una formula è un testo di al più {max} caratteri",
+  "parametricCurve.error.params":
+    'campo “params”: i valori dei parametri sono numeri finiti per nome, come {"a": 2}',
+  // ---- end parametric-curve ----
 };
