@@ -20,6 +20,7 @@ import {
   localeDecimal,
   texDecimal,
   texListSeparator,
+  shownNumbers,
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { flatten, boundsOf, distanceToPolyline } from "../lib/geometry.js";
