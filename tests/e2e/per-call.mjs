@@ -294,6 +294,11 @@ const checks = [
         "CubicSpline",
       );
       throwsWith(() => new sl.LagrangeCurve(), /comes from sl\.lagrange\(…\)/, "LagrangeCurve");
+      throwsWith(
+        () => new sl.ParametricCurve(),
+        /comes from sl\.parametricCurve\(…\)/,
+        "ParametricCurve",
+      );
       const spline = sl.cubicSpline([0, 0, 1, 1, 2, 0], 2, [0, 1, 2], "natural");
       assert(spline instanceof sl.CubicSpline, "the functions still make them");
       near(spline.evaluate(1), [1, 1], 1e-15, "through its middle point");
@@ -328,6 +333,11 @@ const checks = [
           (o) => o.tangents(),
         ],
         ["LagrangeCurve", sl.lagrange([0, 0, 1, 2, 3, 1], 2, [0, 1, 2]), (o) => o.aitken(0.5)],
+        [
+          "ParametricCurve",
+          sl.parametricCurve([{ x: "cos(t)", y: "sin(t)", from: "0", to: "2pi" }]),
+          (o) => o.joints(),
+        ],
       ];
       const classes = Object.entries(sl).filter(
         ([, v]) => typeof v === "function" && /^class /.test(String(v)),
