@@ -42,7 +42,47 @@ const freed = () => {
 };
 
 /** [the code the library must throw, the call that throws it]. */
+/** A typed curve of one piece with the texts given (issue 24), or of the pieces given. */
+const typed = (x, y = "t", from = "0", to = "1") => sl.parametricCurve([{ x, y, from, to }]);
+
 const CASES = [
+  ["expression-empty", () => typed(" ")],
+  ["expression-too-long", () => typed("t+".repeat(600))],
+  ["expression-too-deep", () => typed(`${"(".repeat(70)}t${")".repeat(70)}`)],
+  ["unexpected-character", () => typed("t # 2")],
+  ["unexpected-character", () => typed("2,5t")],
+  ["unexpected-character", () => typed("|t|")],
+  ["expected-operand", () => typed("t + * 2")],
+  ["expected-operand", () => typed("t +")],
+  ["missing-operator", () => typed("2 3")],
+  ["unclosed-parenthesis", () => typed("sin(t")],
+  ["unmatched-parenthesis", () => typed("t)")],
+  ["unknown-name", () => typed("t + q")],
+  ["function-needs-parentheses", () => typed("sin t")],
+  ["function-power", () => typed("sin^-1(t)")],
+  ["function-power", () => typed("exp^x(t)")],
+  ["ambiguous-division", () => typed("1/2t")],
+  ["number-after-name", () => typed("t2")],
+  ["invalid-number", () => typed("1.2.3")],
+  [
+    "invalid-parameter-name",
+    () => sl.parametricCurve([{ x: "t", y: "t", from: 0, to: 1 }], { tt: 1 }),
+  ],
+  ["unknown-parameter", () => typed("t").setParameter("a", 1)],
+  ["not-finite-value", () => typed("t", "t", "0", "ln(0)")],
+  ["empty-piece-interval", () => typed("t", "t", "1.5", "1.5")],
+  [
+    "pieces-do-not-join",
+    () =>
+      sl.parametricCurve([
+        { x: "t", y: "t", from: "0", to: "1" },
+        { x: "t", y: "t", from: "1.5", to: "2" },
+      ]),
+  ],
+  ["missing-field", () => sl.parametricCurve([{ x: "t", from: "0", to: "1" }])],
+  ["piece-count", () => sl.parametricCurve([])],
+  ["not-polynomial", () => typed("cos(t)").toBezier(0)],
+  ["bound-uses-t", () => typed("t", "t", "0", "2t")],
   ["invalid-dimension", () => new sl.BezierCurve([0, 0, 0, 0, 1, 1, 1, 1], 4)],
   ["coordinate-count", () => new sl.BezierCurve([0, 0, 1, 1, 2], 2)],
   ["coordinate-count", () => new sl.BezierCurve([0, 0, 1, 1, 2], 3)],
@@ -226,13 +266,19 @@ function thrown(run) {
   }
 }
 
+/**
+ * Typed-expression problems whose decimals are the student's own text or the syntax to type
+ * ("write decimals with a point (2.5)", "1.2.3" is not a number): they keep the point.
+ */
+const TYPED_DECIMALS = new Set(["unexpected-character", "invalid-number"]);
+
 /** The problems of `errorText(err)` in every language. */
 function problems(err) {
   const found = [];
   setLocale("en");
   const english = errorText(err);
   if (english !== err.message) found.push(`en: ${JSON.stringify(english)}`);
-  const decimals = err.message.match(/\d+\.\d+/g) ?? [];
+  const decimals = TYPED_DECIMALS.has(err.code) ? [] : (err.message.match(/\d+\.\d+/g) ?? []);
   // A pair of numbers in brackets ("[0, 1]", "(1.5, 2)") separates them with "; " where the
   // decimal separator is a comma.
   const pair = /[[(]-?[\d.e+-]+, -?[\d.e+-]+[\])]/.test(err.message);
