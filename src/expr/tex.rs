@@ -42,7 +42,9 @@ fn paren(s: &str) -> String {
 /// Whether the text ends with a control word (`\pi`), so a letter after it needs a space.
 fn ends_with_control_word(s: &str) -> bool {
     let letters = s.len() - s.trim_end_matches(|c: char| c.is_ascii_alphabetic()).len();
-    letters > 0 && s[..s.len() - letters].ends_with('\\')
+    letters > 0
+        && s.get(..s.len() - letters)
+            .is_some_and(|head| head.ends_with('\\'))
 }
 
 /// `a` then `b`, with a space when `b` would otherwise extend a control word at the end of `a`.
