@@ -192,6 +192,13 @@ pub struct Expr {
     pub span: Span,
 }
 
+/// `Box::new(e)` out of line: one copy of the allocation for every tree builder (the parser,
+/// the derivative, the simplifier) instead of one per call site (wasm size).
+#[inline(never)]
+pub fn boxed(e: Expr) -> Box<Expr> {
+    Box::new(e)
+}
+
 impl Expr {
     /// A node with its span.
     pub fn new(node: Node, span: Span) -> Self {

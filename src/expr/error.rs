@@ -182,6 +182,7 @@ pub struct ExprError {
 
 impl ExprError {
     /// An error at `start..end` of a text not yet placed in a piece (the parser's).
+    #[inline(never)] // one copy for every error site (wasm size)
     pub fn at(start: usize, end: usize, problem: Problem) -> Self {
         ExprError {
             piece: None,
@@ -199,6 +200,7 @@ impl ExprError {
     }
 
     /// The same error, placed in `field` of piece `piece`.
+    #[inline(never)]
     pub fn in_field(mut self, piece: usize, field: &str) -> Self {
         self.piece = Some(piece);
         self.field = Some(field.to_string());

@@ -53,6 +53,7 @@ fn reads_parameters(e: &Expr) -> bool {
 
 impl Coordinate {
     /// Compiles `tree`; `values` are the parameters' current values (for the polynomial form).
+    #[inline(never)]
     pub(crate) fn new(tree: Expr, values: &[f64]) -> Self {
         let tape = Tape::compile(&tree);
         let poly = Polynomial::from_expr(&tree, values);

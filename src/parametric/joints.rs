@@ -18,7 +18,7 @@
 
 use super::curve::ParametricCurve;
 use super::eval::{Coordinate, Interval};
-use crate::expr::{self, Rational};
+use crate::expr::{self, opaque, Rational};
 
 /// The verdict at one joint.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,11 +70,12 @@ impl ParametricCurve {
     fn sides(&self, i: usize, t: f64) -> [[V; N]; 2] {
         let mut sides = [[[0.0; 3]; N]; 2];
         for (s, side) in sides.iter_mut().enumerate() {
-            let _ = self.piece_derivatives(i + s, t, opaque(expr::MAX_JET_ORDER), |k, c, v| {
-                if let Some(x) = side.get_mut(k).and_then(|d| d.get_mut(c)) {
-                    *x = v;
-                }
-            });
+            let _ =
+                self.piece_derivatives(i + s, t, opaque(expr::MAX_JET_ORDER), &mut |k, c, v| {
+                    if let Some(x) = side.get_mut(k).and_then(|d| d.get_mut(c)) {
+                        *x = v;
+                    }
+                });
         }
         sides
     }
@@ -227,11 +228,6 @@ impl ParametricCurve {
             u.hi < v.lo || v.hi < u.lo
         })
     }
-}
-
-/// `n`, hidden from the optimiser so it does not unroll cold loops over it (wasm size).
-fn opaque<T>(n: T) -> T {
-    std::hint::black_box(n)
 }
 
 /// The enclosure of the k-th derivative of `c` at the point t (k ≤ 2).

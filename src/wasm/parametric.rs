@@ -29,6 +29,7 @@ fn set(object: &Object, key: &str, value: &JsValue) {
 }
 
 /// A field of a piece: a string, or a finite number (written as JavaScript writes it).
+#[inline(never)]
 fn field_text(piece: usize, object: &JsValue, field: &str) -> Result<Option<String>, ApiError> {
     let value = get(object, field);
     if value.is_undefined() || value.is_null() {
@@ -55,6 +56,7 @@ fn field_text(piece: usize, object: &JsValue, field: &str) -> Result<Option<Stri
 }
 
 /// A required field, or the coded "missing-field" error placed in it.
+#[inline(never)]
 fn required(piece: usize, object: &JsValue, field: &str) -> Result<String, ApiError> {
     field_text(piece, object, field)?.ok_or_else(|| {
         Error::from(ExprError::at(0, 0, Problem::MissingField {}).in_field(piece, field)).into()
