@@ -155,6 +155,7 @@ fn number(text: &str) -> Kind {
 }
 
 /// The words a run of letters is split into besides single letters.
+#[inline(never)]
 fn word(text: &str) -> Option<Word> {
     if text == "pi" {
         return Some(Word::Constant(Constant::Pi));

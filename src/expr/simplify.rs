@@ -159,6 +159,7 @@ fn node(node: Node) -> Expr {
     Expr::new(node, Default::default())
 }
 
+#[inline(never)] // the tree builders stay out of line (wasm size)
 fn binary(op: BinOp, a: Expr, b: Expr) -> Expr {
     node(Node::Binary(op, boxed(a), boxed(b)))
 }
@@ -322,6 +323,7 @@ pub(crate) fn pow(a: Expr, b: Expr) -> Expr {
 }
 
 /// f(a) (functions are not folded).
+#[inline(never)]
 pub(crate) fn call(f: Func, a: Expr) -> Expr {
     node(Node::Call(f, boxed(a)))
 }
