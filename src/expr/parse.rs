@@ -359,7 +359,7 @@ impl<'a, 'p> Parser<'a, 'p> {
     fn primary(&mut self) -> Parsed {
         let token = self.peek()?;
         let leaf = match token.kind {
-            Kind::Number { value, exact } => Node::Number { value, exact },
+            Kind::Number { value, exact } => Node::number(value, exact),
             Kind::Name(Word::T) => Node::T,
             Kind::Name(Word::Constant(c)) => Node::Constant(c),
             Kind::Name(Word::Letter) => Node::Param(self.parameter(token)?),
@@ -457,7 +457,7 @@ impl<'a, 'p> Parser<'a, 'p> {
             Kind::Number { value, exact } => {
                 if exact.is_some_and(|r| r.is_integer() && r.numer() >= 1) {
                     self.bump();
-                    return self.node(Node::Number { value, exact }, token.span);
+                    return self.node(Node::number(value, exact), token.span);
                 }
                 token.span
             }

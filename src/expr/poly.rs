@@ -118,7 +118,7 @@ fn build(e: &Expr, params: &[f64], depth: usize) -> Option<Polynomial> {
     }
     let depth = depth + 1;
     let w = match &e.node {
-        Node::Number { value, exact } => Polynomial::constant(*value, *exact),
+        Node::Number { value, exact } => Polynomial::constant(*value, exact.as_deref().copied()),
         Node::T => Polynomial {
             coefficients: vec![0.0, 1.0],
             exact: Some(vec![Rational::ZERO, Rational::ONE]),

@@ -55,7 +55,7 @@ impl Num {
         match &e.node {
             Node::Number { value, exact } => Some(Num {
                 value: *value,
-                exact: *exact,
+                exact: exact.as_deref().copied(),
             }),
             Node::Neg(a) => match &a.node {
                 Node::Number { .. } => Num::of(a)?.neg(),

@@ -194,7 +194,7 @@ fn bare_argument(e: &Expr) -> bool {
     match &e.node {
         Node::T | Node::Param(_) | Node::Constant(_) => true,
         Node::Number { value, exact } => {
-            *value >= 0.0 && exact.is_none_or(|r| decimal(r).is_some())
+            *value >= 0.0 && exact.as_deref().is_none_or(|r| decimal(*r).is_some())
         }
         _ => false,
     }
@@ -243,7 +243,7 @@ impl Tex<'_> {
         }
         let d = depth + 1;
         match &e.node {
-            Node::Number { value, exact } => number(*value, *exact),
+            Node::Number { value, exact } => number(*value, exact.as_deref().copied()),
             Node::T => "t".into(),
             Node::Param(i) => self.names.get(*i).map_or("?".into(), |s| name(s)),
             Node::Constant(Constant::Pi) => "\\pi".into(),
