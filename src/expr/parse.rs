@@ -19,7 +19,7 @@
 
 use super::ast::{boxed, BinOp, Expr, Func, Node, Span};
 use super::error::{ExprError, Problem};
-use super::lex::{is_letter, is_subscript, lex, Kind, Token, Word};
+use super::lex::{exact_decimal, is_letter, is_subscript, lex, Kind, Token, Word};
 use super::{MAX_LENGTH, MAX_NESTING, MAX_NODES};
 
 /// The tree of `text`, whose names other than `t`, `pi`, `π`, `e` and the functions must be
@@ -359,7 +359,7 @@ impl<'a, 'p> Parser<'a, 'p> {
     fn primary(&mut self) -> Parsed {
         let token = self.peek()?;
         let leaf = match token.kind {
-            Kind::Number { value, exact } => Node::number(value, exact),
+            Kind::Number { value } => Node::number(value, exact_decimal(token.text)),
             Kind::Name(Word::T) => Node::T,
             Kind::Name(Word::Constant(c)) => Node::Constant(c),
             Kind::Name(Word::Letter) => Node::Param(self.parameter(token)?),
@@ -454,7 +454,8 @@ impl<'a, 'p> Parser<'a, 'p> {
     fn function_power(&mut self, f: Func, name: Token) -> Parsed {
         let token = self.peek()?;
         let end = match token.kind {
-            Kind::Number { value, exact } => {
+            Kind::Number { value } => {
+                let exact = exact_decimal(token.text);
                 if exact.is_some_and(|r| r.is_integer() && r.numer() >= 1) {
                     self.bump();
                     return self.node(Node::number(value, exact), token.span);
