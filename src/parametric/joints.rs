@@ -101,7 +101,7 @@ impl ParametricCurve {
                 right: None,
                 disjoint: v.order.is_some(),
             },
-            None => self.float_verdict(i, t, &l, &r),
+            None => self.float_verdict(i, t, opaque(&l[..]), opaque(&r[..])),
         };
         if let Some(k) = joint.order {
             let value = |side: &[V; N]| {
@@ -116,17 +116,12 @@ impl ParametricCurve {
     }
 
     /// The verdict from f64 jets (see the module's comment for the tolerances).
-    fn float_verdict(&self, i: usize, t: f64, l: &[V; N], r: &[V; N]) -> Joint {
+    fn float_verdict(&self, i: usize, t: f64, l: &[V], r: &[V]) -> Joint {
         let (time, space) = self.scales(i);
-        let order = l
-            .iter()
-            .zip(r)
-            .zip(0..)
-            .take(opaque(N))
-            .position(|((a, b), k)| {
-                let d = dist(a, b);
-                !(d.is_finite() && d * time.powi(k) <= EPS * space)
-            });
+        let order = l.iter().zip(r).zip(0..).position(|((a, b), k)| {
+            let d = dist(a, b);
+            !(d.is_finite() && d * time.powi(k) <= EPS * space)
+        });
         let c = if self.same_polynomials(i) {
             f64::INFINITY
         } else {
@@ -253,13 +248,16 @@ fn dist(a: &V, b: &V) -> f64 {
 }
 
 /// The largest k ≤ 3 with G^k from the f64 derivatives (−1 when the pieces do not meet).
-fn geometric(l: &[V; N], r: &[V; N], space: f64) -> i32 {
-    let d0 = dist(&l[0], &r[0]);
+fn geometric(l: &[V], r: &[V], space: f64) -> i32 {
+    let (Some(l0), Some(r0)) = (l.first(), r.first()) else {
+        return -1;
+    };
+    let d0 = dist(l0, r0);
     if !(d0.is_finite() && d0 <= EPS * space) {
         return -1;
     }
     // G¹: the directions of the first non-vanishing derivative on each side.
-    let dir = |side: &[V; N]| -> Option<V> {
+    let dir = |side: &[V]| -> Option<V> {
         let lead = side.iter().skip(1).find(|d| norm(d) > 0.0)?;
         let n = norm(lead);
         Some(lead.map(|x| x / n))
@@ -272,7 +270,8 @@ fn geometric(l: &[V; N], r: &[V; N], space: f64) -> i32 {
         return 0;
     }
     // G², G³ need a regular point on both sides.
-    if !(norm(&l[1]) > 0.0 && norm(&r[1]) > 0.0) {
+    let regular = |side: &[V]| side.get(1).is_some_and(|v| norm(v) > 0.0);
+    if !(regular(l) && regular(r)) {
         return 1;
     }
     let (kl, kr) = (curvature_vector(l), curvature_vector(r));
@@ -290,8 +289,9 @@ fn geometric(l: &[V; N], r: &[V; N], space: f64) -> i32 {
 /// `(κN, d(κN)/ds)` from v, a, j: with `s = v·v`, `q = a·v`, `κN = (a s − q v)/s²` and
 /// `d(κN)/dt = [(j s + 2 q a − (j·v + a·a) v − q a) s² − (a s − q v)·2s·2q]/s⁴`, divided by
 /// `|v|` for the arc length.
-fn curvature_vector(side: &[V; N]) -> (V, V) {
-    let (v, a, j) = (&side[1], &side[2], &side[3]);
+fn curvature_vector(side: &[V]) -> (V, V) {
+    let get = |k: usize| side.get(k).copied().unwrap_or_default();
+    let (v, a, j) = (&get(1), &get(2), &get(3));
     let s = dot(v, v);
     let q = dot(a, v);
     let dq = dot(j, v) + dot(a, a);
@@ -334,11 +334,8 @@ fn exact_verdict(left: &[Coordinate], right: &[Coordinate], t: Rational) -> Opti
         });
     }
     let [l, r] = &sides;
-    let order = l
-        .iter()
-        .zip(r)
-        .take(opaque(N))
-        .position(|(a, b)| !same(a, b));
+    let (l, r) = (opaque(&l[..]), opaque(&r[..]));
+    let order = l.iter().zip(r).position(|(a, b)| !same(a, b));
     let c = match order {
         Some(k) if k <= C_MAX => k as f64 - 1.0,
         _ => C_MAX as f64,
@@ -408,11 +405,11 @@ fn positive_multiple(u: &Q, w: &Q) -> Option<Option<Rational>> {
 }
 
 /// G^k in exact arithmetic (0 ≤ k ≤ 3; −1 when the pieces do not meet); `None` on overflow.
-fn exact_geometric(l: &[Q; N], r: &[Q; N]) -> Option<i32> {
-    if !same(&l[0], &r[0]) {
+fn exact_geometric(l: &[Q], r: &[Q]) -> Option<i32> {
+    if !same(l.first()?, r.first()?) {
         return Some(-1);
     }
-    let lead = |side: &[Q; N]| side.iter().skip(1).position(|d| !is_zero(d));
+    let lead = |side: &[Q]| side.iter().skip(1).position(|d| !is_zero(d));
     let (Some(a), Some(b)) = (lead(l), lead(r)) else {
         return Some(0);
     };
@@ -424,7 +421,7 @@ fn exact_geometric(l: &[Q; N], r: &[Q; N]) -> Option<i32> {
         return Some(1); // a singular point: G² and G³ are not compared
     }
     // Regular on both sides: v_r = λ v_l, λ > 0.
-    let lambda = positive_multiple(&r[1], &l[1])??;
+    let lambda = positive_multiple(r.get(1)?, l.get(1)?)??;
     let (kl, dkl) = exact_curvature(l)?;
     let (kr, dkr) = exact_curvature(r)?;
     if !same(&kl, &kr) {
@@ -440,8 +437,8 @@ fn exact_geometric(l: &[Q; N], r: &[Q; N]) -> Option<i32> {
 }
 
 /// `(κN, d(κN)/dt)` exactly (no square root: see [`curvature_vector`]).
-fn exact_curvature(side: &[Q; N]) -> Option<(Q, Q)> {
-    let (v, a, j) = (&side[1], &side[2], &side[3]);
+fn exact_curvature(side: &[Q]) -> Option<(Q, Q)> {
+    let (v, a, j) = (side.get(1)?, side.get(2)?, side.get(3)?);
     let s = rdot(v, v)?;
     let q = rdot(a, v)?;
     let dq = rdot(j, v)?.checked_add(rdot(a, a)?)?;
