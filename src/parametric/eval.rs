@@ -99,7 +99,11 @@ impl Coordinate {
 
     /// x(t).
     pub(crate) fn value(&self, t: f64, values: &[f64]) -> f64 {
-        self.with_scratch(|s| self.tape.eval(t, values, s))
+        // Two direct calls here (the hot path), not through `with_scratch`.
+        match self.scratch.try_borrow_mut() {
+            Ok(mut s) => self.tape.eval(t, values, &mut s),
+            Err(_) => self.tape.eval(t, values, &mut Scratch::new()),
+        }
     }
 
     /// x(t), x′(t), …, x^(n)(t) into `out` (`n + 1` numbers), by automatic differentiation.
