@@ -69,7 +69,7 @@ impl ParametricCurve {
     /// Piece `i`'s and piece `i + 1`'s derivatives 0..=MAX_JET_ORDER at their joint.
     fn sides(&self, i: usize, t: f64) -> [[V; N]; 2] {
         let mut sides = [[[0.0; 3]; N]; 2];
-        for (s, side) in sides.iter_mut().enumerate() {
+        for (s, side) in opaque(&mut sides[..]).iter_mut().enumerate() {
             let _ =
                 self.piece_derivatives(i + s, t, opaque(expr::MAX_JET_ORDER), &mut |k, c, v| {
                     if let Some(x) = side.get_mut(k).and_then(|d| d.get_mut(c)) {
@@ -181,7 +181,8 @@ impl ParametricCurve {
         let mut time = f64::INFINITY;
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
-        for p in self.pieces.iter().skip(i).take(2) {
+        let both = self.pieces.get(i..(i + 2).min(self.pieces.len()));
+        for p in opaque(both.unwrap_or_default()) {
             let (a, b) = (p.from.value, p.to.value);
             time = time.min(b - a);
             for s in 0..=opaque(32) {
@@ -226,6 +227,7 @@ impl ParametricCurve {
 }
 
 /// The enclosure of the k-th derivative of `c` at the point t (k ≤ 2).
+#[inline(never)]
 fn enclose(c: &Coordinate, t: f64, k: usize, values: &[f64]) -> Option<Interval> {
     let mut out = [Interval::point(0.0); 3];
     let flags = c.interval_jet(t, t, 2, values, &mut out);
