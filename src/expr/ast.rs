@@ -137,8 +137,12 @@ impl Func {
     }
 
     /// The function named `name`, if there is one.
+    #[inline(never)] // one loop, not unrolled per caller (wasm size)
     pub fn from_name(name: &str) -> Option<Func> {
-        Func::ALL.iter().copied().find(|f| f.name() == name)
+        let all = Func::ALL
+            .get(..super::opaque(Func::ALL.len()))
+            .unwrap_or_default();
+        all.iter().copied().find(|f| f.name() == name)
     }
 }
 
@@ -165,8 +169,9 @@ pub enum Node {
     Number {
         /// The nearest f64.
         value: f64,
-        /// The exact decimal as a fraction.
-        exact: Option<Rational>,
+        /// The exact decimal as a fraction (boxed: a 32-byte fraction inline would more than
+        /// double every node, and every tree move in the wasm with it).
+        exact: Option<Box<Rational>>,
     },
     /// The curve parameter `t`.
     T,
@@ -192,6 +197,23 @@ pub struct Expr {
     pub span: Span,
 }
 
+impl Node {
+    /// A number node: `value` and its exact value when there is one.
+    pub fn number(value: f64, exact: Option<Rational>) -> Node {
+        Node::Number {
+            value,
+            exact: exact.map(Box::new),
+        }
+    }
+}
+
+/// `Box::new(e)` out of line: one copy of the allocation for every tree builder (the parser,
+/// the derivative, the simplifier) instead of one per call site (wasm size).
+#[inline(never)]
+pub fn boxed(e: Expr) -> Box<Expr> {
+    Box::new(e)
+}
+
 impl Expr {
     /// A node with its span.
     pub fn new(node: Node, span: Span) -> Self {
@@ -200,7 +222,7 @@ impl Expr {
 
     /// A number node without a place in any text (for trees built by code: derivatives).
     pub fn number(value: f64, exact: Option<Rational>) -> Self {
-        Expr::new(Node::Number { value, exact }, Span::default())
+        Expr::new(Node::number(value, exact), Span::default())
     }
 
     /// The number of nodes in the tree.

@@ -61,6 +61,7 @@ fn is_zero(e: &Expr) -> bool {
     Num::of(e).is_some_and(Num::is_zero)
 }
 
+#[inline(never)]
 fn int(n: i128) -> Expr {
     Num::integer(n).expr()
 }
@@ -138,6 +139,7 @@ fn binary(op: BinOp, a: &Expr, b: &Expr, da: Expr, db: Expr) -> Expr {
     }
 }
 
+#[inline(never)]
 fn square(e: Expr) -> Expr {
     s::pow(e, int(2))
 }

@@ -10,11 +10,6 @@ use std::fmt;
 /// What is wrong. Each variant has a stable kebab-case code ([`Problem::code`]) and its fields
 /// become the thrown Error's `params` (camelCase) beside `piece`, `field`, `start` and `end`.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(
-    all(target_arch = "wasm32", target_os = "unknown"),
-    derive(serde::Serialize),
-    serde(untagged, rename_all_fields = "camelCase")
-)]
 pub enum Problem {
     /// Nothing typed: `""`, `"  "`.
     Empty {},
@@ -172,11 +167,6 @@ impl Problem {
 
 /// A [`Problem`] and where it is.
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(
-    all(target_arch = "wasm32", target_os = "unknown"),
-    derive(serde::Serialize),
-    serde(rename_all = "camelCase")
-)]
 pub struct ExprError {
     /// The piece (0-based), when the error belongs to one.
     pub piece: Option<usize>,
@@ -187,12 +177,12 @@ pub struct ExprError {
     /// One past the last.
     pub end: usize,
     /// What is wrong.
-    #[cfg_attr(all(target_arch = "wasm32", target_os = "unknown"), serde(flatten))]
     pub problem: Problem,
 }
 
 impl ExprError {
     /// An error at `start..end` of a text not yet placed in a piece (the parser's).
+    #[inline(never)] // one copy for every error site (wasm size)
     pub fn at(start: usize, end: usize, problem: Problem) -> Self {
         ExprError {
             piece: None,
@@ -210,6 +200,7 @@ impl ExprError {
     }
 
     /// The same error, placed in `field` of piece `piece`.
+    #[inline(never)]
     pub fn in_field(mut self, piece: usize, field: &str) -> Self {
         self.piece = Some(piece);
         self.field = Some(field.to_string());
@@ -238,6 +229,107 @@ impl fmt::Display for ExprError {
             write!(f, ", characters {}–{}", self.start, self.end)?;
         }
         write!(f, ": {}", self.problem)
+    }
+}
+
+/// One value of an error's params: nothing (`undefined`), a count, a number or a string.
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+#[derive(Clone, Copy)]
+enum Param<'a> {
+    None,
+    Count(usize),
+    Number(f64),
+    Text(&'a str),
+}
+
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+impl serde::Serialize for Param<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match *self {
+            Param::None => s.serialize_none(),
+            Param::Count(n) => s.serialize_u64(n as u64),
+            Param::Number(x) => s.serialize_f64(x),
+            Param::Text(t) => s.serialize_str(t),
+        }
+    }
+}
+
+/// The params: `piece`, `field`, `start`, `end`, then the problem's fields (camelCase), one
+/// map written by hand (a derive with a flattened untagged enum costs the wasm several KB).
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+impl serde::Serialize for ExprError {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        use Param::{Count, Number, Text};
+        const NONE: (&str, Param) = ("", Param::None);
+        let head = [
+            ("piece", self.piece.map_or(Param::None, Count)),
+            ("field", self.field.as_deref().map_or(Param::None, Text)),
+            ("start", Count(self.start)),
+            ("end", Count(self.end)),
+        ];
+        let (fields, n) = match &self.problem {
+            Problem::Empty {}
+            | Problem::UnclosedParenthesis {}
+            | Problem::UnmatchedParenthesis {}
+            | Problem::NotPolynomial {}
+            | Problem::BoundUsesT {}
+            | Problem::MissingField {} => ([NONE, NONE, NONE], 0),
+            Problem::TooLong { length, max } => {
+                ([("length", Count(*length)), ("max", Count(*max)), NONE], 2)
+            }
+            Problem::TooDeep { max } | Problem::TooManyNodes { max } => {
+                ([("max", Count(*max)), NONE, NONE], 1)
+            }
+            Problem::UnexpectedCharacter { character } => {
+                ([("character", Text(character)), NONE, NONE], 1)
+            }
+            Problem::ExpectedOperand { found } | Problem::MissingOperator { found } => {
+                ([("found", Text(found)), NONE, NONE], 1)
+            }
+            Problem::UnknownName { name }
+            | Problem::FunctionNeedsParentheses { name }
+            | Problem::FunctionPower { name }
+            | Problem::InvalidParameterName { name }
+            | Problem::UnknownParameter { name } => ([("name", Text(name)), NONE, NONE], 1),
+            Problem::AmbiguousDivision {
+                text,
+                product,
+                quotient,
+            } => (
+                [
+                    ("text", Text(text)),
+                    ("product", Text(product)),
+                    ("quotient", Text(quotient)),
+                ],
+                3,
+            ),
+            Problem::NumberAfterName { name, number } => {
+                ([("name", Text(name)), ("number", Text(number)), NONE], 2)
+            }
+            Problem::InvalidNumber { text } => ([("text", Text(text)), NONE, NONE], 1),
+            Problem::NotFiniteValue { value } => ([("value", Number(*value)), NONE, NONE], 1),
+            Problem::EmptyInterval { from, to } => {
+                ([("from", Number(*from)), ("to", Number(*to)), NONE], 2)
+            }
+            Problem::PiecesDoNotJoin { previous, from } => (
+                [
+                    ("previous", Number(*previous)),
+                    ("from", Number(*from)),
+                    NONE,
+                ],
+                2,
+            ),
+            Problem::PieceCount { count, max } => {
+                ([("count", Count(*count)), ("max", Count(*max)), NONE], 2)
+            }
+        };
+        let fields = fields.get(..n).unwrap_or_default();
+        let mut map = s.serialize_map(Some(head.len() + fields.len()))?;
+        for (key, value) in head.iter().chain(fields) {
+            map.serialize_entry(key, value)?;
+        }
+        map.end()
     }
 }
 

@@ -45,13 +45,11 @@ pub enum Fault {
 /// What a token is.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
-    /// A number: its correctly rounded f64 and its exact decimal value as a fraction (`None`
-    /// when numerator or denominator 10^k does not fit an i128).
+    /// A number: its correctly rounded f64 (its exact value is [`exact_decimal`] of the
+    /// token's text, read by the parser where it builds the node: a token stays small).
     Number {
         /// The nearest f64 (`str::parse`).
         value: f64,
-        /// The decimal exactly: `6.5` = 13/2.
-        exact: Option<Rational>,
     },
     /// A name.
     Name(Word),
@@ -123,7 +121,7 @@ pub fn is_subscript(c: char) -> bool {
 
 /// The exact value of a decimal `digits[.digits]` as a fraction n / 10^k (trailing zeros after
 /// the point dropped first); `None` when it does not fit an i128.
-fn exact_decimal(text: &str) -> Option<Rational> {
+pub fn exact_decimal(text: &str) -> Option<Rational> {
     let (whole, fraction) = text.split_once('.').unwrap_or((text, ""));
     let fraction = fraction.trim_end_matches('0');
     let mut n: i128 = 0;
@@ -143,10 +141,7 @@ fn number(text: &str) -> Kind {
     }
     let value = crate::platform::parse_decimal(text);
     if value.is_finite() {
-        Kind::Number {
-            value,
-            exact: exact_decimal(text),
-        }
+        Kind::Number { value }
     } else if value.is_nan() {
         Kind::Bad(Fault::Number)
     } else {
@@ -155,6 +150,7 @@ fn number(text: &str) -> Kind {
 }
 
 /// The words a run of letters is split into besides single letters.
+#[inline(never)]
 fn word(text: &str) -> Option<Word> {
     if text == "pi" {
         return Some(Word::Constant(Constant::Pi));
@@ -364,10 +360,8 @@ mod tests {
             .map(|t| (t.text, t.span.start, t.span.end, t.spaced))
             .collect();
         assert_eq!(got, want);
-        let two = Kind::Number {
-            value: 2.0,
-            exact: Some(Rational::integer(2)),
-        };
+        let two = Kind::Number { value: 2.0 };
+        assert_eq!(exact_decimal("2"), Some(Rational::integer(2)));
         let pi = Kind::Name(Word::Constant(Constant::Pi));
         let want = [
             two,
@@ -445,7 +439,8 @@ mod tests {
         assert_eq!(kinds(&"9".repeat(400)), [bad(Fault::Infinite)]);
         // The largest finite literal is still a number.
         let max = format!("{}", f64::MAX);
-        assert!(matches!(kinds(&max)[0], Kind::Number { value, exact: None } if value == f64::MAX));
+        assert!(matches!(kinds(&max)[0], Kind::Number { value } if value == f64::MAX));
+        assert_eq!(exact_decimal(&max), None);
         assert_eq!(kinds("ϖ"), [bad(Fault::Character)]);
         let problem = lex("t,5")[1].problem().map(|e| (e.problem, e.start, e.end));
         let comma = Problem::UnexpectedCharacter {

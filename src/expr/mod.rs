@@ -49,5 +49,11 @@ pub const MAX_NESTING: usize = 64;
 /// Most nodes (numbers, names, operations) in one expression.
 pub const MAX_NODES: usize = 1000;
 
+/// `x` unchanged, hidden from the optimiser: a loop over `0..opaque(n)` in cold code is not
+/// unrolled or vectorised (wasm size), where a constant trip count would be.
+pub(crate) fn opaque<T>(x: T) -> T {
+    std::hint::black_box(x)
+}
+
 /// Highest derivative order of the jets (truncated Taylor series).
 pub const MAX_JET_ORDER: usize = 8;

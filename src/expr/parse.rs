@@ -17,9 +17,9 @@
 //! [`MAX_NESTING`], and the tree has at most [`MAX_NODES`] nodes. The loops each consume a
 //! token per turn, so they end with the text.
 
-use super::ast::{BinOp, Expr, Func, Node, Span};
+use super::ast::{boxed, BinOp, Expr, Func, Node, Span};
 use super::error::{ExprError, Problem};
-use super::lex::{is_letter, is_subscript, lex, Kind, Token, Word};
+use super::lex::{exact_decimal, is_letter, is_subscript, lex, Kind, Token, Word};
 use super::{MAX_LENGTH, MAX_NESTING, MAX_NODES};
 
 /// The tree of `text`, whose names other than `t`, `pi`, `π`, `e` and the functions must be
@@ -82,8 +82,16 @@ struct Parser<'a, 'p> {
     nodes: usize,
 }
 
+/// The error at `span` (out of line, as [`fail`]: errors are the cold path).
+#[inline(never)]
 fn err(span: Span, problem: Problem) -> Fail {
-    Box::new(ExprError::at(span.start, span.end, problem))
+    fail(ExprError::at(span.start, span.end, problem))
+}
+
+/// `Box::new(e)`, one copy for every error site.
+#[inline(never)]
+fn fail(e: ExprError) -> Fail {
+    Box::new(e)
 }
 
 impl<'a, 'p> Parser<'a, 'p> {
@@ -98,10 +106,10 @@ impl<'a, 'p> Parser<'a, 'p> {
                 length,
                 max: MAX_LENGTH,
             };
-            return Err(Box::new(ExprError::at(MAX_LENGTH, length, problem)));
+            return Err(fail(ExprError::at(MAX_LENGTH, length, problem)));
         }
         if text.trim().is_empty() {
-            return Err(Box::new(ExprError::at(0, 0, Problem::Empty {})));
+            return Err(fail(ExprError::at(0, 0, Problem::Empty {})));
         }
         let mut parser = Parser {
             text,
@@ -126,7 +134,8 @@ impl<'a, 'p> Parser<'a, 'p> {
         }
     }
 
-    /// The next token (the error of a bad one).
+    /// The next token (the error of a bad one). Out of line: called from every rule.
+    #[inline(never)]
     fn peek(&self) -> Result<Token<'a>, Fail> {
         let token = self
             .tokens
@@ -140,7 +149,7 @@ impl<'a, 'p> Parser<'a, 'p> {
                 spaced: false,
             });
         match token.problem() {
-            Some(e) => Err(Box::new(e)),
+            Some(e) => Err(fail(e)),
             None => Ok(token),
         }
     }
@@ -171,7 +180,7 @@ impl<'a, 'p> Parser<'a, 'p> {
 
     fn binary(&mut self, op: BinOp, a: Expr, b: Expr) -> Parsed {
         let span = a.span.to(b.span);
-        self.node(Node::Binary(op, Box::new(a), Box::new(b)), span)
+        self.node(Node::Binary(op, boxed(a), boxed(b)), span)
     }
 
     /// One level deeper (at `span`, the token that opens it), within [`MAX_NESTING`].
@@ -224,6 +233,7 @@ impl<'a, 'p> Parser<'a, 'p> {
     /// The error for an implicit product after `start..inner` (`1/2` with `inner` = `2`,
     /// `e^2` with `inner` = `2`): parse the rest of the product to find its end, then offer
     /// both readings.
+    #[inline(never)]
     fn ambiguous(&mut self, start: usize, inner: Span) -> Fail {
         let mut end = inner.end;
         while let Ok(Token {
@@ -299,6 +309,7 @@ impl<'a, 'p> Parser<'a, 'p> {
     }
 
     /// A number where an operator is needed: `t2` (right after a name) or `2 3`.
+    #[inline(never)]
     fn number_after_operand(&self, number: Token) -> Fail {
         match self.pos.checked_sub(1).and_then(|i| self.tokens.get(i)) {
             Some(name) if matches!(name.kind, Kind::Name(_)) && !number.spaced => {
@@ -325,7 +336,7 @@ impl<'a, 'p> Parser<'a, 'p> {
         let operand = self.unary()?;
         self.leave();
         let span = minus.span.to(operand.span);
-        self.node(Node::Neg(Box::new(operand)), span)
+        self.node(Node::Neg(boxed(operand)), span)
     }
 
     fn power(&mut self) -> Parsed {
@@ -348,7 +359,7 @@ impl<'a, 'p> Parser<'a, 'p> {
     fn primary(&mut self) -> Parsed {
         let token = self.peek()?;
         let leaf = match token.kind {
-            Kind::Number { value, exact } => Node::Number { value, exact },
+            Kind::Number { value } => Node::number(value, exact_decimal(token.text)),
             Kind::Name(Word::T) => Node::T,
             Kind::Name(Word::Constant(c)) => Node::Constant(c),
             Kind::Name(Word::Letter) => Node::Param(self.parameter(token)?),
@@ -431,9 +442,9 @@ impl<'a, 'p> Parser<'a, 'p> {
         let argument = self.expr()?;
         self.leave();
         let span = name.span.to(self.close(open)?);
-        let call = self.node(Node::Call(f, Box::new(argument)), span)?;
+        let call = self.node(Node::Call(f, boxed(argument)), span)?;
         match power {
-            Some(n) => self.node(Node::Binary(BinOp::Pow, Box::new(call), Box::new(n)), span),
+            Some(n) => self.node(Node::Binary(BinOp::Pow, boxed(call), boxed(n)), span),
             None => Ok(call),
         }
     }
@@ -443,10 +454,11 @@ impl<'a, 'p> Parser<'a, 'p> {
     fn function_power(&mut self, f: Func, name: Token) -> Parsed {
         let token = self.peek()?;
         let end = match token.kind {
-            Kind::Number { value, exact } => {
+            Kind::Number { value } => {
+                let exact = exact_decimal(token.text);
                 if exact.is_some_and(|r| r.is_integer() && r.numer() >= 1) {
                     self.bump();
-                    return self.node(Node::Number { value, exact }, token.span);
+                    return self.node(Node::number(value, exact), token.span);
                 }
                 token.span
             }

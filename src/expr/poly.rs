@@ -118,7 +118,7 @@ fn build(e: &Expr, params: &[f64], depth: usize) -> Option<Polynomial> {
     }
     let depth = depth + 1;
     let w = match &e.node {
-        Node::Number { value, exact } => Polynomial::constant(*value, *exact),
+        Node::Number { value, exact } => Polynomial::constant(*value, exact.as_deref().copied()),
         Node::T => Polynomial {
             coefficients: vec![0.0, 1.0],
             exact: Some(vec![Rational::ZERO, Rational::ONE]),
@@ -145,8 +145,13 @@ fn build(e: &Expr, params: &[f64], depth: usize) -> Option<Polynomial> {
                     if y == 0.0 {
                         return None;
                     }
+                    // Loops, not `collect::<Option<_>>()`: smaller in the wasm.
                     let q = a.exact.as_ref().zip(exact).and_then(|(q, r)| {
-                        q.iter().map(|x| x.checked_div(r)).collect::<Option<_>>()
+                        let mut out = Vec::with_capacity(q.len());
+                        for x in q {
+                            out.push(x.checked_div(r)?);
+                        }
+                        Some(out)
                     });
                     Polynomial {
                         coefficients: a.coefficients.iter().map(|x| x / y).collect(),
@@ -215,12 +220,12 @@ impl Polynomial {
     pub fn derivative(&self) -> Polynomial {
         let k = |k: usize| Rational::integer(k as i128);
         let exact = self.exact.as_ref().and_then(|q| {
-            let d = q
-                .iter()
-                .enumerate()
-                .skip(1)
-                .map(|(i, c)| c.checked_mul(k(i)));
-            d.chain([Some(Rational::ZERO)]).collect::<Option<Vec<_>>>()
+            let mut d = Vec::with_capacity(q.len());
+            for (i, c) in q.iter().enumerate().skip(1) {
+                d.push(c.checked_mul(k(i))?);
+            }
+            d.push(Rational::ZERO);
+            Some(d)
         });
         let f = self.coefficients.iter().enumerate().skip(1);
         let f = f.map(|(i, c)| i as f64 * c).chain([0.0]).collect();
@@ -278,14 +283,16 @@ pub fn bernstein_exact(c: &[Rational], a: Rational, b: Rational) -> Option<Vec<R
         *x = x.checked_mul(scale)?;
         scale = scale.checked_mul(h)?;
     }
-    (0..c.len())
-        .map(|i| {
-            (0..=i).try_fold(Rational::ZERO, |acc, j| {
-                let w = binomial(i, j)?.checked_div(binomial(n, j)?)?;
-                acc.checked_add(w.checked_mul(p[j])?)
-            })
-        })
-        .collect()
+    let mut out = Vec::with_capacity(c.len());
+    for i in 0..c.len() {
+        let mut acc = Rational::ZERO;
+        for (j, pj) in p.iter().enumerate().take(i + 1) {
+            let w = binomial(i, j)?.checked_div(binomial(n, j)?)?;
+            acc = acc.checked_add(w.checked_mul(*pj)?)?;
+        }
+        out.push(acc);
+    }
+    Some(out)
 }
 
 /// [`bernstein_exact`] in f64 (the same steps: Taylor shift, scaling, the binomial sums).

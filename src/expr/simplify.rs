@@ -13,7 +13,7 @@
 //!
 //! Constants (π, e), parameters and functions of numbers are not folded: ln 2 stays ln 2.
 
-use super::ast::{BinOp, Expr, Func, Node};
+use super::ast::{boxed, BinOp, Expr, Func, Node};
 use super::rational::Rational;
 
 /// How deep the recursions over a tree in the symbolic family (simplification, derivative,
@@ -55,7 +55,7 @@ impl Num {
         match &e.node {
             Node::Number { value, exact } => Some(Num {
                 value: *value,
-                exact: *exact,
+                exact: exact.as_deref().copied(),
             }),
             Node::Neg(a) => match &a.node {
                 Node::Number { .. } => Num::of(a)?.neg(),
@@ -148,7 +148,7 @@ impl Num {
         let magnitude = self.abs();
         let number = Expr::number(magnitude.value, magnitude.exact);
         if self.is_negative() {
-            Expr::new(Node::Neg(Box::new(number)), Default::default())
+            Expr::new(Node::Neg(boxed(number)), Default::default())
         } else {
             number
         }
@@ -159,8 +159,9 @@ fn node(node: Node) -> Expr {
     Expr::new(node, Default::default())
 }
 
+#[inline(never)] // the tree builders stay out of line (wasm size)
 fn binary(op: BinOp, a: Expr, b: Expr) -> Expr {
-    node(Node::Binary(op, Box::new(a), Box::new(b)))
+    node(Node::Binary(op, boxed(a), boxed(b)))
 }
 
 /// a + b, simplified.
@@ -206,7 +207,7 @@ pub(crate) fn neg(a: Expr) -> Expr {
     }
     match a.node {
         Node::Neg(inner) => *inner,
-        other => node(Node::Neg(Box::new(node(other)))),
+        other => node(Node::Neg(boxed(node(other)))),
     }
 }
 
@@ -271,7 +272,7 @@ pub(crate) fn mul(a: Expr, b: Expr) -> Expr {
         attach(magnitude, rest, 0)
     };
     if c.is_negative() {
-        node(Node::Neg(Box::new(product)))
+        node(Node::Neg(boxed(product)))
     } else {
         product
     }
@@ -322,8 +323,9 @@ pub(crate) fn pow(a: Expr, b: Expr) -> Expr {
 }
 
 /// f(a) (functions are not folded).
+#[inline(never)]
 pub(crate) fn call(f: Func, a: Expr) -> Expr {
-    node(Node::Call(f, Box::new(a)))
+    node(Node::Call(f, boxed(a)))
 }
 
 /// The tree simplified by the rules above, bottom-up; sub-trees deeper than the recursion cap

@@ -42,7 +42,9 @@ fn paren(s: &str) -> String {
 /// Whether the text ends with a control word (`\pi`), so a letter after it needs a space.
 fn ends_with_control_word(s: &str) -> bool {
     let letters = s.len() - s.trim_end_matches(|c: char| c.is_ascii_alphabetic()).len();
-    letters > 0 && s[..s.len() - letters].ends_with('\\')
+    letters > 0
+        && s.get(..s.len() - letters)
+            .is_some_and(|head| head.ends_with('\\'))
 }
 
 /// `a` then `b`, with a space when `b` would otherwise extend a control word at the end of `a`.
@@ -192,7 +194,7 @@ fn bare_argument(e: &Expr) -> bool {
     match &e.node {
         Node::T | Node::Param(_) | Node::Constant(_) => true,
         Node::Number { value, exact } => {
-            *value >= 0.0 && exact.is_none_or(|r| decimal(r).is_some())
+            *value >= 0.0 && exact.as_deref().is_none_or(|r| decimal(*r).is_some())
         }
         _ => false,
     }
@@ -241,7 +243,7 @@ impl Tex<'_> {
         }
         let d = depth + 1;
         match &e.node {
-            Node::Number { value, exact } => number(*value, *exact),
+            Node::Number { value, exact } => number(*value, exact.as_deref().copied()),
             Node::T => "t".into(),
             Node::Param(i) => self.names.get(*i).map_or("?".into(), |s| name(s)),
             Node::Constant(Constant::Pi) => "\\pi".into(),

@@ -59,10 +59,12 @@ type Bounds = [(f64, Option<Rational>); 2];
 const JOIN_RELATIVE: f64 = 1e-12;
 
 /// A field's tree, or its error placed in the piece and field.
+#[inline(never)]
 fn parse_field(text: &str, names: &[&str], piece: usize, field: &str) -> Result<expr::Expr> {
     expr::parse(text, names).map_err(|e| Error::from(e.in_field(piece, field)))
 }
 
+#[inline(never)]
 fn place(piece: usize, field: &str, problem: Problem) -> Error {
     ExprError::at(0, 0, problem).in_field(piece, field).into()
 }
@@ -328,7 +330,7 @@ impl ParametricCurve {
     pub fn derivative_into(&self, t: f64, order: usize, out: &mut [f64]) -> Result<()> {
         check_order(order)?;
         let i = self.piece_at(t)?;
-        self.piece_derivatives(i, t, order, |k, c, v| {
+        self.piece_derivatives(i, t, order, &mut |k, c, v| {
             if k == order {
                 if let Some(o) = out.get_mut(c) {
                     *o = v;
@@ -352,7 +354,7 @@ impl ParametricCurve {
         i: usize,
         t: f64,
         order: usize,
-        mut f: impl FnMut(usize, usize, f64),
+        f: &mut dyn FnMut(usize, usize, f64),
     ) -> Result<()> {
         let p = self.piece(i)?;
         let mut jet = [0.0; expr::MAX_JET_ORDER + 1];

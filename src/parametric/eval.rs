@@ -53,6 +53,7 @@ fn reads_parameters(e: &Expr) -> bool {
 
 impl Coordinate {
     /// Compiles `tree`; `values` are the parameters' current values (for the polynomial form).
+    #[inline(never)]
     pub(crate) fn new(tree: Expr, values: &[f64]) -> Self {
         let tape = Tape::compile(&tree);
         let poly = Polynomial::from_expr(&tree, values);
@@ -83,8 +84,22 @@ impl Coordinate {
         (value, exact)
     }
 
+    /// `f` with the coordinate's scratch space (a fresh one if it is in use: one call site
+    /// of each evaluator, not two).
+    #[inline(always)]
+    fn with_scratch<R>(&self, f: impl FnOnce(&mut Scratch) -> R) -> R {
+        let mut fresh = None;
+        let mut held = self.scratch.try_borrow_mut().ok();
+        let s = match held.as_deref_mut() {
+            Some(s) => s,
+            None => fresh.insert(Scratch::new()),
+        };
+        f(s)
+    }
+
     /// x(t).
     pub(crate) fn value(&self, t: f64, values: &[f64]) -> f64 {
+        // Two direct calls here (the hot path), not through `with_scratch`.
         match self.scratch.try_borrow_mut() {
             Ok(mut s) => self.tape.eval(t, values, &mut s),
             Err(_) => self.tape.eval(t, values, &mut Scratch::new()),
@@ -93,10 +108,7 @@ impl Coordinate {
 
     /// x(t), x′(t), …, x^(n)(t) into `out` (`n + 1` numbers), by automatic differentiation.
     pub(crate) fn jet(&self, t: f64, n: usize, values: &[f64], out: &mut [f64]) {
-        match self.scratch.try_borrow_mut() {
-            Ok(mut s) => self.tape.eval_jet(t, n, values, &mut s, out),
-            Err(_) => self.tape.eval_jet(t, n, values, &mut Scratch::new(), out),
-        }
+        self.with_scratch(|s| self.tape.eval_jet(t, n, values, s, out))
     }
 
     /// Enclosures of `x, x′, x″` over `[lo, hi]` (`order ≤ 2`).
@@ -108,14 +120,7 @@ impl Coordinate {
         values: &[f64],
         out: &mut [Interval],
     ) -> Proven {
-        let flags = match self.scratch.try_borrow_mut() {
-            Ok(mut s) => self
-                .tape
-                .eval_interval_jet(lo, hi, order, values, &mut s, out),
-            Err(_) => self
-                .tape
-                .eval_interval_jet(lo, hi, order, values, &mut Scratch::new(), out),
-        };
-        flags.into()
+        self.with_scratch(|s| self.tape.eval_interval_jet(lo, hi, order, values, s, out))
+            .into()
     }
 }

@@ -32,7 +32,7 @@ impl ParametricCurve {
     pub fn frame(&self, t: f64) -> Result<Frame> {
         let i = self.piece_at(t)?;
         let mut d = [DVec3::ZERO; 4];
-        self.piece_derivatives(i, t, 3, |k, c, v| {
+        self.piece_derivatives(i, t, 3, &mut |k, c, v| {
             if let Some(p) = d.get_mut(k) {
                 p[c] = v;
             }

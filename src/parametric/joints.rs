@@ -18,7 +18,7 @@
 
 use super::curve::ParametricCurve;
 use super::eval::{Coordinate, Interval};
-use crate::expr::{self, Rational};
+use crate::expr::{self, opaque, Rational};
 
 /// The verdict at one joint.
 #[derive(Clone, Debug, PartialEq)]
@@ -49,6 +49,15 @@ const EPS: f64 = 1e-9;
 /// Orders compared for C^k (the verdict stops at 3) and searched for the first difference.
 const C_MAX: usize = 3;
 
+/// Derivatives 0..=MAX_JET_ORDER at a joint.
+const N: usize = expr::MAX_JET_ORDER + 1;
+
+/// A vector of a 2D or 3D curve, padded with zeros to three coordinates (zeros change no
+/// distance, dot product or comparison; fixed arrays keep the wasm small).
+type V = [f64; 3];
+/// The same in exact fractions.
+type Q = [Rational; 3];
+
 impl ParametricCurve {
     /// The verdict at every joint, in order (`pieceCount − 1` entries).
     pub fn joints(&self) -> Vec<Joint> {
@@ -57,18 +66,16 @@ impl ParametricCurve {
             .collect()
     }
 
-    /// Piece `i`'s and piece `i + 1`'s derivatives 0..=order at their joint (dim each).
-    fn sides(&self, i: usize, t: f64, order: usize) -> [Vec<Vec<f64>>; 2] {
-        let mut sides = [
-            vec![vec![0.0; self.dim]; order + 1],
-            vec![vec![0.0; self.dim]; order + 1],
-        ];
-        for (s, side) in sides.iter_mut().enumerate() {
-            let _ = self.piece_derivatives(i + s, t, order, |k, c, v| {
-                if let Some(x) = side.get_mut(k).and_then(|d| d.get_mut(c)) {
-                    *x = v;
-                }
-            });
+    /// Piece `i`'s and piece `i + 1`'s derivatives 0..=MAX_JET_ORDER at their joint.
+    fn sides(&self, i: usize, t: f64) -> [[V; N]; 2] {
+        let mut sides = [[[0.0; 3]; N]; 2];
+        for (s, side) in opaque(&mut sides[..]).iter_mut().enumerate() {
+            let _ =
+                self.piece_derivatives(i + s, t, opaque(expr::MAX_JET_ORDER), &mut |k, c, v| {
+                    if let Some(x) = side.get_mut(k).and_then(|d| d.get_mut(c)) {
+                        *x = v;
+                    }
+                });
         }
         sides
     }
@@ -78,7 +85,7 @@ impl ParametricCurve {
             return Joint::none(f64::NAN);
         };
         let t = right.from.value;
-        let [l, r] = self.sides(i, t, expr::MAX_JET_ORDER);
+        let [l, r] = self.sides(i, t);
         let exact = match right.from.exact {
             Some(tj) => exact_verdict(&left.coords, &right.coords, tj),
             None => None,
@@ -94,30 +101,28 @@ impl ParametricCurve {
                 right: None,
                 disjoint: v.order.is_some(),
             },
-            None => self.float_verdict(i, t, &l, &r),
+            None => self.float_verdict(i, t, opaque(&l[..]), opaque(&r[..])),
         };
         if let Some(k) = joint.order {
-            joint.left = l.get(k).cloned();
-            joint.right = r.get(k).cloned();
+            let value = |side: &[V; N]| {
+                side.get(k)
+                    .and_then(|v| v.get(..self.dim))
+                    .map(<[f64]>::to_vec)
+            };
+            joint.left = value(&l);
+            joint.right = value(&r);
         }
         joint
     }
 
     /// The verdict from f64 jets (see the module's comment for the tolerances).
-    fn float_verdict(&self, i: usize, t: f64, l: &[Vec<f64>], r: &[Vec<f64>]) -> Joint {
+    fn float_verdict(&self, i: usize, t: f64, l: &[V], r: &[V]) -> Joint {
         let (time, space) = self.scales(i);
-        let same = |k: usize| -> bool {
-            match (l.get(k), r.get(k)) {
-                (Some(a), Some(b)) => {
-                    let d = dist(a, b);
-                    d.is_finite() && d * time.powi(k as i32) <= EPS * space
-                }
-                _ => false,
-            }
-        };
-        let order = (0..=expr::MAX_JET_ORDER).find(|&k| !same(k));
-        let both_polynomial = self.same_polynomials(i);
-        let c = if both_polynomial {
+        let order = l.iter().zip(r).zip(0..).position(|((a, b), k)| {
+            let d = dist(a, b);
+            !(d.is_finite() && d * time.powi(k) <= EPS * space)
+        });
+        let c = if self.same_polynomials(i) {
             f64::INFINITY
         } else {
             match order {
@@ -128,7 +133,7 @@ impl ParametricCurve {
         let g = if c.is_infinite() {
             c
         } else {
-            c.max(geometric(l, r, space, i) as f64)
+            c.max(geometric(l, r, space) as f64)
         };
         let disjoint = order.is_some_and(|k| k <= 2 && self.disjoint_at(i, t, k));
         Joint {
@@ -174,24 +179,22 @@ impl ParametricCurve {
     /// 1 for a curve that stays at one point).
     fn scales(&self, i: usize) -> (f64, f64) {
         let mut time = f64::INFINITY;
-        let mut lo = vec![f64::INFINITY; self.dim];
-        let mut hi = vec![f64::NEG_INFINITY; self.dim];
-        let mut point = vec![0.0; self.dim];
-        for j in [i, i + 1] {
-            let Some(p) = self.pieces.get(j) else {
-                continue;
-            };
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        let both = self.pieces.get(i..(i + 2).min(self.pieces.len()));
+        for p in opaque(both.unwrap_or_default()) {
             let (a, b) = (p.from.value, p.to.value);
             time = time.min(b - a);
-            for s in 0..=32 {
+            for s in 0..=opaque(32) {
                 let t = a + (b - a) * f64::from(s) / 32.0;
+                let mut point = [0.0; 3];
                 for (o, c) in point.iter_mut().zip(&p.coords) {
                     *o = c.value(t, &self.values);
                 }
                 if point.iter().all(|v| v.is_finite()) {
-                    for ((l, h), v) in lo.iter_mut().zip(hi.iter_mut()).zip(&point) {
-                        *l = l.min(*v);
-                        *h = h.max(*v);
+                    for ((l, h), v) in lo.iter_mut().zip(hi.iter_mut()).zip(point) {
+                        *l = l.min(v);
+                        *h = h.max(v);
                     }
                 }
             }
@@ -224,6 +227,7 @@ impl ParametricCurve {
 }
 
 /// The enclosure of the k-th derivative of `c` at the point t (k ≤ 2).
+#[inline(never)]
 fn enclose(c: &Coordinate, t: f64, k: usize, values: &[f64]) -> Option<Interval> {
     let mut out = [Interval::point(0.0); 3];
     let flags = c.interval_jet(t, t, 2, values, &mut out);
@@ -233,24 +237,20 @@ fn enclose(c: &Coordinate, t: f64, k: usize, values: &[f64]) -> Option<Interval>
     out.get(k).copied()
 }
 
-fn dist(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y) * (x - y))
-        .sum::<f64>()
-        .sqrt()
+fn dot(a: &V, b: &V) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn norm(a: &[f64]) -> f64 {
-    a.iter().map(|x| x * x).sum::<f64>().sqrt()
+fn norm(a: &V) -> f64 {
+    dot(a, a).sqrt()
 }
 
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+fn dist(a: &V, b: &V) -> f64 {
+    norm(&[a[0] - b[0], a[1] - b[1], a[2] - b[2]])
 }
 
 /// The largest k ≤ 3 with G^k from the f64 derivatives (−1 when the pieces do not meet).
-fn geometric(l: &[Vec<f64>], r: &[Vec<f64>], space: f64, _piece: usize) -> i32 {
+fn geometric(l: &[V], r: &[V], space: f64) -> i32 {
     let (Some(l0), Some(r0)) = (l.first(), r.first()) else {
         return -1;
     };
@@ -259,19 +259,20 @@ fn geometric(l: &[Vec<f64>], r: &[Vec<f64>], space: f64, _piece: usize) -> i32 {
         return -1;
     }
     // G¹: the directions of the first non-vanishing derivative on each side.
-    let dir = |side: &[Vec<f64>]| -> Option<Vec<f64>> {
+    let dir = |side: &[V]| -> Option<V> {
         let lead = side.iter().skip(1).find(|d| norm(d) > 0.0)?;
         let n = norm(lead);
-        Some(lead.iter().map(|x| x / n).collect())
+        Some(lead.map(|x| x / n))
     };
     let (Some(tl), Some(tr)) = (dir(l), dir(r)) else {
         return 0;
     };
-    if dist(&tl, &tr).is_nan() || dist(&tl, &tr) > EPS {
+    let d1 = dist(&tl, &tr);
+    if d1.is_nan() || d1 > EPS {
         return 0;
     }
     // G², G³ need a regular point on both sides.
-    let regular = |side: &[Vec<f64>]| side.get(1).is_some_and(|v| norm(v) > 0.0);
+    let regular = |side: &[V]| side.get(1).is_some_and(|v| norm(v) > 0.0);
     if !(regular(l) && regular(r)) {
         return 1;
     }
@@ -290,30 +291,20 @@ fn geometric(l: &[Vec<f64>], r: &[Vec<f64>], space: f64, _piece: usize) -> i32 {
 /// `(κN, d(κN)/ds)` from v, a, j: with `s = v·v`, `q = a·v`, `κN = (a s − q v)/s²` and
 /// `d(κN)/dt = [(j s + 2 q a − (j·v + a·a) v − q a) s² − (a s − q v)·2s·2q]/s⁴`, divided by
 /// `|v|` for the arc length.
-fn curvature_vector(side: &[Vec<f64>]) -> (Vec<f64>, Vec<f64>) {
-    let get = |k: usize| side.get(k).cloned().unwrap_or_default();
-    let (v, a, j) = (get(1), get(2), get(3));
-    let s = dot(&v, &v);
-    let q = dot(&a, &v);
-    let dq = dot(&j, &v) + dot(&a, &a);
-    let n: Vec<f64> = a.iter().zip(&v).map(|(a, v)| a * s - q * v).collect();
-    let k: Vec<f64> = n.iter().map(|x| x / (s * s)).collect();
-    let dn: Vec<f64> = (0..v.len())
-        .map(|c| {
-            let (vc, ac, jc) = (
-                v[c],
-                a.get(c).copied().unwrap_or(0.0),
-                j.get(c).copied().unwrap_or(0.0),
-            );
-            jc * s + ac * 2.0 * q - dq * vc - q * ac
-        })
-        .collect();
+fn curvature_vector(side: &[V]) -> (V, V) {
+    let get = |k: usize| side.get(k).copied().unwrap_or_default();
+    let (v, a, j) = (&get(1), &get(2), &get(3));
+    let s = dot(v, v);
+    let q = dot(a, v);
+    let dq = dot(j, v) + dot(a, a);
     let speed = s.sqrt();
-    let dk: Vec<f64> = dn
-        .iter()
-        .zip(&n)
-        .map(|(dn, n)| (dn * s - n * 4.0 * q) / (s * s * s) / speed)
-        .collect();
+    let (mut k, mut dk) = ([0.0; 3], [0.0; 3]);
+    for c in 0..3 {
+        let n = a[c] * s - q * v[c];
+        let dn = j[c] * s + a[c] * 2.0 * q - dq * v[c] - q * a[c];
+        k[c] = n / (s * s);
+        dk[c] = (dn * s - n * 4.0 * q) / (s * s * s) / speed;
+    }
     (k, dk)
 }
 
@@ -327,24 +318,16 @@ struct Exact {
 /// The verdict in exact fractions when every coordinate of both pieces is a polynomial with
 /// rational coefficients; `None` otherwise (or when a fraction overflows).
 fn exact_verdict(left: &[Coordinate], right: &[Coordinate], t: Rational) -> Option<Exact> {
-    let mut l: Vec<Vec<Rational>> = Vec::new(); // per order, per coordinate
-    let mut r: Vec<Vec<Rational>> = Vec::new();
+    let mut sides = [[[Rational::ZERO; 3]; N]; 2]; // per side, per order, per coordinate
     let mut same_poly = true;
-    for (x, y) in left.iter().zip(right) {
+    for (c, (x, y)) in left.iter().zip(right).enumerate() {
         let p = x.poly.as_ref()?.exact.as_ref()?;
         let q = y.poly.as_ref()?.exact.as_ref()?;
         same_poly &= trimmed(p) == trimmed(q);
-        for (side, poly) in [(&mut l, p), (&mut r, q)] {
-            let ds = exact_derivatives(poly, t, expr::MAX_JET_ORDER)?;
-            for (k, d) in ds.into_iter().enumerate() {
-                if side.len() <= k {
-                    side.push(Vec::new());
-                }
-                side.get_mut(k)?.push(d);
-            }
+        for (side, poly) in sides.iter_mut().zip([p, q]) {
+            exact_derivatives(poly, t, side, c)?;
         }
     }
-    let order = (0..=expr::MAX_JET_ORDER).find(|&k| l.get(k) != r.get(k));
     if same_poly {
         return Some(Exact {
             c: f64::INFINITY,
@@ -352,11 +335,14 @@ fn exact_verdict(left: &[Coordinate], right: &[Coordinate], t: Rational) -> Opti
             order: None,
         });
     }
+    let [l, r] = &sides;
+    let (l, r) = (opaque(&l[..]), opaque(&r[..]));
+    let order = l.iter().zip(r).position(|(a, b)| !same(a, b));
     let c = match order {
         Some(k) if k <= C_MAX => k as f64 - 1.0,
         _ => C_MAX as f64,
     };
-    let g = c.max(f64::from(exact_geometric(&l, &r)?));
+    let g = c.max(f64::from(exact_geometric(l, r)?));
     Some(Exact { c, g, order })
 }
 
@@ -365,37 +351,45 @@ fn trimmed(p: &[Rational]) -> &[Rational] {
     p.get(..n).unwrap_or(p)
 }
 
-/// `p^(k)(t)` for k = 0..=max, exactly.
-fn exact_derivatives(p: &[Rational], t: Rational, max: usize) -> Option<Vec<Rational>> {
+/// `p^(k)(t)` for k = 0..N into coordinate `c` of `out[k]`, exactly.
+fn exact_derivatives(p: &[Rational], t: Rational, out: &mut [Q; N], c: usize) -> Option<()> {
     let mut coefficients = p.to_vec();
-    let mut out = Vec::with_capacity(max + 1);
-    for _ in 0..=max {
+    for d in out.iter_mut() {
         let mut acc = Rational::ZERO;
-        for c in coefficients.iter().rev() {
-            acc = acc.checked_mul(t)?.checked_add(*c)?;
+        for a in coefficients.iter().rev() {
+            acc = acc.checked_mul(t)?.checked_add(*a)?;
         }
-        out.push(acc);
-        let mut next = Vec::with_capacity(coefficients.len().saturating_sub(1));
-        for (j, c) in coefficients.iter().enumerate().skip(1) {
-            next.push(c.checked_mul(Rational::integer(j as i128))?);
+        *d.get_mut(c)? = acc;
+        // The derivative's coefficients: j·a_j moved down one place.
+        for j in 1..coefficients.len() {
+            let a = coefficients
+                .get(j)?
+                .checked_mul(Rational::integer(j as i128))?;
+            *coefficients.get_mut(j - 1)? = a;
         }
-        coefficients = next;
+        coefficients.pop();
     }
-    Some(out)
+    Some(())
 }
 
-fn rdot(a: &[Rational], b: &[Rational]) -> Option<Rational> {
+fn rdot(a: &Q, b: &Q) -> Option<Rational> {
     a.iter().zip(b).try_fold(Rational::ZERO, |acc, (x, y)| {
         acc.checked_add(x.checked_mul(*y)?)
     })
 }
 
-fn is_zero(v: &[Rational]) -> bool {
+/// `a = b` (out of line: one copy of the i128 comparisons).
+#[inline(never)]
+fn same(a: &Q, b: &Q) -> bool {
+    a == b
+}
+
+fn is_zero(v: &Q) -> bool {
     v.iter().all(|x| x.is_zero())
 }
 
 /// `u = λ w` with λ > 0 (same direction), exactly; λ when so.
-fn positive_multiple(u: &[Rational], w: &[Rational]) -> Option<Option<Rational>> {
+fn positive_multiple(u: &Q, w: &Q) -> Option<Option<Rational>> {
     // λ from the first non-zero coordinate of w.
     let Some(k) = w.iter().position(|x| !x.is_zero()) else {
         return Some(None);
@@ -413,11 +407,11 @@ fn positive_multiple(u: &[Rational], w: &[Rational]) -> Option<Option<Rational>>
 }
 
 /// G^k in exact arithmetic (0 ≤ k ≤ 3; −1 when the pieces do not meet); `None` on overflow.
-fn exact_geometric(l: &[Vec<Rational>], r: &[Vec<Rational>]) -> Option<i32> {
-    if l.first()? != r.first()? {
+fn exact_geometric(l: &[Q], r: &[Q]) -> Option<i32> {
+    if !same(l.first()?, r.first()?) {
         return Some(-1);
     }
-    let lead = |side: &[Vec<Rational>]| side.iter().skip(1).position(|d| !is_zero(d));
+    let lead = |side: &[Q]| side.iter().skip(1).position(|d| !is_zero(d));
     let (Some(a), Some(b)) = (lead(l), lead(r)) else {
         return Some(0);
     };
@@ -432,7 +426,7 @@ fn exact_geometric(l: &[Vec<Rational>], r: &[Vec<Rational>]) -> Option<i32> {
     let lambda = positive_multiple(r.get(1)?, l.get(1)?)??;
     let (kl, dkl) = exact_curvature(l)?;
     let (kr, dkr) = exact_curvature(r)?;
-    if kl != kr {
+    if !same(&kl, &kr) {
         return Some(1);
     }
     // d(κN)/ds = (d(κN)/dt)/|v|: with |v_r| = λ|v_l|, compare λ·d(κN)/dt|_l with d(κN)/dt|_r.
@@ -445,30 +439,30 @@ fn exact_geometric(l: &[Vec<Rational>], r: &[Vec<Rational>]) -> Option<i32> {
 }
 
 /// `(κN, d(κN)/dt)` exactly (no square root: see [`curvature_vector`]).
-fn exact_curvature(side: &[Vec<Rational>]) -> Option<(Vec<Rational>, Vec<Rational>)> {
+fn exact_curvature(side: &[Q]) -> Option<(Q, Q)> {
     let (v, a, j) = (side.get(1)?, side.get(2)?, side.get(3)?);
     let s = rdot(v, v)?;
     let q = rdot(a, v)?;
     let dq = rdot(j, v)?.checked_add(rdot(a, a)?)?;
     let s2 = s.checked_mul(s)?;
-    let mut k = Vec::with_capacity(v.len());
-    let mut dk = Vec::with_capacity(v.len());
+    let s3 = s2.checked_mul(s)?;
+    let (mut k, mut dk) = ([Rational::ZERO; 3], [Rational::ZERO; 3]);
     let two = Rational::integer(2);
     let four = Rational::integer(4);
-    for c in 0..v.len() {
-        let (vc, ac, jc) = (*v.get(c)?, *a.get(c)?, *j.get(c)?);
+    for c in 0..3 {
+        let (vc, ac, jc) = (v[c], a[c], j[c]);
         let n = ac.checked_mul(s)?.checked_sub(q.checked_mul(vc)?)?;
         let dn = jc
             .checked_mul(s)?
             .checked_add(ac.checked_mul(two)?.checked_mul(q)?)?
             .checked_sub(dq.checked_mul(vc)?)?
             .checked_sub(q.checked_mul(ac)?)?;
-        k.push(n.checked_div(s2)?);
+        k[c] = n.checked_div(s2)?;
         // d(n/s²)/dt = (dn·s − n·2s')/s³ with s' = 2q.
         let num = dn
             .checked_mul(s)?
             .checked_sub(n.checked_mul(four)?.checked_mul(q)?)?;
-        dk.push(num.checked_div(s2.checked_mul(s)?)?);
+        dk[c] = num.checked_div(s3)?;
     }
     Some((k, dk))
 }

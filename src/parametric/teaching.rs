@@ -3,7 +3,7 @@
 
 use super::curve::ParametricCurve;
 use crate::bezier::BezierCurve;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::expr::{self, ExprError, Problem, Rational};
 use glam::{DVec2, DVec3};
 
@@ -55,14 +55,15 @@ impl ParametricCurve {
     pub fn bezier_form(&self, i: usize) -> Result<BezierForm> {
         let p = self.piece(i)?;
         let (from, to) = (p.from.value, p.to.value);
-        let polys: Vec<&expr::Polynomial> = p
-            .coords
-            .iter()
-            .map(|c| c.poly.as_ref())
-            .collect::<Option<_>>()
-            .ok_or_else(|| {
-                Error::from(ExprError::at(0, 0, Problem::NotPolynomial {}).in_piece(i))
-            })?;
+        let mut polys: Vec<&expr::Polynomial> = Vec::with_capacity(p.coords.len());
+        for c in &p.coords {
+            let Some(q) = c.poly.as_ref() else {
+                return Err(ExprError::at(0, 0, Problem::NotPolynomial {})
+                    .in_piece(i)
+                    .into());
+            };
+            polys.push(q);
+        }
         let degree = polys
             .iter()
             .map(|q| q.coefficients.len().saturating_sub(1))

@@ -21,14 +21,15 @@ fn get(object: &JsValue, key: &str) -> JsValue {
     Reflect::get(object, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
 }
 
-/// `object[key] = value`.
-fn set(object: &Object, key: &str, value: &JsValue) -> Result<(), ApiError> {
-    Reflect::set(object, &JsValue::from_str(key), value)
-        .map(|_| ())
-        .map_err(|_| ApiError::new("could not build the result object"))
+/// `object[key] = value` on a fresh plain object (which cannot refuse it: no setters, not
+/// frozen). Out of line: one copy for every result object.
+#[inline(never)]
+fn set(object: &Object, key: &str, value: &JsValue) {
+    let _ = Reflect::set(object, &JsValue::from_str(key), value);
 }
 
 /// A field of a piece: a string, or a finite number (written as JavaScript writes it).
+#[inline(never)]
 fn field_text(piece: usize, object: &JsValue, field: &str) -> Result<Option<String>, ApiError> {
     let value = get(object, field);
     if value.is_undefined() || value.is_null() {
@@ -55,6 +56,7 @@ fn field_text(piece: usize, object: &JsValue, field: &str) -> Result<Option<Stri
 }
 
 /// A required field, or the coded "missing-field" error placed in it.
+#[inline(never)]
 fn required(piece: usize, object: &JsValue, field: &str) -> Result<String, ApiError> {
     field_text(piece, object, field)?.ok_or_else(|| {
         Error::from(ExprError::at(0, 0, Problem::MissingField {}).in_field(piece, field)).into()
@@ -279,9 +281,9 @@ impl JsParametricCurve {
         };
         let plot = self.inner.plot(tolerance, bbox)?;
         let out = Object::new();
-        set(&out, "points", &numbers_value(&plot.points))?;
-        set(&out, "ts", &numbers_value(&plot.ts))?;
-        set(&out, "complete", &JsValue::from_bool(plot.complete))?;
+        set(&out, "points", &numbers_value(&plot.points));
+        set(&out, "ts", &numbers_value(&plot.ts));
+        set(&out, "complete", &JsValue::from_bool(plot.complete));
         Ok(out.into())
     }
 
@@ -290,19 +292,19 @@ impl JsParametricCurve {
         let out = Array::new();
         for j in self.inner.joints() {
             let o = Object::new();
-            set(&o, "t", &JsValue::from_f64(j.t))?;
-            set(&o, "c", &JsValue::from_f64(j.c))?;
-            set(&o, "g", &JsValue::from_f64(j.g))?;
-            set(&o, "exact", &JsValue::from_bool(j.exact))?;
-            set(&o, "disjoint", &JsValue::from_bool(j.disjoint))?;
+            set(&o, "t", &JsValue::from_f64(j.t));
+            set(&o, "c", &JsValue::from_f64(j.c));
+            set(&o, "g", &JsValue::from_f64(j.g));
+            set(&o, "exact", &JsValue::from_bool(j.exact));
+            set(&o, "disjoint", &JsValue::from_bool(j.disjoint));
             if let Some(k) = j.order {
-                set(&o, "order", &JsValue::from_f64(k as f64))?;
+                set(&o, "order", &JsValue::from_f64(k as f64));
             }
             if let Some(l) = &j.left {
-                set(&o, "left", &numbers_value(l))?;
+                set(&o, "left", &numbers_value(l));
             }
             if let Some(r) = &j.right {
-                set(&o, "right", &numbers_value(r))?;
+                set(&o, "right", &numbers_value(r));
             }
             out.push(&o);
         }
@@ -359,12 +361,12 @@ impl JsParametricCurve {
     pub fn frame(&self, t: f64) -> Result<JsValue, ApiError> {
         let f = self.inner.frame(t)?;
         let out = Object::new();
-        set(&out, "point", &numbers_value(&f.point))?;
-        set(&out, "tangent", &numbers_value(&f.tangent))?;
-        set(&out, "normal", &numbers_value(&f.normal))?;
-        set(&out, "binormal", &numbers_value(&f.binormal))?;
-        set(&out, "curvature", &JsValue::from_f64(f.curvature))?;
-        set(&out, "torsion", &JsValue::from_f64(f.torsion))?;
+        set(&out, "point", &numbers_value(&f.point));
+        set(&out, "tangent", &numbers_value(&f.tangent));
+        set(&out, "normal", &numbers_value(&f.normal));
+        set(&out, "binormal", &numbers_value(&f.binormal));
+        set(&out, "curvature", &JsValue::from_f64(f.curvature));
+        set(&out, "torsion", &JsValue::from_f64(f.torsion));
         Ok(out.into())
     }
 
@@ -374,14 +376,14 @@ impl JsParametricCurve {
         let out = Object::new();
         for (name, c) in ["x", "y", "z"].iter().zip(&tex.coords) {
             let o = Object::new();
-            set(&o, "expr", &JsValue::from_str(&c.expr))?;
+            set(&o, "expr", &JsValue::from_str(&c.expr));
             let text = |s: &Option<String>| s.as_deref().map_or(JsValue::NULL, JsValue::from_str);
-            set(&o, "d1", &text(&c.d1))?;
-            set(&o, "d2", &text(&c.d2))?;
-            set(&out, name, &o.into())?;
+            set(&o, "d1", &text(&c.d1));
+            set(&o, "d2", &text(&c.d2));
+            set(&out, name, &o.into());
         }
-        set(&out, "from", &JsValue::from_str(&tex.from))?;
-        set(&out, "to", &JsValue::from_str(&tex.to))?;
+        set(&out, "from", &JsValue::from_str(&tex.from));
+        set(&out, "to", &JsValue::from_str(&tex.to));
         Ok(out.into())
     }
 }

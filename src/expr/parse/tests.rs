@@ -185,7 +185,7 @@ fn numbers_keep_their_exact_decimal_value() {
     ];
     for (text, value, exact) in cases {
         let e = parse(text, &[]).unwrap();
-        assert_eq!(e.node, Node::Number { value, exact }, "{text:?}");
+        assert_eq!(e.node, Node::number(value, exact), "{text:?}");
         assert_eq!(e.span, Span::new(0, text.len()));
     }
 }
