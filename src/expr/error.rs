@@ -82,6 +82,11 @@ pub enum Problem {
         /// The number as typed.
         number: String,
     },
+    /// A number in scientific notation: `1e-3` (write `0.001`).
+    ScientificNotation {
+        /// The text: `"1e-3"`.
+        text: String,
+    },
     /// A number that is not one: `1.2.3`, `.`.
     InvalidNumber {
         /// The text.
@@ -151,6 +156,7 @@ impl Problem {
             Problem::FunctionPower { .. } => "function-power",
             Problem::AmbiguousDivision { .. } => "ambiguous-division",
             Problem::NumberAfterName { .. } => "number-after-name",
+            Problem::ScientificNotation { .. } => "scientific-notation",
             Problem::InvalidNumber { .. } => "invalid-number",
             Problem::InvalidParameterName { .. } => "invalid-parameter-name",
             Problem::UnknownParameter { .. } => "unknown-parameter",
@@ -307,6 +313,7 @@ impl serde::Serialize for ExprError {
             Problem::NumberAfterName { name, number } => {
                 ([("name", Text(name)), ("number", Text(number)), NONE], 2)
             }
+            Problem::ScientificNotation { text } => ([("text", Text(text)), NONE, NONE], 1),
             Problem::InvalidNumber { text } => ([("text", Text(text)), NONE, NONE], 1),
             Problem::NotFiniteValue { value } => ([("value", Number(*value)), NONE, NONE], 1),
             Problem::EmptyInterval { from, to } => {
@@ -363,6 +370,7 @@ impl fmt::Display for Problem {
             },
             Problem::AmbiguousDivision { text, product, quotient } => write!(f, "\"{text}\" is ambiguous: write {product} or {quotient}"),
             Problem::NumberAfterName { name, number } => write!(f, "a number after a name: write {number}{name} or {name}^{number}"),
+            Problem::ScientificNotation { text } => write!(f, "\"{text}\" is not read as a power of ten (e is Euler's number): write the decimal, such as 0.001, or a product such as 2.5*10^3"),
             Problem::InvalidNumber { text } => write!(f, "\"{text}\" is not a number"),
             Problem::InvalidParameterName { name } => write!(f, "\"{name}\" cannot be a parameter: use one letter other than t and e (a, b, ω) or a letter with a subscript (a_1)"),
             Problem::UnknownParameter { name } => write!(f, "the curve has no parameter \"{name}\""),

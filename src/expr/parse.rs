@@ -46,6 +46,44 @@ pub fn parameter_names(text: &str) -> Result<Vec<String>, ExprError> {
     }
 }
 
+/// Refuses `1e-3`, `2.5E+4`, `6e3` written with no space: a number, `e`, an optional sign and
+/// a number read as `1·e − 3` would silently be another curve than the student meant.
+fn scientific(tokens: &[crate::expr::lex::Token<'_>]) -> Result<(), Fail> {
+    use crate::expr::lex::Word;
+    for (k, first) in tokens.iter().enumerate() {
+        let Kind::Number { .. } = first.kind else {
+            continue;
+        };
+        let rest = tokens.get(k + 1..).unwrap_or_default();
+        let [e, next, after, ..] = rest else {
+            continue;
+        };
+        let is_e = matches!(e.kind, Kind::Name(Word::Constant(crate::expr::Constant::E)))
+            && e.text == "e"
+            && !e.spaced;
+        if !is_e {
+            continue;
+        }
+        let last = match (next.kind, after.kind) {
+            (Kind::Plus | Kind::Minus, Kind::Number { .. }) if !next.spaced && !after.spaced => {
+                after
+            }
+            (Kind::Number { .. }, _) if !next.spaced => next,
+            _ => continue,
+        };
+        let span = first.span.to(last.span);
+        let text: String = tokens
+            .get(k..)
+            .unwrap_or_default()
+            .iter()
+            .take_while(|t| t.span.start < span.end)
+            .map(|t| t.text)
+            .collect();
+        return Err(err(span, Problem::ScientificNotation { text }));
+    }
+    Ok(())
+}
+
 /// Whether `name` can be a parameter: one letter (Latin or Greek) other than `t`, `e` and
 /// `π`, or a letter, `_` and a subscript of ASCII letters and digits (`a_1`, `ω_0`, `a_max`).
 pub fn is_parameter_name(name: &str) -> bool {
@@ -111,9 +149,11 @@ impl<'a, 'p> Parser<'a, 'p> {
         if text.trim().is_empty() {
             return Err(fail(ExprError::at(0, 0, Problem::Empty {})));
         }
+        let tokens = lex(text);
+        scientific(&tokens)?;
         let mut parser = Parser {
             text,
-            tokens: lex(text),
+            tokens,
             pos: 0,
             parameters,
             collected,

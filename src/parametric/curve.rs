@@ -313,7 +313,7 @@ impl ParametricCurve {
         let i = self.piece_at(t)?;
         let p = self.piece(i)?;
         for (o, c) in out.iter_mut().zip(&p.coords) {
-            *o = c.value(t, &self.values);
+            *o = defined(c.value(t, &self.values));
         }
         Ok(())
     }
@@ -333,7 +333,7 @@ impl ParametricCurve {
         self.piece_derivatives(i, t, order, &mut |k, c, v| {
             if k == order {
                 if let Some(o) = out.get_mut(c) {
-                    *o = v;
+                    *o = defined(v);
                 }
             }
         })
@@ -408,6 +408,16 @@ fn in_list(name: &'static str, index: usize, err: Error) -> Error {
         name,
         index: Some(index),
         source: Box::new(err),
+    }
+}
+
+/// A coordinate as the API returns it: NaN where the formula is undefined (IEEE's ±∞ of
+/// `1/0` or `ln 0` included), so "undefined" has one value.
+fn defined(v: f64) -> f64 {
+    if v.is_finite() {
+        v
+    } else {
+        f64::NAN
     }
 }
 

@@ -261,6 +261,9 @@ impl JsParametricCurve {
 
     /// The certified plot: `{ points, ts, complete }`, runs separated by a NaN vertex; `box`
     /// `[xmin, ymin, xmax, ymax]` limits refinement to what is visible.
+    #[wasm_bindgen(
+        unchecked_return_type = "{ points: Float64Array; ts: Float64Array; complete: boolean }"
+    )]
     pub fn plot(
         &self,
         tolerance: f64,
@@ -288,6 +291,9 @@ impl JsParametricCurve {
     }
 
     /// The verdict at every joint: `[{ t, c, g, exact, disjoint, order?, left?, right? }]`.
+    #[wasm_bindgen(
+        unchecked_return_type = "{ t: number; c: number; g: number; exact: boolean; disjoint: boolean; order?: number; left?: Float64Array; right?: Float64Array }[]"
+    )]
     pub fn joints(&self) -> Result<Array, ApiError> {
         let out = Array::new();
         for j in self.inner.joints() {
@@ -358,6 +364,9 @@ impl JsParametricCurve {
     }
 
     /// The Frenet frame at t: `{ point, tangent, normal, binormal, curvature, torsion }`.
+    #[wasm_bindgen(
+        unchecked_return_type = "{ point: Float64Array; tangent: Float64Array; normal: Float64Array; binormal: Float64Array; curvature: number; torsion: number }"
+    )]
     pub fn frame(&self, t: f64) -> Result<JsValue, ApiError> {
         let f = self.inner.frame(t)?;
         let out = Object::new();
@@ -371,6 +380,9 @@ impl JsParametricCurve {
     }
 
     /// Piece `i` as TeX: `{ x: { expr, d1, d2 }, y, z?, from, to }` (d1, d2 null when too large).
+    #[wasm_bindgen(
+        unchecked_return_type = "{ x: { expr: string; d1: string | null; d2: string | null }; y: { expr: string; d1: string | null; d2: string | null }; z?: { expr: string; d1: string | null; d2: string | null }; from: string; to: string }"
+    )]
     pub fn tex(&self, i: f64) -> Result<JsValue, ApiError> {
         let tex = self.inner.tex(piece_index(&self.inner, i)?)?;
         let out = Object::new();

@@ -64,6 +64,7 @@ const CASES = [
   ["ambiguous-division", () => typed("1/2t")],
   ["number-after-name", () => typed("t2")],
   ["invalid-number", () => typed("1.2.3")],
+  ["scientific-notation", () => typed("1e-3 t")],
   [
     "invalid-parameter-name",
     () => sl.parametricCurve([{ x: "t", y: "t", from: 0, to: 1 }], { tt: 1 }),
@@ -270,7 +271,7 @@ function thrown(run) {
  * Typed-expression problems whose decimals are the student's own text or the syntax to type
  * ("write decimals with a point (2.5)", "1.2.3" is not a number): they keep the point.
  */
-const TYPED_DECIMALS = new Set(["unexpected-character", "invalid-number"]);
+const TYPED_DECIMALS = new Set(["unexpected-character", "invalid-number", "scientific-notation"]);
 
 /** The problems of `errorText(err)` in every language. */
 function problems(err) {

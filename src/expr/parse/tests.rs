@@ -256,6 +256,7 @@ fn each_refusal_names_its_problem_and_characters() {
         product: p.into(),
         quotient: q.into(),
     };
+    let sci = |t: &str| Problem::ScientificNotation { text: t.into() };
     let big = format!("1{}", "0".repeat(400));
     let cases: Vec<(&str, Problem, usize, usize)> = vec![
         ("", Problem::Empty {}, 0, 0),
@@ -308,7 +309,10 @@ fn each_refusal_names_its_problem_and_characters() {
             9,
         ),
         ("t2", after("t", "2"), 0, 2),
-        ("2e3", after("e", "3"), 1, 3),
+        ("2e3", sci("2e3"), 0, 3),
+        ("t + 1e-3", sci("1e-3"), 4, 8),
+        ("2.5e+4t", sci("2.5e+4"), 0, 6),
+        ("1.5E-3", unknown("E"), 3, 4),
         ("pi2", after("pi", "2"), 0, 3),
         ("2 3", missing("3"), 2, 3),
         ("(t+1)2", missing("2"), 5, 6),

@@ -2074,6 +2074,8 @@ export default {
     "το {name}^ θέλει έναν ακέραιο ≥ 1 (sin^2(t))· η αντίστροφη συνάρτηση είναι η a{name}(t)",
   "coreError.ambiguous-division": "το «{text}» είναι διφορούμενο: γράψτε {product} ή {quotient}",
   "coreError.number-after-name": "αριθμός μετά από όνομα: γράψτε {number}{name} ή {name}^{number}",
+  "coreError.scientific-notation":
+    "το «{text}» δεν διαβάζεται ως δύναμη του δέκα (το e είναι ο αριθμός του Euler): γράψτε τον δεκαδικό, όπως 0.001, ή ένα γινόμενο, όπως 2.5*10^3",
   "coreError.invalid-number": "το «{text}» δεν είναι αριθμός",
   "coreError.invalid-parameter-name":
     "το «{name}» δεν μπορεί να είναι παράμετρος: χρησιμοποιήστε ένα γράμμα εκτός από t και e (a, b, ω) ή ένα γράμμα με δείκτη (a_1)",

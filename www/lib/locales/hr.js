@@ -2057,6 +2057,8 @@ export default {
     "{name}^ treba prirodni broj ≥ 1 (sin^2(t)); inverzna funkcija je a{name}(t)",
   "coreError.ambiguous-division": "„{text}” je dvosmisleno: napišite {product} ili {quotient}",
   "coreError.number-after-name": "broj iza imena: napišite {number}{name} ili {name}^{number}",
+  "coreError.scientific-notation":
+    "„{text}” se ne čita kao potencija broja deset (e je Eulerov broj): napišite decimalni broj, na primjer 0.001, ili umnožak, na primjer 2.5*10^3",
   "coreError.invalid-number": "„{text}” nije broj",
   "coreError.invalid-parameter-name":
     "„{name}” ne može biti parametar: koristite jedno slovo osim t i e (a, b, ω) ili slovo s indeksom (a_1)",

@@ -2073,6 +2073,8 @@ export default {
   "coreError.ambiguous-division": "“{text}” è ambiguo: scrivete {product} oppure {quotient}",
   "coreError.number-after-name":
     "un numero dopo un nome: scrivete {number}{name} oppure {name}^{number}",
+  "coreError.scientific-notation":
+    "“{text}” non è letto come potenza di dieci (e è il numero di Eulero): scrivete il decimale, come 0.001, o un prodotto, come 2.5*10^3",
   "coreError.invalid-number": "“{text}” non è un numero",
   "coreError.invalid-parameter-name":
     "“{name}” non può essere un parametro: usate una lettera diversa da t ed e (a, b, ω) o una lettera con pedice (a_1)",

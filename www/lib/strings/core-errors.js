@@ -189,6 +189,8 @@ export const CORE_ERRORS = {
     "{name}^ needs a whole number ≥ 1 (sin^2(t)); the inverse is a{name}(t)",
   "coreError.ambiguous-division": '"{text}" is ambiguous: write {product} or {quotient}',
   "coreError.number-after-name": "a number after a name: write {number}{name} or {name}^{number}",
+  "coreError.scientific-notation":
+    '"{text}" is not read as a power of ten (e is Euler\'s number): write the decimal, such as 0.001, or a product such as 2.5*10^3',
   "coreError.invalid-number": '"{text}" is not a number',
   "coreError.invalid-parameter-name":
     '"{name}" cannot be a parameter: use one letter other than t and e (a, b, ω) or a letter with a subscript (a_1)',
