@@ -415,6 +415,9 @@ export function mountDeclared(demo, initialState, ctx) {
     ui.handles?.destroy();
     ui.handles = null;
     data.handles = null;
+    // The test hooks the old figure wrote on its slot (`data-handles`, `data-geometries`, …).
+    const slot = ctx.slots.figure.dataset;
+    for (const key of Object.keys(slot)) delete slot[key];
     ui.view = createView(window);
     makeHandles();
     extra = demo.setup?.(ui) ?? {};

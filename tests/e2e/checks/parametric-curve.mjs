@@ -164,18 +164,76 @@ export default [
     },
   ],
   [
-    "helix: κ = 1/(1 + c²), τ = c/(1 + c²); dragging the figure turns the view",
+    "helix: κ = 1/(1 + c²), τ = c/(1 + c²); the 3D view mounts and a drag orbits it",
     async (page, h, _base, { assert, equal, settle }) => {
       await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
       equal(await readoutData(page, "curvature", "kappa"), "0.962", "κ");
       equal(await readoutData(page, "speed", "speed"), "1.020", "speed");
       const torsion = await page.locator('[data-info="torsion"]').textContent();
       assert(torsion.includes("0.192"), `torsion: ${torsion}`);
-      const before = (await linkState(page)).azimuth;
+      const before = (await linkState(page)).view;
+      equal(before.length, 6, `a camera in the link: ${JSON.stringify(before)}`);
+      assert(
+        Number(await page.locator(".sl-figure").getAttribute("data-geometries")) > 0,
+        "scene curves made",
+      );
       const box = await h.canvas().boundingBox();
-      await h.drag({ x: box.x + 20, y: box.y + 20 }, 50, 0);
-      const after = (await linkState(page)).azimuth;
-      assert(after !== before, `azimuth ${before} → ${after}`);
+      await h.drag({ x: box.x + 20, y: box.y + 20 }, 60, 0);
+      const after = (await linkState(page)).view;
+      assert(after[0] !== before[0], `azimuth ${before[0]} → ${after[0]}`);
+      const runs = JSON.parse(await page.locator(".sl-figure").getAttribute("data-plot-runs"));
+      equal(runs.length, 1, "the helix is one run");
+    },
+  ],
+  [
+    "helix → circle: the 2D figure with its hodograph comes back; undo shows the 3D view again",
+    async (page, h, _base, { assert, equal, settle }) => {
+      await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await preset(page, "circle", settle);
+      await settle(page);
+      const figure = page.locator(".sl-figure");
+      equal(await figure.getAttribute("data-geometries"), null, "no 3D figure");
+      equal((await h.handles()).length, 1, "the hodograph's O is a handle");
+      equal((await linkState(page)).view.length, 4, "a window in the link");
+      equal(await page.locator(".sl-figure canvas").count(), 1, "one canvas");
+      await h.canvas().focus();
+      await page.keyboard.press("Control+z");
+      await page.keyboard.press("Control+z");
+      await settle(page);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      const state = await linkState(page);
+      assert(state.z === "t/5" && state.view.length === 6, `after undo: ${JSON.stringify(state)}`);
+      // Deleting z(t) by typing gives the plane figure again.
+      await typeInto(page, '[data-control="z"] input', "");
+      await settle(page);
+      equal((await linkState(page)).view.length, 4, "a window after z is deleted");
+      equal(await page.locator(".sl-figure canvas").count(), 1, "one canvas");
+    },
+  ],
+  [
+    "the link of the helix restores its camera; a 2D window in a helix link is dropped",
+    async (page, h, base, { assert, equal, openDemo, settle }) => {
+      await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + 20, y: box.y + 20 }, 40, 30);
+      const state = await linkState(page);
+      const encoded = Buffer.from(JSON.stringify(state)).toString("base64url");
+      h = await openDemo(page, base, "parametric-curve", `&s=${encoded}`);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
+      equal(JSON.stringify((await linkState(page)).view), JSON.stringify(state.view), "camera");
+      const flat = { ...state, view: [-1, -1, 1, 1] };
+      const link = Buffer.from(JSON.stringify(flat)).toString("base64url");
+      h = await openDemo(page, base, "parametric-curve", `&s=${link}`);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
+      const view = (await linkState(page)).view;
+      assert(view.length === 6, `fitted camera: ${JSON.stringify(view)}`);
+      equal(await h.statusKind(), null, "no error shown");
     },
   ],
   [

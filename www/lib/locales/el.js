@@ -2296,11 +2296,6 @@ export default {
   "parametricCurve.bezierLink": "Άνοιγμα αυτών των σημείων ελέγχου στον αλγόριθμο de Casteljau",
   "parametricCurve.bezierLinkOff":
     "Η επίδειξη de Casteljau δέχεται μόνο επίπεδες καμπύλες βαθμού 1 έως 10.",
-  "parametricCurve.control.view": "Όψη της χωρικής καμπύλης",
-  "parametricCurve.control.azimuth": "Αζιμούθιο (μοίρες)",
-  "parametricCurve.control.azimuth.input": "αζιμούθιο της όψης σε μοίρες",
-  "parametricCurve.control.elevation": "Ανύψωση (μοίρες)",
-  "parametricCurve.control.elevation.input": "γωνία ανύψωσης της όψης σε μοίρες",
   "parametricCurve.atT": "Στο t",
   "parametricCurve.speed": "Μέτρο ταχύτητας |P′(t)| = {speed}",
   "parametricCurve.curvature": "Καμπυλότητα κ(t) = {kappa}",

@@ -2273,11 +2273,6 @@ export default {
   "parametricCurve.bezierLink": "Otvori ove kontrolne točke u De Casteljauovu algoritmu",
   "parametricCurve.bezierLinkOff":
     "Demonstracija De Casteljauova algoritma prima samo ravninske krivulje stupnja 1 do 10.",
-  "parametricCurve.control.view": "Pogled na prostornu krivulju",
-  "parametricCurve.control.azimuth": "Azimut (stupnjevi)",
-  "parametricCurve.control.azimuth.input": "azimut pogleda u stupnjevima",
-  "parametricCurve.control.elevation": "Elevacija (stupnjevi)",
-  "parametricCurve.control.elevation.input": "elevacija pogleda u stupnjevima",
   "parametricCurve.atT": "U t",
   "parametricCurve.speed": "Iznos brzine |P′(t)| = {speed}",
   "parametricCurve.curvature": "Zakrivljenost κ(t) = {kappa}",

@@ -2294,11 +2294,6 @@ export default {
   "parametricCurve.bezierLink": "Apri questi punti di controllo nell'algoritmo di De Casteljau",
   "parametricCurve.bezierLinkOff":
     "La dimostrazione di De Casteljau accetta solo curve piane di grado da 1 a 10.",
-  "parametricCurve.control.view": "Vista della curva nello spazio",
-  "parametricCurve.control.azimuth": "Azimut (gradi)",
-  "parametricCurve.control.azimuth.input": "azimut della vista in gradi",
-  "parametricCurve.control.elevation": "Elevazione (gradi)",
-  "parametricCurve.control.elevation.input": "elevazione della vista in gradi",
   "parametricCurve.atT": "In t",
   "parametricCurve.speed": "Modulo della velocità |P′(t)| = {speed}",
   "parametricCurve.curvature": "Curvatura κ(t) = {kappa}",
