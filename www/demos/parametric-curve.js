@@ -293,6 +293,7 @@ export const figure3d = {
   bounds: (s, d) => spaceBounds(d.whole, d.bezierForm),
   camera: { azimuth: -60, elevation: 25 },
   scene: (s, d) => spaceScene(d),
+  handles: [], // no points to drag: the arrow keys orbit the camera
 };
 
 /** Plane: axes, hodograph, Bézier form, circle, curve, P′ and P″ at P(t); space: the frame. */

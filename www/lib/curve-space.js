@@ -104,13 +104,22 @@ export function spaceBounds(whole, form) {
 
 const p0 = new Float64Array(3);
 const p1 = new Float64Array(3);
+/** The screen direction P(t)'s name goes: away from the arrows T and N drawn (−T − N). */
+const away = new Float64Array(2);
 
-/** The arrow from P (projected in `p0`) along the unit vector w, `s` world units, labelled. */
-function frameArrow(r, v, point, w, s, style, text) {
+/**
+ * The arrow from P (projected in `p0`) along the unit vector w, `s` world units, labelled;
+ * `avoid`: P's name keeps away from it.
+ */
+function frameArrow(r, v, point, w, s, style, text, avoid = true) {
   if (!w?.every(Number.isFinite)) return;
   v.project(point[0] + s * w[0], point[1] + s * w[1], point[2] + s * w[2], p1);
   if (!(Math.hypot(p1[0] - p0[0], p1[1] - p0[1]) >= 1) || p1[2] > 1) return;
   arrow(r, p0[0], p0[1], p1[0], p1[1], style);
+  if (avoid) {
+    away[0] -= p1[0] - p0[0];
+    away[1] -= p1[1] - p0[1];
+  }
   const gap = ARROW_LABEL_GAP_PX * r.scale;
   placeLabelAtTip(r, text, p0[0], p0[1], p1[0], p1[1], gap, r.theme.labelPoint);
 }
@@ -162,6 +171,8 @@ export function drawSpaceLayer(r, v, s, d, prefix) {
   }
   if (visible) {
     const frame = at.frame;
+    away[0] = 0;
+    away[1] = 0;
     if (frame && !at.cusp) {
       const length = FRAME_PX * v.worldPerPixel(at.point[0], at.point[1], at.point[2]);
       const label = (key) => t(`${prefix}.${key}`);
@@ -169,12 +180,15 @@ export function drawSpaceLayer(r, v, s, d, prefix) {
       if (!at.straight) {
         const { normal, binormal } = frame;
         frameArrow(r, v, at.point, normal, length, ACCELERATION_STYLE, label("normalLabel"));
-        frameArrow(r, v, at.point, binormal, length, BINORMAL_STYLE, label("binormalLabel"));
+        frameArrow(r, v, at.point, binormal, length, BINORMAL_STYLE, label("binormalLabel"), false);
       }
     }
     r.point(p0[0], p0[1], theme.pointOnCurve);
     const radius = theme.pointOnCurve.radius * r.scale;
-    placeLabel(r, t(`${prefix}.pointLabel`), p0[0], p0[1], 0.7, 0.7, radius, theme.labelPoint);
+    const norm = Math.hypot(away[0], away[1]);
+    const dx = norm > 0 ? away[0] / norm : 0.7;
+    const dy = norm > 0 ? away[1] / norm : 0.7;
+    placeLabel(r, t(`${prefix}.pointLabel`), p0[0], p0[1], dx, dy, radius, theme.labelPoint);
   }
   const margin = TEXT_MARGIN_PX * r.scale;
   const left = TRIAD_CLEAR_PX * r.scale;

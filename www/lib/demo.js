@@ -425,6 +425,13 @@ export function mountDeclared(demo, initialState, ctx) {
     for (const control of built) control.viewChanged?.(view);
     panelsStale = true;
     view.requestDraw();
+    // The new canvas is sized at the next layout (a ResizeObserver): the panels and the demo's
+    // hooks follow its first drawn frame too.
+    requestAnimationFrame(() => {
+      if (destroyed) return;
+      panelsStale = true;
+      view.requestDraw();
+    });
     return true;
   }
 

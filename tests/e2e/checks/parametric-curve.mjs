@@ -201,7 +201,6 @@ export default [
       equal(await page.locator(".sl-figure canvas").count(), 1, "one canvas");
       await h.canvas().focus();
       await page.keyboard.press("Control+z");
-      await page.keyboard.press("Control+z");
       await settle(page);
       await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
       const state = await linkState(page);
