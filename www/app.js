@@ -456,6 +456,7 @@ async function start() {
   // Ctrl+Z / Ctrl+Shift+Z also work when nothing in the demo has focus.
   document.addEventListener("keydown", (event) => {
     if (!controller || !(event.ctrlKey || event.metaKey) || event.altKey) return;
+    if (event.defaultPrevented) return; // the demo took it (its figure may have been replaced)
     if (document.activeElement !== document.body && document.activeElement !== main) return;
     const key = event.key.toLowerCase();
     if (key === "z") controller[event.shiftKey ? "redo" : "undo"]();

@@ -407,6 +407,8 @@ export function mountDemo(
      */
     createFigure(options) {
       const replacing = figure !== null;
+      // Focus on the old canvas moves to the new one (a keyboard user stays in the figure).
+      const focused = replacing && figure.canvas.matches(":focus");
       figure?.destroy();
       const Figure = options.scene ? View3D : View;
       figure = new Figure(figureHost, {
@@ -421,6 +423,7 @@ export function mountDemo(
       figure.canvas.setAttribute("aria-describedby", helpId);
       if (replacing) {
         help.textContent = t(helpKey(Boolean(options.scene)));
+        if (focused) figure.canvas.focus({ preventScroll: true });
         if (element.classList.contains("sl-lecture")) figure.setLecture(true);
         if (viewFits(Boolean(figure.is3d), options.window)) figure.setWindow(options.window);
         currentWindow = viewFits(Boolean(figure.is3d), options.window)
