@@ -47,6 +47,9 @@
  *   state, ui, field)` gets the list's field, the index in it and a reused Float64Array(3); `+` /
  *   Delete reach the field's `pointButtons`. `draw` is then the 2D layer over the WebGL image
  *   (`view.project`).
+ * - `figure` and `figure3d` both, with `dimension(state)` → 2 | 3: each state is shown in the
+ *   figure it asks for; the figure, its handles and `setup` are made anew when that changes
+ *   (`syncFigureKind`; controls get `viewChanged(view)`; lib/README.md "Both figures").
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -124,7 +127,7 @@ export function mountDeclared(demo, initialState, ctx) {
   let is3d = false;
   let figureSpec = null;
   let view = null;
-  /** Made while three.js loads for a 3D state shown first in 2D (`mountFigure`). */
+  /** The load of three.js for a 3D state shown in 2D meanwhile (`syncFigureKind`). */
   let loadingThree = null;
   let destroyed = false;
   const wanted = () =>
