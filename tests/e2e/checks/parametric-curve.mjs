@@ -188,6 +188,29 @@ export default [
     },
   ],
   [
+    "the circle's page loads no three.js file; the helix example loads it and shows the 3D view",
+    async (page, _h, base, { equal, settle }) => {
+      const three = [];
+      const watch = (request) => {
+        if (request.url().includes("/vendor/three/")) three.push(request.url());
+      };
+      page.on("request", watch);
+      try {
+        await page.goto("about:blank");
+        await page.goto(`${base}/index.html#demo=parametric-curve`);
+        await page.locator(".sl-figure[data-handles]").waitFor({ state: "attached" });
+        await settle(page);
+        equal(three.length, 0, "three.js files on the circle's page");
+        await preset(page, "helix", settle);
+        await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+        equal(three.length > 0, true, "three.js loaded for the helix");
+        equal((await linkState(page)).view.length, 6, "the camera recorded");
+      } finally {
+        page.off("request", watch);
+      }
+    },
+  ],
+  [
     "helix → circle: the 2D figure with its hodograph comes back; undo shows the 3D view again",
     async (page, h, _base, { assert, equal, settle }) => {
       await preset(page, "helix", settle);
@@ -300,6 +323,34 @@ export default [
         );
         const label = await page.locator("spline-lab#e .sl-canvas").getAttribute("aria-label");
         assert(label.includes("sin(2t)"), `aria-label: ${label}`);
+      } finally {
+        await page.unroute(url);
+      }
+    },
+  ],
+  [
+    "embed: a z attribute mounts the 3D figure at once; a Bézier form of a space polynomial",
+    async (page, _h, base, { assert, equal, settle }) => {
+      const url = `${base}/parametric-embed-3d.html`;
+      await page.route(url, (route) =>
+        route.fulfill({
+          contentType: "text/html",
+          body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="e" demo="parametric-curve" x="t" y="t^2" z="t^3" to="1" bezier></spline-lab></body></html>',
+        }),
+      );
+      try {
+        await page.goto(url);
+        await page
+          .locator("spline-lab#e .sl-figure[data-geometries]")
+          .waitFor({ state: "attached" });
+        await settle(page);
+        const text = await page.locator('spline-lab#e [data-info="bezier-points"]').textContent();
+        assert(text.includes("(1/3, 0, 0)") && text.includes("(1, 1, 1)"), `points: ${text}`);
+        equal(
+          await page.locator('spline-lab#e [data-link="bezier-points"]').getAttribute("href"),
+          null,
+          "no link into de Casteljau for a space curve",
+        );
       } finally {
         await page.unroute(url);
       }
