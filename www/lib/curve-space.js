@@ -30,6 +30,8 @@ import { arrow } from "./draw.js";
 const PLOT_TOLERANCE_FRACTION = 1 / 4000;
 /** Length of the Frenet frame's unit vectors on screen, CSS px (at P's depth). */
 const FRAME_PX = 60;
+/** … and at most this fraction of the figure's smaller side (a phone). */
+const FRAME_FRACTION = 0.12;
 /** Captions start right of the axis triad in the lower-left corner (draw3d.js), CSS px. */
 const TRIAD_CLEAR_PX = 76;
 const CURVE_COLOUR = HUES.blue;
@@ -174,7 +176,8 @@ export function drawSpaceLayer(r, v, s, d, prefix) {
     away[0] = 0;
     away[1] = 0;
     if (frame && !at.cusp) {
-      const length = FRAME_PX * v.worldPerPixel(at.point[0], at.point[1], at.point[2]);
+      const px = Math.min(FRAME_PX, FRAME_FRACTION * Math.min(r.width, r.height));
+      const length = px * v.worldPerPixel(at.point[0], at.point[1], at.point[2]);
       const label = (key) => t(`${prefix}.${key}`);
       frameArrow(r, v, at.point, frame.tangent, length, VELOCITY_STYLE, label("tangentLabel"));
       if (!at.straight) {
