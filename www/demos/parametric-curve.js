@@ -128,7 +128,8 @@ function valuesAt(curve, tt, whole) {
   const speed = defined ? Math.hypot(...d1) : Number.NaN;
   const cusp = defined && !(speed > CUSP_SPEED * Math.max(1, whole.size));
   // At a cusp (P′ = 0) the curvature grows without bound: ∞, not the rounding's number.
-  const kappa = cusp ? Number.POSITIVE_INFINITY : (frame?.curvature ?? Number.NaN);
+  const curvature = frame && Number.isFinite(frame.curvature) ? frame.curvature : Number.NaN;
+  const kappa = cusp ? Number.POSITIVE_INFINITY : curvature;
   const straight =
     Number.isFinite(kappa) && !(Math.abs(kappa) * STRAIGHT_RADIUS_FACTOR * whole.size > 1);
   const kappaMachine = Number.isFinite(kappa) ? fmtMachine(kappa) : "∞";
