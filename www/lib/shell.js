@@ -105,9 +105,12 @@ export function mountDemo(
   const figureHost = el("div", { class: "sl-figure" });
   const helpId = `sl-help-${demo.id}-${Math.random().toString(36).slice(2, 8)}`;
   /** The help under the figure: how to turn a 3D one, drag handles, or what a typed one shows. */
+  const noPoints3d = Array.isArray(demo.figure3d?.handles) && demo.figure3d.handles.length === 0;
   const helpKey = (is3d) =>
     is3d
-      ? "shell.figureHelp3d"
+      ? noPoints3d
+        ? "shell.figureHelp3dTyped"
+        : "shell.figureHelp3d"
       : demo.figure?.handles || !demo.figure
         ? "shell.figureHelp"
         : "shell.figureHelpTyped";
@@ -421,8 +424,8 @@ export function mountDemo(
         },
       });
       figure.canvas.setAttribute("aria-describedby", helpId);
+      help.textContent = t(helpKey(Boolean(options.scene)));
       if (replacing) {
-        help.textContent = t(helpKey(Boolean(options.scene)));
         if (focused) figure.canvas.focus({ preventScroll: true });
         if (element.classList.contains("sl-lecture")) figure.setLecture(true);
         if (viewFits(Boolean(figure.is3d), options.window)) figure.setWindow(options.window);

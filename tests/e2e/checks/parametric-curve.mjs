@@ -201,10 +201,14 @@ export default [
         await page.locator(".sl-figure[data-handles]").waitFor({ state: "attached" });
         await settle(page);
         equal(three.length, 0, "three.js files on the circle's page");
+        const help = () => page.locator(".sl-help").first().textContent();
+        const plane = await help();
         await preset(page, "helix", settle);
         await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
         equal(three.length > 0, true, "three.js loaded for the helix");
         equal((await linkState(page)).view.length, 6, "the camera recorded");
+        const space = await help();
+        equal(space !== plane && space.length > 20, true, `help: ${plane} → ${space}`);
       } finally {
         page.off("request", watch);
       }
