@@ -270,6 +270,8 @@ export default [
         // Near the pole P(t) and P′(t) are ~10⁴ and ~10⁸ units away; zoomed out, the
         // branches and the osculating circle run far off the canvas.
         if (name === "tan") await typeInto(page, '[data-control="t"] .sl-value', "1.5707");
+        // The 3D figure replaces the plane one once three.js has loaded.
+        else await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
         const box = await h.canvas().boundingBox();
         await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
         for (let k = 0; k < 4; k++) await page.mouse.wheel(0, 400);
