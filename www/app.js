@@ -236,6 +236,15 @@ function stateFromLink(demo, start, encoded) {
   }
 }
 
+/** The state a link carries, unchecked (which figure to prepare), or undefined. */
+function linkedState(encoded) {
+  try {
+    return encoded ? decodeState(encoded) : undefined;
+  } catch {
+    return undefined;
+  }
+}
+
 /** A demo page in `main` (the link back to the gallery, then the slot returned for the demo). */
 function demoPageRoot() {
   const root = el("div");
@@ -323,7 +332,7 @@ async function showExercise(entry, encoded, sl) {
   let demo;
   try {
     demo = await loadDemo(entry.demo);
-    await prepareFigure(demo);
+    await prepareFigure(demo, linkedState(encoded) ?? entry.state);
   } catch (err) {
     showAppStatus(errorText(err), "error");
     return;
@@ -383,7 +392,7 @@ async function route(sl) {
   let demo;
   try {
     demo = await loadDemo(id);
-    await prepareFigure(demo); // three.js, for a 3D demo only
+    await prepareFigure(demo, linkedState(s)); // three.js, for a 3D state only
   } catch (err) {
     if (routed === routeCount) showAppStatus(errorText(err), "error");
     return;
@@ -447,6 +456,7 @@ async function start() {
   // Ctrl+Z / Ctrl+Shift+Z also work when nothing in the demo has focus.
   document.addEventListener("keydown", (event) => {
     if (!controller || !(event.ctrlKey || event.metaKey) || event.altKey) return;
+    if (event.defaultPrevented) return; // the demo took it (its figure may have been replaced)
     if (document.activeElement !== document.body && document.activeElement !== main) return;
     const key = event.key.toLowerCase();
     if (key === "z") controller[event.shiftKey ? "redo" : "undo"]();

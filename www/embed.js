@@ -120,11 +120,9 @@ class SplineLabElement extends HTMLElement {
     }
     try {
       demo = await loadDemo(id);
-      await prepareFigure(demo); // three.js, for a 3D demo only
     } catch (err) {
       return this._fail(errorText(err));
     }
-    if (!this.isConnected || this._controller) return;
     // An exercise starts from its own state; attributes may still change fields of it.
     const start = validateState(demo, structuredClone(exercise?.state ?? demo.defaultState));
     let state = start;
@@ -134,6 +132,12 @@ class SplineLabElement extends HTMLElement {
     } catch (err) {
       problem = errorText(err);
     }
+    try {
+      await prepareFigure(demo, state); // three.js, for a 3D state only
+    } catch (err) {
+      return this._fail(errorText(err));
+    }
+    if (!this.isConnected || this._controller) return;
     const root = document.createElement("div");
     this._root.replaceWith(root);
     this._root = root;

@@ -1,6 +1,7 @@
 /**
- * Drawing support for typed curves (parametric-curve): the view of a plane or space curve on a
- * 2D figure, polylines clipped to a box in CSS px (a plot near a pole, a hodograph that runs off,
+ * Drawing support for typed curves on a 2D figure (parametric-curve; a space curve is drawn by
+ * the 3D figure, curve-space.js): points mapped by a linear map `m` (rows: the figure's x and
+ * y), polylines clipped to a box in CSS px (a plot near a pole, a hodograph that runs off,
  * an osculating circle of a huge radius: exports stay within TeX's dimensions), robust bounds
  * (a pole's extremes left out) and nice scales. Nothing here computes the curve: the points are
  * the core's (`plot`, `sampleUniform`, `derivative`).
@@ -15,32 +16,7 @@ const ROBUST_SPREAD = 3;
 /** Drawing is clipped to the canvas widened by this many CSS px. */
 export const CLIP_MARGIN_PX = 40;
 
-/**
- * The map from model to figure coordinates: the identity for a plane curve; for a space curve
- * the orthographic view from azimuth α, elevation β (right r = (−sin α, cos α, 0), up
- * u = (−sin β cos α, −sin β sin α, cos β)): (x, y, z) → (r·p, u·p); `m` holds r, u and the
- * direction towards the viewer r × u = (cos β cos α, cos β sin α, sin β) (depth).
- */
-export function projectionOf(azimuth, elevation, dim) {
-  if (dim !== 3) return { three: false, m: Float64Array.of(1, 0, 0, 0, 1, 0, 0, 0, 1) };
-  const a = (azimuth * Math.PI) / 180;
-  const b = (elevation * Math.PI) / 180;
-  const m = Float64Array.of(
-    -Math.sin(a),
-    Math.cos(a),
-    0,
-    -Math.sin(b) * Math.cos(a),
-    -Math.sin(b) * Math.sin(a),
-    Math.cos(b),
-    // The direction towards the viewer r × u: a point's depth (larger is nearer).
-    Math.cos(b) * Math.cos(a),
-    Math.cos(b) * Math.sin(a),
-    Math.sin(b),
-  );
-  return { three: true, m };
-}
-
-/** The figure's x and y of a model point (x, y, z) under the map `m`. */
+/** The figure's x and y of a model point (x, y, z) under the map `m` (3 × 3, row-major). */
 export const pu = (m, x, y, z) => m[0] * x + m[1] * y + m[2] * z;
 export const pw = (m, x, y, z) => m[3] * x + m[4] * y + m[5] * z;
 /** The third coordinate of a point of `dim` numbers at `k` (0 for a plane curve). */
@@ -141,67 +117,6 @@ export function flatRunsPath(r, v, flat, dim, m, ox = 0, oy = 0, scale = 1) {
     const z = scale * zAt(flat, k, dim);
     penTo(r, v.sx(ox + pu(m, x, y, z)), v.sy(oy + pw(m, x, y, z)));
   }
-}
-
-/** A point's depth under the map `m` (larger is nearer the viewer). */
-export const depthOf = (m, x, y, z) => m[6] * x + m[7] * y + m[8] * z;
-
-/**
- * The segments of a flat list of space points whose middle lies nearer than `depth` (`near`),
- * or not: a space curve drawn in two passes, its far part faded (a depth cue).
- */
-export function depthRunsPath(r, v, flat, m, depth, near) {
-  let previous = Number.NaN;
-  for (let k = 0; k + 3 <= flat.length; k += 3) {
-    const x = flat[k];
-    const y = flat[k + 1];
-    const z = flat[k + 2];
-    const here = depthOf(m, x, y, z);
-    if (!((previous + here) / 2 > depth === near)) penTo(r, Number.NaN, Number.NaN);
-    penTo(r, v.sx(pu(m, x, y, z)), v.sy(pw(m, x, y, z)));
-    previous = here;
-  }
-}
-
-/**
- * The parameter of the drawn curve nearest the canvas point (x, y): the nearest point on a
- * segment of the plot's polyline (projected), its t interpolated between the segment's ends
- * (the plot is within a fraction of a pixel of the curve). Returns `{ t, distance }` (CSS px)
- * or null when nothing is drawn. Picking support, not a curve algorithm.
- */
-export function nearestParameter(v, plot, dim, m, x, y) {
-  const { points, ts } = plot;
-  let best = null;
-  let px = Number.NaN;
-  let py = Number.NaN;
-  for (let j = 0; j < ts.length; j++) {
-    const k = j * dim;
-    const qx = v.sx(pu(m, points[k], points[k + 1], zAt(points, k, dim)));
-    const qy = v.sy(pw(m, points[k], points[k + 1], zAt(points, k, dim)));
-    if (!(Number.isFinite(qx) && Number.isFinite(qy) && Number.isFinite(ts[j]))) {
-      px = Number.NaN;
-      continue;
-    }
-    let s = 0;
-    if (Number.isFinite(px)) {
-      const dx = qx - px;
-      const dy = qy - py;
-      const length2 = dx * dx + dy * dy;
-      s = length2 > 0 ? Math.min(Math.max(((x - px) * dx + (y - py) * dy) / length2, 0), 1) : 1;
-    } else {
-      s = 1;
-    }
-    const cx = Number.isFinite(px) ? px + s * (qx - px) : qx;
-    const cy = Number.isFinite(px) ? py + s * (qy - py) : qy;
-    const distance = Math.hypot(x - cx, y - cy);
-    if (!best || distance < best.distance) {
-      const t = Number.isFinite(px) ? ts[j - 1] + s * (ts[j] - ts[j - 1]) : ts[j];
-      best = { t, distance };
-    }
-    px = qx;
-    py = qy;
-  }
-  return best;
 }
 
 /** An arrow from (x0, y0) to (x1, y1) CSS px; beyond the canvas only its visible shaft. */

@@ -47,6 +47,9 @@
  *   state, ui, field)` gets the list's field, the index in it and a reused Float64Array(3); `+` /
  *   Delete reach the field's `pointButtons`. `draw` is then the 2D layer over the WebGL image
  *   (`view.project`).
+ * - `figure` and `figure3d` both, with `dimension(state)` → 2 | 3: each state is shown in the
+ *   figure it asks for; the figure, its handles and `setup` are made anew when that changes
+ *   (`syncFigureKind`; controls get `viewChanged(view)`; lib/README.md "Both figures").
  * - `draw(r, view, state, data)`: the figure, on canvas and SVG alike; allocates nothing.
  * - `formula(state, data)`, `label(state, data)`: optional; the formula panel's TeX lines (only
  *   changed lines are typeset) and the figure's accessible name.
@@ -67,6 +70,7 @@ import { Handles3D } from "./handles3d.js";
 import { listHandles3 } from "./handle-lists3d.js";
 import { t } from "./strings.js";
 import { errorText } from "./core-errors.js";
+import { figureDimension, loadedThree, loadThree } from "./three-loader.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
@@ -118,16 +122,31 @@ export function mountDeclared(demo, initialState, ctx) {
   }
   let built = [];
 
-  // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`).
-  const is3d = Boolean(demo.figure3d);
-  const figureSpec = demo.figure3d ?? demo.figure;
-  const view = ctx.createFigure({
-    draw: (r, v) => demo.draw(r, v, work, data),
-    bounds: () => figureSpec.bounds(work, data),
-    label: "",
-    insets: figureSpec.insets ? (w, h, scale) => figureSpec.insets(w, h, scale, work, data) : null,
-    ...(is3d ? { scene: () => figureSpec.scene(work, data), camera: figureSpec.camera } : {}),
-  });
+  // A 3D figure (`figure3d`, view3d.js) or the 2D View (`figure`); a demo with both shows the
+  // kind its `dimension(state)` asks for and makes the figure anew when that changes.
+  let is3d = false;
+  let figureSpec = null;
+  let view = null;
+  /** The load of three.js for a 3D state shown in 2D meanwhile (`syncFigureKind`). */
+  let loadingThree = null;
+  let destroyed = false;
+  const wanted = () =>
+    figureDimension(demo, work) === 3 && (Boolean(loadedThree()) || !demo.figure);
+  function createView(window) {
+    is3d = wanted();
+    figureSpec = is3d ? demo.figure3d : demo.figure;
+    const spec = figureSpec;
+    view = ctx.createFigure({
+      draw: (r, v) => demo.draw(r, v, work, data),
+      bounds: () => spec.bounds(work, data),
+      label: "",
+      insets: spec.insets ? (w, h, scale) => spec.insets(w, h, scale, work, data) : null,
+      ...(is3d ? { scene: () => spec.scene(work, data), camera: spec.camera } : {}),
+      window,
+    });
+    return view;
+  }
+  createView(null);
 
   /** What controls, handles and tools get: the state, its setter and the shell's services. */
   const ui = {
@@ -174,6 +193,7 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
+      syncFigureKind(null);
       publish();
       if (final) commit();
     },
@@ -296,85 +316,137 @@ export function mountDeclared(demo, initialState, ctx) {
   }
 
   // ------------------------------------------------------------ figure parts, handles, panel
-  const handleSpec = figureSpec.handles;
-  if (handleSpec && is3d) {
-    // One entry or a list (handle-lists3d.js): point lists of `[x, y, z]` (or `[p, q]` on two
-    // axes), held in a plane or free, and extra handles placed by the state. A list point's
-    // move reaches `derive.moved(model, index, xyz, state, ui, field)` (index in its list),
-    // else the field's `derive.inPlace`; an extra handle's `place` marks its field changed.
-    const moved = derive.moved
-      ? (field, index, xyz) => {
-          derive.moved(model, index, xyz, work, ui, field);
-          if (changed) changed.add(field);
-          view.requestDraw();
+  /** The handles of the figure shown (`figure.handles` or `figure3d.handles`). */
+  function makeHandles() {
+    const handleSpec = figureSpec.handles;
+    if (handleSpec && is3d) {
+      // One entry or a list (handle-lists3d.js): point lists of `[x, y, z]` (or `[p, q]` on two
+      // axes), held in a plane or free, and extra handles placed by the state. A list point's
+      // move reaches `derive.moved(model, index, xyz, state, ui, field)` (index in its list),
+      // else the field's `derive.inPlace`; an extra handle's `place` marks its field changed.
+      const moved = derive.moved
+        ? (field, index, xyz) => {
+            derive.moved(model, index, xyz, work, ui, field);
+            if (changed) changed.add(field);
+            view.requestDraw();
+          }
+        : (field) => markChanged(field);
+      ui.handles = new Handles3D(view, {
+        ...listHandles3([].concat(handleSpec), {
+          state: () => work,
+          data,
+          ui,
+          moved,
+          placed: markChanged,
+        }),
+        commit: (kind, i, merge) => commit(merge),
+      });
+      data.handles = ui.handles;
+    } else if (handleSpec) {
+      // One field of points, or several in a row (`field: ["points", "corners"]`).
+      const handleFields = [].concat(handleSpec.field);
+      const moved = derive.moved
+        ? (i, xy) => {
+            derive.moved(model, i, xy, work, ui);
+            if (changed) changed.add(handleFields[0]);
+            view.requestDraw();
+          }
+        : () => markChanged(handleFields[0]);
+      const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
+      const accept = handleSpec.accept ? (i, x, y) => handleSpec.accept(i, x, y, work) : null;
+      /** A move over several lists: offered to `accept` and `derive.moved` before it is written. */
+      const offer = (i, xy, k) => {
+        if (accept && !accept(i, xy[0], xy[1])) return false;
+        if (!derive.moved) {
+          markChanged(handleFields[k]);
+          return true;
         }
-      : (field) => markChanged(field);
-    ui.handles = new Handles3D(view, {
-      ...listHandles3([].concat(handleSpec), {
-        state: () => work,
-        data,
-        ui,
-        moved,
-        placed: markChanged,
-      }),
-      commit: (kind, i, merge) => commit(merge),
-    });
-    data.handles = ui.handles;
-  } else if (handleSpec) {
-    // One field of points, or several in a row (`field: ["points", "corners"]`).
-    const handleFields = [].concat(handleSpec.field);
-    const moved = derive.moved
-      ? (i, xy) => {
-          derive.moved(model, i, xy, work, ui);
-          if (changed) changed.add(handleFields[0]);
-          view.requestDraw();
-        }
-      : () => markChanged(handleFields[0]);
-    const label = handleSpec.label ? (i) => handleSpec.label(i, work, data) : null;
-    const accept = handleSpec.accept ? (i, x, y) => handleSpec.accept(i, x, y, work) : null;
-    /** A move over several lists: offered to `accept` and `derive.moved` before it is written. */
-    const offer = (i, xy, k) => {
-      if (accept && !accept(i, xy[0], xy[1])) return false;
-      if (!derive.moved) {
-        markChanged(handleFields[k]);
+        if (derive.moved(model, i, xy, work, ui) === false) return false;
+        if (changed) changed.add(handleFields[k]);
+        view.requestDraw();
         return true;
-      }
-      if (derive.moved(model, i, xy, work, ui) === false) return false;
-      if (changed) changed.add(handleFields[k]);
-      view.requestDraw();
-      return true;
-    };
-    const list =
-      handleFields.length === 1 && !accept
-        ? pointHandles(() => work[handleFields[0]], moved, label)
-        : pointListsHandles(
-            handleFields.length,
-            (k) => work[handleFields[k]],
-            offer,
-            label ?? pointLabel,
-          );
-    const extraPoints = handleSpec.extra ?? [];
-    const listed = () => list.count();
-    ui.handles = new Handles(view, {
-      ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
-      polygon: handleSpec.polygon,
-      constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
-      select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
-      commit: (kind, i, merge) => commit(merge),
-      add: (i) => ui.pointList?.add(i),
-      remove: (i) => i < listed() && ui.pointList?.remove(i),
-    });
-    data.handles = ui.handles;
+      };
+      const list =
+        handleFields.length === 1 && !accept
+          ? pointHandles(() => work[handleFields[0]], moved, label)
+          : pointListsHandles(
+              handleFields.length,
+              (k) => work[handleFields[k]],
+              offer,
+              label ?? pointLabel,
+            );
+      const extraPoints = handleSpec.extra ?? [];
+      const listed = () => list.count();
+      ui.handles = new Handles(view, {
+        ...(extraPoints.length ? withExtraPoints(list, listed, extraPoints) : list),
+        polygon: handleSpec.polygon,
+        constraint: handleSpec.constraint ? (i) => handleSpec.constraint(i, work, data) : undefined,
+        select: handleSpec.select ? (i) => handleSpec.select(i, ui) : undefined,
+        commit: (kind, i, merge) => commit(merge),
+        add: (i) => ui.pointList?.add(i),
+        remove: (i) => i < listed() && ui.pointList?.remove(i),
+      });
+      data.handles = ui.handles;
+    }
   }
+
+  /** The runtime's hooks on the figure's frames. */
+  function hookFrames() {
+    // After the handles' hook, which applies the newest pointer position first.
+    view.beforeFrame(() => refresh());
+    view.afterFrame(() => publish());
+  }
+
+  /**
+   * A demo with both figures (`dimension`): when the state asks for the other kind, the figure,
+   * its handles and `setup` are made anew (the controls stay: `viewChanged(view)` rebinds them);
+   * `window` is shown when it is a view of the new kind, else the figure fits. A 3D state is
+   * shown in 2D while three.js loads, then the 3D figure records its camera. Returns true when
+   * the figure was made anew.
+   */
+  function syncFigureKind(window) {
+    if (destroyed || typeof demo.dimension !== "function") return false;
+    if (figureDimension(demo, work) === 3 && !loadedThree() && !loadingThree) {
+      const done = () => {
+        loadingThree = null;
+        if (syncFigureKind(work.view)) ctx.recordWindow?.();
+      };
+      loadingThree = loadThree().then(done, () => (loadingThree = null));
+    }
+    if (wanted() === is3d) return false;
+    extra.destroy?.();
+    ui.handles?.destroy();
+    ui.handles = null;
+    data.handles = null;
+    // The test hooks the old figure wrote on its slot (`data-handles`, `data-geometries`, …).
+    const slot = ctx.slots.figure.dataset;
+    for (const key of Object.keys(slot)) delete slot[key];
+    ui.view = createView(window);
+    makeHandles();
+    extra = demo.setup?.(ui) ?? {};
+    hookFrames();
+    for (const control of built) control.viewChanged?.(view);
+    panelsStale = true;
+    view.requestDraw();
+    // The new canvas is sized at the next layout (a ResizeObserver): the panels and the demo's
+    // hooks follow its first drawn frame too.
+    requestAnimationFrame(() => {
+      if (destroyed) return;
+      panelsStale = true;
+      view.requestDraw();
+    });
+    return true;
+  }
+
+  makeHandles();
   built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
   ctx.slots.controls.append(...built.map((control) => control.element).filter(Boolean));
   formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
-  const extra = demo.setup?.(ui) ?? {};
-  // After the handles' hook, which applies the newest pointer position first.
-  view.beforeFrame(() => refresh());
-  view.afterFrame(() => publish());
+  let extra = demo.setup?.(ui) ?? {};
+  hookFrames();
   refresh();
   publish();
+  syncFigureKind(work.view); // starts loading three.js for a 3D state shown in 2D first
 
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */
@@ -392,9 +464,11 @@ export function mountDeclared(demo, initialState, ctx) {
       changed = null;
       view.requestDraw();
       refresh();
+      syncFigureKind(work.view);
       publish();
     },
     destroy() {
+      destroyed = true;
       extra.destroy?.();
       for (const control of built) control.destroy?.();
       ui.handles?.destroy();

@@ -255,7 +255,10 @@ export function infoLine(name, text, link = null) {
           anchor.hidden = !target;
           if (!target) return;
           setText(anchor, target.text);
-          if (anchor.getAttribute("href") !== target.href) anchor.setAttribute("href", target.href);
+          // No href (a refusal: the text says why): the anchor is plain text, not a link.
+          if (!target.href) anchor.removeAttribute("href");
+          else if (anchor.getAttribute("href") !== target.href)
+            anchor.setAttribute("href", target.href);
         },
       };
     },

@@ -232,8 +232,10 @@ export class Handles3D extends HandleSet {
 
   _key(event) {
     const n = this.source.count();
-    if (n === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
-    if (selectionKey(event, this, n)) return;
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    // A figure with no points (a curve alone, `handles: []`): the arrows still orbit.
+    if (n === 0 && !event.key.startsWith("Arrow")) return;
+    if (n > 0 && selectionKey(event, this, n)) return;
     const i = this.selected;
     switch (event.key) {
       case "ArrowLeft":

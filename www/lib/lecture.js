@@ -86,7 +86,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     let demo;
     try {
       demo = await loadDemo(scene.demo);
-      await prepareFigure(demo);
+      await prepareFigure(demo, scene.state);
     } catch (err) {
       setText(caption, errorText(err));
       return;

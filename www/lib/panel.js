@@ -140,6 +140,7 @@ export function slider(field, o) {
           control.set(state[field]);
         },
         stop: () => player?.stop(),
+        viewChanged: (view) => player?.attach(view),
         destroy: () => player?.destroy(),
       };
     },

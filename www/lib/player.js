@@ -149,6 +149,13 @@ export class Player {
     this.set(Math.min(b, Math.max(a, a + k * h)), true);
   }
 
+  /** Space plays on `view`'s canvas from now on (the demo's figure was made anew). */
+  attach(view) {
+    this.view.canvas.removeEventListener("keydown", this.onKey);
+    this.view = view;
+    if (this.playButton) view.canvas.addEventListener("keydown", this.onKey);
+  }
+
   /** Stops the animation without recording anything (the demo is going away). */
   destroy() {
     this.playing = false;

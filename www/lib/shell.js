@@ -19,7 +19,7 @@ import {
   texBlob,
 } from "./export.js";
 import { ensureKatexStyles } from "./formula.js";
-import { checkCamera, checkWindow } from "./validate.js";
+import { keepView, viewFits } from "./figure-kind.js";
 import { el, button } from "./controls.js";
 import { formatNumber, has, t } from "./strings.js";
 import { prefersReducedMotion } from "./theme.js";
@@ -50,10 +50,11 @@ export function validateState(demo, candidate) {
   }
   if (state && typeof state === "object" && "view" in state) {
     const { view, ...rest } = state;
-    // A 3D figure's `view` is its camera (camera3d.js), a 2D one's the world window.
-    if (demo.figure3d) checkCamera(view);
-    else checkWindow(view);
+    // A 3D figure's `view` is its camera (camera3d.js), a 2D one's the world window; a demo
+    // with both figures drops a view of the other kind (figure-kind.js).
+    if (typeof demo.dimension !== "function") keepView(demo, rest, view);
     validate(rest);
+    if (typeof demo.dimension === "function" && !keepView(demo, rest, view)) state = rest;
   } else {
     validate(state);
   }
@@ -103,17 +104,17 @@ export function mountDemo(
   const status = el("div", { class: "sl-status", role: "status", "aria-live": "polite" });
   const figureHost = el("div", { class: "sl-figure" });
   const helpId = `sl-help-${demo.id}-${Math.random().toString(36).slice(2, 8)}`;
-  const help = el("p", {
-    class: "sl-help",
-    id: helpId,
-    text: t(
-      demo.figure3d
-        ? "shell.figureHelp3d"
-        : demo.figure?.handles || !demo.figure
-          ? "shell.figureHelp"
-          : "shell.figureHelpTyped",
-    ),
-  });
+  /** The help under the figure: how to turn a 3D one, drag handles, or what a typed one shows. */
+  const noPoints3d = Array.isArray(demo.figure3d?.handles) && demo.figure3d.handles.length === 0;
+  const helpKey = (is3d) =>
+    is3d
+      ? noPoints3d
+        ? "shell.figureHelp3dTyped"
+        : "shell.figureHelp3d"
+      : demo.figure?.handles || !demo.figure
+        ? "shell.figureHelp"
+        : "shell.figureHelpTyped";
+  const help = el("p", { class: "sl-help", id: helpId, text: t(helpKey(Boolean(demo.figure3d))) });
   const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
   const formula = el("div", { class: "sl-formula" });
   const details = el("div", { class: "sl-details" });
@@ -126,74 +127,27 @@ export function mountDemo(
     tabindex: "-1",
   });
 
+  /** A toolbar button: its words are `toolbar.<key>` and `toolbar.<key>.title`. */
+  const tool = (key, name, onClick, extra = {}) =>
+    button({
+      label: t(`toolbar.${key}`),
+      title: t(`toolbar.${key}.title`),
+      name,
+      onClick,
+      ...extra,
+    });
   const buttons = {
-    undo: button({
-      label: t("toolbar.undo"),
-      title: t("toolbar.undo.title"),
-      name: "undo",
-      onClick: () => undo(),
-    }),
-    redo: button({
-      label: t("toolbar.redo"),
-      title: t("toolbar.redo.title"),
-      name: "redo",
-      onClick: () => redo(),
-    }),
-    reset: button({
-      label: t("toolbar.reset"),
-      title: t("toolbar.reset.title"),
-      name: "reset",
-      onClick: () => reset(),
-    }),
-    fit: button({
-      label: t("toolbar.fit"),
-      title: t("toolbar.fit.title"),
-      name: "fit",
-      onClick: () => fit(),
-    }),
-    lecture: button({
-      label: t("toolbar.lecture"),
-      title: t("toolbar.lecture.title"),
-      name: "lecture",
-      pressed: false,
-      onClick: () => toggleLecture(),
-    }),
-    share: button({
-      label: t("toolbar.share"),
-      title: t("toolbar.share.title"),
-      name: "share",
-      onClick: () => share(),
-    }),
-    svg: button({
-      label: t("toolbar.svg"),
-      title: t("toolbar.svg.title"),
-      name: "export-svg",
-      onClick: () => exportSvg(),
-    }),
-    tikz: button({
-      label: t("toolbar.tikz"),
-      title: t("toolbar.tikz.title"),
-      name: "export-tikz",
-      onClick: () => exportTikz(),
-    }),
-    png: button({
-      label: t("toolbar.png"),
-      title: t("toolbar.png.title"),
-      name: "export-png",
-      onClick: () => exportPng(),
-    }),
-    json: button({
-      label: t("toolbar.json"),
-      title: t("toolbar.json.title"),
-      name: "export-json",
-      onClick: () => exportState(),
-    }),
-    import: button({
-      label: t("toolbar.import"),
-      title: t("toolbar.import.title"),
-      name: "import",
-      onClick: () => fileInput.click(),
-    }),
+    undo: tool("undo", "undo", () => undo()),
+    redo: tool("redo", "redo", () => redo()),
+    reset: tool("reset", "reset", () => reset()),
+    fit: tool("fit", "fit", () => fit()),
+    lecture: tool("lecture", "lecture", () => toggleLecture(), { pressed: false }),
+    share: tool("share", "share", () => share()),
+    svg: tool("svg", "export-svg", () => exportSvg()),
+    tikz: tool("tikz", "export-tikz", () => exportTikz()),
+    png: tool("png", "export-png", () => exportPng()),
+    json: tool("json", "export-json", () => exportState()),
+    import: tool("import", "import", () => fileInput.click()),
   };
   const toolbar = el(
     "div",
@@ -283,7 +237,7 @@ export function mountDemo(
   function syncWindow() {
     if (!figure) return;
     const s = history.current;
-    if (s.view) {
+    if (s.view && viewFits(Boolean(figure.is3d), s.view)) {
       currentWindow = s.view;
       figure.setWindow(s.view);
     } else {
@@ -329,16 +283,28 @@ export function mountDemo(
   function undo() {
     const s = history.undo();
     if (!s) return showStatus(t("status.nothingToUndo"));
-    instance.update(s);
-    refreshButtons();
-    onCommit(history.current);
+    showHistory(s);
   }
 
   function redo() {
     const s = history.redo();
     if (!s) return showStatus(t("status.nothingToRedo"));
+    showHistory(s);
+  }
+
+  /** An undone or redone state; a figure of the other kind made for it records its view. */
+  function showHistory(s) {
+    const before = figure;
     instance.update(s);
+    if (figure !== before) recordWindow();
     refreshButtons();
+    onCommit(history.current);
+  }
+
+  /** Writes the shown window into the current state (after the figure was made anew). */
+  function recordWindow() {
+    if (JSON.stringify(history.current.view) === JSON.stringify(currentWindow)) return;
+    history.replace({ ...history.current, view: currentWindow });
     onCommit(history.current);
   }
 
@@ -437,8 +403,16 @@ export function mountDemo(
     reducedMotion: prefersReducedMotion(),
     slots: { figure: figureHost, controls: panel, formula, details },
     t,
-    /** Creates the demo's View in the figure slot (the shell handles its window and exports). */
+    /**
+     * Creates the demo's View in the figure slot (the shell handles its window and exports).
+     * Called again (a demo with both figures whose `dimension` changed), it replaces the figure:
+     * `options.window` is shown when it is a view of the new kind, else the figure fits.
+     */
     createFigure(options) {
+      const replacing = figure !== null;
+      // Focus on the old canvas moves to the new one (a keyboard user stays in the figure).
+      const focused = replacing && figure.canvas.matches(":focus");
+      figure?.destroy();
       const Figure = options.scene ? View3D : View;
       figure = new Figure(figureHost, {
         ...options,
@@ -450,8 +424,21 @@ export function mountDemo(
         },
       });
       figure.canvas.setAttribute("aria-describedby", helpId);
+      help.textContent = t(helpKey(Boolean(options.scene)));
+      if (replacing) {
+        if (focused) figure.canvas.focus({ preventScroll: true });
+        if (element.classList.contains("sl-lecture")) figure.setLecture(true);
+        if (viewFits(Boolean(figure.is3d), options.window)) figure.setWindow(options.window);
+        currentWindow = viewFits(Boolean(figure.is3d), options.window)
+          ? options.window
+          : figure.home
+            ? figure.home()
+            : figure.fit();
+      }
       return figure;
     },
+    /** Writes the figure's window into the current state (a figure made anew later). */
+    recordWindow: () => recordWindow(),
     /** A change in progress (drag, animation frame): shown, not recorded (copied, as `commit`). */
     preview(next) {
       history.preview(withView(structuredClone(next)));

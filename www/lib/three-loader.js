@@ -1,7 +1,8 @@
 /**
  * three.js for the 3D figures, loaded lazily from the vendored copy (`www/vendor/three/`, made by
- * `scripts/vendor.mjs`; never a CDN). Only a demo that declares `figure3d` asks for it, so a 2D
- * demo page or a 2D `<spline-lab>` embed fetches no three.js file.
+ * `scripts/vendor.mjs`; never a CDN). Only a 3D figure asks for it (a demo that declares
+ * `figure3d`, or one with both figures showing a state whose `dimension` is 3), so a 2D demo
+ * page or a 2D `<spline-lab>` embed fetches no three.js file.
  *
  * `prepareFigure(demo)` is what a host (the playground page, `<spline-lab>`, the gallery
  * thumbnails, the tests) awaits before `mountDemo`: the mount itself stays synchronous, and a
@@ -34,7 +35,25 @@ export function loadedThree() {
   return loaded;
 }
 
-/** Resolves when `demo` can be mounted: at once for a 2D demo, after three.js for a 3D one. */
-export function prepareFigure(demo) {
-  return demo?.figure3d ? loadThree() : Promise.resolve(null);
+/**
+ * The kind of figure `state` is shown in: 3 (`figure3d`, View3D) or 2 (`figure`, View). A demo
+ * that has both decides per state (`dimension(state)` → 2 | 3: a typed curve with a z(t)); a
+ * missing field takes the default's, a state it cannot read is shown in 2D. Any other demo has
+ * the one kind it declares.
+ */
+export function figureDimension(demo, state) {
+  if (typeof demo?.dimension !== "function") return demo?.figure3d ? 3 : 2;
+  try {
+    return demo.dimension({ ...demo.defaultState, ...state }) === 3 ? 3 : 2;
+  } catch {
+    return 2;
+  }
+}
+
+/**
+ * Resolves when `demo` can be mounted with `state` (default: its starting state; a link's state
+ * may be passed unchecked): at once for a 2D figure, after three.js for a 3D one.
+ */
+export function prepareFigure(demo, state = demo?.defaultState) {
+  return figureDimension(demo, state) === 3 ? loadThree() : Promise.resolve(null);
 }

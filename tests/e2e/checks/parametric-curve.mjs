@@ -164,18 +164,102 @@ export default [
     },
   ],
   [
-    "helix: κ = 1/(1 + c²), τ = c/(1 + c²); dragging the figure turns the view",
+    "helix: κ = 1/(1 + c²), τ = c/(1 + c²); the 3D view mounts and a drag orbits it",
     async (page, h, _base, { assert, equal, settle }) => {
       await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
       equal(await readoutData(page, "curvature", "kappa"), "0.962", "κ");
       equal(await readoutData(page, "speed", "speed"), "1.020", "speed");
       const torsion = await page.locator('[data-info="torsion"]').textContent();
       assert(torsion.includes("0.192"), `torsion: ${torsion}`);
-      const before = (await linkState(page)).azimuth;
+      const before = (await linkState(page)).view;
+      equal(before.length, 6, `a camera in the link: ${JSON.stringify(before)}`);
+      assert(
+        Number(await page.locator(".sl-figure").getAttribute("data-geometries")) > 0,
+        "scene curves made",
+      );
       const box = await h.canvas().boundingBox();
-      await h.drag({ x: box.x + 20, y: box.y + 20 }, 50, 0);
-      const after = (await linkState(page)).azimuth;
-      assert(after !== before, `azimuth ${before} → ${after}`);
+      await h.drag({ x: box.x + 20, y: box.y + 20 }, 60, 0);
+      const after = (await linkState(page)).view;
+      assert(after[0] !== before[0], `azimuth ${before[0]} → ${after[0]}`);
+      const runs = JSON.parse(await page.locator(".sl-figure").getAttribute("data-plot-runs"));
+      equal(runs.length, 1, "the helix is one run");
+    },
+  ],
+  [
+    "the circle's page loads no three.js file; the helix example loads it and shows the 3D view",
+    async (page, _h, base, { equal, settle }) => {
+      const three = [];
+      const watch = (request) => {
+        if (request.url().includes("/vendor/three/")) three.push(request.url());
+      };
+      page.on("request", watch);
+      try {
+        await page.goto("about:blank");
+        await page.goto(`${base}/index.html#demo=parametric-curve`);
+        await page.locator(".sl-figure[data-handles]").waitFor({ state: "attached" });
+        await settle(page);
+        equal(three.length, 0, "three.js files on the circle's page");
+        const help = () => page.locator(".sl-help").first().textContent();
+        const plane = await help();
+        await preset(page, "helix", settle);
+        await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+        equal(three.length > 0, true, "three.js loaded for the helix");
+        equal((await linkState(page)).view.length, 6, "the camera recorded");
+        const space = await help();
+        equal(space !== plane && space.length > 20, true, `help: ${plane} → ${space}`);
+      } finally {
+        page.off("request", watch);
+      }
+    },
+  ],
+  [
+    "helix → circle: the 2D figure with its hodograph comes back; undo shows the 3D view again",
+    async (page, h, _base, { assert, equal, settle }) => {
+      await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await preset(page, "circle", settle);
+      await settle(page);
+      const figure = page.locator(".sl-figure");
+      equal(await figure.getAttribute("data-geometries"), null, "no 3D figure");
+      equal((await h.handles()).length, 1, "the hodograph's O is a handle");
+      equal((await linkState(page)).view.length, 4, "a window in the link");
+      equal(await page.locator(".sl-figure canvas").count(), 1, "one canvas");
+      await h.canvas().focus();
+      await page.keyboard.press("Control+z");
+      await settle(page);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      const state = await linkState(page);
+      assert(state.z === "t/5" && state.view.length === 6, `after undo: ${JSON.stringify(state)}`);
+      // Deleting z(t) by typing gives the plane figure again.
+      await typeInto(page, '[data-control="z"] input', "");
+      await settle(page);
+      equal((await linkState(page)).view.length, 4, "a window after z is deleted");
+      equal(await page.locator(".sl-figure canvas").count(), 1, "one canvas");
+    },
+  ],
+  [
+    "the link of the helix restores its camera; a 2D window in a helix link is dropped",
+    async (page, h, base, { assert, equal, openDemo, settle }) => {
+      await preset(page, "helix", settle);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      const box = await h.canvas().boundingBox();
+      await h.drag({ x: box.x + 20, y: box.y + 20 }, 40, 30);
+      const state = await linkState(page);
+      const encoded = Buffer.from(JSON.stringify(state)).toString("base64url");
+      h = await openDemo(page, base, "parametric-curve", `&s=${encoded}`);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
+      equal(JSON.stringify((await linkState(page)).view), JSON.stringify(state.view), "camera");
+      const flat = { ...state, view: [-1, -1, 1, 1] };
+      const link = Buffer.from(JSON.stringify(flat)).toString("base64url");
+      h = await openDemo(page, base, "parametric-curve", `&s=${link}`);
+      await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
+      await settle(page);
+      const view = (await linkState(page)).view;
+      assert(view.length === 6, `fitted camera: ${JSON.stringify(view)}`);
+      equal(await h.statusKind(), null, "no error shown");
     },
   ],
   [
@@ -186,6 +270,8 @@ export default [
         // Near the pole P(t) and P′(t) are ~10⁴ and ~10⁸ units away; zoomed out, the
         // branches and the osculating circle run far off the canvas.
         if (name === "tan") await typeInto(page, '[data-control="t"] .sl-value', "1.5707");
+        // The 3D figure replaces the plane one once three.js has loaded.
+        else await page.locator(".sl-figure[data-geometries]").waitFor({ state: "attached" });
         const box = await h.canvas().boundingBox();
         await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
         for (let k = 0; k < 4; k++) await page.mouse.wheel(0, 400);
@@ -243,6 +329,34 @@ export default [
         );
         const label = await page.locator("spline-lab#e .sl-canvas").getAttribute("aria-label");
         assert(label.includes("sin(2t)"), `aria-label: ${label}`);
+      } finally {
+        await page.unroute(url);
+      }
+    },
+  ],
+  [
+    "embed: a z attribute mounts the 3D figure at once; a Bézier form of a space polynomial",
+    async (page, _h, base, { assert, equal, settle }) => {
+      const url = `${base}/parametric-embed-3d.html`;
+      await page.route(url, (route) =>
+        route.fulfill({
+          contentType: "text/html",
+          body: '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><script type="module" src="embed.js"></script></head><body><spline-lab id="e" demo="parametric-curve" x="t" y="t^2" z="t^3" to="1" bezier></spline-lab></body></html>',
+        }),
+      );
+      try {
+        await page.goto(url);
+        await page
+          .locator("spline-lab#e .sl-figure[data-geometries]")
+          .waitFor({ state: "attached" });
+        await settle(page);
+        const text = await page.locator('spline-lab#e [data-info="bezier-points"]').textContent();
+        assert(text.includes("(1/3, 0, 0)") && text.includes("(1, 1, 1)"), `points: ${text}`);
+        equal(
+          await page.locator('spline-lab#e [data-link="bezier-points"]').getAttribute("href"),
+          null,
+          "no link into de Casteljau for a space curve",
+        );
       } finally {
         await page.unroute(url);
       }

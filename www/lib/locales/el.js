@@ -54,6 +54,8 @@ export default {
   "shell.tryThis": "Δοκιμάστε",
   "shell.figureHelp3d":
     "Σύρετε ένα σημείο (στο επίπεδο που βλέπει προς εσάς) ή πατήστε Tab για να επιλέξετε ένα: τα βέλη το μετακινούν (Shift: 10 px), τα PageUp/PageDown προς εσάς ή μακριά σας. Σύρετε σε κενό χώρο για περιστροφή, Shift-σύρσιμο ή δύο δάχτυλα για μετατόπιση, ροδέλα ή τσίμπημα για μεγέθυνση· χωρίς επιλεγμένο σημείο τα βέλη περιστρέφουν την προβολή.",
+  "shell.figureHelp3dTyped":
+    "Η καμπύλη ακολουθεί τους τύπους που πληκτρολογείτε στον πίνακα ελέγχου. Σύρετε για περιστροφή, Shift-σύρσιμο ή δύο δάχτυλα για μετατόπιση, ροδέλα ή τσίμπημα για μεγέθυνση· τα βέλη περιστρέφουν την προβολή.",
   "shell.figureHelp":
     "Σύρετε ένα σημείο ή πατήστε Tab για να επιλέξετε ένα και τα βέλη για να το μετακινήσετε (Shift: 10 px). Σύρετε σε κενό χώρο για μετατόπιση· ροδέλα ή τσίμπημα για μεγέθυνση.",
   "shell.figureHelpTyped":
@@ -2298,11 +2300,6 @@ export default {
   "parametricCurve.bezierLink": "Άνοιγμα αυτών των σημείων ελέγχου στον αλγόριθμο de Casteljau",
   "parametricCurve.bezierLinkOff":
     "Η επίδειξη de Casteljau δέχεται μόνο επίπεδες καμπύλες βαθμού 1 έως 10.",
-  "parametricCurve.control.view": "Όψη της χωρικής καμπύλης",
-  "parametricCurve.control.azimuth": "Αζιμούθιο (μοίρες)",
-  "parametricCurve.control.azimuth.input": "αζιμούθιο της όψης σε μοίρες",
-  "parametricCurve.control.elevation": "Ανύψωση (μοίρες)",
-  "parametricCurve.control.elevation.input": "γωνία ανύψωσης της όψης σε μοίρες",
   "parametricCurve.atT": "Στο t",
   "parametricCurve.speed": "Μέτρο ταχύτητας |P′(t)| = {speed}",
   "parametricCurve.curvature": "Καμπυλότητα κ(t) = {kappa}",

@@ -52,6 +52,8 @@ export default {
   "shell.tryThis": "Isprobajte",
   "shell.figureHelp3d":
     "Povucite točku (u ravnini okrenutoj prema vama) ili je odaberite tipkom Tab: strelice je pomiču (Shift: 10 px), PageUp/PageDown prema vama ili od vas. Povucite prazan prostor za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; kad nijedna točka nije odabrana, strelice okreću prikaz.",
+  "shell.figureHelp3dTyped":
+    "Krivulja slijedi formule upisane u ploči s kontrolama. Povucite za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; strelice okreću prikaz.",
   "shell.figureHelp":
     "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
   "shell.figureHelpTyped":
@@ -2275,11 +2277,6 @@ export default {
   "parametricCurve.bezierLink": "Otvori ove kontrolne točke u De Casteljauovu algoritmu",
   "parametricCurve.bezierLinkOff":
     "Demonstracija De Casteljauova algoritma prima samo ravninske krivulje stupnja 1 do 10.",
-  "parametricCurve.control.view": "Pogled na prostornu krivulju",
-  "parametricCurve.control.azimuth": "Azimut (stupnjevi)",
-  "parametricCurve.control.azimuth.input": "azimut pogleda u stupnjevima",
-  "parametricCurve.control.elevation": "Elevacija (stupnjevi)",
-  "parametricCurve.control.elevation.input": "elevacija pogleda u stupnjevima",
   "parametricCurve.atT": "U t",
   "parametricCurve.speed": "Iznos brzine |P′(t)| = {speed}",
   "parametricCurve.curvature": "Zakrivljenost κ(t) = {kappa}",

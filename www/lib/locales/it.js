@@ -52,6 +52,8 @@ export default {
   "shell.tryThis": "Prova",
   "shell.figureHelp3d":
     "Trascina un punto (nel piano rivolto verso di te), oppure premi Tab per selezionarne uno: i tasti freccia lo spostano (Shift: 10 px), PageUp/PageDown verso di te o lontano da te. Trascina lo spazio vuoto per ruotare, Shift+trascina o due dita per spostare, rotella o pizzico per lo zoom; senza punto selezionato i tasti freccia ruotano la vista.",
+  "shell.figureHelp3dTyped":
+    "La curva segue le formule scritte nel pannello. Trascina per ruotare, Shift+trascina o due dita per spostare, rotella o pizzico per lo zoom; i tasti freccia ruotano la vista.",
   "shell.figureHelp":
     "Trascina un punto, oppure premi Tab per selezionarne uno e i tasti freccia per spostarlo (Shift: 10 px). Trascina lo spazio vuoto per spostare la vista; rotella o pizzico per lo zoom.",
   "shell.figureHelpTyped":
@@ -2296,11 +2298,6 @@ export default {
   "parametricCurve.bezierLink": "Apri questi punti di controllo nell'algoritmo di De Casteljau",
   "parametricCurve.bezierLinkOff":
     "La dimostrazione di De Casteljau accetta solo curve piane di grado da 1 a 10.",
-  "parametricCurve.control.view": "Vista della curva nello spazio",
-  "parametricCurve.control.azimuth": "Azimut (gradi)",
-  "parametricCurve.control.azimuth.input": "azimut della vista in gradi",
-  "parametricCurve.control.elevation": "Elevazione (gradi)",
-  "parametricCurve.control.elevation.input": "elevazione della vista in gradi",
   "parametricCurve.atT": "In t",
   "parametricCurve.speed": "Modulo della velocità |P′(t)| = {speed}",
   "parametricCurve.curvature": "Curvatura κ(t) = {kappa}",
