@@ -275,61 +275,13 @@ fn step(op: Op, t: f64, params: &[f64], regs: &[f64]) -> f64 {
     }
 }
 
-/// Test-only tree builders (spans do not matter to the evaluators).
+/// Test-only tree builders (spans do not matter to the evaluators): the family's, with `n`
+/// a number without an exact value.
 #[cfg(test)]
 pub(crate) mod build {
-    use super::super::ast::{BinOp, Constant, Expr, Func, Node};
-
-    pub fn n(v: f64) -> Expr {
-        Expr::number(v, None)
-    }
-    pub fn t() -> Expr {
-        Expr::new(Node::T, Default::default())
-    }
-    pub fn p(i: usize) -> Expr {
-        Expr::new(Node::Param(i), Default::default())
-    }
-    pub fn pi() -> Expr {
-        Expr::new(Node::Constant(Constant::Pi), Default::default())
-    }
-    pub fn neg(a: Expr) -> Expr {
-        Expr::new(Node::Neg(Box::new(a)), Default::default())
-    }
-    fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
-        Expr::new(
-            Node::Binary(op, Box::new(a), Box::new(b)),
-            Default::default(),
-        )
-    }
-    pub fn add(a: Expr, b: Expr) -> Expr {
-        bin(BinOp::Add, a, b)
-    }
-    pub fn sub(a: Expr, b: Expr) -> Expr {
-        bin(BinOp::Sub, a, b)
-    }
-    pub fn mul(a: Expr, b: Expr) -> Expr {
-        bin(BinOp::Mul, a, b)
-    }
-    pub fn div(a: Expr, b: Expr) -> Expr {
-        bin(BinOp::Div, a, b)
-    }
-    pub fn pow(a: Expr, b: Expr) -> Expr {
-        bin(BinOp::Pow, a, b)
-    }
-    pub fn call(f: Func, a: Expr) -> Expr {
-        Expr::new(Node::Call(f, Box::new(a)), Default::default())
-    }
-    /// The notes' polynomial 6.5t⁵ − 7.2t³ + 3t² − 2.1t − 5.
-    pub fn notes_polynomial() -> Expr {
-        let term = |c: f64, k: f64| mul(n(c), pow(t(), n(k)));
-        sub(
-            sub(
-                add(sub(term(6.5, 5.0), term(7.2, 3.0)), term(3.0, 2.0)),
-                mul(n(2.1), t()),
-            ),
-            n(5.0),
-        )
-    }
+    pub use super::super::diff::build::{
+        add, call, div, inexact as n, mul, ng as neg, notes_polynomial, p, pi, pow, sub, t,
+    };
 }
 
 #[cfg(test)]

@@ -24,18 +24,27 @@ export function expressionCodes() {
     codes.set(m[1], m[2]);
   const body = /pub enum Problem \{\n([\s\S]*?)\n\}\n/.exec(text);
   if (!body || codes.size < 10) throw new Error("Problem codes not found in src/expr/error.rs");
+  return variantFields(body[1], codes, "Problem", EXPRESSION_PLACE);
+}
+
+/**
+ * The camelCase field names of every variant of an enum's body (struct variants at 4 spaces,
+ * fields at 8), by code, each list starting with `first`; `Error::Expression` is skipped (its
+ * codes and fields are the problems', `expressionCodes`).
+ */
+function variantFields(body, codes, name, first = []) {
   const fields = new Map();
   let variant = null;
-  for (const line of body[1].split("\n")) {
+  for (const line of body.split("\n")) {
     const start = /^ {4}(\w+) \{(\},?)?$/.exec(line);
     if (start?.[1] === "Expression") {
-      variant = null; // its codes and fields are the problems' (expressionCodes)
+      variant = null;
       continue;
     }
     if (start) {
       variant = start[1];
-      if (!codes.has(variant)) throw new Error(`Problem::${variant} has no code`);
-      fields.set(codes.get(variant), [...EXPRESSION_PLACE]);
+      if (!codes.has(variant)) throw new Error(`${name}::${variant} has no code`);
+      fields.set(codes.get(variant), [...first]);
       if (start[2]) variant = null;
       continue;
     }
@@ -81,25 +90,10 @@ export function codeFields() {
   const codes = variantCodes();
   const body = /pub enum Error \{\n([\s\S]*?)\n\}\n/.exec(source("mod.rs"));
   if (!body) throw new Error("enum Error not found in src/error/mod.rs");
-  const fields = new Map(Object.entries(GLUE_ERRORS));
-  let variant = null;
-  for (const line of body[1].split("\n")) {
-    const start = /^ {4}(\w+) \{(\},?)?$/.exec(line);
-    if (start?.[1] === "Expression") {
-      variant = null; // its codes and fields are the problems' (expressionCodes)
-      continue;
-    }
-    if (start) {
-      variant = start[1];
-      if (!codes.has(variant)) throw new Error(`variant ${variant} has no code in code.rs`);
-      fields.set(codes.get(variant), []);
-      if (start[2]) variant = null;
-      continue;
-    }
-    if (/^ {4}\},?$/.test(line)) variant = null;
-    const field = /^ {8}(\w+): /.exec(line);
-    if (variant && field) fields.get(codes.get(variant)).push(camel(field[1]));
-  }
+  const fields = new Map([
+    ...Object.entries(GLUE_ERRORS),
+    ...variantFields(body[1], codes, "Error"),
+  ]);
   for (const code of codes.values()) {
     if (!fields.has(code)) throw new Error(`code ${code}: variant not found in mod.rs`);
   }
