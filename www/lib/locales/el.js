@@ -2200,8 +2200,7 @@ export default {
   "piecewise.fieldName.from": "αρχή του διαστήματος",
   "piecewise.fieldName.to": "τέλος του διαστήματος",
   "piecewise.addPiece": "Προσθήκη τμήματος",
-  "piecewise.addPiece.title":
-    "Προσθήκη τμήματος μετά το τελευταίο, από εκεί όπου εκείνο τελειώνει",
+  "piecewise.addPiece.title": "Προσθήκη τμήματος μετά το τελευταίο, από εκεί όπου εκείνο τελειώνει",
   "piecewise.removePiece": "Αφαίρεση του τελευταίου τμήματος",
   "piecewise.removePiece.title": "Αφαίρεση του τελευταίου τμήματος (μένει τουλάχιστον ένα)",
   "piecewise.maxPieces": "αυτή η επίδειξη επιτρέπει έως {max} τμήματα",
