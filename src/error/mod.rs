@@ -8,6 +8,8 @@ mod check;
 mod code;
 mod message;
 mod phrase;
+#[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
+mod serialize;
 
 pub use phrase::{phrase, PHRASES};
 
@@ -150,7 +152,7 @@ pub enum Error {
         /// What went wrong with it.
         #[cfg_attr(
             all(target_arch = "wasm32", target_os = "unknown"),
-            serde(serialize_with = "crate::wasm::error::coded")
+            serde(serialize_with = "crate::error::serialize::coded")
         )]
         source: Box<Error>,
     },
@@ -237,7 +239,7 @@ pub enum Error {
         /// The spacing asked for.
         #[cfg_attr(
             all(target_arch = "wasm32", target_os = "unknown"),
-            serde(serialize_with = "crate::wasm::error::alpha")
+            serde(serialize_with = "crate::error::serialize::alpha")
         )]
         kind: crate::bspline::Parameterization,
     },
@@ -261,7 +263,7 @@ pub enum Error {
         /// The rule.
         #[cfg_attr(
             all(target_arch = "wasm32", target_os = "unknown"),
-            serde(serialize_with = "crate::wasm::error::debug")
+            serde(serialize_with = "crate::error::serialize::debug")
         )]
         rule: crate::bezier::JoinRule,
         /// Degree `n` of the left piece.

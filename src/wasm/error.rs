@@ -4,7 +4,6 @@
 //! language without reading the English (www/lib/core-errors.js does).
 
 use crate::error::Error;
-use serde::ser::{SerializeStruct, Serializer};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
@@ -52,28 +51,4 @@ impl From<ApiError> for JsValue {
 /// `object[key] = value`; a failure (a frozen object) only loses the property.
 fn set(object: &js_sys::Error, key: &str, value: &JsValue) {
     let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), value);
-}
-
-/// Serializes the cause of an [`Error::InArgument`] as `{ code, params }`.
-pub(crate) fn coded<S: Serializer>(source: &Error, serializer: S) -> Result<S::Ok, S::Error> {
-    let mut cause = serializer.serialize_struct("Cause", 2)?;
-    cause.serialize_field("code", source.code())?;
-    cause.serialize_field("params", source)?;
-    cause.end()
-}
-
-/// Serializes a parametrisation as its exponent α (0 uniform, ½ centripetal, 1 chord).
-pub(crate) fn alpha<S: Serializer>(
-    kind: &crate::bspline::Parameterization,
-    serializer: S,
-) -> Result<S::Ok, S::Error> {
-    kind.alpha().serialize(serializer)
-}
-
-/// Serializes a field by its `Debug` text (a joining rule: "C1").
-pub(crate) fn debug<T: std::fmt::Debug, S: Serializer>(
-    value: &T,
-    serializer: S,
-) -> Result<S::Ok, S::Error> {
-    format!("{value:?}").serialize(serializer)
 }

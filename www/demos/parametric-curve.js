@@ -18,7 +18,7 @@
  * control polygon on the same figure, the fractions listed, and a link into de-casteljau.
  */
 import { field } from "../lib/validate.js";
-import { slider, checkbox, readout, group, actions } from "../lib/panel.js";
+import { slider, checkbox, readout, group, actions, shownWhen } from "../lib/panel.js";
 import {
   fmt,
   fmtTex,
@@ -30,7 +30,7 @@ import {
 } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { errorText } from "../lib/core-errors.js";
-import { formulaFields, infoLine, parameterSliders, shownIf } from "../lib/expression-fields.js";
+import { formulaFields, infoLine, parameterSliders } from "../lib/expression-fields.js";
 import {
   TEXTS,
   WITH_PARAMS,
@@ -236,14 +236,14 @@ export const controls = [
       { live: true, data: (s, d) => ({ kappa: d.at.kappaMachine }) },
     ),
     readout("radius", (s, d) => radiusNote(d)),
-    shownIf(
+    shownWhen(
       (s) => isSpaceState(s),
       readout("torsion", (s, d) =>
         Number.isFinite(d.at.tau) ? t("parametricCurve.torsion", { tau: fmt(d.at.tau) }) : "",
       ),
     ),
   ),
-  shownIf(
+  shownWhen(
     (s, d) => d.whole.polynomial,
     group(
       null,

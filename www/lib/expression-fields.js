@@ -17,9 +17,9 @@
  * (`ui.set`), which the demo takes into its model in place (`derive.inPlace`).
  */
 import { el, setText, slider as sliderElement, group as fieldset } from "./controls.js";
+import { markedText } from "./refusal-mark.js";
 import { errorText } from "./core-errors.js";
 import { t } from "./strings.js";
-import { HUES } from "./theme.js";
 
 /** Sliders of a parameter run over [−R, R]: R is this, or the next step above 2|value|. */
 const PARAMETER_RANGE = 5;
@@ -66,18 +66,10 @@ export function formulaFields({ legend, rows, help = null, check, apply }) {
         const name = p.field in boxes ? p.field : last;
         if (!name) return ui.status(errorText(err), "error");
         const text = boxes[name].value;
-        const start = Math.max(0, Math.min(Number(p.start) || 0, text.length));
-        let end = Math.max(start, Math.min(Number(p.end) || start, text.length));
         // An empty range at the start of a text is about the field as a whole (an interval
         // [1, 0]): the whole text is marked.
-        if (start === 0 && end === 0) end = text.length;
-        const mark = el("u", { dataset: { start: String(start), end: String(end) } });
-        // An empty range (a missing part at the end) marks the place with a space.
-        mark.textContent = text.slice(start, end) || "\u00a0";
-        mark.style.textDecorationColor = HUES.vermillion;
-        mark.style.textDecorationStyle = "wavy";
-        mark.style.textDecorationThickness = "2px";
-        const code = el("code", {}, text.slice(0, start), mark, text.slice(end));
+        const whole = !(Number(p.start) || Number(p.end));
+        const code = el("code", {}, ...markedText(text, p.start, whole ? text.length : p.end));
         code.style.whiteSpace = "pre-wrap";
         notes[name].replaceChildren(code, el("br"), el("span", { text: errorText(err) }));
         notes[name].hidden = false;
@@ -216,22 +208,6 @@ export function parameterSliders(field, { legend, input }) {
             }
             control.set(v);
           }
-        },
-      };
-    },
-  };
-}
-
-/** A control shown while `when(state, data)` holds (panel.js `shownWhen` also reads the data). */
-export function shownIf(when, item) {
-  return {
-    build(ui) {
-      const part = item.build(ui);
-      return {
-        ...part,
-        sync(state, data) {
-          part.element.hidden = !when(state, data);
-          part.sync?.(state, data);
         },
       };
     },

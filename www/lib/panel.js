@@ -351,7 +351,10 @@ export function readout(name, text, { kind = "note", live = false, data = null }
   };
 }
 
-/** A control shown only while `when(state)` holds (e.g. the settings of the chosen option). */
+/**
+ * A control shown only while `when(state, data)` holds (e.g. the settings of the chosen option,
+ * or what only a computed value allows: the Bézier form of a polynomial curve).
+ */
 export function shownWhen(when, item) {
   return {
     build(ui) {
@@ -359,7 +362,7 @@ export function shownWhen(when, item) {
       return {
         ...part,
         sync(state, data) {
-          part.element.hidden = !when(state);
+          part.element.hidden = !when(state, data);
           part.sync?.(state, data);
         },
       };

@@ -14,6 +14,7 @@
  * merge key per box, so one undo step takes back one box's typing.
  */
 import { el, setText, button } from "./controls.js";
+import { markedText } from "./refusal-mark.js";
 import { t } from "./strings.js";
 import { errorText, problemText } from "./core-errors.js";
 import { CYCLE } from "./theme.js";
@@ -40,11 +41,7 @@ export function pieceFields(field, { prefix, names, min, max, added }) {
 
       /** Underlines `start … end` of the box's text in its echo line (an empty range: one caret). */
       function mark(box, start, end) {
-        const text = box.input.value;
-        const a = Math.max(0, Math.min(start, text.length));
-        const b = Math.max(a, Math.min(end, text.length));
-        const bad = el("span", { class: "sl-expr-bad", text: b > a ? text.slice(a, b) : " " });
-        box.echo.replaceChildren(text.slice(0, a), bad, text.slice(b));
+        box.echo.replaceChildren(...markedText(box.input.value, start, end));
         box.echo.hidden = false;
         box.input.setAttribute("aria-invalid", "true");
       }
