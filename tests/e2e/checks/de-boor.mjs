@@ -75,14 +75,16 @@ export default [
   ],
   [
     "step buttons move u by 1/16 of the domain and the span follows",
-    async (page, _h, _base, { assert, equal }) => {
+    async (page, _h, _base, { assert, equal, settle }) => {
       const box = page.locator('[data-control="u"] .sl-value');
       const span = page.locator('[data-info="span"]');
       await page.locator('[data-action="step"]').click();
+      await settle(page);
       equal(await box.inputValue(), "1.500", "after one step (domain [0, 4]: step 1/4)");
       equal(await span.getAttribute("data-span"), "4", "span after one step");
       await page.locator('[data-action="step"]').click();
       await page.locator('[data-action="step"]').click();
+      await settle(page);
       // u = 2 = u₅ belongs to the next span (right-continuous basis): k = 5, [2, 3).
       equal(await box.inputValue(), "2.000", "after three steps");
       equal(await span.getAttribute("data-span"), "5", "span at u = 2");
@@ -91,6 +93,7 @@ export default [
         `span text: ${await span.textContent()}`,
       );
       for (let i = 0; i < 5; i++) await page.locator('[data-action="step-back"]').click();
+      await settle(page);
       equal(await box.inputValue(), "0.750", "after five steps back");
       equal(await span.getAttribute("data-span"), "3", "span at u = 3/4");
       assert(

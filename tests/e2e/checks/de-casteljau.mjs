@@ -21,11 +21,14 @@ export default [
   [
     "step buttons move t by 1/16",
     async (page, h, _base, { assert, equal, settle }) => {
+      // The controls show the state at the next frame: settle before reading them.
       const box = page.locator('[data-control="t"] .sl-value');
       await page.locator('[data-action="step"]').click();
+      await settle(page);
       equal(await box.inputValue(), "0.313", "after one step");
       await page.locator('[data-action="step-back"]').click();
       await page.locator('[data-action="step-back"]').click();
+      await settle(page);
       equal(await box.inputValue(), "0.188", "after two steps back");
       assert(
         (await page.locator(".sl-table-title").textContent()).includes("3/16"),
@@ -41,6 +44,7 @@ export default [
       await page.locator('[data-action="play"]').click();
       await page.waitForTimeout(PLAY_MS);
       await page.locator('[data-action="play"]').click();
+      await settle(page);
       const after = Number(await box.inputValue());
       assert(after > before, `t went from ${before} to ${after}`);
       await page.waitForTimeout(100);

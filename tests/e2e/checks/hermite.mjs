@@ -95,12 +95,13 @@ export default [
   ],
   [
     "Play runs t along the whole curve (0 … 3), the pieces one after the other",
-    async (page, _h, _base, { assert, equal, PLAY_MS }) => {
+    async (page, _h, _base, { assert, equal, settle, PLAY_MS }) => {
       const box = page.locator('[data-control="t"] .sl-value');
       const local = page.locator('[data-info="local"]');
       await page.locator('[data-action="play"]').click();
       await page.waitForTimeout(3 * PLAY_MS);
       await page.locator('[data-action="play"]').click();
+      await settle(page);
       const t = Number(await box.inputValue());
       assert(t > 1 && t <= 3, `t = ${t}`);
       assert(
@@ -109,6 +110,7 @@ export default [
       );
       // The step buttons go by (b − a)/16 = 3/16.
       await page.locator('[data-action="step"]').click();
+      await settle(page);
       equal(Number(await box.inputValue()) > t, true, "a step forward");
     },
   ],
