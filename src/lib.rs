@@ -19,6 +19,7 @@ pub mod bspline;
 pub mod curve;
 pub mod error;
 pub mod expr;
+pub mod fit;
 pub mod geom;
 pub mod interp;
 pub mod parametric;

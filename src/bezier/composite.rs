@@ -345,6 +345,23 @@ impl<C: Cartesian> CompositeCurve<C> {
         &self.pieces
     }
 
+    /// Moves control point `i` of piece `piece` to `p`, in place. The neighbours do not
+    /// follow: keeping a joint is the caller's choice (move both pieces' shared points).
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`] for a piece past the last, then those of
+    /// [`BezierCurve::set_control_point`].
+    pub fn set_control_point(&mut self, piece: usize, i: usize, p: C) -> Result<()> {
+        let count = self.pieces.len();
+        match self.pieces.get_mut(piece) {
+            Some(b) => b.set_control_point(i, p),
+            None => Err(Error::IndexOutOfRange {
+                index: piece,
+                count,
+            }),
+        }
+    }
+
     /// The global domain `[t_0, t_k]`.
     pub fn domain(&self) -> (f64, f64) {
         (self.pieces[0].a, self.pieces[self.pieces.len() - 1].b)

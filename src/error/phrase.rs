@@ -71,6 +71,7 @@ pub const PHRASES: &[(&str, &str)] = &[
     ("samples-result", "samples (points × coordinates)"),
     ("start-angle", "start angle"),
     ("string", "a string"),
+    ("stroke", "a stroke"),
     ("surface-derivative-order", "derivative order du + dv"),
     ("tessellation-vertices", "tessellation vertices (nu + 1)(nv + 1)"),
     ("tessellation-work", "tessellation vertices (nu + 1)(nv + 1) for this degree (work budget 2^28)"),

@@ -18,6 +18,7 @@ mod class;
 pub mod bezier;
 pub mod bspline;
 pub(crate) mod error;
+pub mod fit;
 pub mod interp;
 pub mod parametric;
 pub mod rational;
@@ -30,6 +31,9 @@ mod surface_teaching;
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 pub use error::ApiError;
+pub use fit::{
+    fit_bspline, fit_bspline_report, fit_curve, fit_curve_report, oversketch, oversketch_report,
+};
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
 pub use parametric::{expression_names, parametric_curve, JsParametricCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
@@ -75,6 +79,61 @@ pub(crate) fn object_of(entries: &[(&str, &[f64])]) -> Result<JsValue, ApiError>
     Ok(object.into())
 }
 
+/// `object[key] = value` on a fresh plain object (which cannot refuse it: no setters, not
+/// frozen). Out of line: one copy for every result object.
+#[inline(never)]
+pub(crate) fn set_key(object: &js_sys::Object, key: &str, value: &JsValue) {
+    let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), value);
+}
+
+/// A plain object `{ key: number, … }`.
+pub(crate) fn js_object(entries: &[(&str, f64)]) -> js_sys::Object {
+    let object = js_sys::Object::new();
+    for &(key, value) in entries {
+        set_key(&object, key, &value.into());
+    }
+    object
+}
+
+/// The entries of an options object: `undefined`/`null` give none; anything but a plain
+/// object is an [`Error::ArgumentType`]; a key outside `allowed` an [`Error::UnknownOption`]
+/// naming it (`listed` is the list the message shows).
+pub(crate) fn option_entries(
+    options: &JsValue,
+    (allowed, listed): (&[&str], &'static str),
+) -> Result<Vec<(String, JsValue)>, ApiError> {
+    if options.is_undefined() || options.is_null() {
+        return Ok(Vec::new());
+    }
+    let object = match options.dyn_ref::<js_sys::Object>() {
+        Some(o) if options.is_object() && !js_sys::Array::is_array(options) => o,
+        _ => {
+            return Err(Error::ArgumentType {
+                name: "options",
+                expected: "object",
+                got: type_name(options),
+            }
+            .into())
+        }
+    };
+    let mut out = Vec::new();
+    for key in js_sys::Object::keys(object).iter() {
+        let key = key.as_string().unwrap_or_default();
+        if !allowed.contains(&key.as_str()) {
+            return Err(Error::UnknownOption {
+                name: "options",
+                value: key,
+                expected: listed,
+            }
+            .into());
+        }
+        let value = js_sys::Reflect::get(object, &JsValue::from_str(&key))
+            .map_err(|_| ApiError::new("options: a key could not be read"))?;
+        out.push((key, value));
+    }
+    Ok(out)
+}
+
 /// An array-of-numbers argument, taken as a `JsValue`: a `Float64Array` is copied once, a plain
 /// array or another typed array is converted (`new Float64Array(value)`, as the glue for a
 /// `&[f64]` would). Anything else — `null`, `undefined`, a number, a string, an object — is an
@@ -110,7 +169,7 @@ pub(crate) fn optional_numbers(
 }
 
 /// `typeof value`, with `null` told apart (for messages).
-fn type_name(value: &JsValue) -> String {
+pub(crate) fn type_name(value: &JsValue) -> String {
     if value.is_null() {
         "null".into()
     } else {

@@ -133,6 +133,22 @@ impl JsCompositeBezier {
             inner: Composite::D3(c),
         }
     }
+
+    /// The core curve when it is 2D.
+    pub(crate) fn as_2d(&self) -> Option<&CompositeCurve<DVec2>> {
+        match &self.inner {
+            Composite::D2(c) => Some(c),
+            Composite::D3(_) => None,
+        }
+    }
+
+    /// The core curve when it is 3D.
+    pub(crate) fn as_3d(&self) -> Option<&CompositeCurve<DVec3>> {
+        match &self.inner {
+            Composite::D3(c) => Some(c),
+            Composite::D2(_) => None,
+        }
+    }
 }
 
 #[wasm_bindgen(js_class = CompositeBezier)]
@@ -166,6 +182,58 @@ impl JsCompositeBezier {
     #[wasm_bindgen(getter, js_name = pieceCount)]
     pub fn piece_count(&self) -> usize {
         with_composite!(&self.inner, c => c.pieces().len())
+    }
+
+    /// 2 or 3.
+    #[wasm_bindgen(getter)]
+    pub fn dim(&self) -> usize {
+        match &self.inner {
+            Composite::D2(_) => 2,
+            Composite::D3(_) => 3,
+        }
+    }
+
+    /// Every piece's control points back to back, flat (`n_i + 1` points of piece `i`).
+    #[wasm_bindgen(js_name = controlPoints)]
+    pub fn control_points(&self) -> Vec<f64> {
+        with_composite!(&self.inner, c => {
+            let points: Vec<_> = c.pieces().iter().flat_map(|p| p.control_points()).collect();
+            flatten_points(&points)
+        })
+    }
+
+    /// The degree of each piece.
+    pub fn degrees(&self) -> Vec<u32> {
+        with_composite!(&self.inner, c => c.pieces().iter().map(|p| p.degree() as u32).collect())
+    }
+
+    /// Moves control point `i` of piece `piece` to `point` (dim numbers), in place — the drag
+    /// path: no rebuild. The neighbouring piece does not follow; move its shared point too.
+    #[wasm_bindgen(js_name = setControlPoint)]
+    pub fn set_control_point(
+        &mut self,
+        piece: f64,
+        i: f64,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] point: JsValue,
+    ) -> Result<(), ApiError> {
+        let piece = whole("piece", piece)?;
+        let i = whole("i", i)?;
+        let coords = numbers("point", &point)?;
+        match &mut self.inner {
+            Composite::D2(c) => c.set_control_point(piece, i, super::point_from(&coords)?)?,
+            Composite::D3(c) => c.set_control_point(piece, i, super::point_from(&coords)?)?,
+        }
+        Ok(())
+    }
+
+    /// `count` points at equally spaced parameters over the whole domain, ends included.
+    #[wasm_bindgen(js_name = sampleUniform)]
+    pub fn sample_uniform(&self, count: f64) -> Result<Vec<f64>, ApiError> {
+        let count = whole("count", count)?;
+        let len = crate::geom::result_len("sample-uniform-result", &[count, self.dim()])?;
+        let mut out = vec![0.0; len];
+        with_composite!(&self.inner, c => c.sample_uniform_into(count, &mut out))?;
+        Ok(out)
     }
 
     /// The global domain `[t_0, t_k]`.
@@ -220,11 +288,7 @@ impl JsCompositeBezier {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] ts: JsValue,
     ) -> Result<Vec<f64>, ApiError> {
         let ts = &*numbers("ts", &ts)?;
-        let dim = match &self.inner {
-            Composite::D2(_) => 2,
-            Composite::D3(_) => 3,
-        };
-        let len = crate::geom::result_len("sample-ts-result", &[ts.len(), dim])?;
+        let len = crate::geom::result_len("sample-ts-result", &[ts.len(), self.dim()])?;
         let mut out = vec![0.0; len];
         with_composite!(&self.inner, c => c.sample_into(ts, &mut out))?;
         Ok(out)

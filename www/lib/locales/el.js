@@ -2169,6 +2169,7 @@ export default {
   "coreError.subject.samples-result": "δείγματα (σημεία × συντεταγμένες)",
   "coreError.subject.start-angle": "αρχική γωνία",
   "coreError.subject.string": "συμβολοσειρά (string)",
+  "coreError.subject.stroke": "μια γραμμή με το χέρι",
   "coreError.subject.surface-derivative-order": "τάξη παραγώγου du + dv",
   "coreError.subject.tessellation-vertices": "κορυφές τριγωνοποίησης (nu + 1)(nv + 1)",
   "coreError.subject.tessellation-work":

@@ -2147,6 +2147,7 @@ export default {
   "coreError.subject.samples-result": "uzorci (točke × koordinate)",
   "coreError.subject.start-angle": "početni kut",
   "coreError.subject.string": "znakovni niz (string)",
+  "coreError.subject.stroke": "potez",
   "coreError.subject.surface-derivative-order": "red derivacije du + dv",
   "coreError.subject.tessellation-vertices": "vrhovi teselacije (nu + 1)(nv + 1)",
   "coreError.subject.tessellation-work":

@@ -2167,6 +2167,7 @@ export default {
   "coreError.subject.samples-result": "campioni (punti × coordinate)",
   "coreError.subject.start-angle": "angolo iniziale",
   "coreError.subject.string": "una stringa",
+  "coreError.subject.stroke": "un tratto",
   "coreError.subject.surface-derivative-order": "ordine di derivazione du + dv",
   "coreError.subject.tessellation-vertices": "vertici della tassellazione (nu + 1)(nv + 1)",
   "coreError.subject.tessellation-work":

@@ -278,6 +278,7 @@ export const CORE_ERRORS = {
   "coreError.subject.samples-result": "samples (points × coordinates)",
   "coreError.subject.start-angle": "start angle",
   "coreError.subject.string": "a string",
+  "coreError.subject.stroke": "a stroke",
   "coreError.subject.surface-derivative-order": "derivative order du + dv",
   "coreError.subject.tessellation-vertices": "tessellation vertices (nu + 1)(nv + 1)",
   "coreError.subject.tessellation-work":
