@@ -966,13 +966,16 @@ fn composite_curves_use_the_global_parameter_and_report_each_joint() {
         k.iter().map(|k| k.c).collect::<Vec<_>>(),
         vec![Continuity::INFINITE; 2]
     );
-    let mut kinked = pieces;
-    let mut third = kinked[2].clone();
-    third.set_control_point(1, DVec2::new(2.5, 5.0)).unwrap();
-    kinked[2] = third;
-    let c = bezier::CompositeCurve::new(kinked, &[0.0, 1.0, 2.0, 3.0]).unwrap();
+    // The same kink made in place: piece 2's middle point moves, the others stay.
+    let mut c = bezier::CompositeCurve::new(pieces, &[0.0, 1.0, 2.0, 3.0]).unwrap();
+    c.set_control_point(2, 1, DVec2::new(2.5, 5.0)).unwrap();
     let k = c.continuity(1e-9).unwrap();
     assert_eq!((k[1].c, k[1].g), (0, 0), "a corner at t = 2");
+    assert_eq!(k[0].c, Continuity::INFINITE, "pieces 0 and 1 untouched");
+    // Piece 2 on [2, 3] with points (2, 4), (2.5, 5), (3, 9): its middle is ¼(2, 4) + ½(2.5, 5) + ¼(3, 9).
+    assert_close2(c.evaluate(2.5).unwrap(), DVec2::new(2.5, 5.75), 1e-12, "moved piece");
+    assert!(c.set_control_point(3, 0, DVec2::ZERO).is_err(), "no piece 3");
+    assert!(c.set_control_point(0, 3, DVec2::ZERO).is_err(), "a quadratic has 3 points");
     assert!(bezier::CompositeCurve::new(vec![piece(0.0)], &[0.0]).is_err());
     assert!(c.evaluate(3.5).unwrap_err().to_string().contains("[0, 3]"));
 }
