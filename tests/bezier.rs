@@ -973,9 +973,20 @@ fn composite_curves_use_the_global_parameter_and_report_each_joint() {
     assert_eq!((k[1].c, k[1].g), (0, 0), "a corner at t = 2");
     assert_eq!(k[0].c, Continuity::INFINITE, "pieces 0 and 1 untouched");
     // Piece 2 on [2, 3] with points (2, 4), (2.5, 5), (3, 9): its middle is ¼(2, 4) + ½(2.5, 5) + ¼(3, 9).
-    assert_close2(c.evaluate(2.5).unwrap(), DVec2::new(2.5, 5.75), 1e-12, "moved piece");
-    assert!(c.set_control_point(3, 0, DVec2::ZERO).is_err(), "no piece 3");
-    assert!(c.set_control_point(0, 3, DVec2::ZERO).is_err(), "a quadratic has 3 points");
+    assert_close2(
+        c.evaluate(2.5).unwrap(),
+        DVec2::new(2.5, 5.75),
+        1e-12,
+        "moved piece",
+    );
+    assert!(
+        c.set_control_point(3, 0, DVec2::ZERO).is_err(),
+        "no piece 3"
+    );
+    assert!(
+        c.set_control_point(0, 3, DVec2::ZERO).is_err(),
+        "a quadratic has 3 points"
+    );
     assert!(bezier::CompositeCurve::new(vec![piece(0.0)], &[0.0]).is_err());
     assert!(c.evaluate(3.5).unwrap_err().to_string().contains("[0, 3]"));
 }
