@@ -9,7 +9,7 @@ import { request } from "node:http";
 import { readFileSync } from "node:fs";
 import { extname, join, relative } from "node:path";
 import { brotliDecompressSync, gunzipSync } from "node:zlib";
-import { ASSETS, COMPRESSED, SITE, buildSite, listFiles } from "../../scripts/dist.mjs";
+import { ASSETS, COMPRESSED, SITE, WWW, buildSite, listFiles } from "../../scripts/dist.mjs";
 import { HASHED, IMMUTABLE, startServer } from "../../scripts/serve.mjs";
 
 /** `make dist` must stay well under a minute (it takes ~5 s on 2 cores). */
@@ -27,10 +27,11 @@ function distinctColours(canvas) {
   return seen.size;
 }
 
-/** A raw GET (no decoding) with Accept-Encoding `encoding`: { status, headers, body }. */
-function rawGet(url, encoding) {
+/** A raw GET (no decoding) with Accept-Encoding `encoding` (and `headers`): { status, headers,
+ * body }. */
+function rawGet(url, encoding, headers = {}) {
   return new Promise((ok, fail) => {
-    request(url, { headers: { "accept-encoding": encoding } }, (res) => {
+    request(url, { headers: { "accept-encoding": encoding, ...headers } }, (res) => {
       const parts = [];
       res.on("data", (part) => parts.push(part));
       res.on("end", () =>
@@ -202,6 +203,35 @@ export async function distSuite({
       }
       const identity = await rawGet(`${base}/index.html`, "identity");
       equal(identity.headers["content-encoding"], undefined, "no encoding when none is accepted");
+    });
+    await test("serve: www/ goes out compressed on the fly, no-cache, and 304 when unchanged", async () => {
+      const dev = await startServer(0, "127.0.0.1", WWW);
+      try {
+        const at = `http://127.0.0.1:${dev.address().port}`;
+        for (const [path, accept, encoding, decode] of [
+          ["pkg/splinelab_bg.wasm", "gzip, deflate, br", "br", brotliDecompressSync],
+          ["lib/shell.css", "br;q=0, gzip", "gzip", gunzipSync],
+          ["app.js", "identity", undefined, (b) => b],
+        ]) {
+          const got = await rawGet(`${at}/${path}`, accept);
+          equal(got.status, 200, `${path}: status`);
+          equal(got.headers["content-encoding"], encoding, `${path} for ${accept}`);
+          equal(got.headers["cache-control"], "no-cache", `${path}: cache-control`);
+          assert(
+            decode(got.body).equals(readFileSync(join(WWW, path))),
+            `${path}: decodes to the file`,
+          );
+          const again = await rawGet(`${at}/${path}`, accept, {
+            "if-none-match": got.headers.etag,
+          });
+          equal(again.status, 304, `${path}: revalidated`);
+        }
+        const font = await rawGet(`${at}/vendor/katex/fonts/KaTeX_Main-Regular.woff2`, "br");
+        equal(font.headers["content-encoding"], undefined, "a woff2 is sent as it is");
+        equal((await rawGet(`${at}/..%2fCargo.toml`, "br")).status, 404, "nothing outside www/");
+      } finally {
+        dev.close();
+      }
     });
   } finally {
     await page?.close();
