@@ -115,4 +115,4 @@ fuzz: build
 
 clean:
 	cargo clean
-	rm -rf $(PKG) www/vendor screenshots
+	rm -rf $(PKG) www/vendor screenshots dist/site
