@@ -16,6 +16,7 @@ import { startServer } from "../../scripts/serve.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
 import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
+import { distSuite } from "./dist.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
@@ -1987,6 +1988,9 @@ try {
       await old.close();
     }
   });
+
+  // The built site (make dist), served as a host would: on one more page of this browser.
+  await distSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
 } catch (err) {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);
