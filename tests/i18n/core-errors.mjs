@@ -281,7 +281,7 @@ function problems(err) {
   if (english !== err.message) found.push(`en: ${JSON.stringify(english)}`);
   const decimals = TYPED_DECIMALS.has(err.code) ? [] : (err.message.match(/\d+\.\d+/g) ?? []);
   // A pair of numbers in brackets ("[0, 1]", "(1.5, 2)") separates them with "; " where the
-  // decimal separator is a comma.
+  // decimal separator is a comma (in Greek, where ";" is the question mark, with "· ").
   const pair = /[[(]-?[\d.e+-]+, -?[\d.e+-]+[\])]/.test(err.message);
   for (const code of LANGUAGES) {
     setLocale(code);
@@ -289,8 +289,9 @@ function problems(err) {
     if (text === err.message) found.push(`${code}: the English message`);
     const left = text.match(/\{\w+\}/);
     if (left) found.push(`${code}: ${left[0]} left in ${JSON.stringify(text)}`);
-    if (pair && !/[[(][^\])]*\d; -?\d[^\])]*[\])]/.test(text)) {
-      found.push(`${code}: no "; " between the numbers of a pair in ${JSON.stringify(text)}`);
+    const sign = code === "el" ? "·" : ";";
+    if (pair && !new RegExp(`[[(][^\\])]*\\d${sign} -?\\d[^\\])]*[\\])]`).test(text)) {
+      found.push(`${code}: no "${sign} " between the numbers of a pair in ${JSON.stringify(text)}`);
     }
     for (const d of decimals) {
       const local = d.replace(".", ",");
