@@ -6,6 +6,7 @@
 // What a text box shows is read back by the parser it feeds. Fractions are the same everywhere.
 // Ends with one line "numbers: N passed, N failed" (scripts/test-all.sh sums it).
 import {
+  clauseSeparator,
   exactNumbers,
   exactTex,
   exactText,
@@ -55,6 +56,7 @@ const EXPECTED = {
     knot: ["1.5", "1.5", "1.5", "2"],
     knots: ["0, 0, 1.5, 2", "0, 0, 1.5, 2"],
     typed: "0 0 1.5 2",
+    clauses: "; ",
   },
   comma: {
     fmt: ["1,250", "-2,500", "0,000", "3,14"],
@@ -70,6 +72,7 @@ const EXPECTED = {
     knot: ["1,5", "1{,}5", "1.5", "2"],
     knots: ["0; 0; 1,5; 2", "0; 0; 1{,}5; 2"],
     typed: "0; 0; 1,5; 2",
+    clauses: "; ",
   },
   el: {
     fmt: ["1,250", "-2,500", "0,000", "3,14"],
@@ -85,6 +88,7 @@ const EXPECTED = {
     knot: ["1,5", "1{,}5", "1.5", "2"],
     knots: ["0· 0· 1,5· 2", "0\\cdotp 0\\cdotp 1{,}5\\cdotp 2"],
     typed: "0· 0· 1,5· 2",
+    clauses: "· ",
   },
 };
 
@@ -141,6 +145,7 @@ for (const code of ["en", "el", "hr", "it"]) {
   // What a box shows is what its parser reads back.
   const typed = [0, 0, 1.5, 2].map((u) => knotText(u)).join(inputListSeparator());
   check(`${code} a typed list`, typed, want.typed);
+  check(`${code} clauses of a sentence`, clauseSeparator(), want.clauses);
   check(`${code} … reads back`, splitNumberList(typed).map(parseNumberInput), [0, 0, 1.5, 2]);
   check(`${code} a shown number reads back`, parseNumberInput(fmt(-2.5)), -2.5);
   // No TeX a helper writes has a bare decimal comma (KaTeX would space it as punctuation).

@@ -94,6 +94,14 @@ export function listSeparator() {
 }
 
 /**
+ * What joins the clauses of a generated sentence (an aria label's list of joints, say): "; ",
+ * in Greek "· " (`commaListSign`: ";" is the Greek question mark).
+ */
+export function clauseSeparator() {
+  return locale() === "el" ? "· " : "; ";
+}
+
+/**
  * `params` for a sentence (`t(key, params)`) with every number as `String` writes it but with
  * the active language's decimal separator (0.001 → "0,001", 1e-9 stays "1e-9"); others as they are.
  */
