@@ -10,6 +10,7 @@ use super::params::{check_point_count, ParamChoice};
 use super::tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
 use super::tridiagonal::Tridiagonal;
 use crate::bspline::Parameterization;
+use crate::error::InterpError;
 use crate::error::{check_coordinate_of, check_finite, Error, Result};
 use crate::geom::check::check_point_edit;
 use crate::geom::{Cartesian, Point};
@@ -172,7 +173,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below `end.min_points()` (2; 3 for periodic), the parameter
     /// errors of [`ParamChoice::resolve`], [`Error::NotFinite`] for a clamped tangent,
-    /// [`Error::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
+    /// [`InterpError::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
     ///
     /// ```
     /// use splinelab::interp::{CubicSpline, EndCondition};
@@ -197,7 +198,7 @@ impl<C: Cartesian> CubicSpline<C> {
         let n = data.points.len() - 1;
         let closed = matches!(end, EndCondition::Periodic);
         if closed && data.points[n] != data.points[0] {
-            return Err(Error::NotClosed { last: n });
+            return Err(Error::Interp(InterpError::NotClosed { last: n }));
         }
         Self::build(data, TangentRule::Spline(end), closed, Vec::new())
     }
@@ -246,7 +247,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// point already repeated at the end, more than 3 points, is taken as that cycle).
     ///
     /// # Errors
-    /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`Error::AlphaOutOfRange`],
+    /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`InterpError::AlphaOutOfRange`],
     /// [`Error::CoincidentPoints`] for α > 0 and a repeated consecutive point (a closed curve
     /// also compares the last with the first).
     pub fn catmull_rom(mut points: Vec<C>, alpha: f64, closed: bool) -> Result<Self> {
@@ -352,15 +353,15 @@ impl<C: Cartesian> CubicSpline<C> {
     /// Sets tangent i (`C'(t_i)`) of a spline with given tangents (`hermiteSpline`), in place.
     ///
     /// # Errors
-    /// [`Error::SplineKind`] for a spline whose tangents are computed, [`Error::IndexOutOfRange`],
-    /// [`Error::NotFinite`].
+    /// [`InterpError::SplineKind`] for a spline whose tangents are computed,
+    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
     pub fn set_tangent(&mut self, i: usize, m: C) -> Result<()> {
         if self.rule != TangentRule::Given {
-            return Err(Error::SplineKind {
+            return Err(Error::Interp(InterpError::SplineKind {
                 operation: "setTangent",
                 needs: "hermiteSpline",
                 got: self.rule.constructor(),
-            });
+            }));
         }
         check_point_edit(i, self.tangents.len(), m)?;
         self.tangents[i] = m;

@@ -3,6 +3,7 @@
 
 use super::{checked_count, in_argument, BSplineSurface};
 use crate::bspline::{check_degree, KnotVector};
+use crate::error::SurfaceError;
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{check_all_finite, check_weights, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
@@ -29,11 +30,11 @@ impl BSplineSurface {
     ) -> Result<Self> {
         let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
         if coords.len() != 3 * count {
-            return Err(Error::NetCoordinateCount {
+            return Err(Error::Surface(SurfaceError::NetCoordinateCount {
                 rows,
                 cols,
                 got: coords.len(),
-            });
+            }));
         }
         check_all_finite(coords, "coordinate")?;
         check_degree(degree_u, rows).map_err(|e| in_argument("degree-u-rows", e))?;
@@ -79,7 +80,7 @@ impl BSplineSurface {
             && (rows < 2 || cols < 2)
         {
             check_all_finite(coords, "coordinate")?;
-            return Err(Error::PatchTooSmall { rows, cols });
+            return Err(Error::Surface(SurfaceError::PatchTooSmall { rows, cols }));
         }
         // Bounded by the coordinate count, which from_flat checks first.
         let clamped = |count: usize| -> Vec<f64> {
@@ -148,12 +149,12 @@ impl BSplineSurface {
     /// The flat index of control point `(i, j)`, checked.
     fn index(&self, i: usize, j: usize) -> Result<usize> {
         if i >= self.rows || j >= self.cols {
-            return Err(Error::NetIndexOutOfRange {
+            return Err(Error::Surface(SurfaceError::NetIndexOutOfRange {
                 i,
                 j,
                 rows: self.rows,
                 cols: self.cols,
-            });
+            }));
         }
         Ok(i * self.cols + j)
     }
