@@ -12,6 +12,7 @@ impl Error {
             Error::InvalidDimension { .. } => "invalid-dimension",
             Error::CoordinateCount { .. } => "coordinate-count",
             Error::NotFinite { .. } => "not-finite",
+            Error::CoordinateTooLarge { .. } => "coordinate-too-large",
             Error::TooFewPoints { .. } => "too-few-points",
             Error::WeightCount { .. } => "weight-count",
             Error::NonPositiveWeight { .. } => "non-positive-weight",

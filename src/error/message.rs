@@ -48,6 +48,18 @@ impl fmt::Display for Error {
                     Num(*value)
                 )
             }
+            Error::CoordinateTooLarge {
+                what,
+                index,
+                value,
+                max,
+            } => write!(
+                f,
+                "{} is {}; a coordinate must be at most {} in magnitude, so that derivatives and lengths stay finite",
+                Subject(what, *index),
+                Num(*value),
+                Num(*max)
+            ),
             Error::TooFewPoints { needed, got, what } => write!(
                 f,
                 "{} needs at least {needed} control point{}, got {got}",

@@ -27,7 +27,8 @@ pub use surface::SurfaceError;
 pub use phrase::{phrase, PHRASES};
 
 pub(crate) use check::{
-    check_coordinate_of, check_finite, check_in_range, check_tolerance, in_argument,
+    check_coordinate, check_coordinate_of, check_finite, check_in_range, check_tolerance,
+    in_argument,
 };
 
 /// Everything that can go wrong when building or querying a curve.
@@ -65,6 +66,20 @@ pub enum Error {
         index: Option<usize>,
         /// The offending value.
         value: f64,
+    },
+    /// A coordinate is finite but larger in magnitude than [`crate::geom::MAX_COORDINATE`]
+    /// (`1e120`), where derivatives and lengths would overflow:
+    /// `BezierCurve::<DVec2>::from_flat(&[0.0, 1e200, 1.0, 1.0], None)`. Checked with finiteness,
+    /// coordinate by coordinate.
+    CoordinateTooLarge {
+        /// What the number is: a subject (`phrase.rs`), "coordinate", "new-point-coordinate".
+        what: &'static str,
+        /// Its index in a list ("coordinate 3"), if it is one of many.
+        index: Option<usize>,
+        /// The offending value.
+        value: f64,
+        /// The largest magnitude allowed, [`crate::geom::MAX_COORDINATE`].
+        max: f64,
     },
     /// Not enough control points for the requested object: `BezierCurve::new(vec![p], None)`.
     TooFewPoints {

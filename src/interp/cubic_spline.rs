@@ -11,7 +11,7 @@ use super::tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
 use super::tridiagonal::Tridiagonal;
 use crate::bspline::Parameterization;
 use crate::error::InterpError;
-use crate::error::{check_coordinate_of, check_finite, Error, Result};
+use crate::error::{check_coordinate, check_coordinate_of, check_finite, Error, Result};
 use crate::geom::check::check_point_edit;
 use crate::geom::{Cartesian, Point};
 use glam::DVec3;
@@ -128,8 +128,10 @@ struct Data<C> {
     choice: ParamChoice,
 }
 
-/// The checks every constructor starts with, in order: at least `min` points, then the
-/// parameters (given ones checked, or a spacing computed).
+/// The checks every constructor starts with, in order: at least `min` points, every coordinate
+/// finite and at most [`crate::geom::MAX_COORDINATE`] in magnitude ([`Error::NotFinite`],
+/// [`Error::CoordinateTooLarge`]), then the parameters (given ones checked, or a spacing
+/// computed).
 #[inline(never)]
 fn data<C: Cartesian>(
     points: Vec<C>,
@@ -138,6 +140,7 @@ fn data<C: Cartesian>(
     what: &'static str,
 ) -> Result<Data<C>> {
     check_point_count(points.len(), min, what)?;
+    super::global::check_points(&points)?;
     let params = choice.resolve(&points)?;
     Ok(Data {
         points,
@@ -224,7 +227,7 @@ impl<C: Cartesian> CubicSpline<C> {
         }
         for (i, m) in tangents.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite("tangents", Some(i * C::DIM + k), m.coord(k))?;
+                check_coordinate("tangents", Some(i * C::DIM + k), m.coord(k))?;
             }
         }
         Self::build(data, TangentRule::Given, false, tangents)

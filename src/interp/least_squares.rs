@@ -23,9 +23,9 @@ use crate::geom::Cartesian;
 /// With `count` equal to the number of points it is the interpolant with averaging knots.
 ///
 /// # Errors
-/// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`] points,
-/// [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors
+/// In this order: [`Error::NotFinite`], [`Error::CoordinateTooLarge`] (coordinates),
+/// [`Error::DegreeOutOfRange`], [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`]
+/// points, [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors
 /// ([`InterpError::ParamCount`], [`Error::NotFinite`], [`InterpError::ParamsNotIncreasing`]),
 /// [`InterpError::ControlCountOutOfRange`] (`count` outside `[p + 1, m + 1]`), the errors of
 /// [`KnotVector::new`] for `count` control points, [`InterpError::KnotsNotClamped`],

@@ -4,8 +4,8 @@
 use super::{checked_count, in_argument, BSplineSurface};
 use crate::bspline::{check_degree, KnotVector};
 use crate::error::SurfaceError;
-use crate::error::{check_finite, Error, Result};
-use crate::geom::{check_all_finite, check_weights, MAX_SAMPLES};
+use crate::error::{check_coordinate, check_finite, Error, Result};
+use crate::geom::{check_all_coordinates, check_weights, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
 impl BSplineSurface {
@@ -36,7 +36,7 @@ impl BSplineSurface {
                 got: coords.len(),
             }));
         }
-        check_all_finite(coords, "coordinate")?;
+        check_all_coordinates(coords, "coordinate")?;
         check_degree(degree_u, rows).map_err(|e| in_argument("degree-u-rows", e))?;
         check_degree(degree_v, cols).map_err(|e| in_argument("degree-v-columns", e))?;
         let knots_u =
@@ -79,7 +79,7 @@ impl BSplineSurface {
         if rows.checked_mul(cols).and_then(|c| c.checked_mul(3)) == Some(coords.len())
             && (rows < 2 || cols < 2)
         {
-            check_all_finite(coords, "coordinate")?;
+            check_all_coordinates(coords, "coordinate")?;
             return Err(Error::Surface(SurfaceError::PatchTooSmall { rows, cols }));
         }
         // Bounded by the coordinate count, which from_flat checks first.
@@ -166,7 +166,7 @@ impl BSplineSurface {
     pub fn set_control_point(&mut self, i: usize, j: usize, p: DVec3) -> Result<()> {
         let k = self.index(i, j)?;
         for (c, value) in p.to_array().into_iter().enumerate() {
-            check_finite("new-point-coordinate", Some(c), value)?;
+            check_coordinate("new-point-coordinate", Some(c), value)?;
         }
         if let Some(h) = self.net.get_mut(k) {
             *h = (p * h.w).extend(h.w);

@@ -30,7 +30,7 @@ mod system;
 pub use system::RowKind;
 
 use crate::bspline::{BSplineCurve, BasisScratch, KnotVector};
-use crate::error::{check_coordinate_of, check_finite, Error, Result};
+use crate::error::{check_coordinate, check_coordinate_of, Error, Result};
 use crate::geom::Cartesian;
 use system::Collocation;
 
@@ -98,9 +98,9 @@ const WHAT: &str = "bspline-interpolation-system";
 /// wrap ([`BSplineCurve::wrapped`]), the domain is `[t_0, t_n]`.
 ///
 /// # Errors
-/// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points, [`Error::TooFewDataPoints`]
-/// (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
+/// In this order: [`Error::NotFinite`], [`Error::CoordinateTooLarge`] (coordinates),
+/// [`Error::DegreeOutOfRange`], [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points,
+/// [`Error::TooFewDataPoints`] (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
 /// [`crate::error::InterpError::ParamCount`], [`Error::NotFinite`] (params),
 /// [`crate::error::InterpError::ParamsNotIncreasing`], [`Error::ConflictingOptions`] (closed with
 /// derivatives or knots), [`Error::NotFinite`] (derivatives),
@@ -204,11 +204,12 @@ pub(crate) fn check_interpolation_degree(degree: usize) -> Result<()> {
     Ok(())
 }
 
-/// Checks every coordinate is finite ([`Error::NotFinite`] naming `coordinate i·dim + k`).
+/// Checks every coordinate is finite and not too large ([`Error::NotFinite`],
+/// [`Error::CoordinateTooLarge`] naming `coordinate i·dim + k`).
 pub(crate) fn check_points<C: Cartesian>(points: &[C]) -> Result<()> {
     for (i, p) in points.iter().enumerate() {
         for k in 0..C::DIM {
-            check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+            check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
         }
     }
     Ok(())

@@ -3,7 +3,7 @@
 use crate::bspline::Parameterization;
 use crate::error::SurfaceError;
 use crate::error::{Error, Result};
-use crate::geom::{check_all_finite, MAX_SAMPLES};
+use crate::geom::{check_all_coordinates, MAX_SAMPLES};
 use crate::interp::global::knots::averaging_knots;
 use crate::interp::global::{check_interpolation_degree, Setup};
 use crate::interp::InterpolationOptions;
@@ -83,7 +83,7 @@ fn check_grid_size(points: &[f64], rows: usize, cols: usize) -> Result<()> {
             got: points.len(),
         }));
     }
-    check_all_finite(points, "coordinate")
+    check_all_coordinates(points, "coordinate")
 }
 
 /// The checks of [`interpolate_surface`] before the parameters: the grid's size, its numbers,

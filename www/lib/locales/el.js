@@ -1905,6 +1905,8 @@ export default {
     "το πλήθος συντεταγμένων {count} δεν είναι πολλαπλάσιο του dim = {dim}· τα σημεία δίνονται επίπεδα [{firstPoint}, x1, …]",
   "coreError.not-finite":
     "{subject}: η τιμή {value} δεν επιτρέπεται· κάθε αριθμός πρέπει να είναι πεπερασμένος",
+  "coreError.coordinate-too-large":
+    "{subject}: η τιμή {value} είναι πολύ μεγάλη· μια συντεταγμένη πρέπει να έχει απόλυτη τιμή το πολύ {max}, ώστε οι παράγωγοι και τα μήκη να μένουν πεπερασμένα",
   "coreError.too-few-points.one":
     "{what}: χρειάζεται τουλάχιστον {needed} σημείο ελέγχου, δόθηκαν {got}",
   "coreError.too-few-points.other":

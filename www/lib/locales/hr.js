@@ -1891,6 +1891,8 @@ export default {
     "broj koordinata {count} nije višekratnik od dim = {dim}; točke se zadaju ravno [{firstPoint}, x1, …]",
   "coreError.not-finite":
     "{subject}: vrijednost {value} nije dopuštena; svaki broj mora biti konačan",
+  "coreError.coordinate-too-large":
+    "{subject}: vrijednost {value} je prevelika; koordinata po apsolutnoj vrijednosti smije biti najviše {max}, kako bi derivacije i duljine ostale konačne",
   "coreError.too-few-points.one":
     "{what}: potrebna je barem {needed} kontrolna točka, dobiveno {got}",
   "coreError.too-few-points.few":

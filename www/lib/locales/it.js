@@ -1906,6 +1906,8 @@ export default {
     "il numero di coordinate {count} non è multiplo di dim = {dim}; i punti si danno in forma piatta [{firstPoint}, x1, …]",
   "coreError.not-finite":
     "{subject}: il valore {value} non è ammesso; ogni numero deve essere finito",
+  "coreError.coordinate-too-large":
+    "{subject}: il valore {value} è troppo grande; una coordinata deve avere valore assoluto al più {max}, perché derivate e lunghezze restino finite",
   "coreError.too-few-points.one":
     "{what}: serve almeno {needed} punto di controllo, ricevuti {got}",
   "coreError.too-few-points.many":
