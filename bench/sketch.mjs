@@ -518,7 +518,7 @@ function summarise(per, oversketch, fitters) {
     window: CORNER_WINDOW,
   };
   lines.push(
-    `    corners (±${CORNER_WINDOW} samples, fitCurveReport at 1 px): ${corners.truth} true, ${corners.found} found; precision ${(100 * corners.precision).toFixed(1)} %, recall ${(100 * corners.recall).toFixed(1)} %; strokes with every corner right ${(100 * corners.strokesAllRight).toFixed(1)} % (of those with corners ${(100 * corners.strokesWithCornersAllRight).toFixed(1)} %)`,
+    `    corners (±${CORNER_WINDOW} samples, fitCurveReport at 1 px): ${corners.truth} true, ${corners.found} found; precision ${Number.isNaN(corners.precision) ? "— (none found)" : `${(100 * corners.precision).toFixed(1)} %`}, recall ${(100 * corners.recall).toFixed(1)} %; strokes with every corner right ${(100 * corners.strokesAllRight).toFixed(1)} % (of those with corners ${(100 * corners.strokesWithCornersAllRight).toFixed(1)} %)`,
   );
   // Speed.
   const speed = {};
