@@ -1,5 +1,6 @@
 // splinelab benchmark (issue 5): the built wasm package against bezier-js, verb-nurbs, nurbs,
-// rhino3dm and a hand-written JS baseline, on the same deterministic inputs.
+// rhino3dm and a hand-written JS baseline, on the same deterministic inputs (and, in row (n),
+// the sketch fitters fit-curve and Paper.js: bench/sketch.mjs).
 //
 //   node bench/bench.mjs            full run (~3 minutes on 2 cores)
 //   node bench/bench.mjs --quick    smoke run: smaller inputs, fewer repetitions
@@ -28,6 +29,7 @@ import {
 import { dragBench } from "./drag.mjs";
 import { solveBench, splineDragBench, SOLVE_SIZES } from "./interp.mjs";
 import { expressionBench, replotBench } from "./expressions.mjs";
+import { sketchBench } from "./sketch.mjs";
 import { adaptiveBench, surfaceDragBench } from "./surface.mjs";
 
 const args = new Set(process.argv.slice(2));
@@ -52,7 +54,7 @@ const nurbs = require("nurbs");
 const mathjs = require("mathjs");
 const rhino = await require("rhino3dm")();
 const peerVersions = Object.fromEntries(
-  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm", "mathjs"].map((name) => [
+  ["bezier-js", "verb-nurbs", "nurbs", "rhino3dm", "mathjs", "fit-curve", "paper"].map((name) => [
     name,
     JSON.parse(readFileSync(here(`../node_modules/${name}/package.json`), "utf8")).version,
   ]),
@@ -1156,6 +1158,11 @@ const expressions = expressionBench(sl, mathjs, {
 const replot = replotBench(sl, { rounds: QUICK ? 30 : 200 });
 process.stdout.write(".\n");
 
+// ---- (n) sketching: fitCurve against fit-curve and Paper.js at equal measured error (issue 25) ----
+process.stdout.write("(n) sketching ");
+const sketching = sketchBench(sl, { quick: QUICK });
+process.stdout.write("\n");
+
 // ---- sizes, machine, report --------------------------------------------------------------------
 const wasmBytes = readFileSync(WASM);
 const wasm = {
@@ -1313,6 +1320,9 @@ for (const r of expressions) {
 lines.push(
   `    re-plot of a 4-piece curve after a slider move (setParameter + plot at 0.5 px, ${replot.vertices} vertices): ${replot.medianMs.toFixed(3)} ms median`,
 );
+
+lines.push("");
+lines.push(...sketching.lines);
 
 // Targets of issue 5, computed from this run (reported, never asserted).
 const row = (id, pred) => results.find((w) => w.id === id)?.rows.find((r) => !r.error && pred(r));
@@ -1589,6 +1599,7 @@ const report = {
   interpolation: { solves, splineDrag: { node: splineDragNode, chromium: splineDragChromium } },
   surfaces: { adaptive, drag: { node: surfaceDragNode, chromium: surfaceFrameChromium } },
   expressions: { rates: expressions, replot },
+  sketching: sketching.report,
   wasm,
   targets,
   table: lines.join("\n"),

@@ -17,8 +17,11 @@
 mod bspline;
 mod curve;
 mod oversketch;
+mod periodic;
+mod project;
+mod weighted;
 
-pub use bspline::fit_bspline;
+pub use bspline::{fit_bspline, CLOSE_TOLERANCES, MAX_BSPLINE_FIT_SAMPLES};
 pub use curve::fit_curve;
 pub use oversketch::oversketch;
 
