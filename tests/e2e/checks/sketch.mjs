@@ -1,0 +1,173 @@
+// Browser checks specific to the sketch demo (run after the generic ones by run.mjs).
+// Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo }.
+//
+// Independent expectations: a drawn stroke is read back from the link (its samples are where the
+// mouse went, to a quarter pixel); a larger tolerance never needs more pieces; a closed preset
+// reports closed; moving a handle moves what is drawn; undo brings back the state before.
+
+const fit = (page) => page.locator('[data-info="fit"]');
+const attr = async (page, name) => fit(page).getAttribute(`data-${name}`);
+const stateOf = (url) =>
+  JSON.parse(Buffer.from(new URL(url).hash.split("&s=")[1], "base64url").toString());
+
+/** Draws a stroke of ~40 points through `path(u)` (canvas CSS px) with the mouse. */
+async function drawStroke(page, h, path, count = 40) {
+  const box = await h.canvas().boundingBox();
+  const at = (u) => {
+    const [x, y] = path(u);
+    return [box.x + x, box.y + y];
+  };
+  const [x0, y0] = at(0);
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  for (let k = 1; k <= count; k++) {
+    const [x, y] = at(k / count);
+    await page.mouse.move(x, y);
+  }
+  await page.mouse.up();
+}
+
+/** A wave across the middle of the canvas, away from the default curve's start. */
+const wave = (box) => (u) => [
+  box.width * (0.15 + 0.7 * u),
+  box.height * (0.45 + 0.2 * Math.sin(2 * Math.PI * u)),
+];
+
+const setTolerance = async (page, settle, value) => {
+  const input = page.locator('[data-control="tolerance"] .sl-value');
+  await input.fill(String(value));
+  await input.press("Enter");
+  await settle(page);
+};
+
+export default [
+  [
+    "a mouse stroke is fitted: pieces in the panel and the link holds its samples",
+    async (page, h, base, { assert, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      await page.locator('[data-action="preset-spiral"]').click();
+      await settle(page);
+      const box = await h.canvas().boundingBox();
+      const before = await h.snapshot();
+      const path = wave(box);
+      await drawStroke(page, h, path);
+      await settle(page);
+      const pieces = Number(await attr(page, "pieces"));
+      assert(pieces >= 1, `pieces after drawing: ${pieces}`);
+      assert((await h.snapshot()) !== before, "the picture changed");
+      assert(
+        (await h.canvas().getAttribute("aria-label")).includes(String(pieces)),
+        "the aria text names the pieces",
+      );
+      const state = stateOf(page.url());
+      assert(state.edits.length === 0, "a new drawing, no edits");
+      assert(typeof state.stroke === "string" && state.stroke.length > 20, "stroke in the link");
+    },
+  ],
+  [
+    "the tolerance slider refits: a larger tolerance needs no more pieces, a tiny one more",
+    async (page, h, base, { assert, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      await page.locator('[data-action="preset-spiral"]').click();
+      await settle(page);
+      await setTolerance(page, settle, 0.5);
+      const fine = Number(await attr(page, "pieces"));
+      const fineShot = await h.snapshot();
+      await setTolerance(page, settle, 12);
+      const coarse = Number(await attr(page, "pieces"));
+      assert(coarse <= fine, `pieces ${coarse} at 12 px, ${fine} at 0.5 px`);
+      assert(coarse < fine || (await h.snapshot()) !== fineShot, "the fit changed");
+      assert((await attr(page, "max-error-px")) !== "NaN", "no NaN in the panel");
+      assert(!(await fit(page).textContent()).includes("NaN"), "no NaN in the text");
+    },
+  ],
+  [
+    "a control point dragged and nudged changes the curve; undo restores it",
+    async (page, h, base, { assert, equal, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      const before = await h.snapshot();
+      const handles = await h.handles();
+      assert(handles.length >= 4, `handles: ${handles.length}`);
+      await h.drag(handles[2], 20, -25);
+      const dragged = await h.snapshot();
+      assert(dragged !== before, "drag changed the picture");
+      equal(stateOf(page.url()).edits.length, 1, "one edit recorded");
+      await h.canvas().focus();
+      await page.keyboard.press("ArrowLeft");
+      await page.keyboard.press("Shift+ArrowDown");
+      await settle(page);
+      assert((await h.snapshot()) !== dragged, "the nudge changed the picture");
+      await page.keyboard.press("Control+z");
+      await page.keyboard.press("Control+z");
+      await page.keyboard.press("Escape");
+      await page.mouse.move(1, 1);
+      equal(await h.snapshot(), before, "two undos: the fit as it was");
+    },
+  ],
+  [
+    "a stroke that starts on the curve oversketches a part; the link replays it",
+    async (page, h, base, { assert, equal, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      await page.locator('[data-action="preset-wave"]').click();
+      await settle(page);
+      const handles = await h.handles();
+      const box = await h.canvas().boundingBox();
+      // From a joint of the curve (a handle on it) down and along, back onto the curve.
+      const a = handles[3];
+      const b = handles[Math.min(handles.length - 1, 9)];
+      const start = [a.x - box.x, a.y - box.y];
+      const end = [b.x - box.x, b.y - box.y];
+      const before = await h.snapshot();
+      await drawStroke(page, h, (u) => [
+        start[0] + (end[0] - start[0]) * u,
+        start[1] + (end[1] - start[1]) * u + 40 * Math.sin(Math.PI * u),
+      ]);
+      await settle(page);
+      const state = stateOf(page.url());
+      equal(state.edits.length, 1, "one edit");
+      equal(state.edits[0][0], "o", "an oversketch");
+      assert((await h.snapshot()) !== before, "the curve changed");
+      await page.waitForTimeout(1800); // the highlight fades
+      const shot = await h.snapshot();
+      const url = page.url();
+      await page.reload();
+      await h.ready();
+      equal(await h.snapshot(), shot, "the same picture after reload");
+      equal(page.url(), url, "URL after reload");
+    },
+  ],
+  [
+    "the presets load: the blob is closed, the zigzag has corners once the fitter finds them",
+    async (page, h, base, { assert, equal, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      const shots = new Set();
+      for (const name of ["wave", "corners", "blob", "spiral", "letter"]) {
+        await page.locator(`[data-action="preset-${name}"]`).click();
+        await settle(page);
+        shots.add(await h.snapshot());
+        assert(Number(await attr(page, "pieces")) >= 1, `${name}: pieces`);
+        if (name === "blob") equal(await attr(page, "closed"), "true", "the blob is closed");
+        if (name === "wave") equal(await attr(page, "closed"), "false", "the wave is open");
+      }
+      equal(shots.size, 5, "five different pictures");
+    },
+  ],
+  [
+    "B-spline output, the comb and a bad link: no NaN shown, the last good state kept",
+    async (page, h, base, { assert, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      await page.locator('[data-control="output"] [data-choice="bspline"] input, [data-control="output"] input[value="bspline"]').first().check();
+      await settle(page);
+      await page.locator('[data-control="comb"] input, input[data-control="comb"]').first().check();
+      await settle(page);
+      assert(!(await fit(page).textContent()).includes("NaN"), "no NaN");
+      assert((await fit(page).textContent()).includes("B-spline"), "the panel says B-spline");
+      const good = page.url();
+      const bad = `${good.split("&s=")[0]}&s=${Buffer.from(JSON.stringify({ ...stateOf(good), stroke: "-3~!!" })).toString("base64url")}`;
+      await page.goto(bad);
+      await settle(page);
+      const status = await h.status();
+      assert(status.length > 0, "a refusal is reported");
+    },
+  ],
+];
