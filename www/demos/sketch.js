@@ -33,11 +33,10 @@ import {
 import { t, tp } from "../lib/strings.js";
 import { fmt, fmtMachine, fmtTex, subscript } from "../lib/format.js";
 import { HUES, WIDTH, RADIUS, FONT_SIZE, themed } from "../lib/theme.js";
-import { flatPath, drawCaption } from "../lib/draw.js";
+import { flatPath } from "../lib/draw.js";
 import { distanceToPolyline } from "../lib/geometry.js";
 import { errorText } from "../lib/core-errors.js";
 import { Handles, pointLabel } from "../lib/handles.js";
-import { scaledInsets } from "../lib/view.js";
 import { decodeStroke, encodeStroke, gridExponent } from "../lib/stroke-code.js";
 import { compositeHandles, moveCompositeHandle } from "../lib/composite-handles.js";
 import { SketchPen } from "../lib/sketch-pen.js";
@@ -69,9 +68,6 @@ const COMB_PER_PIECE = 24;
 const COMB_PX = 45;
 /** The replaced part is highlighted this long after an oversketch (ms). */
 const HIGHLIGHT_MS = 1600;
-/** The caption band under the figure (CSS px). */
-const CAPTION_PX = 30;
-const MARGIN_PX = 10;
 
 export const defaultState = Object.freeze({
   stroke: presetStroke("corners"),
@@ -89,8 +85,7 @@ export const defaultState = Object.freeze({
 });
 
 const strokeMessage = () => t("sketch.badStroke");
-const decode = (text) =>
-  decodeStroke(text, { min: 2, max: MAX_SAMPLES, message: strokeMessage() });
+const decode = (text) => decodeStroke(text, { min: 2, max: MAX_SAMPLES, message: strokeMessage() });
 
 /** The edits: `["o", stroke]` (an oversketch) or `["m", handle, x, y]` (a moved point). */
 function checkEdits(state, name) {
@@ -273,13 +268,15 @@ function worstPx(s, d) {
   if (d.bspline) return d.report.maxError * s.scale;
   let worst = Number.NaN;
   for (const p of d.report.pieces) {
-    if (Number.isFinite(p.maxError)) worst = Number.isNaN(worst) ? p.maxError : Math.max(worst, p.maxError);
+    if (Number.isFinite(p.maxError))
+      worst = Number.isNaN(worst) ? p.maxError : Math.max(worst, p.maxError);
   }
   return worst * s.scale;
 }
 
 /** "1.3 px", or "not measured". */
-const pxText = (v) => (Number.isFinite(v) ? t("sketch.px", { value: fmt(v, 2) }) : t("sketch.notMeasured"));
+const pxText = (v) =>
+  Number.isFinite(v) ? t("sketch.px", { value: fmt(v, 2) }) : t("sketch.notMeasured");
 
 /** The fit in one line: pieces, corners, largest error, closed, edited. */
 function fitText(s, d) {
@@ -323,7 +320,12 @@ function refit(ui, field, value, final) {
 
 /** A sample stroke: drawn at the presets' scale, no edits; the figure fits it. */
 function loadPreset(ui, name) {
-  const next = { ...structuredClone(ui.state), stroke: presetStroke(name), scale: PRESET_SCALE, edits: [] };
+  const next = {
+    ...structuredClone(ui.state),
+    stroke: presetStroke(name),
+    scale: PRESET_SCALE,
+    edits: [],
+  };
   try {
     ui.replace(next, false);
     ui.fit();
@@ -362,7 +364,6 @@ export const controls = [
       set: (ui, value, final) => refit(ui, "tolerance", value, final),
     }),
     readout("fit", fitText, {
-      kind: "readout",
       live: true,
       data: (s, d) => ({
         pieces: String(d.pieces),
@@ -414,7 +415,7 @@ export const figure = {
     grow(d.cps);
     return [x0, y0, x1, y1];
   },
-  insets: scaledInsets(0, 0, CAPTION_PX, 0),
+  help: "sketch.figureHelp",
 };
 
 const GHOST_STYLE = Object.freeze({
@@ -424,7 +425,12 @@ const GHOST_STYLE = Object.freeze({
   join: "round",
   cap: "round",
 });
-const LIVE_STYLE = Object.freeze({ stroke: HUES.vermillion, width: 2, join: "round", cap: "round" });
+const LIVE_STYLE = Object.freeze({
+  stroke: HUES.vermillion,
+  width: 2,
+  join: "round",
+  cap: "round",
+});
 const HIGHLIGHT_STYLE = Object.freeze({
   stroke: HUES.orange,
   width: WIDTH.highlightBand,
@@ -438,7 +444,12 @@ const SPLIT_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: RADIUS.split
 const CORNER_STYLE = Object.freeze({ stroke: HUES.vermillion, width: 2 });
 const WORST_STYLE = Object.freeze({ fill: HUES.vermillion, radius: RADIUS.constructionPoint });
 const labelStyles = themed((theme) => ({
-  corner: Object.freeze({ fill: HUES.vermillion, size: FONT_SIZE.small, weight: "bold", halo: theme.background }),
+  corner: Object.freeze({
+    fill: HUES.vermillion,
+    size: FONT_SIZE.small,
+    weight: "bold",
+    halo: theme.background,
+  }),
   error: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
 }));
 /** Half the side of a corner's square mark, CSS px. */
@@ -464,7 +475,8 @@ function polygonPath(r, v, d) {
   for (let k = 0; k + 1 < offset.length; k++) {
     const j = 2 * offset[k];
     r.moveTo(v.sx(cps[j]), v.sy(cps[j + 1]));
-    for (let i = offset[k] + 1; i < offset[k + 1]; i++) r.lineTo(v.sx(cps[2 * i]), v.sy(cps[2 * i + 1]));
+    for (let i = offset[k] + 1; i < offset[k + 1]; i++)
+      r.lineTo(v.sx(cps[2 * i]), v.sy(cps[2 * i + 1]));
   }
 }
 
@@ -503,7 +515,14 @@ function drawReport(r, v, s, d) {
       r.rect(x - half, y - half, 2 * half, 2 * half);
       r.paint(CORNER_STYLE);
       if (Number.isFinite(c.angle))
-        r.text(`${Math.round((c.angle * 180) / Math.PI)}°`, x + half + 3 * r.scale, y - half, labels.corner, "left", "bottom");
+        r.text(
+          `${Math.round((c.angle * 180) / Math.PI)}°`,
+          x + half + 3 * r.scale,
+          y - half,
+          labels.corner,
+          "left",
+          "bottom",
+        );
     }
   }
   if (s.errors) {
@@ -515,7 +534,14 @@ function drawReport(r, v, s, d) {
       const x = v.sx(pts[2 * p.worst]);
       const y = v.sy(pts[2 * p.worst + 1]);
       r.point(x, y, WORST_STYLE);
-      r.text(fmt(p.maxError * s.scale, 1), x + 6 * r.scale, y + 6 * r.scale, labels.error, "left", "top");
+      r.text(
+        fmt(p.maxError * s.scale, 1),
+        x + 6 * r.scale,
+        y + 6 * r.scale,
+        labels.error,
+        "left",
+        "top",
+      );
     }
   }
 }
@@ -557,8 +583,6 @@ export function draw(r, v, s, d) {
   if (s.edits.length === 0) drawReport(r, v, s, d);
   if (s.polygon) d.handles?.draw(r, v);
   d.pen?.draw(r, LIVE_STYLE);
-  const margin = MARGIN_PX * r.scale;
-  drawCaption(r, t("sketch.caption"), margin, v.height - margin, theme.labelSmall, v.width - 2 * margin, "bottom");
 }
 
 // ------------------------------------------------------------------ formula, label

@@ -118,7 +118,10 @@ export default [
       // curve; the handles are hidden first so that the press is the pen's, not a drag.
       const a = handles[3];
       const b = handles[Math.min(handles.length - 1, 6)];
-      await page.locator('[data-control="polygon"] input, input[data-control="polygon"]').first().uncheck();
+      await page
+        .locator('[data-control="polygon"] input, input[data-control="polygon"]')
+        .first()
+        .uncheck();
       await settle(page);
       const start = [a.x - box.x, a.y - box.y];
       const end = [b.x - box.x, b.y - box.y];
@@ -167,7 +170,12 @@ export default [
     "B-spline output, the comb and a bad link: no NaN shown, the last good state kept",
     async (page, h, base, { assert, settle, openDemo }) => {
       h = await openDemo(page, base, "sketch");
-      await page.locator('[data-control="output"] [data-choice="bspline"] input, [data-control="output"] input[value="bspline"]').first().check();
+      await page
+        .locator(
+          '[data-control="output"] [data-choice="bspline"] input, [data-control="output"] input[value="bspline"]',
+        )
+        .first()
+        .check();
       await settle(page);
       await page.locator('[data-control="comb"] input, input[data-control="comb"]').first().check();
       await settle(page);

@@ -4,8 +4,8 @@ export const SKETCH = {
   "sketch.summary":
     "Draw a stroke: the fewest Bézier pieces (or B-spline control points) that stay within the tolerance, corners kept; then edit by dragging points or drawing over a part.",
   "sketch.aria": "Sketched curve: {fit}",
-  "sketch.caption":
-    "Draw with the mouse, a pen or a finger. Start on the curve to redraw a part; Shift + drag pans.",
+  "sketch.figureHelp":
+    "Draw on the figure with the mouse, a pen or a finger; a stroke that starts on the curve redraws that part. Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Shift-drag pans; wheel or pinch zooms.",
   "sketch.outputLegend": "The curve is",
   "sketch.output.G1": "Bézier pieces, G¹ joints",
   "sketch.output.C1": "Bézier pieces, C¹ joints",
