@@ -595,12 +595,13 @@ export function formula(s, d) {
     : `\\max_j \\operatorname{dist}(p_j, C) \\le \\varepsilon`;
   if (d.bspline) {
     const n = d.cps.length / 2 - 1;
-    return [`C(u) = \\sum_{i=0}^{${n}} N_{i,${s.degree}}(u)\\, P_i`, `${eps},\\quad ${measured}`];
+    return [`C(u) = \\sum_{i=0}^{${n}} N_{i,${s.degree}}(u)\\, P_i`, eps, measured];
   }
-  const n = d.pieces;
   return [
-    `C(t) = \\sum_{i=0}^{3} B_{i,3}(t - k)\\, P_{k,i},\\quad t \\in [k, k+1],\\ k = 0, \\dots, ${n - 1}`,
-    `${eps},\\quad ${measured}`,
+    `C(t) = \\sum_{i=0}^{3} B_{i,3}(t - k)\\, P_{k,i}`,
+    `t \\in [k, k+1],\\quad k = 0, \\dots, ${d.pieces - 1}`,
+    eps,
+    measured,
   ];
 }
 
