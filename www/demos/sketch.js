@@ -383,7 +383,14 @@ export const controls = [
     checkbox("polygon", { label: "sketch.control.polygon" }),
     checkbox("comb", { label: "sketch.control.comb" }),
   ),
-  group(null, checkbox("oversketch", { label: "sketch.control.oversketch" })),
+  group(
+    null,
+    checkbox("oversketch", { label: "sketch.control.oversketch" }),
+    shownWhen(
+      isBSpline,
+      readout("oversketch-note", () => t("sketch.oversketchBezier")),
+    ),
+  ),
   actions(
     PRESETS.map((preset) => ({
       name: `preset-${preset.name}`,

@@ -189,4 +189,105 @@ export default [
       assert(status.length > 0, "a refusal is reported");
     },
   ],
+  [
+    "stroke codes: a round trip is within half a grid step; malformed codes are refused",
+    async (page, _h, _base, { assert }) => {
+      const result = await page.evaluate(async () => {
+        const { encodeStroke, decodeStroke } = await import("./lib/stroke-code.js");
+        let seed = 11;
+        const random = () => {
+          seed = (seed * 16807) % 2147483647;
+          return seed / 2147483647;
+        };
+        let worst = 0;
+        for (let trial = 0; trial < 50; trial++) {
+          const n = 2 + Math.floor(random() * 300);
+          const e = -4 + Math.floor(random() * 5);
+          const flat = [];
+          let x = (random() - 0.5) * 1000;
+          let y = (random() - 0.5) * 1000;
+          for (let k = 0; k < n; k++) {
+            x += (random() - 0.5) * 10 ** (e + 3);
+            y += (random() - 0.5) * 10 ** (e + 3);
+            flat.push(x, y);
+          }
+          const back = decodeStroke(encodeStroke(flat, e), { max: 400 });
+          if (back.length !== flat.length) return { error: `length ${back.length}` };
+          for (let k = 0; k < flat.length; k++)
+            worst = Math.max(worst, Math.abs(back[k] - flat[k]) / 10 ** e);
+        }
+        const refused = ["", "3", "-3~", "-3~A", "-3~g", "-3~AA=", "-9~AA", "9~AA", "-3~AAAA"].map(
+          (code) => {
+            try {
+              decodeStroke(code, { max: 1 });
+              return false;
+            } catch {
+              return true;
+            }
+          },
+        );
+        return { worst, refused };
+      });
+      assert(!result.error, result.error);
+      assert(result.worst <= 0.5 + 1e-6, `round trip off by ${result.worst} grid steps`);
+      assert(result.refused.every(Boolean), `refused: ${result.refused}`);
+    },
+  ],
+  [
+    "composite handles: a joint carries its neighbours, an inner point keeps a smooth joint G¹ (the core's verdict)",
+    async (page, _h, _base, { assert, equal }) => {
+      const result = await page.evaluate(async () => {
+        const { compositeHandles, moveCompositeHandle } = await import(
+          "./lib/composite-handles.js"
+        );
+        const { loadWasm } = await import("./lib/wasm.js");
+        const sl = await loadWasm();
+        // Two cubics with a G¹ joint at (3, 1): P₂ = (2, 1), Q₁ = (5, 1) on one line through it.
+        const points = [0, 0, 1, 2, 2, 1, 3, 1, 5, 1, 6, 3, 7, 0];
+        const curve = new sl.CompositeBezier(
+          [0, 0, 1, 2, 2, 1, 3, 1, 3, 1, 5, 1, 6, 3, 7, 0],
+          2,
+          [3, 3],
+        );
+        const out = {};
+        try {
+          const map = compositeHandles(Array.from(curve.degrees()), false);
+          out.count = map.count; // 7 distinct points
+          out.before = curve.continuity()[0];
+          const cps = curve.controlPoints();
+          // Handle 4 is Q₁ (piece 1, point 1): move it off the line.
+          moveCompositeHandle(curve, map, cps, 4, 5, 2.5);
+          out.afterInner = curve.continuity()[0];
+          const moved = Array.from(curve.controlPoints());
+          out.joint = moved.slice(6, 8).concat(moved.slice(8, 10));
+          out.p2 = moved.slice(4, 6);
+          out.p2Distance = Math.hypot(moved[4] - 3, moved[5] - 1);
+          // Handle 3 is the joint: moved by (0.5, −1), P₂ and Q₁ follow by the same.
+          const before = Array.from(curve.controlPoints());
+          moveCompositeHandle(curve, map, curve.controlPoints(), 3, 3.5, 0);
+          const after = Array.from(curve.controlPoints());
+          out.shifts = [4, 6, 8, 10].map((j) => [
+            after[j] - before[j],
+            after[j + 1] - before[j + 1],
+          ]);
+          out.afterJoint = curve.continuity()[0];
+          out.points = points.length / 2;
+        } finally {
+          curve.free();
+        }
+        return out;
+      });
+      equal(result.count, result.points, "one handle per distinct point");
+      assert(result.before.g >= 1, `G¹ at first: ${JSON.stringify(result.before)}`);
+      assert(
+        result.afterInner.c >= 0 && result.afterInner.g >= 1,
+        `still G¹: ${JSON.stringify(result.afterInner)}`,
+      );
+      equal(result.joint.join(), "3,1,3,1", "the joint did not move");
+      assert(Math.abs(result.p2Distance - 1) < 1e-12, `P₂ kept its distance: ${result.p2Distance}`);
+      for (const [dx, dy] of result.shifts)
+        assert(Math.abs(dx - 0.5) < 1e-12 && Math.abs(dy + 1) < 1e-12, `shift ${dx}, ${dy}`);
+      assert(result.afterJoint.g >= 1, "moving the joint keeps it G¹");
+    },
+  ],
 ];

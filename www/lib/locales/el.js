@@ -2351,6 +2351,8 @@ export default {
   "sketch.control.comb": "χτένα καμπυλότητας",
   "sketch.control.oversketch":
     "Μια γραμμή που ξεκινά πάνω στην καμπύλη ξανασχεδιάζει εκείνο το κομμάτι",
+  "sketch.oversketchBezier":
+    "Το ξανασχεδίασμα ενός κομματιού αλλάζει τμήματα Bézier: με μια B-spline κάθε γραμμή είναι νέο σχέδιο.",
   "sketch.control.presets": "Δείγματα γραμμών",
   "sketch.preset.wave": "Κύμα",
   "sketch.preset.corners": "Ζιγκ-ζαγκ με γωνίες",

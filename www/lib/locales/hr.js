@@ -2327,6 +2327,8 @@ export default {
   "sketch.control.polygon": "kontrolne poligone i točke (povucite ih)",
   "sketch.control.comb": "češalj zakrivljenosti",
   "sketch.control.oversketch": "Potez koji počinje na krivulji ponovno crta taj dio",
+  "sketch.oversketchBezier":
+    "Ponovno crtanje dijela mijenja Bézierove segmente: s B-krivuljom svaki potez je novi crtež.",
   "sketch.control.presets": "Primjeri poteza",
   "sketch.preset.wave": "Val",
   "sketch.preset.corners": "Cik-cak s kutovima",

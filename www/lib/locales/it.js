@@ -2348,6 +2348,8 @@ export default {
   "sketch.control.polygon": "poligoni e punti di controllo (trascinali)",
   "sketch.control.comb": "pettine di curvatura",
   "sketch.control.oversketch": "Un tratto che parte sulla curva ridisegna quella parte",
+  "sketch.oversketchBezier":
+    "Ridisegnare una parte modifica pezzi di Bézier: con una B-spline ogni tratto è un nuovo disegno.",
   "sketch.control.presets": "Tratti di esempio",
   "sketch.preset.wave": "Onda",
   "sketch.preset.corners": "Zigzag con spigoli",

@@ -21,6 +21,8 @@ export const SKETCH = {
   "sketch.control.polygon": "control polygons and points (drag them)",
   "sketch.control.comb": "curvature comb",
   "sketch.control.oversketch": "A stroke that starts on the curve redraws that part",
+  "sketch.oversketchBezier":
+    "Oversketching edits Bézier pieces: with a B-spline every stroke is a new drawing.",
   "sketch.control.presets": "Sample strokes",
   "sketch.preset.wave": "Wave",
   "sketch.preset.corners": "Zigzag with corners",
