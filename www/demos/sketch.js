@@ -126,11 +126,18 @@ export const fields = {
 
 const isBSpline = (s) => s.output === "bspline";
 
+/** True when the flat points end where they begin (a closed composite: its seam is one handle). */
+function endsAtStart(cps) {
+  const n = cps.length;
+  const size = 1 + Math.abs(cps[0]) + Math.abs(cps[1]);
+  return n >= 4 && Math.hypot(cps[n - 2] - cps[0], cps[n - 1] - cps[1]) <= 1e-9 * size;
+}
+
 /** The handles of the model's curve and the flat control points they read. */
 function handlesOf(m) {
   m.cps = m.curve.controlPoints();
   if (m.bspline) m.map = null;
-  else m.map = compositeHandles(Array.from(m.curve.degrees()), m.closed);
+  else m.map = compositeHandles(Array.from(m.curve.degrees()), endsAtStart(m.cps));
 }
 
 /** Moves handle h to (x, y) in the model, in place. */
