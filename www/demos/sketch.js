@@ -154,6 +154,9 @@ function moveHandle(m, h, x, y) {
   }
 }
 
+/** Where handle h's point is in the flat control points (a composite's joint is listed once). */
+const handleAt = (m, h) => (m.bspline ? h : m.map.offset[m.map.piece[h]] + m.map.index[h]);
+
 /** How many handles the model has. */
 const handleCount = (m) => (m.bspline ? m.cps.length / 2 : m.map.count);
 
@@ -455,6 +458,7 @@ const HIGHLIGHT_STYLE = Object.freeze({
 const COMB_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1 });
 const COMB_EDGE_STYLE = Object.freeze({ stroke: HUES.reddishPurple, width: 1.5 });
 const SPLIT_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: RADIUS.splitPoint });
+const SPLIT_IN_HANDLE_STYLE = Object.freeze({ fill: HUES.bluishGreen, radius: 3 });
 const CORNER_STYLE = Object.freeze({ stroke: HUES.vermillion, width: 2 });
 const WORST_STYLE = Object.freeze({ fill: HUES.vermillion, radius: RADIUS.constructionPoint });
 const labelStyles = themed((theme) => ({
@@ -549,7 +553,7 @@ function drawReport(r, v, s, d) {
       const y = v.sy(pts[2 * p.worst + 1]);
       r.point(x, y, WORST_STYLE);
       r.text(
-        fmt(p.maxError * s.scale, 1),
+        t("sketch.px", { value: fmt(p.maxError * s.scale, 1) }),
         x + 6 * r.scale,
         y + 6 * r.scale,
         labels.error,
@@ -560,7 +564,10 @@ function drawReport(r, v, s, d) {
   }
 }
 
-/** Ghosted strokes, the comb, polygons, the replaced part, the curve, the marks, the handles. */
+/**
+ * Ghosted strokes, the comb, polygons, the replaced part, the curve, the report's marks, the
+ * handles, the split points, the stroke being drawn.
+ */
 export function draw(r, v, s, d) {
   const theme = r.theme;
   strokePath(r, v, d.points);
@@ -586,16 +593,18 @@ export function draw(r, v, s, d) {
   }
   flatPath(r, v, d.samples);
   r.paint(theme.curve);
+  if (s.edits.length === 0) drawReport(r, v, s, d);
+  if (s.polygon) d.handles?.draw(r, v);
+  // The split points over the handles: a joint's handle gets a green centre.
   if (s.breaks && !d.bspline) {
     const { offset } = d.map;
     const cps = d.cps;
+    const style = s.polygon ? SPLIT_IN_HANDLE_STYLE : SPLIT_STYLE;
     for (let k = 0; k < offset.length; k++) {
       const j = k === offset.length - 1 ? 2 * (offset[k] - 1) : 2 * offset[k];
-      r.point(v.sx(cps[j]), v.sy(cps[j + 1]), SPLIT_STYLE);
+      r.point(v.sx(cps[j]), v.sy(cps[j + 1]), style);
     }
   }
-  if (s.edits.length === 0) drawReport(r, v, s, d);
-  if (s.polygon) d.handles?.draw(r, v);
   d.pen?.draw(r, LIVE_STYLE);
 }
 
@@ -642,8 +651,9 @@ export function setup(ui) {
   const handles = new Handles(view, {
     count: () => (ui.state.polygon ? handleCount(data) : 0),
     get: (h, out) => {
-      out[0] = data.cps[2 * h];
-      out[1] = data.cps[2 * h + 1];
+      const j = 2 * handleAt(data, h);
+      out[0] = data.cps[j];
+      out[1] = data.cps[j + 1];
     },
     label: (h) => (h === handles.selected || h === handles.dragging ? handleName(data, h) : ""),
     move(h, x, y) {

@@ -155,7 +155,19 @@ export default [
         await page.locator(`[data-action="preset-${name}"]`).click();
         await settle(page);
         shots.add(await h.snapshot());
-        assert(Number(await attr(page, "pieces")) >= 1, `${name}: pieces`);
+        const pieces = Number(await attr(page, "pieces"));
+        assert(pieces >= 1, `${name}: pieces`);
+        // One handle per distinct control point of the cubic pieces: 3n + 1 open, 3n closed
+        // (or open with its ends on one point).
+        const handles = await h.handles();
+        const closedNow = (await attr(page, "closed")) === "true";
+        const counts = closedNow ? [3 * pieces] : [3 * pieces, 3 * pieces + 1];
+        assert(
+          counts.includes(handles.length),
+          `${name}: ${handles.length} handles, ${pieces} pieces`,
+        );
+        const spots = new Set(handles.map((p) => `${p.x.toFixed(1)},${p.y.toFixed(1)}`));
+        assert(spots.size > handles.length - 2, `${name}: the handles are distinct points`);
         if (name === "corners") corners = Number(await attr(page, "corners"));
         if (name === "blob") closed = await attr(page, "closed");
         if (name === "wave") equal(await attr(page, "closed"), "false", "the wave is open");
