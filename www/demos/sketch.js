@@ -382,6 +382,7 @@ export const controls = [
         handles: String(handleCount(d)),
         maxErrorPx: Number.isFinite(worstPx(s, d)) ? fmtMachine(worstPx(s, d)) : "",
         edits: String(s.edits.length),
+        replaced: d.replaced ? `${d.replaced.first},${d.replaced.last}` : "",
       }),
     }),
   ),

@@ -134,6 +134,13 @@ export default [
       const state = stateOf(page.url());
       equal(state.edits.length, 1, "one edit");
       equal(state.edits[0][0], "o", "an oversketch");
+      // The new pieces [first, last) that came from the stroke, within the new curve.
+      const [first, last] = (await attr(page, "replaced")).split(",").map(Number);
+      const total = Number(await attr(page, "pieces"));
+      assert(
+        0 <= first && first < last && last <= total,
+        `new pieces ${first}–${last} of ${total}`,
+      );
       assert((await h.snapshot()) !== before, "the curve changed");
       await page.waitForTimeout(1800); // the highlight fades
       const shot = await h.snapshot();
