@@ -7,8 +7,10 @@
  * programs do: a joint carries its two neighbouring points along (the tangent directions at the
  * joint stay), and an inner point next to a smooth joint turns the point on the other side of
  * the joint so that both stay on one line through it (G¹ is kept; that point keeps its distance
- * from the joint). A joint counts as smooth when its two neighbours already lie on one line
- * through it, turning by less than `SMOOTH_DEGREES`; a corner stays a corner.
+ * from the joint, or, at a joint whose two neighbours were at one distance, takes the moved
+ * one's: with both pieces on intervals of length 1, 3(P₃ − P₂) = 3(Q₁ − Q₀) stays, C¹). A joint
+ * counts as smooth when its two neighbours already lie on one line through it, turning by less
+ * than `SMOOTH_DEGREES`; a corner stays a corner.
  */
 
 /** Below this turn at a joint (degrees) the joint is smooth and kept so. */
@@ -79,24 +81,34 @@ function previousPiece(map, k) {
   return map.closed ? map.degrees.length - 1 : -1;
 }
 
-/** True when a, j, b turn by less than SMOOTH_DEGREES at j (a before, b after the joint). */
-function smoothAt(a, j, b) {
+/**
+ * How the joint j between a (before) and b (after) is kept: 0 a corner (left alone), 1 smooth
+ * (a, j, b turn by less than SMOOTH_DEGREES: G¹), 2 mirrored (also |j − a| = |b − j|: with
+ * pieces on parameter intervals of one length that is C¹, and it stays so).
+ */
+function jointKind(a, j, b) {
   const ux = j[0] - a[0];
   const uy = j[1] - a[1];
   const vx = b[0] - j[0];
   const vy = b[1] - j[1];
   const lu = Math.hypot(ux, uy);
   const lv = Math.hypot(vx, vy);
-  return lu > 0 && lv > 0 && (ux * vx + uy * vy) / (lu * lv) > SMOOTH_COS;
+  if (!(lu > 0 && lv > 0 && (ux * vx + uy * vy) / (lu * lv) > SMOOTH_COS)) return 0;
+  return Math.abs(lu - lv) <= EQUAL_LENGTHS * Math.max(lu, lv) ? 2 : 1;
 }
+/** Two handle lengths within this fraction of each other are equal (a C¹ joint). */
+const EQUAL_LENGTHS = 1e-9;
 
-/** Puts `other` on the line from `moved` through joint `j`, beyond j, at its own distance. */
-function turnOpposite(curve, map, cps, k, i, j, moved) {
+/**
+ * Puts `other` on the line from `moved` through joint `j`, beyond j: at its own distance (G¹),
+ * or at the moved point's distance when `mirror` (C¹).
+ */
+function turnOpposite(curve, map, cps, k, i, j, moved, mirror) {
   const o = at(map, cps, k, i);
   const dx = j[0] - moved[0];
   const dy = j[1] - moved[1];
   const length = Math.hypot(dx, dy);
-  const keep = Math.hypot(o[0] - j[0], o[1] - j[1]);
+  const keep = mirror ? length : Math.hypot(o[0] - j[0], o[1] - j[1]);
   if (length === 0 || keep === 0) return;
   put(curve, map, cps, k, i, j[0] + (dx / length) * keep, j[1] + (dy / length) * keep);
 }
@@ -130,9 +142,9 @@ export function moveCompositeHandle(curve, map, cps, h, x, y) {
     const j = at(map, cps, k, 0);
     if (p >= 0) {
       const q = map.degrees[p];
-      const smooth = q >= 2 && smoothAt(at(map, cps, p, q - 1), j, before);
+      const kind = q >= 2 ? jointKind(at(map, cps, p, q - 1), j, before) : 0;
       put(curve, map, cps, k, i, x, y);
-      if (smooth) turnOpposite(curve, map, cps, p, q - 1, j, [x, y]);
+      if (kind > 0) turnOpposite(curve, map, cps, p, q - 1, j, [x, y], kind === 2);
       return;
     }
   }
@@ -140,9 +152,9 @@ export function moveCompositeHandle(curve, map, cps, h, x, y) {
     const nx = nextPiece(map, k);
     const j = at(map, cps, k, deg);
     if (nx >= 0) {
-      const smooth = map.degrees[nx] >= 2 && smoothAt(before, j, at(map, cps, nx, 1));
+      const kind = map.degrees[nx] >= 2 ? jointKind(before, j, at(map, cps, nx, 1)) : 0;
       put(curve, map, cps, k, i, x, y);
-      if (smooth) turnOpposite(curve, map, cps, nx, 1, j, [x, y]);
+      if (kind > 0) turnOpposite(curve, map, cps, nx, 1, j, [x, y], kind === 2);
       return;
     }
   }

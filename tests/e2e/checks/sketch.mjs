@@ -294,6 +294,21 @@ export default [
         } finally {
           curve.free();
         }
+        // A C¹ joint (P₂ = (2, 1), Q₁ = (4, 1), one distance from (3, 1)) stays C¹.
+        const c1 = new sl.CompositeBezier(
+          [0, 0, 1, 2, 2, 1, 3, 1, 3, 1, 4, 1, 6, 3, 7, 0],
+          2,
+          [3, 3],
+        );
+        try {
+          out.c1Before = c1.continuity()[0];
+          const map = compositeHandles(Array.from(c1.degrees()), false);
+          moveCompositeHandle(c1, map, c1.controlPoints(), 4, 4, 2);
+          out.c1After = c1.continuity()[0];
+          out.c1P2 = Array.from(c1.controlPoints()).slice(4, 6);
+        } finally {
+          c1.free();
+        }
         return out;
       });
       equal(result.count, result.points, "one handle per distinct point");
@@ -307,6 +322,9 @@ export default [
       for (const [dx, dy] of result.shifts)
         assert(Math.abs(dx - 0.5) < 1e-12 && Math.abs(dy + 1) < 1e-12, `shift ${dx}, ${dy}`);
       assert(result.afterJoint.g >= 1, "moving the joint keeps it G¹");
+      assert(result.c1Before.c >= 1, `C¹ at first: ${JSON.stringify(result.c1Before)}`);
+      assert(result.c1After.c >= 1, `still C¹: ${JSON.stringify(result.c1After)}`);
+      equal(result.c1P2.join(), "2,0", "P₂ mirrored through the joint");
     },
   ],
 ];
