@@ -4,7 +4,8 @@
  * collects the pointer's path in canvas CSS px — every coalesced event of a pen or a fast mouse
  * (`getCoalescedEvents`), samples closer than `minStep` px to the last one dropped — then hands
  * it over on release: `done(flat, pointerType)`. `draw(r, style)` paints the path while it is
- * drawn. The canvas has `touch-action: none` (figure-canvas.js), so a finger draws, not scrolls.
+ * drawn. The canvas has `touch-action: none` (figure-canvas.js), so a finger draws, not scrolls;
+ * a second finger turns the stroke into a pinch or a two-finger pan (`View#toGesture`).
  */
 
 /** Samples kept at least this far apart, CSS px (the link stays short; a fit needs no more). */
@@ -37,6 +38,16 @@ export class SketchPen {
   }
 
   pointerDown(event, x, y) {
+    if (this.drawing && event.pointerType === "touch" && this.pointerType === "touch") {
+      // A second finger: the stroke was the start of a pinch or a two-finger pan. The first
+      // finger goes back to the figure (`toGesture`), the new one joins it there.
+      const n = this.points.length;
+      this.view.toGesture(this.pointerId, this.points[n - 2], this.points[n - 1]);
+      this.pointerId = null;
+      this.points = [];
+      this.view.requestDraw();
+      return false;
+    }
     if (this.drawing || event.shiftKey || !this.enabled()) return false;
     this.pointerId = event.pointerId;
     this.pointerType = event.pointerType || "mouse";

@@ -327,4 +327,52 @@ export default [
       equal(result.c1P2.join(), "2,0", "P₂ mirrored through the joint");
     },
   ],
+  [
+    "touch: one finger draws, a second finger turns the stroke into a pinch (zoom, no drawing)",
+    async (page, h, base, { assert, equal, settle, openDemo }) => {
+      h = await openDemo(page, base, "sketch");
+      const box = await h.canvas().boundingBox();
+      const cdp = await page.context().newCDPSession(page);
+      const touch = (type, points) =>
+        cdp.send("Input.dispatchTouchEvent", {
+          type,
+          touchPoints: points.map(([x, y], id) => ({ x: box.x + x, y: box.y + y, id })),
+        });
+      // One finger along the top, away from the curve and its points: a new drawing.
+      const before = stateOf(page.url());
+      await touch("touchStart", [[box.width * 0.1, box.height * 0.08]]);
+      for (let k = 1; k <= 30; k++)
+        await touch("touchMove", [
+          [box.width * (0.1 + 0.025 * k), box.height * (0.08 + 0.04 * Math.sin(k / 5))],
+        ]);
+      await touch("touchEnd", []);
+      await settle(page);
+      const drawn = stateOf(page.url());
+      assert(drawn.stroke !== before.stroke, "a finger draws a stroke");
+      // Two fingers moving apart: the window shrinks (zoom in) and the stroke stays.
+      const [cx, cy] = [box.width / 2, box.height / 2];
+      await touch("touchStart", [[cx - 20, cy]]);
+      await touch("touchMove", [[cx - 24, cy]]);
+      await touch("touchStart", [
+        [cx - 24, cy],
+        [cx + 20, cy],
+      ]);
+      for (let k = 1; k <= 10; k++)
+        await touch("touchMove", [
+          [cx - 24 - 8 * k, cy],
+          [cx + 20 + 8 * k, cy],
+        ]);
+      await touch("touchEnd", []);
+      await settle(page);
+      await page.waitForTimeout(100);
+      const pinched = stateOf(page.url());
+      equal(pinched.stroke, drawn.stroke, "the pinch drew nothing");
+      equal(pinched.edits.length, 0, "and oversketched nothing");
+      const width = (w) => w[2] - w[0];
+      assert(
+        width(pinched.view) < width(drawn.view) * 0.8,
+        `zoomed in: ${pinched.view} from ${drawn.view}`,
+      );
+    },
+  ],
 ];
