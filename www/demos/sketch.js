@@ -388,8 +388,9 @@ export const controls = [
   ),
   group(
     "sketch.showLegend",
-    checkbox("corners", { label: "sketch.control.corners" }),
-    checkbox("breaks", { label: "sketch.control.breaks" }),
+    // A B-spline has no corners or joints of its own to show.
+    shownWhen((s) => !isBSpline(s), checkbox("corners", { label: "sketch.control.corners" })),
+    shownWhen((s) => !isBSpline(s), checkbox("breaks", { label: "sketch.control.breaks" })),
     checkbox("errors", { label: "sketch.control.errors" }),
     checkbox("polygon", { label: "sketch.control.polygon" }),
     checkbox("comb", { label: "sketch.control.comb" }),
