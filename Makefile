@@ -1,5 +1,7 @@
 # splinelab — build, serve and test. Every target installs what it lacks and is safe to re-run.
 #   make serve        build the wasm package and serve www/ on http://127.0.0.1:$(PORT)
+#   make dist         build, then write the static site dist/site/ for any static host (README "Deploy")
+#   make serve-dist   make dist, then serve dist/site/ as a host would (precompressed, cached)
 #   make test         native + doc tests, wasm-bindgen-test suites in Node, browser tests
 #   make test-native  the fast loop: core tests and doctests only
 #   make lint         rustfmt check, clippy with warnings denied, and lint-js
@@ -22,7 +24,7 @@ BIOME := node_modules/.bin/biome
 # The JS Biome looks at (biome.json's files.includes narrows them: not www/pkg, www/vendor).
 JS_DIRS := www tests/e2e tests/fuzz tests/package tests/i18n scripts bench
 
-.PHONY: all build package serve test test-native test-wasm test-e2e lint lint-js format screenshots bench fuzz clean tools rust-target npm-deps chromium
+.PHONY: all build package dist serve serve-dist test test-native test-wasm test-e2e lint lint-js format screenshots bench fuzz clean tools rust-target npm-deps chromium
 
 all: build
 
@@ -65,6 +67,14 @@ package: build
 serve: build
 	node scripts/serve.mjs --port $(PORT)
 
+# Bundled and minified JS (esbuild), content-hashed names under assets/, .gz and .br beside
+# every text file and the wasm; see scripts/dist.mjs.
+dist: build
+	node scripts/dist.mjs
+
+serve-dist: dist
+	node scripts/serve.mjs --port $(PORT) --root dist/site
+
 test: tools chromium
 	bash scripts/test-all.sh
 
@@ -105,4 +115,4 @@ fuzz: build
 
 clean:
 	cargo clean
-	rm -rf $(PKG) www/vendor screenshots
+	rm -rf $(PKG) www/vendor screenshots dist/site

@@ -1043,17 +1043,20 @@ fn a_long_curve_splits_into_one_bezier_piece_per_distinct_knot_plus_one() {
 
 #[test]
 fn dense_sampling_stays_finite_where_the_power_form_overflows() {
-    // Degree 5, control points ±1e307 alternating: the power form's coefficients reach
+    // Degree 5, control points ±1e120 alternating (the largest coordinates allowed) with every
+    // weight 1e187, so the homogeneous points are ±1e307: the power form's coefficients reach
     // 2^5·1e307 and overflow, while de Casteljau and de Boor (convex combinations) and the
-    // first derivative (5·(P1 − P0) = 1e308) stay finite. The dense paths must then give what
-    // the per-point ones give, not NaN.
+    // first derivative (5·(H1 − H0) = 1e308 homogeneous) stay finite. The dense paths must then
+    // give what the per-point ones give, not NaN. (Equal weights: the curve is the polynomial
+    // one, its points within ±1e120 and its derivative within 5·2e120.)
     let points: Vec<DVec2> = (0..6)
         .map(|i| {
-            let s = if i % 2 == 0 { 1e307 } else { -1e307 };
+            let s = if i % 2 == 0 { 1e120 } else { -1e120 };
             DVec2::new(s, -s)
         })
         .collect();
-    let bezier = BezierCurve::new(points.clone(), None).unwrap();
+    let weights = [1e187; 6];
+    let bezier = BezierCurve::new(points.clone(), Some(&weights)).unwrap();
     let mut dense = vec![0.0; 2 * 50];
     bezier.sample_uniform_into(50, &mut dense).unwrap();
     for (k, o) in dense.chunks_exact(2).enumerate() {
@@ -1061,12 +1064,12 @@ fn dense_sampling_stays_finite_where_the_power_form_overflows() {
         assert!(p.is_finite(), "the point itself is finite");
         let got = DVec2::new(o[0], o[1]);
         assert!(
-            (got - p).abs().max_element() <= 1e-14 * 1e307,
+            (got - p).abs().max_element() <= 1e-14 * 1e120,
             "Bézier sample {k}: {got} vs {p}"
         );
     }
     let knots = vec![0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0];
-    let bspline = BSplineCurve::new(points, 5, knots, None).unwrap();
+    let bspline = BSplineCurve::new(points, 5, knots, Some(&weights)).unwrap();
     let us: Vec<f64> = (0..50).map(|k| k as f64 / 49.0).collect();
     bspline.sample_into(&us, &mut dense).unwrap();
     let mut derivatives = vec![0.0; 2 * 50];
@@ -1077,14 +1080,14 @@ fn dense_sampling_stays_finite_where_the_power_form_overflows() {
         let p = bspline.evaluate(u).unwrap();
         let got = DVec2::new(dense[2 * k], dense[2 * k + 1]);
         assert!(
-            (got - p).abs().max_element() <= 1e-14 * 1e307,
+            (got - p).abs().max_element() <= 1e-14 * 1e120,
             "B-spline sample {k}: {got} vs {p}"
         );
         let d = bspline.derivative(u, 1).unwrap();
         assert!(d.is_finite(), "the derivative itself is finite");
         let got = DVec2::new(derivatives[2 * k], derivatives[2 * k + 1]);
         assert!(
-            (got - d).abs().max_element() <= 1e-14 * 1e308,
+            (got - d).abs().max_element() <= 1e-14 * 1e121,
             "derivative {k}: {got} vs {d}"
         );
     }

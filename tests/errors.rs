@@ -103,6 +103,24 @@ fn not_finite() {
 }
 
 #[test]
+fn coordinate_too_large() {
+    let e = fails(
+        BezierCurve::<DVec2>::from_flat(&[0.0, 0.0, 1e200, 1.0], None),
+        "coordinate-too-large",
+        &["coordinate 2 is 1e+200", "at most 1e+120 in magnitude"],
+    );
+    assert_eq!(
+        e,
+        Error::CoordinateTooLarge {
+            what: "coordinate",
+            index: Some(2),
+            value: 1e200,
+            max: 1e120
+        }
+    );
+}
+
+#[test]
 fn too_few_points() {
     fails(
         BezierCurve::new(pts2(&[(1.0, 2.0)]), None),

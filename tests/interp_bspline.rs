@@ -7,6 +7,7 @@
 mod common;
 
 use common::*;
+use splinelab::error::InterpError;
 use splinelab::interp::global::knots;
 use splinelab::interp::{
     self, approximate_bspline, interpolate_bspline, interpolation_system, InterpolationOptions,
@@ -310,13 +311,13 @@ fn schoenberg_whitney_violations_are_refused() {
     let e = interpolate_bspline(&points, 2, &params, &options).unwrap_err();
     assert_eq!(
         e,
-        Error::SchoenbergWhitney {
+        Error::Interp(InterpError::SchoenbergWhitney {
             index: 1,
             param: 1.0,
             lo: 0.0,
             hi: 0.5,
             degree: 2
-        }
+        })
     );
     assert!(e.to_string().contains("singular"), "{e}");
     // Knots of the wrong count.
@@ -388,11 +389,11 @@ fn least_squares_count_out_of_range_is_refused() {
         let e = approximate_bspline(&points, 3, count, &params, None).unwrap_err();
         assert_eq!(
             e,
-            Error::ControlCountOutOfRange {
+            Error::Interp(InterpError::ControlCountOutOfRange {
                 count,
                 min: 4,
                 max: 6
-            }
+            })
         );
     }
 }
@@ -454,7 +455,7 @@ fn closed_needs_the_last_point_equal_to_the_first() {
         ..options2()
     };
     let e = interpolate_bspline(&points, 3, &[0.0, 1.0, 2.0, 3.0, 4.0], &options).unwrap_err();
-    assert_eq!(e, Error::NotClosed { last: 4 });
+    assert_eq!(e, Error::Interp(InterpError::NotClosed { last: 4 }));
 }
 
 // --- The banded solve against a dense solve written here. -------------------------------------
@@ -844,14 +845,17 @@ fn validation_follows_the_documented_order() {
     let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 1.0], &closed_conflict).unwrap_err();
     assert_eq!(
         e,
-        Error::ParamCount {
+        Error::Interp(InterpError::ParamCount {
             params: 3,
             points: 4
-        }
+        })
     );
     let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 1.0, 2.0], &closed_conflict).unwrap_err();
     assert!(
-        matches!(e, Error::ParamsNotIncreasing { index: 2, .. }),
+        matches!(
+            e,
+            Error::Interp(InterpError::ParamsNotIncreasing { index: 2, .. })
+        ),
         "{e:?}"
     );
     let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &closed_conflict).unwrap_err();
@@ -861,7 +865,7 @@ fn validation_follows_the_documented_order() {
         ..options2()
     };
     let e = interpolate_bspline(&four, 2, &[0.0, 1.0, 2.0, 3.0], &closed).unwrap_err();
-    assert_eq!(e, Error::NotClosed { last: 3 });
+    assert_eq!(e, Error::Interp(InterpError::NotClosed { last: 3 }));
     let bad_derivative = InterpolationOptions {
         start_derivative: Some(DVec2::new(f64::INFINITY, 0.0)),
         ..options2()
@@ -889,7 +893,10 @@ fn least_squares_with_explicit_knots() {
     // both be matched with parameters (the greedy subsequence check names N_4).
     let crowded = [a, a, a, a, b - 1e-9, b - 5e-10, b, b, b, b];
     let e = approximate_bspline(&points, 3, 6, &params, Some(&crowded)).unwrap_err();
-    assert!(matches!(e, Error::SchoenbergWhitney { .. }), "{e:?}");
+    assert!(
+        matches!(e, Error::Interp(InterpError::SchoenbergWhitney { .. })),
+        "{e:?}"
+    );
 }
 
 #[test]

@@ -10,7 +10,7 @@ pub use planar::{FAST_PATH_RELATIVE_ERROR, RULE_RHO, RULE_RHO_BY_ACCURACY};
 
 use super::BezierCurve;
 use crate::error::{check_tolerance, Result};
-use crate::geom::{check_all_finite, Cartesian};
+use crate::geom::{check_all_coordinates, Cartesian};
 use adaptive::Speed;
 use planar::{planar_arc_length, planar_polygon};
 
@@ -142,7 +142,7 @@ pub fn arc_lengths<C: Cartesian>(
     let mut out = Vec::with_capacity(coords.len() / per_curve);
     for p in coords.chunks_exact(per_curve) {
         // The checks of `from_flat` then `arc_length`, in their order.
-        check_all_finite(p, "coordinate")?;
+        check_all_coordinates(p, "coordinate")?;
         let accuracy = accuracy.map(check_tolerance).transpose()?;
         match fast_path_tau(accuracy, p).and_then(|tau| planar_arc_length(p, tau)) {
             Some(l) => out.push(l),

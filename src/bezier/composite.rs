@@ -1,6 +1,7 @@
 //! Piecewise (composite) Bézier curves: joining rules and a continuity checker (syllabus §1–2).
 
 use super::BezierCurve;
+use crate::error::JoinError;
 use crate::error::{check_tolerance, Error, Result};
 use crate::geom::{binomial, Cartesian, MAX_DEGREE};
 use crate::prelude::*;
@@ -59,10 +60,9 @@ impl Continuity {
 /// otherwise the left piece's last points follow the right one. Returns both pieces.
 ///
 /// # Errors
-/// [`Error::RationalJoin`] for rational pieces, [`Error::JoinDegree`] for a piece of too low
-/// degree for the rule (C2
-/// needs degree >= 2 on both sides), or pieces too short to leave the constrained points
-/// free of each other.
+/// [`JoinError::RationalJoin`] for rational pieces, [`JoinError::JoinDegree`] for a piece of too
+/// low degree for the rule (C2 needs degree >= 2 on both sides), or pieces too short to leave the
+/// constrained points free of each other.
 pub fn join<C: Cartesian>(
     left: &BezierCurve<C>,
     right: &BezierCurve<C>,
@@ -70,7 +70,7 @@ pub fn join<C: Cartesian>(
     adjust_right: bool,
 ) -> Result<(BezierCurve<C>, BezierCurve<C>)> {
     if left.is_rational() || right.is_rational() {
-        return Err(Error::RationalJoin {});
+        return Err(Error::Join(JoinError::RationalJoin {}));
     }
     if !adjust_right {
         let (r, l) = join(
@@ -92,12 +92,12 @@ pub fn join<C: Cartesian>(
         JoinRule::C2 => 2,
     };
     if n < needed || m < needed || (m < needed + 1 && needed > 0) {
-        return Err(Error::JoinDegree {
+        return Err(Error::Join(JoinError::JoinDegree {
             rule,
             left: n,
             right: m,
             needed: needed + 1,
-        });
+        }));
     }
     q[0] = p[n];
     match rule {
@@ -116,7 +116,7 @@ pub fn join<C: Cartesian>(
             let dir = p[n] - p[n - 1];
             let len = dir.norm();
             if len == 0.0 {
-                return Err(Error::NoJointTangent {});
+                return Err(Error::Join(JoinError::NoJointTangent {}));
             }
             let old = (right.control_points()[1] - right.control_points()[0]).norm();
             let dist = if old > 0.0 { old } else { len };
@@ -265,7 +265,7 @@ impl<C: Cartesian> CompositeCurve<C> {
     /// than the pieces); piece `i` is re-parametrised onto `[t_i, t_{i+1}]`.
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] without pieces, [`Error::BreakpointCount`] for a wrong number of
+    /// [`Error::TooFewPoints`] without pieces, [`JoinError::BreakpointCount`] for a wrong number of
     /// breakpoints, the errors of [`BezierCurve::with_interval`] for breakpoints out of order.
     pub fn new(pieces: Vec<BezierCurve<C>>, breaks: &[f64]) -> Result<Self> {
         if pieces.is_empty() {
@@ -276,10 +276,10 @@ impl<C: Cartesian> CompositeCurve<C> {
             });
         }
         if breaks.len() != pieces.len() + 1 {
-            return Err(Error::BreakpointCount {
+            return Err(Error::Join(JoinError::BreakpointCount {
                 pieces: pieces.len(),
                 got: breaks.len(),
-            });
+            }));
         }
         let pieces = pieces
             .into_iter()
@@ -294,7 +294,7 @@ impl<C: Cartesian> CompositeCurve<C> {
     ///
     /// # Errors
     /// [`Error::TooFewPoints`] for a piece of degree 0, the errors of
-    /// [`crate::geom::points_from_flat`], [`Error::PiecePointCount`] when the degrees need
+    /// [`crate::geom::points_from_flat`], [`JoinError::PiecePointCount`] when the degrees need
     /// `Σ (n_i + 1)` points and another number is given, then those of [`CompositeCurve::new`].
     ///
     /// ```
@@ -318,11 +318,11 @@ impl<C: Cartesian> CompositeCurve<C> {
             .map(|&d| d.saturating_add(1))
             .fold(0, usize::saturating_add);
         if needed != pts.len() {
-            return Err(Error::PiecePointCount {
+            return Err(Error::Join(JoinError::PiecePointCount {
                 degrees: degrees.to_vec(),
                 needed,
                 got: pts.len(),
-            });
+            }));
         }
         let mut rest = pts.as_slice();
         let mut pieces = Vec::with_capacity(degrees.len());

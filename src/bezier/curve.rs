@@ -2,7 +2,7 @@
 //! the in-place edits of a drag.
 
 use super::{BezierCurve, MAX_DEGREE};
-use crate::error::{check_finite, check_in_range, Error, Result};
+use crate::error::{check_coordinate, check_finite, check_in_range, Error, Result};
 use crate::geom::check::{check_point_edit, check_weight_edit};
 use crate::geom::{check_all_finite, check_weights, Cartesian};
 use crate::prelude::*;
@@ -12,9 +12,9 @@ impl<C: Cartesian> BezierCurve<C> {
     /// finite and > 0) makes it rational.
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] for fewer than 2 points, [`Error::TooLarge`] above
-    /// [`MAX_DEGREE`], [`Error::NotFinite`] for NaN/infinite numbers, [`Error::WeightCount`] and
-    /// [`Error::NonPositiveWeight`] for bad weights.
+    /// [`Error::TooFewPoints`] for fewer than 2 points, [`Error::TooLarge`] above [`MAX_DEGREE`],
+    /// [`Error::NotFinite`] for NaN/infinite numbers, [`Error::CoordinateTooLarge`] beyond `1e120`,
+    /// [`Error::WeightCount`] and [`Error::NonPositiveWeight`] for bad weights.
     pub fn new(points: Vec<C>, weights: Option<&[f64]>) -> Result<Self> {
         if points.len() < 2 {
             return Err(Error::TooFewPoints {
@@ -32,7 +32,7 @@ impl<C: Cartesian> BezierCurve<C> {
         }
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+                check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         let homogeneous = match weights {
@@ -138,7 +138,7 @@ impl<C: Cartesian> BezierCurve<C> {
     /// rebuild, only `p` is validated).
     ///
     /// # Errors
-    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
+    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`], [`Error::CoordinateTooLarge`].
     pub fn set_control_point(&mut self, i: usize, p: C) -> Result<()> {
         check_point_edit(i, self.homogeneous.len(), p)?;
         let w = C::weight_of(self.homogeneous[i]);

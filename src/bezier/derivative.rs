@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::geom::{binomial, Cartesian, Point};
 use crate::prelude::*;
 
+use crate::error::ConicError;
 use crate::geom::{MAX_DERIVATIVE_ORDER, STACK_DEGREE};
 
 /// The control points of the `k`-th derivative in local parameter `s`: `n!/(n−k)! Δ^k P_i`.
@@ -119,11 +120,11 @@ impl<C: Cartesian> BezierCurve<C> {
     /// returned as a degree-1 curve with two equal points.
     ///
     /// # Errors
-    /// [`Error::RationalHodograph`] for a rational curve, whose derivative is not a Bézier curve of
-    /// this form (sample `derivative` instead).
+    /// [`ConicError::RationalHodograph`] for a rational curve, whose derivative is not a Bézier
+    /// curve of this form (sample `derivative` instead).
     pub fn hodograph(&self) -> Result<Self> {
         if self.rational {
-            return Err(Error::RationalHodograph {});
+            return Err(Error::Conic(ConicError::RationalHodograph {}));
         }
         let n = self.degree();
         let scale = n as f64 / (self.b - self.a);

@@ -1,6 +1,7 @@
 //! Parametrisations and knot vectors made from points (syllabus §3, §5; the Greek notes'
 //! formulas in our convention), and phantom end points.
 
+use crate::error::InterpError;
 use crate::error::{Error, Result};
 use crate::geom::Point;
 
@@ -52,10 +53,10 @@ impl Parameterization {
     /// [`Parameterization::Alpha`].
     ///
     /// # Errors
-    /// [`Error::AlphaOutOfRange`] for α outside `[0, 1]` or not a number.
+    /// [`InterpError::AlphaOutOfRange`] for α outside `[0, 1]` or not a number.
     pub fn from_alpha(alpha: f64) -> Result<Self> {
         if !(0.0..=1.0).contains(&alpha) {
-            return Err(Error::AlphaOutOfRange { value: alpha });
+            return Err(Error::Interp(InterpError::AlphaOutOfRange { value: alpha }));
         }
         Ok(if alpha == 0.0 {
             Parameterization::Uniform

@@ -2,7 +2,7 @@
 //! a drag (which keep the wrapped points of a closed curve equal).
 
 use super::{BSplineCurve, KnotVector};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate, Error, Result};
 use crate::geom::check::{check_point_edit, check_weight_edit};
 use crate::geom::{check_weights, Cartesian, MAX_DEGREE};
 use crate::prelude::*;
@@ -12,9 +12,10 @@ impl<C: Cartesian> BSplineCurve<C> {
     /// weights.
     ///
     /// # Errors
-    /// In the documented order: [`Error::NotFinite`] for coordinates, [`Error::DegreeZero`],
-    /// [`Error::TooFewPointsForDegree`] for fewer than `p + 1` points, [`Error::TooLarge`]
-    /// above [`MAX_DEGREE`], then the knot errors of [`KnotVector::new`], then weights.
+    /// In the documented order: [`Error::NotFinite`], [`Error::CoordinateTooLarge`] for
+    /// coordinates, [`Error::DegreeZero`], [`Error::TooFewPointsForDegree`] for fewer than `p + 1`
+    /// points, [`Error::TooLarge`] above [`MAX_DEGREE`], then the knot errors of
+    /// [`KnotVector::new`], then weights.
     pub fn new(
         points: Vec<C>,
         degree: usize,
@@ -23,7 +24,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     ) -> Result<Self> {
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+                check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         check_degree(degree, points.len())?;
@@ -72,7 +73,7 @@ impl<C: Cartesian> BSplineCurve<C> {
     pub fn closed(points: Vec<C>, degree: usize, weights: Option<&[f64]>) -> Result<Self> {
         for (i, p) in points.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+                check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
             }
         }
         check_degree(degree, points.len())?;

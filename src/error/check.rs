@@ -12,10 +12,32 @@ pub(crate) fn check_finite(what: &'static str, index: Option<usize>, value: f64)
     }
 }
 
-/// Checks that coordinate `k` of the vector argument `name` is finite: the error is
-/// "center: coordinate 1 is NaN; …" ([`Error::InArgument`] around [`Error::NotFinite`]).
+/// Checks a coordinate: finite ([`Error::NotFinite`]), then at most
+/// [`crate::geom::MAX_COORDINATE`] in magnitude ([`Error::CoordinateTooLarge`]); `what` and
+/// `index` name it as in [`check_finite`].
+pub(crate) fn check_coordinate(
+    what: &'static str,
+    index: Option<usize>,
+    value: f64,
+) -> Result<f64> {
+    check_finite(what, index, value)?;
+    let max = crate::geom::MAX_COORDINATE;
+    if value.abs() > max {
+        return Err(Error::CoordinateTooLarge {
+            what,
+            index,
+            value,
+            max,
+        });
+    }
+    Ok(value)
+}
+
+/// Checks coordinate `k` of the vector argument `name` as [`check_coordinate`] does: the error
+/// is "center: coordinate 1 is NaN; …" ([`Error::InArgument`] around [`Error::NotFinite`] or
+/// [`Error::CoordinateTooLarge`]).
 pub(crate) fn check_coordinate_of(name: &'static str, k: usize, value: f64) -> Result<f64> {
-    check_finite("coordinate", Some(k), value).map_err(|source| in_argument(name, source))
+    check_coordinate("coordinate", Some(k), value).map_err(|source| in_argument(name, source))
 }
 
 /// An error about the argument `name`, keeping its cause (the message says `name: cause`).

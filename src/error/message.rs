@@ -9,7 +9,7 @@ use std::fmt;
 /// message is the same natively and in the browser. In the wasm build this also keeps Rust's
 /// float-printing code (~20 KB) out of the module.
 #[derive(Clone, Copy, Debug)]
-struct Num(f64);
+pub(super) struct Num(pub(super) f64);
 
 impl fmt::Display for Num {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -19,7 +19,7 @@ impl fmt::Display for Num {
 
 /// A subject ([`super::phrase`]) in English, with its index when it is one of a list:
 /// "coordinate 3", "a Bézier curve", "t".
-struct Subject<'a>(&'a str, Option<usize>);
+pub(super) struct Subject<'a>(pub(super) &'a str, pub(super) Option<usize>);
 
 impl fmt::Display for Subject<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -48,6 +48,18 @@ impl fmt::Display for Error {
                     Num(*value)
                 )
             }
+            Error::CoordinateTooLarge {
+                what,
+                index,
+                value,
+                max,
+            } => write!(
+                f,
+                "{} is {}; a coordinate must be at most {} in magnitude, so that derivatives and lengths stay finite",
+                Subject(what, *index),
+                Num(*value),
+                Num(*max)
+            ),
             Error::TooFewPoints { needed, got, what } => write!(
                 f,
                 "{} needs at least {needed} control point{}, got {got}",
@@ -205,26 +217,6 @@ impl fmt::Display for Error {
                 f,
                 "span {span} is not a non-empty span of the domain (valid: {valid:?})"
             ),
-            Error::RationalJoin {} => f.write_str(
-                "the joining rules are for polynomial Bézier pieces; these have weights",
-            ),
-            Error::JoinDegree {
-                rule,
-                left,
-                right,
-                needed,
-            } => write!(
-                f,
-                "rule {rule:?} fixes {needed} point(s) of the right piece; degrees {left} and {right} are too low (each piece needs degree >= {needed})"
-            ),
-            Error::NoJointTangent {} => f.write_str(
-                "G1 needs a tangent at the joint, but the left piece's last two points coincide",
-            ),
-            Error::BreakpointCount { pieces, got } => write!(
-                f,
-                "{pieces} pieces need {} breakpoints, got {got}",
-                pieces + 1
-            ),
             Error::DegenerateLine { x, y } => write!(
                 f,
                 "the line needs two different points, got ({}, {}) twice",
@@ -239,48 +231,6 @@ impl fmt::Display for Error {
                 f,
                 "{count} coordinates do not split into curves of degree {degree} ((degree + 1)·dim = {per_curve} numbers each)"
             ),
-            Error::RationalHodograph {} => f.write_str(
-                "the hodograph of a rational curve is not a Bézier curve of degree n − 1; sample derivative(t, 1) instead",
-            ),
-            Error::MappedWeight { index, weight } => write!(
-                f,
-                "the map sends control point {index} to weight {}; weights must stay > 0 (the point would cross the line at infinity)",
-                Num(*weight)
-            ),
-            Error::SingularMap {} => f.write_str("the projective map is singular (determinant 0)"),
-            Error::MatrixSize { got } => write!(
-                f,
-                "a projective map is a 3×3 matrix (9 numbers, row by row), got {got}"
-            ),
-            Error::DegenerateTriangle {} => f.write_str(
-                "a circular arc needs a proper triangle P0 P1 P2 (no coincident or collinear points)",
-            ),
-            Error::NotIsosceles { first, second } => write!(
-                f,
-                "a circular arc needs an isosceles triangle: |P0P1| = {} but |P1P2| = {}",
-                Num(*first),
-                Num(*second)
-            ),
-            Error::ArcPointCount { got } => write!(
-                f,
-                "a circular arc needs 3 control points (6 numbers), got {got}"
-            ),
-            Error::InvalidSweep { sweep } => write!(
-                f,
-                "the sweep must be non-zero and at most one full turn (2π), got {}",
-                Num(*sweep)
-            ),
-            Error::ParallelAxes {} => {
-                f.write_str("the two axes of an ellipse must not be parallel or zero")
-            }
-            Error::AxisLengths {
-                center,
-                axis_x,
-                axis_y,
-            } => write!(
-                f,
-                "center, axisX and axisY need the same length, got {center}, {axis_x}, {axis_y}"
-            ),
             Error::NotPositive { name, value } => {
                 write!(f, "{} must be > 0, got {}", phrase(name), Num(*value))
             }
@@ -288,42 +238,9 @@ impl fmt::Display for Error {
                 f,
                 "both pieces need the same dim, got {left} and {right}"
             ),
-            Error::PiecePointCount {
-                degrees,
-                needed,
-                got,
-            } => write!(
-                f,
-                "degrees {degrees:?} need {needed} control points in all (n + 1 per piece), got {got}"
-            ),
             Error::BufferLength { len, count, needed } => write!(
                 f,
                 "output buffer has {len} values, {count} points need {needed}"
-            ),
-            Error::NetCoordinateCount { rows, cols, got } => write!(
-                f,
-                "points must hold rows·cols·3 = {rows}·{cols}·3 = {} coordinates, got {got}",
-                rows.saturating_mul(*cols).saturating_mul(3)
-            ),
-            Error::PatchTooSmall { rows, cols } => write!(
-                f,
-                "a Bézier patch needs at least 2 rows and 2 columns (degree ≥ 1 each way), got {rows} × {cols}"
-            ),
-            Error::NetIndexOutOfRange { i, j, rows, cols } => write!(
-                f,
-                "control point (i, j) = ({i}, {j}) is out of range: the net has {rows} × {cols} points (i in 0..={}, j in 0..={})",
-                rows.saturating_sub(1),
-                cols.saturating_sub(1)
-            ),
-            Error::NoNormal { u, v } => write!(
-                f,
-                "the surface has no normal at (u, v) = ({}, {}): ∂S/∂u × ∂S/∂v = 0 there, even in the limit from inside the domain",
-                Num(*u),
-                Num(*v)
-            ),
-            Error::EmptyTessellation { nu, nv } => write!(
-                f,
-                "tessellate needs at least 1 quad each way, got nu = {nu}, nv = {nv}"
             ),
             Error::TooLarge { what, value, max } => {
                 write!(
@@ -372,31 +289,9 @@ impl fmt::Display for Error {
                 f,
                 "{operation} builds a 3D surface and needs a 3D curve; this curve has dim = {dim}"
             ),
-            Error::ZeroDirection { name } => {
-                write!(f, "{name} must not be the zero vector (it gives no direction)")
-            }
-            Error::NeedsPolynomial { operation } => write!(
-                f,
-                "{operation} works on polynomial patches; this one has weights (a rational patch has a denominator)"
-            ),
             Error::AllWeightsZero { count } => write!(
                 f,
                 "all {count} weights are 0: the denominator w(t) = Σ w_i B_i(t) is 0 for every t, so there is no curve"
-            ),
-            Error::ParamCount { params, points } => write!(
-                f,
-                "params must have one value per point ({points}), got {params}"
-            ),
-            Error::ParamsNotIncreasing {
-                index,
-                value,
-                previous,
-            } => write!(
-                f,
-                "params must increase strictly: t_{index} = {} is not above t_{} = {}",
-                Num(*value),
-                index - 1,
-                Num(*previous)
             ),
             Error::MissingArgument { name, needed_by } => {
                 write!(f, "{} needs {name}, which was not given", phrase(needed_by))
@@ -406,33 +301,6 @@ impl fmt::Display for Error {
                 expected,
                 got,
             } => write!(f, "{name} must have {expected} numbers, got {got}"),
-            Error::NotClosed { last } => write!(
-                f,
-                "periodic interpolation needs the last point (point {last}) equal to the first"
-            ),
-            Error::AlphaOutOfRange { value } => write!(
-                f,
-                "alpha = {} is outside [0, 1] (0 uniform, 0.5 centripetal, 1 chord)",
-                Num(*value)
-            ),
-            Error::ControlCountOutOfRange { count, min, max } => write!(
-                f,
-                "count = {count} control points is outside [degree + 1, number of points] = [{min}, {max}]"
-            ),
-            Error::SchoenbergWhitney {
-                index,
-                param,
-                lo,
-                hi,
-                degree,
-            } => write!(
-                f,
-                "the interpolation system is singular: t_{index} = {} must lie inside the support (u_{index}, u_{}) = ({}, {}) of N_{index},{degree} (Schoenberg–Whitney condition)",
-                Num(*param),
-                index + degree + 1,
-                Num(*lo),
-                Num(*hi)
-            ),
             Error::TooFewDataPoints { needed, got, what } => write!(
                 f,
                 "{} needs at least {needed} data point{}, got {got}",
@@ -444,14 +312,6 @@ impl fmt::Display for Error {
                 "{} is singular: elimination met a zero pivot in row {row}",
                 phrase(what)
             ),
-            Error::SplineKind {
-                operation,
-                needs,
-                got,
-            } => write!(
-                f,
-                "{operation} works on splines built by {needs}; this one was built by {got}"
-            ),
             Error::ConflictingOptions {
                 first,
                 second,
@@ -461,13 +321,11 @@ impl fmt::Display for Error {
                 "{first} cannot be combined with {second}: {}",
                 phrase(reason)
             ),
-            Error::KnotsNotClamped { end, param, degree } => write!(
-                f,
-                "a least-squares fit with exact ends needs clamped knots: the {end} p+1 = {} knots must equal {}",
-                degree + 1,
-                Num(*param)
-            ),
             Error::Expression { error } => write!(f, "{error}"),
+            Error::Conic(e) => e.fmt(f),
+            Error::Join(e) => e.fmt(f),
+            Error::Surface(e) => e.fmt(f),
+            Error::Interp(e) => e.fmt(f),
         }
     }
 }

@@ -2,19 +2,33 @@
 //!
 //! One variant per kind of failure, with the numbers as named fields: [`Error::code`] gives a
 //! stable kebab-case code per variant (`code.rs`), `Display` the English message (`message.rs`),
-//! so a translated message needs only the code and the fields.
+//! so a translated message needs only the code and the fields. The failures of a few families
+//! are enums of their own, nested in one variant each with their codes and messages beside them
+//! ([`Error::Conic`] in `conic.rs`, [`Error::Join`] in `join.rs`, [`Error::Surface`] in
+//! `surface.rs`, [`Error::Interp`] in `interp.rs`); a nested error's code and params are its
+//! variant's, as if it were `Error`'s own.
 
 mod check;
 mod code;
+mod conic;
+mod interp;
+mod join;
 mod message;
 mod phrase;
 #[cfg(all(target_arch = "wasm32", target_os = "unknown"))]
 mod serialize;
+mod surface;
+
+pub use conic::ConicError;
+pub use interp::InterpError;
+pub use join::JoinError;
+pub use surface::SurfaceError;
 
 pub use phrase::{phrase, PHRASES};
 
 pub(crate) use check::{
-    check_coordinate_of, check_finite, check_in_range, check_tolerance, in_argument,
+    check_coordinate, check_coordinate_of, check_finite, check_in_range, check_tolerance,
+    in_argument,
 };
 
 /// Everything that can go wrong when building or querying a curve.
@@ -52,6 +66,20 @@ pub enum Error {
         index: Option<usize>,
         /// The offending value.
         value: f64,
+    },
+    /// A coordinate is finite but larger in magnitude than [`crate::geom::MAX_COORDINATE`]
+    /// (`1e120`), where derivatives and lengths would overflow:
+    /// `BezierCurve::<DVec2>::from_flat(&[0.0, 1e200, 1.0, 1.0], None)`. Checked with finiteness,
+    /// coordinate by coordinate.
+    CoordinateTooLarge {
+        /// What the number is: a subject (`phrase.rs`), "coordinate", "new-point-coordinate".
+        what: &'static str,
+        /// Its index in a list ("coordinate 3"), if it is one of many.
+        index: Option<usize>,
+        /// The offending value.
+        value: f64,
+        /// The largest magnitude allowed, [`crate::geom::MAX_COORDINATE`].
+        max: f64,
     },
     /// Not enough control points for the requested object: `BezierCurve::new(vec![p], None)`.
     TooFewPoints {
@@ -256,34 +284,8 @@ pub enum Error {
         /// The non-empty spans of the domain.
         valid: Vec<usize>,
     },
-    /// Joining rules are for polynomial pieces: `join(&rational, &right, JoinRule::C1, true)`.
-    RationalJoin {},
-    /// Pieces of too low degree for a joining rule: `join(&line, &line, JoinRule::C2, true)`.
-    JoinDegree {
-        /// The rule.
-        #[cfg_attr(
-            all(target_arch = "wasm32", target_os = "unknown"),
-            serde(serialize_with = "crate::error::serialize::debug")
-        )]
-        rule: crate::bezier::JoinRule,
-        /// Degree `n` of the left piece.
-        left: usize,
-        /// Degree `m` of the right piece.
-        right: usize,
-        /// The degree each piece needs (= points of the right piece the rule fixes).
-        needed: usize,
-    },
-    /// G1 needs a tangent at the joint: `join(&left, &right, JoinRule::G1, true)` where the left
-    /// piece's last two points coincide.
-    NoJointTangent {},
-    /// A composite curve with a wrong number of breakpoints:
-    /// `CompositeCurve::new(two_pieces, &[0.0, 1.0])`.
-    BreakpointCount {
-        /// Number of pieces (the breakpoints needed are one more).
-        pieces: usize,
-        /// Number of breakpoints given.
-        got: usize,
-    },
+    /// Joining pieces or building a composite curve failed: [`JoinError`].
+    Join(JoinError),
     /// A line given by one point twice: `curve.intersect_line(p, p, 1e-9)`.
     DegenerateLine {
         /// x of the repeated point.
@@ -301,56 +303,9 @@ pub enum Error {
         /// `(degree + 1)·dim`, the numbers per curve.
         per_curve: usize,
     },
-    /// A rational curve has no hodograph of the same form: `rational_curve.hodograph()`.
-    RationalHodograph {},
-    /// A projective map sends a control point to weight ≤ 0: `projective_map_bezier(&curve, &m)`
-    /// with a map whose horizon crosses the control polygon.
-    MappedWeight {
-        /// The control point's index.
-        index: usize,
-        /// The weight it is sent to.
-        weight: f64,
-    },
-    /// A singular projective map: `projective_map_bezier(&curve, &DMat3::ZERO)`.
-    SingularMap {},
-    /// A projective map from JavaScript that is not 9 numbers: `curve.projectiveMap([1, 0, 0])`.
-    MatrixSize {
-        /// Number of entries given.
-        got: usize,
-    },
-    /// A circular arc from a degenerate triangle:
-    /// `circle_arc_from_triangle(p, p, q)` (coincident or collinear points).
-    DegenerateTriangle {},
-    /// A circular arc from a triangle whose legs differ: `circle_arc_from_triangle(a, b, c)`
-    /// with `|P0P1| ≠ |P1P2|`.
-    NotIsosceles {
-        /// `|P0P1|`.
-        first: f64,
-        /// `|P1P2|`.
-        second: f64,
-    },
-    /// A circular arc from JavaScript with other than 3 points: `circularArcBezier([0, 0, 1, 1])`.
-    ArcPointCount {
-        /// Number of points given.
-        got: usize,
-    },
-    /// An ellipse arc with a zero sweep or more than one turn: `ellipse_arc(c, x, y, 0.0, 0.0)`.
-    InvalidSweep {
-        /// The sweep given (radians).
-        sweep: f64,
-    },
-    /// An ellipse whose axes are parallel or zero: `ellipse_arc(c, x, x, 0.0, 1.0)`.
-    ParallelAxes {},
-    /// Center and axes of different lengths from JavaScript:
-    /// `ellipseArc([0, 0], [1, 0, 0], [0, 1], 0, 1)`.
-    AxisLengths {
-        /// Length of `center`.
-        center: usize,
-        /// Length of `axisX`.
-        axis_x: usize,
-        /// Length of `axisY`.
-        axis_y: usize,
-    },
+    /// A rational or conic construction failed (projective maps, circular and elliptic arcs,
+    /// rational hodographs): [`ConicError`].
+    Conic(ConicError),
     /// A radius that must be > 0 is not: `rational::circular_arc(center, 0.0, 0.0, 1.0)`.
     NotPositive {
         /// What the number is ("radius").
@@ -365,16 +320,6 @@ pub enum Error {
         /// Dimension of the right piece.
         right: usize,
     },
-    /// Piece degrees that do not add up to the control points given:
-    /// `compositeBezier([0, 0, 1, 1], [3], …)` from JavaScript.
-    PiecePointCount {
-        /// The degree of each piece.
-        degrees: Vec<usize>,
-        /// Control points the degrees need, `Σ (n_i + 1)`.
-        needed: usize,
-        /// Control points given.
-        got: usize,
-    },
     /// An output buffer of the wrong length: `curve.sample_into(&[0.5], &mut [0.0; 3])` for a
     /// 2D curve.
     BufferLength {
@@ -385,49 +330,8 @@ pub enum Error {
         /// Numbers they need (`count · dim`).
         needed: usize,
     },
-    /// Surface coordinates that do not fill the net: `BSplineSurface::from_flat(&[0.0; 10], 2, 2, …)`.
-    NetCoordinateCount {
-        /// Rows of the net.
-        rows: usize,
-        /// Columns of the net.
-        cols: usize,
-        /// Number of coordinates given.
-        got: usize,
-    },
-    /// A Bézier patch with a single row or column: `BSplineSurface::bezier(&coords, 1, 3, None)`.
-    PatchTooSmall {
-        /// Rows given.
-        rows: usize,
-        /// Columns given.
-        cols: usize,
-    },
-    /// A control point `(i, j)` outside the net: `surface.set_control_point(5, 0, p)` on a 4 × 4
-    /// net.
-    NetIndexOutOfRange {
-        /// Row index.
-        i: usize,
-        /// Column index.
-        j: usize,
-        /// Rows of the net.
-        rows: usize,
-        /// Columns of the net.
-        cols: usize,
-    },
-    /// No surface normal at `(u, v)`, even in the limit: `surface.normal(u, v)` on a patch whose
-    /// rows all coincide.
-    NoNormal {
-        /// u.
-        u: f64,
-        /// v.
-        v: f64,
-    },
-    /// A tessellation with no quads one way: `surface.tessellate(0, 4)`.
-    EmptyTessellation {
-        /// Quads along u.
-        nu: usize,
-        /// Quads along v.
-        nv: usize,
-    },
+    /// A surface could not be built or queried: [`SurfaceError`].
+    Surface(SurfaceError),
     /// A count (samples, degree, segments) exceeds a documented cap: `BSplineCurve::new(points,
     /// MAX_DEGREE + 1, …)`.
     TooLarge {
@@ -486,17 +390,6 @@ pub enum Error {
         /// The curve's dimension.
         dim: usize,
     },
-    /// A direction that must not be the zero vector is: `surface::revolve(&c, o, DVec3::ZERO, τ)`.
-    ZeroDirection {
-        /// The argument's name ("axisDirection").
-        name: &'static str,
-    },
-    /// An operation defined for polynomial patches only was asked of a rational one:
-    /// `matrix_form()` on a patch with weights.
-    NeedsPolynomial {
-        /// The operation ("matrixForm").
-        operation: &'static str,
-    },
     /// Every weight is 0, so the denominator `Σ w_i B_i` vanishes for all parameters (only
     /// reachable where weights of any sign are allowed):
     /// `rational_poles(&[0.0, 0.0, 1.0, 1.0, 2.0, 0.0], 2, &[0.0, 0.0, 0.0], 8)`.
@@ -504,24 +397,8 @@ pub enum Error {
         /// Number of weights.
         count: usize,
     },
-    /// Interpolation parameters and data points of different counts:
-    /// `interp::lagrange(&three_points, &[0.0, 1.0])`.
-    ParamCount {
-        /// Number of parameters given.
-        params: usize,
-        /// Number of data points.
-        points: usize,
-    },
-    /// Interpolation parameters that do not strictly increase (`t_i ≤ t_{i−1}`):
-    /// `interp::lagrange(&points, &[0.0, 1.0, 1.0])`.
-    ParamsNotIncreasing {
-        /// Index `i` of the first parameter not above its predecessor.
-        index: usize,
-        /// `t_i`.
-        value: f64,
-        /// `t_{i−1}`.
-        previous: f64,
-    },
+    /// Interpolation or a least-squares fit refused its parameters: [`InterpError`].
+    Interp(InterpError),
     /// An argument the chosen option needs was not given: a clamped cubic spline without its
     /// end tangents.
     MissingArgument {
@@ -539,42 +416,6 @@ pub enum Error {
         /// The length given.
         got: usize,
     },
-    /// Periodic interpolation needs the last data point equal to the first (as scipy's
-    /// `CubicSpline(bc_type="periodic")`).
-    NotClosed {
-        /// Index of the last point.
-        last: usize,
-    },
-    /// The exponent α of a parametrisation `|Δp|^α` or of Catmull–Rom outside `[0, 1]`.
-    AlphaOutOfRange {
-        /// The value given.
-        value: f64,
-    },
-    /// A least-squares fit asked for a number of control points outside
-    /// `[degree + 1, number of data points]`.
-    ControlCountOutOfRange {
-        /// The count asked for.
-        count: usize,
-        /// The smallest count allowed (`p + 1`).
-        min: usize,
-        /// The largest count allowed (the number of data points).
-        max: usize,
-    },
-    /// Explicit knots that break the Schoenberg–Whitney condition, so the interpolation system
-    /// is singular: parameter `t_index` must lie where basis function `N_{index,p}` is non-zero,
-    /// `u_index < t_index < u_{index+p+1}` (or equal at a clamped end).
-    SchoenbergWhitney {
-        /// Index of the parameter (and of the basis function).
-        index: usize,
-        /// The parameter `t_index`.
-        param: f64,
-        /// `u_index`.
-        lo: f64,
-        /// `u_{index+p+1}`.
-        hi: f64,
-        /// The degree `p`.
-        degree: usize,
-    },
     /// Too few data points for an interpolation or approximation: `interp::lagrange(&[p], &[0.0])`.
     TooFewDataPoints {
         /// Minimum number of data points needed.
@@ -591,17 +432,6 @@ pub enum Error {
         /// The row where elimination stopped.
         row: usize,
     },
-    /// An operation that only splines of one construction support: `setTangent` on a spline
-    /// whose tangents are computed (`cubicSpline`, `catmullRom`, …), or `system()` on one that
-    /// solved no system.
-    SplineKind {
-        /// The operation ("setTangent").
-        operation: &'static str,
-        /// The construction that supports it ("hermiteSpline").
-        needs: &'static str,
-        /// The construction of this spline ("cubicSpline").
-        got: &'static str,
-    },
     /// Two options that exclude each other were both given: `closed` with `startDerivative`
     /// (a closed curve has no ends) in `interp::interpolate_bspline`.
     ConflictingOptions {
@@ -611,17 +441,6 @@ pub enum Error {
         second: &'static str,
         /// Why ("a closed curve has no ends").
         reason: &'static str,
-    },
-    /// A least-squares fit whose ends are interpolated needs clamped knots: the first `p + 1`
-    /// knots equal to `t_0` and the last `p + 1` equal to `t_m`
-    /// (`interp::approximate_bspline` with explicit knots `0 0 1 2 …` for degree 2).
-    KnotsNotClamped {
-        /// `"first"` or `"last"`.
-        end: &'static str,
-        /// The end parameter the knots must equal (`t_0` or `t_m`).
-        param: f64,
-        /// The degree `p`.
-        degree: usize,
     },
     /// A typed expression of a parametric curve (`x`, `y`, `z`, `from`, `to`, a parameter) is
     /// not usable: `sl.parametricCurve([{ x: "sin t", … }])`. Its code is the problem's own

@@ -1,7 +1,7 @@
 //! Input checks shared by every family: weights, output lengths, flat coordinates, `dim`.
 
 use super::{Point, MAX_RESULT_BYTES, MAX_SAMPLES, MAX_SAMPLE_WORK};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate, check_finite, Error, Result};
 
 /// Validates a weight list: count, finite, > 0.
 pub fn check_weights(w: &[f64], expected: usize) -> Result<()> {
@@ -110,7 +110,8 @@ pub fn points_from_flat<P: Point>(coords: &[f64]) -> Result<Vec<P>> {
 }
 
 /// The checks of [`points_from_flat`] for points of dimension `dim` (≥ 1): the coordinate
-/// count a multiple of `dim`, every coordinate finite ("coordinate 5 is NaN").
+/// count a multiple of `dim`, every coordinate finite ("coordinate 5 is NaN") and at most
+/// [`super::MAX_COORDINATE`] in magnitude.
 pub fn check_flat(coords: &[f64], dim: usize) -> Result<()> {
     if !coords.len().is_multiple_of(dim) {
         return Err(Error::CoordinateCount {
@@ -118,7 +119,17 @@ pub fn check_flat(coords: &[f64], dim: usize) -> Result<()> {
             dim,
         });
     }
-    check_all_finite(coords, "coordinate")
+    check_all_coordinates(coords, "coordinate")
+}
+
+/// Checks every value of `values` as a coordinate: finite, then at most
+/// [`super::MAX_COORDINATE`] in magnitude ([`Error::NotFinite`], [`Error::CoordinateTooLarge`]
+/// naming `what` and the index of the first that is not).
+pub fn check_all_coordinates(values: &[f64], what: &'static str) -> Result<()> {
+    for (i, &v) in values.iter().enumerate() {
+        check_coordinate(what, Some(i), v)?;
+    }
+    Ok(())
 }
 
 /// Checks every value of `values` is finite; the error names `what` and the index.
@@ -145,7 +156,7 @@ pub(crate) fn check_point_edit<P: Point>(i: usize, count: usize, p: P) -> Result
         return Err(Error::IndexOutOfRange { index: i, count });
     }
     for k in 0..P::DIM {
-        check_finite("new-point-coordinate", Some(k), p.coord(k))?;
+        check_coordinate("new-point-coordinate", Some(k), p.coord(k))?;
     }
     Ok(())
 }

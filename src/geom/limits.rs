@@ -5,6 +5,22 @@
 /// above ~5).
 pub const MAX_DEGREE: usize = 64;
 
+/// Largest magnitude of a coordinate a curve or surface accepts (control points, data points, a
+/// center or an axis, a tangent): `|x| ≤ 1e120`, else [`crate::Error::CoordinateTooLarge`].
+///
+/// Why a bound, and why this one: a derivative multiplies differences of control points,
+/// `P^(k) = p!/(p−k)! Σ Δ^k P_i B_{i,p−k}` for a Bézier curve (de Boor's form divides by knot
+/// spans `h` instead), so its size is up to `p!/(p−k)! · 2^k / h^k` times the largest coordinate,
+/// and an arc length or a curvature squares a derivative (`|P′| = √(x′² + y′²)`). Squares
+/// overflow above `√f64::MAX ≈ 1.34e154`, and a difference of two overflowed numbers is NaN (as
+/// `derivative` and `arcLength` gave near `f64::MAX`). With coordinates up to `1e120`, a
+/// derivative may grow by `1.3e34` before its square overflows: for degree 20, a first
+/// derivative on knot spans down to `4e−33` (`2p/h`), a second one on spans down to `4e−16`
+/// (`4p(p−1)/h²`), a third on spans down to `4e−10`; unsquared, every derivative of every order of
+/// a degree-20 Bézier curve (`20! · 2^20 ≈ 2.5e24` times the coordinates) stays below `3e144`. No
+/// drawing needs coordinates near the bound: it only turns overflow into a coded error.
+pub const MAX_COORDINATE: f64 = 1e120;
+
 /// Highest derivative order accepted for rational curves (whose derivatives never vanish);
 /// polynomial curves accept any order (zero above the degree).
 pub const MAX_DERIVATIVE_ORDER: usize = 32;

@@ -12,11 +12,12 @@ pub mod point;
 
 pub use bounding_box::BoundingBox;
 pub use check::{
-    check_all_finite, check_dim, check_flat, check_out_len, check_result_bytes, check_table_count,
-    check_weights, check_work, points_from_flat, result_len,
+    check_all_coordinates, check_all_finite, check_dim, check_flat, check_out_len,
+    check_result_bytes, check_table_count, check_weights, check_work, points_from_flat, result_len,
 };
 pub use limits::{
-    MAX_DEGREE, MAX_DERIVATIVE_ORDER, MAX_RESULT_BYTES, MAX_SAMPLES, MAX_SAMPLE_WORK, STACK_DEGREE,
+    MAX_COORDINATE, MAX_DEGREE, MAX_DERIVATIVE_ORDER, MAX_RESULT_BYTES, MAX_SAMPLES,
+    MAX_SAMPLE_WORK, STACK_DEGREE,
 };
 pub use params::Params;
 pub use point::{curvature, rational_derivative, Cartesian, Point};

@@ -10,7 +10,8 @@ use super::params::{check_point_count, ParamChoice};
 use super::tangents::{bessel_tangents, cardinal_tangents, catmull_rom_tangents};
 use super::tridiagonal::Tridiagonal;
 use crate::bspline::Parameterization;
-use crate::error::{check_coordinate_of, check_finite, Error, Result};
+use crate::error::InterpError;
+use crate::error::{check_coordinate, check_coordinate_of, check_finite, Error, Result};
 use crate::geom::check::check_point_edit;
 use crate::geom::{Cartesian, Point};
 use glam::DVec3;
@@ -127,8 +128,10 @@ struct Data<C> {
     choice: ParamChoice,
 }
 
-/// The checks every constructor starts with, in order: at least `min` points, then the
-/// parameters (given ones checked, or a spacing computed).
+/// The checks every constructor starts with, in order: at least `min` points, every coordinate
+/// finite and at most [`crate::geom::MAX_COORDINATE`] in magnitude ([`Error::NotFinite`],
+/// [`Error::CoordinateTooLarge`]), then the parameters (given ones checked, or a spacing
+/// computed).
 #[inline(never)]
 fn data<C: Cartesian>(
     points: Vec<C>,
@@ -137,6 +140,7 @@ fn data<C: Cartesian>(
     what: &'static str,
 ) -> Result<Data<C>> {
     check_point_count(points.len(), min, what)?;
+    super::global::check_points(&points)?;
     let params = choice.resolve(&points)?;
     Ok(Data {
         points,
@@ -172,7 +176,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// # Errors
     /// [`Error::TooFewDataPoints`] below `end.min_points()` (2; 3 for periodic), the parameter
     /// errors of [`ParamChoice::resolve`], [`Error::NotFinite`] for a clamped tangent,
-    /// [`Error::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
+    /// [`InterpError::NotClosed`] for periodic with `p_n ≠ p_0`, [`Error::SingularSystem`].
     ///
     /// ```
     /// use splinelab::interp::{CubicSpline, EndCondition};
@@ -197,7 +201,7 @@ impl<C: Cartesian> CubicSpline<C> {
         let n = data.points.len() - 1;
         let closed = matches!(end, EndCondition::Periodic);
         if closed && data.points[n] != data.points[0] {
-            return Err(Error::NotClosed { last: n });
+            return Err(Error::Interp(InterpError::NotClosed { last: n }));
         }
         Self::build(data, TangentRule::Spline(end), closed, Vec::new())
     }
@@ -223,7 +227,7 @@ impl<C: Cartesian> CubicSpline<C> {
         }
         for (i, m) in tangents.iter().enumerate() {
             for k in 0..C::DIM {
-                check_finite("tangents", Some(i * C::DIM + k), m.coord(k))?;
+                check_coordinate("tangents", Some(i * C::DIM + k), m.coord(k))?;
             }
         }
         Self::build(data, TangentRule::Given, false, tangents)
@@ -246,7 +250,7 @@ impl<C: Cartesian> CubicSpline<C> {
     /// point already repeated at the end, more than 3 points, is taken as that cycle).
     ///
     /// # Errors
-    /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`Error::AlphaOutOfRange`],
+    /// [`Error::TooFewDataPoints`] below 2 (3 when closed), [`InterpError::AlphaOutOfRange`],
     /// [`Error::CoincidentPoints`] for α > 0 and a repeated consecutive point (a closed curve
     /// also compares the last with the first).
     pub fn catmull_rom(mut points: Vec<C>, alpha: f64, closed: bool) -> Result<Self> {
@@ -352,15 +356,15 @@ impl<C: Cartesian> CubicSpline<C> {
     /// Sets tangent i (`C'(t_i)`) of a spline with given tangents (`hermiteSpline`), in place.
     ///
     /// # Errors
-    /// [`Error::SplineKind`] for a spline whose tangents are computed, [`Error::IndexOutOfRange`],
-    /// [`Error::NotFinite`].
+    /// [`InterpError::SplineKind`] for a spline whose tangents are computed,
+    /// [`Error::IndexOutOfRange`], [`Error::NotFinite`].
     pub fn set_tangent(&mut self, i: usize, m: C) -> Result<()> {
         if self.rule != TangentRule::Given {
-            return Err(Error::SplineKind {
+            return Err(Error::Interp(InterpError::SplineKind {
                 operation: "setTangent",
                 needs: "hermiteSpline",
                 got: self.rule.constructor(),
-            });
+            }));
         }
         check_point_edit(i, self.tangents.len(), m)?;
         self.tangents[i] = m;

@@ -46,7 +46,8 @@ impl<C: Cartesian> LagrangeCurve<C> {
     ///
     /// # Errors
     /// [`Error::TooFewDataPoints`] below 2 points, [`Error::TooLarge`] above
-    /// [`MAX_LAGRANGE_POINTS`], then as [`check_params`](super::check_params).
+    /// [`MAX_LAGRANGE_POINTS`], [`Error::NotFinite`] or [`Error::CoordinateTooLarge`] for a
+    /// coordinate, then as [`check_params`](super::check_params).
     pub fn new(points: Vec<C>, params: &[f64]) -> Result<Self> {
         Self::with_params(points, ParamChoice::Given(params.to_vec()))
     }
@@ -66,6 +67,7 @@ impl<C: Cartesian> LagrangeCurve<C> {
                 max: MAX_LAGRANGE_POINTS,
             });
         }
+        super::global::check_points(&points)?;
         let params = choice.resolve(&points)?;
         let weights = barycentric_weights(&params);
         Ok(LagrangeCurve {

@@ -14,6 +14,7 @@ use super::banded::SymmetricBanded;
 use super::global::knots::{check_schoenberg_whitney_subsequence, least_squares_knots};
 use super::global::{check_interpolation_degree, check_params, check_point_cap, check_points};
 use crate::bspline::{basis_functions, BSplineCurve, BasisScratch, KnotVector};
+use crate::error::InterpError;
 use crate::error::{Error, Result};
 use crate::geom::Cartesian;
 
@@ -22,13 +23,14 @@ use crate::geom::Cartesian;
 /// With `count` equal to the number of points it is the interpolant with averaging knots.
 ///
 /// # Errors
-/// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`] points,
-/// [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors ([`Error::ParamCount`],
-/// [`Error::NotFinite`], [`Error::ParamsNotIncreasing`]), [`Error::ControlCountOutOfRange`]
-/// (`count` outside `[p + 1, m + 1]`), the errors of [`KnotVector::new`] for `count` control
-/// points, [`Error::KnotsNotClamped`], [`Error::SchoenbergWhitney`] (no parameter for some
-/// basis function), and [`Error::SingularSystem`] from Cholesky.
+/// In this order: [`Error::NotFinite`], [`Error::CoordinateTooLarge`] (coordinates),
+/// [`Error::DegreeOutOfRange`], [`Error::TooLarge`] above [`super::MAX_INTERPOLATION_POINTS`]
+/// points, [`Error::TooFewDataPoints`] (`max(2, p + 1)`), the parameter errors
+/// ([`InterpError::ParamCount`], [`Error::NotFinite`], [`InterpError::ParamsNotIncreasing`]),
+/// [`InterpError::ControlCountOutOfRange`] (`count` outside `[p + 1, m + 1]`), the errors of
+/// [`KnotVector::new`] for `count` control points, [`InterpError::KnotsNotClamped`],
+/// [`InterpError::SchoenbergWhitney`] (no parameter for some basis function), and
+/// [`Error::SingularSystem`] from Cholesky.
 pub fn approximate_bspline<C: Cartesian>(
     points: &[C],
     degree: usize,
@@ -67,11 +69,11 @@ pub(crate) fn approximate_flat(
     let p = degree;
     check_params(params, points)?;
     if count < p + 1 || count > points {
-        return Err(Error::ControlCountOutOfRange {
+        return Err(Error::Interp(InterpError::ControlCountOutOfRange {
             count,
             min: p + 1,
             max: points,
-        });
+        }));
     }
     let m = points - 1;
     let n = count - 1;
@@ -163,18 +165,18 @@ pub(crate) fn check_fit_shape(count: usize, degree: usize) -> Result<()> {
 /// Checks the first `p + 1` knots equal `a = t_0` and the last `p + 1` equal `b = t_m`.
 fn check_clamped(knots: &[f64], p: usize, a: f64, b: f64) -> Result<()> {
     if knots[..=p].iter().any(|&u| u != a) {
-        return Err(Error::KnotsNotClamped {
+        return Err(Error::Interp(InterpError::KnotsNotClamped {
             end: "first",
             param: a,
             degree: p,
-        });
+        }));
     }
     if knots[knots.len() - p - 1..].iter().any(|&u| u != b) {
-        return Err(Error::KnotsNotClamped {
+        return Err(Error::Interp(InterpError::KnotsNotClamped {
             end: "last",
             param: b,
             degree: p,
-        });
+        }));
     }
     Ok(())
 }

@@ -3,6 +3,7 @@
 //! [`crate::bspline::parameterize`]).
 
 use crate::bspline::{parameterize, Parameterization};
+use crate::error::InterpError;
 use crate::error::{check_finite, Error, Result};
 use crate::geom::Point;
 
@@ -54,25 +55,25 @@ impl ParamChoice {
 }
 
 /// Checks interpolation parameters for `points` data points, in the documented order: count
-/// ([`Error::ParamCount`]), every value finite ([`Error::NotFinite`] naming `param i`), then
-/// strictly increasing ([`Error::ParamsNotIncreasing`] naming the first `t_i ≤ t_{i−1}`).
+/// ([`InterpError::ParamCount`]), every value finite ([`Error::NotFinite`] naming `param i`), then
+/// strictly increasing ([`InterpError::ParamsNotIncreasing`] naming the first `t_i ≤ t_{i−1}`).
 pub fn check_params(params: &[f64], points: usize) -> Result<()> {
     if params.len() != points {
-        return Err(Error::ParamCount {
+        return Err(Error::Interp(InterpError::ParamCount {
             params: params.len(),
             points,
-        });
+        }));
     }
     for (i, &t) in params.iter().enumerate() {
         check_finite("parameter", Some(i), t)?;
     }
     for (i, w) in params.windows(2).enumerate() {
         if w[1] <= w[0] {
-            return Err(Error::ParamsNotIncreasing {
+            return Err(Error::Interp(InterpError::ParamsNotIncreasing {
                 index: i + 1,
                 value: w[1],
                 previous: w[0],
-            });
+            }));
         }
     }
     Ok(())

@@ -2,6 +2,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
+use crate::error::ConicError;
 use crate::error::{check_coordinate_of, check_finite, Error, Result};
 use crate::geom::{sin_cos, Cartesian};
 use glam::DVec2;
@@ -58,8 +59,8 @@ pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<ConicKind> {
 /// arc's sweep `Δ`). The arc is tangent to `P0P1` at `P0` and to `P1P2` at `P2`.
 ///
 /// # Errors
-/// [`Error::NotIsosceles`] unless the legs are equal (to `1e-9` relative) and the triangle is not
-/// degenerate (collinear points or a zero leg).
+/// [`ConicError::NotIsosceles`] unless the legs are equal (to `1e-9` relative) and the triangle is
+/// not degenerate (collinear points or a zero leg).
 pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<BezierCurve<DVec2>> {
     for (name, v) in [
         ("x0", p0.x),
@@ -74,13 +75,13 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
     let (a, b) = (p0 - p1, p2 - p1);
     let (la, lb) = (a.length(), b.length());
     if la == 0.0 || lb == 0.0 || a.perp_dot(b).abs() <= 1e-12 * la * lb {
-        return Err(Error::DegenerateTriangle {});
+        return Err(Error::Conic(ConicError::DegenerateTriangle {}));
     }
     if (la - lb).abs() > 1e-9 * la.max(lb) {
-        return Err(Error::NotIsosceles {
+        return Err(Error::Conic(ConicError::NotIsosceles {
             first: la,
             second: lb,
-        });
+        }));
     }
     // The middle weight is sin(θ/2) for the angle θ at P1 (= cos of half the arc's sweep π − θ):
     // half the chord between the unit vectors along the legs, |a/|a| − b/|b|| = 2 sin(θ/2),
@@ -98,8 +99,8 @@ pub fn circle_arc_from_triangle(p0: DVec2, p1: DVec2, p2: DVec2) -> Result<Bezie
 /// `0,0,0,¼,¼,½,½,¾,¾,1,1,1`.
 ///
 /// # Errors
-/// [`Error::NotFinite`]; [`Error::InvalidSweep`] for a zero sweep, a sweep beyond a full turn or
-/// parallel (degenerate) axes.
+/// [`Error::NotFinite`]; [`ConicError::InvalidSweep`] for a zero sweep, a sweep beyond a full turn
+/// or parallel (degenerate) axes.
 pub fn ellipse_arc<C: Cartesian>(
     center: C,
     axis_x: C,
@@ -116,10 +117,10 @@ pub fn ellipse_arc<C: Cartesian>(
     }
     let full = std::f64::consts::TAU;
     if sweep == 0.0 || sweep.abs() > full * (1.0 + 1e-12) {
-        return Err(Error::InvalidSweep { sweep });
+        return Err(Error::Conic(ConicError::InvalidSweep { sweep }));
     }
     if C::cross_norm(axis_x, axis_y).abs() <= 1e-12 * axis_x.norm() * axis_y.norm() {
-        return Err(Error::ParallelAxes {});
+        return Err(Error::Conic(ConicError::ParallelAxes {}));
     }
     let pieces = ((sweep.abs() / MAX_ARC_PIECE) - 1e-9).ceil().max(1.0) as usize;
     let delta = sweep / pieces as f64;

@@ -4,7 +4,7 @@
 //! builds a curve object.
 
 use crate::bezier::{de_casteljau_point, split_points, MAX_DEGREE};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_coordinate, check_finite, Error, Result};
 use crate::geom::{Cartesian, Params, MAX_SAMPLES};
 
 /// Deepest halving of `[0, 1]` when isolating the zeros of `w(t)`: intervals end `2^−52` wide,
@@ -68,7 +68,7 @@ pub fn rational_poles<C: Cartesian>(
     }
     for (i, p) in points.iter().enumerate() {
         for k in 0..C::DIM {
-            check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+            check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
         }
     }
     if weights.len() != points.len() {

@@ -7,6 +7,7 @@
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
+use crate::error::ConicError;
 use crate::error::{Error, Result};
 use crate::prelude::*;
 use glam::{DMat3, DVec2, DVec3};
@@ -20,10 +21,10 @@ fn map_points(points: &[DVec3], m: &DMat3) -> Result<Vec<DVec2>> {
         .enumerate()
         .find(|(_, h)| h.z.is_nan() || h.z <= 0.0 || !h.is_finite())
     {
-        return Err(Error::MappedWeight {
+        return Err(Error::Conic(ConicError::MappedWeight {
             index: i,
             weight: h.z,
-        });
+        }));
     }
     Ok(mapped.iter().map(|h| h.truncate() / h.z).collect())
 }
@@ -35,7 +36,8 @@ fn mapped_weights(points: &[DVec3], m: &DMat3) -> Vec<f64> {
 /// The image of a 2D (rational or polynomial) Bézier curve under the projective map `m`.
 ///
 /// # Errors
-/// [`Error::MappedWeight`] when a mapped weight is not > 0, [`Error::NotFinite`] for a bad matrix.
+/// [`ConicError::MappedWeight`] when a mapped weight is not > 0, [`Error::NotFinite`] for a bad
+/// matrix.
 pub fn projective_map_bezier(curve: &BezierCurve<DVec2>, m: &DMat3) -> Result<BezierCurve<DVec2>> {
     check_matrix(m)?;
     let h = curve.homogeneous_points();
@@ -68,7 +70,7 @@ pub fn projective_map_bspline(
 fn check_matrix(m: &DMat3) -> Result<()> {
     crate::geom::check_all_finite(&m.to_cols_array(), "matrix-entry")?;
     if m.determinant() == 0.0 {
-        return Err(Error::SingularMap {});
+        return Err(Error::Conic(ConicError::SingularMap {}));
     }
     Ok(())
 }

@@ -2,6 +2,7 @@
 
 use super::BSplineSurface;
 use crate::bspline::{basis_functions, BasisScratch};
+use crate::error::SurfaceError;
 use crate::error::{Error, Result};
 use crate::geom::check_work;
 use glam::{DVec3, DVec4};
@@ -38,12 +39,13 @@ impl BSplineSurface {
     /// it: a sphere whose normal points outwards has `H = −1/r`).
     ///
     /// # Errors
-    /// A bad `u` or `v`; [`Error::NoNormal`] naming `(u, v)` where `S_u × S_v` vanishes (a
+    /// A bad `u` or `v`; [`SurfaceError::NoNormal`] naming `(u, v)` where `S_u × S_v` vanishes (a
     /// pole, a collapsed edge, a fold): the curvature is not defined by this parametrisation.
     pub fn curvature(&self, u: f64, v: f64) -> Result<[f64; 2]> {
         let (u, v) = self.check_uv(u, v)?;
         let s = self.derivatives(u, v, 2);
-        curvature_from(s[1][0], s[0][1], s[2][0], s[1][1], s[0][2]).ok_or(Error::NoNormal { u, v })
+        curvature_from(s[1][0], s[0][1], s[2][0], s[1][1], s[0][2])
+            .ok_or(Error::Surface(SurfaceError::NoNormal { u, v }))
     }
 
     /// [`BSplineSurface::curvature`] at every `(u, v)` pair of the flat `uvs`, written as

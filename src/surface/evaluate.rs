@@ -2,6 +2,7 @@
 
 use super::{basis, BSplineSurface};
 use crate::bspline::{basis_derivatives, BasisScratch};
+use crate::error::SurfaceError;
 use crate::error::{Error, Result};
 use crate::geom::MAX_DERIVATIVE_ORDER;
 use glam::{DVec3, DVec4};
@@ -144,8 +145,8 @@ impl BSplineSurface {
     /// `S_u = 0`.
     ///
     /// # Errors
-    /// A bad `u` or `v`, and [`Error::NoNormal`] where even the limit gives no direction: both
-    /// partial derivatives vanish, or they are parallel (a fold).
+    /// A bad `u` or `v`, and [`SurfaceError::NoNormal`] where even the limit gives no direction:
+    /// both partial derivatives vanish, or they are parallel (a fold).
     pub fn normal(&self, u: f64, v: f64) -> Result<DVec3> {
         let (u, v) = self.check_uv(u, v)?;
         let s = self.derivatives(u, v, 2);
@@ -162,7 +163,7 @@ impl BSplineSurface {
         };
         let cross = a.cross(b);
         if cross.length() <= 1e-12 * a.length() * b.length() {
-            return Err(Error::NoNormal { u, v });
+            return Err(Error::Surface(SurfaceError::NoNormal { u, v }));
         }
         Ok(cross / cross.length())
     }

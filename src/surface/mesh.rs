@@ -2,6 +2,7 @@
 
 use super::{checked_count, BSplineSurface, MAX_MESH_VERTICES};
 use crate::bspline::basis_derivatives;
+use crate::error::SurfaceError;
 use crate::error::{Error, Result};
 use crate::geom::{check_work, Params};
 use glam::{DVec3, DVec4};
@@ -16,17 +17,17 @@ pub const MAX_LIMIT_NORMALS: usize = 1 << 14;
 impl BSplineSurface {
     /// A triangle mesh of the whole surface: `(nu + 1)(nv + 1)` vertices at equally spaced
     /// parameters (`nu` × `nv` quads, like three.js' `ParametricGeometry`), vertex `a·(nv + 1) + b`
-    /// at `(u_a, v_b)` (kept in [`Mesh::uvs`]), unit normals from [`BSplineSurface::normal`] (where even its limit
-    /// gives none, or past [`MAX_LIMIT_NORMALS`] such vertices, the mean of the adjacent
-    /// triangles' normals), and two triangles per quad,
-    /// counter-clockwise seen from the side the normals point to.
+    /// at `(u_a, v_b)` (kept in [`Mesh::uvs`]), unit normals from [`BSplineSurface::normal`] (where
+    /// even its limit gives none, or past [`MAX_LIMIT_NORMALS`] such vertices, the mean of the
+    /// adjacent triangles' normals), and two triangles per quad, counter-clockwise seen from the
+    /// side the normals point to.
     ///
     /// # Errors
-    /// [`Error::EmptyTessellation`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
+    /// [`SurfaceError::EmptyTessellation`] for `nu` or `nv` of 0, [`Error::TooLarge`] above
     /// [`MAX_MESH_VERTICES`] vertices or the work budget [`crate::geom::MAX_SAMPLE_WORK`].
     pub fn tessellate(&self, nu: usize, nv: usize) -> Result<Mesh> {
         if nu == 0 || nv == 0 {
-            return Err(Error::EmptyTessellation { nu, nv });
+            return Err(Error::Surface(SurfaceError::EmptyTessellation { nu, nv }));
         }
         let (cu, cv) = (nu.saturating_add(1), nv.saturating_add(1));
         let vertices = checked_count("tessellation-vertices", cu, cv, MAX_MESH_VERTICES)?;

@@ -3,8 +3,9 @@
 
 use super::{checked_count, in_argument, BSplineSurface};
 use crate::bspline::{check_degree, KnotVector};
-use crate::error::{check_finite, Error, Result};
-use crate::geom::{check_all_finite, check_weights, MAX_SAMPLES};
+use crate::error::SurfaceError;
+use crate::error::{check_coordinate, check_finite, Error, Result};
+use crate::geom::{check_all_coordinates, check_weights, MAX_SAMPLES};
 use glam::{DVec3, DVec4};
 
 impl BSplineSurface {
@@ -29,13 +30,13 @@ impl BSplineSurface {
     ) -> Result<Self> {
         let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
         if coords.len() != 3 * count {
-            return Err(Error::NetCoordinateCount {
+            return Err(Error::Surface(SurfaceError::NetCoordinateCount {
                 rows,
                 cols,
                 got: coords.len(),
-            });
+            }));
         }
-        check_all_finite(coords, "coordinate")?;
+        check_all_coordinates(coords, "coordinate")?;
         check_degree(degree_u, rows).map_err(|e| in_argument("degree-u-rows", e))?;
         check_degree(degree_v, cols).map_err(|e| in_argument("degree-v-columns", e))?;
         let knots_u =
@@ -78,8 +79,8 @@ impl BSplineSurface {
         if rows.checked_mul(cols).and_then(|c| c.checked_mul(3)) == Some(coords.len())
             && (rows < 2 || cols < 2)
         {
-            check_all_finite(coords, "coordinate")?;
-            return Err(Error::PatchTooSmall { rows, cols });
+            check_all_coordinates(coords, "coordinate")?;
+            return Err(Error::Surface(SurfaceError::PatchTooSmall { rows, cols }));
         }
         // Bounded by the coordinate count, which from_flat checks first.
         let clamped = |count: usize| -> Vec<f64> {
@@ -148,12 +149,12 @@ impl BSplineSurface {
     /// The flat index of control point `(i, j)`, checked.
     fn index(&self, i: usize, j: usize) -> Result<usize> {
         if i >= self.rows || j >= self.cols {
-            return Err(Error::NetIndexOutOfRange {
+            return Err(Error::Surface(SurfaceError::NetIndexOutOfRange {
                 i,
                 j,
                 rows: self.rows,
                 cols: self.cols,
-            });
+            }));
         }
         Ok(i * self.cols + j)
     }
@@ -165,7 +166,7 @@ impl BSplineSurface {
     pub fn set_control_point(&mut self, i: usize, j: usize, p: DVec3) -> Result<()> {
         let k = self.index(i, j)?;
         for (c, value) in p.to_array().into_iter().enumerate() {
-            check_finite("new-point-coordinate", Some(c), value)?;
+            check_coordinate("new-point-coordinate", Some(c), value)?;
         }
         if let Some(h) = self.net.get_mut(k) {
             *h = (p * h.w).extend(h.w);

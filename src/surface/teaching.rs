@@ -3,6 +3,7 @@
 
 use super::BSplineSurface;
 use crate::bezier::de_casteljau_triangle;
+use crate::error::SurfaceError;
 use crate::error::{Error, Result};
 use crate::geom::binomial;
 use glam::{DVec3, DVec4};
@@ -99,12 +100,12 @@ impl BSplineSurface {
     /// and `A = M_m P M_nᵀ`, so that `S(u, v) = [u^m … u 1] A [v^n … v 1]ᵀ`.
     ///
     /// # Errors
-    /// [`Error::NeedsPolynomial`] for a rational patch (its matrix form has a denominator).
+    /// [`SurfaceError::NeedsPolynomial`] for a rational patch (its matrix form has a denominator).
     pub fn matrix_form(&self) -> Result<PatchMatrixForm> {
         if self.rational {
-            return Err(Error::NeedsPolynomial {
+            return Err(Error::Surface(SurfaceError::NeedsPolynomial {
                 operation: "matrixForm",
-            });
+            }));
         }
         let (rows, cols) = (self.rows, self.cols);
         let (mu, mv) = (bezier_basis_matrix(rows - 1), bezier_basis_matrix(cols - 1));

@@ -2,7 +2,7 @@
 //! `…Report` forms that also return the fit's decisions (corners, breaks, measured errors).
 
 use super::bezier::JsCompositeBezier;
-use super::{js_object, numbers, option_entries, set_key, type_name, whole, JsBSplineCurve};
+use super::{bool_option, js_object, numbers, option_entries, set_key, whole, JsBSplineCurve};
 use crate::error::Error;
 use crate::fit::{self, FitOptions, FitReport, Smoothness};
 use crate::geom::{check_dim, points_from_flat};
@@ -19,22 +19,6 @@ const CURVE_OPTIONS: (&[&str], &str) = (
 
 /// The option names of `fitBSpline`.
 const BSPLINE_OPTIONS: (&[&str], &str) = (&["closed"], "\"closed\"");
-
-/// A boolean option: `undefined`/`null` give `None`, a non-boolean is an
-/// [`Error::ArgumentType`] naming it.
-fn bool_option(name: &'static str, value: &JsValue) -> Result<Option<bool>, ApiError> {
-    if value.is_undefined() || value.is_null() {
-        return Ok(None);
-    }
-    value.as_bool().map(Some).ok_or_else(|| {
-        Error::ArgumentType {
-            name,
-            expected: "boolean",
-            got: type_name(value),
-        }
-        .into()
-    })
-}
 
 /// `{ closed?, continuity?: "G1" | "C1", corners? = true }`.
 fn curve_options(options: &JsValue) -> Result<FitOptions, ApiError> {

@@ -168,10 +168,28 @@ pub(crate) fn optional_numbers(
     }
 }
 
-/// `typeof value`, with `null` told apart (for messages).
+/// A boolean option: `undefined`/`null` give `None`, a non-boolean is an
+/// [`Error::ArgumentType`] naming it.
+pub(crate) fn bool_option(name: &'static str, value: &JsValue) -> Result<Option<bool>, ApiError> {
+    if value.is_undefined() || value.is_null() {
+        return Ok(None);
+    }
+    value.as_bool().map(Some).ok_or_else(|| {
+        Error::ArgumentType {
+            name,
+            expected: "boolean",
+            got: type_name(value),
+        }
+        .into()
+    })
+}
+
+/// `typeof value`, with `null` and arrays told apart (for messages).
 pub(crate) fn type_name(value: &JsValue) -> String {
     if value.is_null() {
         "null".into()
+    } else if js_sys::Array::is_array(value) {
+        "array".into()
     } else {
         value.js_typeof().as_string().unwrap_or_default()
     }

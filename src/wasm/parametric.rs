@@ -2,7 +2,7 @@
 //! `expressionNames(text)`: typed curves (syllabus 1).
 
 use super::bezier::JsBezierCurve;
-use super::{numbers, string_arg, whole, ApiError};
+use super::{numbers, set_key, string_arg, type_name, whole, ApiError};
 use crate::error::Error;
 use crate::expr::{self, ExprError, Problem};
 use crate::parametric::{ParametricCurve, PieceSource};
@@ -19,13 +19,6 @@ pub struct JsParametricCurve {
 /// `object[key]`, `undefined` when it cannot be read.
 fn get(object: &JsValue, key: &str) -> JsValue {
     Reflect::get(object, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED)
-}
-
-/// `object[key] = value` on a fresh plain object (which cannot refuse it: no setters, not
-/// frozen). Out of line: one copy for every result object.
-#[inline(never)]
-fn set(object: &Object, key: &str, value: &JsValue) {
-    let _ = Reflect::set(object, &JsValue::from_str(key), value);
 }
 
 /// A field of a piece: a string, or a finite number (written as JavaScript writes it).
@@ -50,7 +43,7 @@ fn field_text(piece: usize, object: &JsValue, field: &str) -> Result<Option<Stri
     Err(Error::ArgumentType {
         name: "pieces",
         expected: "string",
-        got: value.js_typeof().as_string().unwrap_or_default(),
+        got: type_name(&value),
     }
     .into())
 }
@@ -69,7 +62,7 @@ fn read_pieces(value: &JsValue) -> Result<Vec<PieceSource>, ApiError> {
         return Err(Error::ArgumentType {
             name: "pieces",
             expected: "array",
-            got: value.js_typeof().as_string().unwrap_or_default(),
+            got: type_name(value),
         }
         .into());
     }
@@ -92,7 +85,7 @@ fn read_pieces(value: &JsValue) -> Result<Vec<PieceSource>, ApiError> {
             return Err(Error::ArgumentType {
                 name: "pieces",
                 expected: "object",
-                got: object.js_typeof().as_string().unwrap_or_default(),
+                got: type_name(&object),
             }
             .into());
         }
@@ -116,7 +109,7 @@ fn read_parameters(value: &JsValue) -> Result<Vec<(String, f64)>, ApiError> {
         return Err(Error::ArgumentType {
             name: "parameters",
             expected: "object",
-            got: value.js_typeof().as_string().unwrap_or_default(),
+            got: type_name(value),
         }
         .into());
     }
@@ -129,7 +122,7 @@ fn read_parameters(value: &JsValue) -> Result<Vec<(String, f64)>, ApiError> {
             return Err(Error::ArgumentType {
                 name: "parameters",
                 expected: "number",
-                got: pair.get(1).js_typeof().as_string().unwrap_or_default(),
+                got: type_name(&pair.get(1)),
             }
             .into());
         };
@@ -284,9 +277,9 @@ impl JsParametricCurve {
         };
         let plot = self.inner.plot(tolerance, bbox)?;
         let out = Object::new();
-        set(&out, "points", &numbers_value(&plot.points));
-        set(&out, "ts", &numbers_value(&plot.ts));
-        set(&out, "complete", &JsValue::from_bool(plot.complete));
+        set_key(&out, "points", &numbers_value(&plot.points));
+        set_key(&out, "ts", &numbers_value(&plot.ts));
+        set_key(&out, "complete", &JsValue::from_bool(plot.complete));
         Ok(out.into())
     }
 
@@ -298,19 +291,19 @@ impl JsParametricCurve {
         let out = Array::new();
         for j in self.inner.joints() {
             let o = Object::new();
-            set(&o, "t", &JsValue::from_f64(j.t));
-            set(&o, "c", &JsValue::from_f64(j.c));
-            set(&o, "g", &JsValue::from_f64(j.g));
-            set(&o, "exact", &JsValue::from_bool(j.exact));
-            set(&o, "disjoint", &JsValue::from_bool(j.disjoint));
+            set_key(&o, "t", &JsValue::from_f64(j.t));
+            set_key(&o, "c", &JsValue::from_f64(j.c));
+            set_key(&o, "g", &JsValue::from_f64(j.g));
+            set_key(&o, "exact", &JsValue::from_bool(j.exact));
+            set_key(&o, "disjoint", &JsValue::from_bool(j.disjoint));
             if let Some(k) = j.order {
-                set(&o, "order", &JsValue::from_f64(k as f64));
+                set_key(&o, "order", &JsValue::from_f64(k as f64));
             }
             if let Some(l) = &j.left {
-                set(&o, "left", &numbers_value(l));
+                set_key(&o, "left", &numbers_value(l));
             }
             if let Some(r) = &j.right {
-                set(&o, "right", &numbers_value(r));
+                set_key(&o, "right", &numbers_value(r));
             }
             out.push(&o);
         }
@@ -370,12 +363,12 @@ impl JsParametricCurve {
     pub fn frame(&self, t: f64) -> Result<JsValue, ApiError> {
         let f = self.inner.frame(t)?;
         let out = Object::new();
-        set(&out, "point", &numbers_value(&f.point));
-        set(&out, "tangent", &numbers_value(&f.tangent));
-        set(&out, "normal", &numbers_value(&f.normal));
-        set(&out, "binormal", &numbers_value(&f.binormal));
-        set(&out, "curvature", &JsValue::from_f64(f.curvature));
-        set(&out, "torsion", &JsValue::from_f64(f.torsion));
+        set_key(&out, "point", &numbers_value(&f.point));
+        set_key(&out, "tangent", &numbers_value(&f.tangent));
+        set_key(&out, "normal", &numbers_value(&f.normal));
+        set_key(&out, "binormal", &numbers_value(&f.binormal));
+        set_key(&out, "curvature", &JsValue::from_f64(f.curvature));
+        set_key(&out, "torsion", &JsValue::from_f64(f.torsion));
         Ok(out.into())
     }
 
@@ -388,14 +381,14 @@ impl JsParametricCurve {
         let out = Object::new();
         for (name, c) in ["x", "y", "z"].iter().zip(&tex.coords) {
             let o = Object::new();
-            set(&o, "expr", &JsValue::from_str(&c.expr));
+            set_key(&o, "expr", &JsValue::from_str(&c.expr));
             let text = |s: &Option<String>| s.as_deref().map_or(JsValue::NULL, JsValue::from_str);
-            set(&o, "d1", &text(&c.d1));
-            set(&o, "d2", &text(&c.d2));
-            set(&out, name, &o.into());
+            set_key(&o, "d1", &text(&c.d1));
+            set_key(&o, "d2", &text(&c.d2));
+            set_key(&out, name, &o.into());
         }
-        set(&out, "from", &JsValue::from_str(&tex.from));
-        set(&out, "to", &JsValue::from_str(&tex.to));
+        set_key(&out, "from", &JsValue::from_str(&tex.from));
+        set_key(&out, "to", &JsValue::from_str(&tex.to));
         Ok(out.into())
     }
 }

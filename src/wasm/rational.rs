@@ -5,6 +5,7 @@ use super::bezier::JsBezierCurve;
 use super::bspline::JsBSplineCurve;
 use super::{numbers, object_of, whole};
 use crate::bspline::BSplineCurve;
+use crate::error::ConicError;
 use crate::error::Error;
 use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::rational;
@@ -61,11 +62,11 @@ pub fn ellipse_arc(
     let axis_x = &*numbers("axisX", &axis_x)?;
     let axis_y = &*numbers("axisY", &axis_y)?;
     if axis_x.len() != center.len() || axis_y.len() != center.len() {
-        return Err(Error::AxisLengths {
+        return Err(Error::Conic(ConicError::AxisLengths {
             center: center.len(),
             axis_x: axis_x.len(),
             axis_y: axis_y.len(),
-        }
+        })
         .into());
     }
     Ok(match crate::geom::check_dim(center.len())? {
@@ -106,7 +107,7 @@ pub fn circular_arc_bezier(
         [p0, p1, p2] => Ok(JsBezierCurve::from_2d(rational::circle_arc_from_triangle(
             *p0, *p1, *p2,
         )?)),
-        _ => Err(Error::ArcPointCount { got: pts.len() }.into()),
+        _ => Err(Error::Conic(ConicError::ArcPointCount { got: pts.len() }).into()),
     }
 }
 
@@ -121,7 +122,7 @@ pub fn conic_kind(w0: f64, w1: f64, w2: f64) -> Result<String, ApiError> {
 fn matrix(m: &[f64]) -> Result<DMat3, Error> {
     let rows: &[f64; 9] = m
         .try_into()
-        .map_err(|_| Error::MatrixSize { got: m.len() })?;
+        .map_err(|_| Error::Conic(ConicError::MatrixSize { got: m.len() }))?;
     crate::geom::check_all_finite(rows, "matrix-entry")?;
     Ok(DMat3::from_cols_array(rows).transpose())
 }

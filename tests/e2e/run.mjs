@@ -17,6 +17,7 @@ import { fuzzStates } from "./state-fuzz.mjs";
 import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 import { encodeStroke } from "../../www/lib/stroke-code.js";
+import { distSuite } from "./dist.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
@@ -1325,14 +1326,16 @@ try {
     await settle(page);
     return live.textContent();
   };
-  for (const [code, dot, sep] of [
+  // Greek separates with the ano teleia ("; " would read as a question mark): "· " in text,
+  // KaTeX's punctuation dot \cdotp ("⋅") in a formula.
+  for (const [code, dot, sep, texSep = sep] of [
     ["en", ".", ", "],
     ["hr", ",", "; "],
-    ["el", ",", "; "],
+    ["el", ",", "· ", "⋅ "],
     ["it", ",", "; "],
   ]) {
-    await test(`${code}: numbers read in the language: a table cell, the formula (KaTeX), the figure's name, an announcement (${dot === "," ? "decimal comma, “; ” between coordinates" : "decimal point"})`, async () => {
-      const local = (text) => text.replaceAll(".", dot).replaceAll(", ", sep);
+    await test(`${code}: numbers read in the language: a table cell, the formula (KaTeX), the figure's name, an announcement (${dot === "," ? `decimal comma, “${sep.trim()}” between coordinates` : "decimal point"})`, async () => {
+      const local = (text, between = sep) => text.replaceAll(".", dot).replaceAll(", ", between);
       await page.goto("about:blank");
       await page.goto(`${base}/index.html?lang=${code}#demo=de-casteljau`);
       const h = demoHelpers(page);
@@ -1358,8 +1361,8 @@ try {
           `KaTeX sets ${local(n)} as one number: ${formula.numbers.join(" | ")}`,
         );
       assert(
-        shown.includes(local("(1.813, 1.438)")),
-        `the formula shows ${local("(1.813, 1.438)")}: ${shown}`,
+        shown.includes(local("(1.813, 1.438)", texSep)),
+        `the formula shows ${local("(1.813, 1.438)", texSep)}: ${shown}`,
       );
       const name = await h.canvas().getAttribute("aria-label");
       assert(name.includes(local("(1.81, 1.44)")), `the figure's name: ${name}`);
@@ -1999,6 +2002,9 @@ try {
       await old.close();
     }
   });
+
+  // The built site (make dist), served as a host would: on one more page of this browser.
+  await distSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
 } catch (err) {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);

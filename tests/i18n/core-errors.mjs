@@ -89,6 +89,8 @@ const CASES = [
   ["coordinate-count", () => new sl.BezierCurve([0, 0, 1, 1, 2], 3)],
   ["not-finite", () => new sl.BezierCurve([0, Number.NaN, 1, 1], 2)],
   ["not-finite", () => new sl.BezierCurve([0, -Infinity, 1, 1], 2)],
+  ["coordinate-too-large", () => new sl.BezierCurve([0, 1e200, 1, 1], 2)],
+  ["coordinate-too-large", () => bspline().setControlPoint(1, [-Number.MAX_VALUE, 0])],
   ["not-finite", () => bezier().evaluate(Number.NaN)],
   ["too-few-points", () => new sl.BezierCurve([0, 0], 2)],
   ["too-few-points", () => sl.BezierCurve.fromPolynomial([], 2, 0, 1)],
@@ -281,7 +283,7 @@ function problems(err) {
   if (english !== err.message) found.push(`en: ${JSON.stringify(english)}`);
   const decimals = TYPED_DECIMALS.has(err.code) ? [] : (err.message.match(/\d+\.\d+/g) ?? []);
   // A pair of numbers in brackets ("[0, 1]", "(1.5, 2)") separates them with "; " where the
-  // decimal separator is a comma.
+  // decimal separator is a comma (in Greek, where ";" is the question mark, with "· ").
   const pair = /[[(]-?[\d.e+-]+, -?[\d.e+-]+[\])]/.test(err.message);
   for (const code of LANGUAGES) {
     setLocale(code);
@@ -289,8 +291,9 @@ function problems(err) {
     if (text === err.message) found.push(`${code}: the English message`);
     const left = text.match(/\{\w+\}/);
     if (left) found.push(`${code}: ${left[0]} left in ${JSON.stringify(text)}`);
-    if (pair && !/[[(][^\])]*\d; -?\d[^\])]*[\])]/.test(text)) {
-      found.push(`${code}: no "; " between the numbers of a pair in ${JSON.stringify(text)}`);
+    const sign = code === "el" ? "·" : ";";
+    if (pair && !new RegExp(`[[(][^\\])]*\\d${sign} -?\\d[^\\])]*[\\])]`).test(text)) {
+      found.push(`${code}: no "${sign} " between the numbers of a pair in ${JSON.stringify(text)}`);
     }
     for (const d of decimals) {
       const local = d.replace(".", ",");

@@ -1,10 +1,12 @@
 // The number helpers against numbers written out by hand, in each language (run by `make test`;
 // `node tests/i18n/numbers.mjs`): shown numbers take the language's decimal separator (a comma
-// in Greek, Croatian and Italian), lists and points then separate their entries with "; ", TeX
-// writes a decimal comma "{,}" (KaTeX would space a bare one), and machine text keeps the point.
+// in Greek, Croatian and Italian), lists and points then separate their entries with "; " (in
+// Greek, where ";" is the question mark, with the ano teleia "· ", in TeX `\cdotp`), TeX writes
+// a decimal comma "{,}" (KaTeX would space a bare one), and machine text keeps the point.
 // What a text box shows is read back by the parser it feeds. Fractions are the same everywhere.
 // Ends with one line "numbers: N passed, N failed" (scripts/test-all.sh sums it).
 import {
+  clauseSeparator,
   exactNumbers,
   exactTex,
   exactText,
@@ -54,6 +56,7 @@ const EXPECTED = {
     knot: ["1.5", "1.5", "1.5", "2"],
     knots: ["0, 0, 1.5, 2", "0, 0, 1.5, 2"],
     typed: "0 0 1.5 2",
+    clauses: "; ",
   },
   comma: {
     fmt: ["1,250", "-2,500", "0,000", "3,14"],
@@ -69,13 +72,30 @@ const EXPECTED = {
     knot: ["1,5", "1{,}5", "1.5", "2"],
     knots: ["0; 0; 1,5; 2", "0; 0; 1{,}5; 2"],
     typed: "0; 0; 1,5; 2",
+    clauses: "; ",
+  },
+  el: {
+    fmt: ["1,250", "-2,500", "0,000", "3,14"],
+    tex: ["1{,}250", "-2{,}500", "3{,}14"],
+    point: "(1,500· 2,000)",
+    pointTex: "(1{,}5\\cdotp\\ 2)",
+    list: "0,250· 1/2· 3,000",
+    listTex: "0{,}25\\cdotp\\ \\tfrac12",
+    short: ["2", "2,500", "2{,}500"],
+    fraction: ["1/4", "0,350", "\\tfrac{1}{4}", "0{,}350"],
+    exact: ["−3/4", "0,00031", "0", "-0{,}00031"],
+    steps: ["9/16", "0{,}350"],
+    knot: ["1,5", "1{,}5", "1.5", "2"],
+    knots: ["0· 0· 1,5· 2", "0\\cdotp 0\\cdotp 1{,}5\\cdotp 2"],
+    typed: "0· 0· 1,5· 2",
+    clauses: "· ",
   },
 };
 
 for (const code of ["en", "el", "hr", "it"]) {
   if (code !== "en") addLocale(code, {});
   setLocale(code);
-  const want = code === "en" ? EXPECTED.en : EXPECTED.comma;
+  const want = EXPECTED[code] ?? EXPECTED.comma;
   check(`${code} fmt`, [fmt(1.25), fmt(-2.5), fmt(-0.0001), fmt(3.1372, 2)], want.fmt);
   check(`${code} fmtTex`, [fmtTex(1.25), fmtTex(-2.5), fmtTex(3.1372, 2)], want.tex);
   check(
@@ -125,6 +145,7 @@ for (const code of ["en", "el", "hr", "it"]) {
   // What a box shows is what its parser reads back.
   const typed = [0, 0, 1.5, 2].map((u) => knotText(u)).join(inputListSeparator());
   check(`${code} a typed list`, typed, want.typed);
+  check(`${code} clauses of a sentence`, clauseSeparator(), want.clauses);
   check(`${code} … reads back`, splitNumberList(typed).map(parseNumberInput), [0, 0, 1.5, 2]);
   check(`${code} a shown number reads back`, parseNumberInput(fmt(-2.5)), -2.5);
   // No TeX a helper writes has a bare decimal comma (KaTeX would space it as punctuation).

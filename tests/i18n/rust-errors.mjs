@@ -1,7 +1,8 @@
 // What the curve library's errors are, read from the Rust sources (for tests/i18n/check.mjs):
-// the code of every variant (src/error/code.rs), the subject keys (src/error/phrase.rs) and
-// every variant's fields as the thrown Error's `params` name them (src/error/mod.rs, camelCase),
-// plus the errors the JS glue throws itself (scripts/glue.mjs).
+// the code of every variant (src/error/code.rs, and the families' enums nested in it:
+// `FAMILY_FILES`), the subject keys (src/error/phrase.rs) and every variant's fields as the
+// thrown Error's `params` name them (src/error/mod.rs and the family files, camelCase), plus the
+// errors the JS glue throws itself (scripts/glue.mjs).
 import { readFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 
@@ -9,6 +10,18 @@ const source = (path) =>
   readFileSync(fileURLToPath(new URL(`../../src/error/${path}`, import.meta.url)), "utf8");
 const expressionSource = () =>
   readFileSync(fileURLToPath(new URL("../../src/expr/error.rs", import.meta.url)), "utf8");
+
+/**
+ * The families of errors nested in `Error` (`Error::Conic(ConicError)` …): file → enum name. Each
+ * file has its enum and its `code()` (`ConicError::X { .. } => "code"`); a nested error's
+ * `params` are its variant's fields, as for `Error`'s own variants.
+ */
+const FAMILY_FILES = {
+  "conic.rs": "ConicError",
+  "interp.rs": "InterpError",
+  "join.rs": "JoinError",
+  "surface.rs": "SurfaceError",
+};
 
 /** The params every typed-expression error carries besides its problem's fields. */
 export const EXPRESSION_PLACE = ["piece", "field", "start", "end"];
@@ -66,11 +79,13 @@ export const GLUE_ERRORS = {
 /** `needed_by` → `neededBy` (serde's rename_all_fields = "camelCase"). */
 const camel = (name) => name.replace(/_([a-z0-9])/g, (_, c) => c.toUpperCase());
 
-/** Variant name → code, from `Error::Name { .. } => "code"` in code.rs. */
+/** Variant name → code, from `Error::Name { .. } => "code"` in code.rs and the family files. */
 export function variantCodes() {
   const codes = new Map();
-  for (const m of source("code.rs").matchAll(/Error::(\w+) \{ \.\. \} => "([a-z0-9-]+)"/g)) {
-    codes.set(m[1], m[2]);
+  for (const file of ["code.rs", ...Object.keys(FAMILY_FILES)]) {
+    for (const m of source(file).matchAll(/Error::(\w+) \{ \.\. \} => "([a-z0-9-]+)"/g)) {
+      codes.set(m[1], m[2]);
+    }
   }
   if (codes.size < 70) throw new Error(`only ${codes.size} codes read from src/error/code.rs`);
   return codes;
@@ -85,7 +100,7 @@ export function phraseKeys() {
   return keys;
 }
 
-/** Code → the camelCase names of its variant's fields (enum Error in mod.rs), glue's included. */
+/** Code → the camelCase names of its variant's fields (Error and the families), glue's included. */
 export function codeFields() {
   const codes = variantCodes();
   const body = /pub enum Error \{\n([\s\S]*?)\n\}\n/.exec(source("mod.rs"));
@@ -94,8 +109,13 @@ export function codeFields() {
     ...Object.entries(GLUE_ERRORS),
     ...variantFields(body[1], codes, "Error"),
   ]);
+  for (const [file, name] of Object.entries(FAMILY_FILES)) {
+    const family = new RegExp(`pub enum ${name} \\{\\n([\\s\\S]*?)\\n\\}\\n`).exec(source(file));
+    if (!family) throw new Error(`enum ${name} not found in src/error/${file}`);
+    for (const [code, names] of variantFields(family[1], codes, name)) fields.set(code, names);
+  }
   for (const code of codes.values()) {
-    if (!fields.has(code)) throw new Error(`code ${code}: variant not found in mod.rs`);
+    if (!fields.has(code)) throw new Error(`code ${code}: variant not found in src/error/`);
   }
   for (const [code, names] of expressionCodes()) fields.set(code, names);
   return fields;

@@ -40,6 +40,7 @@ import {
   listText,
   pointTex,
   exactTex,
+  clauseSeparator,
 } from "../lib/format.js";
 import { HUES, RADIUS, WIDTH, themed } from "../lib/theme.js";
 import { t, tp } from "../lib/strings.js";
@@ -304,7 +305,7 @@ function derivativesNote(s) {
     const [x, y] = s.endDerivative;
     parts.push(t("bsplineInterpolation.endValue", { n: subscript(n), xy: pairText(x, y) }));
   }
-  return parts.length ? parts.join("; ") : t("bsplineInterpolation.noDerivatives");
+  return parts.length ? parts.join(clauseSeparator()) : t("bsplineInterpolation.noDerivatives");
 }
 
 /** The anchors of the two derivative arrows: p₀ and pₙ. */

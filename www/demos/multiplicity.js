@@ -21,7 +21,7 @@ import { readout, actions, group } from "../lib/panel.js";
 import { knotRuler, stackOf, knotText } from "../lib/knot-ruler.js";
 import { knotsField, clampedKnots, setKnots, domainOf } from "../lib/bspline.js";
 import { radios, el } from "../lib/controls.js";
-import { subscript, pointTex } from "../lib/format.js";
+import { clauseSeparator, subscript, pointTex } from "../lib/format.js";
 import { t } from "../lib/strings.js";
 import { boundsOf } from "../lib/geometry.js";
 import { titledTable } from "../lib/table.js";
@@ -430,7 +430,7 @@ export function label(s, d) {
     const measured = measuredText(jointAt(d, e.knot));
     return `${knotText(e.knot)} (×${e.multiplicity}): ${continuityText(e.continuity)}, ${measured}`;
   };
-  const list = d.continuity.map(entry).join("; ");
+  const list = d.continuity.map(entry).join(clauseSeparator());
   const k = d.studied.knot;
   const rep = d.studied.repeat;
   return t("multiplicity.aria", {

@@ -22,7 +22,7 @@
  * (lib/attributes.js: records separated by ";", the texts x, y, from, to by ",").
  */
 import { actions, group, readout } from "../lib/panel.js";
-import { shortNumber } from "../lib/format.js";
+import { clauseSeparator, shortNumber } from "../lib/format.js";
 import { orderText, orderTex } from "../lib/continuity.js";
 import { placeLabel, placeLabelBeside } from "../lib/handles.js";
 import { CYCLE, HUES, WIDTH, RADIUS, themed } from "../lib/theme.js";
@@ -466,7 +466,7 @@ export function label(s, d) {
   if (d.joints.length === 0) return t("piecewise.ariaNoJoints");
   return t("piecewise.aria", {
     count: s.pieces.length,
-    joints: d.joints.map((j) => `${j.text}, ${j.how}`).join("; "),
+    joints: d.joints.map((j) => `${j.text}, ${j.how}`).join(clauseSeparator()),
   });
 }
 

@@ -90,6 +90,7 @@ const minus = (a, b) => Math.max(a - b, 0);
 const DERIVED = {
   "coordinate-count": { firstPoint: (p) => (p.dim === 3 ? "x0, y0, z0" : "x0, y0") },
   "not-finite": { subject: (p) => indexedSubject(p.what, p.index) },
+  "coordinate-too-large": { subject: (p) => indexedSubject(p.what, p.index) },
   "not-whole-number": {
     subject: (p) => indexedSubject(p.what, p.index),
     max: () => U32_MAX,

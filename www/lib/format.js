@@ -4,12 +4,13 @@
  *
  * Numbers people read follow the active language (strings.js `decimalSeparator`): `fmt` writes
  * "1.250" in English and "1,250" in Greek, Croatian and Italian, and with a decimal comma a list
- * or point separates its entries with "; " ("(1,5; 2)", `pointText`). TeX gets its own forms
+ * or point separates its entries with "; " ("(1,5; 2)", `pointText`) — in Greek with the ano
+ * teleia "· " ("(1,5· 2)"), since ";" is the Greek question mark. TeX gets its own forms
  * (`fmtTex`, `pointTex`, the `tex` flags): KaTeX spaces a bare comma as punctuation, so a decimal
  * comma is written "1{,}5". Text a machine reads — links, JSON, SVG and TikZ coordinates, data
  * attributes of tests — takes `fmtMachine`, always with a point.
  */
-import { decimalSeparator, t } from "./strings.js";
+import { decimalSeparator, locale, t } from "./strings.js";
 
 /** Decimals shown for parameters and coordinates (ui.md). */
 export const DECIMALS = 3;
@@ -76,11 +77,28 @@ export function texDecimal(text) {
 }
 
 /**
+ * The sign between the entries of a list where the decimal separator is a comma (a comma between
+ * numbers would read as a decimal one): ";", but in Greek, where ";" is the question mark, the
+ * ano teleia "·" (Greek's own semicolon, U+00B7 as the Greek texts write it: "0,125· 0,75").
+ */
+function commaListSign() {
+  return locale() === "el" ? "·" : ";";
+}
+
+/**
  * What separates the entries of a list or a point shown: ", " ("(1.5, 2)"), or "; " where the
- * decimal separator is a comma ("(1,5; 2)"): a comma between numbers would read as a decimal one.
+ * decimal separator is a comma ("(1,5; 2)"; Greek "(1,5· 2)", see `commaListSign`).
  */
 export function listSeparator() {
-  return decimalSeparator() === "," ? "; " : ", ";
+  return decimalSeparator() === "," ? `${commaListSign()} ` : ", ";
+}
+
+/**
+ * What joins the clauses of a generated sentence (an aria label's list of joints, say): "; ",
+ * in Greek "· " (`commaListSign`: ";" is the Greek question mark).
+ */
+export function clauseSeparator() {
+  return locale() === "el" ? "· " : "; ";
 }
 
 /**
@@ -96,15 +114,19 @@ export function shownNumbers(params) {
 
 /**
  * What separates the numbers of a typed list a text box shows, so that `splitNumberList` reads
- * it back: " " ("0 0 1.5 2"), or "; " with a decimal comma ("0; 0; 1,5; 2").
+ * it back: " " ("0 0 1.5 2"), or "; " with a decimal comma ("0; 0; 1,5; 2"; Greek "0· 0· 1,5· 2").
  */
 export function inputListSeparator() {
-  return decimalSeparator() === "," ? "; " : " ";
+  return decimalSeparator() === "," ? `${commaListSign()} ` : " ";
 }
 
-/** `listSeparator` for TeX, with `space` after the sign: ",\\ " or ";\\ " (TeX `,\ `, `;\ `). */
+/**
+ * `listSeparator` for TeX, with `space` after the sign: ",\\ " or ";\\ " (TeX `,\ `, `;\ `); in
+ * Greek "\\cdotp\\ " (KaTeX's punctuation dot, the ano teleia of `listSeparator`).
+ */
 export function texListSeparator(space = "\\ ") {
-  return `${decimalSeparator() === "," ? ";" : ","}${space}`;
+  if (decimalSeparator() !== ",") return `,${space}`;
+  return `${commaListSign() === "·" ? "\\cdotp" : ";"}${space}`;
 }
 
 /**
@@ -205,13 +227,16 @@ export function parseNumberInput(text) {
 }
 
 /**
- * The entries of a typed list of numbers: separated by semicolons when the text has one (then a
- * comma is a decimal comma: "0; 0; 1,5; 2"), else by commas and spaces ("0, 0, 1.5, 2").
- * `extra` holds more separator characters (e.g. "()" for a point "(1, 2)").
+ * The entries of a typed list of numbers: separated by semicolons (or the Greek ano teleia "·",
+ * U+00B7 or U+0387) when the text has one (then a comma is a decimal comma: "0; 0; 1,5; 2",
+ * "0· 0· 1,5· 2"), else by commas and spaces ("0, 0, 1.5, 2"). `extra` holds more separator
+ * characters (e.g. "()" for a point "(1, 2)").
  */
 export function splitNumberList(text, extra = "") {
   const escaped = extra.replace(/[\]\\^-]/g, "\\$&");
-  const separators = String(text).includes(";") ? `;\\s${escaped}` : `,\\s${escaped}`;
+  const separators = /[;\u00b7\u0387]/.test(String(text))
+    ? `;\u00b7\u0387\\s${escaped}`
+    : `,\\s${escaped}`;
   return String(text)
     .trim()
     .split(new RegExp(`[${separators}]+`))

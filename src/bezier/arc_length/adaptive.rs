@@ -170,17 +170,18 @@ mod tests {
 
     #[test]
     fn an_overflowing_speed_does_not_spend_the_refinement_budget() {
-        // Finite control points whose differences overflow: the speed is infinite, the
-        // estimates NaN or ∞, and no halving can make them agree (the API fuzz found this
-        // spending all 2^14 intervals of a degree-23 rational curve: 2 s for a NaN).
+        // Finite control points and weights whose homogeneous products overflow (coordinates
+        // within MAX_COORDINATE, a weight of 1e200): the speed is infinite, the estimates NaN or
+        // ∞, and no halving can make them agree (the API fuzz found this spending all 2^14
+        // intervals of a degree-23 rational curve: 2 s for a NaN).
         let curve = BezierCurve::new(
             vec![
-                DVec2::new(-1e308, 0.0),
-                DVec2::new(1e308, 1.0),
-                DVec2::new(-1e308, 2.0),
-                DVec2::new(1e308, 0.0),
+                DVec2::new(-1e120, 0.0),
+                DVec2::new(1e120, 1.0),
+                DVec2::new(-1e120, 2.0),
+                DVec2::new(1e120, 0.0),
             ],
-            Some(&[1.0, 2.0, 0.5, 1.0]),
+            Some(&[1.0, 1e200, 0.5, 1.0]),
         )
         .unwrap();
         let mut speed = Speed::new(&curve);

@@ -9,17 +9,18 @@
 use super::system::{Collocation, RowKind};
 use super::{knots::periodic_knots, Setup};
 use crate::bspline::{BasisScratch, KnotVector};
+use crate::error::InterpError;
 use crate::error::{Error, Result};
 
 /// The periodic system for the points `coords` (flat, dimension `dim`; last = first) at
 /// `params`.
 ///
 /// # Errors
-/// [`Error::NotClosed`] when the last point differs from the first.
+/// [`InterpError::NotClosed`] when the last point differs from the first.
 pub(super) fn setup(coords: &[f64], dim: usize, degree: usize, params: &[f64]) -> Result<Setup> {
     let n = coords.len() / dim - 1;
     if coords[n * dim..] != coords[..dim] {
-        return Err(Error::NotClosed { last: n });
+        return Err(Error::Interp(InterpError::NotClosed { last: n }));
     }
     let knots = KnotVector::new(periodic_knots(params, degree), degree, n + degree)?;
     let mut rows = Collocation::new(degree, n, true);

@@ -33,6 +33,7 @@
 //! end whose gaps repeat the `n` gaps cyclically: `u_{p−i−1} = u_{p−i} − Δ_{n−1−(i mod n)}`,
 //! `u_{n+p+i+1} = u_{n+p+i} + Δ_{i mod n}`.
 
+use crate::error::InterpError;
 use crate::error::{Error, Result};
 
 /// Averaging knots for `params` with or without end derivatives (see the module doc).
@@ -127,20 +128,20 @@ fn inside(tau: f64, lo: f64, hi: f64, (a, b): (f64, f64)) -> bool {
 /// `τ_i` is the end of the domain and the knot equals it.
 ///
 /// # Errors
-/// [`Error::SchoenbergWhitney`] naming the first `i` that fails.
+/// [`InterpError::SchoenbergWhitney`] naming the first `i` that fails.
 pub fn check_schoenberg_whitney(knots: &[f64], degree: usize, sites: &[f64]) -> Result<()> {
     let p = degree;
     let domain = (knots[p], knots[sites.len()]);
     for (i, &tau) in sites.iter().enumerate() {
         let (lo, hi) = (knots[i], knots[i + p + 1]);
         if !inside(tau, lo, hi, domain) {
-            return Err(Error::SchoenbergWhitney {
+            return Err(Error::Interp(InterpError::SchoenbergWhitney {
                 index: i,
                 param: tau,
                 lo,
                 hi,
                 degree,
-            });
+            }));
         }
     }
     Ok(())
@@ -152,7 +153,7 @@ pub fn check_schoenberg_whitney(knots: &[f64], degree: usize, sites: &[f64]) -> 
 /// the first parameter left that fits, which is optimal because the supports' ends increase).
 ///
 /// # Errors
-/// [`Error::SchoenbergWhitney`] naming the basis function `i` that finds no parameter, with
+/// [`InterpError::SchoenbergWhitney`] naming the basis function `i` that finds no parameter, with
 /// `param` the first parameter still unmatched (or the last parameter when none is left).
 pub fn check_schoenberg_whitney_subsequence(
     knots: &[f64],
@@ -170,13 +171,13 @@ pub fn check_schoenberg_whitney_subsequence(
         }
         if k >= params.len() || !inside(params[k], lo, hi, domain) {
             let param = params[k.min(params.len() - 1)];
-            return Err(Error::SchoenbergWhitney {
+            return Err(Error::Interp(InterpError::SchoenbergWhitney {
                 index: i,
                 param,
                 lo,
                 hi,
                 degree,
-            });
+            }));
         }
         k += 1;
     }

@@ -11,20 +11,16 @@
 //! are checked against the Schoenberg–Whitney condition, without which the system is singular.
 //!
 //! ```
-//! use splinelab::interp::{interpolation_system, InterpolationOptions, RowKind};
-//! use splinelab::DVec2;
-//! // The Croatian notes' example: five points at 0..4, degree 2, C'(0) given, knots 0 0 0 1 2 3 4 4 4.
-//! let points = [(0., 0.), (2., 4.), (4., 2.), (6., 6.), (8., 0.)].map(|(x, y)| DVec2::new(x, y));
-//! let options = InterpolationOptions {
-//!     knots: Some(vec![0., 0., 0., 1., 2., 3., 4., 4., 4.]),
-//!     start_derivative: Some(DVec2::new(2.0, 8.0)),
-//!     ..Default::default()
-//! };
-//! let s = interpolation_system(&points, 2, &[0., 1., 2., 3., 4.], &options).unwrap();
-//! assert_eq!(&s.matrix[6..12], &[-2.0, 2.0, 0.0, 0.0, 0.0, 0.0]); // −2 r_0 + 2 r_1 = D_0
-//! assert_eq!(&s.matrix[12..18], &[0.0, 0.5, 0.5, 0.0, 0.0, 0.0]); // (r_1 + r_2)/2 = p_1
-//! assert_eq!(s.rows[1], RowKind::StartDerivative);
-//! assert_eq!(s.solution[4], DVec2::new(7.0, 12.0));
+//! use splinelab::interp::{interpolation_system, InterpolationOptions, RowKind}; use
+//! splinelab::DVec2; // The Croatian notes' example: five points at 0..4, degree 2, C'(0) given,
+//! knots 0 0 0 1 2 3 4 4 4. let points = [(0., 0.), (2., 4.), (4., 2.), (6., 6.), (8.,
+//! 0.)].map(|(x, y)| DVec2::new(x, y)); let options = InterpolationOptions {     knots:
+//! Some(vec![0., 0., 0., 1., 2., 3., 4., 4., 4.]),     start_derivative: Some(DVec2::new(2.0,
+//! 8.0)),     ..Default::default() }; let s = interpolation_system(&points, 2, &[0., 1., 2., 3.,
+//! 4.], &options).unwrap(); assert_eq!(&s.matrix[6..12], &[-2.0, 2.0, 0.0, 0.0, 0.0, 0.0]); // −2
+//! r_0 + 2 r_1 = D_0 assert_eq!(&s.matrix[12..18], &[0.0, 0.5, 0.5, 0.0, 0.0, 0.0]); // (r_1 +
+//! r_2)/2 = p_1 assert_eq!(s.rows[1], RowKind::StartDerivative); assert_eq!(s.solution[4],
+//! DVec2::new(7.0, 12.0));
 //! ```
 
 mod closed;
@@ -34,7 +30,7 @@ mod system;
 pub use system::RowKind;
 
 use crate::bspline::{BSplineCurve, BasisScratch, KnotVector};
-use crate::error::{check_coordinate_of, check_finite, Error, Result};
+use crate::error::{check_coordinate, check_coordinate_of, Error, Result};
 use crate::geom::Cartesian;
 use system::Collocation;
 
@@ -102,14 +98,16 @@ const WHAT: &str = "bspline-interpolation-system";
 /// wrap ([`BSplineCurve::wrapped`]), the domain is `[t_0, t_n]`.
 ///
 /// # Errors
-/// In this order: [`Error::NotFinite`] (coordinates), [`Error::DegreeOutOfRange`],
-/// [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points, [`Error::TooFewDataPoints`]
-/// (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
-/// [`Error::ParamCount`], [`Error::NotFinite`] (params), [`Error::ParamsNotIncreasing`],
-/// [`Error::ConflictingOptions`] (closed with derivatives or knots), [`Error::NotFinite`]
-/// (derivatives), [`Error::NotClosed`], the knot errors of [`KnotVector::new`], a parameter
-/// outside the knots' domain ([`Error::InArgument`] `params[i]`), [`Error::SchoenbergWhitney`],
-/// and [`Error::SingularSystem`] if elimination still meets a zero pivot.
+/// In this order: [`Error::NotFinite`], [`Error::CoordinateTooLarge`] (coordinates),
+/// [`Error::DegreeOutOfRange`], [`Error::TooLarge`] above [`MAX_INTERPOLATION_POINTS`] points,
+/// [`Error::TooFewDataPoints`] (`max(2, p + 1 − derivatives)` points, closed `max(3, p + 1)`),
+/// [`crate::error::InterpError::ParamCount`], [`Error::NotFinite`] (params),
+/// [`crate::error::InterpError::ParamsNotIncreasing`], [`Error::ConflictingOptions`] (closed with
+/// derivatives or knots), [`Error::NotFinite`] (derivatives),
+/// [`crate::error::InterpError::NotClosed`], the knot errors of [`KnotVector::new`], a parameter
+/// outside the knots' domain ([`Error::InArgument`] `params[i]`),
+/// [`crate::error::InterpError::SchoenbergWhitney`], and [`Error::SingularSystem`] if elimination
+/// still meets a zero pivot.
 pub fn interpolate_bspline<C: Cartesian>(
     points: &[C],
     degree: usize,
@@ -206,11 +204,12 @@ pub(crate) fn check_interpolation_degree(degree: usize) -> Result<()> {
     Ok(())
 }
 
-/// Checks every coordinate is finite ([`Error::NotFinite`] naming `coordinate i·dim + k`).
+/// Checks every coordinate is finite and not too large ([`Error::NotFinite`],
+/// [`Error::CoordinateTooLarge`] naming `coordinate i·dim + k`).
 pub(crate) fn check_points<C: Cartesian>(points: &[C]) -> Result<()> {
     for (i, p) in points.iter().enumerate() {
         for k in 0..C::DIM {
-            check_finite("coordinate", Some(i * C::DIM + k), p.coord(k))?;
+            check_coordinate("coordinate", Some(i * C::DIM + k), p.coord(k))?;
         }
     }
     Ok(())

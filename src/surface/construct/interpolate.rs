@@ -1,8 +1,9 @@
 //! Global interpolation of a grid of points by a B-spline surface (NURBS Book §9.2.5, A9.4).
 
 use crate::bspline::Parameterization;
+use crate::error::SurfaceError;
 use crate::error::{Error, Result};
-use crate::geom::{check_all_finite, MAX_SAMPLES};
+use crate::geom::{check_all_coordinates, MAX_SAMPLES};
 use crate::interp::global::knots::averaging_knots;
 use crate::interp::global::{check_interpolation_degree, Setup};
 use crate::interp::InterpolationOptions;
@@ -21,11 +22,11 @@ use glam::DVec3;
 /// domain is `[0, 1]²`.
 ///
 /// # Errors
-/// In this order: [`Error::NetCoordinateCount`] (grid size mismatch), [`Error::TooLarge`] for
-/// the grid, [`Error::NotFinite`], [`Error::DegreeOutOfRange`] for a degree of 0 or above 10,
-/// [`Error::TooFewDataPoints`] (inside [`Error::InArgument`] `degreeU`/`degreeV`) when
-/// `rows < degree_u + 1` or `cols < degree_v + 1` (or below 2), [`Error::CoincidentPoints`]
-/// when every column (row) is a single repeated point, [`Error::ParamsNotIncreasing`] when
+/// In this order: [`SurfaceError::NetCoordinateCount`] (grid size mismatch), [`Error::TooLarge`]
+/// for the grid, [`Error::NotFinite`], [`Error::DegreeOutOfRange`] for a degree of 0 or above 10,
+/// [`Error::TooFewDataPoints`] (inside [`Error::InArgument`] `degreeU`/`degreeV`) when `rows <
+/// degree_u + 1` or `cols < degree_v + 1` (or below 2), [`Error::CoincidentPoints`] when every
+/// column (row) is a single repeated point, [`crate::error::InterpError::ParamsNotIncreasing`] when
 /// the averaged parameters repeat.
 pub fn interpolate_surface(
     points: &[f64],
@@ -55,8 +56,9 @@ pub fn interpolate_surface(
 /// averaging); `v̄` likewise along the rows. Both run from 0 to 1.
 ///
 /// # Errors
-/// [`Error::NetCoordinateCount`] (grid size mismatch), [`Error::TooLarge`], [`Error::NotFinite`],
-/// [`Error::CoincidentPoints`] when every column (row) is a single repeated point.
+/// [`SurfaceError::NetCoordinateCount`] (grid size mismatch), [`Error::TooLarge`],
+/// [`Error::NotFinite`], [`Error::CoincidentPoints`] when every column (row) is a single repeated
+/// point.
 pub fn grid_params(
     points: &[f64],
     rows: usize,
@@ -75,13 +77,13 @@ pub fn grid_params(
 fn check_grid_size(points: &[f64], rows: usize, cols: usize) -> Result<()> {
     let count = checked_count("rows·cols", rows, cols, MAX_SAMPLES)?;
     if points.len() != 3 * count {
-        return Err(Error::NetCoordinateCount {
+        return Err(Error::Surface(SurfaceError::NetCoordinateCount {
             rows,
             cols,
             got: points.len(),
-        });
+        }));
     }
-    check_all_finite(points, "coordinate")
+    check_all_coordinates(points, "coordinate")
 }
 
 /// The checks of [`interpolate_surface`] before the parameters: the grid's size, its numbers,

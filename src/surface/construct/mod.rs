@@ -11,6 +11,7 @@ pub use revolve::{revolve, MAX_REVOLUTION_ARC};
 pub use sweep::{extrude, ruled};
 
 use crate::bspline::BSplineCurve;
+use crate::error::SurfaceError;
 use crate::error::{check_coordinate_of, Error, Result};
 use crate::geom::Cartesian;
 use crate::prelude::*;
@@ -49,11 +50,11 @@ fn check_vector(name: &'static str, v: DVec3) -> Result<()> {
     Ok(())
 }
 
-/// A direction argument: finite and not the zero vector ([`Error::ZeroDirection`]).
+/// A direction argument: finite and not the zero vector ([`SurfaceError::ZeroDirection`]).
 fn check_direction(name: &'static str, v: DVec3) -> Result<()> {
     check_vector(name, v)?;
     if v.length() == 0.0 || !v.length().is_finite() {
-        return Err(Error::ZeroDirection { name });
+        return Err(Error::Surface(SurfaceError::ZeroDirection { name }));
     }
     Ok(())
 }

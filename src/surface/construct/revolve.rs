@@ -2,6 +2,7 @@
 
 use super::{check_direction, check_vector, curve_3d, from_homogeneous, homogeneous};
 use crate::bspline::BSplineCurve;
+use crate::error::ConicError;
 use crate::error::{check_finite, Error, Result};
 use crate::geom::{sin_cos, Cartesian};
 use crate::surface::BSplineSurface;
@@ -29,8 +30,8 @@ pub const MAX_REVOLUTION_ARC: f64 = FRAC_PI_2;
 ///
 /// # Errors
 /// In this order: [`Error::Needs3D`] for a 2D profile, a non-finite axis point or direction,
-/// [`Error::ZeroDirection`] for a zero direction, [`Error::NotFinite`] or
-/// [`Error::InvalidSweep`] for an angle ≤ 0 or above `2π`.
+/// [`crate::error::SurfaceError::ZeroDirection`] for a zero direction, [`Error::NotFinite`] or
+/// [`ConicError::InvalidSweep`] for an angle ≤ 0 or above `2π`.
 pub fn revolve<C: Cartesian>(
     profile: &BSplineCurve<C>,
     axis_point: DVec3,
@@ -42,7 +43,7 @@ pub fn revolve<C: Cartesian>(
     check_direction("axisDirection", axis_direction)?;
     check_finite("angle", None, angle)?;
     if !(angle > 0.0 && angle <= TAU * (1.0 + 1e-12)) {
-        return Err(Error::InvalidSweep { sweep: angle });
+        return Err(Error::Conic(ConicError::InvalidSweep { sweep: angle }));
     }
     let angle = angle.min(TAU);
     let full_turn = angle == TAU;

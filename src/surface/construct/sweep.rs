@@ -14,7 +14,7 @@ use glam::{DVec3, DVec4};
 ///
 /// # Errors
 /// [`crate::Error::Needs3D`] for a 2D curve, a non-finite direction, then
-/// [`crate::Error::ZeroDirection`] for `d = 0` (the surface would be the curve).
+/// [`crate::error::SurfaceError::ZeroDirection`] for `d = 0` (the surface would be the curve).
 pub fn extrude<C: Cartesian>(curve: &BSplineCurve<C>, direction: DVec3) -> Result<BSplineSurface> {
     let curve = curve_3d(curve, "extrude")?;
     check_direction("direction", direction)?;

@@ -2,7 +2,7 @@
 //! global B-spline interpolation (open with optional end derivatives, or closed) and the
 //! least-squares fit with exact ends.
 
-use super::super::{numbers, optional_numbers, whole, JsBSplineCurve};
+use super::super::{bool_option, numbers, option_entries, optional_numbers, whole, JsBSplineCurve};
 use super::ParamArg;
 use crate::error::Error;
 use crate::geom::{check_dim, check_flat};
@@ -12,7 +12,6 @@ use crate::interp::InterpolationOptions;
 use crate::wasm::ApiError;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
-use wasm_bindgen::JsCast;
 
 /// The option names `interpolateBSpline` and `bsplineInterpolationSystem` accept, and their
 /// list as the error message shows it.
@@ -34,57 +33,21 @@ struct RawOptions {
 }
 
 impl RawOptions {
-    /// Reads `options`: `undefined`/`null` give the defaults; otherwise a plain object whose
-    /// keys are among `allowed` (`listed` in the message) ([`Error::UnknownOption`] naming the first other key), each
-    /// value of its type ([`Error::ArgumentType`]).
+    /// Reads `options` ([`option_entries`]: `undefined`/`null` give the defaults, keys among
+    /// `allowed`), each value of its type ([`Error::ArgumentType`]).
     fn read(
         options: &JsValue,
         (allowed, listed): (&[&str], &'static str),
     ) -> Result<Self, ApiError> {
         let mut out = RawOptions::default();
-        if options.is_undefined() || options.is_null() {
-            return Ok(out);
-        }
-        let object = match options.dyn_ref::<js_sys::Object>() {
-            Some(o) if options.is_object() && !js_sys::Array::is_array(options) => o,
-            _ => {
-                return Err(Error::ArgumentType {
-                    name: "options",
-                    expected: "object",
-                    got: type_name(options),
-                }
-                .into())
-            }
-        };
-        for key in js_sys::Object::keys(object).iter() {
-            let key = key.as_string().unwrap_or_default();
-            if !allowed.contains(&key.as_str()) {
-                return Err(Error::UnknownOption {
-                    name: "options",
-                    value: key,
-                    expected: listed,
-                }
-                .into());
-            }
-            let value = js_sys::Reflect::get(object, &JsValue::from_str(&key))
-                .map_err(|_| ApiError::new("options: a key could not be read"))?;
+        for (key, value) in option_entries(options, (allowed, listed))? {
             match key.as_str() {
                 "knots" => out.knots = optional_numbers("knots", &value)?,
                 "startDerivative" => {
                     out.start_derivative = optional_numbers("startDerivative", &value)?
                 }
                 "endDerivative" => out.end_derivative = optional_numbers("endDerivative", &value)?,
-                _ => {
-                    out.closed = if value.is_undefined() || value.is_null() {
-                        false
-                    } else {
-                        value.as_bool().ok_or_else(|| Error::ArgumentType {
-                            name: "closed",
-                            expected: "boolean",
-                            got: type_name(&value),
-                        })?
-                    }
-                }
+                _ => out.closed = bool_option("closed", &value)?.unwrap_or(false),
             }
         }
         Ok(out)
@@ -122,16 +85,6 @@ fn vector(
     }
 }
 
-/// `typeof value`, with `null` and arrays told apart (for messages).
-fn type_name(value: &JsValue) -> String {
-    if value.is_null() {
-        "null".into()
-    } else if js_sys::Array::is_array(value) {
-        "array".into()
-    } else {
-        value.js_typeof().as_string().unwrap_or_default()
-    }
-}
 /// The arguments the three functions share, read from JavaScript in one order: the options
 /// object (its keys among `allowed`), points, params, dim (checked: 2 or 3) and degree.
 struct FitArgs {

@@ -46,7 +46,7 @@ fn bezier_points(
                 got: values.len(),
             });
         }
-        crate::geom::check_all_finite(values, name)?;
+        crate::geom::check_all_coordinates(values, name)?;
         let mut coords = [0.0; 3];
         for (c, &x) in coords.iter_mut().zip(values) {
             *c = x;

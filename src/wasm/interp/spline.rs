@@ -5,6 +5,7 @@ use super::flat_points;
 use crate::bezier::CompositeCurve;
 use crate::bspline::BSplineCurve;
 use crate::error::Error;
+use crate::error::InterpError;
 use crate::interp::{bezier_points, bspline_form, CubicSpline, TangentRule};
 use crate::prelude::*;
 use crate::wasm::bezier::{flatten_points, point_from};
@@ -97,11 +98,11 @@ impl JsCubicSpline {
 }
 
 fn system_of<C: crate::geom::Cartesian>(c: &CubicSpline<C>) -> Result<SystemJs, Error> {
-    let s = c.system().ok_or(Error::SplineKind {
+    let s = c.system().ok_or(Error::Interp(InterpError::SplineKind {
         operation: "system()",
         needs: "cubicSpline",
         got: c.rule().constructor(),
-    })?;
+    }))?;
     let size = s.size();
     Ok(SystemJs {
         size,

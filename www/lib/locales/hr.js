@@ -58,7 +58,7 @@ export default {
     "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
   "shell.figureHelpTyped":
     "Krivulja slijedi formule upisane u ploči s kontrolama. Povucite sliku za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
-  "shell.openInPlayground": "Otvori u igralištu",
+  "shell.openInPlayground": "Otvori za slobodno isprobavanje",
   "handles.roleDescription": "interaktivna slika",
   "handles.selected": "Odabrano: {label}, ({x}; {y})",
   "handles.moved": "{label} premješteno u ({x}; {y})",
@@ -187,7 +187,7 @@ export default {
     "Pritisnite + da dodate kontrolne točke: grafovi postaju uži i niži, svaki i dalje s vrhom u i/n, pa svaka točka djeluje lokalnije.",
   "subdivision.title": "Podjela",
   "subdivision.summary":
-    "Podijelite Bézierovu krivulju u t₀ na dvije Bézierove krivulje: njihovi su kontrolni poligoni bridovi de Casteljauova trokuta; ponovljeno raspolavljanje konvergira prema krivulji.",
+    "Podijelite Bézierovu krivulju u t₀ na dvije Bézierove krivulje: njihovi su kontrolni poligoni stranice de Casteljauova trokuta; ponovljeno raspolavljanje konvergira prema krivulji.",
   "subdivision.aria":
     "{kind} Bézierova krivulja s kontrolnim točkama (broj: {count}) podijeljena u t₀ = {t} na lijevi poligon L₀…L{n} i desni poligon R₀…R{n}; točka podjele ({x}; {y})",
   "subdivision.ariaLevels":
@@ -215,21 +215,21 @@ export default {
   "subdivision.formulaPolygons.other": "poligona",
   "subdivision.formulaPoints": "kontrolnih točaka",
   "subdivision.tableCaption":
-    "Kontrolne točke dviju polovica za t₀ = {t}: lijeve lᵢ (gornji brid trokuta), desne rᵢ (hipotenuza)",
+    "Kontrolne točke dviju polovica za t₀ = {t}: lijeve lᵢ (gornja stranica trokuta), desne rᵢ (hipotenuza)",
   "subdivision.colIndex": "i",
   "subdivision.colLeft": "Lijeva polovica, na [0, t₀]",
   "subdivision.colRight": "Desna polovica, na [t₀, 1]",
   "subdivision.minPoints": "najmanji broj kontrolnih točaka Bézierove krivulje ovdje je {min}",
   "subdivision.maxPoints": "ova demonstracija dopušta najviše {max} kontrolnih točaka",
   "subdivision.whatYouSee":
-    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegov gornji brid); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16; 23/16).",
+    "Bézierova krivulja (plavo) presječena u t₀ (crveno-narančasta točka) na dvije Bézierove krivulje istog stupnja. Lijevi dio ima kontrolne točke L₀ … Lₙ (zeleno, puna linija), prvu točku svake razine de Casteljauova trokuta (njegova gornja stranica); desni dio ima R₀ … Rₙ (ljubičasto, iscrtkano, kvadratići), zadnju točku svake razine (hipotenuza); ostatak trokuta nacrtan je blijedo. Uz razine iznad 0 svaki se dio iznova raspolavlja u 1/2: nakon k razina 2ᵏ malih poligona prianja uz krivulju, zbog čega ponovljena podjela konvergira prema njoj. Početna slika je kubni riješeni primjer iz grčkih bilježaka (poglavlje 2 nastavnog programa); za t₀ = 1/4 polovice se spajaju u (29/16; 23/16).",
   "subdivision.try1":
     "Upišite 1/4 za t₀: tablica pokazuje lijeve točke riješenog primjera (0; 0), (1/2; 1/2), (9/8; 1), (29/16; 23/16) i desne točke (29/16; 23/16), (31/8; 11/4), (13/2; 7/2), (8; 2).",
   "subdivision.try2":
     "Povećajte broj razina na 3: osam poligona, već blizu krivulje; uz 5 ili 6 teško ih je razlikovati od nje.",
   "subdivision.try3":
     "Povucite t₀ prema 0: lijevi se poligon steže u točku P₀, a desni postaje izvorni poligon.",
-  "flattening.title": "Adaptivno poravnavanje",
+  "flattening.title": "Adaptivna linearizacija",
   "flattening.summary":
     "Bézierova krivulja nacrtana kao izlomljena linija koja ostaje unutar tolerancije ε: kratki segmenti gdje se savija, dugi gdje je ravna.",
   "flattening.tolerance": "Tolerancija ε (jedinice svijeta)",
@@ -251,7 +251,7 @@ export default {
   "flattening.half": "Uz ε/2 = {tolerance}: broj segmenata {count} (× {ratio}; √2 ≈ 1,41)",
   "flattening.countLabel": "broj segmenata {count} uz ε = {tolerance}",
   "flattening.aria":
-    "kubna Bézierova krivulja s kontrolnim točkama {points}, poravnana uz toleranciju {tolerance}: izlomljena linija, segmenata: {count} (vrhova: {vertices}); uz toleranciju {half} segmenata: {halfCount}",
+    "kubna Bézierova krivulja s kontrolnim točkama {points}, aproksimirana izlomljenom linijom uz toleranciju {tolerance}: segmenata: {count} (vrhova: {vertices}); uz toleranciju {half} segmenata: {halfCount}",
   "flattening.formula.whole": "cijela krivulja:",
   "flattening.formula.flat": "ravno: jedan segment",
   "flattening.formula.split": "podijeli",
@@ -611,11 +611,11 @@ export default {
   "knotVectors.spacing.uniform": "uniformno: 1, 2, …, n − p",
   "knotVectors.spacing.chord": "duljina tetiva: zbrojevi |Pᵢ₊₁ − Pᵢ|",
   "knotVectors.spacing.centripetal": "centripetalno: zbrojevi √|Pᵢ₊₁ − Pᵢ|",
-  "knotVectors.show.clamped": "Stegnuta (otvorena) — puna plava",
+  "knotVectors.show.clamped": "Otvorena neperiodička (stegnuta) — puna plava",
   "knotVectors.show.unclamped": "Nestegnuta uniformna — iscrtkana zelena",
   "knotVectors.show.closed": "Zatvorena (periodička) — točkasta ljubičasta",
-  "knotVectors.legend.clamped": "stegnuta (otvorena)",
-  "knotVectors.legend.clamped.uniform": "stegnuta (otvorena) uniformna",
+  "knotVectors.legend.clamped": "otvorena neperiodička (stegnuta)",
+  "knotVectors.legend.clamped.uniform": "stegnuta uniformna",
   "knotVectors.legend.clamped.chord": "stegnuta, razmak po duljini tetiva",
   "knotVectors.legend.clamped.centripetal": "stegnuta, centripetalni razmak",
   "knotVectors.legend.unclamped": "nestegnuta uniformna",
@@ -970,16 +970,17 @@ export default {
   "conics.ariaCircle": ", kružni luk polumjera {r} oko ({x}; {y})",
   "nurbsCircle.title": "NURBS kružnice i lukovi",
   "nurbsCircle.summary":
-    "Točna kružnica kao NURBS stupnja 2: 9 kontrolnih točaka, težine 1 i √2/2, uzlovi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; lukovi u dijelovima od najviše 90°, elipse kao njihove afine slike.",
+    "Točna kružnica kao NURBS stupnja 2: 9 kontrolnih točaka, težine 1 i √2/2, uzlovi 0; 0; 0; ¼; ¼; ½; ½; ¾; ¾; 1; 1; 1. Lukovi u dijelovima od najviše 90°, elipse kao njihove afine slike.",
   "nurbsCircle.whatYouSee":
-    "Kružnica (ili luk, ili elipsa) koju jezgra gradi kao NURBS stupnja 2 (plavo), njezin kontrolni poligon s težinom svake točke i spojevi njezinih dijelova (zeleni prstenovi). Puna kružnica je NURBS s 9 točaka iz nastavnog programa (poglavlje 4, prema grčkim i talijanskim bilješkama): vrhovi kvadrata nose težinu √2/2, uzlovi su 0,0,0,¼,¼,½,½,¾,¾,1,1,1. Luk se reže na dijelove od najviše 90° čije su srednje težine cos(Δ/2). Očitanje mjeri koliko je 2000 uzoraka udaljeno od točne kružnice: 0 ili nekoliko 10⁻¹⁶, samo zaokruživanje — nijedna polinomna krivulja to ne može.",
+    "Kružnica (ili luk, ili elipsa) koju jezgra gradi kao NURBS stupnja 2 (plavo), njezin kontrolni poligon s težinom svake točke i spojevi njezinih dijelova (zeleni prstenovi). Puna kružnica je NURBS s 9 točaka iz nastavnog programa (poglavlje 4, prema grčkim i talijanskim bilješkama): vrhovi kvadrata nose težinu √2/2, uzlovi su 0; 0; 0; ¼; ¼; ½; ½; ¾; ¾; 1; 1; 1. Luk se reže na dijelove od najviše 90° čije su srednje težine cos(Δ/2). Očitanje mjeri koliko je 2000 uzoraka udaljeno od točne kružnice: 0 ili nekoliko 10⁻¹⁶, samo zaokruživanje — nijedna polinomna krivulja to ne može.",
   "nurbsCircle.try1":
-    "Postavite opseg luka na 200°: luk ima 3 dijela od 66,7° i srednje težine cos 33,3° ≈ 0,835; pogreška polumjera i dalje je oko 1e-16.",
+    "Postavite središnji kut luka na 200°: luk ima 3 dijela od 66,7° i srednje težine cos 33,3° ≈ 0,835; pogreška polumjera i dalje je oko 1e-16.",
   "nurbsCircle.try2":
     "Označite „Elipsa” i mijenjajte rotaciju: iste težine i uzlovi, rastegnute kontrolne točke — afina slika kružnice.",
   "nurbsCircle.try3": "Povucite središte c: cijela se kružnica pomiče i ostaje točna.",
   "nurbsCircle.notPositive": "polje „{field}” mora biti > 0, dobiveno {value}",
-  "nurbsCircle.zeroSweep": "polje „sweep” ne smije biti 0 (luk treba opseg različit od nule)",
+  "nurbsCircle.zeroSweep":
+    "polje „sweep” ne smije biti 0 (luk treba središnji kut različit od nule)",
   "nurbsCircle.radius": "Polumjer r",
   "nurbsCircle.radius.input": "Polumjer (broj > 0, najviše 10)",
   "nurbsCircle.rx": "Poluos rx",
@@ -990,8 +991,8 @@ export default {
   "nurbsCircle.rotation.input": "Rotacija elipse u stupnjevima",
   "nurbsCircle.start": "Početni kut (stupnjevi)",
   "nurbsCircle.start.input": "Početni kut u stupnjevima",
-  "nurbsCircle.sweep": "Opseg luka (stupnjevi, negativno: u smjeru kazaljke)",
-  "nurbsCircle.sweep.input": "Opseg luka u stupnjevima, od −360 do 360, ne 0",
+  "nurbsCircle.sweep": "Središnji kut luka (stupnjevi, negativno: u smjeru kazaljke)",
+  "nurbsCircle.sweep.input": "Središnji kut luka u stupnjevima, od −360 do 360, ne 0",
   "nurbsCircle.badLength":
     "{field} = „{value}” odbijeno: {field} mora biti > 0 (ovdje između {min} i {max})",
   "nurbsCircle.badAngle": "{field} = „{value}” odbijeno: kut između −{max}° i {max}°",
@@ -1001,7 +1002,7 @@ export default {
   "nurbsCircle.arcLegend": "Luk",
   "nurbsCircle.resultLegend": "NURBS",
   "nurbsCircle.full": "Puni krug",
-  "nurbsCircle.full.title": "Početak 0°, opseg 360°: zatvorena krivulja s 9 točaka",
+  "nurbsCircle.full.title": "Početak 0°, središnji kut 360°: zatvorena krivulja s 9 točaka",
   "nurbsCircle.refused": "biblioteka je odbila: {message}",
   "nurbsCircle.centreLabel": "c",
   "nurbsCircle.radiusLabel": "r = {r}",
@@ -1017,7 +1018,7 @@ export default {
   "nurbsCircle.ariaCircle": "kružnica polumjera {r}",
   "nurbsCircle.ariaEllipse": "elipsa s poluosima {rx} i {ry} zakrenuta za {rotation}°",
   "nurbsCircle.ariaFull": "cijela krivulja",
-  "nurbsCircle.ariaArc": "luk od {start}° opsega {sweep}°",
+  "nurbsCircle.ariaArc": "luk od {start}°, središnjeg kuta {sweep}°",
   "nurbsCircle.aria":
     "NURBS {shape} oko ({x}; {y}), {arc}: stupanj 2, kontrolne točke ({count}) s težinama {weights}, uzlovi {knots}, dijelovi: {pieces}; izmjerena pogreška {error}",
   "nurbsCircle.tableCaption": "Kontrolne točke ({count}) i njihove težine",
@@ -1034,7 +1035,7 @@ export default {
   "projective.summary":
     "Preslikajte racionalnu krivulju perspektivom: preslikavanje njezinih kontrolnih točaka i težina daje točno preslikanu krivulju; preslikavanje točaka uz stare težine ne daje.",
   "projective.whatYouSee":
-    "Lijevo kubna Bézierova krivulja u kvadratu S₀S₁S₂S₃; desno njezina slika pri perspektivnom preslikavanju H koje kvadrat šalje u četverokut Q₀Q₁Q₂Q₃ (povlačite vrhove). Jezgra preslikava homogene kontrolne točke krivulje (wᵢPᵢ, wᵢ) s H, što daje nove točke i nove težine (puna plava); narančaste točkice su uzorci izvorne krivulje preslikani jedan po jedan istim H i leže točno na njoj — racionalne krivulje invarijantne su na projektivna preslikavanja, kako kažu grčke bilješke (poglavlje 4 nastavnog programa). Iscrtkana krivulja koristi preslikane točke sa starim težinama: promašuje, jer perspektiva mijenja težine.",
+    "Lijevo kubna Bézierova krivulja u kvadratu S₀S₁S₂S₃; desno njezina slika pri perspektivnom preslikavanju H koje kvadrat šalje u četverokut Q₀Q₁Q₂Q₃ (povlačite vrhove). Jezgra preslikava homogene kontrolne točke krivulje (wᵢPᵢ, wᵢ) s H, što daje nove točke i nove težine (puna plava); narančaste točkice su uzorci izvorne krivulje preslikani jedan po jedan istim H i leže točno na njoj — racionalne krivulje invarijantne s obzirom na projektivna preslikavanja, kako kažu grčke bilješke (poglavlje 4 nastavnog programa). Iscrtkana krivulja koristi preslikane točke sa starim težinama: promašuje, jer perspektiva mijenja težine.",
   "projective.try1":
     "Povucite Q₂ prema Q₃: perspektiva postaje jača, preslikane težine se razilaze, a iscrtkana krivulja udaljava se od točkica, koje ostaju na punoj krivulji.",
   "projective.try2":
@@ -1080,7 +1081,7 @@ export default {
   "negativeWeights.try1":
     "Pritisnite „w₁ = −0,5”: biblioteka odbija, krivulja se izvrće ispod tetive P₀P₂ i napušta trokut, ali w(t) ostaje iznad 0 — još nema pola.",
   "negativeWeights.try2":
-    "Polako povucite w₁ od 0 do −3: za w₁ = −1 graf dodiruje nulu u t = 1/2, ispod toga siječe je dvaput, a krivulja se kida u dva pola.",
+    "Polako povucite w₁ od 0 do −3: za w₁ = −1 graf dodiruje nulu u t = 1/2, ispod toga siječe je dvaput, i krivulja se kida u dvama polovima.",
   "negativeWeights.try3": "Pritisnite „w₁ = 1”: poruka nestaje i vraća se obična parabola.",
   "negativeWeights.w1": "Srednja težina w₁ (ovdje smije biti ≤ 0)",
   "negativeWeights.w1.input": "Težina w₁ (broj između −3 i 3)",
@@ -1558,7 +1559,7 @@ export default {
   "cardinal.try1":
     "Pomaknite α od 0,5 do 0: puna krivulja prelazi u iscrtkanu i pojavljuje se petlja u segmentu 1; uz α = 1 (duljina tetiva) prianja uz poligon.",
   "cardinal.try2":
-    "Prebacite na kardinalni i povećajte napetost c prema 1: tangente se smanjuju do nule i krivulja postaje poligon; c < 0 prebacuje.",
+    "Prebacite na kardinalni i povećajte napetost c prema 1: tangente se smanjuju do nule i krivulja postaje poligon; uz c < 0 krivulja premašuje točke (prebačaj).",
   "cardinal.try3":
     "Odmičite P₂ od P₁ dok segmenti ne budu približno jednako dugi: petlja uniformne krivulje nestaje — šiljci i petlje nastaju zbog nejednolikog razmaka.",
   "cardinal.minPoints": "najmanji broj zadanih točaka u ovoj demonstraciji je {min}",
@@ -1603,7 +1604,7 @@ export default {
   "cubicSpline.minPoints": "najmanji broj točaka splajna ovdje je {min}",
   "cubicSpline.maxPoints": "ova demonstracija dopušta najviše {max} točaka",
   "cubicSpline.pointCount.few": "{count} točke, n = {n}",
-  "cubicSpline.pointCount.one": "{count} točka",
+  "cubicSpline.pointCount.one": "{count} točka, n = {n}",
   "cubicSpline.pointCount.other": "{count} točaka, n = {n}",
   "cubicSpline.control.end": "Rubni uvjet",
   "cubicSpline.control.compare": "Preklopi svih šest",
@@ -1613,7 +1614,7 @@ export default {
   "cubicSpline.end.clamped": "stegnuti",
   "cubicSpline.end.quadratic": "kvadratni",
   "cubicSpline.end.bessel": "Besselov",
-  "cubicSpline.end.not-a-knot": "not-a-knot",
+  "cubicSpline.end.not-a-knot": "not-a-knot (bez uzla u t₁)",
   "cubicSpline.end.periodic": "periodički",
   "cubicSpline.parametrization.uniform": "uniformni",
   "cubicSpline.parametrization.chord": "duljina tetiva",
@@ -1658,7 +1659,7 @@ export default {
   "cubicSpline.tableHidden": " (izostavljeni srednji retci i stupci, njih {count}: ⋮, ⋯)",
   "parametrization.title": "Parametrizacija: uniformna, po duljini tetiva, centripetalna",
   "parametrization.summary":
-    "Iste točke interpolirane uz uniformne, tetivne i centripetalne parametre, s brzinom i oznakama parametara svake krivulje: nejednolik razmak tjera uniformnu krivulju da prebacuje.",
+    "Iste točke interpolirane uz uniformne, tetivne i centripetalne parametre, s brzinom i oznakama parametara svake krivulje: nejednolik razmak tjera uniformnu krivulju da premašuje točke.",
   "parametrization.aria":
     "{method} kroz zadane točke (broj: {count}) uz uniformne, tetivne, centripetalne parametre i parametre za α = {alpha}; za s = {s}: uniformna {uniform}, tetivna {chord}, centripetalna {centripetal}; njihove su brzine nacrtane ispod",
   "parametrization.control.s": "Normirani parametar s",
@@ -1698,7 +1699,7 @@ export default {
   "parametrization.row.centripetal": "centripetalni tᵢ",
   "parametrization.row.alpha": "α = {alpha}: tᵢ",
   "parametrization.whatYouSee":
-    "Četiri interpolacijske krivulje kroz iste točke, koje se razlikuju samo po parametrima tᵢ pridijeljenima točkama: uniformni (plavo, puna linija), po duljini tetiva (zeleno, iscrtkano), centripetalni (ljubičasto, točkasto) i bilo koji α s klizača (narančasto, crta-točka). Ispod slike je brzina svake krivulje u ovisnosti o normiranom parametru s te za svaku krivulju red oznaka gdje padaju parametri njezinih zadanih točaka. Uniformni parametri dugoj stranici daju jednako malo parametra kao kratkoj, pa krivulja juri duž duge stranice i prebacuje ili čini petlje na kratkima. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
+    "Četiri interpolacijske krivulje kroz iste točke, koje se razlikuju samo po parametrima tᵢ pridijeljenima točkama: uniformni (plavo, puna linija), po duljini tetiva (zeleno, iscrtkano), centripetalni (ljubičasto, točkasto) i bilo koji α s klizača (narančasto, crta-točka). Ispod slike je brzina svake krivulje u ovisnosti o normiranom parametru s te za svaku krivulju red oznaka gdje padaju parametri njezinih zadanih točaka. Uniformni parametri dugoj stranici daju jednako malo parametra kao kratkoj, pa krivulja juri duž duge stranice i premašuje točke ili čini petlje na kratkima. Iz dijela o interpolaciji grčkih bilježaka, poglavlje 5 nastavnog programa.",
   "parametrization.try1":
     "Pritisnite Pokreni: četiri točkice počinju i završavaju zajedno, ali plava (uniformna) juri duž dugih stranica dok zelena (tetivna) drži gotovo jednoliki tempo — usporedite njihove grafove brzine.",
   "parametrization.try2":
@@ -1769,7 +1770,7 @@ export default {
   "bsplineInterpolation.try2":
     "Povećavajte stupanj korak po korak: krivulja i dalje prolazi kroz svaku točku, ali retci postaju dulji (svaki uvjet uključuje p + 1 kontrolnih točaka), a kontrolni poligon izlazi sve dalje.",
   "bsplineInterpolation.try3":
-    "Odvucite p₂ daleko udesno: uz uniformne parametre krivulja daleko prebacuje p₂ i p₃. Prebacite na duljinu tetiva: tᵢ sada rastu sa stranicama i otklon se smanjuje — ali D₀, derivacija po t, sada je prebrza za parametar koji broji duljinu: skratite strelicu i kuka u p₀ nestaje.",
+    "Odvucite p₂ daleko udesno: uz uniformne parametre krivulja daleko premašuje p₂ i p₃. Prebacite na duljinu tetiva: tᵢ sada rastu sa stranicama i otklon se smanjuje — ali D₀, derivacija po t, sada je prebrza za parametar koji broji duljinu: skratite strelicu i kuka u p₀ nestaje.",
   "interpolateApproximate.title": "Interpolirati ili aproksimirati",
   "interpolateApproximate.summary":
     "Iste točke kao kontrolne točke (krivulja se privlači prema njima), kao podaci kroz koje se točno prolazi ili kao podaci aproksimirani s manje kontrolnih točaka metodom najmanjih kvadrata.",
@@ -1890,6 +1891,8 @@ export default {
     "broj koordinata {count} nije višekratnik od dim = {dim}; točke se zadaju ravno [{firstPoint}, x1, …]",
   "coreError.not-finite":
     "{subject}: vrijednost {value} nije dopuštena; svaki broj mora biti konačan",
+  "coreError.coordinate-too-large":
+    "{subject}: vrijednost {value} je prevelika; koordinata po apsolutnoj vrijednosti smije biti najviše {max}, kako bi derivacije i duljine ostale konačne",
   "coreError.too-few-points.one":
     "{what}: potrebna je barem {needed} kontrolna točka, dobiveno {got}",
   "coreError.too-few-points.few":
@@ -1964,7 +1967,7 @@ export default {
     "kružni luk treba jednakokračan trokut: |P0P1| = {first}, ali |P1P2| = {second}",
   "coreError.arc-point-count": "kružni luk treba 3 kontrolne točke (6 brojeva), dobiveno {got}",
   "coreError.invalid-sweep":
-    "opseg luka mora biti različit od nule i najviše jedan puni okret (2π), dobiveno {sweep}",
+    "središnji kut luka mora biti različit od nule i najviše jedan puni okret (2π), dobiveno {sweep}",
   "coreError.parallel-axes": "dvije osi elipse ne smiju biti paralelne ni nul-vektori",
   "coreError.axis-lengths":
     "center, axisX i axisY moraju imati istu duljinu, dobiveno {center}, {axisX}, {axisY}",
@@ -2021,7 +2024,7 @@ export default {
     "{what}: sustav je singularan; eliminacija je naišla na nul-pivot u retku {row}",
   "coreError.spline-kind":
     "{operation} radi na splajnovima izgrađenima s {needs}; ovaj je izgrađen s {got}",
-  "coreError.conflicting-options": "{first} se ne može kombinirati sa {second}: {reason}",
+  "coreError.conflicting-options": "{first} se ne može kombinirati s {second}: {reason}",
   "coreError.knots-not-clamped":
     "aproksimacija najmanjim kvadratima s točnim krajevima traži stegnute uzlove: {end} p+1 = {order} uzlova mora biti jednako {param}",
   "coreError.freed": "ovaj {className} je oslobođen (free)",
@@ -2086,7 +2089,7 @@ export default {
   "coreError.subject.bessel-spline": "Besselov splajn",
   "coreError.subject.bezier-curve": "Bézierova krivulja",
   "coreError.subject.boolean": "logička vrijednost (boolean)",
-  "coreError.subject.bspline-interpolation-system": "sustav B-spline interpolacije",
+  "coreError.subject.bspline-interpolation-system": "sustav interpolacije B-krivuljom",
   "coreError.subject.cardinal-spline": "kardinalni splajn",
   "coreError.subject.catmull-rom-spline": "Catmull–Rom splajn",
   "coreError.subject.clamped-end-condition": "rubni uvjet „clamped” (stegnuti)",
@@ -2106,9 +2109,9 @@ export default {
   "coreError.subject.degree-v-columns": "degreeV (stupci duž v)",
   "coreError.subject.derivative-order": "red derivacije",
   "coreError.subject.every-piece": "svaki dio (stupanj >= 1)",
-  "coreError.subject.flattening-segments": "broj segmenata izravnavanja",
+  "coreError.subject.flattening-segments": "broj segmenata linearizacije",
   "coreError.subject.flattening-segments-estimated":
-    "broj segmenata izravnavanja (procijenjen prije izravnavanja: smanjite stupanj ili povećajte toleranciju)",
+    "broj segmenata linearizacije (procijenjen prije linearizacije: smanjite stupanj ili povećajte toleranciju)",
   "coreError.subject.grid-points": "točke mreže us.length·vs.length",
   "coreError.subject.hermite-spline": "Hermiteov splajn",
   "coreError.subject.interpolating-bspline":

@@ -58,7 +58,7 @@ export default {
     "Trascina un punto, oppure premi Tab per selezionarne uno e i tasti freccia per spostarlo (Shift: 10 px). Trascina lo spazio vuoto per spostare la vista; rotella o pizzico per lo zoom.",
   "shell.figureHelpTyped":
     "La curva segue le formule scritte nel pannello. Trascina la figura per spostare la vista; rotella o pizzico per lo zoom.",
-  "shell.openInPlayground": "Apri nel playground",
+  "shell.openInPlayground": "Apri nell'area di prova",
   "handles.roleDescription": "figura interattiva",
   "handles.selected": "{label} selezionato, ({x}; {y})",
   "handles.moved": "{label} spostato in ({x}; {y})",
@@ -204,7 +204,7 @@ export default {
   "subdivision.levelsNote":
     "Livello {k}: {polygons} poligoni, {total} punti di controllo ({distinct} distinti: i vicini condividono un estremo).",
   "subdivision.levelsNote0":
-    "Livello 0: 1 poligono (quello della curva), {total} punti di controllo. Aumenta i livelli per dimezzare ogni pezzo ancora e ancora in 1/2.",
+    "Livello 0: 1 poligono (quello della curva), {total} punti di controllo. Aumenta i livelli per dimezzare ripetutamente ogni pezzo in 1/2.",
   "subdivision.degree": "Grado n = {n} ({count} punti di controllo)",
   "subdivision.leftLabel": "L{i}",
   "subdivision.rightLabel": "R{i}",
@@ -212,7 +212,7 @@ export default {
   "subdivision.lastLabel": "{p} = {r}",
   "subdivision.splitLabel": "{l} = {r}",
   "subdivision.splitPointLabel": "P(t₀)",
-  "subdivision.formulaPolygons.many": "di poligoni",
+  "subdivision.formulaPolygons.many": "poligoni",
   "subdivision.formulaPolygons.one": "poligono",
   "subdivision.formulaPolygons.other": "poligoni",
   "subdivision.formulaPoints": "punti di controllo",
@@ -246,7 +246,7 @@ export default {
   "flattening.preset.loop": "Cappio",
   "flattening.preset.cusp": "Cuspide",
   "flattening.preset.straight": "Quasi dritta",
-  "flattening.segments.many": "{count} di segmenti",
+  "flattening.segments.many": "{count} segmenti",
   "flattening.segments.one": "{count} segmento",
   "flattening.segments.other": "{count} segmenti",
   "flattening.half": "Con ε/2 = {tolerance}: {count} segmenti (× {ratio}; √2 ≈ 1,41)",
@@ -285,7 +285,7 @@ export default {
   "lineIntersection.boxes":
     "Profondità {depth} di {deepest}. Riquadri visitati: {visited}; toccati dalla retta: {hit}; scartati: {pruned}. I riquadri smettono di dividersi sotto {tolerance}.",
   "lineIntersection.none": "nessuna intersezione",
-  "lineIntersection.count.many": "{count} di intersezioni",
+  "lineIntersection.count.many": "{count} intersezioni",
   "lineIntersection.count.one": "1 intersezione",
   "lineIntersection.count.other": "{count} intersezioni",
   "lineIntersection.crossings":
@@ -298,7 +298,7 @@ export default {
   "lineIntersection.tableNone": "Nessuna intersezione: la retta non tocca la curva.",
   "lineIntersection.tableRoot": "radice",
   "lineIntersection.tablePoint": "P(t)",
-  "lineIntersection.formula.miss": "un solo segno agli angoli del riquadro",
+  "lineIntersection.formula.miss": "lo stesso segno agli angoli del riquadro",
   "lineIntersection.formula.pruned": "la retta non tocca il riquadro: scartato",
   "lineIntersection.formula.until": ", finché il riquadro è sotto",
   "lineIntersection.formula.split": "altrimenti dividi in",
@@ -348,7 +348,8 @@ export default {
   "joining.pointD": "D",
   "joining.arrowCaption":
     "Frecce: velocità P′(1) in arrivo e Q′(1) in uscita dalla giunzione, disegnate a 1/6 della lunghezza",
-  "joining.tableCaption": "Nella giunzione t = 1 (derivate dal core, P su [0, 1], Q su [1, 2])",
+  "joining.tableCaption":
+    "Nella giunzione t = 1 (derivate dal nucleo di calcolo, P su [0, 1], Q su [1, 2])",
   "joining.row.p3-p2": "P₃ − P₂",
   "joining.row.q1-q0": "Q₁ − Q₀",
   "joining.row.dp": "P′(1)",
@@ -398,7 +399,7 @@ export default {
   "bezierProperties.note.hull":
     "La regione grigia è l'inviluppo convesso dei punti di controllo: ogni punto della curva ne è una media pesata, con pesi ≥ 0 a somma 1.",
   "bezierProperties.note.affine":
-    "Verde: la curva dei punti di controllo trasformati (costruita dal core). Punti rossi: punti della curva blu trasformati uno per uno con la stessa matrice. Giacciono sulla curva verde.",
+    "Verde: la curva dei punti di controllo trasformati (costruita dal nucleo di calcolo). Punti rossi: punti della curva blu trasformati uno per uno con la stessa matrice. Giacciono sulla curva verde.",
   "bezierProperties.note.reversed":
     "Arancione, tratteggiata: la curva dei punti di controllo in ordine inverso Pₙ … P₀. Stessi punti, verso opposto (le frecce).",
   "bezierProperties.note.elevation":
@@ -464,7 +465,8 @@ export default {
   "derivatives.minPoints":
     "questa demo richiede almeno {min} punti di controllo (una quadratica o superiore)",
   "derivatives.maxPoints": "questa demo consente al massimo {max} punti di controllo",
-  "derivatives.tableCaption": "Derivate dal core per t = {t}, e i punti di controllo dell'odografo",
+  "derivatives.tableCaption":
+    "Derivate dal nucleo di calcolo per t = {t}, e i punti di controllo dell'odografo",
   "derivatives.row.point": "P(t)",
   "derivatives.row.dp": "P′(t)",
   "derivatives.row.ddp": "P″(t)",
@@ -500,8 +502,8 @@ export default {
   "bsplineBasis.control.u.input": "valore di u nel dominio (decimale o frazione come 5/2)",
   "bsplineBasis.sumNote": "Σ Nᵢ,ₚ({u}) = {sum}",
   "bsplineBasis.knotNote":
-    "{count} punti di controllo, grado p = {p}: {m} nodi u₀ … u{last} (m + 1 = n + p + 2). Cambiare il grado o il numero di punti riporta i nodi al vettore clamped uniforme.",
-  "bsplineBasis.resetKnots": "Nodi clamped uniformi",
+    "{count} punti di controllo, grado p = {p}: {m} nodi u₀ … u{last} (m + 1 = n + p + 2). Cambiare il grado o il numero di punti riporta i nodi al vettore uniforme vincolato agli estremi (clamped).",
+  "bsplineBasis.resetKnots": "Nodi uniformi vincolati",
   "bsplineBasis.resetKnots.title":
     "Sostituisci i nodi con p + 1 nodi uguali agli estremi e nodi interni equidistanti",
   "bsplineBasis.rulerHelp":
@@ -534,7 +536,7 @@ export default {
   "bsplineBasis.triangleCorner": "grado r",
   "bsplineBasis.triangleRow": "r = {r}",
   "bsplineBasis.whatYouSee":
-    "Una curva B-spline (blu) sopra il suo poligono di controllo; sotto, i grafici delle sue funzioni di base Nᵢ,ₚ(u), ciascuno del colore dell'anello attorno al suo punto di controllo Pᵢ; sotto il grafico, il righello dei nodi con i nodi u₀ … u_m e il dominio [uₚ, uₙ₊₁] (barra blu). Il punto C(u) è la somma dei Pᵢ pesati con i valori in cui il marcatore interseca i grafici: al più p + 1 sono non nulli e hanno sempre somma 1. Ogni Nᵢ,ₚ è nulla fuori dal suo supporto [uᵢ, uᵢ₊ₚ₊₁), quindi Pᵢ muove solo quel pezzo di curva. Si parte dall'esempio quadratico delle dispense croate (sezione 3 del programma): U = [0, 0, 0, 1, 2, 3, 4, 4, 4], dove in u = 5/2 i valori sono 1/8, 3/4, 1/8 — lì N₃,₂ = (−2u² + 10u − 11)/2 (le dispense riportano per errore +11).",
+    "Una curva B-spline (blu) sopra il suo poligono di controllo; sotto, i grafici delle sue funzioni di base Nᵢ,ₚ(u), ciascuno del colore dell'anello attorno al suo punto di controllo Pᵢ; sotto il grafico, il righello dei nodi con i nodi u₀ … u_m e il dominio [uₚ, uₙ₊₁] (barra blu). Il punto C(u) è la somma dei Pᵢ pesati con i valori in cui il marcatore interseca i grafici: al più p + 1 sono non nulli (p + 1 è l'ordine m = p + 1 delle dispense italiane) e hanno sempre somma 1. Ogni Nᵢ,ₚ è nulla fuori dal suo supporto [uᵢ, uᵢ₊ₚ₊₁), quindi Pᵢ muove solo quel pezzo di curva. Si parte dall'esempio quadratico delle dispense croate (sezione 3 del programma): U = [0, 0, 0, 1, 2, 3, 4, 4, 4], dove in u = 5/2 i valori sono 1/8, 3/4, 1/8 — lì N₃,₂ = (−2u² + 10u − 11)/2 (le dispense riportano per errore +11).",
   "bsplineBasis.try1":
     "Passa sopra il grafico viola N₂,₂ (o seleziona P₂ con Tab): il suo supporto [0, 3) è ombreggiato, e trascinare P₂ muove solo quella parte della curva.",
   "bsplineBasis.try2":
@@ -547,7 +549,7 @@ export default {
   "deBoor.aria":
     "B-spline {kind} con {count} punti di controllo, nodi {knots}; u = {u} nell'intervallo k = {k}, [{uk}; {uk1}); punto C(u) = ({x}; {y})",
   "deBoor.degree": "Grado p = {p}, {count} punti di controllo, {segments}",
-  "deBoor.spans.many": "{count} di intervalli non vuoti",
+  "deBoor.spans.many": "{count} intervalli non vuoti",
   "deBoor.spans.one": "{count} intervallo non vuoto",
   "deBoor.spans.other": "{count} intervalli non vuoti",
   "deBoor.span": "k = {k}: u ∈ [u{ks}, u{ks1}) = [{uk}; {uk1})",
@@ -568,14 +570,14 @@ export default {
   "deBoor.control.knots": "Vettore dei nodi U (digita e premi Invio)",
   "deBoor.knotsHelp":
     "{m} nodi non decrescenti per {count} punti di grado {p} (m + 1 = n + p + 2).",
-  "deBoor.control.clamped": "Nodi clamped uniformi",
+  "deBoor.control.clamped": "Nodi uniformi vincolati",
   "deBoor.control.clamped.title": "p + 1 nodi uguali a ogni estremo, 1, 2, … in mezzo",
   "deBoor.control.addPoint.title":
-    "Aggiungi un punto dopo quello selezionato (+); i nodi diventano clamped uniformi",
+    "Aggiungi un punto dopo quello selezionato (+); i nodi diventano uniformi vincolati",
   "deBoor.control.removePoint.title":
-    "Rimuovi il punto selezionato (Canc); i nodi diventano clamped uniformi",
+    "Rimuovi il punto selezionato (Canc); i nodi diventano uniformi vincolati",
   "deBoor.knotsReset":
-    "Il vettore dei nodi è stato riportato a clamped uniforme per i nuovi punti o il nuovo grado.",
+    "Il vettore dei nodi è stato riportato a uniforme vincolato per i nuovi punti o il nuovo grado.",
   "deBoor.degreeRange": "il grado deve essere un numero intero da 1 a {max}, ricevuto “{value}”",
   "deBoor.minPoints": "qui una B-spline richiede almeno {min} punti di controllo",
   "deBoor.maxPoints": "questa demo consente al massimo {max} punti di controllo",
@@ -597,9 +599,9 @@ export default {
     "Digita un nodo interno ripetuto, es. 0 0 0 0 1 2 2 4 4 4 4: alcuni α diventano 0 o 1 e la curva passa più vicino a un punto di controllo.",
   "knotVectors.title": "Tipi di vettore dei nodi",
   "knotVectors.summary":
-    "Un poligono di controllo, tre vettori dei nodi: le curve clamped partono da P₀, quelle unclamped no, quelle chiuse si richiudono in modo regolare.",
+    "Un poligono di controllo, tre vettori dei nodi: le curve vincolate agli estremi (clamped) partono da P₀, quelle non vincolate no, quelle chiuse si richiudono in modo regolare.",
   "knotVectors.aria":
-    "B-spline {kind} su {count} punti di controllo: nodi clamped {clamped}, la curva clamped parte da {c0}; la curva unclamped uniforme parte da {u0}; P₀ = {p0}; una curva chiusa percorre il ciclo dei punti",
+    "B-spline {kind} su {count} punti di controllo: nodi vincolati {clamped}, la curva vincolata parte da {c0}; la curva uniforme non vincolata parte da {u0}; P₀ = {p0}; una curva chiusa percorre il ciclo dei punti",
   "knotVectors.degree": "Grado p = {p}, {count} punti di controllo",
   "knotVectors.degreeRange":
     "il grado deve essere un numero intero da 1 a {max}, ricevuto “{value}”",
@@ -609,19 +611,19 @@ export default {
     "il campo “degree” vale {p}, ma {count} punti di controllo consentono al massimo il grado {count} − 1",
   "knotVectors.control.degree": "Grado p",
   "knotVectors.control.degree.input": "grado p (da 1 a 5)",
-  "knotVectors.control.spacing": "Nodi interni del vettore clamped",
+  "knotVectors.control.spacing": "Nodi interni del vettore vincolato",
   "knotVectors.control.show": "Curve mostrate",
   "knotVectors.spacing.uniform": "uniforme: 1, 2, …, n − p",
   "knotVectors.spacing.chord": "lunghezza di corda: somme di |Pᵢ₊₁ − Pᵢ|",
   "knotVectors.spacing.centripetal": "centripeta: somme di √|Pᵢ₊₁ − Pᵢ|",
-  "knotVectors.show.clamped": "Clamped (aperta) — blu continua",
-  "knotVectors.show.unclamped": "Unclamped uniforme — verde tratteggiata",
+  "knotVectors.show.clamped": "Vincolata agli estremi (clamped) — blu continua",
+  "knotVectors.show.unclamped": "Uniforme non vincolata — verde tratteggiata",
   "knotVectors.show.closed": "Chiusa (periodica) — viola punteggiata",
-  "knotVectors.legend.clamped": "clamped (aperta)",
-  "knotVectors.legend.clamped.uniform": "clamped (aperta) uniforme",
-  "knotVectors.legend.clamped.chord": "clamped, spaziatura a lunghezza di corda",
-  "knotVectors.legend.clamped.centripetal": "clamped, spaziatura centripeta",
-  "knotVectors.legend.unclamped": "unclamped uniforme",
+  "knotVectors.legend.clamped": "vincolata agli estremi (clamped)",
+  "knotVectors.legend.clamped.uniform": "vincolata uniforme",
+  "knotVectors.legend.clamped.chord": "vincolata, spaziatura a lunghezza di corda",
+  "knotVectors.legend.clamped.centripetal": "vincolata, spaziatura centripeta",
+  "knotVectors.legend.unclamped": "uniforme non vincolata",
   "knotVectors.legend.closed": "chiusa (periodica)",
   "knotVectors.style.clamped": "continua",
   "knotVectors.style.unclamped": "tratteggiata",
@@ -632,24 +634,24 @@ export default {
   "knotVectors.column.start": "Inizio C(uₚ)",
   "knotVectors.column.end": "Fine C(uₙ₊₁)",
   "knotVectors.tableCaption":
-    "I vettori dei nodi, come li costruisce il core, e dove ogni curva inizia e finisce",
-  "knotVectors.tex.clamped": "clamped",
+    "I vettori dei nodi, come li costruisce il nucleo di calcolo, e dove ogni curva inizia e finisce",
+  "knotVectors.tex.clamped": "vincolata",
   "knotVectors.tex.chord": "corda",
   "knotVectors.tex.centripetal": "centripeta",
-  "knotVectors.tex.unclamped": "unclamped",
+  "knotVectors.tex.unclamped": "non vincolata",
   "knotVectors.tex.closed": "chiusa",
   "knotVectors.tex.domain": "dominio",
   "knotVectors.tex.seam": "nella cucitura",
   "knotVectors.tex.lastRepeated": "l'ultimo p + 1 volte",
   "knotVectors.tex.legs": "termini:",
   "knotVectors.whatYouSee":
-    "Gli stessi punti di controllo portano tre B-spline dello stesso grado. I nodi clamped (aperti) ripetono i valori estremi p + 1 volte, così quella curva parte da P₀ e finisce in Pₙ; nodi unclamped equidistanti danno una curva che inizia e finisce dentro il poligono; la curva chiusa ripete i primi p punti dopo l'ultimo, così si richiude con la piena continuità C^(p−1) nella cucitura (sugli intervalli dove usa gli stessi punti della curva unclamped le due coincidono: punti sopra trattini). La spaziatura a lunghezza di corda e quella centripeta spostano i nodi interni in proporzione ai lati del poligono — sezione 3 del programma, dalle dispense greche e croate.",
+    "Gli stessi punti di controllo portano tre B-spline dello stesso grado. I nodi vincolati agli estremi (clamped) ripetono i valori estremi p + 1 volte, così quella curva parte da P₀ e finisce in Pₙ; nodi equidistanti non vincolati danno una curva che inizia e finisce dentro il poligono; la curva chiusa ripete i primi p punti dopo l'ultimo, così si richiude con la piena continuità C^(p−1) nella cucitura (sugli intervalli dove usa gli stessi punti della curva non vincolata le due coincidono: punti sopra trattini). La spaziatura a lunghezza di corda e quella centripeta spostano i nodi interni in proporzione ai lati del poligono — sezione 3 del programma, dalle dispense greche e croate.",
   "knotVectors.try1":
-    "Imposta il grado a 1: ogni curva diventa il poligono (quella chiusa con il lato di chiusura); portalo a 5 e osserva le curve unclamped e chiusa rimpicciolirsi dentro il poligono.",
+    "Imposta il grado a 1: ogni curva diventa il poligono (quella chiusa con il lato di chiusura); portalo a 5 e osserva la curva non vincolata e quella chiusa rimpicciolirsi dentro il poligono.",
   "knotVectors.try2":
     "Scegli la lunghezza di corda e trascina P₂ lontano: i nodi interni nella tabella crescono con i lati vicini.",
   "knotVectors.try3":
-    "Trascina P₀: l'inizio della curva clamped lo segue esattamente, quello della curva unclamped si sposta solo di un sesto del trascinamento (per una cubica).",
+    "Trascina P₀: l'inizio della curva vincolata lo segue esattamente, quello della curva non vincolata si sposta solo di un sesto del trascinamento (per una cubica).",
   "localControl.title": "Controllo locale e inviluppo convesso forte",
   "localControl.summary":
     "Spostare un punto di controllo di una B-spline cambia solo p + 1 intervalli; ogni intervallo resta dentro l'inviluppo dei suoi p + 1 punti attivi.",
@@ -664,12 +666,12 @@ export default {
   "localControl.maxPoints": "questa demo consente al massimo {max} punti di controllo",
   "localControl.pointLabel": "C(u)",
   "localControl.formula.only": "solo questa parte si muove con",
-  "localControl.formula.vertices.many": "di vertici dell'inviluppo",
+  "localControl.formula.vertices.many": "vertici dell'inviluppo",
   "localControl.formula.vertices.one": "vertice dell'inviluppo",
   "localControl.formula.vertices.other": "vertici dell'inviluppo",
   "localControl.readout.span": "Intervallo k = {k}: {names}",
   "localControl.readout.hull.many":
-    "Solo questi p + 1 punti hanno qui Nᵢ,ₚ(u) ≠ 0; il loro inviluppo (ombreggiato, {count} di vertici) contiene tutto questo pezzo di curva.",
+    "Solo questi p + 1 punti hanno qui Nᵢ,ₚ(u) ≠ 0; il loro inviluppo (ombreggiato, {count} vertici) contiene tutto questo pezzo di curva.",
   "localControl.readout.hull.one":
     "Solo questi p + 1 punti hanno qui Nᵢ,ₚ(u) ≠ 0; il loro inviluppo (ombreggiato, {count} vertice) contiene tutto questo pezzo di curva.",
   "localControl.readout.hull.other":
@@ -677,8 +679,8 @@ export default {
   "localControl.readout.support":
     "Spostare {name} cambia C(u) solo per u in [{lo}; {hi}; il resto della curva resta fermo.",
   "localControl.aria":
-    "B-spline {kind} clamped con {count} punti di controllo; {name} muove solo la parte per u in [{lo}; {hi}; u = {u} sta nell'intervallo {k}, punti attivi {names}, inviluppo con {hull}; punto C(u) = ({x}; {y})",
-  "localControl.vertices.many": "{count} di vertici",
+    "B-spline {kind} vincolata con {count} punti di controllo; {name} muove solo la parte per u in [{lo}; {hi}; u = {u} sta nell'intervallo {k}, punti attivi {names}, inviluppo con {hull}; punto C(u) = ({x}; {y})",
+  "localControl.vertices.many": "{count} vertici",
   "localControl.vertices.one": "{count} vertice",
   "localControl.vertices.other": "{count} vertici",
   "localControl.tableCaption":
@@ -687,7 +689,7 @@ export default {
   "localControl.table.value": "Nᵢ,{p}(u)",
   "localControl.table.support": "non nulla per u in",
   "localControl.whatYouSee":
-    "Una B-spline cubica clamped (blu), il suo poligono di controllo (grigio, tratteggiato) e, sotto la figura, i suoi nodi come tacche sulla retta del parametro. La banda colorata segna la parte di curva che il punto cerchiato P_i può muovere: i parametri [u_i, u_{i+p+1}) in cui la sua funzione di base N_i,p non è zero; fuori da lì la curva non si muove affatto (controllo locale, sezione 3 del programma; le dispense croate: spostare un punto cambia al più p + 1 segmenti). La regione grigia piena è l'inviluppo convesso dei p + 1 punti attivi dell'intervallo che contiene u: tutto quel pezzo di curva vi giace dentro (inviluppo convesso forte), una regione molto più stretta dell'inviluppo dell'intero poligono (contornato).",
+    "Una B-spline cubica vincolata agli estremi (blu), il suo poligono di controllo (grigio, tratteggiato) e, sotto la figura, i suoi nodi come tacche sulla retta del parametro. La banda colorata segna la parte di curva che il punto cerchiato P_i può muovere: i parametri [u_i, u_{i+p+1}) in cui la sua funzione di base N_i,p non è zero; fuori da lì la curva non si muove affatto (controllo locale, sezione 3 del programma; le dispense croate: spostare un punto cambia al più p + 1 segmenti). La regione grigia piena è l'inviluppo convesso dei p + 1 punti attivi dell'intervallo che contiene u: tutto quel pezzo di curva vi giace dentro (inviluppo convesso forte), una regione molto più stretta dell'inviluppo dell'intero poligono (contornato).",
   "localControl.try1":
     "Trascina P₄ e osserva le estremità della curva: per u in [0, 1] e [5, 6] nulla si muove, esattamente dove la banda si ferma.",
   "localControl.try2":
@@ -718,9 +720,9 @@ export default {
   "knotInsertion.maxInserted":
     "questa demo inserisce al massimo {max} nodi; premi “Torna all'originale” per ricominciare",
   "knotInsertion.hoverLabel": "inserisci u = {u}",
-  "knotInsertion.formula.preview": "Inserisci userebbe:",
+  "knotInsertion.formula.preview": "L'inserimento userebbe:",
   "knotInsertion.readout": "{count} punti di controllo, {knots} nodi",
-  "knotInsertion.segments.many": "{count} di segmenti di Bézier (uno per intervallo non vuoto)",
+  "knotInsertion.segments.many": "{count} segmenti di Bézier (uno per intervallo non vuoto)",
   "knotInsertion.segments.one": "{count} segmento di Bézier (uno per intervallo non vuoto)",
   "knotInsertion.segments.other": "{count} segmenti di Bézier (uno per intervallo non vuoto)",
   "knotInsertion.segmentsOff":
@@ -740,7 +742,7 @@ export default {
     "B-spline {kind} con {count} punti di controllo e {knots} nodi dopo aver inserito u = {s} con α = {alphas}; la curva non cambia{segments}",
   "knotInsertion.ariaNone":
     "B-spline {kind} con {count} punti di controllo e {knots} nodi; inserire u = {s} userebbe α = {alphas}{segments}",
-  "knotInsertion.ariaSegments.many": "; {count} di segmenti di Bézier mostrati",
+  "knotInsertion.ariaSegments.many": "; {count} segmenti di Bézier mostrati",
   "knotInsertion.ariaSegments.one": "; {count} segmento di Bézier mostrato",
   "knotInsertion.ariaSegments.other": "; {count} segmenti di Bézier mostrati",
   "knotInsertion.whatYouSee":
@@ -757,7 +759,8 @@ export default {
   "multiplicity.aria":
     "B-spline cubica con {count} punti di controllo e nodi [{knots}]; nei nodi interni (molteplicità: garantita, misurata): {list}{through}{repeat}",
   "multiplicity.ariaThrough": "; la curva passa per {point} in u = {u}",
-  "multiplicity.ariaRepeat": "; punto di controllo ripetuto: {points}, misurata {measured}",
+  "multiplicity.ariaRepeat":
+    "; punto di controllo ripetuto: {points}, continuità misurata {measured}",
   "multiplicity.knotLegend": "Molteplicità del nodo",
   "multiplicity.knotReadout":
     "{names} = {u} · r = {r} · garantita {guaranteed} · misurata {measured}",
@@ -774,7 +777,7 @@ export default {
   "multiplicity.lower": "Diminuisci r (Canc)",
   "multiplicity.lower.title":
     "Sposta la copia superiore del nodo studiato a metà strada verso il nodo successivo",
-  "multiplicity.resetKnots": "Nodi clamped uniformi",
+  "multiplicity.resetKnots": "Nodi uniformi vincolati",
   "multiplicity.resetKnots.title":
     "Sostituisci i nodi con 4 nodi uguali agli estremi e nodi interni equidistanti",
   "multiplicity.multiplicity.max": "il nodo ha già la molteplicità massima, p + 1 = {max}",
@@ -787,7 +790,7 @@ export default {
   "multiplicity.repeatReadout": "{points}: in u{k} = {u} misurata {measured}",
   "multiplicity.repeatEnd": "{points}: troppo vicino a un estremo della curva per un nodo interno",
   "multiplicity.repeatHint":
-    "Ripetere un punto aggiunge punti di controllo, quindi i nodi tornano clamped uniformi.",
+    "Ripetere un punto aggiunge punti di controllo, quindi i nodi tornano uniformi vincolati.",
   "multiplicity.notesCaption":
     "La tabella delle dispense croate per le cubiche (i casi attuali evidenziati)",
   "multiplicity.notesBreak": "rottura (pezzi separati)",
@@ -795,7 +798,7 @@ export default {
   "multiplicity.colPoints": "Punti di controllo",
   "multiplicity.colKnots": "Nodi",
   "multiplicity.knotsCaption":
-    "Ogni nodo interno: la C^(p − r) garantita dal vettore dei nodi, e ciò che il core misura nella giunzione dei pezzi di Bézier",
+    "Ogni nodo interno: la C^(p − r) garantita dal vettore dei nodi, e ciò che il nucleo di calcolo misura nella giunzione dei pezzi di Bézier",
   "multiplicity.colKnot": "Nodo",
   "multiplicity.colR": "r",
   "multiplicity.colGuaranteed": "Garantita",
@@ -807,7 +810,7 @@ export default {
   "multiplicity.formulaBreak": "rottura",
   "multiplicity.formulaMeasured": "misurata:",
   "multiplicity.whatYouSee":
-    "Una B-spline cubica (blu) su otto punti di controllo e, sotto, il suo righello dei nodi: 0 0 0 0 1 2 3 4 5 5 5 5. Fondere i nodi aumenta la molteplicità r di un nodo e lì la continuità scende a C^(3 − r): con r = 2 la curva è C¹, con r = 3 solo C⁰ — passa per un punto di controllo e forma uno spigolo — e con r = 4 si spezza in due pezzi di Bézier separati. Ripetere invece un punto di controllo mantiene la C² parametrica, ma un punto triplo ferma la curva (velocità nulla) e dà uno spigolo, G⁰. La tabella è quella delle dispense croate (sezione 3 del programma); “misurata” è ciò che il core trova confrontando le derivate dei pezzi di Bézier in ogni giunzione. Per un punto doppio le dispense scrivono G¹; la misura dà G², perché la curvatura resta continua (scende a zero nei due nodi accanto al punto).",
+    "Una B-spline cubica (blu) su otto punti di controllo e, sotto, il suo righello dei nodi: 0 0 0 0 1 2 3 4 5 5 5 5. Fondere i nodi aumenta la molteplicità r di un nodo e lì la continuità scende a C^(3 − r): con r = 2 la curva è C¹, con r = 3 solo C⁰ — passa per un punto di controllo e forma uno spigolo — e con r = 4 si spezza in due pezzi di Bézier separati. Ripetere invece un punto di controllo mantiene la C² parametrica, ma un punto triplo ferma la curva (velocità nulla) e dà uno spigolo, G⁰. La tabella è quella delle dispense croate (sezione 3 del programma); “misurata” è ciò che il nucleo di calcolo trova confrontando le derivate dei pezzi di Bézier in ogni giunzione. Per un punto doppio le dispense scrivono G¹; la misura dà G², perché la curvatura resta continua (scende a zero nei due nodi accanto al punto).",
   "multiplicity.try1":
     "Fai clic su u₅ (il nodo in 2) sul righello e premi Invio tre volte: l'indicazione passa a C¹, C⁰ — ora la curva passa per P₄ con uno spigolo — e poi a “rottura”.",
   "multiplicity.try2":
@@ -823,8 +826,8 @@ export default {
   "matrixForm.aria.notPeriodic": "la sua matrice differisce da quella periodica",
   "matrixForm.degree.2": "quadratica (p = 2)",
   "matrixForm.degree.3": "cubica (p = 3)",
-  "matrixForm.knots.uniform": "nodi uniformi (unclamped)",
-  "matrixForm.knots.clamped": "nodi clamped",
+  "matrixForm.knots.uniform": "nodi uniformi (non vincolati)",
+  "matrixForm.knots.clamped": "nodi vincolati",
   "matrixForm.control.degree": "Grado",
   "matrixForm.control.knots": "Vettore dei nodi",
   "matrixForm.control.segment": "Segmento i (o fai clic sulla curva)",
@@ -835,7 +838,7 @@ export default {
   "matrixForm.periodic.yes": "Segmento {i}: matrice periodica",
   "matrixForm.periodic.no": "Segmento {i}: matrice propria",
   "matrixForm.degree": "Grado p = {p}, {count} punti di controllo, {segments}; nodi {knots}",
-  "matrixForm.segments.many": "{count} di segmenti",
+  "matrixForm.segments.many": "{count} segmenti",
   "matrixForm.segments.one": "{count} segmento",
   "matrixForm.segments.other": "{count} segmenti",
   "matrixForm.maxPoints": "questa demo consente al massimo {max} punti di controllo",
@@ -845,19 +848,19 @@ export default {
   "matrixForm.matrixCaption":
     "M del segmento {i} (intervallo k = {k}), da segmentMatrix(k): riga = potenza di t, colonna = il punto che moltiplica",
   "matrixForm.resultCaption":
-    "Il punto in t, due volte: il prodotto dei numeri sopra, e evaluate(u) del core",
+    "Il punto in t, due volte: il prodotto dei numeri sopra, e evaluate(u) del nucleo di calcolo",
   "matrixForm.result.product": "[tᵖ … 1] · M · punti",
   "matrixForm.result.evaluate": "evaluate(u)",
   "matrixForm.pointLabel": "C{i}(t)",
   "matrixForm.tex.periodic": "(segmento periodico: uniformSegmentMatrix(p))",
-  "matrixForm.tex.notPeriodic": "uniformSegmentMatrix(p): un segmento estremo di nodi clamped",
-  "matrixForm.tex.evaluate": "core:",
+  "matrixForm.tex.notPeriodic": "uniformSegmentMatrix(p): un segmento estremo di nodi vincolati",
+  "matrixForm.tex.evaluate": "nucleo:",
   "matrixForm.whatYouSee":
-    "Su un intervallo una B-spline è un polinomio nel parametro locale t, quindi ogni segmento si può scrivere come una riga di potenze di t, per una matrice M, per i p + 1 punti che agiscono lì — la forma matriciale delle dispense croate (sezione 3 del programma). Con nodi uniformi ogni segmento ha la stessa M (le dispense li chiamano segmenti periodici): [[1/2, −1, 1/2], [−1, 1, 0], [1/2, 1/2, 0]] per le quadratiche, 1/6·[[−1, 3, −3, 1], [3, −6, 3, 0], [−3, 0, 3, 0], [1, 4, 1, 0]] per le cubiche. Con nodi clamped i segmenti estremi hanno matrici proprie.",
+    "Su un intervallo una B-spline è un polinomio nel parametro locale t, quindi ogni segmento si può scrivere come una riga di potenze di t, per una matrice M, per i p + 1 punti che agiscono lì — la forma matriciale delle dispense croate (sezione 3 del programma). Con nodi uniformi ogni segmento ha la stessa M (le dispense li chiamano segmenti periodici): [[1/2, −1, 1/2], [−1, 1, 0], [1/2, 1/2, 0]] per le quadratiche, 1/6·[[−1, 3, −3, 1], [3, −6, 3, 0], [−3, 0, 3, 0], [1, 4, 1, 0]] per le cubiche. Con nodi vincolati i segmenti estremi hanno matrici proprie.",
   "matrixForm.try1":
     "Muovi il cursore del segmento: il tratto evidenziato e i suoi punti colorati si spostano, ma M resta la stessa.",
   "matrixForm.try2":
-    "Passa ai nodi clamped e scegli il segmento 1: M cambia (la curva deve partire da P₀); con 6 punti e p = 2 i segmenti 2 e 3 mantengono la matrice periodica, come nell'esempio delle dispense.",
+    "Passa ai nodi vincolati e scegli il segmento 1: M cambia (la curva deve partire da P₀); con 6 punti e p = 2 i segmenti 2 e 3 mantengono la matrice periodica, come nell'esempio delle dispense.",
   "matrixForm.try3":
     "Trascina uno dei punti cerchiati e confronta le due righe della tabella dei risultati: il prodotto matriciale e evaluate(u) coincidono in ogni cifra decimale.",
   "weights.title": "Pesi di una curva razionale",
@@ -918,7 +921,7 @@ export default {
   "conics.summary":
     "Una curva di Bézier razionale quadratica è una conica: un arco di ellisse per w₁ < 1, una parabola per w₁ = 1, un'iperbole sopra; con un triangolo isoscele e w₁ = sin θ, un arco di circonferenza.",
   "conics.whatYouSee":
-    "Una curva di Bézier razionale quadratica (blu) con pesi 1, w₁, 1 e, punteggiata, la parabola che essa è per w₁ = 1. Il core riconosce la conica dal fattore di forma k = w₁²/(w₀w₂): sotto 1 un arco di ellisse, uguale a 1 una parabola, sopra 1 un'iperbole; il punto di spalla P(1/2) scorre lungo la retta dal punto medio M della corda a P₁. Quando il triangolo è isoscele e w₁ = sin θ, con θ metà dell'angolo in P₁, l'arco è esattamente circolare: appare l'intera circonferenza, tratteggiata, con il suo centro. È la parte sulle coniche delle dispense greche (sezione 4 del programma).",
+    "Una curva di Bézier razionale quadratica (blu) con pesi 1, w₁, 1 e, punteggiata, la parabola che essa è per w₁ = 1. Il nucleo di calcolo riconosce la conica dal fattore di forma k = w₁²/(w₀w₂): sotto 1 un arco di ellisse, uguale a 1 una parabola, sopra 1 un'iperbole; il punto di spalla P(1/2) scorre lungo la retta dal punto medio M della corda a P₁. Quando il triangolo è isoscele e w₁ = sin θ, con θ metà dell'angolo in P₁, l'arco è esattamente circolare: appare l'intera circonferenza, tratteggiata, con il suo centro. È la parte sulle coniche delle dispense greche (sezione 4 del programma).",
   "conics.try1":
     "Digita 0,5, poi 1 e 2 nella casella di w₁: il nome passa da ellisse a parabola a iperbole, e la riga della tabella segue.",
   "conics.try2":
@@ -975,9 +978,9 @@ export default {
   "conics.ariaCircle": ", un arco di circonferenza di raggio {r} attorno a ({x}; {y})",
   "nurbsCircle.title": "Circonferenze e archi NURBS",
   "nurbsCircle.summary":
-    "Una circonferenza esatta come NURBS di grado 2: 9 punti di controllo, pesi 1 e √2/2, nodi 0,0,0,¼,¼,½,½,¾,¾,1,1,1; archi in pezzi di al più 90°, ellissi come loro immagini affini.",
+    "Una circonferenza esatta come NURBS di grado 2: 9 punti di controllo, pesi 1 e √2/2, nodi 0; 0; 0; ¼; ¼; ½; ½; ¾; ¾; 1; 1; 1. Archi in pezzi di al più 90°, ellissi come loro immagini affini.",
   "nurbsCircle.whatYouSee":
-    "Una circonferenza (o un arco, o un'ellisse) costruita dal core come NURBS di grado 2 (blu), il suo poligono di controllo con il peso di ogni punto, e le giunzioni dei suoi pezzi (anelli verdi). La circonferenza completa è la NURBS a 9 punti del programma (sezione 4, dalle dispense greche e italiane): gli angoli del quadrato hanno peso √2/2, i nodi sono 0,0,0,¼,¼,½,½,¾,¾,1,1,1. Un arco è diviso in pezzi di al più 90° i cui pesi centrali sono cos(Δ/2). L'indicatore misura quanto 2000 campioni distano dalla circonferenza esatta: 0 o qualche 10⁻¹⁶, solo arrotondamento — nessuna curva polinomiale può farlo.",
+    "Una circonferenza (o un arco, o un'ellisse) costruita dal nucleo di calcolo come NURBS di grado 2 (blu), il suo poligono di controllo con il peso di ogni punto, e le giunzioni dei suoi pezzi (anelli verdi). La circonferenza completa è la NURBS a 9 punti del programma (sezione 4, dalle dispense greche e italiane): gli angoli del quadrato hanno peso √2/2, i nodi sono 0; 0; 0; ¼; ¼; ½; ½; ¾; ¾; 1; 1; 1. Un arco è diviso in pezzi di al più 90° i cui pesi centrali sono cos(Δ/2). L'indicatore misura quanto 2000 campioni distano dalla circonferenza esatta: 0 o qualche 10⁻¹⁶, solo arrotondamento — nessuna curva polinomiale può farlo.",
   "nurbsCircle.try1":
     "Imposta l'ampiezza a 200°: l'arco ha 3 pezzi di 66,7° e pesi centrali cos 33,3° ≈ 0,835; l'errore sul raggio indica ancora circa 1e-16.",
   "nurbsCircle.try2":
@@ -1031,7 +1034,7 @@ export default {
   "nurbsCircle.column.weight": "wᵢ",
   "nurbsCircle.formula.circle": "circonferenza",
   "nurbsCircle.formula.here": "qui",
-  "nurbsCircle.formula.pieces.many": "di pezzi di",
+  "nurbsCircle.formula.pieces.many": "pezzi di",
   "nurbsCircle.formula.pieces.one": "pezzo di",
   "nurbsCircle.formula.pieces.other": "pezzi di",
   "nurbsCircle.formula.middleWeights": "pesi centrali",
@@ -1040,7 +1043,7 @@ export default {
   "projective.summary":
     "Trasforma una curva razionale con una prospettiva: trasformare i suoi punti di controllo e pesi dà esattamente la curva trasformata; trasformare i punti e tenere i vecchi pesi no.",
   "projective.whatYouSee":
-    "A sinistra una curva di Bézier cubica nel quadrato S₀S₁S₂S₃; a destra la sua immagine tramite la trasformazione prospettica H che manda il quadrato nel quadrilatero Q₀Q₁Q₂Q₃ (trascina gli angoli). Il core trasforma con H i punti di controllo omogenei della curva (wᵢPᵢ, wᵢ), ottenendo nuovi punti e nuovi pesi (blu continua); i punti arancioni sono i campioni della curva originale trasformati uno per uno con la stessa H, e giacciono esattamente su di essa — le curve razionali sono invarianti per trasformazioni proiettive, come dicono le dispense greche (sezione 4 del programma). La curva tratteggiata usa i punti trasformati con i vecchi pesi: sbaglia, perché una prospettiva cambia i pesi.",
+    "A sinistra una curva di Bézier cubica nel quadrato S₀S₁S₂S₃; a destra la sua immagine tramite la trasformazione prospettica H che manda il quadrato nel quadrilatero Q₀Q₁Q₂Q₃ (trascina gli angoli). Il nucleo di calcolo trasforma con H i punti di controllo omogenei della curva (wᵢPᵢ, wᵢ), ottenendo nuovi punti e nuovi pesi (blu continua); i punti arancioni sono i campioni della curva originale trasformati uno per uno con la stessa H, e giacciono esattamente su di essa — le curve razionali sono invarianti per trasformazioni proiettive, come dicono le dispense greche (sezione 4 del programma). La curva tratteggiata usa i punti trasformati con i vecchi pesi: sbaglia, perché una prospettiva cambia i pesi.",
   "projective.try1":
     "Trascina Q₂ verso Q₃: la prospettiva si accentua, i pesi trasformati si allontanano tra loro, e la curva tratteggiata si scosta sempre più dai punti, che restano sulla curva continua.",
   "projective.try2":
@@ -1101,7 +1104,7 @@ export default {
     "new BezierCurve(points, 2, weights) solleva un errore: “{message}”",
   "negativeWeights.libraryAccepts":
     "new BezierCurve(points, 2, weights) accetta questi pesi: ogni wᵢ > 0.",
-  "negativeWeights.poles.many": "{count} di poli, in t ≈ {list}",
+  "negativeWeights.poles.many": "{count} poli, in t ≈ {list}",
   "negativeWeights.poles.one": "1 polo, in t ≈ {list}",
   "negativeWeights.poles.other": "{count} poli, in t ≈ {list}",
   "negativeWeights.noPoles": "nessun polo: w(t) > 0 su [0, 1]",
@@ -1156,7 +1159,7 @@ export default {
   "lagrange.control.count.input": "numero di punti (da {min} a {max})",
   "lagrange.countRange":
     "il numero di punti deve essere un intero da {min} a {max}, ricevuto “{value}”",
-  "lagrange.degree.many": "{count} di punti: un polinomio di grado n = {n}",
+  "lagrange.degree.many": "{count} punti: un polinomio di grado n = {n}",
   "lagrange.degree.one": "{count} punto: grado n = {n}",
   "lagrange.degree.other": "{count} punti: un polinomio di grado n = {n}",
   "lagrange.minPoints": "qui l'interpolazione di Lagrange richiede almeno {min} punti",
@@ -1212,7 +1215,7 @@ export default {
   "bezierPatch.texGeneratrix":
     "\\text{generatrice in } v = {v}\\text{: punti di controllo } D_i(v) = [v^3\\ v^2\\ v\\ 1]\\,M\\,[P_{i0}\\ P_{i1}\\ P_{i2}\\ P_{i3}]^T",
   "bezierPatch.whatYouSee":
-    "Una patch di Bézier bicubica S(u, v) = Σ Σ B_i(u) B_j(v) P_ij sulla sua rete di controllo 4 × 4 (grigia, tratteggiata), illuminata dalle normali calcolate dal core. Come nelle dispense croate (sezione 6), ogni riga della rete definisce una direttrice D_i(v) (verde); per un dato v i loro punti D_0(v) … D_3(v) sono i punti di controllo della generatrice (vermiglia), una cubica in u che descrive la superficie al variare di v. Solo la prima e l'ultima direttrice giacciono sulla patch. La freccia è la normale unitaria nel punto sonda S(u, v). La forma matriciale scrive la patch come [u³ u² u 1] A [v³ v² v 1]ᵀ con A = M P Mᵀ, una matrice 4 × 4 per coordinata, calcolata dal core dalla rete attuale. Le strisce zebra riflettono bande di luce parallele sulla superficie; le ombreggiature di curvatura colorano ogni punto secondo K o H, blu negativo, bianco zero, vermiglio positivo, in scala rispetto al valore assoluto massimo sulla patch (gli estremi della legenda).",
+    "Una patch di Bézier bicubica S(u, v) = Σ Σ B_i(u) B_j(v) P_ij sulla sua rete di controllo 4 × 4 (grigia, tratteggiata), illuminata dalle normali calcolate dal nucleo di calcolo. Come nelle dispense croate (sezione 6), ogni riga della rete definisce una direttrice D_i(v) (verde); per un dato v i loro punti D_0(v) … D_3(v) sono i punti di controllo della generatrice (vermiglia), una cubica in u che descrive la superficie al variare di v. Solo la prima e l'ultima direttrice giacciono sulla patch. La freccia è la normale unitaria nel punto sonda S(u, v). La forma matriciale scrive la patch come [u³ u² u 1] A [v³ v² v 1]ᵀ con A = M P Mᵀ, una matrice 4 × 4 per coordinata, calcolata dal nucleo di calcolo dalla rete attuale. Le strisce zebra riflettono bande di luce parallele sulla superficie; le ombreggiature di curvatura colorano ogni punto secondo K o H, blu negativo, bianco zero, vermiglio positivo, in scala rispetto al valore assoluto massimo sulla patch (gli estremi della legenda).",
   "bezierPatch.try1":
     "Premi Avvia accanto a v e osserva la generatrice percorrere la patch mentre i suoi punti di controllo scorrono lungo le direttrici.",
   "bezierPatch.try2":
@@ -1244,8 +1247,8 @@ export default {
     "{count} nodi per {n} punti di controllo di grado {p}; digita un vettore e premi Invio",
   "nurbsSurface.control.insertU": "Inserisci u nella sonda (aggiunge una riga)",
   "nurbsSurface.control.insertV": "Inserisci v nella sonda (aggiunge una colonna)",
-  "nurbsSurface.control.clamped": "Clamped uniforme",
-  "nurbsSurface.control.uniform": "Uniforme (unclamped)",
+  "nurbsSurface.control.clamped": "Uniformi vincolati",
+  "nurbsSurface.control.uniform": "Uniformi (non vincolati)",
   "nurbsSurface.control.weights": "Peso del punto selezionato (seleziona una maniglia)",
   "nurbsSurface.control.weight": "Peso di {name}",
   "nurbsSurface.control.weight.input": "peso del punto di controllo selezionato",
@@ -1272,7 +1275,7 @@ export default {
     "Nodo v = {at} inserito: regola di Boehm su ogni riga, ora la rete è {rows} × {cols}",
   "nurbsSurface.noSeams":
     "Nessun nodo interno: una sola patch polinomiale (o razionale), nessuna cucitura",
-  "nurbsSurface.seamsReadout": "Cuciture misurate dal core: {u} · {v}",
+  "nurbsSurface.seamsReadout": "Cuciture misurate dal nucleo di calcolo: {u} · {v}",
   "nurbsSurface.legend": "Cuciture",
   "nurbsSurface.legendFreshRows": "nuove righe",
   "nurbsSurface.legendFreshColumns": "nuove colonne",
@@ -1284,7 +1287,7 @@ export default {
   "nurbsSurface.texInsertedV":
     "\\text{dopo } \\texttt{insertKnotV}\\text{: le colonne } {first}\\text{–}{last} \\text{ sono nuove (Boehm su ogni riga), una colonna in più}",
   "nurbsSurface.whatYouSee":
-    "Una superficie B-spline a prodotto tensoriale S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (con pesi w_ij una superficie NURBS) sulla sua rete di controllo (grigia, tratteggiata). Ogni direzione ha il proprio grado e vettore dei nodi, e il dominio è [u_p, u_m+1] × [v_q, v_n+1]. Come dicono le dispense greche, si può inserire un nodo in ciascun vettore separatamente: inserire in u applica l'algoritmo di Boehm a ogni colonna della rete, il che aggiunge un'intera riga di punti di controllo senza cambiare la superficie (le righe create dalla regola di Boehm sono disegnate scure); in v agisce sulle righe e aggiunge una colonna. Le linee colorate sono le cuciture, le curve isoparametriche nei nodi interni, colorate secondo la continuità che il core misura attraverso di esse (C^(p−r) per un nodo di molteplicità r). Spostare un punto di controllo cambia la superficie solo su (p + 1) × (q + 1) intervalli: controllo locale. A differenza delle curve, le superfici non hanno la proprietà di diminuzione della variazione. La scelta Ombreggiatura mostra strisce zebra (una piega in esse è una rottura della continuità tangente) o la curvatura gaussiana o media, dalle derivate esatte del core.",
+    "Una superficie B-spline a prodotto tensoriale S(u, v) = Σ Σ N_i,p(u) N_j,q(v) P_ij (con pesi w_ij una superficie NURBS) sulla sua rete di controllo (grigia, tratteggiata). Ogni direzione ha il proprio grado e vettore dei nodi, e il dominio è [u_p, u_m+1] × [v_q, v_n+1]. Come dicono le dispense greche, si può inserire un nodo in ciascun vettore separatamente: inserire in u applica l'algoritmo di Boehm a ogni colonna della rete, il che aggiunge un'intera riga di punti di controllo senza cambiare la superficie (le righe create dalla regola di Boehm sono disegnate scure); in v agisce sulle righe e aggiunge una colonna. Le linee colorate sono le cuciture, le curve isoparametriche nei nodi interni, colorate secondo la continuità che il nucleo di calcolo misura attraverso di esse (C^(p−r) per un nodo di molteplicità r). Spostare un punto di controllo cambia la superficie solo su (p + 1) × (q + 1) intervalli: controllo locale. A differenza delle curve, le superfici non hanno la proprietà di diminuzione della variazione. La scelta Ombreggiatura mostra strisce zebra (una piega in esse è una rottura della continuità tangente) o la curvatura gaussiana o media, dalle derivate esatte del nucleo di calcolo.",
   "nurbsSurface.try1":
     "Premi “Inserisci u nella sonda”: compare una nuova riga di punti e la superficie resta esattamente dov'era; la legenda delle cuciture acquista il nuovo nodo.",
   "nurbsSurface.try2":
@@ -1292,9 +1295,9 @@ export default {
   "nurbsSurface.try3":
     "Seleziona una maniglia interna e aumentane il peso: la superficie viene attratta verso di essa, e solo nelle sue vicinanze (controllo locale).",
   "nurbsSurface.try4":
-    "Trascina un punto d'angolo, poi uno interno: la superficie clamped passa per gli angoli ma mai per i punti interni.",
+    "Trascina un punto d'angolo, poi uno interno: la superficie vincolata passa per gli angoli ma mai per i punti interni.",
   "nurbsSurface.try5":
-    "Passa una direzione a nodi uniformi (unclamped): la superficie si ritira dal bordo della sua rete.",
+    "Passa una direzione a nodi uniformi (non vincolati): la superficie si ritira dal bordo della sua rete.",
   "surfaceInterpolation.title": "Interpolazione di superfici",
   "surfaceInterpolation.summary":
     "Una superficie B-spline per ogni punto di una griglia 4 × 5: parametri, nodi, poi ogni colonna interpolata in u e ogni riga del risultato in v.",
@@ -1363,7 +1366,7 @@ export default {
   "surfaceRevolution.control.iso": "Curve isoparametriche",
   "surfaceRevolution.control.wireframe": "Fil di ferro",
   "surfaceRevolution.check.torus":
-    "Rete {rows} × {cols}. Distanza massima dal toro sulla griglia di campioni del core: {distance} — esatta a meno di arrotondamenti.",
+    "Rete {rows} × {cols}. Distanza massima dal toro sulla griglia di campioni del nucleo di calcolo: {distance} — esatta a meno di arrotondamenti.",
   "surfaceRevolution.check.vase":
     "Rete {rows} × {cols}. A ogni fotogramma di trascinamento la superficie viene ricostruita con sl.revolve ({revolve} ms) e trasformata in mesh ({mesh} ms).",
   "surfaceRevolution.check.extrude":
@@ -1380,7 +1383,7 @@ export default {
   "surfaceRevolution.tex.torusCheck":
     "\\max_{{n} \\times {n}\\text{ griglia}} \\Bigl|\\sqrt{\\bigl(\\sqrt{x^2+y^2} - {R}\\bigr)^2 + z^2} - {r}\\Bigr| = {distance}\\text{: esatta}",
   "surfaceRevolution.tex.profile":
-    "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: cubica clamped}",
+    "C(v) = \\sum_{j=0}^{{n}} N_{j,3}(v)\\,(x_j,\\ 0,\\ z_j)\\text{: cubica vincolata}",
   "surfaceRevolution.tex.revolveVase":
     "S(u, v) = \\bigl(x(v)\\cos 2\\pi u,\\ x(v)\\sin 2\\pi u,\\ z(v)\\bigr)\\text{: rete } {rows} \\times {cols}\\text{ (A8.1)}",
   "surfaceRevolution.tex.vaseNet":
@@ -1396,7 +1399,7 @@ export default {
     "\\text{prima compatibili: } A_i' = \\tfrac{i}{3} A_{i-1} + \\bigl(1 - \\tfrac{i}{3}\\bigr) A_i\\text{ (grado 2} \\to 3\\text{), rete } {rows} \\times {cols}\\text{ (§10.3)}",
   "surfaceRevolution.tex.ruledCheck": "A({u}) = {a},\\ B({u}) = {b},\\ S({u}, \\tfrac12) = {mid}",
   "surfaceRevolution.whatYouSee":
-    "Superfici che il core costruisce da curve, ciascuna con la sua rete di controllo (grigia, tratteggiata) e le curve isoparametriche. La rivoluzione ruota una curva profilo attorno all'asse z: ogni punto di controllo Pⱼ diventa una circonferenza di 9 punti di controllo (quattro archi quadratici esatti, pesi 1, √2/2, 1, …), così un profilo circolare dà esattamente un toro e il vaso è esatto in ogni direzione attorno all'asse. L'estrusione trasla il profilo lungo un vettore d: due colonne, Pᵢ e Pᵢ + d. La superficie rigata unisce una quadratica A e una cubica B con segmenti rettilinei (le generatrici): il core prima eleva A al grado 3 così che entrambe abbiano stesso grado e stessi nodi.",
+    "Superfici che il nucleo di calcolo costruisce da curve, ciascuna con la sua rete di controllo (grigia, tratteggiata) e le curve isoparametriche. La rivoluzione ruota una curva profilo attorno all'asse z: ogni punto di controllo Pⱼ diventa una circonferenza di 9 punti di controllo (quattro archi quadratici esatti, pesi 1, √2/2, 1, …), così un profilo circolare dà esattamente un toro e il vaso è esatto in ogni direzione attorno all'asse. L'estrusione trasla il profilo lungo un vettore d: due colonne, Pᵢ e Pᵢ + d. La superficie rigata unisce una quadratica A e una cubica B con segmenti rettilinei (le generatrici): il nucleo di calcolo prima eleva A al grado 3 così che entrambe abbiano stesso grado e stessi nodi.",
   "surfaceRevolution.try1":
     "Toro: porta l'angolo fino a 90° e osserva la rete passare da 9 righe a 3 (un arco); a 180°, 5.",
   "surfaceRevolution.try2":
@@ -1406,7 +1409,7 @@ export default {
   "surfaceRevolution.try4":
     "Estrusione: trascina la punta d della freccia per inclinare la parete; ogni generatrice dell'estrusione è una copia di d.",
   "surfaceRevolution.try5":
-    "Rigata: confronta i quattro punti arancioni (la prima colonna della rete) con i tre punti di A — il core ha elevato A a una cubica con quattro punti che disegnano la stessa curva, così A e B possono condividere una sola rete.",
+    "Rigata: confronta i quattro punti arancioni (la prima colonna della rete) con i tre punti di A — il nucleo di calcolo ha elevato A a una cubica con quattro punti che disegnano la stessa curva, così A e B possono condividere una sola rete.",
   "patchDeCasteljau.title": "De Casteljau su una patch",
   "patchDeCasteljau.summary":
     "Il punto S(u, v) di una patch di Bézier costruito solo con curve: de Casteljau su ogni riga in v, poi ancora una volta in u sui risultati. Partendo dalle colonne si ottiene lo stesso punto.",
@@ -1511,15 +1514,15 @@ export default {
   "patchSubdivision.texCounts":
     "\\text{{triangles} triangoli}\\quad\\text{rispetto a}\\quad 2 \\cdot {n}^2 = {uniform} \\text{ su una griglia uniforme fine come la cella più fine}",
   "patchSubdivision.whatYouSee":
-    "Le dispense greche suddividono una superficie di Bézier come una curva: scegli una coppia (u₀, v₀); de Casteljau su ogni riga della rete divide la curva di ogni riga in una parte “sinistra” e una “destra”; de Casteljau sulle colonne di entrambe le parti divide ciascuna in una parte “superiore” e una “inferiore”. Il risultato sono quattro patch dello stesso tipo, ciascuna con la propria rete (m + 1) × (n + 1) (i quattro colori); insieme formano la patch, e si incontrano in S(u₀, v₀). In “Adattiva” si applica la regola di disegno delle dispense: se i punti di controllo sono (quasi) complanari, disegna il quadrilatero dei quattro punti d'angolo, altrimenti suddividi in quattro e ripeti per ogni pezzo. Qui “quasi” è misurato rispetto alla tolleranza ε (δ limita la distanza della rete dalla patch bilineare dei suoi angoli, D è la sua torsione), così ogni punto di ogni triangolo dista meno di ε dalla superficie. Il riquadro mostra le celle nel quadrato (u, v).",
+    "Le dispense greche suddividono una superficie di Bézier come una curva: scegli una coppia (u₀, v₀); de Casteljau su ogni riga della rete divide la curva di ogni riga in una parte “sinistra” e una “destra”; de Casteljau sulle colonne di entrambe le parti divide ciascuna in una parte “superiore” e una “inferiore”. Il risultato sono quattro patch dello stesso tipo, ciascuna con la propria rete (m + 1) × (n + 1) (i quattro colori); insieme formano la patch, e si incontrano in S(u₀, v₀). In “Tassellazione adattiva” si applica la regola di disegno delle dispense: se i punti di controllo sono (quasi) complanari, disegna il quadrilatero dei quattro punti d'angolo, altrimenti suddividi in quattro e ripeti per ogni pezzo. Qui “quasi” è misurato rispetto alla tolleranza ε (δ limita la distanza della rete dalla patch bilineare dei suoi angoli, D è la sua torsione), così ogni punto di ogni triangolo dista meno di ε dalla superficie. Il riquadro mostra le celle nel quadrato (u, v).",
   "patchSubdivision.try1":
     "Muovi u₀ e v₀: le quattro reti cambiano, ma il loro angolo comune giace sempre sulla patch, in S(u₀, v₀).",
   "patchSubdivision.try2":
     "Trascina u₀ a 0: due pezzi si riducono a curve (le loro reti collassano sul bordo).",
   "patchSubdivision.try3":
-    "Passa ad “Adattiva” e diminuisci ε: le celle si dividono dove la patch si piega, e restano grandi dove è quasi piatta.",
+    "Passa a “Tassellazione adattiva” e diminuisci ε: le celle si dividono dove la patch si piega, e restano grandi dove è quasi piatta.",
   "patchSubdivision.try4":
-    "In “Adattiva”, trascina il rilievo P₂₂ fino al piano dei suoi vicini: le celle piccole attorno si fondono in celle grandi.",
+    "In “Tassellazione adattiva”, trascina il rilievo P₂₂ fino al piano dei suoi vicini: le celle piccole attorno si fondono in celle grandi.",
   "patchSubdivision.try5":
     "Confronta il numero di triangoli con una griglia uniforme fine come la cella più fine: la mesh adattiva spende i suoi triangoli solo dove la patch si piega.",
   "hermite.title": "Interpolazione cubica di Hermite",
@@ -1528,7 +1531,7 @@ export default {
   "hermite.aria":
     "Curva di Hermite cubica a tratti per {count} punti dati; t = {t}; P(t) = ({x}; {y}); giunzioni: {joints}",
   "hermite.whatYouSee":
-    "La curva blu passa per i punti dati P₀ … Pₙ in t = 0, 1, 2, …; in ogni punto una freccia arancione mostra la sua tangente m (disegnata a metà della lunghezza; trascinane la punta). Tra Pᵢ e Pᵢ₊₁ la curva è H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, con le quattro funzioni di base di Hermite tracciate sotto (sezione 5 del programma, dal capitolo sull'interpolazione delle dispense greche e dalle dispense croate). Condividere una tangente per punto rende la curva C¹; la verifica di continuità del core indica il tipo di ogni giunzione.",
+    "La curva blu passa per i punti dati P₀ … Pₙ in t = 0, 1, 2, …; in ogni punto una freccia arancione mostra la sua tangente m (disegnata a metà della lunghezza; trascinane la punta). Tra Pᵢ e Pᵢ₊₁ la curva è H₀·Pᵢ + H₁·Pᵢ₊₁ + H₂·Δmᵢ + H₃·Δmᵢ₊₁, con le quattro funzioni di base di Hermite tracciate sotto (sezione 5 del programma, dal capitolo sull'interpolazione delle dispense greche e dalle dispense croate). Condividere una tangente per punto rende la curva C¹; la verifica di continuità del nucleo di calcolo indica il tipo di ogni giunzione.",
   "hermite.try1":
     "Premi Avvia e osserva il marcatore scorrere lungo H₀ … H₃ sotto: in u = 1/2 la tabella indica H₀ = H₁ = 1/2 e H₂ = −H₃ = 1/8.",
   "hermite.try2":
@@ -1549,12 +1552,12 @@ export default {
   "hermite.control.ratio": "λ = |m⁻| / |m⁺|",
   "hermite.control.ratio.input":
     "rapporto λ tra le lunghezze della tangente entrante e di quella uscente",
-  "hermite.joints": "Verifica del core nelle giunzioni: {list}",
+  "hermite.joints": "Verifica del nucleo di calcolo nelle giunzioni: {list}",
   "hermite.noJoints": "Un solo pezzo: nessuna giunzione da verificare",
   "hermite.g1Only": "solo G¹",
   "hermite.c0Only": "solo C⁰",
   "hermite.marker": "u = {u}",
-  "hermite.formula.checker": "verifica del core:",
+  "hermite.formula.checker": "verifica del nucleo di calcolo:",
   "hermite.col.function": "Funzione",
   "hermite.col.polynomial": "Polinomio",
   "hermite.col.value": "Valore in u",
@@ -1569,7 +1572,7 @@ export default {
   "cardinal.try1":
     "Porta α da 0,5 fino a 0: la curva continua diventa quella tratteggiata e appare il cappio nel segmento 1; con α = 1 (lunghezza di corda) aderisce al poligono.",
   "cardinal.try2":
-    "Passa a cardinale e porta la tensione c verso 1: le tangenti si annullano e la curva diventa il poligono; con c < 0 va oltre.",
+    "Passa a cardinale e porta la tensione c verso 1: le tangenti si annullano e la curva diventa il poligono; con c < 0 produce sovraelongazioni (overshoot).",
   "cardinal.try3":
     "Allontana P₂ da P₁ finché i segmenti hanno circa la stessa lunghezza: il cappio della curva uniforme scompare — cuspidi e cappi nascono dalla spaziatura irregolare.",
   "cardinal.minPoints": "questa demo richiede almeno {min} punti dati",
@@ -1596,7 +1599,7 @@ export default {
   "cardinal.formula.ghost": "(α = 0: la curva tratteggiata)",
   "cardinal.col.point": "Punto",
   "cardinal.col.param": "Parametro tᵢ",
-  "cardinal.col.tangent": "Tangente mᵢ (core)",
+  "cardinal.col.tangent": "Tangente mᵢ (nucleo di calcolo)",
   "cardinal.tableCaption": "Parametri e tangenti nei punti dati",
   "cubicSpline.title": "Spline cubiche C2: condizioni agli estremi",
   "cubicSpline.summary":
@@ -1613,7 +1616,7 @@ export default {
     "Spunta “Sovrapponi tutte e sei” e trascina un punto al centro: lontano dagli estremi le sei curve coincidono, vicino agli estremi si separano. Passa ai parametri a lunghezza di corda e trascina un punto vicino al suo vicino.",
   "cubicSpline.minPoints": "qui una spline richiede almeno {min} punti",
   "cubicSpline.maxPoints": "questa demo consente al massimo {max} punti",
-  "cubicSpline.pointCount.many": "{count} di punti, n = {n}",
+  "cubicSpline.pointCount.many": "{count} punti, n = {n}",
   "cubicSpline.pointCount.one": "{count} punto",
   "cubicSpline.pointCount.other": "{count} punti, n = {n}",
   "cubicSpline.control.end": "Condizione agli estremi",
@@ -1669,7 +1672,7 @@ export default {
   "cubicSpline.tableHidden": " ({count} righe e colonne centrali omesse: ⋮, ⋯)",
   "parametrization.title": "Parametrizzazione: uniforme, lunghezza di corda, centripeta",
   "parametrization.summary":
-    "Gli stessi punti interpolati con parametri uniformi, a lunghezza di corda e centripeti, con la velocità e le tacche dei parametri di ogni curva: una spaziatura irregolare fa andare oltre la curva uniforme.",
+    "Gli stessi punti interpolati con parametri uniformi, a lunghezza di corda e centripeti, con la velocità e le tacche dei parametri di ogni curva: una spaziatura irregolare fa produrre sovraelongazioni (overshoot) alla curva uniforme.",
   "parametrization.aria":
     "{method} per {count} punti dati con parametri uniformi, a lunghezza di corda, centripeti e α = {alpha}; in s = {s}: uniforme {uniform}, corda {chord}, centripeta {centripetal}; le loro velocità sono tracciate sotto",
   "parametrization.control.s": "Parametro normalizzato s",
@@ -1752,12 +1755,12 @@ export default {
   "bsplineInterpolation.control.notesKnots": "I nodi delle dispense 0 0 0 1 2 3 4 4 4",
   "bsplineInterpolation.knotsNotes": "Nodi U = {list} (la scelta delle dispense)",
   "bsplineInterpolation.knotsDefault":
-    "Nodi U = {list} (la scelta predefinita del core: parametri mediati)",
+    "Nodi U = {list} (la scelta predefinita del nucleo di calcolo: parametri mediati)",
   "bsplineInterpolation.sizeNote": "{points} e le derivate danno {unknowns}",
-  "bsplineInterpolation.dataPoints.many": "{count} di punti dati",
+  "bsplineInterpolation.dataPoints.many": "{count} punti dati",
   "bsplineInterpolation.dataPoints.one": "{count} punto dato",
   "bsplineInterpolation.dataPoints.other": "{count} punti dati",
-  "bsplineInterpolation.controlPoints.many": "{count} di punti di controllo",
+  "bsplineInterpolation.controlPoints.many": "{count} punti di controllo",
   "bsplineInterpolation.controlPoints.one": "{count} punto di controllo",
   "bsplineInterpolation.controlPoints.other": "{count} punti di controllo",
   "bsplineInterpolation.notesExample": "Esempio croato",
@@ -1788,14 +1791,14 @@ export default {
   "interpolateApproximate.summary":
     "Gli stessi punti come punti di controllo (la curva ne è attratta), come dati raggiunti esattamente, o come dati approssimati da meno punti di controllo nel senso dei minimi quadrati.",
   "interpolateApproximate.aria.control":
-    "B-spline {kind} con i {count} punti come punti di controllo (nodi clamped): passa solo per il primo e l'ultimo",
+    "B-spline {kind} con i {count} punti come punti di controllo (nodi vincolati): passa solo per il primo e l'ultimo",
   "interpolateApproximate.aria.data":
     "B-spline {kind} approssimante {count} punti dati con {control} ({fit}); residuo massimo {max}",
   "interpolateApproximate.aria.interpolation": "interpolazione",
   "interpolateApproximate.aria.leastSquares": "minimi quadrati, estremi esatti",
   "interpolateApproximate.roleLegend": "I punti sono",
   "interpolateApproximate.role.control": "punti di controllo (approssimazione)",
-  "interpolateApproximate.role.data": "punti dati (interpolazione o approssimazione)",
+  "interpolateApproximate.role.data": "punti dati (interpolazione o minimi quadrati)",
   "interpolateApproximate.degreeLegend": "Grado p",
   "interpolateApproximate.degreeOption": "{p}",
   "interpolateApproximate.minPoints": "una B-spline di grado {degree} richiede almeno {min} punti",
@@ -1804,7 +1807,7 @@ export default {
   "interpolateApproximate.control.count.input": "numero di punti di controllo",
   "interpolateApproximate.countRange":
     "il numero di punti di controllo deve essere un intero da {min} (grado + 1) a {max} (i punti), ricevuto “{value}”",
-  "interpolateApproximate.controlPoints.many": "{count} di punti di controllo",
+  "interpolateApproximate.controlPoints.many": "{count} punti di controllo",
   "interpolateApproximate.controlPoints.one": "{count} punto di controllo",
   "interpolateApproximate.controlPoints.other": "{count} punti di controllo",
   "interpolateApproximate.note.control":
@@ -1817,7 +1820,7 @@ export default {
   "interpolateApproximate.legendGiven": "poligono di controllo: i punti",
   "interpolateApproximate.legendFitted": "poligono di controllo rⱼ (calcolato)",
   "interpolateApproximate.legendResidual": "residuo pₖ − C(tₖ)",
-  "interpolateApproximate.tex.control": "nodi clamped uniformi",
+  "interpolateApproximate.tex.control": "nodi uniformi vincolati",
   "interpolateApproximate.whatYouSee":
     "Gli stessi punti possono avere due ruoli. Come punti di controllo modellano una B-spline che parte dal primo, finisce nell'ultimo e si avvicina soltanto agli altri — l'approssimazione del design interattivo delle dispense. Come punti dati (con parametri tₖ a lunghezza di corda) sono raggiunti esattamente da una B-spline interpolante con altrettanti punti di controllo, oppure, con meno punti di controllo, approssimati nel senso dei minimi quadrati con entrambi gli estremi esatti: i brevi segmenti da ogni punto alla curva sono i residui pₖ − C(tₖ), e i quadrati grigi sul poligono tratteggiato i punti di controllo calcolati. Sezione 5 del programma (interpolazione e approssimazione), dalle dispense croate e greche.",
   "interpolateApproximate.try1":
@@ -1833,7 +1836,7 @@ export default {
   "exercise.label": "Esercizio",
   "exercise.check": "Verifica",
   "exercise.hint": "Suggerimento",
-  "exercise.solved": "Risolto: il core lo conferma.",
+  "exercise.solved": "Risolto: il nucleo di calcolo lo conferma.",
   "exercise.unknown": "Non esiste un esercizio “{id}”.",
   "exercise.close-the-gap.title": "Colma la distanza",
   "exercise.close-the-gap.task":
@@ -1846,7 +1849,8 @@ export default {
     "I pezzi si incontrano, ma formano un angolo. Sposta Q₁ in modo che la giunzione sia C¹: la stessa derivata da entrambi i lati.",
   "exercise.make-it-c1.hint":
     "Per due cubiche C¹ significa 3(P₃ − P₂) = 3(Q₁ − Q₀), quindi Q₁ = 2P₃ − P₂ = (5; −1).",
-  "exercise.make-it-c1.notYet": "Non ancora: il core misura C{detail} nella giunzione.",
+  "exercise.make-it-c1.notYet":
+    "Non ancora: il nucleo di calcolo misura C{detail} nella giunzione.",
   "exercise.bezier-pieces.title": "Taglia la curva in segmenti di Bézier",
   "exercise.bezier-pieces.task":
     "Inserisci nodi finché ogni nodo interno ha molteplicità p = 2: allora la curva si scompone in segmenti di Bézier quadratici.",
@@ -1902,6 +1906,8 @@ export default {
     "il numero di coordinate {count} non è multiplo di dim = {dim}; i punti si danno in forma piatta [{firstPoint}, x1, …]",
   "coreError.not-finite":
     "{subject}: il valore {value} non è ammesso; ogni numero deve essere finito",
+  "coreError.coordinate-too-large":
+    "{subject}: il valore {value} è troppo grande; una coordinata deve avere valore assoluto al più {max}, perché derivate e lunghezze restino finite",
   "coreError.too-few-points.one":
     "{what}: serve almeno {needed} punto di controllo, ricevuti {got}",
   "coreError.too-few-points.many":
@@ -2037,7 +2043,7 @@ export default {
     "{operation} funziona su spline costruite con {needs}; questa è stata costruita con {got}",
   "coreError.conflicting-options": "{first} non si può combinare con {second}: {reason}",
   "coreError.knots-not-clamped":
-    "un'approssimazione ai minimi quadrati con estremi esatti richiede nodi clamped: i {end} p+1 = {order} nodi devono essere uguali a {param}",
+    "un'approssimazione ai minimi quadrati con estremi esatti richiede nodi vincolati agli estremi (clamped): i {end} p+1 = {order} nodi devono essere uguali a {param}",
   "coreError.freed": "questo {className} è stato liberato (free)",
   "coreError.no-constructor":
     "new {className}() non è disponibile: un {className} si ottiene da {makers}",
@@ -2107,7 +2113,7 @@ export default {
   "coreError.subject.bspline-interpolation-system": "il sistema di interpolazione B-spline",
   "coreError.subject.cardinal-spline": "una spline cardinale",
   "coreError.subject.catmull-rom-spline": "una spline di Catmull–Rom",
-  "coreError.subject.clamped-end-condition": "la condizione agli estremi “clamped” (vincolata)",
+  "coreError.subject.clamped-end-condition": "la condizione agli estremi vincolata (clamped)",
   "coreError.subject.closed-has-no-ends": "una curva chiusa non ha estremi",
   "coreError.subject.closed-interpolating-bspline":
     "una B-spline interpolante chiusa di questo grado (p + 1, almeno 3)",
@@ -2124,9 +2130,9 @@ export default {
   "coreError.subject.degree-v-columns": "degreeV (colonne lungo v)",
   "coreError.subject.derivative-order": "ordine di derivazione",
   "coreError.subject.every-piece": "ogni pezzo (grado >= 1)",
-  "coreError.subject.flattening-segments": "numero di segmenti dell'appiattimento",
+  "coreError.subject.flattening-segments": "numero di segmenti della linearizzazione",
   "coreError.subject.flattening-segments-estimated":
-    "numero di segmenti dell'appiattimento (stimato prima di appiattire: abbassa il grado o aumenta la tolleranza)",
+    "numero di segmenti della linearizzazione (stimato prima di linearizzare: abbassa il grado o aumenta la tolleranza)",
   "coreError.subject.grid-points": "punti della griglia us.length·vs.length",
   "coreError.subject.hermite-spline": "una spline di Hermite",
   "coreError.subject.interpolating-bspline":

@@ -29,6 +29,8 @@ export const CORE_ERRORS = {
   "coreError.coordinate-count":
     "coordinate count {count} is not a multiple of dim = {dim}; points are given as flat [{firstPoint}, x1, …]",
   "coreError.not-finite": "{subject} is {value}; every number must be finite",
+  "coreError.coordinate-too-large":
+    "{subject} is {value}; a coordinate must be at most {max} in magnitude, so that derivatives and lengths stay finite",
   "coreError.too-few-points.one": "{what} needs at least {needed} control point, got {got}",
   "coreError.too-few-points.other": "{what} needs at least {needed} control points, got {got}",
   "coreError.weight-count": "weights must have one value per control point ({expected}), got {got}",

@@ -1,0 +1,240 @@
+// The built site (`make dist`, scripts/dist.mjs) in the browser, once per `make test`: builds
+// dist/site/ from the fresh www/, serves it with scripts/serve.mjs as `make serve-dist` does,
+// and opens the gallery, a 2D demo, a 3D demo, a lecture (Greek: a locale chunk and the
+// lectures' lookup table) and the embed example on one extra page of the run's browser, with
+// no console error, no CSP violation and a drawn canvas; then checks what went over the wire:
+// every file compressed (br or gzip) and cached as its name says (hashed: a year, immutable;
+// HTML and embed.js: no-cache), and nothing fetched under an unhashed name but the entry points.
+import { request } from "node:http";
+import { readFileSync } from "node:fs";
+import { extname, join, relative } from "node:path";
+import { brotliDecompressSync, gunzipSync } from "node:zlib";
+import { ASSETS, COMPRESSED, SITE, WWW, buildSite, listFiles } from "../../scripts/dist.mjs";
+import { HASHED, IMMUTABLE, startServer } from "../../scripts/serve.mjs";
+
+/** `make dist` must stay well under a minute (it takes ~5 s on 2 cores). */
+const DIST_BUDGET_MS = 45_000;
+/** The names the site keeps unhashed (its entry points and the licences). */
+const STABLE = /^(?:[^/]+\.html|embed\.js|licenses\/[^/]+\.txt)$/;
+
+/** Distinct colours in a canvas (2D; the 3D figures copy their render into one too). */
+function distinctColours(canvas) {
+  const { width, height } = canvas;
+  const data = canvas.getContext("2d").getImageData(0, 0, width, height).data;
+  const seen = new Set();
+  for (let i = 0; i < data.length && seen.size < 1000; i += 4 * 7)
+    seen.add((data[i] << 24) | (data[i + 1] << 16) | (data[i + 2] << 8) | data[i + 3]);
+  return seen.size;
+}
+
+/** A raw GET (no decoding) with Accept-Encoding `encoding` (and `headers`): { status, headers,
+ * body }. */
+function rawGet(url, encoding, headers = {}) {
+  return new Promise((ok, fail) => {
+    request(url, { headers: { "accept-encoding": encoding, ...headers } }, (res) => {
+      const parts = [];
+      res.on("data", (part) => parts.push(part));
+      res.on("end", () =>
+        ok({ status: res.statusCode, headers: res.headers, body: Buffer.concat(parts) }),
+      );
+      res.on("error", fail);
+    })
+      .on("error", fail)
+      .end();
+  });
+}
+
+/**
+ * Registers the dist tests with run.mjs's `test` (which skips a body when the filter does not
+ * match). `tools`: { test, assert, equal, context, watchErrors, demoHelpers, settle }.
+ */
+export async function distSuite({
+  test,
+  assert,
+  equal,
+  context,
+  watchErrors,
+  demoHelpers,
+  settle,
+}) {
+  let server = null;
+  let page = null;
+  let errors = null;
+  let base = "";
+  /** Every response from the dist server: { path, status, headers }. */
+  const responses = [];
+  const needSite = () => assert(page, "the site was not built (see the first dist test)");
+
+  /** Waits for a figure, then asserts a drawn canvas, no console error and no CSP violation. */
+  async function checkPage(what, h) {
+    await h.ready();
+    await settle(page);
+    const colours = await h.canvas().evaluate(distinctColours);
+    assert(colours >= 4, `${what}: the canvas has ${colours} colours (not drawn)`);
+    const problems = errors.take();
+    const violations = await page.evaluate(() => window.__violations);
+    assert(problems.length + violations.length === 0, [...problems, ...violations].join("\n"));
+  }
+
+  try {
+    await test("dist: make dist builds the site: hashed names, and a .gz and .br that decompress to each text file", async () => {
+      const { elapsed } = await buildSite();
+      assert(elapsed < DIST_BUDGET_MS, `make dist took ${elapsed} ms`);
+      const files = (await listFiles(SITE)).map((f) => relative(SITE, f).split("\\").join("/"));
+      const plain = files.filter((f) => !/\.(gz|br)$/.test(f));
+      const stray = plain.filter((f) => !HASHED.test(f) && !STABLE.test(f));
+      assert(stray.length === 0, `neither hashed nor an entry point: ${stray.join(", ")}`);
+      for (const page of ["index.html", "embed-example.html", "embed.js"])
+        assert(plain.includes(page), `${page} is in the site`);
+      for (const kind of [".wasm", ".css", ".js", ".json", ".woff2"])
+        assert(
+          plain.some((f) => f.startsWith(`${ASSETS}/`) && f.endsWith(kind)),
+          `a hashed ${kind} file in ${ASSETS}/`,
+        );
+      let compressed = 0;
+      for (const file of plain.filter((f) => COMPRESSED.has(extname(f)))) {
+        const body = readFileSync(join(SITE, file));
+        assert(
+          gunzipSync(readFileSync(join(SITE, `${file}.gz`))).equals(body),
+          `${file}.gz decompresses to ${file}`,
+        );
+        assert(
+          brotliDecompressSync(readFileSync(join(SITE, `${file}.br`))).equals(body),
+          `${file}.br decompresses to ${file}`,
+        );
+        compressed += 1;
+      }
+      assert(compressed > 20, `${compressed} files with .gz and .br`);
+
+      server = await startServer(0, "127.0.0.1", SITE);
+      base = `http://127.0.0.1:${server.address().port}`;
+      page = await context.newPage();
+      errors = watchErrors(page);
+      page.on("response", (response) => {
+        const url = new URL(response.url());
+        if (url.origin === base)
+          responses.push({
+            path: url.pathname.slice(1),
+            status: response.status(),
+            headers: response.headers(),
+          });
+      });
+      // Every violation of the pages' CSP is recorded (a bundle must not need an inline script).
+      await page.addInitScript(() => {
+        window.__violations = [];
+        document.addEventListener("securitypolicyviolation", (e) =>
+          window.__violations.push(`CSP: ${e.violatedDirective} ${e.blockedURI}`),
+        );
+      });
+    });
+
+    await test("dist: the gallery draws its thumbnails and opens a 2D demo", async () => {
+      needSite();
+      await page.goto(`${base}/index.html`);
+      await page.locator("a.card img[src^='data:image/png']").first().waitFor();
+      await page.locator('a.card[data-demo="de-casteljau"]').click();
+      await checkPage("de-casteljau from the gallery", demoHelpers(page));
+    });
+
+    await test("dist: a 2D demo, a 3D demo and a Greek lecture open from their links", async () => {
+      needSite();
+      for (const [what, hash] of [
+        ["de-boor", "index.html#demo=de-boor"],
+        ["bezier-patch (3D)", "index.html#demo=bezier-patch"],
+        ["lecture", "index.html?lang=el#lecture=bezier-curves&scene=2"],
+      ]) {
+        await page.goto("about:blank");
+        await page.goto(`${base}/${hash}`);
+        await checkPage(what, demoHelpers(page));
+      }
+      equal(
+        await page.evaluate(() => document.documentElement.lang),
+        "el",
+        "the lecture's language",
+      );
+    });
+
+    await test("dist: the embed example draws both <spline-lab> figures", async () => {
+      needSite();
+      await page.goto("about:blank");
+      await page.goto(`${base}/embed-example.html`);
+      for (const id of ["worked", "quadratic"]) {
+        await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+        await checkPage(`embed #${id}`, demoHelpers(page, `spline-lab#${id} `));
+      }
+    });
+
+    await test("dist: what the pages fetched was compressed and cached as its name says", async () => {
+      needSite();
+      const seen = responses.filter((r) => r.status === 200);
+      assert(seen.length > 20, `${seen.length} responses`);
+      const problems = [];
+      for (const { path, headers } of seen) {
+        const name = path === "" ? "index.html" : path;
+        if (!HASHED.test(name) && !STABLE.test(name))
+          problems.push(`${name}: fetched by an unhashed name`);
+        const cache = HASHED.test(name) ? IMMUTABLE : "no-cache";
+        if (headers["cache-control"] !== cache)
+          problems.push(`${name}: cache-control ${headers["cache-control"]}`);
+        if (COMPRESSED.has(extname(name)) && !["br", "gzip"].includes(headers["content-encoding"]))
+          problems.push(`${name}: content-encoding ${headers["content-encoding"]}`);
+      }
+      for (const kind of [".wasm", ".js", ".css", ".json", ".woff2", ".html"])
+        if (!seen.some((r) => r.path.endsWith(kind))) problems.push(`no ${kind} was fetched`);
+      const wasm = seen.find((r) => r.path.endsWith(".wasm"));
+      if (wasm?.headers["content-type"] !== "application/wasm")
+        problems.push(`wasm content-type ${wasm?.headers["content-type"]}`);
+      assert(problems.length === 0, problems.join("\n"));
+
+      // Each encoding on request, precompressed from the files beside it.
+      for (const [encoding, decode, ext] of [
+        ["br", brotliDecompressSync, "br"],
+        ["gzip", gunzipSync, "gz"],
+      ]) {
+        for (const path of [wasm.path, "index.html", "embed.js"]) {
+          const got = await rawGet(`${base}/${path}`, encoding);
+          equal(got.headers["content-encoding"], encoding, `${path} asked for ${encoding}`);
+          assert(
+            got.body.equals(readFileSync(join(SITE, `${path}.${ext}`))),
+            `${path}: the .${ext} file`,
+          );
+          assert(decode(got.body).equals(readFileSync(join(SITE, path))), `${path}: decodes`);
+        }
+      }
+      const identity = await rawGet(`${base}/index.html`, "identity");
+      equal(identity.headers["content-encoding"], undefined, "no encoding when none is accepted");
+    });
+    await test("serve: www/ goes out compressed on the fly, no-cache, and 304 when unchanged", async () => {
+      const dev = await startServer(0, "127.0.0.1", WWW);
+      try {
+        const at = `http://127.0.0.1:${dev.address().port}`;
+        for (const [path, accept, encoding, decode] of [
+          ["pkg/splinelab_bg.wasm", "gzip, deflate, br", "br", brotliDecompressSync],
+          ["lib/shell.css", "br;q=0, gzip", "gzip", gunzipSync],
+          ["app.js", "identity", undefined, (b) => b],
+        ]) {
+          const got = await rawGet(`${at}/${path}`, accept);
+          equal(got.status, 200, `${path}: status`);
+          equal(got.headers["content-encoding"], encoding, `${path} for ${accept}`);
+          equal(got.headers["cache-control"], "no-cache", `${path}: cache-control`);
+          assert(
+            decode(got.body).equals(readFileSync(join(WWW, path))),
+            `${path}: decodes to the file`,
+          );
+          const again = await rawGet(`${at}/${path}`, accept, {
+            "if-none-match": got.headers.etag,
+          });
+          equal(again.status, 304, `${path}: revalidated`);
+        }
+        const font = await rawGet(`${at}/vendor/katex/fonts/KaTeX_Main-Regular.woff2`, "br");
+        equal(font.headers["content-encoding"], undefined, "a woff2 is sent as it is");
+        equal((await rawGet(`${at}/..%2fCargo.toml`, "br")).status, 404, "nothing outside www/");
+      } finally {
+        dev.close();
+      }
+    });
+  } finally {
+    await page?.close();
+    server?.close();
+  }
+}
