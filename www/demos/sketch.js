@@ -136,6 +136,8 @@ function endsAtStart(cps) {
 /** The handles of the model's curve and the flat control points they read. */
 function handlesOf(m) {
   m.cps = m.curve.controlPoints();
+  // A closed (periodic) B-spline repeats its first p points at the end: one handle each.
+  m.wrap = m.bspline ? m.curve.wrapped : 0;
   if (m.bspline) m.map = null;
   else m.map = compositeHandles(Array.from(m.curve.degrees()), endsAtStart(m.cps));
 }
@@ -146,9 +148,12 @@ function moveHandle(m, h, x, y) {
   if (m.bspline) {
     at2[0] = x;
     at2[1] = y;
-    m.curve.setControlPoint(h, at2);
-    m.cps[2 * h] = x;
-    m.cps[2 * h + 1] = y;
+    m.curve.setControlPoint(h, at2); // the core moves a wrapped copy too
+    const distinct = m.cps.length / 2 - m.wrap;
+    for (const j of h < m.wrap ? [h, h + distinct] : [h]) {
+      m.cps[2 * j] = x;
+      m.cps[2 * j + 1] = y;
+    }
   } else {
     moveCompositeHandle(m.curve, m.map, m.cps, h, x, y);
   }
@@ -158,7 +163,7 @@ function moveHandle(m, h, x, y) {
 const handleAt = (m, h) => (m.bspline ? h : m.map.offset[m.map.piece[h]] + m.map.index[h]);
 
 /** How many handles the model has. */
-const handleCount = (m) => (m.bspline ? m.cps.length / 2 : m.map.count);
+const handleCount = (m) => (m.bspline ? m.cps.length / 2 - m.wrap : m.map.count);
 
 /**
  * The curve: the stroke fitted at ε = tolerance / scale, then the edits replayed in order
@@ -297,7 +302,7 @@ function fitText(s, d) {
   const main = d.bspline
     ? t("sketch.fitBSpline", {
         p: s.degree,
-        control: tp("sketch.controlPoints", d.cps.length / 2),
+        control: tp("sketch.controlPoints", handleCount(d)),
         error,
         tolerance,
         shape,
