@@ -477,6 +477,9 @@ const labelStyles = themed((theme) => ({
   }),
   error: Object.freeze({ fill: theme.text, size: FONT_SIZE.small, halo: theme.background }),
 }));
+/** Where the error labels of one frame went (canvas px, made once), and their least spacing. */
+const LABELS_AT = new Float64Array(2 * 256);
+const LABEL_SPACING_PX = 36;
 /** Half the side of a corner's square mark, CSS px. */
 const CORNER_HALF_PX = 6;
 
@@ -554,11 +557,23 @@ function drawReport(r, v, s, d) {
     const worst = d.bspline
       ? [{ maxError: d.report.maxError, worst: d.report.worst }]
       : d.report.pieces;
+    let placed = 0;
     for (const p of worst) {
       if (!Number.isFinite(p.maxError) || !(p.worst >= 0 && 2 * p.worst + 1 < pts.length)) continue;
       const x = v.sx(pts[2 * p.worst]);
       const y = v.sy(pts[2 * p.worst + 1]);
       r.point(x, y, WORST_STYLE);
+      // A label too near one already written is left out (tiny pieces): the dot stays.
+      let free = true;
+      for (let q = 0; q < placed && free; q++)
+        free =
+          Math.hypot(x - LABELS_AT[2 * q], y - LABELS_AT[2 * q + 1]) > LABEL_SPACING_PX * r.scale;
+      if (!free) continue;
+      if (placed < LABELS_AT.length / 2) {
+        LABELS_AT[2 * placed] = x;
+        LABELS_AT[2 * placed + 1] = y;
+        placed++;
+      }
       r.text(
         t("sketch.px", { value: fmt(p.maxError * s.scale, 1) }),
         x + 6 * r.scale,
@@ -600,8 +615,8 @@ export function draw(r, v, s, d) {
   }
   flatPath(r, v, d.samples);
   r.paint(theme.curve);
-  if (s.edits.length === 0) drawReport(r, v, s, d);
   if (s.polygon) d.handles?.draw(r, v);
+  if (s.edits.length === 0) drawReport(r, v, s, d);
   // The split points over the handles: a joint's handle gets a green centre.
   if (s.breaks && !d.bspline) {
     const { offset } = d.map;
