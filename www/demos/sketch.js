@@ -19,7 +19,7 @@
  * in px, the output and the edits in order (oversketch strokes, handle moves): a link rebuilds
  * the same curve by replaying them. Sample strokes (presets/sketch.js) stand in for drawing.
  */
-import { field, checkBoolean } from "../lib/validate.js";
+import { field } from "../lib/validate.js";
 import {
   actions,
   checkbox,
@@ -116,12 +116,12 @@ export const fields = {
   output: field.choice(OUTPUTS),
   degree: field.number({ min: MIN_DEGREE, max: MAX_DEGREE, integer: true }),
   edits: checkEdits,
-  corners: (s, n) => checkBoolean(s, n),
-  breaks: (s, n) => checkBoolean(s, n),
-  errors: (s, n) => checkBoolean(s, n),
-  polygon: (s, n) => checkBoolean(s, n),
-  comb: (s, n) => checkBoolean(s, n),
-  oversketch: (s, n) => checkBoolean(s, n),
+  corners: field.boolean(),
+  breaks: field.boolean(),
+  errors: field.boolean(),
+  polygon: field.boolean(),
+  comb: field.boolean(),
+  oversketch: field.boolean(),
 };
 
 const isBSpline = (s) => s.output === "bspline";
