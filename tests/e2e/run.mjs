@@ -16,6 +16,7 @@ import { startServer } from "../../scripts/serve.mjs";
 import { fuzzStates } from "./state-fuzz.mjs";
 import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
+import { encodeStroke } from "../../www/lib/stroke-code.js";
 import { distSuite } from "./dist.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
@@ -1429,6 +1430,17 @@ try {
     "natural-ends": () => ({ end: "natural" }),
     "horn-torus": () => ({ R: 2, r: 2 }),
     "through-every-point": (s) => ({ role: "data", count: s.points.length }),
+    // A teardrop drawn once round, back to its start: x = sin t · sin(t/2), y = cos t (a corner
+    // at the top, where both x′ and y′ vanish from either side at different angles), 2.5 units
+    // tall at 60 px per unit: one corner, closed, a few pieces at 3 px.
+    "sketch-pieces": () => {
+      const flat = [];
+      for (let k = 0; k <= 120; k++) {
+        const u = (2 * Math.PI * k) / 120;
+        flat.push(5 + 2.5 * Math.sin(u) * Math.sin(u / 2), 3 + 2.5 * Math.cos(u));
+      }
+      return { stroke: encodeStroke(flat, -3), scale: 60, tolerance: 3, output: "G1", edits: [] };
+    },
   };
 
   await test("every exercise: its start is not solved, the worked solution is, checked by the core (#exercise=…)", async () => {
@@ -1512,7 +1524,7 @@ try {
       await page.goto("about:blank");
       await page.goto(`${base}/index.html`);
       await page.locator("a[data-exercise]").first().waitFor();
-      equal(await page.locator("a[data-exercise]").count(), 8, "the gallery lists the exercises");
+      equal(await page.locator("a[data-exercise]").count(), 9, "the gallery lists the exercises");
     } finally {
       await page.unroute(pageUrl);
     }

@@ -174,6 +174,8 @@ export const demos = Object.freeze(
     // Section 1 (the gallery groups by section, keeping this order within it): the typed
     // piecewise curve, after `parametric-curve`.
     { id: "piecewise", section: 1, strings: "piecewise", load: () => import("./piecewise.js") },
+    // Section 7 (interactive design): draw a stroke, get the curve (issue 25).
+    { id: "sketch", section: 7, strings: "sketch", load: () => import("./sketch.js") },
   ].map(Object.freeze),
 );
 

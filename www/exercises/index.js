@@ -6,8 +6,10 @@
  * are `exercise.<id>.title | task | hint` in the string tables. Opened at `#exercise=<id>` (the
  * state follows in `&s=`) or embedded with `<spline-lab exercise="<id>">` (lib/exercise.js).
  */
-import { formatNumber, t } from "../lib/strings.js";
+import { formatNumber, t, tp } from "../lib/strings.js";
 import { orderText } from "../lib/continuity.js";
+import { decodeStroke } from "../lib/stroke-code.js";
+import { presetStroke } from "../demos/presets/sketch.js";
 
 /** Flat [x0, y0, x1, y1, …] of [[x, y], …]. */
 const flat = (points) => points.flat();
@@ -18,6 +20,9 @@ const num = (value) => formatNumber(value, SMALL);
 
 /** The tolerance (world units) within which a hand-dragged joint counts as continuous. */
 export const JOINT_TOLERANCE = 0.05;
+/** The sketch exercise: at most this many pieces, at a tolerance of at least this many px. */
+export const SKETCH_PIECES = 6;
+export const SKETCH_TOLERANCE = 3;
 /** Samples of a curve when the check measures it. */
 const SAMPLES = 256;
 
@@ -245,6 +250,39 @@ export const exercises = Object.freeze(
           return { solved: met === n, detail: String(met) };
         } finally {
           curve.free();
+        }
+      },
+    },
+    {
+      id: "sketch-pieces",
+      section: 7,
+      demo: "sketch",
+      state: { stroke: presetStroke("wave"), tolerance: 3, edits: [] },
+      /**
+       * The student's stroke fitted again by the core as the demo fits it (`fitCurveReport` at
+       * ε = tolerance / scale; the edits are not the drawing): closed, at least one corner, at
+       * most SKETCH_PIECES pieces, at a tolerance of SKETCH_TOLERANCE px or more.
+       */
+      check(sl, state) {
+        const points = decodeStroke(state.stroke, { max: 4000, message: t("sketch.badStroke") });
+        const continuity = state.output === "C1" ? "C1" : "G1";
+        const fit = sl.fitCurveReport(points, 2, state.tolerance / state.scale, { continuity });
+        try {
+          const pieces = fit.curve.pieceCount;
+          const corners = fit.corners.length;
+          const solved =
+            fit.closed &&
+            corners >= 1 &&
+            pieces <= SKETCH_PIECES &&
+            state.tolerance >= SKETCH_TOLERANCE;
+          const detail = t("exercise.sketch-pieces.detail", {
+            pieces: tp("sketch.pieces", pieces),
+            corners: tp("sketch.corners", corners),
+            shape: t(fit.closed ? "sketch.closed" : "sketch.open"),
+          });
+          return { solved, detail };
+        } finally {
+          fit.curve.free();
         }
       },
     },

@@ -22,10 +22,11 @@
  *   `data` holds the model's and the computed values by name, `sl` and `handles`.
  * - `controls`: the side panel, top to bottom: panel.js descriptors bound to state fields, and
  *   figure parts (`knotRuler`, `parameterStrip`).
- * - `figure`: `{ bounds(state, data), insets?(w, h, scale, state, data), handles? }`, the View
+ * - `figure`: `{ bounds(state, data), insets?(w, h, scale, state, data), handles?, help? }`, the View
  *   and its handles on the `[x, y]` points of `state[field]`. `handles`: `{ field, label?(i,
  *   state, data), constraint?(i, state, data), accept?(i, x, y, state), select?(i, ui),
- *   polygon?, extra? }`. With several fields, `field: [a, b]`, the handles run over the lists
+ *   polygon?, extra? }` (`help`: the strings.js key of the line under a figure that is drawn
+ *   on rather than dragged). With several fields, `field: [a, b]`, the handles run over the lists
  *   in order (P₀ … P₃, then Q₀ … Q₃; `i` counts across them) and `moved` is asked *before* the
  *   point is written: returning `false` refuses the move; `accept` may refuse it before that.
  *   `polygon: false`: the handles form no polygon (label placement). `extra: [{ field, index?,

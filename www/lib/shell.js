@@ -107,13 +107,14 @@ export function mountDemo(
   /** The help under the figure: how to turn a 3D one, drag handles, or what a typed one shows. */
   const noPoints3d = Array.isArray(demo.figure3d?.handles) && demo.figure3d.handles.length === 0;
   const helpKey = (is3d) =>
-    is3d
+    (!is3d && demo.figure?.help) ||
+    (is3d
       ? noPoints3d
         ? "shell.figureHelp3dTyped"
         : "shell.figureHelp3d"
       : demo.figure?.handles || !demo.figure
         ? "shell.figureHelp"
-        : "shell.figureHelpTyped";
+        : "shell.figureHelpTyped");
   const help = el("p", { class: "sl-help", id: helpId, text: t(helpKey(Boolean(demo.figure3d))) });
   const panel = el("div", { class: "sl-panel", role: "group", "aria-label": t("shell.controls") });
   const formula = el("div", { class: "sl-formula" });

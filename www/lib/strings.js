@@ -33,6 +33,8 @@ import { PARAMETRIC_CURVE } from "./strings/parametric-curve.js";
 import { CORE_ERRORS } from "./strings/core-errors.js";
 // Section 1: the typed piecewise curve.
 import { PIECEWISE } from "./strings/piecewise.js";
+// Section 7: the sketch demo (issue 25).
+import { SKETCH } from "./strings/sketch.js";
 
 const EN = {
   // Application and gallery
@@ -1272,6 +1274,7 @@ const EN = {
   ...INTERPOLATE_APPROXIMATE,
   ...CORE_ERRORS,
   ...PIECEWISE,
+  ...SKETCH,
   // Section 1: parametric-curve.
   ...PARAMETRIC_CURVE,
 };

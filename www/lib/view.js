@@ -289,6 +289,16 @@ export class View extends FigureCanvas {
     this.requestDraw();
   }
 
+  /**
+   * Hands pointer `pointerId`, claimed by an interactor, over to pan and pinch from canvas
+   * point (x, y): a freehand pen whose one-finger stroke became a two-finger gesture
+   * (sketch-pen.js) gives its finger back, so the second one pinches with it.
+   */
+  toGesture(pointerId, x, y) {
+    if (!this._captured.delete(pointerId)) return;
+    this._gestures.set(pointerId, { x, y });
+  }
+
   _up(event) {
     const [x, y] = this.eventPosition(event);
     const owner = this._captured.get(event.pointerId);

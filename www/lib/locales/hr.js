@@ -2308,4 +2308,72 @@ export default {
   "parametricCurve.error.params":
     'polje „params”: vrijednosti parametara su konačni brojevi po imenu, poput {"a": 2}',
   // ---- end parametric-curve ----
+  // ---- sketch (section 7, www/demos/sketch.js) and its exercise ----
+  "sketch.title": "Skiciranje krivulje",
+  "sketch.summary":
+    "Nacrtajte potez: najmanje Bézierovih segmenata (ili kontrolnih točaka B-krivulje) koji ostaju unutar tolerancije, a kutovi se čuvaju; zatim uređujte povlačenjem točaka ili ponovnim crtanjem dijela.",
+  "sketch.aria": "Skicirana krivulja: {fit}",
+  "sketch.figureHelp":
+    "Crtajte po slici mišem, olovkom ili prstom; potez koji počinje na krivulji ponovno crta taj dio. Povucite točku ili pritisnite Tab za odabir, a strelicama je pomičite (Shift: 10 px). Shift + povlačenje pomiče pogled; kotačić ili štipanje zumira.",
+  "sketch.outputLegend": "Krivulja je",
+  "sketch.output.G1": "Bézierovi segmenti, spojevi G¹",
+  "sketch.output.C1": "Bézierovi segmenti, spojevi C¹",
+  "sketch.output.bspline": "B-krivulja stupnja p",
+  "sketch.control.degree": "Stupanj p",
+  "sketch.control.degree.input": "stupanj B-krivulje",
+  "sketch.control.tolerance": "Tolerancija (px zaslona)",
+  "sketch.control.tolerance.input": "tolerancija u pikselima zaslona",
+  "sketch.showLegend": "Prikaži",
+  "sketch.control.corners": "kutove (i zaokret u njima)",
+  "sketch.control.breaks": "točke podjele (spojeve)",
+  "sketch.control.errors": "najveću pogrešku svakog segmenta i njezin uzorak",
+  "sketch.control.polygon": "kontrolne poligone i točke (povucite ih)",
+  "sketch.control.comb": "češalj zakrivljenosti",
+  "sketch.control.oversketch": "Potez koji počinje na krivulji ponovno crta taj dio",
+  "sketch.oversketchBezier":
+    "Ponovno crtanje dijela mijenja Bézierove segmente: s B-krivuljom svaki potez je novi crtež.",
+  "sketch.control.presets": "Primjeri poteza",
+  "sketch.preset.wave": "Val",
+  "sketch.preset.corners": "Cik-cak s kutovima",
+  "sketch.preset.blob": "Zatvoreni oblik",
+  "sketch.preset.spiral": "Spirala",
+  "sketch.preset.letter": "Slovo S",
+  "sketch.pieces.one": "{count} segment",
+  "sketch.pieces.few": "{count} segmenta",
+  "sketch.pieces.other": "{count} segmenata",
+  "sketch.corners.one": "{count} kut",
+  "sketch.corners.few": "{count} kuta",
+  "sketch.corners.other": "{count} kutova",
+  "sketch.controlPoints.one": "{count} kontrolna točka",
+  "sketch.controlPoints.few": "{count} kontrolne točke",
+  "sketch.controlPoints.other": "{count} kontrolnih točaka",
+  "sketch.fitPieces":
+    "{pieces}, {corners}; najveća pogreška {error} (tolerancija {tolerance} px); {shape}.",
+  "sketch.fitBSpline":
+    "B-krivulja stupnja {p} s {control}; najveća pogreška {error} (tolerancija {tolerance} px); {shape}.",
+  "sketch.px": "{value} px",
+  "sketch.notMeasured": "nije izmjerena",
+  "sketch.open": "otvorena",
+  "sketch.closed": "zatvorena",
+  "sketch.edited":
+    "Uređena nakon prilagodbe: oznake i pogreške pripadaju prilagodbi, prije izmjena.",
+  "sketch.handle": "segment {piece}, {name}",
+  "sketch.badStroke": "potez nije valjan zapis poteza (od 2 do 4000 točaka)",
+  "sketch.badEdits": "popis izmjena nije valjan",
+  "sketch.whatYouSee":
+    "Široka svijetla linija je ono što ste nacrtali; plava krivulja je prilagodba biblioteke: kubični Bézierovi segmenti, njih što manje tako da svaki uzorak poteza bude unutar tolerancije ε (izmjereno, ne procijenjeno), ili jedna B-krivulja stupnja p sa što manje kontrolnih točaka. Gdje potez naglo skreće, prilagodba zadržava kut (spoj G⁰, kvadratna oznaka s kutom zaokreta); svaki drugi spoj je gladak, G¹ ili C¹. Zelene točke su točke podjele, isprekidane linije kontrolni poligon svakog segmenta, a češalj prikazuje zakrivljenost κ duž krivulje. Poglavlje 7 gradiva (interaktivno oblikovanje): „krivulja otprilike ovakva”, uređena bez počinjanja ispočetka.",
+  "sketch.try1":
+    "Brzo nacrtajte cik-cak pa pomaknite toleranciju s 1 px na 10 px: segmenti se spajaju, ali kutovi ostaju.",
+  "sketch.try2":
+    "Nacrtajte petlju koja završava gdje je počela: krivulja se zatvara, glatka na šavu. Uključite češalj zakrivljenosti: gdje κ skače?",
+  "sketch.try3":
+    "Počnite kratak potez na krivulji i završite ga na njoj malo dalje: ponovno se crta samo taj dio. Zatim povucite kontrolnu točku i pritisnite Ctrl+Z.",
+  "exercise.sketch-pieces.title": "Oblik u malo segmenata",
+  "exercise.sketch-pieces.task":
+    "Nacrtajte zatvoreni oblik s barem jednim kutom (kap, list, kućica) koji prilagodba s tolerancijom 3 px sastavlja od najviše 6 Bézierovih segmenata.",
+  "exercise.sketch-pieces.hint":
+    "Vratite se na početak da se krivulja zatvori; crtajte mirno (drhtav potez treba više segmenata), napravite jedan oštar zaokret i držite toleranciju na 3 px ili više.",
+  "exercise.sketch-pieces.notYet": "Još ne: {detail}.",
+  "exercise.sketch-pieces.detail": "{pieces}, {corners}, {shape}",
+  // ---- end sketch ----
 };

@@ -2332,4 +2332,72 @@ export default {
   "parametricCurve.error.params":
     'campo “params”: i valori dei parametri sono numeri finiti per nome, come {"a": 2}',
   // ---- end parametric-curve ----
+  // ---- sketch (section 7, www/demos/sketch.js) and its exercise ----
+  "sketch.title": "Abbozzare una curva",
+  "sketch.summary":
+    "Disegna un tratto: il minimo di pezzi di Bézier (o di punti di controllo di una B-spline) che restano entro la tolleranza, con gli spigoli conservati; poi modifica trascinando i punti o ridisegnando una parte.",
+  "sketch.aria": "Curva abbozzata: {fit}",
+  "sketch.figureHelp":
+    "Disegna sulla figura con il mouse, una penna o un dito; un tratto che parte sulla curva ridisegna quella parte. Trascina un punto, oppure premi Tab per selezionarne uno e le frecce per spostarlo (Maiusc: 10 px). Maiusc + trascinamento sposta la vista; rotella o pizzico per lo zoom.",
+  "sketch.outputLegend": "La curva è",
+  "sketch.output.G1": "pezzi di Bézier, giunzioni G¹",
+  "sketch.output.C1": "pezzi di Bézier, giunzioni C¹",
+  "sketch.output.bspline": "una B-spline di grado p",
+  "sketch.control.degree": "Grado p",
+  "sketch.control.degree.input": "grado della B-spline",
+  "sketch.control.tolerance": "Tolleranza (px dello schermo)",
+  "sketch.control.tolerance.input": "tolleranza in pixel dello schermo",
+  "sketch.showLegend": "Mostra",
+  "sketch.control.corners": "spigoli (e la svolta in ciascuno)",
+  "sketch.control.breaks": "punti di divisione (giunzioni)",
+  "sketch.control.errors": "l'errore massimo di ogni pezzo e il suo campione",
+  "sketch.control.polygon": "poligoni e punti di controllo (trascinali)",
+  "sketch.control.comb": "pettine di curvatura",
+  "sketch.control.oversketch": "Un tratto che parte sulla curva ridisegna quella parte",
+  "sketch.oversketchBezier":
+    "Ridisegnare una parte modifica pezzi di Bézier: con una B-spline ogni tratto è un nuovo disegno.",
+  "sketch.control.presets": "Tratti di esempio",
+  "sketch.preset.wave": "Onda",
+  "sketch.preset.corners": "Zigzag con spigoli",
+  "sketch.preset.blob": "Forma chiusa",
+  "sketch.preset.spiral": "Spirale",
+  "sketch.preset.letter": "Lettera S",
+  "sketch.pieces.one": "{count} pezzo",
+  "sketch.pieces.many": "{count} pezzi",
+  "sketch.pieces.other": "{count} pezzi",
+  "sketch.corners.one": "{count} spigolo",
+  "sketch.corners.many": "{count} spigoli",
+  "sketch.corners.other": "{count} spigoli",
+  "sketch.controlPoints.one": "{count} punto di controllo",
+  "sketch.controlPoints.many": "{count} punti di controllo",
+  "sketch.controlPoints.other": "{count} punti di controllo",
+  "sketch.fitPieces":
+    "{pieces}, {corners}; errore massimo {error} (tolleranza {tolerance} px); {shape}.",
+  "sketch.fitBSpline":
+    "B-spline di grado {p} con {control}; errore massimo {error} (tolleranza {tolerance} px); {shape}.",
+  "sketch.px": "{value} px",
+  "sketch.notMeasured": "non misurato",
+  "sketch.open": "aperta",
+  "sketch.closed": "chiusa",
+  "sketch.edited":
+    "Modificata dopo l'approssimazione: i segni e gli errori sono quelli dell'approssimazione, prima delle modifiche.",
+  "sketch.handle": "pezzo {piece}, {name}",
+  "sketch.badStroke": "il tratto non è un codice di tratto valido (da 2 a 4000 punti)",
+  "sketch.badEdits": "l'elenco delle modifiche non è valido",
+  "sketch.whatYouSee":
+    "La linea larga e chiara è ciò che hai disegnato; la curva blu è l'approssimazione della libreria: pezzi di Bézier cubici, il meno possibile perché ogni campione del tratto resti entro la tolleranza ε (misurata, non stimata), oppure una B-spline di grado p con il minimo di punti di controllo. Dove il tratto svolta bruscamente l'approssimazione conserva uno spigolo (una giunzione G⁰, il segno quadrato con l'angolo di svolta); ogni altra giunzione è liscia, G¹ o C¹. I punti verdi sono i punti di divisione, le linee tratteggiate il poligono di controllo di ogni pezzo, e il pettine mostra la curvatura κ lungo la curva. Sezione 7 del programma (progettazione interattiva): “una curva più o meno così”, modificata senza ricominciare da capo.",
+  "sketch.try1":
+    "Disegna in fretta uno zigzag, poi porta la tolleranza da 1 px a 10 px: i pezzi si fondono, ma gli spigoli restano.",
+  "sketch.try2":
+    "Disegna un anello che finisce dove è iniziato: la curva si chiude, liscia sulla cucitura. Attiva il pettine di curvatura: dove salta κ?",
+  "sketch.try3":
+    "Inizia un tratto breve sulla curva e finiscilo sulla curva più avanti: viene ridisegnata solo quella parte. Poi trascina un punto di controllo e premi Ctrl+Z.",
+  "exercise.sketch-pieces.title": "Una forma in pochi pezzi",
+  "exercise.sketch-pieces.task":
+    "Disegna una forma chiusa con almeno uno spigolo (una goccia, una foglia, una casetta) che l'approssimazione con tolleranza 3 px costruisce con al massimo 6 pezzi di Bézier.",
+  "exercise.sketch-pieces.hint":
+    "Torna al punto di partenza perché la curva si chiuda; disegna con calma (un tratto tremolante richiede più pezzi), dagli una svolta netta e tieni la tolleranza a 3 px o più.",
+  "exercise.sketch-pieces.notYet": "Non ancora: {detail}.",
+  "exercise.sketch-pieces.detail": "{pieces}, {corners}, {shape}",
+  // ---- end sketch ----
 };
