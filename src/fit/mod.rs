@@ -15,8 +15,13 @@
 //! Composite results are parametrised by piece: piece `i` lives on `[i, i + 1]`.
 
 mod bspline;
+mod corners;
+mod cubic;
 mod curve;
+mod distance;
 mod oversketch;
+mod segment;
+mod stroke;
 
 pub use bspline::fit_bspline;
 pub use curve::fit_curve;
