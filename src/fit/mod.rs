@@ -15,10 +15,15 @@
 //! Composite results are parametrised by piece: piece `i` lives on `[i, i + 1]`.
 
 mod bspline;
+mod corners;
+mod cubic;
 mod curve;
+mod distance;
 mod oversketch;
 mod periodic;
 mod project;
+mod segment;
+mod stroke;
 mod weighted;
 
 pub use bspline::{fit_bspline, CLOSE_TOLERANCES, MAX_BSPLINE_FIT_SAMPLES};
