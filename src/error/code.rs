@@ -51,6 +51,7 @@ impl Error {
             Error::MissingArgument { .. } => "missing-argument",
             Error::ArgumentLength { .. } => "argument-length",
             Error::TooFewDataPoints { .. } => "too-few-data-points",
+            Error::StrokeFarFromCurve { .. } => "stroke-far-from-curve",
             Error::SingularSystem { .. } => "singular-system",
             Error::ConflictingOptions { .. } => "conflicting-options",
             // One code per problem of a typed expression (src/expr/error.rs).

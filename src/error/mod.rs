@@ -425,6 +425,16 @@ pub enum Error {
         /// What needs them ("a cubic spline", "a degree-3 interpolating B-spline").
         what: &'static str,
     },
+    /// An oversketch stroke that neither starts nor ends near the curve (on a closed curve:
+    /// not both), so nothing says which part it redraws: `fit::oversketch(&curve, &far, 0.5)`.
+    StrokeFarFromCurve {
+        /// Distance from the stroke's first sample to the curve.
+        start: f64,
+        /// Distance from its last sample to the curve.
+        end: f64,
+        /// How near an end must be.
+        near: f64,
+    },
     /// A linear system met a zero pivot: its matrix is singular (or too close to it).
     SingularSystem {
         /// Which system ("the cubic spline's tangent system").

@@ -162,7 +162,10 @@ impl Fitter {
             if let Some(h) = self.least_squares(pts, p0, p3, start, end, tangents) {
                 handles = h;
             }
-            handles = (clamp_handle(handles.0, len), clamp_handle(handles.1, len));
+            handles = (
+                clamp_handle(forward(start, handles.0, len), len),
+                clamp_handle(forward(end, handles.1, len), len),
+            );
         }
         piece(p0, p3, handles)
     }
@@ -342,6 +345,16 @@ impl Fitter {
 /// The cubic with end points `p0`, `p3` and handles `(A, B)`.
 pub(crate) fn piece<C: Cartesian>(p0: C, p3: C, (a, b): (C, C)) -> Cubic<C> {
     Cubic::new([p0, p0 + a, p3 - b, p3])
+}
+
+/// A handle along a tangent direction kept pointing forward along it: the least squares may
+/// ask for a negative length (the samples pull the other way), which would turn a G1 joint
+/// into a cusp; it gets the shortest length [`clamp_handle`] allows instead.
+fn forward<C: Cartesian>(end: End<C>, h: C, len: f64) -> C {
+    match end {
+        End::Dir(d) if h.dot_with(d) <= 0.0 => d * (1e-3 * len),
+        _ => h,
+    }
 }
 
 /// A handle with its length kept in `[10⁻³ L, L]` (unchanged when `L = 0` or not finite).

@@ -135,8 +135,9 @@ pub struct BSplineFit<C: crate::geom::Cartesian> {
 pub struct Oversketch<C: crate::geom::Cartesian> {
     /// The new curve: piece `i` on `[i, i + 1]`.
     pub curve: CompositeCurve<C>,
-    /// The old curve's parameters `[t0, t1]` of the replaced part (`t0 > t1` never; an
-    /// extension past an end has that end's parameter on that side).
+    /// The old curve's parameters `(t0, t1)` of the replaced part: `t0 ≤ t1`, except on a
+    /// closed curve whose replaced part runs across the seam (from `t0` past the end, round to
+    /// `t1`); an extension gives the curve's end parameter on its side (`(t, b)` or `(a, t)`).
     pub replaced: (f64, f64),
     /// The new pieces `[first, last)` that come from the stroke.
     pub new_pieces: (usize, usize),

@@ -229,6 +229,10 @@ const CASES = [
   ],
   ["too-few-data-points", () => sl.cubicSpline([0, 0], 2, "chord")],
   [
+    "stroke-far-from-curve",
+    () => sl.oversketch(sl.fitCurve([0, 0, 1, 0, 2, 0], 2, 0.1), [0, 5, 1, 5, 2, 5], 2, 0.1),
+  ],
+  [
     "singular-system",
     () => sl.interpolateBSpline([0, 0, 1, 1, 2, 0, 3, 1], 2, 3, [0, 1e-300, 2e-300, 1]),
   ],

@@ -140,6 +140,8 @@ export const CORE_ERRORS = {
     "the interpolation system is singular: t_{index} = {param} must lie inside the support (u_{index}, u_{hiIndex}) = ({lo}, {hi}) of N_{index},{degree} (Schoenberg–Whitney condition)",
   "coreError.too-few-data-points.one": "{what} needs at least {needed} data point, got {got}",
   "coreError.too-few-data-points.other": "{what} needs at least {needed} data points, got {got}",
+  "coreError.stroke-far-from-curve":
+    "the stroke starts {start} and ends {end} from the curve; to redraw a part, start and end it within {near} of the curve (an open curve is also extended by a stroke that starts or ends there)",
   "coreError.singular-system": "{what} is singular: elimination met a zero pivot in row {row}",
   "coreError.spline-kind":
     "{operation} works on splines built by {needs}; this one was built by {got}",
