@@ -1,0 +1,120 @@
+// axe-core (pinned in package.json) on every page of the playground, once per `make test`: the
+// gallery, every demo (www/demos/index.js), every lecture (www/lectures/index.js, its first
+// scene), every exercise (www/exercises/index.js), the embed example, and one Greek page. Each
+// page is checked against WCAG 2.0/2.1/2.2 A and AA and axe's best practices; any violation
+// fails the test, listed as its rule id and the selectors of the nodes it found.
+//
+// The pages' CSP (script-src 'self') blocks an injected inline <script>, so axe's source is
+// evaluated through the DevTools protocol (page.evaluate), which the CSP does not govern.
+import { readFileSync } from "node:fs";
+import { createRequire } from "node:module";
+
+const AXE_SOURCE = readFileSync(
+  createRequire(import.meta.url).resolve("axe-core/axe.min.js"),
+  "utf8",
+);
+/** The rule sets every page must pass. */
+const TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa", "best-practice"];
+
+/**
+ * Runs axe on the page as it is (after loading axe's source into it, once per document) and
+ * returns its violations as lines: "rule-id (impact): selector, selector, …".
+ */
+async function violations(page) {
+  if (!(await page.evaluate(() => typeof window.axe === "object")))
+    await page.evaluate(`${AXE_SOURCE}\n;void 0`);
+  const found = await page.evaluate(
+    async (tags) =>
+      (await window.axe.run(document, { runOnly: { type: "tag", values: tags } })).violations.map(
+        (v) => ({
+          id: v.id,
+          impact: v.impact,
+          targets: v.nodes.map((n) => n.target.map(String).join(" >> ")),
+          summary: v.nodes[0]?.failureSummary?.split("\n").slice(1, 2).join("").trim(),
+        }),
+      ),
+    TAGS,
+  );
+  return found.map(
+    (v) =>
+      `${v.id} (${v.impact}, ${v.targets.length} node${v.targets.length === 1 ? "" : "s"}): ${v.targets.slice(0, 6).join(", ")}${v.targets.length > 6 ? ", …" : ""}${v.summary ? ` — ${v.summary}` : ""}`,
+  );
+}
+
+/**
+ * Registers the axe tests with run.mjs's `test` (each named "axe: …", so the filter "axe" picks
+ * them all). `tools`: { test, assert, context, base, registry, demoHelpers, settle }.
+ * One page of the run's browser context is reused for every page checked.
+ */
+export async function axeSuite({ test, assert, context, base, registry, demoHelpers, settle }) {
+  let page = null;
+  const open = async (path) => {
+    page ??= await context.newPage();
+    await page.goto("about:blank");
+    await page.goto(`${base}/${path}`);
+  };
+  const check = async (what) => {
+    await settle(page);
+    const found = await violations(page);
+    // Every violation on its own line (the runner shows only the head of a failure's message).
+    for (const line of found) console.log(`     axe ${what}: ${line}`);
+    assert(found.length === 0, `${what}: ${found.length} axe violation(s), listed above`);
+  };
+  const { lectures, exercises } = await (async () => {
+    page ??= await context.newPage();
+    await page.goto(`${base}/index.html`);
+    return page.evaluate(async () => ({
+      lectures: (await import("./lectures/index.js")).lectures.map((l) => l.id),
+      exercises: (await import("./exercises/index.js")).exercises.map((e) => e.id),
+    }));
+  })();
+
+  try {
+    await test("axe: the gallery", async () => {
+      await open("index.html");
+      await page.locator("a.card").first().waitFor();
+      await check("gallery");
+    });
+
+    for (const { id } of registry) {
+      await test(`axe: demo ${id}`, async () => {
+        await open(`index.html#demo=${id}`);
+        await demoHelpers(page).ready();
+        await check(id);
+      });
+    }
+
+    for (const id of lectures) {
+      await test(`axe: lecture ${id}`, async () => {
+        await open(`index.html#lecture=${id}`);
+        await demoHelpers(page).ready();
+        await check(`lecture ${id}`);
+      });
+    }
+
+    for (const id of exercises) {
+      await test(`axe: exercise ${id}`, async () => {
+        await open(`index.html#exercise=${id}`);
+        await demoHelpers(page).ready();
+        await check(`exercise ${id}`);
+      });
+    }
+
+    await test("axe: the embed example", async () => {
+      await open("embed-example.html");
+      for (const id of ["worked", "quadratic"]) {
+        await page.locator(`spline-lab#${id}`).scrollIntoViewIfNeeded();
+        await demoHelpers(page, `spline-lab#${id} `).ready();
+      }
+      await check("embed example");
+    });
+
+    await test("axe: a Greek demo page (?lang=el)", async () => {
+      await open("index.html?lang=el#demo=de-boor");
+      await demoHelpers(page).ready();
+      await check("de-boor in Greek");
+    });
+  } finally {
+    await page?.close();
+  }
+}
