@@ -114,6 +114,59 @@ export async function axeSuite({ test, assert, context, base, registry, demoHelp
       await demoHelpers(page).ready();
       await check("de-boor in Greek");
     });
+
+    await test("axe: error messages, light and dark (a bad link; negative weights in dark)", async () => {
+      try {
+        for (const scheme of ["light", "dark"]) {
+          await page.emulateMedia({ colorScheme: scheme });
+          await open("index.html#demo=de-casteljau&s=not-a-state");
+          await demoHelpers(page).ready();
+          assert(
+            (await page.locator(".sl-status").getAttribute("data-kind")) === "error",
+            "the bad link is reported",
+          );
+          await check(`a bad link (${scheme})`);
+        }
+        await open("index.html#demo=negative-weights");
+        await demoHelpers(page).ready();
+        await check("negative-weights (dark)");
+      } finally {
+        await page.emulateMedia({ colorScheme: "light" });
+      }
+    });
+
+    await test("axe: a box that scrolls is a named tab stop while its content overflows, and only then", async () => {
+      await open("index.html");
+      const seen = await page.evaluate(async () => {
+        const { scrollRegion } = await import("./lib/scroll-region.js");
+        const frames = () =>
+          new Promise((ok) => requestAnimationFrame(() => requestAnimationFrame(ok)));
+        const title = Object.assign(document.createElement("p"), { id: "wide-title" });
+        const box = document.createElement("div");
+        box.style.cssText = "width: 200px; overflow-x: auto";
+        const content = document.createElement("div");
+        content.style.cssText = "width: 600px; height: 20px";
+        box.append(content);
+        document.body.append(title, box);
+        scrollRegion(box, { labelledBy: title.id }, [content]);
+        const attributes = () =>
+          ["tabindex", "role", "aria-labelledby"].map((a) => box.getAttribute(a)).join(" ");
+        await frames();
+        const wide = attributes();
+        content.style.width = "100px"; // now it fits
+        await frames();
+        const narrow = attributes();
+        content.style.width = "300px"; // too wide again
+        await frames();
+        const again = attributes();
+        box.remove();
+        title.remove();
+        return { wide, narrow, again };
+      });
+      assert(seen.wide === "0 region wide-title", `overflowing: ${seen.wide}`);
+      assert(seen.narrow === "  ", `fitting: ${JSON.stringify(seen.narrow)}`);
+      assert(seen.again === "0 region wide-title", `overflowing again: ${seen.again}`);
+    });
   } finally {
     await page?.close();
   }
