@@ -1,9 +1,10 @@
 /**
  * Boxes that scroll sideways (a wide table, a formula too long to fit) can be scrolled from the
  * keyboard only when they take focus (WCAG 2.1.1; axe's scrollable-region-focusable). While its
- * content overflows, such a box is a named region in the tab order (role "region", its name,
+ * content overflows, such a box is a named group in the tab order (role "group", its name,
  * tabindex 0: the arrow keys then scroll it); when everything fits it is a plain box again, so a
- * page of narrow tables gains no tab stops.
+ * page of narrow tables gains no tab stops. A group, not a region: a region is a landmark, and
+ * two embeds of one demo on a page would give two landmarks of one name (axe landmark-unique).
  *
  *   scrollRegion(wrap, { labelledBy: title.id }, [table]);  // re-checked when either resizes
  *   scrollRegion(panel, { label: t("shell.formula") });     // markScrollable(panel) after changes
@@ -15,7 +16,7 @@ const watched = new WeakMap();
 const names = new WeakMap();
 let observer = null;
 
-/** Makes `scroller` a focusable named region while its content overflows, a plain box otherwise. */
+/** Makes `scroller` a focusable named group while its content overflows, a plain box otherwise. */
 export function markScrollable(scroller) {
   const name = names.get(scroller);
   if (!name) return;
@@ -25,7 +26,7 @@ export function markScrollable(scroller) {
   if (overflows === scroller.hasAttribute("tabindex")) return;
   const attributes = {
     tabindex: "0",
-    role: "region",
+    role: "group",
     "aria-label": name.label,
     "aria-labelledby": name.labelledBy,
   };
@@ -37,7 +38,7 @@ export function markScrollable(scroller) {
 
 /**
  * Watches `scroller` (and the nodes of `content`, whose size changes with what they show): it
- * becomes a named, focusable region whenever its content overflows. A scroller taken out of the
+ * becomes a named, focusable group whenever its content overflows. A scroller taken out of the
  * document is no longer watched. `name`: { label } (text) or { labelledBy } (an element's id).
  */
 export function scrollRegion(scroller, name, content = []) {
