@@ -153,6 +153,27 @@ export async function axeSuite({ test, assert, context, base, registry, demoHelp
       }
     });
 
+    await test("axe: an unsolved exercise's result and its hint, dark and light", async () => {
+      try {
+        // An exercise checked before it is solved: its "not yet" line and the hint, in both schemes.
+        for (const scheme of ["dark", "light"]) {
+          await page.emulateMedia({ colorScheme: scheme });
+          await open("index.html#exercise=close-the-gap");
+          await demoHelpers(page).ready();
+          await page.locator('[data-action="exercise-check"]').click();
+          await page.locator('[data-action="exercise-hint"]').click();
+          await page.locator(".sl-exercise-result:not(:empty)").waitFor();
+          assert(
+            (await page.locator(".sl-exercise-result").getAttribute("data-kind")) === "not-yet",
+            "the starting state is not a solution",
+          );
+          await check(`an exercise's result (${scheme})`);
+        }
+      } finally {
+        await page.emulateMedia({ colorScheme: "light" });
+      }
+    });
+
     await test("axe: a box that scrolls is a named tab stop while its content overflows, and only then", async () => {
       await open("index.html");
       const seen = await page.evaluate(async () => {
