@@ -40,7 +40,8 @@ const HOST_CSS = `
   min-height: 16rem; display: grid; place-items: center; border: 1px dashed #8a8a8a;
   border-radius: 6px; color: #5a5a5a; font: 15px system-ui, sans-serif;
 }
-.sl-embed-error { color: #d55e00; font: 600 15px system-ui, sans-serif; }
+.sl-embed-error { color: #b34f00; font: 600 15px system-ui, sans-serif; }
+@media (prefers-color-scheme: dark) { .sl-embed-error { color: #e8772e; } }
 .sl-embed-error::before { content: "⚠ "; }
 `;
 

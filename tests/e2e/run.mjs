@@ -18,6 +18,7 @@ import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 import { encodeStroke } from "../../www/lib/stroke-code.js";
 import { distSuite } from "./dist.mjs";
+import { axeSuite } from "./axe.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
@@ -2002,6 +2003,9 @@ try {
       await old.close();
     }
   });
+
+  // axe-core on every page (gallery, demos, lectures, exercises, embed example, one Greek page).
+  await axeSuite({ test, assert, context, base, registry, demoHelpers, settle });
 
   // The built site (make dist), served as a host would: on one more page of this browser.
   await distSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });

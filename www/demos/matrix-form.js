@@ -398,7 +398,8 @@ export function setup(ui) {
     cells = [];
     heads = [];
     factorCell = el("td", { rowspan: String(n), dataset: { cell: "factor" } });
-    const header = [el("th", { scope: "col", text: "" }), el("th", { scope: "col", text: "" })];
+    // The corner above the factor and the row names heads nothing: plain cells, not headers.
+    const header = [el("td"), el("td")];
     for (let j = 0; j < n; j++) heads.push(el("th", { scope: "col", dataset: { col: String(j) } }));
     const rows = [];
     for (let row = 0; row < n; row++) {

@@ -417,7 +417,7 @@ export function setup(ui) {
       const name = el("th", { scope: "row", text: `P${subscript(i)}` });
       body.push(el("tr", { dataset: { index: String(i) } }, name, Object.values(cells)));
     }
-    const corner = el("th", { scope: "col", text: "" });
+    const corner = el("td"); // above the row names: heads nothing
     table.replaceChildren(el("thead", {}, el("tr", {}, corner, head)), el("tbody", {}, body));
   }
 

@@ -110,7 +110,7 @@ export function formulaFields({ legend, rows, help = null, check, apply }) {
             dataset: { error: field },
             "aria-live": "polite",
           });
-          note.style.color = "var(--sl-error)";
+          note.style.color = "var(--sl-error-text)";
           boxes[field] = box;
           notes[field] = note;
           shown[field] = ui.state[field];

@@ -11,6 +11,8 @@
  * stay. KaTeX lays digits out the same whatever they are (all digits share one width, height
  * and class in its fonts), so the picture is the one a full typeset gives.
  */
+import { t } from "./strings.js";
+import { markScrollable, scrollRegion } from "./scroll-region.js";
 
 const KATEX_MODULE = new URL("../vendor/katex/katex.mjs", import.meta.url);
 /**
@@ -176,6 +178,8 @@ export class FormulaPanel {
   constructor(element) {
     this.element = element;
     this.element.classList.add("sl-formula");
+    // Lines too long even at the smallest scale scroll: the panel is then a tab stop.
+    scrollRegion(this.element, { label: t("shell.formula") });
     /**
      * Per line: `{ div, tex, shape, nodes, slots, runs, spokenStale, scale }` (shape null:
      * typeset whole; `spokenStale`: its MathML still shows earlier digits).
@@ -356,6 +360,7 @@ export class FormulaPanel {
       line.scale = scale;
       line.div.style.fontSize = scale === 1 ? "" : `${scale}em`;
     });
+    markScrollable(this.element);
   }
 
   destroy() {

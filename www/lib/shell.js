@@ -175,6 +175,8 @@ export function mountDemo(
     el("span", { class: "sl-tool-group" }, buttons.import, fileInput),
   );
 
+  // The about section's headings sit one level under the title (h1 → h2, h2 → h3): no skipped level.
+  const subHeading = `h${Math.min(6, Number(headingLevel.slice(1)) + 1)}`;
   const tryItems = [];
   for (let i = 1; i <= MAX_TRY_ITEMS && has(`${prefix}.try${i}`); i++)
     tryItems.push(el("li", { text: t(`${prefix}.try${i}`) }));
@@ -183,9 +185,9 @@ export function mountDemo(
       ? el(
           "section",
           { class: "sl-about" },
-          el("h3", { text: t("shell.whatYouSee") }),
+          el(subHeading, { text: t("shell.whatYouSee") }),
           el("p", { text: t(`${prefix}.whatYouSee`) }),
-          el("h3", { text: t("shell.tryThis") }),
+          el(subHeading, { text: t("shell.tryThis") }),
           el("ul", {}, tryItems),
         )
       : null;

@@ -146,6 +146,7 @@ const EN = {
 
   // Shell
   "shell.controls": "Controls",
+  "shell.formula": "Formula",
   "shell.whatYouSee": "What you see",
   "shell.tryThis": "Try this",
   "shell.figureHelp3d":

@@ -105,7 +105,7 @@ export class SystemTable {
       th(headers.label),
       columns.map((j) => th(j === ELLIPSIS ? "⋯" : unknown(j))),
       th(headers.unknown),
-      equation ? th("") : null,
+      equation ? el("td") : null, // above the "=" column: heads nothing
       th(headers.rhs),
       equation ? th(headers.solution) : null,
     );

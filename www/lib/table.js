@@ -10,12 +10,14 @@
  */
 import { el, setText } from "./controls.js";
 import { t } from "./strings.js";
+import { scrollRegion } from "./scroll-region.js";
 
 let nextId = 0;
 
 /**
  * A `<p class="sl-table-title">` and a `<table class="sl-table" data-table="name">` labelled by it
- * (`aria-labelledby`, an id unique on the page), the table inside a `.sl-table-wrap`.
+ * (`aria-labelledby`, an id unique on the page), the table inside a `.sl-table-wrap` (which, when
+ * the table is too wide, is a tab stop named by the title: scroll-region.js).
  * `caption`: the title's text when it never changes; `children`: the table's first contents.
  * Returns `{ title, table, wrap }`; append `title` and `wrap` where the table goes.
  */
@@ -27,7 +29,12 @@ export function titledTable(name, { caption, children = [] } = {}) {
     { class: "sl-table", dataset: { table: name }, "aria-labelledby": title.id },
     children,
   );
-  return { title, table, wrap: el("div", { class: "sl-table-wrap" }, table) };
+  const wrap = scrollRegion(
+    el("div", { class: "sl-table-wrap" }, table),
+    { labelledBy: title.id },
+    [table],
+  );
+  return { title, table, wrap };
 }
 
 /**

@@ -50,6 +50,7 @@ export default {
   "toolbar.lecture.title": "Μεγάλο κείμενο και παχιές γραμμές για προβολή",
   "toolbar.export": "Εξαγωγή:",
   "shell.controls": "Χειριστήρια",
+  "shell.formula": "Τύπος",
   "shell.whatYouSee": "Τι βλέπετε",
   "shell.tryThis": "Δοκιμάστε",
   "shell.figureHelp3d":

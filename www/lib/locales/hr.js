@@ -48,6 +48,7 @@ export default {
   "toolbar.lecture.title": "Veliki tekst i debele linije za projekciju",
   "toolbar.export": "Izvoz:",
   "shell.controls": "Upravljanje",
+  "shell.formula": "Formula",
   "shell.whatYouSee": "Što vidite",
   "shell.tryThis": "Isprobajte",
   "shell.figureHelp3d":

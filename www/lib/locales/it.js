@@ -48,6 +48,7 @@ export default {
   "toolbar.lecture.title": "Testo e tratti grandi per la proiezione",
   "toolbar.export": "Esporta:",
   "shell.controls": "Comandi",
+  "shell.formula": "Formula",
   "shell.whatYouSee": "Cosa vedi",
   "shell.tryThis": "Prova",
   "shell.figureHelp3d":
