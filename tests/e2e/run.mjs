@@ -17,6 +17,7 @@ import { fuzzStates } from "./state-fuzz.mjs";
 import { compileTikz, hasPdflatex, inspectTikz } from "./tikz-check.mjs";
 import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 import { distSuite } from "./dist.mjs";
+import { offlineSuite } from "./offline.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
@@ -1991,6 +1992,8 @@ try {
 
   // The built site (make dist), served as a host would: on one more page of this browser.
   await distSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
+  // The built site offline: its service worker, precache and update (its own build and origin).
+  await offlineSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
 } catch (err) {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);
