@@ -16,8 +16,8 @@
 // - In development (`make serve` of www/) nothing registers a worker (www/lib/offline.js), and
 //   this file, with no files listed, is the pass-through that retires one: if a built site's
 //   worker is left on the origin (e.g. `make serve-dist` on the same port), the browser's update
-//   check fetches this file, which installs at once, deletes the caches, unregisters itself and
-//   reloads the open pages, so development never sees stale files.
+//   check fetches this file, which installs at once, deletes the caches and unregisters itself:
+//   the page that brought it was still the built one, the next load is www/'s (a reload).
 const BUILD = { version: "dev", files: [] };
 const PREFIX = "splinelab-";
 const CACHE = `${PREFIX}${BUILD.version}`;
@@ -51,10 +51,7 @@ async function activate() {
   for (const key of await caches.keys())
     if (key.startsWith(PREFIX) && key !== CACHE) await caches.delete(key);
   if (!PASS_THROUGH) return;
-  await self.clients.claim();
   await self.registration.unregister();
-  for (const client of await self.clients.matchAll({ type: "window" }))
-    client.navigate(client.url).catch(() => {});
 }
 
 /** The listed file `request` asks for (a navigation to a folder means its index.html), or null. */

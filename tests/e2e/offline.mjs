@@ -12,7 +12,10 @@
 // 3. deploys a rebuild with a changed stylesheet (new hashed names, the old one gone from the
 //    host): the update check installs version 2 beside version 1; the open page, reloaded, is
 //    still wholly version 1 (its old stylesheet, from the cache); once it is closed version 2
-//    takes over, the next page is wholly version 2 and version 1's cache is deleted.
+//    takes over, the next page is wholly version 2 and version 1's cache is deleted;
+// 4. serves www/ (`make serve`) on the same origin: the first page still comes from the built
+//    site's cache, but www/sw.js (the pass-through) replaces that worker, deletes its cache and
+//    unregisters; the reloaded page is www/'s own, with no worker.
 import { cp, mkdtemp, readFile, rm, writeFile } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join, relative } from "node:path";
@@ -63,7 +66,8 @@ function workerState(page) {
 async function until(page, what, fn, arg = null, ms = 20_000) {
   const end = Date.now() + ms;
   for (;;) {
-    if (await page.evaluate(fn, arg)) return;
+    // A page that navigates meanwhile loses its context: ask again.
+    if (await page.evaluate(fn, arg).catch(() => false)) return;
     if (Date.now() > end) throw new Error(`timed out waiting for ${what}`);
     await new Promise((done) => setTimeout(done, 100));
   }
@@ -271,6 +275,30 @@ export async function offlineSuite({
         "2",
         "version 2's rule applies",
       );
+    });
+
+    await test("offline: development (www/) on the same origin retires a built site's worker", async () => {
+      needSite();
+      // `make serve` where `make serve-dist` ran: same port, www/ with its pass-through sw.js.
+      await stop(server);
+      server = await startServer(port, "127.0.0.1", WWW);
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html#demo=de-casteljau`);
+      await until(
+        page,
+        "the built site's worker and cache to be gone",
+        async () =>
+          !(await navigator.serviceWorker.getRegistration()) &&
+          (await caches.keys()).filter((k) => k.startsWith("splinelab-")).length === 0,
+      );
+      await page.reload();
+      await checkPage("de-casteljau from www/", demoHelpers(page));
+      equal(
+        await page.evaluate(() => document.querySelector('script[type="module"]').src),
+        `${base}/app.js`,
+        "the page is www/'s",
+      );
+      equal((await workerState(page)).controlled, false, "development pages are not controlled");
     });
   } finally {
     await page?.close();
