@@ -55,13 +55,17 @@ export async function writeServiceWorker(site, www) {
   if (!BUILD_LINE.test(source)) throw new Error("dist: www/sw.js has no BUILD line to fill in");
   // The worker's own code counts too: a changed worker gets a fresh cache.
   const version = createHash("sha256").update(source);
-  for (const path of files)
-    version.update(
-      `${path}\0${createHash("sha256")
-        .update(await readFile(join(site, path)))
-        .digest("hex")}\n`,
-    );
-  const build = { version: version.digest("hex").slice(0, 16), files };
+  /** SHA-256 (hex) of each file whose name does not say its content: the worker checks what it
+   * fetched against them, so a host or CDN still sending an old page cannot mix versions. */
+  const digests = {};
+  for (const path of files) {
+    const digest = createHash("sha256")
+      .update(await readFile(join(site, path)))
+      .digest("hex");
+    version.update(`${path}\0${digest}\n`);
+    if (!path.startsWith("assets/")) digests[path] = digest;
+  }
+  const build = { version: version.digest("hex").slice(0, 16), files, digests };
   await writeFile(
     join(site, "sw.js"),
     source.replace(BUILD_LINE, () => `const BUILD = ${JSON.stringify(build)};`),

@@ -1,8 +1,9 @@
 // The offline worker (README "Deploy"; issue 26). One file, two roles:
 //
 // - In the built site (`make dist`) scripts/service-worker.mjs writes it to `sw.js` at the site
-//   root with BUILD filled in: the version (a hash of every precached file's path and content)
-//   and the files (every hashed asset, the HTML entry points, embed.js, the manifest and icons).
+//   root with BUILD filled in: the version (a hash of every precached file's path and content),
+//   the SHA-256 of each unhashed one, and the files (every hashed asset, the HTML entry points,
+//   embed.js, the manifest and icons).
 //   Installing stores them all in the cache `splinelab-<version>` (all or nothing: a failed fetch
 //   fails the install, and the browser retries at the next visit); from then on a request for one
 //   of them, or a navigation to a page of the site (query ignored), is answered from that cache,
@@ -25,25 +26,39 @@ const PASS_THROUGH = BUILD.files.length === 0;
 const SCOPE = new URL(self.registration.scope);
 const LISTED = new Set(BUILD.files);
 
-/** Fetches every listed file into this version's cache; rejects (failing the install) on any
- * error. The hashed files may come from the HTTP cache (a name never changes content); the
- * others are revalidated. */
+/** The SHA-256 of `body` in hex. */
+async function sha256(body) {
+  const digest = new Uint8Array(await crypto.subtle.digest("SHA-256", body));
+  return Array.from(digest, (b) => b.toString(16).padStart(2, "0")).join("");
+}
+
+/** Fetches every listed file, then stores them all in this version's cache; rejects (failing
+ * the install, with nothing stored) on any error. A hashed file (assets/) may come from the HTTP
+ * cache: its name says its content. The others (pages, embed.js, manifest, icons) are
+ * revalidated and must have this build's SHA-256 (BUILD.digests), or the install fails and is
+ * retried at the next visit: a host or CDN still sending an old page cannot put it beside this
+ * version's files. */
 async function precache() {
-  const cache = await caches.open(CACHE);
-  await Promise.all(
+  const fetched = await Promise.all(
     BUILD.files.map(async (path) => {
       const url = new URL(path, SCOPE);
-      const response = await fetch(url, {
-        cache: path.startsWith("assets/") ? "default" : "no-cache",
-      });
+      const expected = BUILD.digests?.[path];
+      const response = await fetch(url, { cache: expected ? "no-cache" : "default" });
       if (!response.ok) throw new Error(`splinelab offline: ${path}: HTTP ${response.status}`);
-      // A redirected response may not answer a navigation: store its body under the asked URL.
-      await cache.put(
-        url,
-        response.redirected ? new Response(await response.blob(), response) : response,
-      );
+      const body = await response.arrayBuffer();
+      if (expected && (await sha256(body)) !== expected)
+        throw new Error(`splinelab offline: ${path} is not this version's`);
+      // Stored as a new response (a redirected one may not answer a navigation) whose headers no
+      // longer say br/gzip or the encoded length: the body is decoded.
+      const headers = new Headers(response.headers);
+      headers.delete("content-encoding");
+      headers.delete("content-length");
+      const { status, statusText } = response;
+      return [url, new Response(body, { status, statusText, headers })];
     }),
   );
+  const cache = await caches.open(CACHE);
+  await Promise.all(fetched.map(([url, response]) => cache.put(url, response)));
 }
 
 /** Deletes the caches of every other version; the pass-through also leaves the origin. */

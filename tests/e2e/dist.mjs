@@ -122,7 +122,10 @@ export async function distSuite({
           });
       });
       // Every violation of the pages' CSP is recorded (a bundle must not need an inline script).
+      // The offline worker is not registered: these pages measure what goes over the wire, as a
+      // first visit sees it (tests/e2e/offline.mjs tests the worker).
       await page.addInitScript(() => {
+        ServiceWorkerContainer.prototype.register = () => new Promise(() => {});
         window.__violations = [];
         document.addEventListener("securitypolicyviolation", (e) =>
           window.__violations.push(`CSP: ${e.violatedDirective} ${e.blockedURI}`),

@@ -3,7 +3,8 @@
 // `make dist` does), serves it with scripts/serve.mjs on one extra page of the run's browser
 // (its own origin, so its worker touches no other suite), and:
 // 1. loads a demo once, waits until the worker is activated (its install = the whole precache),
-//    and checks that the cache holds every HTML page, embed.js, the manifest and icons, and
+//    checks that Chromium finds the site installable (manifest, icons: Page.getInstallability-
+//    Errors) and that the cache holds every HTML page, embed.js, the manifest and icons, and
 //    every hashed file of the site but the KaTeX fallback fonts (listed from disk, not taken
 //    from the worker);
 // 2. takes the network away twice over (the context's offline mode, and the server closed),
@@ -15,7 +16,9 @@
 //    takes over, the next page is wholly version 2 and version 1's cache is deleted;
 // 4. serves www/ (`make serve`) on the same origin: the first page still comes from the built
 //    site's cache, but www/sw.js (the pass-through) replaces that worker, deletes its cache and
-//    unregisters; the reloaded page is www/'s own, with no worker.
+//    unregisters; the reloaded page is www/'s own, with no worker;
+// 5. a host sending an index.html other than the build's beside its sw.js: the install fails
+//    and stores nothing; with the right page it succeeds.
 import { cp, mkdtemp, readFile, rm, writeFile } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join, relative } from "node:path";
@@ -131,7 +134,7 @@ export async function offlineSuite({
   }
 
   try {
-    await test("offline: the built site installs its worker, which precaches the whole site", async () => {
+    await test("offline: make dist builds the site with its worker", async () => {
       dir = await mkdtemp(join(tmpdir(), "splinelab-offline-"));
       site = join(dir, "site");
       await buildSite({ out: site });
@@ -141,11 +144,37 @@ export async function offlineSuite({
       base = `http://127.0.0.1:${port}`;
       page = await newPage();
       errors = watchErrors(page);
+    });
+
+    await test("offline: the built site installs its worker, which precaches the whole site", async () => {
+      needSite();
       await page.goto(`${base}/index.html#demo=de-casteljau`);
       await checkPage("de-casteljau, online", demoHelpers(page));
       await settledWorker(page);
       const state = await workerState(page);
       equal(state.caches.join(), `splinelab-${version}`, "the one cache is this build's");
+      // Installable: Chromium's own verdict on the manifest, its icons and the worker.
+      const cdp = await context.newCDPSession(page);
+      try {
+        const manifest = await cdp.send("Page.getAppManifest");
+        equal(manifest.url, `${base}/manifest.webmanifest`, "the page's manifest");
+        equal(JSON.stringify(manifest.errors), "[]", "manifest errors");
+        const { installabilityErrors } = await cdp.send("Page.getInstallabilityErrors");
+        equal(JSON.stringify(installabilityErrors), "[]", "installability errors");
+      } finally {
+        await cdp.detach();
+      }
+      // Each PNG icon is as large as the manifest says (its IHDR chunk).
+      const { icons } = JSON.parse(await readFile(join(site, "manifest.webmanifest"), "utf8"));
+      for (const icon of icons.filter((i) => i.type === "image/png")) {
+        const png = await readFile(join(site, icon.src));
+        equal(`${png.readUInt32BE(16)}x${png.readUInt32BE(20)}`, icon.sizes, icon.src);
+      }
+      assert(
+        icons.some((i) => i.purpose === "maskable") &&
+          ["192x192", "512x512"].every((size) => icons.some((i) => i.sizes === size)),
+        "icons of 192 and 512 px and a maskable one",
+      );
       equal(state.controlled, false, "the first page is not taken over (no clients.claim)");
 
       // What must be there, listed from disk: every page, embed.js, the manifest and icons, and
@@ -248,11 +277,22 @@ export async function offlineSuite({
         `the reloaded page keeps version 1's stylesheet: ${JSON.stringify(reloaded)}`,
       );
 
-      // Close every page of version 1: version 2 activates and deletes version 1's cache.
-      await page.close();
-      page = await newPage();
-      errors = watchErrors(page);
-      await page.goto(`${base}/index.html#demo=de-casteljau`);
+      // Close every page of version 1: version 2 activates and deletes version 1's cache. The
+      // browser lets go of a closed page's worker a moment later: a page opened meanwhile is
+      // still version 1's (and holds it), so close and open again until the page is version 2's.
+      const sheet = () =>
+        page.evaluate(() =>
+          [...document.styleSheets].map((s) => s.href).find((h) => /\/style-/.test(h)),
+        );
+      for (let attempt = 1; ; attempt++) {
+        await page.close();
+        await new Promise((done) => setTimeout(done, 300 * attempt));
+        page = await newPage();
+        errors = watchErrors(page);
+        await page.goto(`${base}/index.html#demo=de-casteljau`);
+        if ((await sheet()) !== styleV1) break;
+        assert(attempt < 6, "version 2 never took over");
+      }
       await checkPage("version 2", demoHelpers(page));
       await settledWorker(page);
       await until(
@@ -264,9 +304,7 @@ export async function offlineSuite({
       );
       state = await workerState(page);
       equal(state.controlled, true, "the new page is controlled");
-      const styleV2 = await page.evaluate(() =>
-        [...document.styleSheets].map((s) => s.href).find((h) => /\/style-/.test(h)),
-      );
+      const styleV2 = await sheet();
       assert(styleV2 && styleV2 !== styleV1, `version 2's stylesheet: ${styleV2} (was ${styleV1})`);
       equal(
         await page.evaluate(() =>
@@ -299,6 +337,53 @@ export async function offlineSuite({
         "the page is www/'s",
       );
       equal((await workerState(page)).controlled, false, "development pages are not controlled");
+    });
+
+    await test("offline: a page that is not the build's fails the install, and stores nothing", async () => {
+      needSite();
+      // A host (or CDN) still sending an older index.html beside the new sw.js and assets.
+      const page2 = await newPage();
+      const errors2 = watchErrors(page2);
+      const other = await startServer(0, "127.0.0.1", site);
+      // index.html and its .br/.gz (the server sends those when the browser takes them).
+      const index = join(site, "index.html");
+      const original = await Promise.all(["", ".br", ".gz"].map((ext) => readFile(index + ext)));
+      const restore = () =>
+        Promise.all(["", ".br", ".gz"].map((ext, k) => writeFile(index + ext, original[k])));
+      try {
+        const at = `http://127.0.0.1:${other.address().port}`;
+        /** Registers sw.js from the embed example (which registers nothing itself) and resolves
+         * to the state its worker ends in. */
+        const install = () =>
+          page2.evaluate(async () => {
+            const reg = await navigator.serviceWorker.register("sw.js");
+            const worker = reg.installing ?? reg.waiting ?? reg.active;
+            const end = ["redundant", "activated"];
+            if (!end.includes(worker.state))
+              await new Promise((done) =>
+                worker.addEventListener("statechange", () => end.includes(worker.state) && done()),
+              );
+            const names = await caches.keys();
+            return { state: worker.state, caches: names.filter((k) => k.startsWith("splinelab-")) };
+          });
+        await writeFile(index, Buffer.concat([original[0], Buffer.from("<!-- older -->\n")]));
+        await rm(`${index}.br`);
+        await rm(`${index}.gz`);
+        await page2.goto(`${at}/embed-example.html`);
+        const failed = await install();
+        equal(failed.state, "redundant", "the worker with an unexpected page");
+        equal(failed.caches.length, 0, "no cache is left behind");
+        // The control: the same worker with the build's page installs.
+        await restore();
+        const installed = await install();
+        equal(installed.state, "activated", "the worker with the build's page");
+        equal(installed.caches.join(), `splinelab-${await builtVersion(site)}`, "its cache");
+        errors2.take(); // the failed install's message, expected
+      } finally {
+        await restore();
+        await page2.close();
+        await stop(other);
+      }
     });
   } finally {
     await page?.close();
