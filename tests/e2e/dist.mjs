@@ -125,7 +125,8 @@ export async function distSuite({
       // The offline worker is not registered: these pages measure what goes over the wire, as a
       // first visit sees it (tests/e2e/offline.mjs tests the worker).
       await page.addInitScript(() => {
-        ServiceWorkerContainer.prototype.register = () => new Promise(() => {});
+        if (window.ServiceWorkerContainer)
+          ServiceWorkerContainer.prototype.register = () => new Promise(() => {});
         window.__violations = [];
         document.addEventListener("securitypolicyviolation", (e) =>
           window.__violations.push(`CSP: ${e.violatedDirective} ${e.blockedURI}`),
