@@ -24,6 +24,7 @@ import { basename, dirname, extname, join, relative, resolve, sep } from "node:p
 import { fileURLToPath } from "node:url";
 import { promisify } from "node:util";
 import { brotliCompress, constants, gzip } from "node:zlib";
+import { SERVICE_WORKER_DEFINE, writeServiceWorker } from "./service-worker.mjs";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
 export const WWW = join(ROOT, "www");
@@ -203,6 +204,7 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
     legalComments: "eof",
     charset: "utf8",
     absWorkingDir: ROOT,
+    define: SERVICE_WORKER_DEFINE,
   };
 
   /** A module the site imports by URL (`import(url.href)`: the wasm glue, KaTeX), bundled alone. */
@@ -269,6 +271,7 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
     if (existsSync(join(vendor, lib, "LICENSE")))
       await copyFile(join(vendor, lib, "LICENSE"), join(next, "licenses", `${lib}.txt`));
 
+  await writeServiceWorker(next, www); // manifest, icons, sw.js (scripts/service-worker.mjs)
   const files = await listFiles(next);
   await compressAll(files);
   let bytes = 0;

@@ -19,6 +19,7 @@ import { exercises, findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
+import { registerOffline } from "./lib/offline.js";
 
 /**
  * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
@@ -467,3 +468,4 @@ async function start() {
 }
 
 start();
+registerOffline();

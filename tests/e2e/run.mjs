@@ -19,6 +19,7 @@ import { CHROMIUM, CHROMIUM_ARGS } from "../../scripts/chromium.mjs";
 import { encodeStroke } from "../../www/lib/stroke-code.js";
 import { distSuite } from "./dist.mjs";
 import { axeSuite } from "./axe.mjs";
+import { offlineSuite } from "./offline.mjs";
 
 const VIEWPORT = { width: 1280, height: 900 };
 /** Longest a single test may take (ms) before it counts as failed. */
@@ -2009,6 +2010,8 @@ try {
 
   // The built site (make dist), served as a host would: on one more page of this browser.
   await distSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
+  // The built site offline: its service worker, precache and update (its own build and origin).
+  await offlineSuite({ test, assert, equal, context, watchErrors, demoHelpers, settle });
 } catch (err) {
   failed += 1;
   console.log(`FAIL runner: ${err.stack ?? err}`);

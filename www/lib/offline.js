@@ -1,0 +1,19 @@
+/**
+ * Registers the offline worker (www/sw.js, README "Deploy") in the built site only.
+ *
+ * `make dist` defines SPLINELAB_SERVICE_WORKER (esbuild `define`, scripts/service-worker.mjs) as
+ * the worker's URL relative to the bundle in assets/, i.e. `sw.js` at the site root, whose scope
+ * is then the whole site. In development (www/, unbundled) it is undefined and nothing is
+ * registered: every reload gets the current files from `make serve`. The embed does not call
+ * this: it runs inside other people's pages, whose origin is not the playground's.
+ *
+ * Registration waits for the page's `load` event, so the precache (the whole site) does not
+ * compete with the first figure's downloads; a failure leaves the site working online as before.
+ */
+export function registerOffline() {
+  if (typeof SPLINELAB_SERVICE_WORKER === "undefined" || !("serviceWorker" in navigator)) return;
+  const url = new URL(SPLINELAB_SERVICE_WORKER, import.meta.url);
+  const register = () => navigator.serviceWorker.register(url).catch(() => {});
+  if (document.readyState === "complete") register();
+  else addEventListener("load", register, { once: true });
+}
