@@ -106,6 +106,10 @@ pub(crate) fn find<C: Cartesian>(stroke: &Stroke<C>, closed: bool, tol: f64) -> 
         }
         let h = W as f64 * step;
         let index = apex(stroke, closed, j as f64 * step, h);
+        // An open stroke's ends are no corners: the window must see both sides.
+        if !closed && (stroke.arc[index] < 0.5 * h || stroke.arc[index] > total - 0.5 * h) {
+            continue;
+        }
         // The turn at the apex sample, over the full window and half of it.
         let around = |d: f64| {
             let si = stroke.arc[index];

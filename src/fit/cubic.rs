@@ -162,7 +162,13 @@ impl Fitter {
             if let Some(h) = self.least_squares(pts, p0, p3, start, end, tangents) {
                 handles = h;
             }
-            handles = (clamp_handle(handles.0, len), clamp_handle(handles.1, len));
+            // A fixed handle (a C1 joint) stays as given.
+            if !matches!(start, End::Handle(_)) {
+                handles.0 = clamp_handle(handles.0, len);
+            }
+            if !matches!(end, End::Handle(_)) {
+                handles.1 = clamp_handle(handles.1, len);
+            }
         }
         piece(p0, p3, handles)
     }
