@@ -132,8 +132,10 @@ pub struct BSplineFit<C: crate::geom::Cartesian> {
 pub struct Oversketch<C: crate::geom::Cartesian> {
     /// The new curve: piece `i` on `[i, i + 1]`.
     pub curve: CompositeCurve<C>,
-    /// The old curve's parameters `[t0, t1]` of the replaced part (`t0 > t1` never; an
-    /// extension past an end has that end's parameter on that side).
+    /// The old curve's parameters `(t0, t1)` of the replaced part: `t0 <= t1` on an open curve
+    /// (an extension past an end has that end's parameter on both sides, `(end, end)` or
+    /// `(start, start)`); on a closed curve `t0 > t1` when the replaced arc runs through the
+    /// seam (from `t0` to the end, then from the start to `t1`).
     pub replaced: (f64, f64),
     /// The new pieces `[first, last)` that come from the stroke.
     pub new_pieces: (usize, usize),
