@@ -12,7 +12,7 @@
 //!    the stroke's points at arc lengths `j·S ∓ WS` (the apex `p`).
 //! 5. It is a corner when the turning angle at the apex, `∠(p − X(σ − WS), X(σ + WS) − p)`
 //!    (`X(σ)` the stroke's point at arc length `σ`, `σ` the apex's), is at least
-//!    [`MIN_ANGLE`] (jitter shortens straws a little, it does not turn the chords by 35°), and
+//!    [`MIN_ANGLE`] (jitter shortens straws a little, it does not turn the chords by 40°), and
 //!    the turn is concentrated: over half the window it is at least [`CONCENTRATION`] of the
 //!    full one. A sharp corner turns as much at every scale; an arc of any radius turns
 //!    exactly half as much over half the arc length (chords of arc `a` either side of a point
@@ -24,8 +24,8 @@ use crate::geom::Cartesian;
 /// Half the straw window, in resampled points.
 const W: usize = 4;
 
-/// The smallest turning angle of a corner (radians, 35°).
-pub(crate) const MIN_ANGLE: f64 = 35.0 * std::f64::consts::PI / 180.0;
+/// The smallest turning angle of a corner (radians, 40°).
+pub(crate) const MIN_ANGLE: f64 = 40.0 * std::f64::consts::PI / 180.0;
 
 /// The straw ratio below which a point may be a corner.
 const STRAW_RATIO: f64 = 0.95;
@@ -106,6 +106,10 @@ pub(crate) fn find<C: Cartesian>(stroke: &Stroke<C>, closed: bool, tol: f64) -> 
         }
         let h = W as f64 * step;
         let index = apex(stroke, closed, j as f64 * step, h);
+        // An open stroke's ends are no corners: the window must see both sides.
+        if !closed && (stroke.arc[index] < 0.5 * h || stroke.arc[index] > total - 0.5 * h) {
+            continue;
+        }
         // The turn at the apex sample, over the full window and half of it.
         let around = |d: f64| {
             let si = stroke.arc[index];

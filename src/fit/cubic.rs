@@ -162,10 +162,13 @@ impl Fitter {
             if let Some(h) = self.least_squares(pts, p0, p3, start, end, tangents) {
                 handles = h;
             }
-            handles = (
-                clamp_handle(forward(start, handles.0, len), len),
-                clamp_handle(forward(end, handles.1, len), len),
-            );
+            // A fixed handle (a C1 joint) stays as given.
+            if !matches!(start, End::Handle(_)) {
+                handles.0 = clamp_handle(forward(start, handles.0, len), len);
+            }
+            if !matches!(end, End::Handle(_)) {
+                handles.1 = clamp_handle(forward(end, handles.1, len), len);
+            }
         }
         piece(p0, p3, handles)
     }

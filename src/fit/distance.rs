@@ -1,9 +1,12 @@
 //! The measured distance from a sample `q` to a cubic piece: `min_u |C(u) − q|` over `[0, 1]`.
 //!
-//! The piece is sampled at [`COARSE`] + 1 equally spaced parameters; the sample closest to `q`
-//! brackets the minimiser in `[u_{k−1}, u_{k+1}]`, where the root of `g(u) = (C(u) − q)·C'(u)`
-//! is found by Newton's method safeguarded by bisection (a step that leaves the bracket is
-//! replaced by the midpoint), to `10⁻¹⁴` in `u`. The bracket's ends are candidates too.
+//! The piece is sampled at [`COARSE`] + 1 equally spaced parameters; each local minimum `k`
+//! of those samples' distances to `q` brackets a minimiser in `[u_{k−1}, u_k]` or
+//! `[u_k, u_{k+1}]`, where the root of `g(u) = (C(u) − q)·C'(u)` is found by Newton's method
+//! safeguarded by bisection (a step that leaves the bracket is replaced by the midpoint), to
+//! `10⁻¹⁵` in `u`; plain Newton steps from the sample (kept in the bracket) catch a minimum
+//! between a local maximum and the sample near a cusp. The samples themselves are candidates
+//! too.
 //!
 //! [`measure`] finds the largest distance over a run of samples without the full search for
 //! most of them: the distance to *some* point of the piece bounds the distance to the piece
@@ -15,6 +18,15 @@ use crate::geom::Cartesian;
 
 /// Coarse intervals of the bracketing search.
 pub(crate) const COARSE: usize = 32;
+
+/// Plain Newton steps from each local minimum of the coarse distances.
+const NEWTON_STEPS: usize = 12;
+
+/// Coarse samples nearest `q` that also seed plain Newton iterations.
+const EXTRA_SEEDS: usize = 8;
+
+/// The most local minima of the coarse distances refined.
+const MAX_BRACKETS: usize = 4;
 
 /// The coarse polyline of a piece.
 pub(crate) struct Coarse<C> {
@@ -32,41 +44,70 @@ impl<C: Cartesian> Coarse<C> {
     }
 }
 
-/// The distance from `q` to `cubic` and the parameter of the closest point.
+/// The distance from `q` to `cubic` and the parameter of the closest point: every local
+/// minimum of the coarse distances (at most [`MAX_BRACKETS`], nearest first) brackets a
+/// candidate on each side, refined by [`refine`].
 pub(crate) fn closest<C: Cartesian>(cubic: &Cubic<C>, coarse: &Coarse<C>, q: C) -> (f64, f64) {
-    let mut k = 0;
-    let mut best = f64::INFINITY;
-    for (j, &p) in coarse.pts.iter().enumerate() {
-        let d = (p - q).dot_with(p - q);
-        if d < best {
-            best = d;
-            k = j;
+    let mut d2 = [0.0; COARSE + 1];
+    for (d, &p) in d2.iter_mut().zip(&coarse.pts) {
+        *d = (p - q).dot_with(p - q);
+    }
+    let mut minima = [(f64::INFINITY, 0usize); MAX_BRACKETS];
+    for k in 0..=COARSE {
+        let left = k == 0 || d2[k] <= d2[k - 1];
+        let right = k == COARSE || d2[k] <= d2[k + 1];
+        if left && right {
+            // Keep the MAX_BRACKETS nearest.
+            let worst = (0..MAX_BRACKETS)
+                .max_by(|&i, &j| minima[i].0.total_cmp(&minima[j].0))
+                .unwrap_or(0);
+            if d2[k] < minima[worst].0 {
+                minima[worst] = (d2[k], k);
+            }
         }
     }
     let h = 1.0 / COARSE as f64;
-    let mid = k as f64 * h;
-    let mut result = (best.sqrt(), mid);
-    let lo = k.saturating_sub(1) as f64 * h;
-    let hi = (k + 1).min(COARSE) as f64 * h;
-    // The distance decreases from mid towards the side where g = (C − q)·C' says so.
-    let (a, b) = if slope(cubic, q, mid) > 0.0 {
-        (lo, mid)
-    } else {
-        (mid, hi)
-    };
-    for u in [a, b, refine(cubic, q, a, b)] {
-        let d = (cubic.eval(u) - q).norm();
-        if d < result.0 {
-            result = (d, u);
+    let mut result = (f64::INFINITY, 0.0);
+    for &(d, k) in &minima {
+        if !d.is_finite() {
+            continue;
+        }
+        let mid = k as f64 * h;
+        if d.sqrt() < result.0 {
+            result = (d.sqrt(), mid);
+        }
+        let lo = k.saturating_sub(1) as f64 * h;
+        let hi = (k + 1).min(COARSE) as f64 * h;
+        // Near a cusp the distance can rise and fall again inside one coarse step, with no
+        // sign change of g at the bracket's ends: plain Newton from the sample covers that.
+        let mut v = mid;
+        for _ in 0..NEWTON_STEPS {
+            v = cubic.newton(q, v).clamp(lo, hi);
+        }
+        for u in [refine(cubic, q, lo, mid), refine(cubic, q, mid, hi), v] {
+            let e = (cubic.eval(u) - q).norm();
+            if e < result.0 {
+                result = (e, u);
+            }
+        }
+    }
+    // Newton from the other samples nearest `q` as well (a fold between two samples).
+    let mut order = [0usize; COARSE + 1];
+    for (k, o) in order.iter_mut().enumerate() {
+        *o = k;
+    }
+    order.sort_unstable_by(|&i, &j| d2[i].total_cmp(&d2[j]));
+    for &k in order.iter().take(EXTRA_SEEDS) {
+        let mut v = k as f64 * h;
+        for _ in 0..NEWTON_STEPS {
+            v = cubic.newton(q, v);
+        }
+        let e = (cubic.eval(v) - q).norm();
+        if e < result.0 {
+            result = (e, v);
         }
     }
     result
-}
-
-/// `g(u) = (C(u) − q)·C'(u)`, half the derivative of `|C(u) − q|²`.
-fn slope<C: Cartesian>(cubic: &Cubic<C>, q: C, u: f64) -> f64 {
-    let (p, d1, _) = cubic.eval2(u);
-    (p - q).dot_with(d1)
 }
 
 /// A root of `g` in `[lo, hi]` when `g(lo) < 0 < g(hi)` (Newton's method, a step that leaves
