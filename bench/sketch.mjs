@@ -82,7 +82,11 @@ function segDist2(px, py, ax, ay, bx, by) {
  * (returning a value above `stop`) as soon as one sample is farther than `stop`.
  */
 export function maxDistance(points, pieces, stop = Number.POSITIVE_INFINITY) {
-  const runs = flatten(pieces);
+  return maxDistanceToRuns(points, flatten(pieces), stop);
+}
+
+/** As {@link maxDistance}, to polylines (flat [x, y, …] runs). */
+export function maxDistanceToRuns(points, runs, stop = Number.POSITIVE_INFINITY) {
   const cell = 4;
   let x0 = Number.POSITIVE_INFINITY;
   let y0 = Number.POSITIVE_INFINITY;
@@ -395,18 +399,38 @@ export function sketchBench(sl, { quick = false } = {}) {
         error: String(e.message ?? e),
       };
     }
+    // fitBSpline (degree 3): distinct control points and measured error, per bound.
+    row.bspline = {};
+    for (const bound of BOUNDS) {
+      try {
+        const r = sl.fitBSplineReport(s.points, 2, 3, bound);
+        const count = r.curve.controlPoints().length / 2 - r.curve.wrapped;
+        const dense = r.curve.sampleUniform(Math.min(20000, Math.max(2000, 8 * m)));
+        row.bspline[bound] = {
+          controlPoints: count,
+          closed: r.closed,
+          reported: r.maxError,
+          maxError: maxDistanceToRuns(s.points, [dense]).max,
+        };
+        r.curve.free?.();
+      } catch (e) {
+        row.bspline[bound] = { error: String(e.message ?? e) };
+      }
+    }
     // Speed per 1000 samples at 1 px: splinelab and fit-curve (at its 1 px setting), interleaved.
     const fc = fitters.find((f) => f.name === "fit-curve");
     const fcInput = fc.prepare(s.points, s);
     const fcSetting = row.bounds[1]["fit-curve"].setting ?? 1e-4;
-    const times = { splinelab: [], "fit-curve": [] };
+    const times = { splinelab: [], "fit-curve": [], "splinelab fitBSpline": [] };
     const runs = {
       splinelab: () => sl.fitCurve(s.points, 2, 1).free?.(),
       "fit-curve": () => fc.fit(fcInput, fcSetting),
+      "splinelab fitBSpline": () => sl.fitBSpline(s.points, 2, 3, 1).free?.(),
     };
     for (const name of Object.keys(runs)) runs[name](); // warm-up
     for (let r = 0; r < rounds; r++) {
-      const order = r % 2 ? ["fit-curve", "splinelab"] : ["splinelab", "fit-curve"];
+      const names = Object.keys(runs);
+      const order = names.map((_, i) => names[(i + r) % names.length]);
       for (const name of order) {
         const t0 = now();
         runs[name]();
@@ -534,6 +558,25 @@ function summarise(per, oversketch, fitters) {
   lines.push(
     `    speed per 1000 samples at 1 px (median over strokes | worst): splinelab (wasm) ${speed.splinelab.medianMsPer1000.toFixed(3)} | ${speed.splinelab.worstMsPer1000.toFixed(3)} ms (${speed.splinelab.worstStroke}); fit-curve ${speed["fit-curve"].medianMsPer1000.toFixed(3)} | ${speed["fit-curve"].worstMsPer1000.toFixed(3)} ms (${speed["fit-curve"].worstStroke})`,
   );
+  const bs = per.filter((r) => BOUNDS.every((b) => !r.bspline[b].error));
+  const bspline = Object.fromEntries(
+    BOUNDS.map((b) => [
+      b,
+      {
+        strokes: bs.length,
+        failed: per.length - bs.length,
+        meanControlPoints: mean(bs.map((r) => r.bspline[b].controlPoints)),
+        worstMeasuredError: Math.max(...bs.map((r) => r.bspline[b].maxError)),
+        closed: bs.filter((r) => r.bspline[b].closed).length,
+      },
+    ]),
+  );
+  const bsTimes = per.map((r) => r.msPer1000["splinelab fitBSpline"]);
+  bspline.medianMsPer1000 = median(bsTimes);
+  bspline.worstMsPer1000 = Math.max(...bsTimes);
+  lines.push(
+    `    fitBSpline degree 3 (fewest control points within the bound): ${BOUNDS.map((b) => `${b} px: ${f2(bspline[b].meanControlPoints)} control points a stroke, measured max error ≤ ${f2(bspline[b].worstMeasuredError)}, ${bspline[b].closed} closed`).join("; ")}; ${per.length - bs.length} failed; ${bspline.medianMsPer1000.toFixed(2)} | ${bspline.worstMsPer1000.toFixed(2)} ms per 1000 samples (median | worst)`,
+  );
   const ok = oversketch.filter((o) => !o.error);
   const over = {
     strokes: oversketch.length,
@@ -589,6 +632,7 @@ function summarise(per, oversketch, fitters) {
       glyphs,
       corners,
       speed,
+      bspline,
       oversketch: over,
       targets,
       perStroke: per,

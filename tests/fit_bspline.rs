@@ -316,3 +316,31 @@ fn bad_input_gives_coded_errors() {
     let long: Vec<DVec2> = (0..100_001).map(|i| DVec2::new(i as f64, 0.0)).collect();
     assert_eq!(code(fit_bspline(&long, 3, 0.1, None)), "too-large");
 }
+
+#[test]
+fn a_tight_tolerance_on_a_jittered_polyline_gives_no_swings_between_samples() {
+    // A pen stroke of bench/strokes.mjs (seed 25, "polyline 1": three corners, Gaussian jitter
+    // σ 0.44 px): at 1 px the fit needs nearly a control point per sample, and a least-squares
+    // curve that close to interpolation once swung 10⁹ px away between samples.
+    let text = include_str!("fixtures/fit_jittered_polyline.json");
+    let coords: Vec<f64> = text
+        .trim()
+        .trim_matches(|c| c == '[' || c == ']')
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let samples: Vec<DVec2> = coords.chunks(2).map(|c| DVec2::new(c[0], c[1])).collect();
+    for tol in [1.0, 2.0] {
+        let fit = fit_bspline(&samples, 3, tol, None).unwrap();
+        assert_within(&fit, &samples, tol);
+        let poly = dense(&fit.curve, 20_000);
+        let far = poly
+            .iter()
+            .map(|&c| distance_to_polyline(c, &samples))
+            .fold(0.0, f64::max);
+        assert!(
+            far < 10.0,
+            "tolerance {tol}: the curve swings {far} px from the stroke"
+        );
+    }
+}

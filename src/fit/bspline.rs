@@ -30,6 +30,10 @@
 //! ([`BSplineCurve::wrapped`] `= p`), `C^{p−1}` at the seam. It needs `max(3, p + 1)` distinct
 //! samples.
 //!
+//! **Tame curves only.** A fit whose control points leave the samples' bounding box grown by
+//! its diagonal is no fit (near interpolation, a least-squares curve can pass every sample and
+//! swing far away between them), whatever its error at the samples.
+//!
 //! **Degenerate strokes.** Identical samples give the constant curve (`p + 1` equal control
 //! points). An open stroke of fewer distinct samples than `p + 1` gets the one polynomial piece
 //! through them: the interpolating polynomial of degree (samples − 1) at the chord parameters,
@@ -41,6 +45,7 @@ use super::project::Fitted;
 use super::weighted::weighted_fit;
 use super::{check_stroke, BSplineFit};
 use crate::bspline::BSplineCurve;
+use crate::curve::ControlPolygon;
 use crate::error::{Error, Result};
 use crate::geom::Cartesian;
 use crate::interp::global::knots::least_squares_knots;
@@ -172,9 +177,23 @@ struct Problem<'a, C: Cartesian> {
     degree: usize,
     tolerance: f64,
     periodic: bool,
+    /// The samples' bounding box grown by its diagonal (see [`Problem::tame`]).
+    fence: (C, C),
 }
 
 impl<'a, C: Cartesian> Problem<'a, C> {
+    /// Whether every control point lies inside the fence: the samples' bounding box grown by
+    /// its diagonal. A least-squares curve with nearly as many control points as samples can
+    /// pass every sample and still swing far away between them (a span the corrected
+    /// parameters left empty); such a curve is no fit, whatever its error at the samples.
+    fn tame(&self, curve: &BSplineCurve<C>) -> bool {
+        let (lo, hi) = self.fence;
+        curve
+            .control_points()
+            .iter()
+            .all(|&q| q.max_by_coord(lo) == q && q.min_by_coord(hi) == q)
+    }
+
     fn new(samples: &'a [C], degree: usize, tolerance: f64, periodic: bool) -> Self {
         let mut chord = Vec::with_capacity(samples.len());
         let mut s = 0.0;
@@ -195,12 +214,19 @@ impl<'a, C: Cartesian> Problem<'a, C> {
             let last = chord.len() - 1;
             chord[last] = 1.0;
         }
+        let (mut lo, mut hi) = (samples[0], samples[0]);
+        for &q in samples {
+            (lo, hi) = (lo.min_by_coord(q), hi.max_by_coord(q));
+        }
+        let grow = (hi - lo).norm().max(tolerance);
+        let margin = C::from_slice(&[grow; 3]);
         Problem {
             samples: std::borrow::Cow::Borrowed(samples),
             chord,
             degree,
             tolerance,
             periodic,
+            fence: (lo - margin, hi + margin),
         }
     }
 
@@ -248,6 +274,7 @@ impl<'a, C: Cartesian> Problem<'a, C> {
             degree: self.degree,
             tolerance: self.tolerance,
             periodic: self.periodic,
+            fence: self.fence,
         }
     }
 
@@ -294,17 +321,17 @@ impl<'a, C: Cartesian> Problem<'a, C> {
     /// the tolerance is met or a round gains less than [`STALL`]; returns the best curve met.
     fn fit(&self, count: usize, start: &[f64]) -> Result<Attempt<C>> {
         let p = self.degree;
-        let knots_for = |params: &[f64]| {
-            if self.periodic {
-                periodic_knots(&self.chord, p, count)
-            } else {
-                least_squares_knots(params, p, count)
-            }
+        // Knots from the chord parameters, fixed for the count (corrected parameters bunch
+        // up where the curve rounds a corner, and knots placed from them would too).
+        let knots = if self.periodic {
+            periodic_knots(&self.chord, p, count)
+        } else {
+            least_squares_knots(&self.chord, p, count)
         };
         let (mut dists, mut scratch) = (Vec::new(), Vec::new());
         let mut metrics: Vec<f64> = Vec::new();
         let mut params = start.to_vec();
-        let curve = self.solve(count, &knots_for(&params), &params, None)?;
+        let curve = self.solve(count, &knots, &params, None)?;
         let fitted = Fitted {
             curve: &curve,
             periodic: self.periodic,
@@ -312,7 +339,10 @@ impl<'a, C: Cartesian> Problem<'a, C> {
         let mut best_sum = fitted
             .correct(&self.samples, &mut params, &mut scratch, &mut dists)?
             .unwrap_or(f64::INFINITY);
-        let (error, worst) = fitted.max_distance(&self.samples, &params, &dists)?;
+        let (mut error, worst) = fitted.max_distance(&self.samples, &params, &dists)?;
+        if !self.tame(&curve) {
+            (error, best_sum) = (f64::INFINITY, f64::INFINITY);
+        }
         let mut best = Attempt {
             count,
             curve,
@@ -330,10 +360,12 @@ impl<'a, C: Cartesian> Problem<'a, C> {
                 periodic: self.periodic,
             }
             .metrics(&best.params, weight, &mut metrics)?;
-            let knots = knots_for(&best.params);
-            let Ok(curve) = self.solve(count, &knots, &best.params, Some(&metrics)) else {
-                weight = (weight * 8.0).min(1.0);
-                continue;
+            let curve = match self.solve(count, &knots, &best.params, Some(&metrics)) {
+                Ok(c) if self.tame(&c) => c,
+                _ => {
+                    weight = (weight * 8.0).min(1.0);
+                    continue;
+                }
             };
             let fitted = Fitted {
                 curve: &curve,
