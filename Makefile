@@ -117,4 +117,4 @@ fuzz: build
 
 clean:
 	cargo clean
-	rm -rf $(PKG) www/vendor screenshots dist/site
+	rm -rf $(PKG) www/vendor www/posters screenshots dist/site
