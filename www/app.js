@@ -290,6 +290,7 @@ function demoPageRoot() {
  * (lib/posters.js; the built site only). The demo's mount replaces it (unmount).
  */
 function showPoster(entry) {
+  if (main.querySelector(".sl-poster")) return true; // boot.js showed it
   const title = t(`${entry.strings}.title`);
   const poster = posterPage(entry, { title, alt: t("gallery.thumbnailAlt", { title }) });
   if (!poster) return false;

@@ -104,6 +104,8 @@ class SplineLabElement extends HTMLElement {
 
   /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
+    // The wasm (fetched and compiled as it streams) while the language and the demo load.
+    loadWasm().catch(() => {}); // reported below
     await pageLanguage();
     const exerciseId = this.getAttribute("exercise");
     const exercise = exerciseId === null ? null : findExercise(exerciseId);

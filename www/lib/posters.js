@@ -7,12 +7,27 @@
  * In the development tree (`make serve`) there are no hashed posters: `posterUrl` returns null
  * and the pages draw as before (live thumbnails, no poster).
  */
-import { el } from "./controls.js";
+// No imports: boot.js loads this module before the rest of the page's.
+
+/** A new `tag` element: `props` as lib/controls.js `el` takes them (class, text, dataset, attributes). */
+function el(tag, props, ...children) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(props)) {
+    if (key === "class") node.className = value;
+    else if (key === "text") node.textContent = value;
+    else if (key === "dataset") Object.assign(node.dataset, value);
+    else node.setAttribute(key, value);
+  }
+  node.append(...children);
+  return node;
+}
 
 /** A hashed site file (scripts/dist.mjs): `…/name-XXXXXXXX.svg`. */
 const HASHED = /-[A-Z2-7]{8}\.svg$/;
 /** Containers at most this many rem wide use the narrow layout (lib/shell.css @container). */
 const NARROW_REM = 46;
+/** A page at most this wide has a demo container that narrow (main's padding, style.css). */
+export const NARROW_PAGE = "(max-width: 50rem)";
 
 /** The URL of poster `shape` ("wide", "narrow" or "thumb") of demo `id`, or null (none built). */
 export function posterUrl(id, shape) {
