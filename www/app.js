@@ -44,6 +44,7 @@ let currentId = null;
 let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
 let stopThemeWatch = () => {}; // the gallery's colour-scheme listener and thumbnail observer
 let routeCount = 0; // bumped by every route(): a demo that finished loading late is not shown
+let early = null; // { id, load }: a lecture link's lecture, fetched while the wasm loads (start)
 let wasmLoad = null; // the wasm package's promise (null on failure), made when a page first needs it
 
 /**
@@ -337,7 +338,8 @@ async function showLecture(id, scene, sl) {
   const routed = routeCount;
   let lecture;
   try {
-    lecture = await loadLecture(id);
+    lecture = await (early?.id === id ? early.load : loadLecture(id));
+    early = null;
   } catch (err) {
     showAppStatus(errorText(err), "error");
     return;
@@ -485,6 +487,10 @@ async function start() {
   const entry = id ? findDemo(id) : null;
   if (id || lecture || exercise || !hasPosters()) wasm();
   if (entry) loadDemo(id).catch(() => {}); // reported by route
+  if (lecture && findLecture(lecture)) {
+    early = { id: lecture, load: loadLecture(lecture) };
+    early.load.catch(() => {}); // reported by showLecture
+  }
   await applyLanguage();
   document.querySelector(".site-foot").textContent = t("app.footer");
   if (!(entry && showPoster(entry)) && wasmLoad) {
