@@ -19,7 +19,7 @@ import { exercises, findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
-import { hasPosters, posterPage, posterUrl } from "./lib/posters.js";
+import { hasPosters, posterPage, posterSettled, posterUrl } from "./lib/posters.js";
 
 /**
  * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
@@ -54,13 +54,16 @@ let wasmLoad = null; // the wasm package's promise (null on failure), made when 
  * reporting a failure.
  */
 function wasm() {
-  wasmLoad ??= loadWasm().then(
-    (sl) => sl,
-    (err) => {
-      showAppStatus(loadFailureMessage(err), "error");
-      return null;
-    },
-  );
+  // After the poster boot.js is loading, if any (the first frame first).
+  wasmLoad ??= posterSettled()
+    .then(loadWasm)
+    .then(
+      (sl) => sl,
+      (err) => {
+        showAppStatus(loadFailureMessage(err), "error");
+        return null;
+      },
+    );
   return wasmLoad;
 }
 

@@ -29,6 +29,25 @@ const NARROW_REM = 46;
 /** A page at most this wide has a demo container that narrow (main's padding, style.css). */
 export const NARROW_PAGE = "(max-width: 50rem)";
 
+/** The longest the wasm waits for the poster. */
+const POSTER_WAIT_MS = 3000;
+let posterLoad = Promise.resolve();
+
+/**
+ * Set by boot.js to the poster it is loading: the wasm waits for it (`posterSettled`), so on a
+ * slow link the poster (the first frame) does not share the bandwidth with the ~270 KB wasm.
+ */
+export function loadingPoster(promise) {
+  // Not longer than POSTER_WAIT_MS: a poster stuck on the way must not hold the wasm back.
+  const limit = new Promise((resolve) => setTimeout(resolve, POSTER_WAIT_MS));
+  posterLoad = Promise.race([promise.catch(() => {}), limit]);
+}
+
+/** Resolves once the poster boot.js asked for has arrived or failed (at once when none). */
+export function posterSettled() {
+  return posterLoad;
+}
+
 /** The URL of poster `shape` ("wide", "narrow" or "thumb") of demo `id`, or null (none built). */
 export function posterUrl(id, shape) {
   const name = `${id}-${shape}`; // one placeholder: make dist makes it a lookup table
