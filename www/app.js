@@ -5,7 +5,7 @@
  * validated and, if bad, reported while the last good picture stays.
  */
 import { demos, findDemo, loadDemo } from "./demos/index.js";
-import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
+import { loadFailureMessage, loadWasm, loadedWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
 import { parseHash, buildHash, decodeState, encodeState } from "./lib/state.js";
@@ -410,6 +410,12 @@ async function showExercise(entry, encoded, sl) {
 async function route() {
   const routed = ++routeCount;
   const { demo: id, s, lecture, scene, exercise } = parseHash(location.hash);
+  // A demo opened from the gallery before the wasm is here: its poster meanwhile.
+  const opening = id && !lecture && !exercise && currentId !== id ? findDemo(id) : null;
+  if (opening && !loadedWasm() && !main.querySelector(".sl-poster")) {
+    unmount();
+    showPoster(opening);
+  }
   const sl = id || lecture || exercise || !hasPosters() ? await wasm() : null;
   if (routed !== routeCount) return;
   if (exercise) {
