@@ -67,9 +67,10 @@ package: build
 serve: build
 	node scripts/serve.mjs --port $(PORT)
 
-# Bundled and minified JS (esbuild), content-hashed names under assets/, .gz and .br beside
-# every text file and the wasm; see scripts/dist.mjs.
-dist: build
+# The posters (scripts/posters.mjs, headless Chromium), then bundled and minified JS (esbuild),
+# content-hashed names under assets/, .gz and .br beside every text file and the wasm; see
+# scripts/dist.mjs.
+dist: build chromium
 	node scripts/dist.mjs
 
 serve-dist: dist
