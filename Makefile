@@ -9,7 +9,7 @@
 #   make format       Biome formats the JS and applies its safe fixes (writes)
 #   make screenshots  a PNG of every demo (DPR 1 and 2) into screenshots/
 #   make package      build, then write the npm package dist/splinelab-<version>.tgz (npm pack)
-#   make bench        build, then time splinelab against the peers and a JS baseline (BENCH_ARGS=--quick)
+#   make bench        dist, then time splinelab against the peers and a JS baseline, and Lighthouse the site (BENCH_ARGS=--quick)
 #   make fuzz         build, then 1 000 000 seeded random calls of the whole JS API in Node (FUZZ_ARGS)
 SHELL := /bin/bash
 PORT ?= 8000
@@ -67,9 +67,10 @@ package: build
 serve: build
 	node scripts/serve.mjs --port $(PORT)
 
-# Bundled and minified JS (esbuild), content-hashed names under assets/, .gz and .br beside
-# every text file and the wasm; see scripts/dist.mjs.
-dist: build
+# The posters (scripts/posters.mjs, headless Chromium), then bundled and minified JS (esbuild),
+# content-hashed names under assets/, .gz and .br beside every text file and the wasm; see
+# scripts/dist.mjs.
+dist: build chromium
 	node scripts/dist.mjs
 
 serve-dist: dist
@@ -103,10 +104,12 @@ screenshots: build chromium
 	node scripts/screenshots.mjs
 
 # Prints the tables and writes bench/results/latest.json and frames.json (row (l), every demo's
-# frame cost in Chromium); see bench/README.md. No timing asserts.
-bench: build chromium
+# frame cost in Chromium) and lighthouse.json (issue 26's page-load goals on dist/site/); see
+# bench/README.md. No timing asserts.
+bench: dist chromium
 	node bench/bench.mjs $(BENCH_ARGS)
 	node bench/frames.mjs $(BENCH_ARGS)
+	node bench/lighthouse.mjs $(BENCH_ARGS)
 
 # Every call returns or throws a plain Error; exits 1 with the seed and a reproduction otherwise.
 # See tests/fuzz/run.mjs for the options (--calls, --seed, --slow-ms, --trace-from).
@@ -115,4 +118,4 @@ fuzz: build
 
 clean:
 	cargo clean
-	rm -rf $(PKG) www/vendor screenshots dist/site
+	rm -rf $(PKG) www/vendor www/posters screenshots dist/site

@@ -25,6 +25,7 @@ import { fileURLToPath } from "node:url";
 import { promisify } from "node:util";
 import { brotliCompress, constants, gzip } from "node:zlib";
 import { SERVICE_WORKER_DEFINE, writeServiceWorker } from "./service-worker.mjs";
+import { renderPosters, summary as postersSummary } from "./posters.mjs";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
 export const WWW = join(ROOT, "www");
@@ -140,6 +141,9 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
   async function lookupTable(file, text, from) {
     const pattern = text.replace(/\$\{[^}]*\}/g, STAR);
     const dir = resolve(dirname(file), dirname(pattern));
+    // A folder the build makes that is not there (www/posters/ before scripts/posters.mjs ran):
+    // the lookup finds nothing (lib/posters.js then shows no poster).
+    if (!existsSync(dir)) return 'new URL("data:,", import.meta.url)';
     if (pattern.includes("?") || pattern.includes("#") || dirname(pattern).includes(STAR))
       throw new Error(`dist: ${relative(www, file)}: cannot resolve new URL(\`${text}\`)`);
     const [head, tail] = basename(pattern).split(STAR);
@@ -345,6 +349,7 @@ async function compressAll(files, cache = CACHE) {
 }
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  console.log(postersSummary(await renderPosters()));
   const { files, bytes, elapsed } = await buildSite();
   console.log(
     `dist: ${files} files (${(bytes / 1024).toFixed(0)} KiB before .gz/.br) in ${relative(ROOT, SITE)}/, ${(elapsed / 1000).toFixed(1)} s`,

@@ -5,7 +5,7 @@
  * validated and, if bad, reported while the last good picture stays.
  */
 import { demos, findDemo, loadDemo } from "./demos/index.js";
-import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
+import { loadFailureMessage, loadWasm, loadedWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
 import { parseHash, buildHash, decodeState, encodeState } from "./lib/state.js";
@@ -20,6 +20,7 @@ import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
 import { registerOffline } from "./lib/offline.js";
+import { hasPosters, posterPage, posterSettled, posterUrl } from "./lib/posters.js";
 
 /**
  * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
@@ -44,6 +45,28 @@ let currentId = null;
 let lastHash = null; // the hash this page wrote itself (its hashchange is not news)
 let stopThemeWatch = () => {}; // the gallery's colour-scheme listener and thumbnail observer
 let routeCount = 0; // bumped by every route(): a demo that finished loading late is not shown
+let early = null; // { id, load }: a lecture link's lecture, fetched while the wasm loads (start)
+let wasmLoad = null; // the wasm package's promise (null on failure), made when a page first needs it
+
+/**
+ * The wasm package, loaded when a page first needs it: a demo, lecture or exercise link starts
+ * it before anything else (start), the gallery of the built site never (its thumbnails are
+ * posters), the development tree's gallery for its live thumbnails. Resolves to null after
+ * reporting a failure.
+ */
+function wasm() {
+  // After the poster boot.js is loading, if any (the first frame first).
+  wasmLoad ??= posterSettled()
+    .then(loadWasm)
+    .then(
+      (sl) => sl,
+      (err) => {
+        showAppStatus(loadFailureMessage(err), "error");
+        return null;
+      },
+    );
+  return wasmLoad;
+}
 
 function showAppStatus(message, kind = "info") {
   appStatus.textContent = message;
@@ -125,7 +148,7 @@ async function showGallery(sl) {
     }
   }
   main.append(page);
-  if (sl) stopThemeWatch = watchThumbnails(page, sl);
+  if (!hasPosters() && sl) stopThemeWatch = watchThumbnails(page, sl);
 }
 
 /**
@@ -176,13 +199,20 @@ function watchThumbnails(page, sl) {
 /** A gallery card: the words come from the manifest's string keys, the picture comes later. */
 function card(entry) {
   const title = t(`${entry.strings}.title`);
+  const poster = posterUrl(entry.id, "thumb");
   const img = el("img", {
     class: "card-thumb placeholder",
     alt: t("gallery.thumbnailAlt", { title }),
     width: String(THUMB_WIDTH),
     height: String(THUMB_HEIGHT),
+    loading: poster ? "lazy" : null,
+    decoding: "async",
     dataset: { demo: entry.id },
   });
+  if (poster) {
+    img.addEventListener("load", () => img.classList.remove("placeholder"), { once: true });
+    img.src = poster;
+  }
   return el(
     "li",
     {},
@@ -260,6 +290,20 @@ function demoPageRoot() {
   return root;
 }
 
+/**
+ * Demo `entry`'s poster where its figure will be, while the wasm and the demo's module load
+ * (lib/posters.js; the built site only). The demo's mount replaces it (unmount).
+ */
+function showPoster(entry) {
+  if (main.querySelector(".sl-poster")) return true; // boot.js showed it
+  const title = t(`${entry.strings}.title`);
+  const poster = posterPage(entry, { title, alt: t("gallery.thumbnailAlt", { title }) });
+  if (!poster) return false;
+  demoPageRoot().append(poster.element);
+  poster.show();
+  return true;
+}
+
 /** Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any. */
 function showDemo(entry, demo, encoded, sl) {
   unmount();
@@ -298,7 +342,8 @@ async function showLecture(id, scene, sl) {
   const routed = routeCount;
   let lecture;
   try {
-    lecture = await loadLecture(id);
+    lecture = await (early?.id === id ? early.load : loadLecture(id));
+    early = null;
   } catch (err) {
     showAppStatus(errorText(err), "error");
     return;
@@ -363,9 +408,17 @@ async function showExercise(entry, encoded, sl) {
 }
 
 // ------------------------------------------------------------------ routing
-async function route(sl) {
+async function route() {
   const routed = ++routeCount;
   const { demo: id, s, lecture, scene, exercise } = parseHash(location.hash);
+  // A demo opened from the gallery before the wasm is here: its poster meanwhile.
+  const opening = id && !lecture && !exercise && currentId !== id ? findDemo(id) : null;
+  if (opening && !loadedWasm() && !main.querySelector(".sl-poster")) {
+    unmount();
+    showPoster(opening);
+  }
+  const sl = id || lecture || exercise || !hasPosters() ? await wasm() : null;
+  if (routed !== routeCount) return;
   if (exercise) {
     const entry = findExercise(exercise);
     if (entry && sl) return showExercise(entry, s, sl);
@@ -438,21 +491,27 @@ async function applyLanguage() {
 }
 
 async function start() {
+  // What the first frame needs first: a demo, lecture or exercise link fetches and compiles the
+  // wasm (and the demo's module) while the language loads; its poster shows meanwhile.
+  const { demo: id, lecture, exercise } = parseHash(location.hash);
+  const entry = id ? findDemo(id) : null;
+  if (id || lecture || exercise || !hasPosters()) wasm();
+  if (entry) loadDemo(id).catch(() => {}); // reported by route
+  if (lecture && findLecture(lecture)) {
+    early = { id: lecture, load: loadLecture(lecture) };
+    early.load.catch(() => {}); // reported by showLecture
+  }
   await applyLanguage();
   document.querySelector(".site-foot").textContent = t("app.footer");
-  showAppStatus(t("app.loading"));
-  let sl = null;
-  try {
-    sl = await loadWasm();
-    showAppStatus("");
-  } catch (err) {
-    showAppStatus(loadFailureMessage(err), "error");
+  if (!(entry && showPoster(entry)) && wasmLoad) {
+    showAppStatus(t("app.loading"));
+    wasmLoad.then((sl) => sl && showAppStatus(""));
   }
-  await route(sl);
+  await route();
   window.addEventListener("hashchange", () => {
     if (location.hash === lastHash) return;
     if (location.hash === "" || location.hash === "#") showAppStatus("");
-    route(sl).catch((err) => showAppStatus(errorText(err), "error"));
+    route().catch((err) => showAppStatus(errorText(err), "error"));
   });
   // Ctrl+Z / Ctrl+Shift+Z also work when nothing in the demo has focus.
   document.addEventListener("keydown", (event) => {

@@ -25,6 +25,7 @@ import { chooseLanguage, useLanguage } from "./lib/language.js";
 import { findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { errorText } from "./lib/core-errors.js";
+import { posterUrl } from "./lib/posters.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -32,14 +33,25 @@ const PLAYGROUND = new URL("./index.html", import.meta.url).href;
 const CONTROLS = ["full", "minimal", "none"];
 /** Start a demo when it is this close to the viewport. */
 const START_MARGIN = "200px";
+/** Attributes that leave the demo's starting state as it is (any other may change it). */
+const STATELESS = new Set(["demo", "controls", "theme", "lang", "id", "class", "style", "title"]);
+/** An embed at most this many rem wide has the narrow layout (lib/shell.css @container). */
+const NARROW_REM = 46;
 
 const HOST_CSS = `
 :host { display: block; margin: 1rem 0; }
 :host([hidden]) { display: none; }
+/* About the live embed's height (a full one is 50–73rem tall at 412–1350 px), so the text after
+   it does not move when it comes; a minimal or bare one is mostly its figure. */
 .sl-embed-placeholder {
-  min-height: 16rem; display: grid; place-items: center; border: 1px dashed #8a8a8a;
+  min-height: min(50rem, 100vh); display: grid; place-items: center; border: 1px dashed #8a8a8a;
   border-radius: 6px; color: #5a5a5a; font: 15px system-ui, sans-serif;
 }
+:host([controls="minimal"]) .sl-embed-placeholder, :host([controls="none"]) .sl-embed-placeholder {
+  min-height: 16rem;
+}
+.sl-embed-placeholder:has(.sl-embed-poster) { place-items: start stretch; border: none; }
+.sl-embed-poster { display: block; width: 100%; height: auto; }
 .sl-embed-error { color: #b34f00; font: 600 15px system-ui, sans-serif; }
 @media (prefers-color-scheme: dark) { .sl-embed-error { color: #e8772e; } }
 .sl-embed-error::before { content: "⚠ "; }
@@ -76,6 +88,7 @@ class SplineLabElement extends HTMLElement {
       this._root.className = "sl-embed-placeholder";
       this._root.textContent = t("app.loading");
       shadow.append(link, this._root);
+      this._showPoster();
     }
     if (this._controller || this._observer) return;
     this._observer = new IntersectionObserver(
@@ -103,8 +116,31 @@ class SplineLabElement extends HTMLElement {
     }
   }
 
+  /**
+   * The demo's poster (lib/posters.js: its default state, drawn at build time) in the
+   * placeholder until the live figure comes, when no attribute may change that state (and the
+   * colours are the light ones the poster has).
+   */
+  _showPoster() {
+    const id = this.getAttribute("demo");
+    if (!id || !findDemo(id) || this.getAttribute("theme") === "dark") return;
+    for (const name of this.getAttributeNames())
+      if (!STATELESS.has(name) && !/^(aria|data)-/.test(name)) return;
+    const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
+    const narrow = this.getBoundingClientRect().width <= NARROW_REM * rem;
+    const url = posterUrl(id, narrow ? "narrow" : "wide");
+    if (!url) return;
+    const img = document.createElement("img");
+    img.className = "sl-embed-poster";
+    img.alt = "";
+    img.src = url;
+    this._root.replaceChildren(img);
+  }
+
   /** Loads the wasm (shared by the page) and the demo's module (shared too), then mounts the demo. */
   async _start() {
+    // The wasm (fetched and compiled as it streams) while the language and the demo load.
+    loadWasm().catch(() => {}); // reported below
     await pageLanguage();
     const exerciseId = this.getAttribute("exercise");
     const exercise = exerciseId === null ? null : findExercise(exerciseId);

@@ -6,11 +6,12 @@
 // every file compressed (br or gzip) and cached as its name says (hashed: a year, immutable;
 // HTML and embed.js: no-cache), and nothing fetched under an unhashed name but the entry points.
 import { request } from "node:http";
-import { readFileSync } from "node:fs";
+import { existsSync, readFileSync } from "node:fs";
 import { extname, join, relative } from "node:path";
 import { brotliDecompressSync, gunzipSync } from "node:zlib";
 import { ASSETS, COMPRESSED, SITE, WWW, buildSite, listFiles } from "../../scripts/dist.mjs";
 import { HASHED, IMMUTABLE, startServer } from "../../scripts/serve.mjs";
+import { POSTERS } from "../../scripts/posters.mjs";
 
 /** `make dist` must stay well under a minute (it takes ~5 s on 2 cores). */
 const DIST_BUDGET_MS = 45_000;
@@ -136,8 +137,22 @@ export async function distSuite({
 
     await test("dist: the gallery draws its thumbnails and opens a 2D demo", async () => {
       needSite();
+      const from = responses.length;
       await page.goto(`${base}/index.html`);
-      await page.locator("a.card img[src^='data:image/png']").first().waitFor();
+      if (existsSync(POSTERS)) {
+        // With posters (scripts/posters.mjs, run by make dist): static thumbnails, and neither
+        // the wasm nor KaTeX before a demo is opened (issue 26).
+        await page
+          .locator("a.card img.card-thumb:not(.placeholder)[src$='.svg']")
+          .first()
+          .waitFor();
+        await page.waitForLoadState("networkidle");
+        const heavy = responses
+          .slice(from)
+          .map((r) => r.path)
+          .filter((p) => /\.wasm$|katex|splinelab-/i.test(p));
+        assert(heavy.length === 0, `the gallery fetched ${heavy.join(", ")}`);
+      } else await page.locator("a.card img[src^='data:image/png']").first().waitFor();
       await page.locator('a.card[data-demo="de-casteljau"]').click();
       await checkPage("de-casteljau from the gallery", demoHelpers(page));
     });

@@ -6,8 +6,9 @@
  *
  * Each entry: `id` (the URL id and the module's file name), `section` (syllabus section, the
  * gallery grouping), `strings` (the prefix of the demo's keys in lib/strings.js: the gallery
- * shows `t(`${strings}.title`)` and `.summary` without loading the module) and `load()` (the
- * module's dynamic import). To add a demo: write `www/demos/<id>.js` and add its entry below;
+ * shows `t(`${strings}.title`)` and `.summary` without loading the module), `tall` (the demo
+ * makes its figure `.sl-figure-tall`: the poster's box, before the module is loaded, has the
+ * live figure's size; scripts/posters.mjs checks it) and `load()` (the module's dynamic import). To add a demo: write `www/demos/<id>.js` and add its entry below;
  * the browser tests check that the entry agrees with the module's own `id`, `section` and
  * `strings`.
  */
@@ -29,7 +30,13 @@ export const demos = Object.freeze(
       strings: "deCasteljau",
       load: () => import("./de-casteljau.js"),
     },
-    { id: "bernstein", section: 2, strings: "bernstein", load: () => import("./bernstein.js") },
+    {
+      id: "bernstein",
+      tall: true,
+      section: 2,
+      strings: "bernstein",
+      load: () => import("./bernstein.js"),
+    },
     {
       id: "subdivision",
       section: 2,
@@ -93,7 +100,13 @@ export const demos = Object.freeze(
       strings: "matrixForm",
       load: () => import("./matrix-form.js"),
     },
-    { id: "weights", section: 4, strings: "weights", load: () => import("./weights.js") },
+    {
+      id: "weights",
+      tall: true,
+      section: 4,
+      strings: "weights",
+      load: () => import("./weights.js"),
+    },
     { id: "conics", section: 4, strings: "conics", load: () => import("./conics.js") },
     {
       id: "nurbs-circle",
@@ -104,21 +117,36 @@ export const demos = Object.freeze(
     { id: "projective", section: 4, strings: "projective", load: () => import("./projective.js") },
     {
       id: "negative-weights",
+      tall: true,
       section: 4,
       strings: "negativeWeights",
       load: () => import("./negative-weights.js"),
     },
-    { id: "lagrange", section: 5, strings: "lagrange", load: () => import("./lagrange.js") },
-    { id: "hermite", section: 5, strings: "hermite", load: () => import("./hermite.js") },
+    {
+      id: "lagrange",
+      tall: true,
+      section: 5,
+      strings: "lagrange",
+      load: () => import("./lagrange.js"),
+    },
+    {
+      id: "hermite",
+      tall: true,
+      section: 5,
+      strings: "hermite",
+      load: () => import("./hermite.js"),
+    },
     { id: "cardinal", section: 5, strings: "cardinal", load: () => import("./cardinal.js") },
     {
       id: "cubic-spline",
+      tall: true,
       section: 5,
       strings: "cubicSpline",
       load: () => import("./cubic-spline.js"),
     },
     {
       id: "parametrization",
+      tall: true,
       section: 5,
       strings: "parametrization",
       load: () => import("./parametrization.js"),

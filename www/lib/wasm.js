@@ -8,6 +8,8 @@ import { t } from "./strings.js";
 import { errorText } from "./core-errors.js";
 
 const PACKAGE_URL = new URL("../pkg/splinelab.js", import.meta.url);
+/** The module itself: fetched and compiled (streaming) while its glue, PACKAGE_URL, loads. */
+export const WASM_URL = new URL("../pkg/splinelab_bg.wasm", import.meta.url);
 
 let loading = null;
 /** The initialised package once `loadWasm` has resolved (for synchronous checks, see `loadedWasm`). */
@@ -32,8 +34,16 @@ export function loadWasm() {
     if (typeof WebAssembly !== "object" || !WebAssembly.validate(SIMD_PROBE)) {
       throw Object.assign(new Error(t("app.noSimd")), { code: NO_SIMD });
     }
+    // The wasm compiles as it streams in (the server sends application/wasm), in parallel with
+    // the glue's download; a page that preloaded it (boot.js) gets the preloaded response.
+    // A host sending another type: compiled from the bytes instead.
+    const compiled = WebAssembly.compileStreaming(fetch(WASM_URL)).catch(() =>
+      fetch(WASM_URL)
+        .then((r) => r.arrayBuffer())
+        .then((bytes) => WebAssembly.compile(bytes)),
+    );
     const module = await import(PACKAGE_URL.href);
-    await module.default(); // wasm-bindgen init: fetches splinelab_bg.wasm next to splinelab.js
+    await module.default({ module_or_path: compiled }); // wasm-bindgen init with the compiled module
     loaded = module;
     return module;
   })().catch((err) => {

@@ -1,0 +1,91 @@
+/**
+ * Posters (issue 26): a picture of every demo's default state, drawn at build time by
+ * scripts/posters.mjs into www/posters/ and content-hashed by `make dist`, shown where the
+ * figure will be until the wasm has arrived and the live figure replaces it. The gallery's cards
+ * show the thumbnails, so the gallery loads no wasm and no KaTeX.
+ *
+ * In the development tree (`make serve`) there are no hashed posters: `posterUrl` returns null
+ * and the pages draw as before (live thumbnails, no poster).
+ */
+// No imports: boot.js loads this module before the rest of the page's.
+
+/** A new `tag` element: `props` as lib/controls.js `el` takes them (class, text, dataset, attributes). */
+function el(tag, props, ...children) {
+  const node = document.createElement(tag);
+  for (const [key, value] of Object.entries(props)) {
+    if (key === "class") node.className = value;
+    else if (key === "text") node.textContent = value;
+    else if (key === "dataset") Object.assign(node.dataset, value);
+    else node.setAttribute(key, value);
+  }
+  node.append(...children);
+  return node;
+}
+
+/** A hashed site file (scripts/dist.mjs): `…/name-XXXXXXXX.svg`. */
+const HASHED = /-[A-Z2-7]{8}\.svg$/;
+/** Containers at most this many rem wide use the narrow layout (lib/shell.css @container). */
+const NARROW_REM = 46;
+/** A page at most this wide has a demo container that narrow (main's padding, style.css). */
+export const NARROW_PAGE = "(max-width: 50rem)";
+
+/** The longest the wasm waits for the poster. */
+const POSTER_WAIT_MS = 3000;
+let posterLoad = Promise.resolve();
+
+/**
+ * Set by boot.js to the poster it is loading: the wasm waits for it (`posterSettled`), so on a
+ * slow link the poster (the first frame) does not share the bandwidth with the ~270 KB wasm.
+ */
+export function loadingPoster(promise) {
+  // Not longer than POSTER_WAIT_MS: a poster stuck on the way must not hold the wasm back.
+  const limit = new Promise((resolve) => setTimeout(resolve, POSTER_WAIT_MS));
+  posterLoad = Promise.race([promise.catch(() => {}), limit]);
+}
+
+/** Resolves once the poster boot.js asked for has arrived or failed (at once when none). */
+export function posterSettled() {
+  return posterLoad;
+}
+
+/** The URL of poster `shape` ("wide", "narrow" or "thumb") of demo `id`, or null (none built). */
+export function posterUrl(id, shape) {
+  const name = `${id}-${shape}`; // one placeholder: make dist makes it a lookup table
+  const url = new URL(`../posters/${name}.svg`, import.meta.url).href;
+  return HASHED.test(url) ? url : null;
+}
+
+/** True when the site has posters (the built site; the development tree has none). */
+export function hasPosters() {
+  return posterUrl("de-casteljau", "thumb") !== null;
+}
+
+/**
+ * The page a demo will have, with its poster where the figure will be: the same classes as
+ * lib/shell.js `mountDemo` (`.sl-demo` › `.sl-head` › title, `.sl-body` › `.sl-figure`), so the
+ * figure's box has the live figure's size. Null when the site has no posters. `entry` is the
+ * manifest entry (demos/index.js), `title` and `alt` the words to show.
+ */
+export function posterPage(entry, { title, alt, headingLevel = "h1", mode = "page" }) {
+  if (!posterUrl(entry.id, "wide")) return null;
+  const img = el("img", { class: "sl-poster", alt, decoding: "async", fetchpriority: "high" });
+  const box = el("div", { class: `sl-figure${entry.tall ? " sl-figure-tall" : ""}` }, img);
+  const section = el(
+    "section",
+    {
+      class: `sl-demo sl-mode-${mode} sl-controls-full sl-poster-page`,
+      dataset: { demo: entry.id },
+    },
+    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: title })),
+    el("div", { class: "sl-body" }, el("div", { class: "sl-figure-wrap" }, box)),
+  );
+  return {
+    element: section,
+    /** Chooses the poster of the box's shape; call once the element is in the document. */
+    show() {
+      const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
+      const narrow = section.clientWidth <= NARROW_REM * rem;
+      img.src = posterUrl(entry.id, narrow ? "narrow" : "wide");
+    },
+  };
+}
