@@ -3,9 +3,12 @@
 
 use super::bezier::JsCompositeBezier;
 use super::{bool_option, js_object, numbers, option_entries, set_key, whole, JsBSplineCurve};
+use crate::bezier::{BezierCurve, CompositeCurve};
+use crate::bspline::BSplineCurve;
+use crate::curve::ControlPolygon;
 use crate::error::Error;
 use crate::fit::{self, FitOptions, FitReport, Smoothness};
-use crate::geom::{check_dim, points_from_flat};
+use crate::geom::{check_dim, points_from_flat, Cartesian};
 use crate::wasm::ApiError;
 use glam::{DVec2, DVec3};
 use js_sys::{Array, Float64Array, Object, Uint32Array};
@@ -57,11 +60,13 @@ fn fit_any(
     let coords = numbers("points", points)?;
     let dim = check_dim(whole("dim", dim)?)?;
     let options = curve_options(options)?;
+    let fit = fit::fit_curve(&stroke_3d(&coords, dim)?, tolerance, &options)?;
     Ok(if dim == 2 {
-        let fit = fit::fit_curve(&points_from_flat::<DVec2>(&coords)?, tolerance, &options)?;
-        (JsCompositeBezier::from_2d(fit.curve), fit.report)
+        (
+            JsCompositeBezier::from_2d(composite_2d(&fit.curve)?),
+            fit.report,
+        )
     } else {
-        let fit = fit::fit_curve(&points_from_flat::<DVec3>(&coords)?, tolerance, &options)?;
         (JsCompositeBezier::from_3d(fit.curve), fit.report)
     })
 }
@@ -147,25 +152,17 @@ fn fit_bspline_any(
     for (_, value) in option_entries(options, BSPLINE_OPTIONS)? {
         closed = bool_option("closed", &value)?;
     }
-    Ok(if dim == 2 {
-        let fit = fit::fit_bspline(
-            &points_from_flat::<DVec2>(&coords)?,
-            degree,
-            tolerance,
-            closed,
-        )?;
-        let curve = JsBSplineCurve::from_2d(fit.curve);
-        (curve, fit.max_error, fit.worst, fit.closed)
+    let fit = fit::fit_bspline(&stroke_3d(&coords, dim)?, degree, tolerance, closed)?;
+    let curve = if dim == 2 {
+        let c = &fit.curve;
+        let points = c.control_points().iter().map(|p| p.truncate()).collect();
+        let knots = c.knots().as_slice().to_vec();
+        let flat = BSplineCurve::new(points, c.degree(), knots, None)?.with_wrapped(c.wrapped());
+        JsBSplineCurve::from_2d(flat)
     } else {
-        let fit = fit::fit_bspline(
-            &points_from_flat::<DVec3>(&coords)?,
-            degree,
-            tolerance,
-            closed,
-        )?;
-        let curve = JsBSplineCurve::from_3d(fit.curve);
-        (curve, fit.max_error, fit.worst, fit.closed)
-    })
+        JsBSplineCurve::from_3d(fit.curve)
+    };
+    Ok((curve, fit.max_error, fit.worst, fit.closed))
 }
 
 /// `fitBSpline(points, dim, degree, tolerance, options?)`: the B-spline of degree `degree`
@@ -223,25 +220,64 @@ fn oversketch_any(
         }
         .into());
     }
-    Ok(match (curve.as_2d(), curve.as_3d()) {
+    let lifted;
+    let old = match (curve.as_2d(), curve.as_3d()) {
         (Some(c), _) => {
-            let o = fit::oversketch(c, &points_from_flat::<DVec2>(&coords)?, tolerance)?;
-            (
-                JsCompositeBezier::from_2d(o.curve),
-                o.replaced,
-                o.new_pieces,
-            )
+            lifted = composite_3d(c)?;
+            &lifted
         }
-        (_, Some(c)) => {
-            let o = fit::oversketch(c, &points_from_flat::<DVec3>(&coords)?, tolerance)?;
-            (
-                JsCompositeBezier::from_3d(o.curve),
-                o.replaced,
-                o.new_pieces,
-            )
-        }
+        (_, Some(c)) => c,
         _ => return Err(ApiError::new("oversketch: the curve is neither 2D nor 3D")),
+    };
+    let o = fit::oversketch(old, &stroke_3d(&coords, dim)?, tolerance)?;
+    let curve = if dim == 2 {
+        JsCompositeBezier::from_2d(composite_2d(&o.curve)?)
+    } else {
+        JsCompositeBezier::from_3d(o.curve)
+    };
+    Ok((curve, o.replaced, o.new_pieces))
+}
+
+// The fitters run in 3D only: a 2D stroke (or curve) is lifted to z = 0 and the result
+// projected back. Every sum then only gains exact zeros, so a 2D fit gives the numbers a 2D
+// instantiation would, and the wasm holds one copy of the fitting code instead of two.
+
+/// The stroke's samples as 3D points (`z = 0` when `dim` is 2).
+fn stroke_3d(coords: &[f64], dim: usize) -> Result<Vec<DVec3>, Error> {
+    Ok(if dim == 2 {
+        points_from_flat::<DVec2>(coords)?
+            .into_iter()
+            .map(|p| p.extend(0.0))
+            .collect()
+    } else {
+        points_from_flat::<DVec3>(coords)?
     })
+}
+
+/// A composite curve through `f` on every control point, weights and breakpoints kept.
+fn map_composite<A: Cartesian, B: Cartesian>(
+    curve: &CompositeCurve<A>,
+    f: impl Fn(A) -> B,
+) -> Result<CompositeCurve<B>, Error> {
+    let mut breaks = vec![curve.domain().0];
+    let mut pieces = Vec::with_capacity(curve.pieces().len());
+    for piece in curve.pieces() {
+        let points = piece.control_points().into_iter().map(&f).collect();
+        let weights = piece.is_rational().then(|| piece.weights());
+        pieces.push(BezierCurve::new(points, weights.as_deref())?);
+        breaks.push(piece.interval().1);
+    }
+    CompositeCurve::new(pieces, &breaks)
+}
+
+/// A 2D curve in the plane `z = 0`.
+fn composite_3d(curve: &CompositeCurve<DVec2>) -> Result<CompositeCurve<DVec3>, Error> {
+    map_composite(curve, |p| p.extend(0.0))
+}
+
+/// A curve of the plane `z = 0` as 2D.
+fn composite_2d(curve: &CompositeCurve<DVec3>) -> Result<CompositeCurve<DVec2>, Error> {
+    map_composite(curve, |p| p.truncate())
 }
 
 /// `oversketch(curve, stroke, dim, tolerance)`: `curve` (a `CompositeBezier`) with the part
