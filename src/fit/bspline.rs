@@ -25,8 +25,8 @@
 //! release); strokes above [`MAX_BSPLINE_FIT_SAMPLES`] are refused ([`Error::TooLarge`]): the
 //! measurement alone costs about 1.5 µs a sample.
 //!
-//! **Closed.** `Some(true)`, or `None` when the stroke ends within [`CLOSE_TOLERANCES`]
-//! tolerances of its start and goes farther than that from it: a periodic curve
+//! **Closed.** `Some(true)`, or `None` when the stroke ends near where it began (the rule
+//! [`super::fit_curve`] follows too, `super::ends_meet`): a periodic curve
 //! ([`BSplineCurve::wrapped`] `= p`), `C^{p−1}` at the seam. It needs `max(3, p + 1)` distinct
 //! samples.
 //!
@@ -66,8 +66,6 @@ pub(crate) const SEARCH_SAMPLES: usize = 8192;
 const FULL_TRIES: usize = 3;
 /// The most samples [`fit_bspline`] takes (about a second natively; see the module doc).
 pub const MAX_BSPLINE_FIT_SAMPLES: usize = 100_000;
-/// A stroke closes (with `closed: None`) when it ends within this many tolerances of its start.
-pub const CLOSE_TOLERANCES: f64 = 3.0;
 
 /// Fits a B-spline of degree `degree` to the samples `points` with the fewest control points
 /// that keep every sample within `tolerance` (see the module doc); `closed`: `None` closes it
@@ -102,11 +100,6 @@ pub fn fit_bspline<C: Cartesian>(
         }
     }
     let first = points[0];
-    let closing = (points[points.len() - 1] - first).norm();
-    let reach = points
-        .iter()
-        .fold(0.0f64, |r, &q| r.max((q - first).norm()));
-    let near = CLOSE_TOLERANCES * tolerance;
     // A loop's samples: the last is dropped when it repeats the first.
     let mut loop_len = kept.len();
     if loop_len > 1 && points[kept[loop_len - 1]] == first {
@@ -115,7 +108,7 @@ pub fn fit_bspline<C: Cartesian>(
     let needed = 3.max(p + 1);
     let closed = match closed {
         Some(c) => c,
-        None => closing <= near && reach > near && loop_len >= needed,
+        None => super::ends_meet(points, tolerance) && loop_len >= needed,
     };
     let samples: Vec<C> = kept.iter().map(|&i| points[i]).collect();
     if closed {

@@ -17,11 +17,6 @@ use crate::bezier::{BezierCurve, CompositeCurve};
 use crate::error::Result;
 use crate::geom::Cartesian;
 
-/// A stroke closes itself when its ends are within this many tolerances…
-const CLOSE_TOLERANCES: f64 = 4.0;
-/// …or within this fraction of its length.
-const CLOSE_FRACTION: f64 = 0.03;
-
 /// Fits cubic Bézier pieces to the samples `points` (see the module doc of [`super`]).
 ///
 /// Reported indices are the original samples'. On a closed curve that starts at a corner the
@@ -41,7 +36,7 @@ pub fn fit_curve<C: Cartesian>(
     }
     let closed = match options.closed {
         Some(c) => c,
-        None => closes(&stroke, tolerance),
+        None => super::ends_meet(&stroke.pts, tolerance),
     };
     let mut work = stroke;
     if closed && work.pts[0] != work.pts[work.len() - 1] {
@@ -91,22 +86,13 @@ pub fn fit_curve<C: Cartesian>(
     finish(&work, &pieces, corners, closed)
 }
 
-/// Whether a stroke ends near where it began: within `max(4·tol, 3 % of its length)`, with
-/// at least 4 samples and a length above 8 tolerances (a dab is not a loop).
-fn closes<C: Cartesian>(stroke: &Stroke<C>, tol: f64) -> bool {
-    let n = stroke.len();
-    let length = stroke.length();
-    let gap = (stroke.pts[n - 1] - stroke.pts[0]).norm();
-    n >= 4 && length > 8.0 * tol && gap <= (CLOSE_TOLERANCES * tol).max(CLOSE_FRACTION * length)
-}
-
 /// The closed stroke (last sample = first) restarted at sample `c`.
 fn rotate<C: Cartesian>(work: &Stroke<C>, c: usize) -> Stroke<C> {
     let period = work.len() - 1;
     let idx: Vec<usize> = (0..=period).map(|k| (c + k) % period).collect();
     let pts: Vec<C> = idx.iter().map(|&k| work.pts[k]).collect();
     let orig: Vec<usize> = idx.iter().map(|&k| work.orig[k]).collect();
-    Stroke::from_parts(&pts, &orig)
+    Stroke::from_parts(&pts, orig)
 }
 
 /// One piece with four equal points at the only position.

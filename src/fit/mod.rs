@@ -26,7 +26,7 @@ mod segment;
 mod stroke;
 mod weighted;
 
-pub use bspline::{fit_bspline, CLOSE_TOLERANCES, MAX_BSPLINE_FIT_SAMPLES};
+pub use bspline::{fit_bspline, MAX_BSPLINE_FIT_SAMPLES};
 pub use curve::fit_curve;
 pub use oversketch::oversketch;
 
@@ -141,6 +141,23 @@ pub struct Oversketch<C: crate::geom::Cartesian> {
     pub replaced: (f64, f64),
     /// The new pieces `[first, last)` that come from the stroke.
     pub new_pieces: (usize, usize),
+}
+
+/// A stroke closes itself (with `closed: None`) when its ends are within this many
+/// tolerances…
+const CLOSE_TOLERANCES: f64 = 4.0;
+/// …or within this fraction of its length.
+const CLOSE_FRACTION: f64 = 0.03;
+
+/// Whether a stroke ends near where it began, for both fitters: within
+/// `max(4·tol, 3 % of its polyline length)`, with at least 4 samples and a length above 8
+/// tolerances (a dab is not a loop).
+pub(crate) fn ends_meet<C: crate::geom::Cartesian>(points: &[C], tol: f64) -> bool {
+    let length: f64 = points.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+    let gap = (points[points.len() - 1] - points[0]).norm();
+    points.len() >= 4
+        && length > 8.0 * tol
+        && gap <= (CLOSE_TOLERANCES * tol).max(CLOSE_FRACTION * length)
 }
 
 /// Checks a stroke and a tolerance, in the order of the API: finite coordinates, enough

@@ -18,28 +18,14 @@ pub(crate) struct Stroke<C: Cartesian> {
 impl<C: Cartesian> Stroke<C> {
     /// The samples of `points` with consecutive repeats skipped (the first of a run is kept).
     pub fn new(points: &[C]) -> Self {
-        let mut pts = Vec::with_capacity(points.len());
-        let mut orig = Vec::with_capacity(points.len());
-        for (i, &p) in points.iter().enumerate() {
-            if pts.last() != Some(&p) {
-                pts.push(p);
-                orig.push(i);
-            }
-        }
-        let mut s = Stroke {
-            pts,
-            orig,
-            arc: Vec::new(),
-        };
-        s.recompute_arc();
-        s
+        Self::from_parts(points, 0..points.len())
     }
 
     /// From samples and their original indices (consecutive repeats dropped).
-    pub fn from_parts(points: &[C], indices: &[usize]) -> Self {
+    pub fn from_parts(points: &[C], indices: impl IntoIterator<Item = usize>) -> Self {
         let mut pts = Vec::with_capacity(points.len());
         let mut orig = Vec::with_capacity(points.len());
-        for (&p, &i) in points.iter().zip(indices) {
+        for (&p, i) in points.iter().zip(indices) {
             if pts.last() != Some(&p) {
                 pts.push(p);
                 orig.push(i);
