@@ -11,16 +11,20 @@
 //! are checked against the Schoenberg–Whitney condition, without which the system is singular.
 //!
 //! ```
-//! use splinelab::interp::{interpolation_system, InterpolationOptions, RowKind}; use
-//! splinelab::DVec2; // The Croatian notes' example: five points at 0..4, degree 2, C'(0) given,
-//! knots 0 0 0 1 2 3 4 4 4. let points = [(0., 0.), (2., 4.), (4., 2.), (6., 6.), (8.,
-//! 0.)].map(|(x, y)| DVec2::new(x, y)); let options = InterpolationOptions {     knots:
-//! Some(vec![0., 0., 0., 1., 2., 3., 4., 4., 4.]),     start_derivative: Some(DVec2::new(2.0,
-//! 8.0)),     ..Default::default() }; let s = interpolation_system(&points, 2, &[0., 1., 2., 3.,
-//! 4.], &options).unwrap(); assert_eq!(&s.matrix[6..12], &[-2.0, 2.0, 0.0, 0.0, 0.0, 0.0]); // −2
-//! r_0 + 2 r_1 = D_0 assert_eq!(&s.matrix[12..18], &[0.0, 0.5, 0.5, 0.0, 0.0, 0.0]); // (r_1 +
-//! r_2)/2 = p_1 assert_eq!(s.rows[1], RowKind::StartDerivative); assert_eq!(s.solution[4],
-//! DVec2::new(7.0, 12.0));
+//! use splinelab::interp::{interpolation_system, InterpolationOptions, RowKind};
+//! use splinelab::DVec2;
+//! // The Croatian notes' example: five points at 0..4, degree 2, C'(0) given, knots 0 0 0 1 2 3 4 4 4.
+//! let points = [(0., 0.), (2., 4.), (4., 2.), (6., 6.), (8., 0.)].map(|(x, y)| DVec2::new(x, y));
+//! let options = InterpolationOptions {
+//!     knots: Some(vec![0., 0., 0., 1., 2., 3., 4., 4., 4.]),
+//!     start_derivative: Some(DVec2::new(2.0, 8.0)),
+//!     ..Default::default()
+//! };
+//! let s = interpolation_system(&points, 2, &[0., 1., 2., 3., 4.], &options).unwrap();
+//! assert_eq!(&s.matrix[6..12], &[-2.0, 2.0, 0.0, 0.0, 0.0, 0.0]); // −2 r_0 + 2 r_1 = D_0
+//! assert_eq!(&s.matrix[12..18], &[0.0, 0.5, 0.5, 0.0, 0.0, 0.0]); // (r_1 + r_2)/2 = p_1
+//! assert_eq!(s.rows[1], RowKind::StartDerivative);
+//! assert_eq!(s.solution[4], DVec2::new(7.0, 12.0));
 //! ```
 
 mod closed;
