@@ -307,11 +307,15 @@ impl fmt::Display for Error {
                 phrase(what),
                 if *needed == 1 { "" } else { "s" }
             ),
-            Error::StrokeFarFromCurve { start, end, near } => write!(
+            Error::StrokeFarFromCurve {
+                start_distance,
+                end_distance,
+                near,
+            } => write!(
                 f,
                 "the stroke starts {} and ends {} from the curve; to redraw a part, start and end it within {} of the curve (an open curve is also extended by a stroke that starts or ends there)",
-                Num(*start),
-                Num(*end),
+                Num(*start_distance),
+                Num(*end_distance),
                 Num(*near)
             ),
             Error::SingularSystem { what, row } => write!(

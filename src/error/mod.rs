@@ -429,9 +429,9 @@ pub enum Error {
     /// not both), so nothing says which part it redraws: `fit::oversketch(&curve, &far, 0.5)`.
     StrokeFarFromCurve {
         /// Distance from the stroke's first sample to the curve.
-        start: f64,
+        start_distance: f64,
         /// Distance from its last sample to the curve.
-        end: f64,
+        end_distance: f64,
         /// How near an end must be.
         near: f64,
     },

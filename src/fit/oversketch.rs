@@ -66,8 +66,8 @@ pub fn oversketch<C: Cartesian>(
     let (near0, near1) = (d0 <= near, d1 <= near);
     if !(near0 && near1) && (closed || !(near0 || near1)) {
         return Err(Error::StrokeFarFromCurve {
-            start: d0,
-            end: d1,
+            start_distance: d0,
+            end_distance: d1,
             near,
         });
     }

@@ -332,7 +332,9 @@ export async function offlineSuite({
       await page.reload();
       await checkPage("de-casteljau from www/", demoHelpers(page));
       equal(
-        await page.evaluate(() => document.querySelector('script[type="module"]').src),
+        await page.evaluate(
+          () => document.querySelector('script[type="module"][src$="app.js"]')?.src,
+        ),
         `${base}/app.js`,
         "the page is www/'s",
       );

@@ -2022,7 +2022,7 @@ export default {
   "coreError.too-few-data-points.other":
     "{what}: potrebno je barem {needed} zadanih točaka, dobiveno {got}",
   "coreError.stroke-far-from-curve":
-    "potez počinje na udaljenosti {start} i završava na udaljenosti {end} od krivulje; da biste ponovno nacrtali dio krivulje, počnite i završite potez unutar {near} od nje (otvorena krivulja produžuje se i potezom koji na njoj počinje ili završava)",
+    "potez počinje na udaljenosti {startDistance} i završava na udaljenosti {endDistance} od krivulje; da biste ponovno nacrtali dio krivulje, počnite i završite potez unutar {near} od nje (otvorena krivulja produžuje se i potezom koji na njoj počinje ili završava)",
   "coreError.singular-system":
     "{what}: sustav je singularan; eliminacija je naišla na nul-pivot u retku {row}",
   "coreError.spline-kind":

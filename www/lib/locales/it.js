@@ -2039,7 +2039,7 @@ export default {
   "coreError.too-few-data-points.other":
     "{what}: servono almeno {needed} punti dati, ricevuti {got}",
   "coreError.stroke-far-from-curve":
-    "il tratto inizia a distanza {start} e finisce a distanza {end} dalla curva; per ridisegnarne una parte, inizia e termina il tratto entro {near} dalla curva (una curva aperta si prolunga anche con un tratto che inizia o finisce su di essa)",
+    "il tratto inizia a distanza {startDistance} e finisce a distanza {endDistance} dalla curva; per ridisegnarne una parte, inizia e termina il tratto entro {near} dalla curva (una curva aperta si prolunga anche con un tratto che inizia o finisce su di essa)",
   "coreError.singular-system":
     "{what}: il sistema è singolare; l'eliminazione ha incontrato un pivot nullo nella riga {row}",
   "coreError.spline-kind":

@@ -141,7 +141,7 @@ export const CORE_ERRORS = {
   "coreError.too-few-data-points.one": "{what} needs at least {needed} data point, got {got}",
   "coreError.too-few-data-points.other": "{what} needs at least {needed} data points, got {got}",
   "coreError.stroke-far-from-curve":
-    "the stroke starts {start} and ends {end} from the curve; to redraw a part, start and end it within {near} of the curve (an open curve is also extended by a stroke that starts or ends there)",
+    "the stroke starts {startDistance} and ends {endDistance} from the curve; to redraw a part, start and end it within {near} of the curve (an open curve is also extended by a stroke that starts or ends there)",
   "coreError.singular-system": "{what} is singular: elimination met a zero pivot in row {row}",
   "coreError.spline-kind":
     "{operation} works on splines built by {needs}; this one was built by {got}",
