@@ -87,7 +87,7 @@ const TAU = 2 * Math.PI;
 const PATHS = {
   /** One and a half waves. */
   wave: (u) => [1 + 8 * u, 3 + 1.6 * Math.sin(3 * Math.PI * u)],
-  /** A zigzag roof with a flat end: five corners. */
+  /** A zigzag roof with a flat end: four corners. */
   corners: polyline([
     [1, 1.5],
     [2.5, 4.5],
