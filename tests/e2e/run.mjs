@@ -124,6 +124,9 @@ function demoHelpers(page, scope = "") {
         .locator(`${scope}.sl-figure[data-handles], ${scope}.sl-figure:has(.sl-canvas)`)
         .first()
         .waitFor({ state: "attached" });
+      // The panel typesets once a reader heads for it (lib/formula.js): as if focus went there.
+      const panel = page.locator(`${scope}.sl-formula`).first();
+      if (await panel.count()) await panel.dispatchEvent("focusin");
       await page.locator(`${scope}.sl-formula .katex`).first().waitFor({ state: "attached" });
       await settle(page);
     },
@@ -866,6 +869,7 @@ try {
       host.style.width = "600px";
       document.body.append(host);
       const panel = new FormulaPanel(host);
+      host.dispatchEvent(new FocusEvent("focusin")); // typeset now, wherever the panel is
       await new Promise((resolve) => setTimeout(resolve, 0));
       const options = { displayMode: true, throwOnError: false, output: "htmlAndMathml" };
       const pairs = [
@@ -963,6 +967,36 @@ try {
     }
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
+  });
+
+  await test("formula panel: on a phone, below the figure, KaTeX loads only once the page is scrolled", async () => {
+    // Issue 26: KaTeX's module, fonts and first layout are not part of a phone's first load.
+    const katexModules = () =>
+      page.evaluate(
+        () =>
+          performance.getEntriesByType("resource").filter((r) => r.name.includes("katex.mjs"))
+            .length,
+      );
+    await page.setViewportSize({ width: 412, height: 823 });
+    try {
+      await page.goto("about:blank");
+      await page.goto(`${base}/index.html#demo=de-casteljau`);
+      await page.locator(".sl-figure[data-handles]").first().waitFor({ state: "attached" });
+      await settle(page);
+      const panel = page.locator(".sl-formula").first();
+      const below = await panel.evaluate((e) => e.getBoundingClientRect().top - innerHeight);
+      assert(below > 48, `the panel starts ${below} px below the viewport`);
+      equal(await katexModules(), 0, "KaTeX modules fetched before scrolling");
+      equal(await panel.locator(".katex").count(), 0, "lines typeset before scrolling");
+      assert((await panel.textContent()).includes("\\"), "the TeX source stands in");
+      await page.evaluate(() => scrollBy(0, 100));
+      await panel.locator(".katex").first().waitFor({ state: "attached" });
+      equal(await katexModules(), 1, "KaTeX modules fetched after scrolling");
+      const problems = errors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    } finally {
+      await page.setViewportSize(VIEWPORT);
+    }
   });
 
   await test("occlusion: culling by triangle blocks gives the full test's answer on 3000 random segments", async () => {

@@ -1,7 +1,8 @@
 /**
  * The formula panel: lines of TeX typeset with KaTeX (copied into www/vendor/ by the build;
- * nothing from a CDN). KaTeX loads once per page, on first use; until it is there (or if it
- * fails) the TeX source is shown as text, so the numbers are never missing.
+ * nothing from a CDN). KaTeX loads once per page, when a panel first nears the viewport (on a
+ * phone the panel is below the figure, and the figure comes first); until it is there (or if
+ * it fails) the TeX source is shown as text, so the numbers are never missing.
  *
  * While a point is dragged the lines change in their numbers only, every frame. Typesetting
  * them again (a new KaTeX tree of hundreds of elements, its style and layout) cost 2–20 ms a
@@ -55,6 +56,11 @@ export function ensureKatexStyles(root) {
 export const MIN_FIT_SCALE = 0.6;
 /** The MathML of a line follows its picture once the digits rest this long (ms); see `settle`. */
 const SPOKEN_DELAY_MS = 250;
+/**
+ * When the panel counts as near the viewport (IntersectionObserver options): on screen, or
+ * within this margin below it.
+ */
+const NEAR_VIEWPORT = { rootMargin: "0px 0px 48px 0px" };
 /** A shrunk line that fits grows again only by more than this (no flicker between frames). */
 const REFIT_SLACK = 0.02;
 
@@ -189,6 +195,7 @@ export class FormulaPanel {
     this._settleNext = false;
     this._next = [];
     this._katex = null;
+    this._katexRequested = false;
     this._destroyed = false;
     // Refit every line when the panel's width or type size changes (a resize, lecture mode),
     // in the next frame so the refit never re-enters the observer's own notification.
@@ -200,6 +207,23 @@ export class FormulaPanel {
       requestAnimationFrame(() => this._fit(this._lines));
     });
     this._observer.observe(this.element);
+    this._startTypesetting = this._startTypesetting.bind(this);
+    // KaTeX (its module, fonts and first layout: a few hundred ms on a phone) loads only when
+    // a reader heads for the panel: it nears the viewport, the page is scrolled, or focus
+    // enters it. Until then the TeX source stands in, as while KaTeX loads.
+    this._visibility = new IntersectionObserver((entries) => {
+      if (entries.some((entry) => entry.isIntersecting)) this._startTypesetting();
+    }, NEAR_VIEWPORT);
+    this._visibility.observe(this.element);
+    addEventListener("scroll", this._startTypesetting, { capture: true, passive: true });
+    this.element.addEventListener("focusin", this._startTypesetting);
+  }
+
+  /** Loads KaTeX (once per page) and typesets every line when it is there. */
+  _startTypesetting() {
+    this._stopWaiting();
+    if (this._destroyed || this._katexRequested) return;
+    this._katexRequested = true;
     loadKatex()
       .then((katex) => {
         if (this._destroyed) return;
@@ -207,6 +231,12 @@ export class FormulaPanel {
         this._render(true);
       })
       .catch(() => {}); // TeX source stays visible
+  }
+
+  _stopWaiting() {
+    this._visibility.disconnect();
+    removeEventListener("scroll", this._startTypesetting, { capture: true });
+    this.element.removeEventListener("focusin", this._startTypesetting);
   }
 
   /**
@@ -278,7 +308,9 @@ export class FormulaPanel {
       else line.div.textContent = tex;
     });
     this._settleNext = false;
-    this._fit(changed);
+    // TeX source (before KaTeX) wraps like text: nothing to fit, and no layout read while the
+    // page mounts.
+    if (this._katex) this._fit(changed);
   }
 
   /** Typesets one line: digits rewritten when its shape is the one shown, else from the template. */
@@ -366,6 +398,7 @@ export class FormulaPanel {
   destroy() {
     clearTimeout(this._spokenTimer);
     this._destroyed = true;
+    this._stopWaiting();
     this._observer.disconnect();
     this.element.textContent = "";
   }
