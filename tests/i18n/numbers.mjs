@@ -25,7 +25,8 @@ import {
 } from "../../www/lib/format.js";
 import { knotMachine, knotText } from "../../www/lib/knot-ruler.js";
 import { knotListTex, knotListText } from "../../www/lib/knot-readout.js";
-import { addLocale, setLocale } from "../../www/lib/strings.js";
+import { DECIMAL_SIGNS, addLocale, setLocale } from "../../www/lib/strings.js";
+import { LANGUAGES } from "../../www/lib/language.js";
 
 let passed = 0;
 let failed = 0;
@@ -157,6 +158,20 @@ for (const code of ["en", "el", "hr", "it"]) {
   );
 }
 setLocale("en");
+
+// strings.js writes our languages' decimal separators down (Intl's first use is slow at load):
+// they must be the ones Intl.NumberFormat gives.
+for (const [code, sign] of Object.entries(DECIMAL_SIGNS))
+  check(
+    `${code}: the written decimal separator is Intl's`,
+    sign,
+    new Intl.NumberFormat(code).formatToParts(1.5).find((p) => p.type === "decimal")?.value,
+  );
+check(
+  "every language has its separator written",
+  Object.keys(DECIMAL_SIGNS).sort(),
+  [...LANGUAGES.map((l) => l.code)].sort(),
+);
 
 console.log(`numbers: ${passed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);
