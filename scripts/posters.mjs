@@ -8,11 +8,13 @@
 //   <id>-wide.svg    the figure as the playground draws it at 1280 CSS px (16:10, tall 4:3)
 //   <id>-narrow.svg  … at 412 CSS px, Lighthouse's phone (4:3, tall 1:1: the narrow layout)
 //   <id>-thumb.svg   the gallery card: a 480 × 300 figure (as the live thumbnails were drawn)
+// and each lecture's first scene, as lib/lecture.js mounts it (its state, its figure's height
+// cap, the large type at 1280 px), in the first two shapes: lecture-<lecture id>-1-wide.svg, ….
 // A 3D figure's surface is a WebGL image the SVG recorder cannot draw, so a 3D poster is an SVG
 // holding one WebP (the whole figure at 2 image px per CSS px, a thumbnail 2 per shown px); a 2D poster is the vector SVG,
 // unless the same SVG-wrapped WebP is smaller after brotli (it never was: see the summary line,
 // which prints both sizes). lib/posters.js finds the files (make dist hashes them).
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -41,9 +43,12 @@ const PAGE = `<!doctype html><html lang="en"><head><meta charset="utf-8">
 <link rel="stylesheet" href="lib/shell.css"><link rel="stylesheet" href="style.css"></head>
 <body><main><div class="demo-page"><div id="slot"></div></div></main></body></html>`;
 
-/** In the page: mounts demo `id` (default state) in #slot and records its figure. */
-async function drawInPage({ id, thumb, quality, scale }) {
-  const [{ loadDemo, demos }, { loadWasm }, shell, { prepareFigure }, draw, theme, exp] =
+/**
+ * In the page: mounts demo `id` in #slot, in `state` (null: its default) and, for a lecture's
+ * scene (`lecture`), as lib/lecture.js mounts it; records its figure.
+ */
+async function drawInPage({ id, state, lecture, thumb, quality, scale }) {
+  const [{ loadDemo, demos }, { loadWasm }, shell, { prepareFigure }, draw, theme, exp, lectures] =
     await Promise.all([
       import("./demos/index.js"),
       import("./lib/wasm.js"),
@@ -52,16 +57,19 @@ async function drawInPage({ id, thumb, quality, scale }) {
       import("./lib/draw.js"),
       import("./lib/theme.js"),
       import("./lib/export.js"),
+      import("./lib/lecture.js"),
     ]);
   const sl = await loadWasm();
   const demo = await loadDemo(id);
-  await prepareFigure(demo);
+  await prepareFigure(demo, state);
   const slot = document.getElementById("slot");
+  if (lecture) slot.className = "lecture"; // its figure's height cap (style.css)
   const controller = shell.mountDemo(slot, demo, {
     sl,
-    state: shell.validateState(demo, structuredClone(demo.defaultState)),
+    state: shell.validateState(demo, structuredClone(state ?? demo.defaultState)),
     mode: "page",
-    headingLevel: "h1",
+    headingLevel: lecture ? "h2" : "h1",
+    lecture: lecture && lectures.largeType(),
     shareUrl: () => "",
   });
   await document.fonts.ready;
@@ -100,6 +108,21 @@ async function drawInPage({ id, thumb, quality, scale }) {
 }
 
 /**
+ * The first scene of every lecture (www/lectures/*.json), under the poster name
+ * lib/posters.js `lecturePosterName` gives it: `lecture-<id>-1`.
+ */
+function lectureScenes() {
+  const dir = join(ROOT, "www", "lectures");
+  return readdirSync(dir)
+    .filter((file) => file.endsWith(".json"))
+    .map((file) => {
+      const lecture = JSON.parse(readFileSync(join(dir, file), "utf8"));
+      const scene = lecture.scenes[0];
+      return { id: scene.demo, name: `lecture-${lecture.id}-1`, state: scene.state, lecture: true };
+    });
+}
+
+/**
  * Draws every demo's posters into `out` (replaced whole). Resolves to the list of
  * { id, shape, file, bytes, svgBrotli, webpBrotli } written.
  */
@@ -126,12 +149,20 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
     ).filter((id) => id.includes(only));
     rmSync(out, { recursive: true, force: true });
     mkdirSync(out, { recursive: true });
+    // Each demo's default state, and each lecture's first scene (lib/lecture.js shows it).
+    const figures = [
+      ...ids.map((id) => ({ id, name: id, state: null, lecture: false })),
+      ...lectureScenes().filter((f) => f.name.includes(only) || f.id.includes(only)),
+    ];
     for (const [shape, width] of [...Object.entries(SHAPES), ["thumb", SHAPES.wide]]) {
       await page.setViewportSize({ width, height: 900 });
-      for (const id of ids) {
+      for (const { id, name, state, lecture } of figures) {
+        if (lecture && shape === "thumb") continue;
         await page.goto(`${base}/__posters__.html`);
         const r = await page.evaluate(drawInPage, {
           id,
+          state,
+          lecture,
           thumb: shape === "thumb" ? [THUMB.width, THUMB.height] : null,
           quality: WEBP_QUALITY,
           scale: shape === "thumb" ? THUMB_SCALE : 2,
@@ -143,7 +174,7 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
         const svgBrotli = r.svg ? brotliSize(r.svg) : Number.POSITIVE_INFINITY;
         const webpBrotli = brotliSize(r.webp);
         const body = svgBrotli <= webpBrotli ? r.svg : r.webp;
-        const file = `${id}-${shape}.svg`;
+        const file = `${name}-${shape}.svg`;
         writeFileSync(join(out, file), body);
         written.push({
           id,

@@ -20,7 +20,13 @@ import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
 import { registerOffline } from "./lib/offline.js";
-import { hasPosters, posterPage, posterSettled, posterUrl } from "./lib/posters.js";
+import {
+  hasPosters,
+  lectureLinkPoster,
+  posterPage,
+  posterSettled,
+  posterUrl,
+} from "./lib/posters.js";
 
 /**
  * Gallery thumbnails: shown at THUMB_WIDTH × THUMB_HEIGHT CSS px, drawn as a figure of
@@ -337,8 +343,12 @@ function showDemo(entry, demo, encoded, sl) {
 }
 
 // ------------------------------------------------------------------ lecture view
-/** Plays lecture `id` from scene `scene` (1-based, from the link); the scene follows in the hash. */
-async function showLecture(id, scene, sl) {
+/**
+ * Plays lecture `id` from scene `scene` (1-based, from the link); the scene follows in the hash.
+ * The scene's poster and caption (lib/lecture.js) show before the wasm; if the wasm fails, the
+ * gallery (with the failure reported).
+ */
+async function showLecture(id, scene) {
   const routed = routeCount;
   let lecture;
   try {
@@ -358,8 +368,12 @@ async function showLecture(id, scene, sl) {
   const holder = el("div", { class: "demo-page lecture-page" });
   main.append(holder);
   const first = Math.max(0, Math.min(lecture.scenes.length - 1, (Number(scene) || 1) - 1));
+  let wasmLoaded = () => {};
+  const wasmLoading = new Promise((resolve) => {
+    wasmLoaded = resolve;
+  });
   player = playLecture(holder, lecture, {
-    sl,
+    sl: wasmLoading,
     index: first,
     onScene: (k) => {
       lastHash = `#lecture=${encodeURIComponent(id)}&scene=${k + 1}`;
@@ -369,6 +383,10 @@ async function showLecture(id, scene, sl) {
       location.hash = buildHash(demoId, state);
     },
   });
+  // Asked for now: after the first scene's poster, if playLecture showed one (posterSettled).
+  const sl = await wasm();
+  wasmLoaded(sl);
+  if (!sl && routed === routeCount) await showGallery(null);
 }
 
 // ------------------------------------------------------------------ exercise view
@@ -417,6 +435,15 @@ async function route() {
     unmount();
     showPoster(opening);
   }
+  if (lecture && !exercise && findLecture(lecture)) {
+    // The lecture's first frame (its poster and caption) comes before the wasm.
+    if (player && player.lectureId === lecture) {
+      await wasm();
+      if (routed === routeCount) player.go((Number(scene) || 1) - 1);
+      return;
+    }
+    return showLecture(lecture, scene);
+  }
   const sl = id || lecture || exercise || !hasPosters() ? await wasm() : null;
   if (routed !== routeCount) return;
   if (exercise) {
@@ -425,10 +452,6 @@ async function route() {
     await showGallery(sl);
     if (!entry) showAppStatus(t("exercise.unknown", { id: exercise }), "error");
     return;
-  }
-  if (lecture && findLecture(lecture) && sl) {
-    if (player && player.lectureId === lecture) return player.go((Number(scene) || 1) - 1);
-    return showLecture(lecture, scene, sl);
   }
   if (lecture && !findLecture(lecture)) {
     await showGallery(sl);
@@ -466,8 +489,14 @@ async function route() {
     return;
   }
   showDemo(entry, demo, s, sl);
-  main.focus({ preventScroll: true });
   window.scrollTo(0, 0);
+  // Focus to the new page (a reader who followed a link) once its first frame is laid out:
+  // focusing now would force that layout inside this task (~25 ms, 100 at a phone's speed).
+  requestAnimationFrame(() =>
+    setTimeout(() => {
+      if (routed === routeCount) main.focus({ preventScroll: true });
+    }),
+  );
 }
 
 /**
@@ -493,9 +522,11 @@ async function applyLanguage() {
 async function start() {
   // What the first frame needs first: a demo, lecture or exercise link fetches and compiles the
   // wasm (and the demo's module) while the language loads; its poster shows meanwhile.
-  const { demo: id, lecture, exercise } = parseHash(location.hash);
+  const { demo: id, lecture, scene, exercise } = parseHash(location.hash);
   const entry = id ? findDemo(id) : null;
-  if (id || lecture || exercise || !hasPosters()) wasm();
+  // (A lecture whose scene has a poster asks for it after the poster: showLecture.)
+  const posterFirst = lecture && findLecture(lecture) && lectureLinkPoster(lecture, scene) !== null;
+  if (id || (lecture && !posterFirst) || exercise || !hasPosters()) wasm();
   if (entry) loadDemo(id).catch(() => {}); // reported by route
   if (lecture && findLecture(lecture)) {
     early = { id: lecture, load: loadLecture(lecture) };

@@ -4,7 +4,7 @@
  * link asks for its poster (lib/posters.js) and then the wasm and its glue (fetched here,
  * compiled by lib/wasm.js as it streams), so both arrive while the rest of the JS loads. The gallery asks for nothing (its thumbnails are posters; no wasm).
  */
-import { NARROW_PAGE, loadingPoster, posterUrl } from "./lib/posters.js";
+import { NARROW_PAGE, lectureLinkPoster, loadingPoster, posterUrl } from "./lib/posters.js";
 
 const hash = new URLSearchParams(location.hash.slice(1));
 
@@ -42,6 +42,9 @@ function wasmHints() {
 }
 
 const id = hash.get("demo");
+const lecture = hash.get("lecture");
+const lecturePoster =
+  lecture && /^[a-z0-9-]+$/.test(lecture) ? lectureLinkPoster(lecture, hash.get("scene")) : null;
 const poster =
   id && /^[a-z0-9-]+$/.test(id)
     ? posterUrl(id, matchMedia(NARROW_PAGE).matches ? "narrow" : "wide")
@@ -73,4 +76,11 @@ if (poster) {
     }),
   );
   image.src = poster;
+} else if (lecturePoster) {
+  // app.js shows the scene's poster and caption, then asks for the wasm (lib/lecture.js).
+  const shape = matchMedia(NARROW_PAGE).matches ? "narrow" : "wide";
+  hint("preload", posterUrl(lecturePoster, shape), {
+    as: "image",
+    fetchpriority: "high",
+  });
 } else if (hash.has("demo") || hash.has("lecture") || hash.has("exercise")) wasmHints();

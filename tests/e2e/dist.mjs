@@ -175,6 +175,60 @@ export async function distSuite({
       );
     });
 
+    // Posters come with `make dist` (scripts/posters.mjs, ~1.5 min of Chromium), not with
+    // `make test`: this runs where they were drawn.
+    if (existsSync(POSTERS))
+      await test("dist: a demo link and a lecture link show their poster (the lecture its caption) before the wasm arrives", async () => {
+        needSite();
+        const caption = JSON.parse(
+          readFileSync(join(WWW, "lectures", "bezier-curves.json"), "utf8"),
+        ).scenes[0].caption.en;
+        let release = () => {};
+        const held = new Promise((resolve) => {
+          release = resolve;
+        });
+        const hold = async (route) => {
+          await held;
+          await route.continue().catch(() => {}); // a page left meanwhile
+        };
+        await page.route("**/*.wasm", hold);
+        try {
+          for (const [what, hash] of [
+            ["de-casteljau", "index.html#demo=de-casteljau"],
+            ["lecture", "index.html#lecture=bezier-curves"],
+          ]) {
+            await page.goto("about:blank");
+            await page.goto(`${base}/${hash}`);
+            await page.waitForFunction(() =>
+              [...document.querySelectorAll("img.sl-poster")].some(
+                (img) => img.complete && img.naturalWidth > 0 && img.src.endsWith(".svg"),
+              ),
+            );
+            equal(await page.locator(".sl-canvas").count(), 0, `${what}: a live figure`);
+          }
+          equal(
+            (await page.locator(".lecture-caption").textContent()).trim(),
+            caption,
+            "the lecture's caption beside its poster",
+          );
+          const [figure, below] = await page.evaluate(() => [
+            document.querySelector(".sl-figure").getBoundingClientRect().bottom,
+            document.querySelector(".lecture-caption").getBoundingClientRect().top,
+          ]);
+          assert(below >= figure, `the caption (top ${below}) under the figure (bottom ${figure})`);
+        } finally {
+          release();
+          await page.unroute("**/*.wasm", hold);
+        }
+        await checkPage("the lecture after its poster", demoHelpers(page));
+        equal(await page.locator(".sl-poster").count(), 0, "posters left after the mount");
+        equal(
+          (await page.locator(".lecture-caption").textContent()).trim(),
+          caption,
+          "the caption",
+        );
+      });
+
     await test("dist: the embed example draws both <spline-lab> figures", async () => {
       needSite();
       await page.goto("about:blank");

@@ -9,7 +9,8 @@
 import { el, setText } from "./controls.js";
 import { mountDemo, validateState } from "./shell.js";
 import { prepareFigure } from "./three-loader.js";
-import { loadDemo } from "../demos/index.js";
+import { findDemo, loadDemo } from "../demos/index.js";
+import { lecturePosterName, loadingPoster, painted, posterPage } from "./posters.js";
 import { locale, t } from "./strings.js";
 import { buildHash } from "./state.js";
 import { errorText } from "./core-errors.js";
@@ -22,6 +23,12 @@ export function captionOf(scene) {
 
 /** Narrower windows (phones) show scenes without lecture mode's large type (CSS px). */
 const LECTURE_TYPE_MIN_WIDTH = 900;
+/**
+ * Projection type (×1.6) on a projector-sized window; a phone keeps the normal size, where the
+ * large type would crowd the figure.
+ */
+export const largeType = () => window.innerWidth >= LECTURE_TYPE_MIN_WIDTH;
+
 /** Keys that step scenes wherever the focus is (a clicker's). */
 const CLICKER = { PageDown: 1, PageUp: -1 };
 /** Keys that step scenes unless a control or the figure has the focus. */
@@ -37,7 +44,8 @@ function focusIsBusy(root) {
 /**
  * Plays `lecture` (its JSON) in `container` from scene `index` (0-based).
  * @param {object} options
- * @param {object} options.sl the initialised wasm package.
+ * @param {object} options.sl the initialised wasm package, or its promise (null: it failed):
+ *   meanwhile the first scene's poster (built site) shows, with its caption.
  * @param {(index: number) => void} options.onScene called with each scene shown (the URL).
  * @param {(demoId: string, state: object) => void} options.onLeave Escape: open the demo page.
  * Returns `{ go(index), destroy() }`.
@@ -83,15 +91,18 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     if (k === current && controller) return;
     const ticket = ++loading;
     const scene = scenes[k];
+    if (!controller) showPoster(scene, k);
     let demo;
+    let wasm;
     try {
       demo = await loadDemo(scene.demo);
       await prepareFigure(demo, scene.state);
+      wasm = await sl;
     } catch (err) {
       setText(caption, errorText(err));
       return;
     }
-    if (ticket !== loading) return;
+    if (ticket !== loading || !wasm) return;
     current = k;
     controller?.destroy();
     stage.replaceChildren();
@@ -106,13 +117,11 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     const slot = el("div");
     stage.append(slot);
     controller = mountDemo(slot, demo, {
-      sl,
+      sl: wasm,
       state,
       mode: "page",
       headingLevel: "h2",
-      // Projection type (×1.6) on a projector-sized window; a phone keeps the normal size,
-      // where the large type would crowd the figure.
-      lecture: window.innerWidth >= LECTURE_TYPE_MIN_WIDTH,
+      lecture: largeType(),
       shareUrl: (s) => new URL(buildHash(demo.id, s), location.href).href,
     });
     if (problem) controller.status(t("status.rejected", { message: problem }), "error");
@@ -121,11 +130,37 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     if (figure) figure.after(caption);
     else stage.append(caption);
     setText(caption, captionOf(scene));
+    showProgress(k);
+    onScene?.(k);
+  }
+
+  /** Scene k's poster (a lecture's first scene, on the built site) and caption, until it mounts. */
+  function showPoster(scene, k) {
+    const entry = findDemo(scene.demo);
+    const title = entry ? t(`${entry.strings}.title`) : "";
+    const poster =
+      entry &&
+      posterPage(entry, {
+        title,
+        alt: t("gallery.thumbnailAlt", { title }),
+        headingLevel: "h2",
+        name: lecturePosterName(lecture.id, k),
+        lecture: largeType(),
+      });
+    if (!poster) return;
+    loadingPoster(painted(poster.image)); // the wasm after it (app.js)
+    stage.replaceChildren(poster.element);
+    poster.figure.after(caption);
+    setText(caption, captionOf(scene));
+    showProgress(k);
+    poster.show();
+  }
+
+  function showProgress(k) {
     setText(counter, t("lecture.counter", { k: k + 1, n: scenes.length }));
     bar.style.width = `${((k + 1) / scenes.length) * 100}%`;
     prev.disabled = k === 0;
     next.disabled = k === scenes.length - 1;
-    onScene?.(k);
   }
 
   function onKey(event) {

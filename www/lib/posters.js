@@ -63,17 +63,22 @@ export function hasPosters() {
 /**
  * The page a demo will have, with its poster where the figure will be: the same classes as
  * lib/shell.js `mountDemo` (`.sl-demo` › `.sl-head` › title, `.sl-body` › `.sl-figure`), so the
- * figure's box has the live figure's size. Null when the site has no posters. `entry` is the
- * manifest entry (demos/index.js), `title` and `alt` the words to show.
+ * figure's box has the live figure's size. Null when the site has no such poster. `entry` is the
+ * manifest entry (demos/index.js), `title` and `alt` the words to show, `name` the poster's
+ * (`entry.id`, or a lecture scene's: `lecturePosterName`), `lecture` the large type of a
+ * lecture's scene.
  */
-export function posterPage(entry, { title, alt, headingLevel = "h1", mode = "page" }) {
-  if (!posterUrl(entry.id, "wide")) return null;
+export function posterPage(
+  entry,
+  { title, alt, headingLevel = "h1", mode = "page", name = entry.id, lecture = false },
+) {
+  if (!posterUrl(name, "wide")) return null;
   const img = el("img", { class: "sl-poster", alt, decoding: "async", fetchpriority: "high" });
   const box = el("div", { class: `sl-figure${entry.tall ? " sl-figure-tall" : ""}` }, img);
   const section = el(
     "section",
     {
-      class: `sl-demo sl-mode-${mode} sl-controls-full sl-poster-page`,
+      class: `sl-demo sl-mode-${mode} sl-controls-full sl-poster-page${lecture ? " sl-lecture" : ""}`,
       dataset: { demo: entry.id },
     },
     el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: title })),
@@ -81,11 +86,45 @@ export function posterPage(entry, { title, alt, headingLevel = "h1", mode = "pag
   );
   return {
     element: section,
+    figure: box,
+    image: img,
     /** Chooses the poster of the box's shape; call once the element is in the document. */
     show() {
       const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
       const narrow = section.clientWidth <= NARROW_REM * rem;
-      img.src = posterUrl(entry.id, narrow ? "narrow" : "wide");
+      img.src = posterUrl(name, narrow ? "narrow" : "wide");
     },
   };
+}
+
+/**
+ * The poster name of scene `index` (0-based) of lecture `lectureId`: the build draws each
+ * lecture's first scene (scripts/posters.mjs), the scene a lecture link opens.
+ */
+export function lecturePosterName(lectureId, index) {
+  return `lecture-${lectureId}-${index + 1}`;
+}
+
+/**
+ * The poster name of the scene a lecture link opens (`scene`: its 1-based number, absent for
+ * the first), or null when the build drew none: with one, lib/lecture.js shows it and the
+ * scene's caption before the wasm loads.
+ */
+export function lectureLinkPoster(lectureId, scene) {
+  const name = lecturePosterName(lectureId, Math.max(0, (Number(scene) || 1) - 1));
+  return posterUrl(name, "wide") ? name : null;
+}
+
+/**
+ * Resolves once `image` has been painted (or failed): for `loadingPoster`, so the wasm's
+ * request starts after the first frame's paint (for Lighthouse's simulation, a request started
+ * before the page's largest paint is one that paint waited for).
+ */
+export function painted(image) {
+  return new Promise((resolve) => {
+    image.addEventListener("load", () => requestAnimationFrame(() => setTimeout(resolve)), {
+      once: true,
+    });
+    image.addEventListener("error", () => resolve(), { once: true });
+  });
 }
