@@ -870,7 +870,8 @@ try {
       document.body.append(host);
       const panel = new FormulaPanel(host);
       host.dispatchEvent(new FocusEvent("focusin")); // typeset now, wherever the panel is
-      await new Promise((resolve) => setTimeout(resolve, 0));
+      panel.set(["x"]);
+      while (!host.querySelector(".katex")) await new Promise((resolve) => setTimeout(resolve, 10));
       const options = { displayMode: true, throwOnError: false, output: "htmlAndMathml" };
       const pairs = [
         ["P(0.250) = (2.000,\\ 3.125)", "P(0.75) = (12.5,\\ 3.125)", true],

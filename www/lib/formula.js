@@ -35,18 +35,28 @@ export function loadKatex() {
 
 /**
  * Makes sure KaTeX's CSS applies inside `root` (a Document or a ShadowRoot): the class rules in
- * `root`, the @font-face rules in the document (fonts only take effect from there).
+ * `root`, the @font-face rules in the document (fonts only take effect from there). Resolves
+ * when both stylesheets have loaded (or failed).
  */
 export function ensureKatexStyles(root) {
   const add = (parent, href) => {
-    if (parent.querySelector?.(`link[href="${href}"]`)) return;
-    const link = document.createElement("link");
-    link.rel = "stylesheet";
-    link.href = href;
-    parent.append(link);
+    let link = parent.querySelector?.(`link[href="${href}"]`);
+    if (link?.sheet) return Promise.resolve();
+    if (!link) {
+      link = document.createElement("link");
+      link.rel = "stylesheet";
+      link.href = href;
+      parent.append(link);
+    }
+    return new Promise((resolve) => {
+      link.addEventListener("load", resolve, { once: true });
+      link.addEventListener("error", resolve, { once: true });
+    });
   };
-  add(document.head, KATEX_FONTS_CSS);
-  add(root && root !== document ? root : document.head, KATEX_CSS);
+  return Promise.all([
+    add(document.head, KATEX_FONTS_CSS),
+    add(root && root !== document ? root : document.head, KATEX_CSS),
+  ]);
 }
 
 /**
@@ -219,13 +229,14 @@ export class FormulaPanel {
     this.element.addEventListener("focusin", this._startTypesetting);
   }
 
-  /** Loads KaTeX (once per page) and typesets every line when it is there. */
+  /** Loads KaTeX (once per page) and its CSS, and typesets every line when they are there. */
   _startTypesetting() {
     this._stopWaiting();
     if (this._destroyed || this._katexRequested) return;
     this._katexRequested = true;
-    loadKatex()
-      .then((katex) => {
+    // Its stylesheets too (the style recalculation they bring stays out of the page's load).
+    Promise.all([loadKatex(), ensureKatexStyles(this.element.getRootNode())])
+      .then(([katex]) => {
         if (this._destroyed) return;
         this._katex = katex;
         this._render(true);

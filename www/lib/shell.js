@@ -18,7 +18,6 @@ import {
   svgBlob,
   texBlob,
 } from "./export.js";
-import { ensureKatexStyles } from "./formula.js";
 import { keepView, viewFits } from "./figure-kind.js";
 import { el, button } from "./controls.js";
 import { formatNumber, has, t } from "./strings.js";
@@ -215,7 +214,6 @@ export function mountDemo(
     about,
   );
   root.replaceChildren(element);
-  ensureKatexStyles(root.getRootNode ? root.getRootNode() : document);
 
   // ------------------------------------------------------------------ status
   function showStatus(message, kind = "info") {
