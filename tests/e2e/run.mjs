@@ -2005,6 +2005,45 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("at 2 device px per CSS px (device emulation, as DevTools and Lighthouse do it) a 2D and a 3D figure draw 2 canvas px per CSS px", async () => {
+    // Chromium's emulation reports ResizeObserver's device-pixel box in CSS px: canvas-size.js
+    // must not trust it then (the figures were drawn at half resolution and scaled up).
+    const sharp = await context.newPage();
+    const sharpErrors = watchErrors(sharp);
+    const cdp = await context.newCDPSession(sharp);
+    try {
+      await cdp.send("Emulation.setDeviceMetricsOverride", {
+        width: 412,
+        height: 823,
+        deviceScaleFactor: 2,
+        mobile: true,
+      });
+      for (const id of ["de-casteljau", "bezier-patch"]) {
+        await sharp.goto("about:blank");
+        await sharp.goto(`${base}/index.html#demo=${id}`);
+        const h = demoHelpers(sharp);
+        await h.ready();
+        const size = await h.canvas().evaluate((c) => ({
+          w: c.width,
+          h: c.height,
+          cw: c.getBoundingClientRect().width,
+          ch: c.getBoundingClientRect().height,
+          ratio: devicePixelRatio,
+        }));
+        equal(size.ratio, 2, `${id}: devicePixelRatio`);
+        assert(
+          Math.abs(size.w - 2 * size.cw) <= 2 && Math.abs(size.h - 2 * size.ch) <= 2,
+          `${id}: a backing store of ${size.w} × ${size.h} for ${size.cw} × ${size.ch} CSS px`,
+        );
+      }
+      const problems = sharpErrors.take();
+      assert(problems.length === 0, problems.join("\n"));
+    } finally {
+      await cdp.detach().catch(() => {});
+      await sharp.close();
+    }
+  });
+
   await test("a browser without WebAssembly SIMD is told so, on the page and in embeds", async () => {
     // The package is built with SIMD128; an old browser's WebAssembly.validate refuses the probe.
     const old = await context.newPage();

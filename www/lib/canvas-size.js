@@ -1,7 +1,7 @@
 /**
  * A figure canvas sized in device pixels (View and View3D share it): the backing store is the CSS
  * size × devicePixelRatio, or exactly the device-pixel-content-box ResizeObserver reports when the
- * browser has it (one canvas pixel is one screen pixel even at fractional CSS sizes); a media
+ * browser has it and it agrees (one canvas pixel is one screen pixel even at fractional CSS sizes); a media
  * query on the current ratio, re-armed after each change, covers browsers without it (a window
  * moved to another screen, page zoom).
  */
@@ -16,8 +16,8 @@ export function sizeCanvas(figure, cssWidth, cssHeight, devicePixels = null) {
   const w = Math.max(0, cssWidth);
   const h = Math.max(0, cssHeight);
   const dpr = window.devicePixelRatio || 1;
-  const pixelWidth = devicePixels ? devicePixels.inlineSize : Math.round(w * dpr);
-  const pixelHeight = devicePixels ? devicePixels.blockSize : Math.round(h * dpr);
+  const pixelWidth = devicePixelSize(devicePixels?.inlineSize, w, dpr);
+  const pixelHeight = devicePixelSize(devicePixels?.blockSize, h, dpr);
   const canvas = figure.canvas;
   if (
     w === figure.width &&
@@ -33,6 +33,23 @@ export function sizeCanvas(figure, cssWidth, cssHeight, devicePixels = null) {
   canvas.height = pixelHeight;
   figure.renderer.pixelRatio = figure.pixelRatio;
   return true;
+}
+
+/** Device pixels a reported device-pixel box may differ from CSS size × ratio by (snapping). */
+const DEVICE_PIXEL_SLACK = 2;
+
+/**
+ * The backing store's size for `css` CSS px: the device-pixel box's `reported` size when it
+ * agrees with `css × dpr` (within snapping, DEVICE_PIXEL_SLACK), else `css × dpr` rounded.
+ * Chromium's device emulation (DevTools' phone view, Lighthouse, headless browsers given a
+ * scale factor) reports the device-pixel box in CSS px while devicePixelRatio is the emulated
+ * ratio: trusting it there drew a blurry figure.
+ */
+function devicePixelSize(reported, css, dpr) {
+  const scaled = Math.round(css * dpr);
+  return reported !== undefined && Math.abs(reported - css * dpr) <= DEVICE_PIXEL_SLACK
+    ? reported
+    : scaled;
 }
 
 /**
