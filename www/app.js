@@ -6,7 +6,7 @@
  */
 import { demos, findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm, loadedWasm } from "./lib/wasm.js";
-import { mountDemo, validateState } from "./lib/shell.js";
+import { mountDemo, toolbarStandIn, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
 import { parseHash, buildHash, decodeState, encodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
@@ -297,16 +297,35 @@ function demoPageRoot() {
 }
 
 /**
- * Demo `entry`'s poster where its figure will be, while the wasm and the demo's module load
- * (lib/posters.js; the built site only). The demo's mount replaces it (unmount).
+ * Demo `entry`'s poster where its figure will be, with the page's title and toolbar around it,
+ * while the wasm and the demo's module load (lib/posters.js; the built site only): the demo's
+ * mount replaces it (unmount) without moving the figure. The bare poster boot.js showed (before
+ * the page's words were here) gives way to it once its picture is decoded.
  */
 function showPoster(entry) {
-  if (main.querySelector(".sl-poster")) return true; // boot.js showed it
+  const boot = main.querySelector(".sl-boot-poster");
+  if (!boot && main.querySelector(".sl-poster")) return true; // shown already
   const title = t(`${entry.strings}.title`);
-  const poster = posterPage(entry, { title, alt: t("gallery.thumbnailAlt", { title }) });
-  if (!poster) return false;
+  const poster = posterPage(entry, {
+    title,
+    alt: t("gallery.thumbnailAlt", { title }),
+    toolbar: toolbarStandIn(),
+  });
+  if (!poster) return Boolean(boot);
   demoPageRoot().append(poster.element);
-  poster.show();
+  poster.show(); // chooses the picture for the box's width
+  if (boot) {
+    const page = poster.element.closest(".demo-page");
+    page.hidden = true;
+    poster.image
+      .decode()
+      .catch(() => {})
+      .then(() => {
+        if (!page.isConnected || !boot.isConnected) return;
+        boot.remove();
+        page.hidden = false;
+      });
+  }
   return true;
 }
 

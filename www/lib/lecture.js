@@ -7,7 +7,7 @@
  * toggles fullscreen, Escape leaves for the demo page with the scene's state.
  */
 import { el, setText } from "./controls.js";
-import { mountDemo, validateState } from "./shell.js";
+import { mountDemo, toolbarStandIn, validateState } from "./shell.js";
 import { prepareFigure } from "./three-loader.js";
 import { findDemo, loadDemo } from "../demos/index.js";
 import { lecturePosterName, loadingPoster, painted, posterPage } from "./posters.js";
@@ -146,6 +146,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
         headingLevel: "h2",
         name: lecturePosterName(lecture.id, k),
         lecture: largeType(),
+        toolbar: toolbarStandIn(),
       });
     if (!poster) return;
     loadingPoster(painted(poster.image)); // the wasm after it (app.js)

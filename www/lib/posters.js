@@ -66,11 +66,20 @@ export function hasPosters() {
  * figure's box has the live figure's size. Null when the site has no such poster. `entry` is the
  * manifest entry (demos/index.js), `title` and `alt` the words to show, `name` the poster's
  * (`entry.id`, or a lecture scene's: `lecturePosterName`), `lecture` the large type of a
- * lecture's scene.
+ * lecture's scene, `toolbar` the demo's toolbar as it will be (lib/shell.js `toolbarStandIn`),
+ * so the figure's box is where the live one will be.
  */
 export function posterPage(
   entry,
-  { title, alt, headingLevel = "h1", mode = "page", name = entry.id, lecture = false },
+  {
+    title,
+    alt,
+    headingLevel = "h1",
+    mode = "page",
+    name = entry.id,
+    lecture = false,
+    toolbar = null,
+  },
 ) {
   if (!posterUrl(name, "wide")) return null;
   const img = el("img", { class: "sl-poster", alt, decoding: "async", fetchpriority: "high" });
@@ -81,7 +90,12 @@ export function posterPage(
       class: `sl-demo sl-mode-${mode} sl-controls-full sl-poster-page${lecture ? " sl-lecture" : ""}`,
       dataset: { demo: entry.id },
     },
-    el("header", { class: "sl-head" }, el(headingLevel, { class: "sl-title", text: title })),
+    el(
+      "header",
+      { class: "sl-head" },
+      el(headingLevel, { class: "sl-title", text: title }),
+      ...(toolbar ? [toolbar] : []),
+    ),
     el("div", { class: "sl-body" }, el("div", { class: "sl-figure-wrap" }, box)),
   );
   return {

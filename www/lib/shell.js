@@ -60,6 +60,67 @@ export function validateState(demo, candidate) {
   return state;
 }
 
+/** The toolbar's buttons: key (words `toolbar.<key>` and `toolbar.<key>.title`) → action name. */
+const TOOLS = {
+  undo: "undo",
+  redo: "redo",
+  reset: "reset",
+  fit: "fit",
+  lecture: "lecture",
+  share: "share",
+  svg: "export-svg",
+  tikz: "export-tikz",
+  png: "export-png",
+  json: "export-json",
+  import: "import",
+};
+
+/** The toolbar laid out in its groups from `buttons` (by TOOLS key) and the import's file input. */
+function toolbarOf(buttons, fileInput) {
+  return el(
+    "div",
+    { class: "sl-toolbar", role: "toolbar", "aria-label": t("toolbar.label") },
+    el(
+      "span",
+      { class: "sl-tool-group" },
+      buttons.undo,
+      buttons.redo,
+      buttons.reset,
+      buttons.fit,
+      buttons.lecture,
+    ),
+    el("span", { class: "sl-tool-group" }, buttons.share),
+    el(
+      "span",
+      { class: "sl-tool-group" },
+      el("span", { class: "sl-tool-label", text: t("toolbar.export") }),
+      buttons.svg,
+      buttons.tikz,
+      buttons.png,
+      buttons.json,
+    ),
+    el("span", { class: "sl-tool-group" }, buttons.import, fileInput),
+  );
+}
+
+/**
+ * The toolbar as a poster page shows it (lib/posters.js `posterPage`) until the demo mounts:
+ * the same words, so it wraps as the demo's will and the poster sits where the figure will be;
+ * inert (nothing to press yet), undo and redo greyed as in a fresh demo.
+ */
+export function toolbarStandIn() {
+  const buttons = Object.fromEntries(
+    Object.keys(TOOLS).map((key) => [key, button({ label: t(`toolbar.${key}`) })]),
+  );
+  buttons.undo.disabled = true;
+  buttons.redo.disabled = true;
+  const bar = toolbarOf(buttons, null);
+  bar.inert = true;
+  bar.removeAttribute("role");
+  bar.removeAttribute("aria-label");
+  return bar;
+}
+
 /**
  * Mounts `demo` inside `root` (emptied first).
  * @param {HTMLElement | ShadowRoot} root
@@ -136,43 +197,26 @@ export function mountDemo(
       onClick,
       ...extra,
     });
-  const buttons = {
-    undo: tool("undo", "undo", () => undo()),
-    redo: tool("redo", "redo", () => redo()),
-    reset: tool("reset", "reset", () => reset()),
-    fit: tool("fit", "fit", () => fit()),
-    lecture: tool("lecture", "lecture", () => toggleLecture(), { pressed: false }),
-    share: tool("share", "share", () => share()),
-    svg: tool("svg", "export-svg", () => exportSvg()),
-    tikz: tool("tikz", "export-tikz", () => exportTikz()),
-    png: tool("png", "export-png", () => exportPng()),
-    json: tool("json", "export-json", () => exportState()),
-    import: tool("import", "import", () => fileInput.click()),
+  const actions = {
+    undo: () => undo(),
+    redo: () => redo(),
+    reset: () => reset(),
+    fit: () => fit(),
+    lecture: () => toggleLecture(),
+    share: () => share(),
+    svg: () => exportSvg(),
+    tikz: () => exportTikz(),
+    png: () => exportPng(),
+    json: () => exportState(),
+    import: () => fileInput.click(),
   };
-  const toolbar = el(
-    "div",
-    { class: "sl-toolbar", role: "toolbar", "aria-label": t("toolbar.label") },
-    el(
-      "span",
-      { class: "sl-tool-group" },
-      buttons.undo,
-      buttons.redo,
-      buttons.reset,
-      buttons.fit,
-      buttons.lecture,
-    ),
-    el("span", { class: "sl-tool-group" }, buttons.share),
-    el(
-      "span",
-      { class: "sl-tool-group" },
-      el("span", { class: "sl-tool-label", text: t("toolbar.export") }),
-      buttons.svg,
-      buttons.tikz,
-      buttons.png,
-      buttons.json,
-    ),
-    el("span", { class: "sl-tool-group" }, buttons.import, fileInput),
+  const buttons = Object.fromEntries(
+    Object.entries(TOOLS).map(([key, name]) => [
+      key,
+      tool(key, name, actions[key], key === "lecture" ? { pressed: false } : {}),
+    ]),
   );
+  const toolbar = toolbarOf(buttons, fileInput);
 
   // The about section's headings sit one level under the title (h1 → h2, h2 → h3): no skipped level.
   const subHeading = `h${Math.min(6, Number(headingLevel.slice(1)) + 1)}`;
