@@ -14,23 +14,37 @@ let shared = null;
 export const MSAA_BELOW_DPR = 2;
 
 /**
+ * Makes the shared renderer (its WebGL context, three.js's state) now if it is not made yet
+ * (three.js must be loaded): a task of its own before the first 3D figure's first frame
+ * (three-loader.js `prepareFigure`), ~20 ms a phone need not spend inside that frame.
+ */
+export function warmSharedRenderer() {
+  if (shared) return;
+  const { THREE } = loadedThree();
+  const canvas = document.createElement("canvas");
+  // Multisampling only below 2 device px per CSS px: at DPR ≥ 2 the pixels are fine enough,
+  // and 4× MSAA of a 4× larger image costs weak GPUs (and SwiftShader) dearly.
+  const antialias = (window.devicePixelRatio || 1) < MSAA_BELOW_DPR;
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias, alpha: true });
+  renderer.setPixelRatio(1);
+  renderer.setClearColor(0x000000, 0);
+  renderer.setScissorTest(false);
+  shared = {
+    canvas,
+    renderer,
+    width: 0,
+    height: 0,
+    out: { canvas, x: 0, y: 0, width: 0, height: 0 },
+  };
+}
+
+/**
  * Renders `scene` through `camera` at `width × height` device pixels (integers ≥ 1) with a
  * transparent background and returns the source rectangle to copy:
  * `{ canvas, x, y, width, height }` (top-left origin, as `drawImage` reads it).
  */
 export function renderShared(scene, camera, width, height) {
-  const { THREE } = loadedThree();
-  if (!shared) {
-    const canvas = document.createElement("canvas");
-    // Multisampling only below 2 device px per CSS px: at DPR ≥ 2 the pixels are fine enough,
-    // and 4× MSAA of a 4× larger image costs weak GPUs (and SwiftShader) dearly.
-    const antialias = (window.devicePixelRatio || 1) < MSAA_BELOW_DPR;
-    const renderer = new THREE.WebGLRenderer({ canvas, antialias, alpha: true });
-    renderer.setPixelRatio(1);
-    renderer.setClearColor(0x000000, 0);
-    renderer.setScissorTest(false);
-    shared = { canvas, renderer, width: 0, height: 0, out: { canvas, x: 0, y: 0, width, height } };
-  }
+  warmSharedRenderer();
   if (width > shared.width || height > shared.height) {
     shared.width = Math.max(width, shared.width);
     shared.height = Math.max(height, shared.height);

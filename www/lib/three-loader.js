@@ -6,8 +6,10 @@
  *
  * `prepareFigure(demo)` is what a host (the playground page, `<spline-lab>`, the gallery
  * thumbnails, the tests) awaits before `mountDemo`: the mount itself stays synchronous, and a
- * 3D figure finds three.js already there (`loadedThree()`).
+ * 3D figure finds three.js and the shared WebGL renderer (shared-gl.js) already there.
  */
+
+import { warmSharedRenderer } from "./shared-gl.js";
 
 let loading = null;
 let loaded = null;
@@ -54,6 +56,14 @@ export function figureDimension(demo, state) {
  * Resolves when `demo` can be mounted with `state` (default: its starting state; a link's state
  * may be passed unchecked): at once for a 2D figure, after three.js for a 3D one.
  */
-export function prepareFigure(demo, state = demo?.defaultState) {
-  return figureDimension(demo, state) === 3 ? loadThree() : Promise.resolve(null);
+export async function prepareFigure(demo, state = demo?.defaultState) {
+  if (figureDimension(demo, state) !== 3) return null;
+  const three = await loadThree();
+  // The WebGL renderer in a task of its own, and the mount in the next (shorter tasks).
+  await nextTask();
+  warmSharedRenderer();
+  await nextTask();
+  return three;
 }
+
+const nextTask = () => new Promise((resolve) => setTimeout(resolve));
