@@ -313,7 +313,8 @@ function showPoster(entry) {
   });
   if (!poster) return Boolean(boot);
   demoPageRoot().append(poster.element);
-  poster.show(); // chooses the picture for the box's width
+  // boot.js's picture (chosen for this width too), else the one for the box's width.
+  poster.show(boot?.querySelector("img")?.src);
   if (boot) {
     const page = poster.element.closest(".demo-page");
     page.hidden = true;

@@ -40,7 +40,7 @@ import { Handles, pointLabel } from "../lib/handles.js";
 import { decodeStroke, encodeStroke, gridExponent } from "../lib/stroke-code.js";
 import { compositeHandles, moveCompositeHandle } from "../lib/composite-handles.js";
 import { SketchPen } from "../lib/sketch-pen.js";
-import { PRESETS, PRESET_SCALE, presetStroke } from "./presets/sketch.js";
+import { PRESET_NAMES, PRESET_SCALE, presetStroke } from "./presets/sketch.js";
 
 export const id = "sketch";
 export const strings = "sketch";
@@ -409,10 +409,10 @@ export const controls = [
     ),
   ),
   actions(
-    PRESETS.map((preset) => ({
-      name: `preset-${preset.name}`,
-      label: `sketch.preset.${preset.name}`,
-      run: (ui) => loadPreset(ui, preset.name),
+    PRESET_NAMES.map((name) => ({
+      name: `preset-${name}`,
+      label: `sketch.preset.${name}`,
+      run: (ui) => loadPreset(ui, name),
     })),
     { title: "sketch.control.presets" },
   ),

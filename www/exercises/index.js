@@ -257,7 +257,10 @@ export const exercises = Object.freeze(
       id: "sketch-pieces",
       section: 7,
       demo: "sketch",
-      state: { stroke: presetStroke("wave"), tolerance: 3, edits: [] },
+      // A getter: the sample stroke is walked when the exercise opens, not as the page starts.
+      get state() {
+        return { stroke: presetStroke("wave"), tolerance: 3, edits: [] };
+      },
       /**
        * The student's stroke fitted again by the core as the demo fits it (`fitCurveReport` at
        * ε = tolerance / scale; the edits are not the drawing): closed, at least one corner, at

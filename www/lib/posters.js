@@ -102,8 +102,15 @@ export function posterPage(
     element: section,
     figure: box,
     image: img,
-    /** Chooses the poster of the box's shape; call once the element is in the document. */
-    show() {
+    /**
+     * Shows the poster at `url` (one already on the page: no layout read), else the one of the
+     * box's shape (call once the element is in the document).
+     */
+    show(url = null) {
+      if (url) {
+        img.src = url;
+        return;
+      }
       const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
       const narrow = section.clientWidth <= NARROW_REM * rem;
       img.src = posterUrl(name, narrow ? "narrow" : "wide");
