@@ -4,7 +4,13 @@
  * link asks for its poster (lib/posters.js) and then the wasm and its glue (fetched here,
  * compiled by lib/wasm.js as it streams), so both arrive while the rest of the JS loads. The gallery asks for nothing (its thumbnails are posters; no wasm).
  */
-import { NARROW_PAGE, lectureLinkPoster, loadingPoster, posterUrl } from "./lib/posters.js";
+import {
+  NARROW_PAGE,
+  lectureLinkPoster,
+  loadingPoster,
+  painted,
+  posterUrl,
+} from "./lib/posters.js";
 
 const hash = new URLSearchParams(location.hash.slice(1));
 
@@ -45,42 +51,21 @@ const id = hash.get("demo");
 const lecture = hash.get("lecture");
 const lecturePoster =
   lecture && /^[a-z0-9-]+$/.test(lecture) ? lectureLinkPoster(lecture, hash.get("scene")) : null;
-const poster =
-  id && /^[a-z0-9-]+$/.test(id)
-    ? posterUrl(id, matchMedia(NARROW_PAGE).matches ? "narrow" : "wide")
-    : null;
+/** The posters' shape for this window (lib/posters.js `posterPage` chooses the same). */
+const shape = matchMedia(NARROW_PAGE).matches ? "narrow" : "wide";
+const poster = id && /^[a-z0-9-]+$/.test(id) ? posterUrl(id, shape) : null;
 if (poster) {
   // The poster first (a few KB, the page's largest picture), shown as soon as it is here, then
-  // the wasm (~270 KB): on a slow link the two would share the bandwidth and the poster come late.
+  // the wasm (~270 KB): on a slow link the two would share the bandwidth and the poster come
+  // late. The wasm is asked for after the frame that paints the poster (`painted`).
   const image = new Image();
   image.alt = "";
   image.className = "sl-poster";
   image.fetchPriority = "high";
-  loadingPoster(
-    new Promise((resolve) => {
-      image.onload = () => {
-        showPoster(image);
-        // After the frame that paints it: a request started before the page's largest paint
-        // is, for Lighthouse's simulation, one that paint waited for.
-        requestAnimationFrame(() =>
-          setTimeout(() => {
-            wasmHints();
-            resolve();
-          }),
-        );
-      };
-      image.onerror = () => {
-        wasmHints();
-        resolve();
-      };
-    }),
-  );
+  image.onload = () => showPoster(image);
+  loadingPoster(painted(image).then(wasmHints));
   image.src = poster;
 } else if (lecturePoster) {
   // app.js shows the scene's poster and caption, then asks for the wasm (lib/lecture.js).
-  const shape = matchMedia(NARROW_PAGE).matches ? "narrow" : "wide";
-  hint("preload", posterUrl(lecturePoster, shape), {
-    as: "image",
-    fetchpriority: "high",
-  });
+  hint("preload", posterUrl(lecturePoster, shape), { as: "image", fetchpriority: "high" });
 } else if (hash.has("demo") || hash.has("lecture") || hash.has("exercise")) wasmHints();

@@ -16,10 +16,11 @@ export const MSAA_BELOW_DPR = 2;
 /**
  * Makes the shared renderer (its WebGL context, three.js's state) now if it is not made yet
  * (three.js must be loaded): a task of its own before the first 3D figure's first frame
- * (three-loader.js `prepareFigure`), ~20 ms a phone need not spend inside that frame.
+ * (three-loader.js `prepareFigure`), ~20 ms a phone need not spend inside that frame. True
+ * when it made it.
  */
 export function warmSharedRenderer() {
-  if (shared) return;
+  if (shared) return false;
   const { THREE } = loadedThree();
   const canvas = document.createElement("canvas");
   // Multisampling only below 2 device px per CSS px: at DPR ≥ 2 the pixels are fine enough,
@@ -36,7 +37,11 @@ export function warmSharedRenderer() {
     height: 0,
     out: { canvas, x: 0, y: 0, width: 0, height: 0 },
   };
+  return true;
 }
+
+/** True once the shared renderer is made. */
+export const sharedRendererMade = () => shared !== null;
 
 /**
  * Renders `scene` through `camera` at `width × height` device pixels (integers ≥ 1) with a

@@ -9,7 +9,7 @@
  * 3D figure finds three.js and the shared WebGL renderer (shared-gl.js) already there.
  */
 
-import { warmSharedRenderer } from "./shared-gl.js";
+import { sharedRendererMade, warmSharedRenderer } from "./shared-gl.js";
 
 let loading = null;
 let loaded = null;
@@ -59,10 +59,12 @@ export function figureDimension(demo, state) {
 export async function prepareFigure(demo, state = demo?.defaultState) {
   if (figureDimension(demo, state) !== 3) return null;
   const three = await loadThree();
-  // The WebGL renderer in a task of its own, and the mount in the next (shorter tasks).
-  await nextTask();
-  warmSharedRenderer();
-  await nextTask();
+  if (!sharedRendererMade()) {
+    // The page's first 3D figure: the WebGL renderer in a task of its own, and the mount in
+    // the next (shorter tasks).
+    await nextTask();
+    if (warmSharedRenderer()) await nextTask();
+  }
   return three;
 }
 
