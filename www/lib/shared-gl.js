@@ -43,6 +43,12 @@ export function warmSharedRenderer() {
 /** True once the shared renderer is made. */
 export const sharedRendererMade = () => shared !== null;
 
+/** The shared three.js `WebGLRenderer` (made now if it is not made yet). */
+export function sharedRenderer() {
+  warmSharedRenderer();
+  return shared.renderer;
+}
+
 /**
  * Renders `scene` through `camera` at `width × height` device pixels (integers ≥ 1) with a
  * transparent background and returns the source rectangle to copy:

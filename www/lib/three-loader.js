@@ -10,6 +10,7 @@
  */
 
 import { sharedRendererMade, warmSharedRenderer } from "./shared-gl.js";
+import { warmPipelines } from "./gl-warmup.js";
 
 let loading = null;
 let loaded = null;
@@ -60,11 +61,13 @@ export async function prepareFigure(demo, state = demo?.defaultState) {
   if (figureDimension(demo, state) !== 3) return null;
   const three = await loadThree();
   if (!sharedRendererMade()) {
-    // The page's first 3D figure: the WebGL renderer in a task of its own, and the mount in
-    // the next (shorter tasks).
+    // The page's first 3D figure: the WebGL renderer in a task of its own, the GPU's first use
+    // of the figures' programs while the main thread is free (gl-warmup.js), and the mount
+    // after them (shorter tasks).
     await nextTask();
     if (warmSharedRenderer()) await nextTask();
   }
+  await warmPipelines();
   return three;
 }
 
