@@ -1162,6 +1162,37 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
+  await test("3D: the GPU warm-up links every program a patch's first frame draws with", async () => {
+    await page.goto(`${base}/index.html`);
+    const programs = await page.evaluate(async () => {
+      const { loadDemo } = await import("./demos/index.js");
+      const { mountDemo, validateState } = await import("./lib/shell.js");
+      const { loadWasm } = await import("./lib/wasm.js");
+      const { prepareFigure } = await import("./lib/three-loader.js");
+      const { sharedRenderer } = await import("./lib/shared-gl.js");
+      const sl = await loadWasm();
+      const demo = await loadDemo("bezier-patch");
+      await prepareFigure(demo);
+      const warmed = sharedRenderer().info.programs.length;
+      const host = document.createElement("div");
+      host.style.width = "640px";
+      document.body.append(host);
+      const state = validateState(demo, structuredClone(demo.defaultState));
+      const mounted = mountDemo(host, demo, { sl, state, shareUrl: () => "" });
+      await new Promise((resolve) => setTimeout(resolve, 300));
+      const drawn = host.querySelector("canvas").width;
+      const after = sharedRenderer().info.programs.length;
+      mounted.destroy();
+      host.remove();
+      return { warmed, after, drawn };
+    });
+    assert(programs.drawn > 0, "the figure was drawn");
+    assert(programs.warmed >= 2, `${programs.warmed} programs after the warm-up (surface, lines)`);
+    equal(programs.after, programs.warmed, "programs after the figure's first frame");
+    const problems = errors.take();
+    assert(problems.length === 0, problems.join("\n"));
+  });
+
   await test("strings: every key the UI asks for exists in English", async () => {
     // Literal keys t("…") anywhere in www/, plus the keys the shell builds from each demo's prefix.
     const missingDemoKeys = await page.evaluate(async () => {
