@@ -309,6 +309,22 @@ const brotliAsync = promisify(brotliCompress);
 async function compressAll(files, cache = CACHE) {
   await mkdir(cache, { recursive: true });
   const used = new Set();
+  // One compression per content: two files with the same bytes (a lecture's first poster is its
+  // demo's when the scene shows the default state) must not write the same `.part` at once.
+  const making = new Map();
+  const keep = (kept, make) => {
+    if (!making.has(kept))
+      making.set(
+        kept,
+        existsSync(kept)
+          ? Promise.resolve()
+          : make().then(async (bytes) => {
+              await writeFile(`${kept}.part`, bytes);
+              await rename(`${kept}.part`, kept);
+            }),
+      );
+    return making.get(kept);
+  };
   const text = files.filter((f) => COMPRESSED.has(extname(f)));
   await Promise.all(
     text.map(async (file) => {
@@ -333,10 +349,7 @@ async function compressAll(files, cache = CACHE) {
       ]) {
         const kept = join(cache, `${key}.${ext}`);
         used.add(`${key}.${ext}`);
-        if (!existsSync(kept)) {
-          await writeFile(`${kept}.part`, await make());
-          await rename(`${kept}.part`, kept);
-        }
+        await keep(kept, make);
         // Another build pruning the cache meanwhile: compress it here.
         await copyFile(kept, `${file}.${ext}`).catch(async () =>
           writeFile(`${file}.${ext}`, await make()),
