@@ -10,6 +10,8 @@
 //   <id>-thumb.svg   the gallery card: a 480 × 300 figure (as the live thumbnails were drawn)
 // and each lecture's first scene, as lib/lecture.js mounts it (its state, its figure's height
 // cap, the large type at 1280 px), in the first two shapes: lecture-<lecture id>-1-wide.svg, ….
+// Each in the light theme and, as <name>-<shape>-dark.svg, in the dark one (lib/theme.js), so a
+// reader whose colour scheme is dark sees the figure in the colours the live one will have.
 // A 3D figure's surface is a WebGL image the SVG recorder cannot draw, so a 3D poster is an SVG
 // holding one WebP (the whole figure at 2 image px per CSS px, a thumbnail 2 per shown px); a 2D poster is the vector SVG,
 // unless the same SVG-wrapped WebP is smaller after brotli (it never was: see the summary line,
@@ -47,7 +49,7 @@ const PAGE = `<!doctype html><html lang="en"><head><meta charset="utf-8">
  * In the page: mounts demo `id` in #slot, in `state` (null: its default) and, for a lecture's
  * scene (`lecture`), as lib/lecture.js mounts it; records its figure.
  */
-async function drawInPage({ id, state, lecture, thumb, quality, scale }) {
+async function drawInPage({ id, state, lecture, thumb, quality, scale, dark }) {
   const [{ loadDemo, demos }, { loadWasm }, shell, { prepareFigure }, draw, theme, exp, lectures] =
     await Promise.all([
       import("./demos/index.js"),
@@ -79,14 +81,15 @@ async function drawInPage({ id, state, lecture, thumb, quality, scale }) {
   const tall = box.classList.contains("sl-figure-tall");
   const entry = demos.find((d) => d.id === id);
   const measure = document.createElement("canvas").getContext("2d");
+  const look = dark ? theme.DARK_THEME : theme.LIGHT_THEME;
   const record = (width, height) => {
-    const recorder = new draw.SvgRecorder({ theme: theme.LIGHT_THEME, measureContext: measure });
-    view.renderTo(recorder, width, height, theme.LIGHT_THEME);
+    const recorder = new draw.SvgRecorder({ theme: look, measureContext: measure });
+    view.renderTo(recorder, width, height, look);
     return recorder.toString();
   };
   const raster = (width, height) => {
     const url = exp
-      .figureToCanvas(view, scale, width, height, theme.LIGHT_THEME)
+      .figureToCanvas(view, scale, width, height, look)
       .toDataURL("image/webp", quality);
     return (
       `<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" ` +
@@ -156,7 +159,10 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
     ];
     for (const [shape, width] of [...Object.entries(SHAPES), ["thumb", SHAPES.wide]]) {
       await page.setViewportSize({ width, height: 900 });
-      for (const { id, name, state, lecture } of figures) {
+      for (const { id, name, state, lecture, dark } of figures.flatMap((f) => [
+        { ...f, dark: false },
+        { ...f, dark: true },
+      ])) {
         if (lecture && shape === "thumb") continue;
         await page.goto(`${base}/__posters__.html`);
         const r = await page.evaluate(drawInPage, {
@@ -166,6 +172,7 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
           thumb: shape === "thumb" ? [THUMB.width, THUMB.height] : null,
           quality: WEBP_QUALITY,
           scale: shape === "thumb" ? THUMB_SCALE : 2,
+          dark,
         });
         if (r.tall !== r.manifestTall)
           problems.push(
@@ -174,7 +181,7 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
         const svgBrotli = r.svg ? brotliSize(r.svg) : Number.POSITIVE_INFINITY;
         const webpBrotli = brotliSize(r.webp);
         const body = svgBrotli <= webpBrotli ? r.svg : r.webp;
-        const file = `${name}-${shape}.svg`;
+        const file = `${name}-${shape}${dark ? "-dark" : ""}.svg`;
         writeFileSync(join(out, file), body);
         written.push({
           id,

@@ -155,6 +155,15 @@ async function showGallery(sl) {
   }
   main.append(page);
   if (!hasPosters() && sl) stopThemeWatch = watchThumbnails(page, sl);
+  else if (hasPosters()) stopThemeWatch = onThemeChange(() => themeThumbnails(page));
+}
+
+/** The built gallery's thumbnails in the reader's colour scheme again, after it changed. */
+function themeThumbnails(page) {
+  for (const img of page.querySelectorAll("img.card-thumb[src]")) {
+    const poster = posterUrl(img.dataset.demo, "thumb");
+    if (poster) img.src = poster;
+  }
 }
 
 /**

@@ -25,7 +25,7 @@ import { chooseLanguage, useLanguage } from "./lib/language.js";
 import { findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { errorText } from "./lib/core-errors.js";
-import { posterUrl } from "./lib/posters.js";
+import { posterUrl, prefersDark } from "./lib/posters.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -118,17 +118,19 @@ class SplineLabElement extends HTMLElement {
 
   /**
    * The demo's poster (lib/posters.js: its default state, drawn at build time) in the
-   * placeholder until the live figure comes, when no attribute may change that state (and the
-   * colours are the light ones the poster has).
+   * placeholder until the live figure comes, when no attribute may change that state; in the
+   * theme the figure will have (the `theme` attribute's, else the reader's colour scheme).
    */
   _showPoster() {
     const id = this.getAttribute("demo");
-    if (!id || !findDemo(id) || this.getAttribute("theme") === "dark") return;
+    if (!id || !findDemo(id)) return;
     for (const name of this.getAttributeNames())
       if (!STATELESS.has(name) && !/^(aria|data)-/.test(name)) return;
     const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;
     const narrow = this.getBoundingClientRect().width <= NARROW_REM * rem;
-    const url = posterUrl(id, narrow ? "narrow" : "wide");
+    const theme = this.getAttribute("theme");
+    const dark = theme === "dark" || (theme !== "light" && prefersDark());
+    const url = posterUrl(id, narrow ? "narrow" : "wide", dark);
     if (!url) return;
     const img = document.createElement("img");
     img.className = "sl-embed-poster";

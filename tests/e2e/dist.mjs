@@ -229,6 +229,53 @@ export async function distSuite({
         );
       });
 
+    if (existsSync(POSTERS))
+      await test("dist: a reader with a dark colour scheme gets the dark posters (gallery thumbnails, a demo link)", async () => {
+        needSite();
+        // The wasm held back until the end: the posters stay.
+        let release = () => {};
+        const held = new Promise((resolve) => {
+          release = resolve;
+        });
+        const hold = async (route) => {
+          await held;
+          await route.continue().catch(() => {}); // a page left meanwhile
+        };
+        await page.emulateMedia({ colorScheme: "dark" });
+        await page.route("**/*.wasm", hold);
+        try {
+          await page.goto("about:blank");
+          await page.goto(`${base}/index.html`);
+          const thumbs = await page.evaluate(() =>
+            [...document.querySelectorAll("img.card-thumb")].map((img) => img.getAttribute("src")),
+          );
+          assert(thumbs.length > 0, "gallery thumbnails");
+          const light = thumbs.filter((src) => !/-thumb-dark-[A-Z2-7]{8}\.svg$/.test(src));
+          equal(light.length, 0, `thumbnails not dark: ${light.slice(0, 3).join(", ")}`);
+          // The reader switches to a light scheme: the thumbnails follow.
+          await page.emulateMedia({ colorScheme: "light" });
+          await page.waitForFunction(() =>
+            [...document.querySelectorAll("img.card-thumb")].every(
+              (img) => !img.getAttribute("src").includes("-thumb-dark-"),
+            ),
+          );
+          await page.emulateMedia({ colorScheme: "dark" });
+          await page.goto("about:blank");
+          await page.goto(`${base}/index.html#demo=de-casteljau`);
+          await page.waitForFunction(() =>
+            [...document.querySelectorAll("img.sl-poster")].some(
+              (img) => img.complete && img.naturalWidth > 0,
+            ),
+          );
+          const poster = await page.evaluate(() => document.querySelector("img.sl-poster").src);
+          assert(/-(wide|narrow)-dark-[A-Z2-7]{8}\.svg$/.test(poster), `the poster ${poster}`);
+        } finally {
+          release();
+          await page.unroute("**/*.wasm", hold);
+          await page.emulateMedia({ colorScheme: "light" });
+        }
+      });
+
     await test("dist: the embed example draws both <spline-lab> figures", async () => {
       needSite();
       await page.goto("about:blank");

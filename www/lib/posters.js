@@ -48,9 +48,17 @@ export function posterSettled() {
   return posterLoad;
 }
 
-/** The URL of poster `shape` ("wide", "narrow" or "thumb") of demo `id`, or null (none built). */
-export function posterUrl(id, shape) {
-  const name = `${id}-${shape}`; // one placeholder: make dist makes it a lookup table
+/** The reader's colour scheme is dark (the figures' theme when no page forces one: lib/theme.js). */
+export const prefersDark = () =>
+  typeof matchMedia === "function" && matchMedia("(prefers-color-scheme: dark)").matches;
+
+/**
+ * The URL of poster `shape` ("wide", "narrow" or "thumb") of demo `id` in the light or the dark
+ * theme (default: the reader's colour scheme, as the live figure will be), or null (none built).
+ */
+export function posterUrl(id, shape, dark = prefersDark()) {
+  // One placeholder: make dist makes it a lookup table of the files in posters/.
+  const name = `${id}-${shape}${dark ? "-dark" : ""}`;
   const url = new URL(`../posters/${name}.svg`, import.meta.url).href;
   return HASHED.test(url) ? url : null;
 }
