@@ -175,7 +175,7 @@ export async function distSuite({
       );
     });
 
-    // Posters come with `make dist` (scripts/posters.mjs, ~1.5 min of Chromium), not with
+    // Posters come with `make dist` (scripts/posters.mjs, ~3.5 min of Chromium), not with
     // `make test`: this runs where they were drawn.
     if (existsSync(POSTERS))
       await test("dist: a demo link and a lecture link show their poster (the lecture its caption) before the wasm arrives", async () => {
