@@ -68,6 +68,26 @@ export async function distSuite({
   const responses = [];
   const needSite = () => assert(page, "the site was not built (see the first dist test)");
 
+  /**
+   * Holds back every wasm request of the page (the posters stay up) until the returned function
+   * is awaited, which lets them through and removes the route.
+   */
+  async function holdWasm() {
+    let release = () => {};
+    const held = new Promise((resolve) => {
+      release = resolve;
+    });
+    const hold = async (route) => {
+      await held;
+      await route.continue().catch(() => {}); // a page left meanwhile
+    };
+    await page.route("**/*.wasm", hold);
+    return async () => {
+      release();
+      await page.unroute("**/*.wasm", hold);
+    };
+  }
+
   /** Waits for a figure, then asserts a drawn canvas, no console error and no CSP violation. */
   async function checkPage(what, h) {
     await h.ready();
@@ -183,15 +203,7 @@ export async function distSuite({
         const caption = JSON.parse(
           readFileSync(join(WWW, "lectures", "bezier-curves.json"), "utf8"),
         ).scenes[0].caption.en;
-        let release = () => {};
-        const held = new Promise((resolve) => {
-          release = resolve;
-        });
-        const hold = async (route) => {
-          await held;
-          await route.continue().catch(() => {}); // a page left meanwhile
-        };
-        await page.route("**/*.wasm", hold);
+        const releaseWasm = await holdWasm();
         try {
           for (const [what, hash] of [
             ["de-casteljau", "index.html#demo=de-casteljau"],
@@ -217,8 +229,7 @@ export async function distSuite({
           ]);
           assert(below >= figure, `the caption (top ${below}) under the figure (bottom ${figure})`);
         } finally {
-          release();
-          await page.unroute("**/*.wasm", hold);
+          await releaseWasm();
         }
         await checkPage("the lecture after its poster", demoHelpers(page));
         equal(await page.locator(".sl-poster").count(), 0, "posters left after the mount");
@@ -232,17 +243,8 @@ export async function distSuite({
     if (existsSync(POSTERS))
       await test("dist: a reader with a dark colour scheme gets the dark posters (gallery thumbnails, a demo link)", async () => {
         needSite();
-        // The wasm held back until the end: the posters stay.
-        let release = () => {};
-        const held = new Promise((resolve) => {
-          release = resolve;
-        });
-        const hold = async (route) => {
-          await held;
-          await route.continue().catch(() => {}); // a page left meanwhile
-        };
+        const releaseWasm = await holdWasm(); // the posters stay
         await page.emulateMedia({ colorScheme: "dark" });
-        await page.route("**/*.wasm", hold);
         try {
           await page.goto("about:blank");
           await page.goto(`${base}/index.html`);
@@ -270,8 +272,7 @@ export async function distSuite({
           const poster = await page.evaluate(() => document.querySelector("img.sl-poster").src);
           assert(/-(wide|narrow)-dark-[A-Z2-7]{8}\.svg$/.test(poster), `the poster ${poster}`);
         } finally {
-          release();
-          await page.unroute("**/*.wasm", hold);
+          await releaseWasm();
           await page.emulateMedia({ colorScheme: "light" });
         }
       });
