@@ -3,7 +3,11 @@
 //
 // - The HTML entry points (www/*.html) keep their names and places, so `index.html#demo=…` links
 //   stay valid; `embed.js` stays at the site root under its own name (a course page references
-//   it): it is a one-line module importing the hashed embed bundle.
+//   it): it is a one-line module importing the hashed embed bundle. The module workers
+//   (`WORKERS`: the 3D figures' rendering worker) are entries of the same bundle, so they share
+//   its chunks (three.js is fetched once for the page and its worker), and each is started from a
+//   one-line module at the site root under its own name, as embed.js (a chunk cannot name a
+//   hashed file the same build makes: its own hash would not cover that name).
 // - Everything else lives flat in assets/ under a content-hashed name (`name-XXXXXXXX.ext`, 8
 //   base-32 characters), so a host may cache it for a year: the JS (app and embed bundled by
 //   esbuild with code splitting, minified; one chunk per demo, locale and three.js as before),
@@ -56,6 +60,9 @@ function urlFrom(from, path) {
   return rel.startsWith("../") ? rel : `./${rel}`;
 }
 
+/** The module workers (`new Worker(new URL("…", import.meta.url))`), as paths under www/. */
+const WORKERS = ["lib/gl-worker.js"];
+
 const NEW_URL = /new URL\(\s*(["'`])((?:\\.|(?!\1)[^\\])*)\1\s*,\s*import\.meta\.url\s*\)/g;
 const STAR = "\0";
 
@@ -74,6 +81,7 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
   await mkdir(assetDir, { recursive: true });
 
   const inside = (file) => file.startsWith(www + sep);
+  const workers = new Map(WORKERS.map((path) => [join(www, path), basename(path)]));
   /** www file → promise of its hashed path in the site (relative to the site root). */
   const emitted = new Map();
   const emit = (file) => {
@@ -122,6 +130,17 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
           const path = cut < 0 ? text : text.slice(0, cut);
           const rest = cut < 0 ? "" : text.slice(cut);
           const target = resolve(dirname(file), path);
+          const isWorker = /new Worker\(\s*$/.test(
+            source.slice(Math.max(0, m.index - 20), m.index),
+          );
+          if (isWorker !== workers.has(target))
+            throw new Error(
+              `dist: ${relative(www, file)}: ${path} is a worker only if WORKERS says so`,
+            );
+          if (isWorker) {
+            const spec = urlFrom(from, join(next, workers.get(target)));
+            return [whole, `new URL(${quote}${spec}${rest}${quote}, import.meta.url)`];
+          }
           if (!dynamic || statSync(target, { throwIfNoEntry: false })?.isFile()) {
             const spec = urlFrom(from, join(next, await sitePath(target)));
             return [whole, `new URL(${quote}${spec}${rest}${quote}, import.meta.url)`];
@@ -224,7 +243,7 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
 
   // The HTML entry points, their module scripts and stylesheets.
   const pages = (await readdir(www)).filter((n) => n.endsWith(".html"));
-  const scripts = new Set([join(www, "embed.js")]);
+  const scripts = new Set([join(www, "embed.js"), ...workers.keys()]);
   const htmlSources = new Map();
   for (const page of pages) {
     const html = await readFile(join(www, page), "utf8");
@@ -245,8 +264,10 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
   for (const [output, meta] of Object.entries(bundle.metafile.outputs))
     if (meta.entryPoint)
       entryOut.set(resolve(ROOT, meta.entryPoint), relative(next, resolve(ROOT, output)));
-  const embedOut = entryOut.get(join(www, "embed.js"));
-  await writeFile(join(next, "embed.js"), `import "./${embedOut.split(sep).join("/")}";\n`);
+  for (const [file, name] of [[join(www, "embed.js"), "embed.js"], ...workers]) {
+    const output = entryOut.get(file).split(sep).join("/");
+    await writeFile(join(next, name), `import "./${output}";\n`);
+  }
 
   for (const [page, html] of htmlSources) {
     const jobs = [];

@@ -29,6 +29,8 @@ async function demoReady(page, scope = "") {
   await page.evaluate(
     () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))),
   );
+  // 3D figures: their rendering worker's frames have arrived (lib/gl-client.js).
+  await page.waitForFunction(() => !document.documentElement.hasAttribute("data-gl-pending"));
 }
 
 mkdirSync(OUT, { recursive: true });

@@ -15,10 +15,10 @@ import { POSTERS } from "../../scripts/posters.mjs";
 
 /** `make dist` must stay well under a minute (it takes ~5 s on 2 cores). */
 const DIST_BUDGET_MS = 45_000;
-/** The names the site keeps unhashed (its entry points, the licences, and the offline worker,
- * web app manifest and icons: scripts/service-worker.mjs). */
+/** The names the site keeps unhashed (its entry points, the 3D figures' rendering worker, the
+ * licences, and the offline worker, web app manifest and icons: scripts/service-worker.mjs). */
 const STABLE =
-  /^(?:[^/]+\.html|embed\.js|licenses\/[^/]+\.txt|sw\.js|manifest\.webmanifest|icons\/[^/]+\.(?:png|svg))$/;
+  /^(?:[^/]+\.html|embed\.js|gl-worker\.js|licenses\/[^/]+\.txt|sw\.js|manifest\.webmanifest|icons\/[^/]+\.(?:png|svg))$/;
 
 /** Distinct colours in a canvas (2D; the 3D figures copy their render into one too). */
 function distinctColours(canvas) {
@@ -188,6 +188,13 @@ export async function distSuite({
         await page.goto(`${base}/${hash}`);
         await checkPage(what, demoHelpers(page));
       }
+      // The 3D figure was drawn by the rendering worker: its stable entry and hashed module.
+      const worker = responses.filter((r) => /^(?:gl-worker\.js|assets\/gl-worker-)/.test(r.path));
+      equal(
+        worker.map((r) => `${r.path.replace(/-[A-Z2-7]{8}\./, "-*.")} ${r.status}`).join(", "),
+        "gl-worker.js 200, assets/gl-worker-*.js 200",
+        "the rendering worker's requests",
+      );
       equal(
         await page.evaluate(() => document.documentElement.lang),
         "el",

@@ -220,6 +220,11 @@ export async function offlineSuite({
           await page.goto("about:blank");
           await page.goto(`${base}/${path}`);
           await checkPage(what, demoHelpers(page));
+          if (what.includes("3D"))
+            assert(
+              page.workers().some((w) => w.url().endsWith("/gl-worker.js")),
+              "the 3D figure's rendering worker runs offline (not the page's fallback)",
+            );
         }
         equal(
           await page.evaluate(() => document.documentElement.lang),

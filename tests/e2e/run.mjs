@@ -103,11 +103,13 @@ function watchErrors(page) {
   return { take: () => errors.splice(0) };
 }
 
-/** Waits two animation frames (the coalesced draw has happened). */
+/** Waits two animation frames (the coalesced draw has happened) and any 3D frame asked for. */
 async function settle(page) {
   await page.evaluate(
     () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))),
   );
+  // 3D figures: the rendering worker's frames arrived and were drawn (lib/gl-client.js).
+  await page.waitForFunction(() => !document.documentElement.hasAttribute("data-gl-pending"));
 }
 
 /** Scopes helpers to one demo instance (`scope` = CSS prefix, e.g. "" or "spline-lab#a "). */
@@ -135,8 +137,9 @@ function demoHelpers(page, scope = "") {
       await settle(page);
       return digest(await h.canvas().evaluate((c) => c.toDataURL("image/png")));
     },
-    /** Handle centres in page coordinates (canvas box + border). */
+    /** Handle centres in page coordinates (canvas box + border), as last drawn. */
     async handles() {
+      await settle(page);
       const text = await page.locator(`${scope}.sl-figure`).first().getAttribute("data-handles");
       const origin = await h.canvas().evaluate((c) => {
         const r = c.getBoundingClientRect();
@@ -1162,33 +1165,101 @@ try {
     assert(problems.length === 0, problems.join("\n"));
   });
 
-  await test("3D: the GPU warm-up links every program a patch's first frame draws with", async () => {
+  await test("3D: a scene crosses to the rendering worker with its objects' identity kept, and neither side keeps more than the last frame", async () => {
+    const { SceneEncoder, SceneDecoder } = await import("../../www/lib/scene-transfer.js");
+    const encoder = new SceneEncoder();
+    const decoder = new SceneDecoder();
+    // As postMessage does: a structured clone of the encoded frame.
+    const send = (spec) => decoder.decode(structuredClone(encoder.encode(spec)));
+    /** Typed arrays in a message (what a frame copies to the worker). */
+    const arrays = (message) =>
+      ArrayBuffer.isView(message)
+        ? 1
+        : message && typeof message === "object"
+          ? Object.values(message).reduce((n, v) => n + arrays(v), 0)
+          : 0;
+    const mesh = {
+      positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]),
+      indices: new Uint32Array([0, 1, 2]),
+    };
+    const iso = new Float32Array([0, 0, 0, 1, 1, 1]);
+    const frame = (m, curves) => ({
+      surfaces: [{ mesh: m, shading: "lit" }],
+      wireframe: [{ mesh: m, grid: [2, 2] }],
+      curves,
+    });
+    const message = encoder.encode(frame(mesh, [iso]));
+    equal(arrays(message), 3, "typed arrays in the first frame (positions, indices, the curve)");
+    const first = decoder.decode(structuredClone(message));
+    equal(
+      first.wireframe[0].mesh,
+      first.surfaces[0].mesh,
+      "one mesh for the surface and its wireframe",
+    );
+    equal(
+      JSON.stringify([...first.surfaces[0].mesh.positions]),
+      JSON.stringify([...mesh.positions]),
+      "positions",
+    );
+    equal(first.surfaces[0].shading, "lit", "a string field");
+    equal(JSON.stringify(first.wireframe[0].grid), "[2,2]", "an array of numbers");
+    // The same mesh again (an orbit): the same object on the other side, sent by name only.
+    const again = encoder.encode(frame(mesh, [iso]));
+    equal(arrays(again), 0, "typed arrays in an unchanged frame");
+    const second = decoder.decode(structuredClone(again));
+    equal(second.surfaces[0].mesh, first.surfaces[0].mesh, "the unchanged mesh is the same object");
+    equal(second.curves[0], first.curves[0], "the unchanged curve is the same object");
+    // A new mesh (a drag): a new object; the curve left out for one frame is sent whole after.
+    const moved = { ...mesh, positions: new Float32Array([0, 0, 1, 1, 0, 0, 0, 1, 0]) };
+    const third = send(frame(moved, []));
+    assert(third.surfaces[0].mesh !== second.surfaces[0].mesh, "a changed mesh is a new object");
+    equal(third.surfaces[0].mesh.positions[2], 1, "its new positions");
+    const back = encoder.encode(frame(moved, [iso]));
+    equal(arrays(back), 1, "typed arrays sent: the curve absent for a frame, whole (not the mesh)");
+    const fourth = decoder.decode(structuredClone(back));
+    equal(JSON.stringify([...fourth.curves[0]]), JSON.stringify([...iso]), "the curve's points");
+    equal(fourth.surfaces[0].mesh, third.surfaces[0].mesh, "the mesh kept from the last frame");
+    // A name the receiver never got is an error, not a wrong picture.
+    let refused = "";
+    try {
+      new SceneDecoder().decode({ "@ref": 7 });
+    } catch (err) {
+      refused = err.message;
+    }
+    assert(refused.includes("unknown object 7"), `refused: ${refused}`);
+  });
+
+  await test("3D: the rendering worker's warm-up links every program a patch's first frame draws with; the page's main thread makes no WebGL context", async () => {
     await page.goto(`${base}/index.html`);
-    const programs = await page.evaluate(async () => {
+    const out = await page.evaluate(async () => {
       const { loadDemo } = await import("./demos/index.js");
       const { mountDemo, validateState } = await import("./lib/shell.js");
       const { loadWasm } = await import("./lib/wasm.js");
       const { prepareFigure } = await import("./lib/three-loader.js");
-      const { sharedRenderer } = await import("./lib/shared-gl.js");
+      const { workerPrograms } = await import("./lib/gl-client.js");
+      const { sharedRendererMade } = await import("./lib/shared-gl.js");
       const sl = await loadWasm();
       const demo = await loadDemo("bezier-patch");
       await prepareFigure(demo);
-      const warmed = sharedRenderer().info.programs.length;
       const host = document.createElement("div");
       host.style.width = "640px";
       document.body.append(host);
       const state = validateState(demo, structuredClone(demo.defaultState));
       const mounted = mountDemo(host, demo, { sl, state, shareUrl: () => "" });
-      await new Promise((resolve) => setTimeout(resolve, 300));
-      const drawn = host.querySelector("canvas").width;
-      const after = sharedRenderer().info.programs.length;
+      const shown = () => host.querySelector(".sl-figure[data-geometries]");
+      for (let k = 0; k < 100 && !shown(); k++) await new Promise((r) => setTimeout(r, 50));
+      const drawn = Boolean(shown()) && host.querySelector("canvas").width;
+      const programs = workerPrograms();
+      const mainThreadGl = sharedRendererMade();
       mounted.destroy();
       host.remove();
-      return { warmed, after, drawn };
+      return { programs, drawn, mainThreadGl };
     });
-    assert(programs.drawn > 0, "the figure was drawn");
-    assert(programs.warmed >= 2, `${programs.warmed} programs after the warm-up (surface, lines)`);
-    equal(programs.after, programs.warmed, "programs after the figure's first frame");
+    assert(out.drawn > 0, "the figure was drawn");
+    const { warmed, now } = out.programs;
+    assert(warmed >= 2, `${warmed} programs after the warm-up (surface, lines)`);
+    equal(now, warmed, "programs after the figure's first frame");
+    equal(out.mainThreadGl, false, "a WebGL renderer on the page's main thread");
     const problems = errors.take();
     assert(problems.length === 0, problems.join("\n"));
   });

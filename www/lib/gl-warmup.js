@@ -12,10 +12,13 @@
  * (`compileAsync`, KHR_parallel_shader_compile where there is one), the draw is flushed, and a
  * fence (WebGL2 `fenceSync`) is polled from short tasks until the GPU has done it, for at most
  * `WARM_WAIT_MS`. The tiny scene is kept, so three.js keeps its programs for the figures.
+ *
+ * This is the warm-up of the main thread's renderer, used where the rendering worker cannot run
+ * (gl-client.js); the worker warms its own renderer with the same scene (warm-scene.js).
  */
 import { loadedThree } from "./three-loader.js";
 import { renderShared, sharedRenderer } from "./shared-gl.js";
-import { SceneContent } from "./scene3d.js";
+import { warmScene } from "./warm-scene.js";
 
 /** The longest the warm-up waits for the GPU before the figure mounts anyway (ms). */
 export const WARM_WAIT_MS = 1500;
@@ -23,16 +26,6 @@ export const WARM_WAIT_MS = 1500;
 export const POLL_MS = 16;
 
 let warmed = null;
-
-/** A unit square (two triangles) as `tessellate` returns meshes. */
-function squareMesh() {
-  return {
-    positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]),
-    normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-    uvs: new Float32Array([0, 0, 1, 0, 0, 1, 1, 1]),
-    indices: new Uint32Array([0, 1, 2, 2, 1, 3]),
-  };
-}
 
 /**
  * Resolves once the figures' programs are linked and drawn once on the GPU (or after
@@ -47,16 +40,7 @@ export function warmPipelines() {
 async function warm() {
   const { THREE } = loadedThree();
   const renderer = sharedRenderer();
-  const content = new SceneContent(THREE);
-  const camera = new THREE.PerspectiveCamera(30, 1, 0.1, 100);
-  camera.position.set(0.5, 0.5, 4);
-  content.attachLight(camera);
-  const mesh = squareMesh();
-  content.update({
-    surfaces: [mesh],
-    wireframe: [{ mesh, grid: [2, 2] }],
-    curves: [new Float32Array([0, 0, 0, 1, 1, 0])],
-  });
+  const { content, camera } = warmScene(THREE);
   await renderer.compileAsync(content.scene, camera);
   renderShared(content.scene, camera, 4, 4);
   const gl = renderer.getContext();

@@ -100,6 +100,10 @@ const surfaceEntry = (entry) =>
       ? { mesh: entry, shading: "lit", curvatures: null, colour: null }
       : null;
 
+/** The meshes of a scene description's surfaces, in order. */
+export const surfaceMeshes = (spec) =>
+  (spec?.surfaces ?? []).map((entry) => surfaceEntry(entry)?.mesh).filter(Boolean);
+
 /** True when two index arrays hold the same numbers (the same triangles). */
 function sameIndices(a, b) {
   if (a === b) return true;

@@ -6,11 +6,13 @@
  *
  * `prepareFigure(demo)` is what a host (the playground page, `<spline-lab>`, the gallery
  * thumbnails, the tests) awaits before `mountDemo`: the mount itself stays synchronous, and a
- * 3D figure finds three.js and the shared WebGL renderer (shared-gl.js) already there.
+ * 3D figure finds three.js and the rendering worker (gl-client.js) ready, or where no worker
+ * can run, the main thread's shared WebGL renderer (shared-gl.js).
  */
 
 import { sharedRendererMade, warmSharedRenderer } from "./shared-gl.js";
 import { warmPipelines } from "./gl-warmup.js";
+import { glWorkerReady } from "./gl-client.js";
 
 let loading = null;
 let loaded = null;
@@ -59,7 +61,10 @@ export function figureDimension(demo, state) {
  */
 export async function prepareFigure(demo, state = demo?.defaultState) {
   if (figureDimension(demo, state) !== 3) return null;
+  // The worker loads its own three.js (the same file) while the page loads the page's.
+  const worker = glWorkerReady();
   const three = await loadThree();
+  if (await worker) return three;
   if (!sharedRendererMade()) {
     // The page's first 3D figure: the WebGL renderer in a task of its own, the GPU's first use
     // of the figures' programs while the main thread is free (gl-warmup.js), and the mount

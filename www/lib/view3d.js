@@ -6,12 +6,16 @@
  * (camera3d.js) and the world is 3D.
  *
  * What is on the screen is one 2D canvas (`.sl-canvas`, sharp at the device pixel ratio): the
- * lit surface, its wireframe and iso-curves rendered by the page's ONE shared WebGL renderer
- * (shared-gl.js) and copied in, then a 2D layer drawn by the demo with the usual renderer
- * (control net, handles, labels, marks; `project(x, y, z, out)` maps a point to canvas CSS px),
- * then a small axis triad in the lower-left corner. The SVG export records the same 2D layer
- * with the wireframe and iso-curves projected as vector paths (no hidden-line removal, no
- * silhouette); PNG and thumbnails composite the WebGL image at their own size.
+ * lit surface, its wireframe and iso-curves rendered by WebGL and copied in, then a 2D layer
+ * drawn by the demo with the usual renderer (control net, handles, labels, marks;
+ * `project(x, y, z, out)` maps a point to canvas CSS px), then a small axis triad in the
+ * lower-left corner. The WebGL image comes from the page's rendering worker when it runs
+ * (gl-client.js: the frame is asked for, and the figure is drawn when its `ImageBitmap`
+ * arrives, so the main thread never waits for the GPU), else from the page's ONE shared WebGL
+ * renderer on the main thread (shared-gl.js, drawn and copied in the same task). The SVG export
+ * records the same 2D layer with the wireframe and iso-curves projected as vector paths (no
+ * hidden-line removal, no silhouette); PNG and thumbnails composite a WebGL image drawn on the
+ * main thread at their own size (synchronous, as exports are).
  *
  * Input: pointers go to the interactors first (the 3D handles); on empty space OrbitControls
  * orbits (drag), pans (Shift-drag, two fingers) and zooms (wheel, pinch) — in embeds the wheel
@@ -24,9 +28,10 @@ import { FigureCanvas } from "./figure-canvas.js";
 import { currentTheme, onThemeChange } from "./theme.js";
 import { loadedThree } from "./three-loader.js";
 import { renderShared } from "./shared-gl.js";
-import { SceneContent } from "./scene3d.js";
+import { SceneContent, surfaceMeshes } from "./scene3d.js";
+import { RemoteFigure, glWorkerAlive } from "./gl-client.js";
 import { drawTriad, drawVectorScene } from "./draw3d.js";
-import { drawLegend, legendNumber } from "./shading3d.js";
+import { drawLegend, legendNumber } from "./curvature-legend.js";
 import { segmentBlocked, triangleBlocks } from "./occlusion3d.js";
 import {
   FIELD_OF_VIEW,
@@ -41,6 +46,10 @@ import {
 } from "./camera3d.js";
 
 const DEG = Math.PI / 180;
+/** `_paint`'s WebGL image: the scene drawn now by the main thread's shared renderer … */
+const LOCAL = "local";
+/** … or the worker's last frame. */
+const WORKER = "worker";
 /** A surface closer than this (CSS px at the point's depth) to a point does not hide it. */
 const OCCLUSION_MARGIN_PX = 3;
 
@@ -83,10 +92,27 @@ export class View3D extends FigureCanvas {
     ];
 
     this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
-    this.content = new SceneContent(THREE);
-    /** Culling boxes of the shown meshes for `occluded`, by mesh; emptied by every scene update. */
+    /** The main thread's WebGL objects (exports; the figure itself without a worker), when made. */
+    this.content = null;
+    /** The meshes of the shown surfaces (`occluded` tests against them). */
+    this._shownMeshes = [];
+    /** Culling boxes of the shown meshes for `occluded`, by mesh; emptied when they change. */
     this._occlusionBlocks = new Map();
-    this.content.attachLight(this.camera);
+    /** The worker's side of this figure, or null: WebGL on the main thread. */
+    this._remote = glWorkerAlive()
+      ? new RemoteFigure({
+          onFrame: (frame) => this._arrived(frame),
+          onLost: () => {
+            this._remote = null;
+            this.requestDraw();
+          },
+        })
+      : null;
+    /** The worker's latest frame (ImageBitmap) and its curvature legend. */
+    this._bitmap = null;
+    this._legend = null;
+    /** True when the canvas lost its pixels (new, resized) since its last drawing. */
+    this._cleared = true;
     this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
     this._h = 1;
@@ -232,15 +258,13 @@ export class View3D extends FigureCanvas {
   occluded(x, y, z) {
     const eye = this.camera.position;
     const margin = OCCLUSION_MARGIN_PX * this.worldPerPixel(x, y, z);
-    for (const slot of this.content.surfaceSlots) {
-      if (!slot.object.visible || !slot.mesh) continue;
-      // The meshes change only in `_paint` (the scene update), which forgets these boxes.
-      let blocks = this._occlusionBlocks.get(slot.mesh);
+    for (const mesh of this._shownMeshes) {
+      let blocks = this._occlusionBlocks.get(mesh);
       if (!blocks) {
-        blocks = triangleBlocks(slot.mesh);
-        this._occlusionBlocks.set(slot.mesh, blocks);
+        blocks = triangleBlocks(mesh);
+        this._occlusionBlocks.set(mesh, blocks);
       }
-      if (segmentBlocked(slot.mesh, eye.x, eye.y, eye.z, x, y, z, margin, blocks)) return true;
+      if (segmentBlocked(mesh, eye.x, eye.y, eye.z, x, y, z, margin, blocks)) return true;
     }
     return false;
   }
@@ -265,34 +289,55 @@ export class View3D extends FigureCanvas {
   drawNow() {
     if (!this.width || !this.height) return;
     this.renderer.theme = this.theme;
-    this._paint(this.renderer, this.width, this.height, this.theme);
+    const scene = this.sceneOf();
+    if (!this._remote) {
+      this._show(scene);
+      this._paint(this.renderer, this.width, this.height, this.theme, scene, LOCAL);
+      this._publish(this.content.geometriesMade, this.content.legend);
+      return;
+    }
+    // Through the worker: drawn when the frame arrives (`_arrived`). A resized canvas, which
+    // lost its pixels, is drawn at once meanwhile with the last frame's image scaled; a new
+    // one stays empty until its first frame (not a figure without its surface for a moment).
+    this._layout(this.width, this.height);
+    this._remote.render(scene, this.camera, this.canvas.width, this.canvas.height);
+    if (this._cleared && this._bitmap)
+      this._paint(this.renderer, this.width, this.height, this.theme, null, WORKER);
   }
 
-  /** One frame into `r` (canvas or SVG) of w × h CSS px: the WebGL image, the 2D layer, the triad. */
-  _paint(r, w, h, theme) {
-    this._layout(w, h);
-    this.content.update(this.sceneOf());
-    this._occlusionBlocks.clear();
-    // A hook for tests, as `data-handles`: geometries made so far (a drag refills, makes none).
-    const made = String(this.content.geometriesMade);
-    if (this.host.dataset.geometries !== made) this.host.dataset.geometries = made;
-    r.begin(w, h, theme.background);
-    const context = r.context;
-    if (context?.drawImage) {
-      const pw = context.canvas.width;
-      const ph = context.canvas.height;
-      const image = renderShared(this.content.scene, this.camera, pw, ph);
-      context.save();
-      context.setTransform(1, 0, 0, 1, 0, 0);
-      context.drawImage(image.canvas, image.x, image.y, image.width, image.height, 0, 0, pw, ph);
-      context.restore();
-    } else {
-      drawVectorScene(r, this, this.sceneOf());
+  /** The worker's frame: shown with the 2D layer of the state as it is now. */
+  _arrived({ bitmap, legend, geometriesMade, scene }) {
+    this._bitmap?.close();
+    this._bitmap = bitmap;
+    this._legend = legend;
+    this._show(scene);
+    this._publish(geometriesMade, legend);
+    if (this.width && this.height && !this._destroyed)
+      this._paint(this.renderer, this.width, this.height, this.theme, null, WORKER);
+  }
+
+  /** The surfaces `occluded` tests against: those of `scene`. */
+  _show(scene) {
+    const meshes = surfaceMeshes(scene);
+    if (meshes.some((m, k) => m !== this._shownMeshes[k])) this._occlusionBlocks.clear();
+    this._shownMeshes = meshes;
+  }
+
+  /** The main thread's WebGL objects, brought in line with `scene`. */
+  _local(scene) {
+    if (!this.content) {
+      this.content = new SceneContent(this.THREE);
+      this.content.attachLight(this.camera);
     }
-    this.drawFigure(r, this);
-    const legend = this.content.legend;
-    if (legend) drawLegend(r, legend);
-    // A hook for tests: the curvature legend's numbers (extent = max |value|, the ends ±extent).
+    this.content.update(scene);
+    return this.content;
+  }
+
+  /** Hooks for tests: geometries made so far (a drag refills, makes none) and the legend. */
+  _publish(geometriesMade, legend) {
+    const made = String(geometriesMade);
+    if (this.host.dataset.geometries !== made) this.host.dataset.geometries = made;
+    // The curvature legend's numbers (extent = max |value|, the ends ±extent).
     const published = legend
       ? JSON.stringify({
           shading: legend.shading,
@@ -306,8 +351,41 @@ export class View3D extends FigureCanvas {
       if (published) this.host.dataset.legend = published;
       else delete this.host.dataset.legend;
     }
+  }
+
+  /**
+   * One frame into `r` (canvas or SVG) of w × h CSS px: the WebGL image, the 2D layer, the
+   * triad. The WebGL image of a canvas is `scene` drawn now on the main thread (`LOCAL`) or the
+   * worker's last frame, if any (`WORKER`); an SVG gets `scene` as vector paths.
+   */
+  _paint(r, w, h, theme, scene, source) {
+    this._layout(w, h);
+    r.begin(w, h, theme.background);
+    const context = r.context;
+    let legend = this._legend;
+    if (context?.drawImage) {
+      const pw = context.canvas.width;
+      const ph = context.canvas.height;
+      context.save();
+      context.setTransform(1, 0, 0, 1, 0, 0);
+      if (source === LOCAL) {
+        const content = this._local(scene);
+        legend = content.legend;
+        const image = renderShared(content.scene, this.camera, pw, ph);
+        context.drawImage(image.canvas, image.x, image.y, image.width, image.height, 0, 0, pw, ph);
+      } else if (this._bitmap) {
+        context.drawImage(this._bitmap, 0, 0, pw, ph);
+      }
+      context.restore();
+    } else {
+      legend = this._local(scene).legend;
+      drawVectorScene(r, this, scene);
+    }
+    this.drawFigure(r, this);
+    if (legend) drawLegend(r, legend);
     drawTriad(r, this);
     r.end();
+    if (r === this.renderer) this._cleared = false;
   }
 
   /** The figure into another renderer (SVG recorder, export canvas, thumbnail); then back. */
@@ -316,7 +394,7 @@ export class View3D extends FigureCanvas {
     this.theme = theme;
     renderer.theme = theme;
     renderer.scale = this.renderer.scale;
-    this._paint(renderer, width, height, theme);
+    this._paint(renderer, width, height, theme, this.sceneOf(), LOCAL);
     this.theme = savedTheme;
     if (this.width && this.height) this._layout(this.width, this.height);
   }
@@ -324,6 +402,7 @@ export class View3D extends FigureCanvas {
   /** Sizes the backing store in device pixels (canvas-size.js) and draws at once. */
   _resize(cssWidth, cssHeight, devicePixels = null) {
     if (!sizeCanvas(this, cssWidth, cssHeight, devicePixels)) return;
+    this._cleared = true;
     this.drawNow();
   }
 
@@ -396,7 +475,9 @@ export class View3D extends FigureCanvas {
       this.canvas.removeEventListener(type, handler);
     this._stopSize();
     this._stopTheme();
-    this.content.dispose();
+    this._remote?.dispose();
+    this._bitmap?.close();
+    this.content?.dispose();
     this.canvas.remove();
   }
 }

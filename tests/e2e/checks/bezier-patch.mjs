@@ -1,7 +1,7 @@
 // Browser checks of the first 3D demo (run after the generic ones by run.mjs): WebGL really
 // draws (SwiftShader in headless Chromium), the camera orbits and lives in the URL, the keyboard
-// moves points in depth, exports carry the surface, one WebGL context serves several 3D figures,
-// and 2D pages never load three.js.
+// moves points in depth, exports carry the surface, one rendering worker serves several 3D
+// figures (the page itself draws them where it cannot start), and 2D pages never load three.js.
 // Each entry: [what, async (page, helpers, base, tools)]; tools = { assert, equal, settle, openDemo, PLAY_MS }.
 import { hashOf, urlState } from "./helpers3d.mjs";
 
@@ -140,6 +140,26 @@ export default [
       await openDemo(page, base, "bezier-patch", hashOf(state));
       const { blue, total } = await page.evaluate(countBlue, { selector: ".sl-canvas" });
       assert(blue > total * 0.05, `only ${blue} of ${total} pixels are surface blue`);
+    },
+  ],
+  [
+    "where the rendering worker cannot start (its script unreachable, as on a course page of another origin) the page draws the surface itself",
+    async (page, h, base, { assert, equal, openDemo }) => {
+      const state = hashOf(await plainState(page, {}));
+      const worker = "**/lib/gl-worker.js";
+      await page.route(worker, (route) => route.abort());
+      try {
+        await openDemo(page, base, "bezier-patch", state);
+        const { blue, total } = await page.evaluate(countBlue, { selector: ".sl-canvas" });
+        assert(blue > total * 0.05, `only ${blue} of ${total} pixels are surface blue`);
+        const gl = await page.evaluate(async () => ({
+          alive: (await import("./lib/gl-client.js")).glWorkerAlive(),
+          page: (await import("./lib/shared-gl.js")).sharedRendererMade(),
+        }));
+        equal(JSON.stringify(gl), JSON.stringify({ alive: false, page: true }), "renderers");
+      } finally {
+        await page.unroute(worker);
+      }
     },
   ],
   [
@@ -517,8 +537,8 @@ export default [
     },
   ],
   [
-    "two 3D embeds share one WebGL context; a 2D page and a 2D embed load no three.js",
-    async (page, h, base, { assert, equal }) => {
+    "two 3D embeds are drawn by the page's one rendering worker (no WebGL context on the page); a 2D page and a 2D embed load no three.js",
+    async (page, h, base, { assert, equal, settle }) => {
       const three = [];
       const watch = (request) => {
         if (request.url().includes("/vendor/three/")) three.push(new URL(request.url()).pathname);
@@ -565,9 +585,11 @@ export default [
           three.some((p) => p.endsWith("OrbitControls.js")),
           `loaded ${three.join(", ")}`,
         );
+        // The page's rendering worker draws both (lib/gl-client.js): no WebGL on the page.
+        await settle(page);
         const kinds = await page.evaluate(() => window.contexts);
         const gl = kinds.filter((k) => k.startsWith("webgl"));
-        equal(gl.length, 1, `WebGL contexts (${kinds.join(", ")})`);
+        equal(gl.length, 0, `WebGL contexts on the page (${kinds.join(", ")})`);
         const drawn = await page.evaluate(() =>
           ["a", "b"].map((id) => {
             const c = document.querySelector(`spline-lab#${id}`).shadowRoot.querySelector("canvas");
