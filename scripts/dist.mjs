@@ -230,10 +230,13 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
     define: SERVICE_WORKER_DEFINE,
   };
 
-  /** A module the site imports by URL (`import(url.href)`: the wasm glue, KaTeX), bundled alone. */
+  /** A module the site imports by URL (`import(url.href)`: the wasm glue, KaTeX), bundled alone.
+   * Its classes keep their names: the core tells a curve argument's class by its constructor's
+   * name (src/wasm/surface_build.rs `curve_arg`: revolve, extrude, ruled surfaces). */
   async function urlModule(file) {
     const result = await esbuild.build({
       ...common,
+      keepNames: true,
       entryPoints: [file],
       write: false,
       outdir: assetDir,
