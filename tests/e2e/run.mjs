@@ -1229,6 +1229,57 @@ try {
     assert(refused.includes("unknown object 7"), `refused: ${refused}`);
   });
 
+  await test("3D: a figure has at most one frame in flight: requests made meanwhile collapse into the newest", async () => {
+    await page.goto(`${base}/index.html`);
+    const out = await page.evaluate(async () => {
+      const { loadThree } = await import("./lib/three-loader.js");
+      const { startGlWorker, RemoteFigure } = await import("./lib/gl-client.js");
+      const { THREE } = await loadThree();
+      await startGlWorker();
+      const frames = [];
+      let done;
+      const finished = new Promise((resolve) => {
+        done = resolve;
+      });
+      const figure = new RemoteFigure({
+        onFrame: (frame) => {
+          frames.push({
+            curves: frame.scene.curves.length,
+            size: [frame.bitmap.width, frame.bitmap.height],
+          });
+          frame.bitmap.close();
+          if (!figure.pending) done();
+        },
+        onLost: () => done(),
+      });
+      const camera = new THREE.PerspectiveCamera(30, 1, 0.1, 100);
+      camera.position.set(0, 0, 5);
+      // Five requests in one task, each with one more curve than the last.
+      for (let n = 1; n <= 5; n++) {
+        const curves = Array.from({ length: n }, (_, k) => new Float32Array([0, k, 0, 1, k, 0]));
+        figure.render({ curves }, camera, 16 + n, 8);
+      }
+      const pendingAtOnce = figure.pending;
+      await finished;
+      figure.dispose();
+      return {
+        frames,
+        pendingAtOnce,
+        pendingAfter: document.documentElement.hasAttribute("data-gl-pending"),
+      };
+    });
+    equal(out.pendingAtOnce, true, "pending while frames are on their way");
+    equal(
+      JSON.stringify(out.frames),
+      JSON.stringify([
+        { curves: 1, size: [17, 8] },
+        { curves: 5, size: [21, 8] },
+      ]),
+      "frames drawn: the first request, then only the newest",
+    );
+    equal(out.pendingAfter, false, "<html data-gl-pending> once every frame arrived");
+  });
+
   await test("3D: the rendering worker's warm-up links every program a patch's first frame draws with; the page's main thread makes no WebGL context", async () => {
     await page.goto(`${base}/index.html`);
     const out = await page.evaluate(async () => {
