@@ -105,11 +105,18 @@ function watchErrors(page) {
 
 /** Waits two animation frames (the coalesced draw has happened) and any 3D frame asked for. */
 async function settle(page) {
+  // Then, frame by frame, until no 3D figure waits for its rendering worker's frame
+  // (lib/gl-client.js `<html data-gl-pending>`): one round trip to the page.
   await page.evaluate(
-    () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))),
+    () =>
+      new Promise((resolve) => {
+        const drawn = () =>
+          document.documentElement.hasAttribute("data-gl-pending")
+            ? requestAnimationFrame(drawn)
+            : resolve();
+        requestAnimationFrame(() => requestAnimationFrame(drawn));
+      }),
   );
-  // 3D figures: the rendering worker's frames arrived and were drawn (lib/gl-client.js).
-  await page.waitForFunction(() => !document.documentElement.hasAttribute("data-gl-pending"));
 }
 
 /** Scopes helpers to one demo instance (`scope` = CSS prefix, e.g. "" or "spline-lab#a "). */
