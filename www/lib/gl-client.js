@@ -62,7 +62,9 @@ export function startGlWorker() {
         resolve(true);
       } else if (data.type === "frame") {
         programs.now = data.programs;
-        figures.get(data.id)?._arrived(data);
+        const figure = figures.get(data.id);
+        if (figure) figure._arrived(data);
+        else data.bitmap.close(); // the figure went while its frame was on its way
       } else if (data.type === "error") resolve(fail());
     };
     worker.onerror = (event) => {
