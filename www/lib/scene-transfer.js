@@ -14,70 +14,71 @@
  * grows: an object that skipped a frame is sent again whole.
  */
 
-/** One side's memory of the previous frame: object → name (sender) or name → object (receiver). */
-export class SceneEncoder {
+/** A typed array as it is, an array or plain object with `f` applied to each entry. */
+function mapEntries(value, f) {
+  if (ArrayBuffer.isView(value)) return value;
+  if (Array.isArray(value)) return value.map(f);
+  const out = {};
+  for (const key of Object.keys(value)) out[key] = f(value[key]);
+  return out;
+}
+
+/**
+ * One side's memory of the previous frame (object → name for the sender, name → object for the
+ * receiver): `_frame(root, walk)` walks a frame with a fresh memory `current`, which then
+ * replaces the previous one.
+ */
+class FrameMemory {
   constructor() {
     this._previous = new Map();
-    this._next = 0;
   }
 
-  /** `spec` ready for `postMessage` (typed arrays are copied by the structured clone). */
-  encode(spec) {
+  _frame(root, walk) {
     const current = new Map();
-    const out = this._encode(spec, current);
+    const out = walk(root, current);
     this._previous = current;
     return out;
   }
 
-  _encode(value, current) {
-    if (value === null || typeof value !== "object") return value;
-    const known = current.get(value) ?? this._previous.get(value);
-    if (known !== undefined) {
-      current.set(value, known);
-      return { "@ref": known };
-    }
-    const id = this._next++;
-    current.set(value, id);
-    if (ArrayBuffer.isView(value)) return { "@new": id, v: value };
-    if (Array.isArray(value)) return { "@new": id, v: value.map((x) => this._encode(x, current)) };
-    const v = {};
-    for (const key of Object.keys(value)) v[key] = this._encode(value[key], current);
-    return { "@new": id, v };
+  /** What `key` named in this frame or the previous one (undefined: nothing). */
+  _known(key, current) {
+    const known = current.get(key) ?? this._previous.get(key);
+    if (known !== undefined) current.set(key, known);
+    return known;
   }
 }
 
-export class SceneDecoder {
-  constructor() {
-    this._previous = new Map();
-  }
+export class SceneEncoder extends FrameMemory {
+  _next = 0;
 
+  /** `spec` ready for `postMessage` (typed arrays are copied by the structured clone). */
+  encode(spec) {
+    const walk = (value, current) => {
+      if (value === null || typeof value !== "object") return value;
+      const known = this._known(value, current);
+      if (known !== undefined) return { "@ref": known };
+      const id = this._next++;
+      current.set(value, id);
+      return { "@new": id, v: mapEntries(value, (x) => walk(x, current)) };
+    };
+    return this._frame(spec, walk);
+  }
+}
+
+export class SceneDecoder extends FrameMemory {
   /** The scene description with every named object the same object as when it came first. */
   decode(encoded) {
-    const current = new Map();
-    const out = this._decode(encoded, current);
-    this._previous = current;
-    return out;
-  }
-
-  _decode(x, current) {
-    if (x === null || typeof x !== "object") return x;
-    if ("@ref" in x) {
-      const id = x["@ref"];
-      const value = current.get(id) ?? this._previous.get(id);
-      if (value === undefined) throw new Error(`scene-transfer: unknown object ${id}`);
-      current.set(id, value);
+    const walk = (x, current) => {
+      if (x === null || typeof x !== "object") return x;
+      if ("@ref" in x) {
+        const value = this._known(x["@ref"], current);
+        if (value === undefined) throw new Error(`scene-transfer: unknown object ${x["@ref"]}`);
+        return value;
+      }
+      const value = mapEntries(x.v, (e) => walk(e, current));
+      current.set(x["@new"], value);
       return value;
-    }
-    const id = x["@new"];
-    const { v } = x;
-    let value;
-    if (ArrayBuffer.isView(v)) value = v;
-    else if (Array.isArray(v)) value = v.map((e) => this._decode(e, current));
-    else {
-      value = {};
-      for (const key of Object.keys(v)) value[key] = this._decode(v[key], current);
-    }
-    current.set(id, value);
-    return value;
+    };
+    return this._frame(encoded, walk);
   }
 }
