@@ -63,7 +63,7 @@ async function drawInPage({ id, state, lecture, thumb, quality, scale, dark }) {
     ]);
   const sl = await loadWasm();
   const demo = await loadDemo(id);
-  await prepareFigure(demo, state);
+  await prepareFigure(demo, state, { exports: true }); // a 3D poster's image is drawn on the page
   const slot = document.getElementById("slot");
   if (lecture) slot.className = "lecture"; // its figure's height cap (style.css)
   const controller = shell.mountDemo(slot, demo, {

@@ -1,10 +1,9 @@
 // Copies the front-end libraries installed from npm into www/vendor/ so the page works
 // offline and loads nothing from a CDN. Re-run safe.
 //
-// three.js (only the 3D demos import it, lazily, see www/lib/three-loader.js): the module build
-// and the core it imports (`./three.core.js`), and OrbitControls, whose bare `from "three"`
-// import is rewritten to the vendored relative path at copy time, so a course page that embeds
-// a 3D demo needs no import map.
+// three.js (only the 3D figures' renderers import it, lazily, see www/lib/three-loader.js and
+// gl-worker.js): the module build and the core it imports (`./three.core.js`); relative imports
+// only, so a course page that embeds a 3D demo needs no import map.
 import { cpSync, existsSync, mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 
@@ -48,14 +47,6 @@ for (const [from, to] of threeCopies) {
   if (!existsSync(src)) throw new Error(`vendor: ${from} is missing; run npm install`);
   cpSync(src, `${vendor}/${to}`);
 }
-const controlsFrom = "node_modules/three/examples/jsm/controls/OrbitControls.js";
-const controls = readFileSync(`${root}${controlsFrom}`, "utf8");
-const bare = /from\s*(['"])three\1/g;
-if (!bare.test(controls)) throw new Error(`vendor: no bare "three" import in ${controlsFrom}`);
-writeFileSync(
-  `${vendor}/three/OrbitControls.js`,
-  controls.replace(bare, 'from "./three.module.js"'),
-);
 console.log(
-  `vendor: ${copies.length + threeCopies.length + 1} entries copied into www/vendor/, KaTeX split`,
+  `vendor: ${copies.length + threeCopies.length} entries copied into www/vendor/, KaTeX split`,
 );

@@ -183,7 +183,8 @@ function watchThumbnails(page, sl) {
     }
     if (stopped) return;
     try {
-      await prepareFigure(demo); // three.js for a 3D demo's card (a 2D card loads none)
+      // three.js for a 3D demo's card, drawn on the page (a 2D card loads none)
+      await prepareFigure(demo, demo.defaultState, { exports: true });
       if (stopped) return;
       img.src = thumbnail(demo, sl);
       img.classList.remove("placeholder");

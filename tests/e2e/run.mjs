@@ -1239,9 +1239,7 @@ try {
   await test("3D: a figure has at most one frame in flight: requests made meanwhile collapse into the newest", async () => {
     await page.goto(`${base}/index.html`);
     const out = await page.evaluate(async () => {
-      const { loadThree } = await import("./lib/three-loader.js");
       const { startGlWorker, RemoteFigure } = await import("./lib/gl-client.js");
-      const { THREE } = await loadThree();
       await startGlWorker();
       const frames = [];
       let done;
@@ -1259,8 +1257,7 @@ try {
         },
         onLost: () => done(),
       });
-      const camera = new THREE.PerspectiveCamera(30, 1, 0.1, 100);
-      camera.position.set(0, 0, 5);
+      const camera = { view: [-90, 0, 5, 0, 0, 0], fov: 30, aspect: 1 };
       // Five requests in one task, each with one more curve than the last.
       for (let n = 1; n <= 5; n++) {
         const curves = Array.from({ length: n }, (_, k) => new Float32Array([0, k, 0, 1, k, 0]));
@@ -1285,6 +1282,123 @@ try {
       "frames drawn: the first request, then only the newest",
     );
     equal(out.pendingAfter, false, "<html data-gl-pending> once every frame arrived");
+  });
+
+  await test("3D: the page's camera (view-camera.js) projects and casts rays as three.js' PerspectiveCamera does; orbit gestures follow OrbitControls' rules", async () => {
+    await page.goto(`${base}/index.html`);
+    const out = await page.evaluate(async () => {
+      const { loadThree } = await import("./lib/three-loader.js");
+      const { ViewCamera } = await import("./lib/view-camera.js");
+      const { OrbitGesture } = await import("./lib/orbit-gesture.js");
+      const { applyCamera } = await import("./lib/camera3d.js");
+      const { THREE } = await loadThree();
+      let seed = 7;
+      const random = () => ((seed = (seed * 16807) % 2147483647) / 2147483647) * 2 - 1;
+      let worst = 0;
+      let worstRay = 0;
+      for (let k = 0; k < 50; k++) {
+        const numbers = [
+          180 * random(),
+          85 * random(),
+          1 + 9 * Math.abs(random()),
+          random(),
+          random(),
+          random(),
+        ];
+        const fov = 20 + 40 * Math.abs(random());
+        const aspect = 0.5 + 2 * Math.abs(random());
+        const mine = new ViewCamera();
+        mine.set(numbers);
+        mine.fov = fov;
+        mine.aspect = aspect;
+        const theirs = new THREE.PerspectiveCamera(fov, aspect);
+        applyCamera(theirs, numbers);
+        const point = [3 * random(), 3 * random(), 3 * random()];
+        const a = mine.project(...point, new Float64Array(3));
+        const b = new THREE.Vector3(...point).project(theirs);
+        worst = Math.max(
+          worst,
+          Math.abs(a[0] - b.x),
+          Math.abs(a[1] - b.y),
+          Math.abs(a[2] - b.z) / Math.max(1, Math.abs(b.z)),
+        );
+        const ndc = [random(), random()];
+        const ray = new THREE.Raycaster();
+        ray.setFromCamera(new THREE.Vector2(...ndc), theirs);
+        const d = mine.rayDirection(...ndc, new Float64Array(3));
+        const e = ray.ray.direction;
+        worstRay = Math.max(
+          worstRay,
+          Math.abs(d[0] - e.x),
+          Math.abs(d[1] - e.y),
+          Math.abs(d[2] - e.z),
+        );
+      }
+      // Gestures on a 400 px tall canvas, fov 30°: a drag across the height turns a full circle;
+      // a pan of 40 px moves the target's picture 40 px (it follows the pointer); wheel up nears.
+      let camera = [0, 10, 4, 0, 0, 0];
+      const view = new ViewCamera();
+      view.set(camera);
+      view.fov = 30;
+      view.aspect = 1.5;
+      let ends = 0;
+      const gesture = new OrbitGesture({
+        camera: () => camera,
+        height: () => 400,
+        fov: () => 30,
+        view,
+        change: (c) => {
+          camera = c;
+          view.set(c);
+        },
+        end: () => ends++,
+      });
+      const move = (id, x, y) => gesture.move({ pointerId: id }, x, y);
+      gesture.down({ pointerId: 1, button: 0 }, 100, 100);
+      move(1, 200, 150);
+      gesture.up({ pointerId: 1 });
+      const rotated = [...camera];
+      // The target (at the distance's depth) before and after the pan.
+      const before = view.project(0, 0, 0, new Float64Array(3));
+      gesture.down({ pointerId: 2, button: 0, shiftKey: true }, 100, 100);
+      move(2, 140, 100);
+      gesture.up({ pointerId: 2 });
+      const after = view.project(0, 0, 0, new Float64Array(3));
+      // NDC x to px on a 600 × 400 canvas: (x + 1) / 2 · 600.
+      const panPx = ((after[0] - before[0]) / 2) * 600;
+      const d0 = camera[2];
+      gesture.wheel({ deltaY: -100, deltaMode: 0 });
+      const nearer = camera[2] / d0;
+      gesture.wheel({ deltaY: 100, deltaMode: 0 });
+      const back = camera[2] / d0;
+      // A pinch: fingers 100 px apart, then 200, then 250: the distance × 100/250.
+      const d1 = camera[2];
+      gesture.down({ pointerId: 3, button: 0 }, 100, 200);
+      gesture.down({ pointerId: 4, button: 0 }, 200, 200);
+      move(4, 300, 200);
+      move(3, 50, 200);
+      gesture.up({ pointerId: 3 });
+      gesture.up({ pointerId: 4 });
+      return { worst, worstRay, rotated, panPx, nearer, back, pinched: camera[2] / d1, ends };
+    });
+    assert(out.worst < 1e-9, `projection differs from three.js by ${out.worst}`);
+    assert(out.worstRay < 1e-9, `ray direction differs from three.js by ${out.worstRay}`);
+    equal(
+      JSON.stringify(out.rotated.slice(0, 2).map((v) => Math.round(v * 1e9) / 1e9)),
+      JSON.stringify([-90, 55]),
+      "a 100 × 50 px drag on 400 px: azimuth −90°, elevation +45°",
+    );
+    assert(
+      Math.abs(out.panPx - 40) < 1e-6,
+      `a 40 px pan moved the target's picture ${out.panPx} px`,
+    );
+    assert(Math.abs(out.nearer - 0.95) < 1e-12, `wheel up 100 px: distance × ${out.nearer}`);
+    assert(Math.abs(out.back - 1) < 1e-12, `wheel down 100 px after: distance × ${out.back}`);
+    assert(
+      Math.abs(out.pinched - 100 / 250) < 1e-12,
+      `pinch from 100 to 250 px apart: distance × ${out.pinched}`,
+    );
+    equal(out.ends, 5, "an end after each drag, wheel turn and pinch");
   });
 
   await test("3D: the rendering worker's warm-up links every program a patch's first frame draws with; the page's main thread makes no WebGL context", async () => {

@@ -71,7 +71,7 @@ import { Handles3D } from "./handles3d.js";
 import { listHandles3 } from "./handle-lists3d.js";
 import { t } from "./strings.js";
 import { errorText } from "./core-errors.js";
-import { figureDimension, loadedThree, loadThree } from "./three-loader.js";
+import { figureDimension, figure3dReady, prepareFigure } from "./three-loader.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
@@ -128,11 +128,10 @@ export function mountDeclared(demo, initialState, ctx) {
   let is3d = false;
   let figureSpec = null;
   let view = null;
-  /** The load of three.js for a 3D state shown in 2D meanwhile (`syncFigureKind`). */
+  /** The 3D renderer's preparation for a 3D state shown in 2D meanwhile (`syncFigureKind`). */
   let loadingThree = null;
   let destroyed = false;
-  const wanted = () =>
-    figureDimension(demo, work) === 3 && (Boolean(loadedThree()) || !demo.figure);
+  const wanted = () => figureDimension(demo, work) === 3 && (figure3dReady() || !demo.figure);
   function createView(window) {
     is3d = wanted();
     figureSpec = is3d ? demo.figure3d : demo.figure;
@@ -402,17 +401,17 @@ export function mountDeclared(demo, initialState, ctx) {
    * A demo with both figures (`dimension`): when the state asks for the other kind, the figure,
    * its handles and `setup` are made anew (the controls stay: `viewChanged(view)` rebinds them);
    * `window` is shown when it is a view of the new kind, else the figure fits. A 3D state is
-   * shown in 2D while three.js loads, then the 3D figure records its camera. Returns true when
+   * shown in 2D while the 3D renderer gets ready (three-loader.js), then the 3D figure records its camera. Returns true when
    * the figure was made anew.
    */
   function syncFigureKind(window) {
     if (destroyed || typeof demo.dimension !== "function") return false;
-    if (figureDimension(demo, work) === 3 && !loadedThree() && !loadingThree) {
+    if (figureDimension(demo, work) === 3 && !figure3dReady() && !loadingThree) {
       const done = () => {
         loadingThree = null;
         if (syncFigureKind(work.view)) ctx.recordWindow?.();
       };
-      loadingThree = loadThree().then(done, () => (loadingThree = null));
+      loadingThree = prepareFigure(demo, work).then(done, () => (loadingThree = null));
     }
     if (wanted() === is3d) return false;
     extra.destroy?.();
@@ -447,7 +446,7 @@ export function mountDeclared(demo, initialState, ctx) {
   hookFrames();
   refresh();
   publish();
-  syncFigureKind(work.view); // starts loading three.js for a 3D state shown in 2D first
+  syncFigureKind(work.view); // readies the 3D renderer for a 3D state shown in 2D first
 
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */

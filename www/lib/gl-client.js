@@ -124,21 +124,13 @@ export class RemoteFigure {
     return this._inFlight !== null || this._waiting !== null;
   }
 
-  /** Asks for a frame of `scene` seen by the three.js `camera` at `width × height` device px. */
+  /**
+   * Asks for a frame of `scene` at `width × height` device px seen by `camera` = `{ view, fov,
+   * aspect }`: the camera numbers `[azimuth, elevation, distance, tx, ty, tz]` (camera3d.js),
+   * the vertical field of view in degrees and width / height.
+   */
   render(scene, camera, width, height) {
-    this._waiting = {
-      scene,
-      width,
-      height,
-      camera: {
-        position: camera.position.toArray(),
-        quaternion: camera.quaternion.toArray(),
-        fov: camera.fov,
-        aspect: camera.aspect,
-        near: camera.near,
-        far: camera.far,
-      },
-    };
+    this._waiting = { scene, width, height, camera };
     if (!this._inFlight) this._post();
     markPending(this, true);
   }

@@ -12,8 +12,8 @@
  *                                                   drawn once), answer { type: "ready", programs }
  *   { type: "frame", id, seq, width, height, camera, scene }
  *                                                   figure `id`'s scene (scene-transfer.js) seen by
- *                                                   `camera` (`{ position, quaternion, fov, aspect,
- *                                                   near, far }`) at width × height device px;
+ *                                                   `camera` (`{ view, fov, aspect }`: camera3d.js'
+ *                                                   numbers, degrees, w / h) at width × height px;
  *                                                   answer { type: "frame", id, seq, bitmap,
  *                                                   legend, geometriesMade, programs }
  *   { type: "drop", id }                            forget figure `id`
@@ -21,6 +21,7 @@
  */
 import * as THREE from "../vendor/three/three.module.js";
 import { SceneContent } from "./scene3d.js";
+import { applyCamera } from "./camera3d.js";
 import { SceneDecoder } from "./scene-transfer.js";
 import { warmScene } from "./warm-scene.js";
 
@@ -56,9 +57,9 @@ function figure(id) {
 function frame({ id, seq, width, height, camera: c, scene }) {
   const { content, camera, decoder } = figure(id);
   content.update(decoder.decode(scene));
-  camera.position.fromArray(c.position);
-  camera.quaternion.fromArray(c.quaternion);
-  Object.assign(camera, { fov: c.fov, aspect: c.aspect, near: c.near, far: c.far });
+  applyCamera(camera, c.view);
+  camera.fov = c.fov;
+  camera.aspect = c.aspect;
   camera.updateProjectionMatrix();
   if (canvas.width !== width || canvas.height !== height) renderer.setSize(width, height, false);
   renderer.render(content.scene, camera);

@@ -398,6 +398,7 @@ export function mountDemo(
   async function exportPng() {
     if (!figure) return;
     const name = `${demo.id}.png`;
+    await figure.prepareExport?.(); // a 3D figure's WebGL image is drawn on the page
     download(await figureToPng(figure), name);
     showStatus(t("status.exported", { name }));
   }

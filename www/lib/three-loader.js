@@ -6,25 +6,24 @@
  *
  * `prepareFigure(demo)` is what a host (the playground page, `<spline-lab>`, the gallery
  * thumbnails, the tests) awaits before `mountDemo`: the mount itself stays synchronous, and a
- * 3D figure finds three.js and the rendering worker (gl-client.js) ready, or where no worker
- * can run, the main thread's shared WebGL renderer (shared-gl.js).
+ * 3D figure finds the rendering worker (gl-client.js) ready — the page itself then loads no
+ * three.js: the worker has its own — or where no worker can run, three.js and the main thread's
+ * shared WebGL renderer (shared-gl.js). A PNG export or thumbnail of a 3D figure draws on the
+ * main thread and loads three.js first (`exports`, View3D `prepareExport`).
  */
 
 import { sharedRendererMade, warmSharedRenderer } from "./shared-gl.js";
 import { warmPipelines } from "./gl-warmup.js";
-import { glWorkerReady } from "./gl-client.js";
+import { glWorkerAlive, glWorkerReady } from "./gl-client.js";
 
 let loading = null;
 let loaded = null;
 
-/** A memoised promise of `{ THREE, OrbitControls }` (a failed load is retried on the next call). */
+/** A memoised promise of `{ THREE }` (a failed load is retried on the next call). */
 export function loadThree() {
-  loading ??= Promise.all([
-    import("../vendor/three/three.module.js"),
-    import("../vendor/three/OrbitControls.js"),
-  ]).then(
-    ([THREE, controls]) => {
-      loaded = { THREE, OrbitControls: controls.OrbitControls };
+  loading ??= import("../vendor/three/three.module.js").then(
+    (THREE) => {
+      loaded = { THREE };
       return loaded;
     },
     (err) => {
@@ -35,7 +34,7 @@ export function loadThree() {
   return loading;
 }
 
-/** `{ THREE, OrbitControls }` once loaded, else null. */
+/** `{ THREE }` once loaded, else null. */
 export function loadedThree() {
   return loaded;
 }
@@ -55,16 +54,22 @@ export function figureDimension(demo, state) {
   }
 }
 
+/** True when a 3D figure can be made now: the rendering worker runs, or three.js is loaded. */
+export function figure3dReady() {
+  return glWorkerAlive() || loaded !== null;
+}
+
 /**
  * Resolves when `demo` can be mounted with `state` (default: its starting state; a link's state
- * may be passed unchecked): at once for a 2D figure, after three.js for a 3D one.
+ * may be passed unchecked): at once for a 2D figure; for a 3D one, once the rendering worker is
+ * ready, else after three.js and the main thread's renderer. With `exports`, three.js is loaded
+ * in any case (a thumbnail or poster drawn at once after the mount).
  */
-export async function prepareFigure(demo, state = demo?.defaultState) {
+export async function prepareFigure(demo, state = demo?.defaultState, { exports = false } = {}) {
   if (figureDimension(demo, state) !== 3) return null;
-  // The worker loads its own three.js (the same file) while the page loads the page's.
-  const worker = glWorkerReady();
-  const three = await loadThree();
-  if (await worker) return three;
+  const three = exports ? loadThree() : null;
+  if (await glWorkerReady()) return three && (await three);
+  await loadThree();
   if (!sharedRendererMade()) {
     // The page's first 3D figure: the WebGL renderer in a task of its own, the GPU's first use
     // of the figures' programs while the main thread is free (gl-warmup.js), and the mount
@@ -73,7 +78,7 @@ export async function prepareFigure(demo, state = demo?.defaultState) {
     if (warmSharedRenderer()) await nextTask();
   }
   await warmPipelines();
-  return three;
+  return loaded;
 }
 
 const nextTask = () => new Promise((resolve) => setTimeout(resolve));

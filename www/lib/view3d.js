@@ -17,27 +17,29 @@
  * hidden-line removal, no silhouette); PNG and thumbnails composite a WebGL image drawn on the
  * main thread at their own size (synchronous, as exports are).
  *
- * Input: pointers go to the interactors first (the 3D handles); on empty space OrbitControls
- * orbits (drag), pans (Shift-drag, two fingers) and zooms (wheel, pinch) — in embeds the wheel
- * zooms only with Ctrl/⌘, as in 2D. Nothing moves by itself (no damping, no auto-rotation), so
- * `prefers-reduced-motion` is honoured. three.js must be loaded first (three-loader.js
- * `prepareFigure`).
+ * Input: pointers go to the interactors first (the 3D handles); on empty space the camera
+ * orbits (drag), pans (Shift-drag, right drag, two fingers) and zooms (wheel, pinch) —
+ * orbit-gesture.js, OrbitControls' rules — in embeds the wheel zooms only with Ctrl/⌘, as in 2D.
+ * Nothing moves by itself (no damping, no auto-rotation), so `prefers-reduced-motion` is
+ * honoured. The camera is plain numbers (view-camera.js): with the rendering worker the page
+ * needs no three.js at all; without it, three.js must be loaded first (three-loader.js
+ * `prepareFigure`), and a PNG export loads it (`prepareExport`).
  */
 import { sizeCanvas, watchCanvasSize } from "./canvas-size.js";
 import { FigureCanvas } from "./figure-canvas.js";
 import { currentTheme, onThemeChange } from "./theme.js";
-import { loadedThree } from "./three-loader.js";
+import { loadThree, loadedThree } from "./three-loader.js";
 import { renderShared } from "./shared-gl.js";
 import { SceneContent, surfaceMeshes } from "./scene3d.js";
 import { RemoteFigure, glWorkerAlive } from "./gl-client.js";
 import { drawTriad, drawVectorScene } from "./draw3d.js";
 import { drawLegend, legendNumber } from "./curvature-legend.js";
 import { segmentBlocked, triangleBlocks } from "./occlusion3d.js";
+import { ViewCamera } from "./view-camera.js";
+import { OrbitGesture } from "./orbit-gesture.js";
 import {
-  FIELD_OF_VIEW,
   verticalFieldOfView,
   applyCamera,
-  readCamera,
   roundCamera,
   fitCamera,
   DEFAULT_AZIMUTH,
@@ -78,11 +80,10 @@ export class View3D extends FigureCanvas {
       camera = null,
     },
   ) {
-    const three = loadedThree();
-    if (!three) throw new Error("three.js is not loaded: await prepareFigure(demo) first");
+    const remote = glWorkerAlive();
+    if (!remote && !loadedThree())
+      throw new Error("three.js is not loaded: await prepareFigure(demo) first");
     super(host, { draw, bounds, onWindowChange, label, wheelNeedsModifier });
-    const { THREE, OrbitControls } = three;
-    this.THREE = THREE;
     this.sceneOf = scene;
     this.is3d = true;
     /** The declared first direction of view, `[azimuth, elevation]` degrees. */
@@ -91,15 +92,18 @@ export class View3D extends FigureCanvas {
       camera?.elevation ?? DEFAULT_ELEVATION,
     ];
 
-    this.camera = new THREE.PerspectiveCamera(FIELD_OF_VIEW, 1, 0.01, 1000);
-    /** The main thread's WebGL objects (exports; the figure itself without a worker), when made. */
+    /** The camera's pose and projection (numbers; the page's picking and 2D layer). */
+    this.camera = new ViewCamera();
+    /** The main thread's WebGL objects and three.js camera (exports; the figure itself without
+     * a worker), when made. */
     this.content = null;
+    this._glCamera = null;
     /** The meshes of the shown surfaces (`occluded` tests against them). */
     this._shownMeshes = [];
     /** Culling boxes of the shown meshes for `occluded`, by mesh; emptied when they change. */
     this._occlusionBlocks = new Map();
     /** The worker's side of this figure, or null: WebGL on the main thread. */
-    this._remote = glWorkerAlive()
+    this._remote = remote
       ? new RemoteFigure({
           onFrame: (frame) => this._arrived(frame),
           onLost: () => {
@@ -116,19 +120,20 @@ export class View3D extends FigureCanvas {
     this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
     this._h = 1;
-    this._vector = new THREE.Vector3();
-    this._ray = new THREE.Raycaster();
-    this._ndc = new THREE.Vector2();
-    this._plane = new THREE.Plane();
-
-    this._listen(); // before OrbitControls: a handle claims the pointer first
-    this.controls = new OrbitControls(this.camera, this.canvas);
-    this.controls.enableDamping = false;
-    this.controls.screenSpacePanning = true;
-    this.controls.minPolarAngle = (90 - MAX_ELEVATION) * DEG;
-    this.controls.maxPolarAngle = (90 + MAX_ELEVATION) * DEG;
-    this.controls.addEventListener("change", () => this.requestDraw());
-    this.controls.addEventListener("end", () => this._reportCamera());
+    this._ndc = new Float64Array(3);
+    this._rayDirection = new Float64Array(3);
+    this._orbit = new OrbitGesture({
+      camera: () => this._camera,
+      height: () => this._h,
+      fov: () => this.camera.fov,
+      view: this.camera,
+      change: (camera) => {
+        this._apply(camera);
+        this.requestDraw();
+      },
+      end: () => this._reportCamera(),
+    });
+    this._listen();
     this._apply(this._camera);
   }
 
@@ -136,7 +141,7 @@ export class View3D extends FigureCanvas {
 
   /** The camera numbers as the state stores them. */
   getWindow() {
-    return roundCamera(readCamera(this.camera, this.controls.target));
+    return roundCamera(this._camera);
   }
 
   /** Shows the camera `[azimuth, elevation, distance, tx, ty, tz]`. */
@@ -173,8 +178,7 @@ export class View3D extends FigureCanvas {
 
   _apply(camera) {
     this._camera = camera;
-    this.controls?.target.set(camera[3], camera[4], camera[5]);
-    applyCamera(this.camera, camera);
+    this.camera.set(camera);
   }
 
   /** After an orbit, pan or zoom: rounds the camera as the state stores it, applies, reports. */
@@ -189,48 +193,44 @@ export class View3D extends FigureCanvas {
 
   /** Writes canvas CSS px [x, y] and the NDC depth (−1 near … 1 far; > 1 behind) of (x, y, z). */
   project(x, y, z, out) {
-    const v = this._vector.set(x, y, z).project(this.camera);
-    out[0] = ((v.x + 1) / 2) * this._w;
-    out[1] = ((1 - v.y) / 2) * this._h;
-    out[2] = v.z;
+    const v = this.camera.project(x, y, z, this._ndc);
+    out[0] = ((v[0] + 1) / 2) * this._w;
+    out[1] = ((1 - v[1]) / 2) * this._h;
+    out[2] = v[2];
     return out;
   }
 
   /** The unit direction the camera looks along (world). */
   viewDirection(out) {
-    const e = this.camera.matrixWorld.elements;
-    const n = Math.hypot(e[8], e[9], e[10]) || 1;
-    out[0] = -e[8] / n;
-    out[1] = -e[9] / n;
-    out[2] = -e[10] / n;
+    const back = this.camera.back;
+    for (let k = 0; k < 3; k++) out[k] = -back[k];
     return out;
   }
 
   /** The camera's unit right, up and forward directions (world). */
   screenAxes(right, up, forward) {
-    const e = this.camera.matrixWorld.elements;
     for (let k = 0; k < 3; k++) {
-      right[k] = e[k];
-      up[k] = e[4 + k];
+      right[k] = this.camera.right[k];
+      up[k] = this.camera.up[k];
     }
     this.viewDirection(forward);
   }
 
   /** The unit direction from the camera through (x, y, z): its line of sight. */
   sightLine(x, y, z, out) {
-    const p = this.camera.position;
-    const n = Math.hypot(x - p.x, y - p.y, z - p.z) || 1;
-    out[0] = (x - p.x) / n;
-    out[1] = (y - p.y) / n;
-    out[2] = (z - p.z) / n;
+    const [ex, ey, ez] = this.camera.eye;
+    const n = Math.hypot(x - ex, y - ey, z - ez) || 1;
+    out[0] = (x - ex) / n;
+    out[1] = (y - ey) / n;
+    out[2] = (z - ez) / n;
     return out;
   }
 
   /** World length of one CSS pixel at the depth of (x, y, z) (perspective). */
   worldPerPixel(x, y, z) {
     const d = this.viewDirection(this._dir ?? (this._dir = new Float64Array(3)));
-    const p = this.camera.position;
-    const depth = Math.max((x - p.x) * d[0] + (y - p.y) * d[1] + (z - p.z) * d[2], 1e-9);
+    const [ex, ey, ez] = this.camera.eye;
+    const depth = Math.max((x - ex) * d[0] + (y - ey) * d[1] + (z - ez) * d[2], 1e-9);
     return (2 * depth * Math.tan((this.camera.fov / 2) * DEG)) / Math.max(this._h, 1);
   }
 
@@ -239,15 +239,17 @@ export class View3D extends FigureCanvas {
    * d]): written into `out`, true; false when the ray runs parallel to it or away.
    */
   rayOnPlane(x, y, plane, out) {
-    this._ndc.set((x / this._w) * 2 - 1, 1 - (y / this._h) * 2);
-    this._ray.setFromCamera(this._ndc, this.camera);
-    this._plane.normal.set(plane[0], plane[1], plane[2]);
-    this._plane.constant = -plane[3];
-    const hit = this._ray.ray.intersectPlane(this._plane, this._vector);
-    if (!hit) return false;
-    out[0] = hit.x;
-    out[1] = hit.y;
-    out[2] = hit.z;
+    const d = this.camera.rayDirection(
+      (x / this._w) * 2 - 1,
+      1 - (y / this._h) * 2,
+      this._rayDirection,
+    );
+    const eye = this.camera.eye;
+    const along = plane[0] * d[0] + plane[1] * d[1] + plane[2] * d[2];
+    if (along === 0) return false;
+    const s = (plane[3] - (plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2])) / along;
+    if (!(s >= 0)) return false;
+    for (let k = 0; k < 3; k++) out[k] = eye[k] + s * d[k];
     return true;
   }
 
@@ -256,7 +258,7 @@ export class View3D extends FigureCanvas {
    * 3 px before the point: a point on the surface is not hidden by it; occlusion3d.js).
    */
   occluded(x, y, z) {
-    const eye = this.camera.position;
+    const [ex, ey, ez] = this.camera.eye;
     const margin = OCCLUSION_MARGIN_PX * this.worldPerPixel(x, y, z);
     for (const mesh of this._shownMeshes) {
       let blocks = this._occlusionBlocks.get(mesh);
@@ -264,7 +266,7 @@ export class View3D extends FigureCanvas {
         blocks = triangleBlocks(mesh);
         this._occlusionBlocks.set(mesh, blocks);
       }
-      if (segmentBlocked(mesh, eye.x, eye.y, eye.z, x, y, z, margin, blocks)) return true;
+      if (segmentBlocked(mesh, ex, ey, ez, x, y, z, margin, blocks)) return true;
     }
     return false;
   }
@@ -283,7 +285,6 @@ export class View3D extends FigureCanvas {
     this._h = h;
     this.camera.aspect = w / h;
     this.camera.fov = verticalFieldOfView(w / h); // the camera's frame whole at any aspect
-    this.camera.updateProjectionMatrix();
   }
 
   drawNow() {
@@ -293,14 +294,20 @@ export class View3D extends FigureCanvas {
     if (!this._remote) {
       this._show(scene);
       this._paint(this.renderer, this.width, this.height, this.theme, scene, LOCAL);
-      this._publish(this.content.geometriesMade, this.content.legend);
+      if (this.content) this._publish(this.content.geometriesMade, this.content.legend);
       return;
     }
     // Through the worker: drawn when the frame arrives (`_arrived`). A resized canvas, which
     // lost its pixels, is drawn at once meanwhile with the last frame's image scaled; a new
     // one stays empty until its first frame (not a figure without its surface for a moment).
     this._layout(this.width, this.height);
-    this._remote.render(scene, this.camera, this.canvas.width, this.canvas.height);
+    const { fov, aspect } = this.camera;
+    this._remote.render(
+      scene,
+      { view: this._camera, fov, aspect },
+      this.canvas.width,
+      this.canvas.height,
+    );
     if (this._cleared && this._bitmap)
       this._paint(this.renderer, this.width, this.height, this.theme, null, WORKER);
   }
@@ -323,14 +330,34 @@ export class View3D extends FigureCanvas {
     this._shownMeshes = meshes;
   }
 
-  /** The main thread's WebGL objects, brought in line with `scene`. */
+  /**
+   * The main thread's WebGL objects, brought in line with `scene`, and its three.js camera set
+   * as `camera`; null until three.js is loaded (its load is started, and the figure drawn again
+   * after it: a worker lost while the page has no three.js).
+   */
   _local(scene) {
+    const three = loadedThree();
+    if (!three) {
+      this._loadingThree ??= loadThree().then(() => this.requestDraw());
+      return null;
+    }
     if (!this.content) {
-      this.content = new SceneContent(this.THREE);
-      this.content.attachLight(this.camera);
+      this._glCamera = new three.THREE.PerspectiveCamera();
+      this.content = new SceneContent(three.THREE);
+      this.content.attachLight(this._glCamera);
     }
     this.content.update(scene);
+    const gl = this._glCamera;
+    applyCamera(gl, this._camera);
+    gl.fov = this.camera.fov;
+    gl.aspect = this.camera.aspect;
+    gl.updateProjectionMatrix();
     return this.content;
+  }
+
+  /** Resolves when `renderTo` can draw the WebGL image into a canvas (three.js on the page). */
+  prepareExport() {
+    return loadThree();
   }
 
   /** Hooks for tests: geometries made so far (a drag refills, makes none) and the legend. */
@@ -368,17 +395,18 @@ export class View3D extends FigureCanvas {
       const ph = context.canvas.height;
       context.save();
       context.setTransform(1, 0, 0, 1, 0, 0);
-      if (source === LOCAL) {
-        const content = this._local(scene);
+      const content = source === LOCAL ? this._local(scene) : null;
+      if (content) {
         legend = content.legend;
-        const image = renderShared(content.scene, this.camera, pw, ph);
+        const image = renderShared(content.scene, this._glCamera, pw, ph);
         context.drawImage(image.canvas, image.x, image.y, image.width, image.height, 0, 0, pw, ph);
       } else if (this._bitmap) {
         context.drawImage(this._bitmap, 0, 0, pw, ph);
       }
       context.restore();
     } else {
-      legend = this._local(scene).legend;
+      // The vector paths need no WebGL; the legend is the worker's when three.js is not here.
+      if (loadedThree()) legend = this._local(scene).legend;
       drawVectorScene(r, this, scene);
     }
     this.drawFigure(r, this);
@@ -417,12 +445,16 @@ export class View3D extends FigureCanvas {
       pointercancel: (e) => this._up(e),
       pointerleave: () => this._interactors.forEach((it) => it.leave?.()),
       wheel: (e) => {
-        // Embeds: a plain wheel scrolls the page; OrbitControls never sees it.
-        if (this.wheelNeedsModifier && !e.ctrlKey && !e.metaKey) e.stopImmediatePropagation();
+        // Embeds: a plain wheel scrolls the page.
+        if (this.wheelNeedsModifier && !e.ctrlKey && !e.metaKey) return;
+        e.preventDefault();
+        this._orbit.wheel(e);
       },
+      contextmenu: (e) => e.preventDefault(), // a right drag pans
     };
+    c.style.touchAction = "none"; // one finger orbits, two pan and zoom: no page gestures
     for (const [type, handler] of Object.entries(this._handlers))
-      c.addEventListener(type, handler, type === "wheel" ? { passive: true } : undefined);
+      c.addEventListener(type, handler, type === "wheel" ? { passive: false } : undefined);
     this._stopSize = watchCanvasSize(this.canvas, {
       resize: (w, h, devicePixels) => this._resize(w, h, devicePixels),
       ratioChanged: () => this._resize(this.width, this.height),
@@ -434,17 +466,22 @@ export class View3D extends FigureCanvas {
   }
 
   _down(event) {
-    if (event.button !== undefined && event.button > 0) return;
     const [x, y] = this.eventPosition(event);
-    for (const it of this._interactors) {
-      if (it.pointerDown(event, x, y)) {
-        this._captured.set(event.pointerId, it);
-        this.canvas.setPointerCapture(event.pointerId);
-        event.preventDefault();
-        event.stopImmediatePropagation(); // not an orbit
-        return;
+    const primary = event.button === undefined || event.button === 0;
+    if (primary && !this._orbit.active) {
+      for (const it of this._interactors) {
+        if (it.pointerDown(event, x, y)) {
+          this._captured.set(event.pointerId, it);
+          this.canvas.setPointerCapture(event.pointerId);
+          event.preventDefault();
+          return;
+        }
       }
     }
+    if (this._captured.size) return; // a handle's drag: a second finger does nothing
+    this._orbit.down(event, x, y);
+    this.canvas.setPointerCapture(event.pointerId);
+    event.preventDefault();
   }
 
   _move(event) {
@@ -454,7 +491,7 @@ export class View3D extends FigureCanvas {
       owner.pointerMove(event, x, y);
       return;
     }
-    if (event.buttons) return; // an orbit in progress
+    if (this._orbit.move(event, x, y) || event.buttons) return; // an orbit in progress
     let cursor = null;
     for (const it of this._interactors) cursor ??= it.hover(x, y, event.pointerType);
     this.canvas.style.cursor = cursor ?? "grab";
@@ -462,7 +499,10 @@ export class View3D extends FigureCanvas {
 
   _up(event) {
     const owner = this._captured.get(event.pointerId);
-    if (!owner) return;
+    if (!owner) {
+      this._orbit.up(event);
+      return;
+    }
     const [x, y] = this.eventPosition(event);
     this._captured.delete(event.pointerId);
     owner.pointerUp(event, x, y);
@@ -470,7 +510,6 @@ export class View3D extends FigureCanvas {
 
   destroy() {
     this._destroyed = true;
-    this.controls.dispose();
     for (const [type, handler] of Object.entries(this._handlers))
       this.canvas.removeEventListener(type, handler);
     this._stopSize();

@@ -433,6 +433,14 @@ export default [
       assert(after !== before, "the picture is the same after an orbit");
       const orbited = (await urlState(page)).view;
       assert(orbited[0] !== camera[0], `azimuth ${camera[0]} → ${orbited[0]}`);
+      // z stays up (orbit-gesture.js): a drag across the canvas' height turns a full circle, left
+      // is towards a larger azimuth, down towards a larger elevation.
+      const height = box.height;
+      const expected = [camera[0] + (360 * 120) / height, camera[1] + (360 * 40) / height];
+      assert(
+        Math.abs(orbited[0] - expected[0]) < 0.5 && Math.abs(orbited[1] - expected[1]) < 0.5,
+        `camera ${orbited} after a (−120, 40) px drag on ${height} px, expected ≈ ${expected}`,
+      );
       await page.reload();
       await h.ready();
       equal(JSON.stringify((await urlState(page)).view), JSON.stringify(orbited), "camera");
@@ -537,7 +545,7 @@ export default [
     },
   ],
   [
-    "two 3D embeds are drawn by the page's one rendering worker (no WebGL context on the page); a 2D page and a 2D embed load no three.js",
+    "two 3D embeds are drawn by the page's one rendering worker (no WebGL context and no three.js on the page); a 2D page and a 2D embed load no three.js",
     async (page, h, base, { assert, equal, settle }) => {
       const three = [];
       const watch = (request) => {
@@ -581,10 +589,16 @@ export default [
             .locator(`spline-lab#${id} .sl-figure[data-handles]`)
             .waitFor({ state: "attached" });
         }
+        // three.js is the worker's (its requests are seen here too); the page loaded none.
         assert(
-          three.some((p) => p.endsWith("OrbitControls.js")),
+          three.some((p) => p.endsWith("three.module.js")),
           `loaded ${three.join(", ")}`,
         );
+        const onPage = await page.evaluate(async () => {
+          const { loadedThree } = await import("./lib/three-loader.js");
+          return loadedThree() !== null;
+        });
+        equal(onPage, false, "three.js loaded on the page");
         // The page's rendering worker draws both (lib/gl-client.js): no WebGL on the page.
         await settle(page);
         const kinds = await page.evaluate(() => window.contexts);

@@ -83,7 +83,8 @@ export default [
     "vase: from an orbited camera a profile point stays under the pointer in y = 0, mesh buffers refilled in place",
     async (page, h, _base, { assert, equal }) => {
       const box = await h.canvas().boundingBox();
-      await h.drag({ x: box.x + box.width - 20, y: box.y + 20 }, -90, 30);
+      // Azimuth −60° → about −100°: the plane y = 0 seen well from the front.
+      await h.drag({ x: box.x + 20, y: box.y + 20 }, 60, 30);
       const made = () => page.locator(".sl-figure").getAttribute("data-geometries");
       const geometries = await made();
       const start = await urlState(page);
