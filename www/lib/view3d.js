@@ -338,7 +338,10 @@ export class View3D extends FigureCanvas {
   _local(scene) {
     const three = loadedThree();
     if (!three) {
-      this._loadingThree ??= loadThree().then(() => this.requestDraw());
+      this._loadingThree ??= loadThree().then(
+        () => this._destroyed || this.requestDraw(),
+        () => (this._loadingThree = null), // tried again at the next frame
+      );
       return null;
     }
     if (!this.content) {
@@ -481,7 +484,6 @@ export class View3D extends FigureCanvas {
     if (this._captured.size) return; // a handle's drag: a second finger does nothing
     this._orbit.down(event, x, y);
     this.canvas.setPointerCapture(event.pointerId);
-    event.preventDefault();
   }
 
   _move(event) {
