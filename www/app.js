@@ -23,6 +23,7 @@ import { registerOffline } from "./lib/offline.js";
 import {
   hasPosters,
   lectureLinkPoster,
+  coverUntilDrawn,
   posterPage,
   posterSettled,
   posterUrl,
@@ -342,6 +343,9 @@ function showPoster(entry) {
 
 /** Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any. */
 function showDemo(entry, demo, encoded, sl) {
+  const poster = [...main.querySelectorAll("img.sl-poster")].find(
+    (img) => !img.closest("[hidden]"),
+  );
   unmount();
   currentId = demo.id;
   document.title = t("app.demoTitle", { title: t(`${entry.strings}.title`), app: t("app.name") });
@@ -370,6 +374,7 @@ function showDemo(entry, demo, encoded, sl) {
   }
   writeHash(demo.id, controller.state);
   if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
+  coverUntilDrawn(controller.figure, poster);
 }
 
 // ------------------------------------------------------------------ lecture view

@@ -25,7 +25,7 @@ import { chooseLanguage, useLanguage } from "./lib/language.js";
 import { findExercise } from "./exercises/index.js";
 import { mountExercise } from "./lib/exercise.js";
 import { errorText } from "./lib/core-errors.js";
-import { posterUrl, prefersDark } from "./lib/posters.js";
+import { coverUntilDrawn, posterUrl, prefersDark } from "./lib/posters.js";
 
 const SHELL_CSS = new URL("./lib/shell.css", import.meta.url).href;
 const PLAYGROUND = new URL("./index.html", import.meta.url).href;
@@ -177,6 +177,7 @@ class SplineLabElement extends HTMLElement {
       return this._fail(errorText(err));
     }
     if (!this.isConnected || this._controller) return;
+    const poster = this._root.querySelector(".sl-embed-poster");
     const root = document.createElement("div");
     this._root.replaceWith(root);
     this._root = root;
@@ -203,6 +204,7 @@ class SplineLabElement extends HTMLElement {
       this._controller = mount(start);
     }
     if (problem) this._controller.status(t("status.rejected", { message: problem }), "error");
+    else coverUntilDrawn(this._controller.figure, poster);
 
     // Attribute edits after start update the figure (validated like any state).
     this._attributes = new MutationObserver(() => {

@@ -256,6 +256,41 @@ export async function distSuite({
       });
 
     if (existsSync(POSTERS))
+      await test("dist: a 3D demo keeps its poster over the figure until the rendering worker's first frame, then shows the figure alone", async () => {
+        needSite();
+        const own = await context.newPage();
+        const ownErrors = watchErrors(own);
+        try {
+          // Each change of (canvas drawn, poster over it) in the figure box, from the mount on.
+          await own.addInitScript(() => {
+            window.__cover = [];
+            new MutationObserver(() => {
+              const box = document.querySelector(".sl-figure:has(> .sl-canvas)");
+              if (!box) return;
+              const step = [
+                box.hasAttribute("data-handles") ? "drawn" : "empty",
+                box.querySelector(":scope > img.sl-poster-cover") ? "poster" : "no poster",
+              ].join(", ");
+              if (window.__cover.at(-1) !== step) window.__cover.push(step);
+            }).observe(document, { subtree: true, childList: true, attributes: true });
+          });
+          await own.goto(`${base}/index.html#demo=bezier-patch`);
+          await demoHelpers(own).ready();
+          await settle(own);
+          equal(
+            (await own.evaluate(() => window.__cover)).join(" → "),
+            "empty, poster → drawn, poster → drawn, no poster",
+            "the figure box from the mount to the first frame",
+          );
+          const cover = await own.evaluate(() => document.querySelectorAll("img.sl-poster").length);
+          equal(cover, 0, "posters left after the first frame");
+          equal(ownErrors.take().join("\n"), "", "console errors");
+        } finally {
+          await own.close();
+        }
+      });
+
+    if (existsSync(POSTERS))
       await test("dist: a reader with a dark colour scheme gets the dark posters (gallery thumbnails, a demo link)", async () => {
         needSite();
         const releaseWasm = await holdWasm(); // the posters stay

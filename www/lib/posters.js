@@ -127,6 +127,20 @@ export function posterPage(
 }
 
 /**
+ * A live figure drawn some time after its mount (a 3D one waits for the rendering worker's
+ * first frame: View3D `whenDrawn`) keeps `image`, the poster shown before it, over its canvas
+ * until then instead of an empty box; decorative meanwhile (the canvas carries the figure's
+ * name). Nothing happens for a figure drawn at once or a poster not loaded.
+ */
+export function coverUntilDrawn(figure, image) {
+  if (!image?.complete || !image.naturalWidth || !figure?.whenDrawn || figure.drawn) return;
+  image.alt = "";
+  image.className = "sl-poster sl-poster-cover";
+  figure.host.append(image);
+  figure.whenDrawn().then(() => image.remove());
+}
+
+/**
  * The poster name of scene `index` (0-based) of lecture `lectureId`: the build draws each
  * lecture's first scene (scripts/posters.mjs), the scene a lecture link opens.
  */

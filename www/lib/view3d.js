@@ -117,6 +117,9 @@ export class View3D extends FigureCanvas {
     this._legend = null;
     /** True when the canvas lost its pixels (new, resized) since its last drawing. */
     this._cleared = true;
+    /** True once the canvas shows the figure; `whenDrawn()` resolves then. */
+    this.drawn = false;
+    this._drawn = new Promise((resolve) => (this._markDrawn = resolve));
     this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
     this._h = 1;
@@ -299,7 +302,8 @@ export class View3D extends FigureCanvas {
     }
     // Through the worker: drawn when the frame arrives (`_arrived`). A resized canvas, which
     // lost its pixels, is drawn at once meanwhile with the last frame's image scaled; a new
-    // one stays empty until its first frame (not a figure without its surface for a moment).
+    // one stays empty until its first frame (not a figure without its surface for a moment;
+    // the page and an embed keep the demo's poster over it meanwhile: posters.js coverUntilDrawn).
     this._layout(this.width, this.height);
     const { fov, aspect } = this.camera;
     this._remote.render(
@@ -416,7 +420,16 @@ export class View3D extends FigureCanvas {
     if (legend) drawLegend(r, legend);
     drawTriad(r, this);
     r.end();
-    if (r === this.renderer) this._cleared = false;
+    if (r === this.renderer) {
+      this._cleared = false;
+      this.drawn = true;
+      this._markDrawn();
+    }
+  }
+
+  /** Resolves once the canvas shows the figure (with the worker: after its first frame). */
+  whenDrawn() {
+    return this._drawn;
   }
 
   /** The figure into another renderer (SVG recorder, export canvas, thumbnail); then back. */
