@@ -150,9 +150,9 @@ const EN = {
   "shell.whatYouSee": "What you see",
   "shell.tryThis": "Try this",
   "shell.figureHelp3d":
-    "Drag a point (in the plane facing you), or press Tab to select one: arrow keys move it (Shift: 10 px), PageUp/PageDown towards or away from you. Drag empty space to orbit, Shift-drag or two fingers to pan, wheel or pinch to zoom; with no point selected the arrow keys orbit.",
+    "Drag a point (in the plane facing you), or press Tab to select one: arrow keys move it (Shift: 10 px), PageUp/PageDown towards or away from you. Drag empty space to orbit, Shift-drag, right-drag or two fingers to pan, wheel or pinch to zoom; with no point selected the arrow keys orbit.",
   "shell.figureHelp3dTyped":
-    "The curve follows the formulas typed in the panel. Drag to orbit, Shift-drag or two fingers to pan, wheel or pinch to zoom; the arrow keys orbit.",
+    "The curve follows the formulas typed in the panel. Drag to orbit, Shift-drag, right-drag or two fingers to pan, wheel or pinch to zoom; the arrow keys orbit.",
   "shell.figureHelp":
     "Drag a point, or press Tab to select one and the arrow keys to move it (Shift: 10 px). Drag empty space to pan; wheel or pinch to zoom.",
   "shell.figureHelpTyped":

@@ -52,9 +52,9 @@ export default {
   "shell.whatYouSee": "Što vidite",
   "shell.tryThis": "Isprobajte",
   "shell.figureHelp3d":
-    "Povucite točku (u ravnini okrenutoj prema vama) ili je odaberite tipkom Tab: strelice je pomiču (Shift: 10 px), PageUp/PageDown prema vama ili od vas. Povucite prazan prostor za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; kad nijedna točka nije odabrana, strelice okreću prikaz.",
+    "Povucite točku (u ravnini okrenutoj prema vama) ili je odaberite tipkom Tab: strelice je pomiču (Shift: 10 px), PageUp/PageDown prema vama ili od vas. Povucite prazan prostor za okretanje, Shift i povlačenje, povlačenje desnom tipkom miša ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; kad nijedna točka nije odabrana, strelice okreću prikaz.",
   "shell.figureHelp3dTyped":
-    "Krivulja slijedi formule upisane u ploči s kontrolama. Povucite za okretanje, Shift i povlačenje ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; strelice okreću prikaz.",
+    "Krivulja slijedi formule upisane u ploči s kontrolama. Povucite za okretanje, Shift i povlačenje, povlačenje desnom tipkom miša ili dva prsta za pomicanje, kotačić ili dva prsta za zumiranje; strelice okreću prikaz.",
   "shell.figureHelp":
     "Povucite točku ili je odaberite tipkom Tab i pomičite strelicama (Shift: 10 px). Povucite prazan prostor za pomicanje prikaza; kotačić ili dva prsta za zumiranje.",
   "shell.figureHelpTyped":

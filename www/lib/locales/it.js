@@ -52,9 +52,9 @@ export default {
   "shell.whatYouSee": "Cosa vedi",
   "shell.tryThis": "Prova",
   "shell.figureHelp3d":
-    "Trascina un punto (nel piano rivolto verso di te), oppure premi Tab per selezionarne uno: i tasti freccia lo spostano (Shift: 10 px), PageUp/PageDown verso di te o lontano da te. Trascina lo spazio vuoto per ruotare, Shift+trascina o due dita per spostare, rotella o pizzico per lo zoom; senza punto selezionato i tasti freccia ruotano la vista.",
+    "Trascina un punto (nel piano rivolto verso di te), oppure premi Tab per selezionarne uno: i tasti freccia lo spostano (Shift: 10 px), PageUp/PageDown verso di te o lontano da te. Trascina lo spazio vuoto per ruotare, Shift+trascina, trascina con il tasto destro o due dita per spostare, rotella o pizzico per lo zoom; senza punto selezionato i tasti freccia ruotano la vista.",
   "shell.figureHelp3dTyped":
-    "La curva segue le formule scritte nel pannello. Trascina per ruotare, Shift+trascina o due dita per spostare, rotella o pizzico per lo zoom; i tasti freccia ruotano la vista.",
+    "La curva segue le formule scritte nel pannello. Trascina per ruotare, Shift+trascina, trascina con il tasto destro o due dita per spostare, rotella o pizzico per lo zoom; i tasti freccia ruotano la vista.",
   "shell.figureHelp":
     "Trascina un punto, oppure premi Tab per selezionarne uno e i tasti freccia per spostarlo (Shift: 10 px). Trascina lo spazio vuoto per spostare la vista; rotella o pizzico per lo zoom.",
   "shell.figureHelpTyped":
