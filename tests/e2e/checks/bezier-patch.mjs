@@ -163,6 +163,37 @@ export default [
     },
   ],
   [
+    "a rendering worker that fails after drawing hands its figure to the page: the surface stays, three.js loads, and changes are drawn by the page",
+    async (page, _h, base, { assert, equal, openDemo, settle }) => {
+      await openDemo(page, base, "bezier-patch", hashOf(await plainState(page, {})));
+      const renderers = () =>
+        page.evaluate(async () => ({
+          alive: (await import("./lib/gl-client.js")).glWorkerAlive(),
+          page: (await import("./lib/shared-gl.js")).sharedRendererMade(),
+        }));
+      equal(JSON.stringify(await renderers()), '{"alive":true,"page":false}', "before");
+      // The worker reports a failure, as it does when its WebGL fails (gl-worker.js "error").
+      const worker = page.workers().find((w) => w.url().endsWith("/gl-worker.js"));
+      assert(worker, "the rendering worker");
+      await worker.evaluate(() => self.postMessage({ type: "error", message: "test: lost" }));
+      // The page loads three.js, then draws the figure with its own renderer.
+      let after = "";
+      for (let wait = 0; wait < 100 && after !== '{"alive":false,"page":true}'; wait++) {
+        await page.waitForTimeout(100);
+        after = JSON.stringify(await renderers());
+      }
+      equal(after, '{"alive":false,"page":true}', "after");
+      await settle(page);
+      const { blue, total } = await page.evaluate(countBlue, { selector: ".sl-canvas" });
+      assert(blue > total * 0.05, `only ${blue} of ${total} pixels are surface blue`);
+      // A change after the loss: drawn by the page's renderer.
+      await page.locator('[data-control="shading"] [data-choice="zebra"] input').check();
+      await settle(page);
+      const zebra = await page.evaluate(pixelClasses);
+      assert(zebra.black > zebra.total * 0.02, `zebra after the loss: ${zebra.black} black`);
+    },
+  ],
+  [
     "zebra, Gaussian and mean shadings draw the surface in their own pixels (and differ from lit)",
     async (page, _h, base, { assert, openDemo, settle }) => {
       const shots = {};
