@@ -21,9 +21,9 @@ import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
 import { registerOffline } from "./lib/offline.js";
 import {
+  coverUntilDrawn,
   hasPosters,
   lectureLinkPoster,
-  coverUntilDrawn,
   posterPage,
   posterSettled,
   posterUrl,

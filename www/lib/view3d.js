@@ -427,7 +427,10 @@ export class View3D extends FigureCanvas {
     }
   }
 
-  /** Resolves once the canvas shows the figure (with the worker: after its first frame). */
+  /**
+   * Resolves once the canvas shows the figure (with the worker: after its first frame), or once
+   * the figure is destroyed before that (what covers it meanwhile then goes too).
+   */
   whenDrawn() {
     return this._drawn;
   }
@@ -525,6 +528,7 @@ export class View3D extends FigureCanvas {
 
   destroy() {
     this._destroyed = true;
+    this._markDrawn();
     for (const [type, handler] of Object.entries(this._handlers))
       this.canvas.removeEventListener(type, handler);
     this._stopSize();
