@@ -130,10 +130,10 @@ export function posterPage(
  * A live figure drawn some time after its mount (a 3D one waits for the rendering worker's
  * first frame: View3D `whenDrawn`) keeps `image`, the poster shown before it, over its canvas
  * until then instead of an empty box; decorative meanwhile (the canvas carries the figure's
- * name). Nothing happens for a figure drawn at once or a poster not loaded.
+ * name). Nothing happens for a figure drawn at once (a 2D one) or a poster not loaded.
  */
 export function coverUntilDrawn(figure, image) {
-  if (!image?.complete || !image.naturalWidth || !figure?.whenDrawn || figure.drawn) return;
+  if (!image?.complete || !image.naturalWidth || !figure?.whenDrawn) return;
   image.alt = "";
   image.className = "sl-poster sl-poster-cover";
   figure.host.append(image);

@@ -117,8 +117,7 @@ export class View3D extends FigureCanvas {
     this._legend = null;
     /** True when the canvas lost its pixels (new, resized) since its last drawing. */
     this._cleared = true;
-    /** True once the canvas shows the figure; `whenDrawn()` resolves then. */
-    this.drawn = false;
+    /** Resolves once the canvas shows the figure (`whenDrawn`). */
     this._drawn = new Promise((resolve) => (this._markDrawn = resolve));
     this._camera = fitCamera([-1, -1, -1, 1, 1, 1], ...this.homeDirection);
     this._w = 1;
@@ -422,7 +421,6 @@ export class View3D extends FigureCanvas {
     r.end();
     if (r === this.renderer) {
       this._cleared = false;
-      this.drawn = true;
       this._markDrawn();
     }
   }
