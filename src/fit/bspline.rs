@@ -247,13 +247,17 @@ impl<'a, C: Cartesian> Problem<'a, C> {
             let a = sub_params[j];
             // Periodic: the representative of `b` nearest `a`.
             let b = if self.periodic {
-                a + (b - a + 0.5).rem_euclid(1.0) - 0.5
+                a + super::wrap(b - a + 0.5, 1.0) - 0.5
             } else {
                 b
             };
             for (k, slot) in out.iter_mut().enumerate().take(next.min(m)).skip(i) {
                 let t = a + (b - a) * (k - i) as f64 / (next - i) as f64;
-                *slot = if self.periodic { t.rem_euclid(1.0) } else { t };
+                *slot = if self.periodic {
+                    super::wrap(t, 1.0)
+                } else {
+                    t
+                };
             }
         }
         out

@@ -79,8 +79,11 @@ pub(crate) fn find<C: Cartesian>(stroke: &Stroke<C>, closed: bool, tol: f64) -> 
     if sorted.is_empty() {
         return Vec::new();
     }
-    let mid = sorted.len() / 2;
-    let median = *sorted.select_nth_unstable_by(mid, f64::total_cmp).1;
+    // The same sort as the rest of the crate's f64 sorts (one copy of its code in the wasm):
+    // `select_nth_unstable_by` would add its own ~5 KB for an O(n) instead of O(n log n) on
+    // at most MAX_RESAMPLED values.
+    sorted.sort_unstable_by(f64::total_cmp);
+    let median = sorted[sorted.len() / 2];
     if median.is_nan() || median <= 0.0 {
         return Vec::new();
     }
@@ -115,7 +118,7 @@ pub(crate) fn find<C: Cartesian>(stroke: &Stroke<C>, closed: bool, tol: f64) -> 
             let si = stroke.arc[index];
             let at = |s: f64| {
                 if closed {
-                    stroke.point_at(s.rem_euclid(total))
+                    stroke.point_at(super::wrap(s, total))
                 } else {
                     stroke.point_at(s.clamp(0.0, total))
                 }
@@ -135,7 +138,15 @@ pub(crate) fn find<C: Cartesian>(stroke: &Stroke<C>, closed: bool, tol: f64) -> 
             f.0 = 0;
         }
     }
-    found.sort_by_key(|f| f.0);
+    // In sample order (a stable insertion sort: a handful of corners, and no ~5 KB of
+    // `slice::sort_by_key` in the wasm), one per sample.
+    for i in 1..found.len() {
+        let mut j = i;
+        while j > 0 && found[j - 1].0 > found[j].0 {
+            found.swap(j - 1, j);
+            j -= 1;
+        }
+    }
     found.dedup_by_key(|f| f.0);
     if !closed {
         found.retain(|f| f.0 > 0 && f.0 < n - 1);
@@ -159,7 +170,7 @@ fn apex<C: Cartesian>(stroke: &Stroke<C>, closed: bool, sigma: f64, h: f64) -> u
     let total = stroke.length();
     let wrap = |s: f64| {
         if closed {
-            s.rem_euclid(total)
+            super::wrap(s, total)
         } else {
             s.clamp(0.0, total)
         }

@@ -75,7 +75,7 @@ impl<C: Cartesian> Cubic<C> {
     }
 
     /// One Newton step of `u` towards the closest point to `q`, kept in `[0, 1]`.
-    #[inline]
+    #[inline(never)]
     pub fn newton(&self, q: C, u: f64) -> f64 {
         let (p, d1, d2) = self.eval2(u);
         let r = p - q;

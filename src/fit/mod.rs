@@ -160,6 +160,23 @@ pub(crate) fn ends_meet<C: crate::geom::Cartesian>(points: &[C], tol: f64) -> bo
         && gap <= (CLOSE_TOLERANCES * tol).max(CLOSE_FRACTION * length)
 }
 
+/// `x` wrapped into `[0, period)` for a closed stroke's arc length or a periodic parameter:
+/// `f64::rem_euclid` exactly for `−period < x < 2·period` (one addition or subtraction, the
+/// only cases the fitters meet), `x − ⌊x / period⌋·period` beyond. Not `rem_euclid` itself:
+/// its `fmod` adds ~1.2 KB to the wasm.
+#[inline(never)]
+pub(crate) fn wrap(x: f64, period: f64) -> f64 {
+    if x < 0.0 && x > -period {
+        x + period
+    } else if x >= period && x < 2.0 * period {
+        x - period
+    } else if (0.0..period).contains(&x) {
+        x
+    } else {
+        x - (x / period).floor() * period
+    }
+}
+
 /// Checks a stroke and a tolerance, in the order of the API: finite coordinates, enough
 /// samples, not too many, a finite positive tolerance.
 ///
@@ -192,4 +209,23 @@ pub(crate) fn check_stroke<P: Point>(points: &[P], tolerance: f64) -> Result<()>
     }
     crate::error::check_tolerance(tolerance)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn wrap_is_rem_euclid() {
+        for period in [1.0, 0.37, 250.5] {
+            for k in -300..=600 {
+                let x = k as f64 * period / 97.0 + 1e-3;
+                let (got, want) = (super::wrap(x, period), x.rem_euclid(period));
+                if x > -period && x < 2.0 * period {
+                    assert_eq!(got, want, "{x} mod {period}");
+                } else {
+                    // Beyond, within rounding of it.
+                    assert!((got - want).abs() <= 1e-14 * x.abs(), "{x} mod {period}");
+                }
+            }
+        }
+    }
 }

@@ -35,7 +35,7 @@ impl<C: Cartesian> Fitted<'_, C> {
     /// `t` in the domain (wrapped when periodic, clamped otherwise).
     fn wrap(&self, t: f64) -> f64 {
         if self.periodic {
-            t.rem_euclid(1.0)
+            super::wrap(t, 1.0)
         } else {
             t.clamp(0.0, 1.0)
         }
@@ -67,8 +67,8 @@ impl<C: Cartesian> Fitted<'_, C> {
         let m = params.len();
         let t = params[k];
         if self.periodic {
-            let back = (t - params[(k + m - 2.min(m - 1)) % m]).rem_euclid(1.0);
-            let ahead = (params[(k + 2) % m] - t).rem_euclid(1.0);
+            let back = super::wrap(t - params[(k + m - 2.min(m - 1)) % m], 1.0);
+            let ahead = super::wrap(params[(k + 2) % m] - t, 1.0);
             (t - back, t + ahead)
         } else {
             (params[k.saturating_sub(2)], params[(k + 2).min(m - 1)])
@@ -170,7 +170,11 @@ impl<C: Cartesian> Fitted<'_, C> {
             }
             sum += d * d;
             dists[k] = d;
-            params[k] = if self.periodic { t.rem_euclid(1.0) } else { t };
+            params[k] = if self.periodic {
+                super::wrap(t, 1.0)
+            } else {
+                t
+            };
         }
         if self.periodic {
             return Ok(Some(sum));

@@ -177,7 +177,7 @@ pub(crate) fn tangent<C: Cartesian>(
     let si = stroke.arc[i];
     let at = |s: f64| {
         if cyclic {
-            stroke.point_at(s.rem_euclid(total))
+            stroke.point_at(super::wrap(s, total))
         } else {
             stroke.point_at(s.clamp(smin, smax))
         }
