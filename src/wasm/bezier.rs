@@ -46,6 +46,7 @@ fn build(points: &[f64], dim: usize, weights: Option<&[f64]>) -> Result<Curve, E
     })
 }
 
+#[cfg(feature = "typed-curves")]
 impl JsBezierCurve {
     /// A typed polynomial piece's Bézier form (`ParametricCurve.toBezier(i)`).
     pub(crate) fn from_parametric(

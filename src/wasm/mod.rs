@@ -5,6 +5,11 @@
 //! ([`ApiError`], `error.rs`). No maths here.
 //! Nothing here may panic (a panic inside wasm kills the module for the whole page), which
 //! clippy enforces for this module tree.
+// A build without a family's bindings (bench/wasm-size.mjs) leaves helpers only it uses.
+#![cfg_attr(
+    not(all(feature = "typed-curves", feature = "sketching")),
+    allow(dead_code)
+)]
 #![deny(
     clippy::unwrap_used,
     clippy::expect_used,
@@ -18,8 +23,10 @@ mod class;
 pub mod bezier;
 pub mod bspline;
 pub(crate) mod error;
+#[cfg(feature = "sketching")]
 pub mod fit;
 pub mod interp;
+#[cfg(feature = "typed-curves")]
 pub mod parametric;
 pub mod rational;
 mod scratch;
@@ -31,10 +38,12 @@ mod surface_teaching;
 pub use bezier::{JsBezierCurve, JsCompositeBezier};
 pub use bspline::JsBSplineCurve;
 pub use error::ApiError;
+#[cfg(feature = "sketching")]
 pub use fit::{
     fit_bspline, fit_bspline_report, fit_curve, fit_curve_report, oversketch, oversketch_report,
 };
 pub use interp::{JsCubicSpline, JsLagrangeCurve};
+#[cfg(feature = "typed-curves")]
 pub use parametric::{expression_names, parametric_curve, JsParametricCurve};
 pub use surface::{JsBSplineSurface, JsBezierSurface};
 pub use surface_build::{extrude, interpolate_surface, interpolate_surface_params, revolve, ruled};
