@@ -92,6 +92,8 @@ function numbers(lhr) {
     failedAccessibility: failed("accessibility"),
     failedBestPractices: failed("best-practices"),
     runtimeError: lhr.runtimeError?.code,
+    benchmarkIndex: lhr.environment?.benchmarkIndex,
+    runWarnings: lhr.runWarnings ?? [],
   };
 }
 
