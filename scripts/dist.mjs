@@ -29,7 +29,7 @@ import { fileURLToPath } from "node:url";
 import { promisify } from "node:util";
 import { brotliCompress, constants, gzip } from "node:zlib";
 import { SERVICE_WORKER_DEFINE, writeServiceWorker } from "./service-worker.mjs";
-import { renderPosters, summary as postersSummary } from "./posters.mjs";
+import { STATES, renderPosters, summary as postersSummary } from "./posters.mjs";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
 export const WWW = join(ROOT, "www");
@@ -65,6 +65,17 @@ const WORKERS = ["lib/gl-worker.js"];
 
 const NEW_URL = /new URL\(\s*(["'`])((?:\\.|(?!\1)[^\\])*)\1\s*,\s*import\.meta\.url\s*\)/g;
 const STAR = "\0";
+
+/**
+ * SPLINELAB_POSTER_STATES for esbuild's `define`: the default states' fingerprints that
+ * scripts/posters.mjs wrote beside the posters (lib/posters.js `posterShowsState`); nothing when
+ * there are no posters.
+ */
+async function posterStatesDefine(www) {
+  const file = join(www, "posters", STATES);
+  if (!existsSync(file)) return {};
+  return { SPLINELAB_POSTER_STATES: JSON.stringify(JSON.parse(await readFile(file, "utf8"))) };
+}
 
 /**
  * Builds the site from `www` into `out` (replaced whole at the end, so a server never sees half
@@ -227,7 +238,7 @@ export async function buildSite({ www = WWW, out = SITE } = {}) {
     legalComments: "eof",
     charset: "utf8",
     absWorkingDir: ROOT,
-    define: SERVICE_WORKER_DEFINE,
+    define: { ...SERVICE_WORKER_DEFINE, ...(await posterStatesDefine(www)) },
   };
 
   /** A module the site imports by URL (`import(url.href)`: the wasm glue, KaTeX), bundled alone.

@@ -16,6 +16,8 @@
 // holding one WebP (the whole figure at 2 image px per CSS px, a thumbnail 2 per shown px); a 2D poster is the vector SVG,
 // unless the same SVG-wrapped WebP is smaller after brotli (it never was: see the summary line,
 // which prints both sizes). lib/posters.js finds the files (make dist hashes them).
+// Beside them, states.json: each demo's default state's fingerprint as a link carries it, so a
+// page opened from a link to another state shows no poster (lib/posters.js posterShowsState).
 import { mkdirSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
@@ -27,6 +29,9 @@ import { startServer } from "./serve.mjs";
 
 const ROOT = resolve(fileURLToPath(new URL("..", import.meta.url)));
 export const POSTERS = join(ROOT, "www", "posters");
+/** Beside the posters: `{ <demo id>: fingerprint of its default state }` (dist.mjs defines it
+ * as SPLINELAB_POSTER_STATES for lib/posters.js). */
+export const STATES = "states.json";
 /** The viewports of the two page shapes (CSS px); the thumbnail's figure size. */
 const SHAPES = { wide: 1280, narrow: 412 };
 const THUMB = { width: 480, height: 300 };
@@ -50,17 +55,29 @@ const PAGE = `<!doctype html><html lang="en"><head><meta charset="utf-8">
  * scene (`lecture`), as lib/lecture.js mounts it; records its figure.
  */
 async function drawInPage({ id, state, lecture, thumb, quality, scale, dark }) {
-  const [{ loadDemo, demos }, { loadWasm }, shell, { prepareFigure }, draw, theme, exp, lectures] =
-    await Promise.all([
-      import("./demos/index.js"),
-      import("./lib/wasm.js"),
-      import("./lib/shell.js"),
-      import("./lib/three-loader.js"),
-      import("./lib/draw.js"),
-      import("./lib/theme.js"),
-      import("./lib/export.js"),
-      import("./lib/lecture.js"),
-    ]);
+  const [
+    { loadDemo, demos },
+    { loadWasm },
+    shell,
+    { prepareFigure },
+    draw,
+    theme,
+    exp,
+    lectures,
+    { encodeState },
+    { stateFingerprint },
+  ] = await Promise.all([
+    import("./demos/index.js"),
+    import("./lib/wasm.js"),
+    import("./lib/shell.js"),
+    import("./lib/three-loader.js"),
+    import("./lib/draw.js"),
+    import("./lib/theme.js"),
+    import("./lib/export.js"),
+    import("./lib/lecture.js"),
+    import("./lib/state.js"),
+    import("./lib/posters.js"),
+  ]);
   const sl = await loadWasm();
   const demo = await loadDemo(id);
   await prepareFigure(demo, state, { exports: true }); // a 3D poster's image is drawn on the page
@@ -105,6 +122,8 @@ async function drawInPage({ id, state, lecture, thumb, quality, scale, dark }) {
     height,
     svg: view.is3d ? null : record(width, height),
     webp: raster(width, height),
+    // The state as the playground's link carries it (app.js writes the mounted state).
+    fingerprint: stateFingerprint(encodeState(controller.state)),
   };
   controller.destroy();
   return out;
@@ -140,6 +159,8 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
   });
   const written = [];
   const problems = [];
+  /** Each demo's default state's fingerprint (lib/posters.js `posterShowsState`). */
+  const fingerprints = {};
   try {
     await context.route(`${base}/__posters__.html`, (route) =>
       route.fulfill({ contentType: "text/html", body: PAGE }),
@@ -181,6 +202,7 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
         const svgBrotli = r.svg ? brotliSize(r.svg) : Number.POSITIVE_INFINITY;
         const webpBrotli = brotliSize(r.webp);
         const body = svgBrotli <= webpBrotli ? r.svg : r.webp;
+        if (!lecture) fingerprints[id] = r.fingerprint;
         const file = `${name}-${shape}${dark ? "-dark" : ""}.svg`;
         writeFileSync(join(out, file), body);
         written.push({
@@ -200,6 +222,7 @@ export async function renderPosters({ out = POSTERS, only = "" } = {}) {
     server.close();
   }
   if (problems.length) throw new Error(`posters:\n  ${problems.join("\n  ")}`);
+  writeFileSync(join(out, STATES), `${JSON.stringify(fingerprints, null, 1)}\n`);
   return written;
 }
 

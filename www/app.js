@@ -26,6 +26,7 @@ import {
   lectureLinkPoster,
   posterPage,
   posterSettled,
+  posterShowsState,
   posterUrl,
 } from "./lib/posters.js";
 
@@ -311,9 +312,12 @@ function demoPageRoot() {
  * Demo `entry`'s poster where its figure will be, with the page's title and toolbar around it,
  * while the wasm and the demo's module load (lib/posters.js; the built site only): the demo's
  * mount replaces it (unmount) without moving the figure. The bare poster boot.js showed (before
- * the page's words were here) gives way to it once its picture is decoded.
+ * the page's words were here) gives way to it once its picture is decoded. False when there is
+ * none (the development tree, or a link to another state than the poster's).
  */
 function showPoster(entry) {
+  // Not for a link to another state than the poster's (boot.js shows none either).
+  if (!posterShowsState(entry.id, parseHash(location.hash).s)) return false;
   const boot = main.querySelector(".sl-boot-poster");
   if (!boot && main.querySelector(".sl-poster")) return true; // shown already
   const title = t(`${entry.strings}.title`);

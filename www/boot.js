@@ -9,6 +9,7 @@ import {
   lectureLinkPoster,
   loadingPoster,
   painted,
+  posterShowsState,
   posterUrl,
 } from "./lib/posters.js";
 
@@ -53,7 +54,11 @@ const lecturePoster =
   lecture && /^[a-z0-9-]+$/.test(lecture) ? lectureLinkPoster(lecture, hash.get("scene")) : null;
 /** The posters' shape for this window (lib/posters.js `posterPage` chooses the same). */
 const shape = matchMedia(NARROW_PAGE).matches ? "narrow" : "wide";
-const poster = id && /^[a-z0-9-]+$/.test(id) ? posterUrl(id, shape) : null;
+// Not for a link to another state than the posters' (`posterShowsState`).
+const poster =
+  id && /^[a-z0-9-]+$/.test(id) && posterShowsState(id, hash.get("s"))
+    ? posterUrl(id, shape)
+    : null;
 if (poster) {
   // The poster first (a few KB, the page's largest picture), shown as soon as it is here, then
   // the wasm (~270 KB): on a slow link the two would share the bandwidth and the poster come

@@ -20,6 +20,13 @@ const DIST_BUDGET_MS = 45_000;
 const STABLE =
   /^(?:[^/]+\.html|embed\.js|gl-worker\.js|licenses\/[^/]+\.txt|sw\.js|manifest\.webmanifest|icons\/[^/]+\.(?:png|svg))$/;
 
+/** An init script: the offline worker is not registered (tests/e2e/offline.mjs tests it), so
+ * the pages measure what goes over the wire, as a first visit sees it. */
+function noOfflineWorker() {
+  if (window.ServiceWorkerContainer)
+    ServiceWorkerContainer.prototype.register = () => new Promise(() => {});
+}
+
 /** Distinct colours in a canvas (2D; the 3D figures copy their render into one too). */
 function distinctColours(canvas) {
   const { width, height } = canvas;
@@ -67,6 +74,14 @@ export async function distSuite({
   /** Every response from the dist server: { path, status, headers }. */
   const responses = [];
   const needSite = () => assert(page, "the site was not built (see the first dist test)");
+
+  /** A page of its own beside the suite's, with the offline worker unregistered like it: a
+   * worker registered by one page would serve every later page of the context. */
+  async function ownPage() {
+    const own = await context.newPage();
+    await own.addInitScript(noOfflineWorker);
+    return own;
+  }
 
   /**
    * Holds back every wasm request of the page (the posters stay up) until the returned function
@@ -143,11 +158,8 @@ export async function distSuite({
           });
       });
       // Every violation of the pages' CSP is recorded (a bundle must not need an inline script).
-      // The offline worker is not registered: these pages measure what goes over the wire, as a
-      // first visit sees it (tests/e2e/offline.mjs tests the worker).
+      await page.addInitScript(noOfflineWorker);
       await page.addInitScript(() => {
-        if (window.ServiceWorkerContainer)
-          ServiceWorkerContainer.prototype.register = () => new Promise(() => {});
         window.__violations = [];
         document.addEventListener("securitypolicyviolation", (e) =>
           window.__violations.push(`CSP: ${e.violatedDirective} ${e.blockedURI}`),
@@ -258,7 +270,7 @@ export async function distSuite({
     if (existsSync(POSTERS))
       await test("dist: a 3D demo keeps its poster over the figure until the rendering worker's first frame, then shows the figure alone", async () => {
         needSite();
-        const own = await context.newPage();
+        const own = await ownPage();
         const ownErrors = watchErrors(own);
         try {
           // Each change of (canvas drawn, poster over it) in the figure box, from the mount on.
@@ -284,6 +296,49 @@ export async function distSuite({
           );
           const cover = await own.evaluate(() => document.querySelectorAll("img.sl-poster").length);
           equal(cover, 0, "posters left after the first frame");
+          equal(ownErrors.take().join("\n"), "", "console errors");
+        } finally {
+          await own.close();
+        }
+      });
+
+    if (existsSync(POSTERS))
+      await test("dist: a link to another state than the default shows no poster, a copied link of the default state does (2D and 3D)", async () => {
+        needSite();
+        const own = await ownPage();
+        const ownErrors = watchErrors(own);
+        const linkState = () => new URLSearchParams(new URL(own.url()).hash.slice(1)).get("s");
+        const decode = (s) => JSON.parse(Buffer.from(s, "base64url").toString("utf8"));
+        try {
+          // Whether a poster was in the page at any moment of this load.
+          await own.addInitScript(() => {
+            window.__poster = false;
+            new MutationObserver(() => {
+              window.__poster ||= document.querySelector("img.sl-poster") !== null;
+            }).observe(document, { subtree: true, childList: true });
+          });
+          const open = async (hash) => {
+            await own.goto("about:blank");
+            await own.goto(`${base}/index.html#${hash}`);
+            await demoHelpers(own).ready();
+            return own.evaluate(() => window.__poster);
+          };
+          for (const [id, field, value] of [
+            ["de-casteljau", "t", 0.75],
+            ["bezier-patch", "u", 0.5],
+          ]) {
+            equal(await open(`demo=${id}`), true, `${id}: the plain link's poster`);
+            // The link the page writes for its default state, as a reader would copy it.
+            const copied = linkState();
+            const state = decode(copied);
+            assert(state[field] !== value, `${id}: the default ${field} is not ${value}`);
+            const other = Buffer.from(JSON.stringify({ ...state, [field]: value })).toString(
+              "base64url",
+            );
+            equal(await open(`demo=${id}&s=${copied}`), true, `${id}: the copied link's poster`);
+            equal(await open(`demo=${id}&s=${other}`), false, `${id}: another state's poster`);
+            equal(decode(linkState())[field], value, `${id}: the state the link asked for`);
+          }
           equal(ownErrors.take().join("\n"), "", "console errors");
         } finally {
           await own.close();

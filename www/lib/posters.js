@@ -63,6 +63,34 @@ export function posterUrl(id, shape, dark = prefersDark()) {
   return HASHED.test(url) ? url : null;
 }
 
+/**
+ * A short fingerprint of a link's encoded state (its `s`, lib/state.js `encodeState`): the
+ * 32-bit FNV-1a hash of its characters, in hex. The build records the default state's
+ * (scripts/posters.mjs); a page compares a link's with it, without the state itself.
+ */
+export function stateFingerprint(encoded) {
+  let h = 0x811c9dc5;
+  for (let i = 0; i < encoded.length; i++) h = Math.imul(h ^ encoded.charCodeAt(i), 0x01000193);
+  return (h >>> 0).toString(16).padStart(8, "0");
+}
+
+/**
+ * Whether demo `id`'s posters show the state of a link whose `s` is `encoded`: yes without one
+ * (the default state), or when it is the default state's own encoding (a copied link of a demo
+ * nobody changed), which `make dist` records by its fingerprint (SPLINELAB_POSTER_STATES, an
+ * esbuild `define`: scripts/dist.mjs). A link to any other state gets no poster, so the reader
+ * never sees a figure the link did not ask for: the live one appears as soon as it can, as in
+ * an embed whose attributes change the state.
+ */
+export function posterShowsState(id, encoded) {
+  if (!encoded) return true;
+  if (typeof SPLINELAB_POSTER_STATES === "undefined") return false;
+  return (
+    Object.hasOwn(SPLINELAB_POSTER_STATES, id) &&
+    SPLINELAB_POSTER_STATES[id] === stateFingerprint(encoded)
+  );
+}
+
 /** True when the site has posters (the built site; the development tree has none). */
 export function hasPosters() {
   return posterUrl("de-casteljau", "thumb") !== null;
