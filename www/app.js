@@ -20,6 +20,7 @@ import { mountExercise } from "./lib/exercise.js";
 import { currentTheme, onThemeChange } from "./lib/theme.js";
 import { errorText } from "./lib/core-errors.js";
 import { registerOffline } from "./lib/offline.js";
+import { now, taskQueue } from "./lib/task-queue.js";
 import {
   coverUntilDrawn,
   hasPosters,
@@ -355,6 +356,8 @@ function showDemo(entry, demo, encoded, sl) {
   document.title = t("app.demoTitle", { title: t(`${entry.strings}.title`), app: t("app.name") });
   let { state, linkError } = stateFromLink(demo, demo.defaultState, encoded);
   const root = demoPageRoot();
+  // Behind a poster the mount is made in several short tasks (figure first).
+  const later = poster ? taskQueue() : null;
   try {
     controller = mountDemo(root, demo, {
       sl,
@@ -363,6 +366,7 @@ function showDemo(entry, demo, encoded, sl) {
       headingLevel: "h1",
       onCommit: (s) => writeHash(demo.id, s),
       shareUrl: (s) => shareUrl(demo.id, s),
+      later,
     });
   } catch (err) {
     // The wasm constructor refused a state that passed validation: fall back to the default.
@@ -376,7 +380,8 @@ function showDemo(entry, demo, encoded, sl) {
       shareUrl: (s) => shareUrl(demo.id, s),
     });
   }
-  writeHash(demo.id, controller.state);
+  const shown = controller;
+  (later ?? now)(() => controller === shown && writeHash(demo.id, controller.state));
   if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
   coverUntilDrawn(controller.figure, poster);
 }

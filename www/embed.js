@@ -17,6 +17,7 @@
 import { findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm } from "./lib/wasm.js";
 import { mountDemo, validateState } from "./lib/shell.js";
+import { taskQueue } from "./lib/task-queue.js";
 import { prepareFigure } from "./lib/three-loader.js";
 import { stateFromAttributes } from "./lib/attributes.js";
 import { buildHash, encodeState } from "./lib/state.js";
@@ -193,10 +194,12 @@ class SplineLabElement extends HTMLElement {
           ? `${PLAYGROUND}#exercise=${exercise.id}&s=${encodeState(s)}`
           : `${PLAYGROUND}${buildHash(demo.id, s)}`,
     };
+    // Behind a poster the demo's mount is made in several short tasks (figure first).
+    const later = poster ? taskQueue() : null;
     const mount = (s) =>
       exercise
         ? mountExercise(root, exercise, demo, { ...options, state: s })
-        : mountDemo(root, demo, { ...options, state: s });
+        : mountDemo(root, demo, { ...options, state: s, later });
     try {
       this._controller = mount(state);
     } catch (err) {

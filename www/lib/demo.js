@@ -72,6 +72,7 @@ import { listHandles3 } from "./handle-lists3d.js";
 import { t } from "./strings.js";
 import { errorText } from "./core-errors.js";
 import { figureDimension, figure3dReady, prepareFigure } from "./three-loader.js";
+import { now } from "./task-queue.js";
 
 /** The validation of a declarative demo: every field checked, no unknown field, then `check`. */
 export function validateDeclared(demo, state) {
@@ -312,7 +313,7 @@ export function mountDeclared(demo, initialState, ctx) {
     for (const control of built) control.sync?.(work, data);
     if (demo.label) view.setLabel(demo.label(work, data));
     extra.update?.(work, data);
-    if (demo.formula) formula.set(demo.formula(work, data));
+    formula?.set(demo.formula(work, data));
   }
 
   // ------------------------------------------------------------ figure parts, handles, panel
@@ -392,8 +393,8 @@ export function mountDeclared(demo, initialState, ctx) {
 
   /** The runtime's hooks on the figure's frames. */
   function hookFrames() {
-    // After the handles' hook, which applies the newest pointer position first.
-    view.beforeFrame(() => refresh());
+    // After every other hook (the handles' applies the newest pointer position first).
+    view.beforeFrame(() => refresh(), true);
     view.afterFrame(() => publish());
   }
 
@@ -414,7 +415,7 @@ export function mountDeclared(demo, initialState, ctx) {
       loadingThree = prepareFigure(demo, work).then(done, () => (loadingThree = null));
     }
     if (wanted() === is3d) return false;
-    extra.destroy?.();
+    if (setUp) extra.destroy?.();
     ui.handles?.destroy();
     ui.handles = null;
     data.handles = null;
@@ -423,7 +424,7 @@ export function mountDeclared(demo, initialState, ctx) {
     for (const key of Object.keys(slot)) delete slot[key];
     ui.view = createView(window);
     makeHandles();
-    extra = demo.setup?.(ui) ?? {};
+    if (setUp) extra = demo.setup?.(ui) ?? {};
     hookFrames();
     for (const control of built) control.viewChanged?.(view);
     panelsStale = true;
@@ -438,12 +439,32 @@ export function mountDeclared(demo, initialState, ctx) {
     return true;
   }
 
+  // The figure first; the controls, then the formula panel and `setup` (the demo's tables)
+  // each in a later task when the host staged the mount (`ctx.later`, lib/task-queue.js: a
+  // poster covers the figure meanwhile), else at once.
+  const later = ctx.later ?? now;
+  /** `setup`'s hooks (`{}` until it ran). */
+  let extra = {};
+  /** Whether `setup` has run. */
+  let setUp = false;
   makeHandles();
-  built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
-  ctx.slots.controls.append(...built.map((control) => control.element).filter(Boolean));
-  formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
-  let extra = demo.setup?.(ui) ?? {};
   hookFrames();
+  later(() => {
+    if (destroyed) return;
+    built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
+    ctx.slots.controls.append(...built.map((control) => control.element).filter(Boolean));
+  });
+  later(() => {
+    if (destroyed) return;
+    formula = demo.formula ? new FormulaPanel(ctx.slots.formula) : null;
+    extra = demo.setup?.(ui) ?? {};
+    setUp = true;
+    if (later !== now) {
+      // The figure has shown the model since the first task: the panels catch up now.
+      panelsStale = true;
+      publish();
+    }
+  });
   refresh();
   publish();
   syncFigureKind(work.view); // readies the 3D renderer for a 3D state shown in 2D first

@@ -51,6 +51,7 @@ export class FigureCanvas {
     this._interactors = [];
     this._captured = new Map(); // pointerId -> interactor that claimed it
     this._beforeFrame = [];
+    this._beforeFrameLast = [];
     this._afterFrame = [];
     this._frameRequested = false;
     this._frame = () => this._onFrame();
@@ -72,9 +73,13 @@ export class FigureCanvas {
     this.requestDraw();
   }
 
-  /** Registers a hook run at the start of each animation frame, before drawing (coalesced input). */
-  beforeFrame(hook) {
-    this._beforeFrame.push(hook);
+  /**
+   * Registers a hook run at the start of each animation frame, before drawing (coalesced input).
+   * `last`: after every hook registered without it, whenever they were registered (the demo
+   * runtime's refresh reads what the handles', controls' and demo's hooks wrote).
+   */
+  beforeFrame(hook, last = false) {
+    (last ? this._beforeFrameLast : this._beforeFrame).push(hook);
   }
 
   /**
@@ -97,6 +102,7 @@ export class FigureCanvas {
     this._frameRequested = false;
     if (this._destroyed) return;
     for (const hook of this._beforeFrame) hook();
+    for (const hook of this._beforeFrameLast) hook();
     this.drawNow();
     for (const hook of this._afterFrame) hook();
   }

@@ -8,6 +8,7 @@
  */
 import { el, setText } from "./controls.js";
 import { mountDemo, toolbarStandIn, validateState } from "./shell.js";
+import { taskQueue } from "./task-queue.js";
 import { prepareFigure } from "./three-loader.js";
 import { findDemo, loadDemo } from "../demos/index.js";
 import { lecturePosterName, loadingPoster, painted, posterPage } from "./posters.js";
@@ -84,6 +85,8 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
 
   let current = -1;
   let controller = null;
+  /** The first scene's poster is on the stage (built site). */
+  let posterShown = false;
   let loading = 0; // bumped per go(): a scene whose demo loaded late is not shown
 
   async function go(target) {
@@ -116,7 +119,11 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     }
     const slot = el("div");
     stage.append(slot);
+    // After the first scene's poster the mount is made in several short tasks (figure first).
+    const later = posterShown ? taskQueue() : null;
+    posterShown = false;
     controller = mountDemo(slot, demo, {
+      later,
       sl: wasm,
       state,
       mode: "page",
@@ -155,6 +162,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     setText(caption, captionOf(scene));
     showProgress(k);
     poster.show();
+    posterShown = true;
   }
 
   function showProgress(k) {

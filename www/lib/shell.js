@@ -137,6 +137,9 @@ export function toolbarStandIn() {
  *   the figure with Reset, Fit and Share link only; or the figure alone (shell.css).
  * @param {"auto" | "light" | "dark"} [options.theme] a course page's colours: the reader's
  *   preference, or always light / dark (figures read it through `currentTheme(node)`).
+ * @param {((fn: Function) => void) | null} [options.later] a staged mount (lib/task-queue.js,
+ *   while a poster covers the figure): the figure now, the controls, the formula panel with the
+ *   demo's tables, and the about section each in a later task.
  * @returns {{ state: object, accept: Function, status: Function, destroy: Function,
  *   figure: View | null, element: HTMLElement }}
  */
@@ -153,6 +156,7 @@ export function mountDemo(
     lecture = false,
     controls = "full",
     theme = "auto",
+    later = null,
   },
 ) {
   const prefix = demo.strings;
@@ -235,6 +239,8 @@ export function mountDemo(
         )
       : null;
 
+  // A staged mount shows what is under the panel once the panel is made (no layout shift).
+  const below = el("div", { class: "sl-below", hidden: Boolean(later) }, status, formula, details);
   const element = el(
     "section",
     {
@@ -253,9 +259,9 @@ export function mountDemo(
       { class: "sl-body" },
       el("div", { class: "sl-figure-wrap" }, figureHost, help),
       panel,
-      el("div", { class: "sl-below" }, status, formula, details),
+      below,
     ),
-    about,
+    later ? null : about,
   );
   root.replaceChildren(element);
 
@@ -446,6 +452,7 @@ export function mountDemo(
   const ctx = {
     sl,
     mode,
+    later,
     reducedMotion: prefersReducedMotion(),
     slots: { figure: figureHost, controls: panel, formula, details },
     t,
@@ -509,6 +516,12 @@ export function mountDemo(
   syncWindow();
   refreshButtons();
   if (lecture) toggleLecture();
+  // A staged mount's about section and what is under the panel come last, so nothing shown
+  // moves while the panels are made.
+  later?.(() => {
+    below.hidden = false;
+    if (about) element.append(about);
+  });
 
   return {
     element,
