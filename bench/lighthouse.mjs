@@ -21,7 +21,8 @@
 // 4 × benchmarkIndex / 1750 for a check that does not lean on a fast host.
 //
 // Writes bench/results/lighthouse.json (git-ignored; --out names another file there): the
-// medians and every run's numbers. Needs `make dist`.
+// medians and every run's numbers, with the long tasks Lighthouse's simulation counted for TBT
+// (start, length, the script blamed). Needs `make dist`.
 import { existsSync, mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -101,7 +102,24 @@ function numbers(lhr) {
     runtimeError: lhr.runtimeError?.code,
     benchmarkIndex: lhr.environment?.benchmarkIndex,
     runWarnings: lhr.runWarnings ?? [],
+    longTasks: longTasks(lhr),
   };
+}
+
+/**
+ * The run's long tasks as Lighthouse's simulation counts them for TBT (at the run's CPU
+ * slowdown): `[start ms, length ms, script]`, the script relative to the site ("" for work no
+ * script is blamed for: style, layout, parsing, garbage collection).
+ */
+function longTasks(lhr) {
+  const site = new URL(".", lhr.finalDisplayedUrl ?? lhr.requestedUrl ?? "http://x/").href;
+  return (lhr.audits["long-tasks"]?.details?.items ?? [])
+    .map((task) => [
+      Math.round(task.startTime),
+      Math.round(task.duration),
+      String(task.url ?? "").startsWith(site) ? String(task.url).slice(site.length) : "",
+    ])
+    .sort((a, b) => a[0] - b[0]);
 }
 
 const mark = (ok) => (ok ? " " : "*");
