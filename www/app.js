@@ -22,6 +22,7 @@ import { errorText } from "./lib/core-errors.js";
 import { registerOffline } from "./lib/offline.js";
 import { now, taskQueue } from "./lib/task-queue.js";
 import {
+  bootPoster,
   coverUntilDrawn,
   hasPosters,
   lectureLinkPoster,
@@ -312,8 +313,8 @@ function demoPageRoot() {
 /**
  * Demo `entry`'s poster where its figure will be, with the page's title and toolbar around it,
  * while the wasm and the demo's module load (lib/posters.js; the built site only): the demo's
- * mount replaces it (unmount) without moving the figure. The bare poster boot.js showed (before
- * the page's words were here) gives way to it once its picture is decoded. False when there is
+ * mount replaces it (unmount) without moving the figure. The picture boot.js asked for (shown
+ * bare before the page's words were here, or still on the way) moves into it. False when there is
  * none (the development tree, or a link to another state than the poster's).
  */
 function showPoster(entry) {
@@ -329,24 +330,16 @@ function showPoster(entry) {
   });
   if (!poster) return Boolean(boot);
   demoPageRoot().append(poster.element);
-  // boot.js's picture (chosen for this width too), else the one for the box's width.
-  poster.show(boot?.querySelector("img")?.src);
-  if (boot) {
-    const page = poster.element.closest(".demo-page");
-    page.hidden = true;
-    poster.image
-      .decode()
-      .catch(() => {})
-      .then(() => {
-        if (!page.isConnected || !boot.isConnected) return;
-        boot.remove();
-        page.hidden = false;
-      });
-  }
+  // boot.js's picture itself (chosen for this width too), else the one for the box's width.
+  poster.show(bootPoster(entry.id));
+  boot?.remove();
   return true;
 }
 
-/** Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any. */
+/**
+ * Shows the loaded module `demo` (manifest entry `entry`) with the state in `encoded`, if any.
+ * Returns the mount's `later` (lib/task-queue.js), or `now` when it was made in one task.
+ */
 function showDemo(entry, demo, encoded, sl) {
   const poster = [...main.querySelectorAll("img.sl-poster")].find(
     (img) => !img.closest("[hidden]"),
@@ -384,6 +377,7 @@ function showDemo(entry, demo, encoded, sl) {
   (later ?? now)(() => controller === shown && writeHash(demo.id, controller.state));
   if (linkError) controller.status(t("status.badLink", { message: linkError }), "error");
   coverUntilDrawn(controller.figure, poster);
+  return later ?? now;
 }
 
 // ------------------------------------------------------------------ lecture view
@@ -532,14 +526,17 @@ async function route() {
     writeHash(id, controller.state);
     return;
   }
-  showDemo(entry, demo, s, sl);
+  const whenMounted = showDemo(entry, demo, s, sl);
   window.scrollTo(0, 0);
-  // Focus to the new page (a reader who followed a link) once its first frame is laid out:
-  // focusing now would force that layout inside this task (~25 ms, 100 at a phone's speed).
-  requestAnimationFrame(() =>
-    setTimeout(() => {
-      if (routed === routeCount) main.focus({ preventScroll: true });
-    }),
+  // Focus to the new page (a reader who followed a link) once it is mounted (behind a poster,
+  // after the mount's last task) and laid out in a frame: focusing sooner forces that layout
+  // inside a task (~25 ms, 100 at a phone's speed), and a staged mount's next parts undo it.
+  whenMounted(() =>
+    requestAnimationFrame(() =>
+      setTimeout(() => {
+        if (routed === routeCount) main.focus({ preventScroll: true });
+      }),
+    ),
   );
 }
 

@@ -67,8 +67,9 @@ if (poster) {
   image.alt = "";
   image.className = "sl-poster";
   image.fetchPriority = "high";
+  image.dataset.demo = id;
   image.onload = () => showPoster(image);
-  loadingPoster(painted(image).then(wasmHints));
+  loadingPoster(painted(image).then(wasmHints), image);
   image.src = poster;
 } else if (lecturePoster) {
   // app.js shows the scene's poster and caption, then asks for the wasm (lib/lecture.js).

@@ -296,6 +296,20 @@ export async function distSuite({
           );
           const cover = await own.evaluate(() => document.querySelectorAll("img.sl-poster").length);
           equal(cover, 0, "posters left after the first frame");
+          // Its handles came a task after the figure (lib/demo.js): a keyboard nudge moves one
+          // and the link follows.
+          const h = demoHelpers(own);
+          const start = (await h.handles())[0];
+          const link = own.url();
+          await h.canvas().focus();
+          await own.keyboard.press("Home");
+          await own.keyboard.press("ArrowRight");
+          const moved = (await h.handles())[0];
+          assert(
+            Math.hypot(moved.x - start.x, moved.y - start.y) > 0.5,
+            `handle nudged to ${JSON.stringify(moved)} from ${JSON.stringify(start)}`,
+          );
+          assert(own.url() !== link, "the link follows the nudge");
           equal(ownErrors.take().join("\n"), "", "console errors");
         } finally {
           await own.close();

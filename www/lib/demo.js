@@ -447,8 +447,28 @@ export function mountDeclared(demo, initialState, ctx) {
   let extra = {};
   /** Whether `setup` has run. */
   let setUp = false;
-  makeHandles();
-  hookFrames();
+  /** The figure's first refresh (its data) and the panels' first look at it. */
+  const firstRefresh = () => {
+    refresh();
+    publish();
+    syncFigureKind(work.view); // readies the 3D renderer for a 3D state shown in 2D first
+  };
+  // A figure the poster covers until it is drawn (a 3D one: posters.js coverUntilDrawn) gets
+  // its handles and data a task later still, and draws nothing until then.
+  const covered = later !== now && typeof view.whenDrawn === "function";
+  if (covered) {
+    view.hold();
+    later(() => {
+      if (destroyed) return;
+      makeHandles();
+      hookFrames();
+      firstRefresh();
+      view.release();
+    });
+  } else {
+    makeHandles();
+    hookFrames();
+  }
   later(() => {
     if (destroyed) return;
     built = (demo.controls ?? []).map((descriptor) => descriptor.build(ui));
@@ -465,9 +485,7 @@ export function mountDeclared(demo, initialState, ctx) {
       publish();
     }
   });
-  refresh();
-  publish();
-  syncFigureKind(work.view); // readies the 3D renderer for a 3D state shown in 2D first
+  if (!covered) firstRefresh();
 
   return {
     /** Shows a validated state from outside (undo, reset, link, import). */

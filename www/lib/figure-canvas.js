@@ -98,9 +98,24 @@ export class FigureCanvas {
     requestAnimationFrame(this._frame);
   }
 
+  /**
+   * Holds the figure's drawing: frames and resizes draw nothing until `release()`, which asks
+   * for the frame they would have drawn. For a mount made in several tasks behind a poster
+   * (lib/demo.js), whose figure exists a task before its model is refreshed.
+   */
+  hold() {
+    this._held = true;
+  }
+
+  /** Ends `hold()`: the figure is drawn at the next frame. */
+  release() {
+    this._held = false;
+    this.requestDraw();
+  }
+
   _onFrame() {
     this._frameRequested = false;
-    if (this._destroyed) return;
+    if (this._destroyed || this._held) return;
     for (const hook of this._beforeFrame) hook();
     for (const hook of this._beforeFrameLast) hook();
     this.drawNow();

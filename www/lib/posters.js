@@ -32,15 +32,28 @@ export const NARROW_PAGE = "(max-width: 50rem)";
 /** The longest the wasm waits for the poster. */
 const POSTER_WAIT_MS = 3000;
 let posterLoad = Promise.resolve();
+let bootPicture = null;
 
 /**
- * Set by boot.js to the poster it is loading: the wasm waits for it (`posterSettled`), so on a
- * slow link the poster (the first frame) does not share the bandwidth with the ~270 KB wasm.
+ * Set by boot.js to the poster it is loading (`promise`: until it is painted) and its `<img>`:
+ * the wasm waits for it (`posterSettled`), so on a slow link the poster (the first frame) does
+ * not share the bandwidth with the ~270 KB wasm.
  */
-export function loadingPoster(promise) {
+export function loadingPoster(promise, picture = null) {
   // Not longer than POSTER_WAIT_MS: a poster stuck on the way must not hold the wasm back.
   const limit = new Promise((resolve) => setTimeout(resolve, POSTER_WAIT_MS));
   posterLoad = Promise.race([promise.catch(() => {}), limit]);
+  bootPicture = picture;
+}
+
+/**
+ * The `<img>` of boot.js's poster (arrived or still on the way) if it is demo `id`'s, once: the
+ * poster page shows it as it is (`show(picture)`) rather than ask again.
+ */
+export function bootPoster(id) {
+  const picture = bootPicture?.dataset.demo === id ? bootPicture : null;
+  bootPicture = null;
+  return picture;
 }
 
 /** Resolves once the poster boot.js asked for has arrived or failed (at once when none). */
@@ -139,12 +152,17 @@ export function posterPage(
     figure: box,
     image: img,
     /**
-     * Shows the poster at `url` (one already on the page: no layout read), else the one of the
-     * box's shape (call once the element is in the document).
+     * Shows `picture`, a poster `<img>` of this page's shape already made (boot.js's, arrived
+     * or on the way), moved into the box as it is: nothing is fetched or decoded again and no
+     * layout is read. Without one, the poster of the box's shape (call once the element is in
+     * the document: its width is read).
      */
-    show(url = null) {
-      if (url) {
-        img.src = url;
+    show(picture = null) {
+      if (picture) {
+        picture.className = img.className;
+        picture.alt = img.alt;
+        img.replaceWith(picture);
+        this.image = picture;
         return;
       }
       const rem = Number.parseFloat(getComputedStyle(document.documentElement).fontSize) || 16;

@@ -204,7 +204,7 @@ export class View extends FigureCanvas {
     if (!sizeCanvas(this, cssWidth, cssHeight, devicePixels)) return;
     this._layout(this.width, this.height);
     // Draw at once: a resized canvas is blank until the next draw.
-    this.drawNow();
+    if (!this._held) this.drawNow();
   }
 
   // ---------------------------------------------------------------- input

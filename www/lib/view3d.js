@@ -448,7 +448,7 @@ export class View3D extends FigureCanvas {
   _resize(cssWidth, cssHeight, devicePixels = null) {
     if (!sizeCanvas(this, cssWidth, cssHeight, devicePixels)) return;
     this._cleared = true;
-    this.drawNow();
+    if (!this._held) this.drawNow();
   }
 
   // ---------------------------------------------------------------- input
