@@ -8,6 +8,7 @@ import { demos, findDemo, loadDemo } from "./demos/index.js";
 import { loadFailureMessage, loadWasm, loadedWasm } from "./lib/wasm.js";
 import { mountDemo, toolbarStandIn, validateState } from "./lib/shell.js";
 import { prepareFigure } from "./lib/three-loader.js";
+import { warmShellFonts } from "./lib/font-warmup.js";
 import { parseHash, buildHash, decodeState, encodeState } from "./lib/state.js";
 import { figureToCanvas } from "./lib/export.js";
 import { el } from "./lib/controls.js";
@@ -333,6 +334,8 @@ function showPoster(entry) {
   // boot.js's picture itself (chosen for this width too), else the one for the box's width.
   poster.show(bootPoster(entry.id));
   boot?.remove();
+  // While the wasm loads, the fonts the demo's panels will set text in (lib/font-warmup.js).
+  posterSettled().then(() => warmShellFonts(main));
   return true;
 }
 

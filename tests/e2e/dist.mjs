@@ -268,6 +268,71 @@ export async function distSuite({
       });
 
     if (existsSync(POSTERS))
+      await test("dist: behind a demo's or a lecture's poster the shell's fonts are warmed in a hidden frame, gone before the mount", async () => {
+        needSite();
+        const own = await ownPage();
+        const ownErrors = watchErrors(own);
+        // Holds the page's wasm requests until `release()` (one hold per page load).
+        let release = () => {};
+        const hold = async (route) => {
+          await held;
+          await route.continue().catch(() => {});
+        };
+        let held = null;
+        try {
+          // What the page did, in order: the warm-up frame (lib/font-warmup.js) and the samples
+          // laid out in it, its removal, the live figure.
+          await own.addInitScript(() => {
+            window.__warm = [];
+            const note = (step) => window.__warm.at(-1) !== step && window.__warm.push(step);
+            new MutationObserver((records) => {
+              for (const r of records) {
+                for (const node of r.addedNodes) {
+                  if (node.classList?.contains("sl-font-warmup"))
+                    note(`frame${node.classList.contains("sl-lecture") ? " (lecture type)" : ""}`);
+                  else if (r.target.classList?.contains("sl-font-warmup")) note("sample");
+                  else if (
+                    node.querySelector?.(".sl-canvas") ||
+                    node.classList?.contains("sl-canvas")
+                  )
+                    note("figure");
+                }
+                for (const node of r.removedNodes)
+                  if (node.classList?.contains("sl-font-warmup")) note("removed");
+              }
+            }).observe(document, { subtree: true, childList: true });
+          });
+          await own.route("**/*.wasm", hold);
+          for (const [what, hash, frame] of [
+            ["de-casteljau", "index.html#demo=de-casteljau", "frame"],
+            // A lecture in a window ≥ 900 px wide has lecture mode's type (the tests' is wider).
+            ["the lecture", "index.html#lecture=bezier-curves", "frame (lecture type)"],
+          ]) {
+            held = new Promise((resolve) => (release = resolve));
+            await own.goto("about:blank"); // a new document, not a hash change
+            await own.goto(`${base}/${hash}`);
+            // The samples come while the wasm is held.
+            await own.waitForFunction(() => window.__warm.includes("removed"));
+            equal(
+              (await own.evaluate(() => window.__warm)).join(" → "),
+              `${frame} → sample → removed`,
+              `${what}: before the wasm`,
+            );
+            const samples = await own.evaluate(() => window.__warm.length);
+            release();
+            await demoHelpers(own).ready();
+            const steps = await own.evaluate(() => window.__warm);
+            equal(steps.slice(samples).join(" → "), "figure", `${what}: after the wasm`);
+            equal(await own.locator(".sl-font-warmup").count(), 0, `${what}: a frame left`);
+          }
+          equal(ownErrors.take().join("\n"), "", "console errors");
+        } finally {
+          release();
+          await own.close();
+        }
+      });
+
+    if (existsSync(POSTERS))
       await test("dist: a 3D demo keeps its poster over the figure until the rendering worker's first frame, then shows the figure alone", async () => {
         needSite();
         const own = await ownPage();

@@ -9,6 +9,7 @@
 import { el, setText } from "./controls.js";
 import { mountDemo, toolbarStandIn, validateState } from "./shell.js";
 import { taskQueue } from "./task-queue.js";
+import { warmShellFonts } from "./font-warmup.js";
 import { prepareFigure } from "./three-loader.js";
 import { findDemo, loadDemo } from "../demos/index.js";
 import { lecturePosterName, loadingPoster, painted, posterPage } from "./posters.js";
@@ -156,7 +157,10 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
         toolbar: toolbarStandIn(),
       });
     if (!poster) return;
-    loadingPoster(painted(poster.image)); // the wasm after it (app.js)
+    const shown = painted(poster.image);
+    loadingPoster(shown); // the wasm after it (app.js)
+    // While the wasm loads, the fonts of the scene's panels and labels (font-warmup.js).
+    shown.then(() => warmShellFonts(stage, { lecture: largeType() }));
     stage.replaceChildren(poster.element);
     poster.figure.after(caption);
     setText(caption, captionOf(scene));
