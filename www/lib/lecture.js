@@ -159,7 +159,7 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     if (!poster) return;
     const shown = painted(poster.image);
     loadingPoster(shown); // the wasm after it (app.js)
-    // While the wasm loads, the fonts of the scene's panels and labels (font-warmup.js).
+    // While the wasm loads, the fonts the scene's panels will set text in (font-warmup.js).
     shown.then(() => warmShellFonts(stage, { lecture: largeType() }));
     stage.replaceChildren(poster.element);
     poster.figure.after(caption);
