@@ -84,10 +84,10 @@ export async function distSuite({
   }
 
   /**
-   * Holds back every wasm request of the page (the posters stay up) until the returned function
-   * is awaited, which lets them through and removes the route.
+   * Holds back every wasm request of `target` (the shared page by default; the posters stay up)
+   * until the returned function is awaited, which lets them through and removes the route.
    */
-  async function holdWasm() {
+  async function holdWasm(target = page) {
     let release = () => {};
     const held = new Promise((resolve) => {
       release = resolve;
@@ -96,10 +96,10 @@ export async function distSuite({
       await held;
       await route.continue().catch(() => {}); // a page left meanwhile
     };
-    await page.route("**/*.wasm", hold);
+    await target.route("**/*.wasm", hold);
     return async () => {
       release();
-      await page.unroute("**/*.wasm", hold);
+      await target.unroute("**/*.wasm", hold);
     };
   }
 
@@ -272,13 +272,7 @@ export async function distSuite({
         needSite();
         const own = await ownPage();
         const ownErrors = watchErrors(own);
-        // Holds the page's wasm requests until `release()` (one hold per page load).
-        let release = () => {};
-        const hold = async (route) => {
-          await held;
-          await route.continue().catch(() => {});
-        };
-        let held = null;
+        let releaseWasm = async () => {};
         try {
           // What the page did, in order: the warm-up frame (lib/font-warmup.js) and the samples
           // laid out in it, its removal, the live figure.
@@ -302,13 +296,12 @@ export async function distSuite({
               }
             }).observe(document, { subtree: true, childList: true });
           });
-          await own.route("**/*.wasm", hold);
           for (const [what, hash, frame] of [
             ["de-casteljau", "index.html#demo=de-casteljau", "frame"],
             // A lecture in a window ≥ 900 px wide has lecture mode's type (the tests' is wider).
             ["the lecture", "index.html#lecture=bezier-curves", "frame (lecture type)"],
           ]) {
-            held = new Promise((resolve) => (release = resolve));
+            releaseWasm = await holdWasm(own);
             await own.goto("about:blank"); // a new document, not a hash change
             await own.goto(`${base}/${hash}`);
             // The samples come while the wasm is held.
@@ -319,7 +312,8 @@ export async function distSuite({
               `${what}: before the wasm`,
             );
             const samples = await own.evaluate(() => window.__warm.length);
-            release();
+            await releaseWasm();
+            releaseWasm = async () => {};
             await demoHelpers(own).ready();
             const steps = await own.evaluate(() => window.__warm);
             equal(steps.slice(samples).join(" → "), "figure", `${what}: after the wasm`);
@@ -327,7 +321,7 @@ export async function distSuite({
           }
           equal(ownErrors.take().join("\n"), "", "console errors");
         } finally {
-          release();
+          await releaseWasm();
           await own.close();
         }
       });
