@@ -155,7 +155,7 @@ export async function runLighthouse(argv = process.argv.slice(2)) {
         const n = numbers(result.lhr);
         runs.get(page.name).push(n);
         process.stderr.write(
-          `  run ${r + 1}/${opts.runs} ${page.name}: ${n.performance}, LCP ${(n.lcpMs / 1000).toFixed(2)} s${n.runtimeError ? ` (${n.runtimeError})` : ""}\n`,
+          `  run ${r + 1}/${opts.runs} ${page.name}: ${n.performance}, LCP ${(n.lcpMs / 1000).toFixed(2)} s, TBT ${Math.round(n.tbtMs)} ms${n.runtimeError ? ` (${n.runtimeError})` : ""}\n`,
         );
       }
     }

@@ -1,13 +1,13 @@
-// What fills a page's long tasks at load: the tool for finding where issue 26's Total Blocking
-// Time goes (Lighthouse gives the total, not the parts). Debian's Chromium loads the page from
-// the built site (`make dist`, served by scripts/serve.mjs on 127.0.0.1) on a phone viewport
-// (412 × 823 CSS px at DPR 1.75) with the CPU slowed 4× (CDP, as Lighthouse's mobile profile),
-// waits 9 s, and prints per run the long tasks the page saw (start and length, ms since
-// navigation) and their sum of (length − 50 ms), an observed TBT. The first run of each page is
-// also sampled by V8's profiler: the busy stretches of ≥ 45 ms between idle samples (the long
-// tasks, as the profiler sees them) with each stretch's functions by self time and the calls
-// that led to them, and the self time per file. "(program)" is the browser's own work (parsing,
-// style, layout, compiling). Nothing is asserted; the profiler slows the page it samples.
+// What fills a page's long tasks at load: the tool for finding where issue 26's Total Blocking Time
+// goes (Lighthouse gives the total, not the parts). Debian's Chromium loads the page from the built
+// site (`make dist`, served by scripts/serve.mjs on 127.0.0.1) on a phone viewport (412 × 823 CSS
+// px at DPR 1.75) with the CPU slowed 4× (CDP, as Lighthouse's mobile profile; `--cpu 5.5` for
+// another rate), waits 9 s, and prints per run the long tasks the page saw (start and length, ms
+// since navigation) and their sum of (length − 50 ms), an observed TBT. The first run of each page
+// is also sampled by V8's profiler: the busy stretches of ≥ 45 ms between idle samples (the long
+// tasks, as the profiler sees them) with each stretch's functions by self time and the calls that
+// led to them, and the self time per file. "(program)" is the browser's own work (parsing, style,
+// layout, compiling). Nothing is asserted; the profiler slows the page it samples.
 //
 //   node bench/long-tasks.mjs "index.html#demo=bezier-patch"        (dist/site, 3 runs)
 //   node bench/long-tasks.mjs --runs 1 --root /tmp/site "index.html#demo=de-casteljau"
@@ -38,8 +38,16 @@ const option = (name, fallback) => {
 };
 const runs = Number(option("--runs", "3"));
 const root = option("--root", "dist/site");
+const cpuText = option("--cpu", "4");
+const cpu = Number(cpuText);
+if (!(cpu >= 1)) {
+  console.error(`--cpu: a slowdown rate of 1 or more, not ${cpuText}`);
+  process.exit(2);
+}
 if (!args.length) {
-  console.error('usage: node bench/long-tasks.mjs [--runs N] [--root DIR] "index.html#demo=…" …');
+  console.error(
+    'usage: node bench/long-tasks.mjs [--runs N] [--root DIR] [--cpu RATE] "index.html#demo=…" …',
+  );
   process.exit(2);
 }
 
@@ -72,7 +80,7 @@ async function load(path, profiled) {
   try {
     const page = await context.newPage();
     const cdp = await context.newCDPSession(page);
-    await cdp.send("Emulation.setCPUThrottlingRate", { rate: 4 });
+    await cdp.send("Emulation.setCPUThrottlingRate", { rate: cpu });
     if (profiled) {
       await cdp.send("Profiler.enable");
       await cdp.send("Profiler.setSamplingInterval", { interval: 200 });
