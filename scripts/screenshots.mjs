@@ -24,7 +24,11 @@ async function demoReady(page, scope = "") {
     .locator(`${scope}.sl-figure[data-handles], ${scope}.sl-figure:has(.sl-canvas)`)
     .first()
     .waitFor({ state: "attached" });
-  await page.locator(`${scope}.sl-formula .katex`).first().waitFor({ state: "attached" });
+  // KaTeX loads when the formula panel nears the viewport (below the fold on a phone).
+  const formula = page.locator(`${scope}.sl-formula`).first();
+  await formula.scrollIntoViewIfNeeded();
+  await formula.locator(".katex").first().waitFor({ state: "attached" });
+  await page.evaluate(() => window.scrollTo(0, 0));
   await page.evaluate(() => document.fonts.ready);
   await page.evaluate(
     () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))),
