@@ -327,6 +327,49 @@ export async function distSuite({
       });
 
     if (existsSync(POSTERS))
+      await test("dist: a demo link and a lecture link ask for the wasm (and the demo's module) only after the browser has reported the poster's paint (the largest contentful paint)", async () => {
+        needSite();
+        const own = await ownPage();
+        const ownErrors = watchErrors(own);
+        try {
+          await own.addInitScript(() => {
+            window.__lcp = [];
+            new PerformanceObserver((list) => {
+              for (const e of list.getEntries()) window.__lcp.push({ url: e.url, at: e.startTime });
+            }).observe({ type: "largest-contentful-paint", buffered: true });
+          });
+          // A race (the poster's paint reported a frame late): each link is loaded a few times.
+          for (const hash of ["index.html#demo=de-casteljau", "index.html#lecture=bezier-curves"]) {
+            for (let load = 1; load <= 4; load++) {
+              await own.goto("about:blank"); // a new document, not a hash change
+              await own.goto(`${base}/${hash}`);
+              await demoHelpers(own).ready();
+              const { poster, requests } = await own.evaluate(() => ({
+                poster: window.__lcp.find((e) => e.url.endsWith(".svg"))?.at,
+                requests: performance
+                  .getEntriesByType("resource")
+                  .filter((e) => /\.wasm$|\/de-casteljau-[A-Z2-7]{8}\.js$/.test(e.name))
+                  .map((e) => [e.name.split("/").pop(), e.startTime]),
+              }));
+              assert(poster !== undefined, `${hash}: the poster was no largest paint`);
+              assert(
+                requests.some(([name]) => name.endsWith(".wasm")),
+                `${hash}: no wasm request in ${JSON.stringify(requests)}`,
+              );
+              for (const [name, at] of requests)
+                assert(
+                  at >= poster,
+                  `${hash}, load ${load}: ${name} asked for at ${at} ms, the poster's paint at ${poster} ms`,
+                );
+            }
+          }
+          equal(ownErrors.take().join("\n"), "", "console errors");
+        } finally {
+          await own.close();
+        }
+      });
+
+    if (existsSync(POSTERS))
       await test("dist: a 3D demo keeps its poster over the figure until the rendering worker's first frame, then shows the figure alone", async () => {
         needSite();
         const own = await ownPage();

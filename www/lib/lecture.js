@@ -12,7 +12,7 @@ import { taskQueue } from "./task-queue.js";
 import { warmShellFonts } from "./font-warmup.js";
 import { prepareFigure } from "./three-loader.js";
 import { findDemo, loadDemo } from "../demos/index.js";
-import { lecturePosterName, loadingPoster, painted, posterPage } from "./posters.js";
+import { lecturePosterName, loadingPoster, painted, posterPage, posterSettled } from "./posters.js";
 import { locale, t } from "./strings.js";
 import { buildHash } from "./state.js";
 import { errorText } from "./core-errors.js";
@@ -99,7 +99,8 @@ export function playLecture(container, lecture, { sl, index = 0, onScene, onLeav
     let demo;
     let wasm;
     try {
-      demo = await loadDemo(scene.demo);
+      // After the poster's paint, as the wasm (at once when none is loading).
+      demo = await posterSettled().then(() => loadDemo(scene.demo));
       await prepareFigure(demo, scene.state);
       wasm = await sl;
     } catch (err) {
