@@ -603,5 +603,10 @@ async function start() {
   });
 }
 
-start();
-registerOffline();
+// The page the link asked for, then the offline worker (lib/offline.js waits for it).
+const started = start();
+started.catch((err) => {
+  showAppStatus(errorText(err), "error");
+  throw err; // reported in the console as before
+});
+registerOffline(started);

@@ -369,6 +369,38 @@ export async function distSuite({
         }
       });
 
+    await test("dist: a demo link registers the offline worker only once its figure is shown (the precache does not share the link with the wasm)", async () => {
+      needSite();
+      const own = await ownPage(); // its register() never settles; this one records the call
+      let releaseWasm = async () => {};
+      try {
+        await own.addInitScript(() => {
+          const hold = ServiceWorkerContainer.prototype.register;
+          ServiceWorkerContainer.prototype.register = function (...args) {
+            window.__registered = { figure: document.querySelector(".sl-canvas") !== null };
+            return hold.apply(this, args);
+          };
+        });
+        releaseWasm = await holdWasm(own);
+        await own.goto(`${base}/index.html#demo=de-casteljau`);
+        await own.waitForFunction(() => document.readyState === "complete");
+        await own.waitForTimeout(1000);
+        equal(await own.evaluate(() => window.__registered ?? null), null, "registered, wasm held");
+        await releaseWasm();
+        releaseWasm = async () => {};
+        await demoHelpers(own).ready();
+        await own.waitForFunction(() => window.__registered);
+        equal(
+          JSON.stringify(await own.evaluate(() => window.__registered)),
+          '{"figure":true}',
+          "registered once the figure was there",
+        );
+      } finally {
+        await releaseWasm();
+        await own.close();
+      }
+    });
+
     if (existsSync(POSTERS))
       await test("dist: a 3D demo keeps its poster over the figure until the rendering worker's first frame, then shows the figure alone", async () => {
         needSite();
