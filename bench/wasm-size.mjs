@@ -8,6 +8,7 @@
 // Sizes: bytes after wasm-opt, `gzip -9`, brotli (quality 11, as make dist writes).
 //
 //   node bench/wasm-size.mjs          (needs the tools of make build; ~5 min cold, 3 builds)
+//   CARGO_PROFILE_RELEASE_OPT_LEVEL=z node bench/wasm-size.mjs   (the same at another opt-level)
 import { execFileSync } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
