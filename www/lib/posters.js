@@ -225,31 +225,27 @@ const INPUT_EVENTS = ["pointerdown", "keydown", "wheel"];
  */
 export function painted(image) {
   return new Promise((resolve) => {
-    let observer = null;
+    const observer = REPORTS_LCP
+      ? new PerformanceObserver((list) => {
+          const ours = (entry) => entry.element === image || (entry.url && entry.url === image.src);
+          if (list.getEntries().some(ours)) done();
+        })
+      : null;
     const done = () => {
-      if (observer) {
-        observer.disconnect();
-        for (const type of INPUT_EVENTS) removeEventListener(type, done, true);
-      }
+      observer?.disconnect();
+      for (const type of INPUT_EVENTS) removeEventListener(type, done, true);
       resolve();
     };
-    if (REPORTS_LCP) {
-      observer = new PerformanceObserver((list) => {
-        const ours = (entry) => entry.element === image || (entry.url && entry.url === image.src);
-        if (list.getEntries().some(ours)) done();
-      });
+    if (observer) {
       observer.observe({ type: "largest-contentful-paint", buffered: true });
       for (const type of INPUT_EVENTS)
         addEventListener(type, done, { capture: true, passive: true });
     }
-    image.addEventListener(
-      "load",
-      () =>
-        requestAnimationFrame(() =>
-          setTimeout(() => (observer ? setTimeout(done, LCP_REPORT_WAIT_MS) : done())),
-        ),
-      { once: true },
-    );
+    // The frame after the load, and where the browser reports paints, its report or the cap.
+    const afterFrame = observer ? () => setTimeout(done, LCP_REPORT_WAIT_MS) : done;
+    image.addEventListener("load", () => requestAnimationFrame(() => setTimeout(afterFrame)), {
+      once: true,
+    });
     image.addEventListener("error", done, { once: true });
   });
 }
